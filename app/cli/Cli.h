@@ -1,0 +1,51 @@
+#pragma once
+/// The headless `marbler` verbs (spec/cli.md). Each verb parses its own arguments and returns
+/// the process exit status: 0 success, 2 bad usage or bad input (one line on stderr naming the
+/// file and what is wrong), 1 any other failure.
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace marbler::cli {
+
+/// Exit statuses of the command line.
+inline constexpr int ExitOk = 0;
+inline constexpr int ExitFailure = 1;
+inline constexpr int ExitBadInput = 2;
+
+/// Parsed arguments: positional words and `--name value` / `--name=value` / `--flag` options.
+struct Args {
+    std::vector<std::string> positional;
+    std::map<std::string, std::string> options;
+
+    bool has(const std::string& name) const { return options.count(name) != 0; }
+    std::optional<std::string> get(const std::string& name) const;
+};
+
+/// Parses `words` (after the verb). `valued` lists options that take a value, `flags` those
+/// that do not (both without the leading dashes; `-o` is spelled "o"). Throws InputError for
+/// an unknown option or a missing value.
+Args parseArgs(std::span<const std::string> words, const std::vector<std::string>& valued,
+               const std::vector<std::string>& flags);
+
+/// Number parsing for options; throw InputError naming the option.
+int parseIntOption(const Args& args, const std::string& name, int fallback, int lo, int hi);
+double parseDoubleOption(const Args& args, const std::string& name, double fallback);
+std::uint64_t parseSeedOption(const Args& args, const std::string& name);
+
+/// The verbs. `words` are the arguments after the verb.
+int runRender(std::span<const std::string> words);
+int runInfo(std::span<const std::string> words);
+int runRandom(std::span<const std::string> words);
+int runBreed(std::span<const std::string> words);
+
+/// Runs `body`, turning a marbler::InputError into one stderr line and exit 2, and any other
+/// exception into one line and exit 1.
+int guarded(const char* verb, const std::function<int()>& body);
+
+} // namespace marbler::cli

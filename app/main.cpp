@@ -1,0 +1,82 @@
+// The marbler executable: a verb runs headless (spec/cli.md); no verb opens the workbench.
+
+#include "cli/Cli.h"
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#ifdef MARBLER_HAVE_GUI
+#include "ui/Workbench.h"
+#endif
+
+namespace {
+
+constexpr const char* Usage = R"(usage: marbler [GENOME...]            open the workbench (with these designs)
+       marbler VERB [OPTIONS]           work headless (no display, no GPU needed)
+
+verbs:
+  render GENOME -o OUT    render a raster (PNG, TIFF, EXR, JPEG), a slice or a solid on an object
+  info GENOME             check a genome and summarise it
+  random --dimension 2|3 --seed N -o OUT.marble.json
+                          a random genome; the same seed gives the same file
+  breed OPERATOR PARENT... --seed N -o DIR
+                          offspring by alter, recombine, swap or reinit
+
+'marbler VERB --help' describes each verb's options.
+exit status: 0 success, 2 bad usage or bad input, 1 any other failure.
+)";
+
+bool hasDisplay() {
+    for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) {
+        const char* value = std::getenv(name);
+        if (value && *value) return true;
+    }
+    return false;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> words(argv + 1, argv + argc);
+    if (!words.empty()) {
+        const std::string& verb = words[0];
+        std::span<const std::string> rest(words.data() + 1, words.size() - 1);
+        if (verb == "render") return marbler::cli::runRender(rest);
+        if (verb == "info") return marbler::cli::runInfo(rest);
+        if (verb == "random") return marbler::cli::runRandom(rest);
+        if (verb == "breed") return marbler::cli::runBreed(rest);
+        if (verb == "--help" || verb == "-h" || verb == "help") {
+            std::cout << Usage;
+            return marbler::cli::ExitOk;
+        }
+        if (verb == "--version") {
+            std::cout << "marbler 0.1.0\n";
+            return marbler::cli::ExitOk;
+        }
+        if (verb == "svg") {
+            std::cerr << "marbler svg: vector output is not built yet in this version\n";
+            return marbler::cli::ExitFailure;
+        }
+        if (verb.starts_with("-")) {
+            std::cerr << "marbler: unknown option " << verb << " (see marbler --help)\n";
+            return marbler::cli::ExitBadInput;
+        }
+    }
+    // No verb: genome files (or nothing) open the workbench.
+    if (!hasDisplay()) {
+        std::cout << "marbler: no display here, so the workbench window cannot open.\n"
+                     "Run it on a desktop session, or under a virtual display:\n"
+                     "    xvfb-run -a marbler\n"
+                     "or use the headless verbs, which need no display and no GPU:\n\n"
+                  << Usage;
+        return marbler::cli::ExitOk;
+    }
+#ifdef MARBLER_HAVE_GUI
+    return marbler::ui::runWorkbench(argc, argv);
+#else
+    std::cerr << "marbler: this build has no workbench window (built without MARBLER_BUILD_GUI)\n";
+    return marbler::cli::ExitFailure;
+#endif
+}

@@ -1,0 +1,94 @@
+#pragma once
+/// The genome: the whole recipe of one marbling design (genome-format.md, version 1).
+///
+/// A genome is plain data. Its tools are kept with the parameters exactly as the file gives them
+/// (angles in degrees, vectors as written but normalised by the loader); `Tools.h` turns them into
+/// the forward and inverse maps.
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace marbler {
+
+/// Every tool of the format. The order is the order of the parameter tables (Params.h).
+enum class Tool : std::uint8_t { Drop, Spray, Cylinder, Line, Comb, Wave, Circle, Sphere, Vortex };
+inline constexpr int ToolCount = 9;
+
+/// The two shapes of a 3D wave.
+enum class WaveShape : std::uint8_t { Eggcrate, Ripple };
+
+/// An sRGB colour, 8 bits a channel, as written `#rrggbb`.
+struct Color {
+    std::uint8_t r = 0, g = 0, b = 0;
+    friend bool operator==(const Color&, const Color&) = default;
+};
+
+/// One entry of `initial` or `operations`. Which fields matter depends on the tool and the
+/// dimension (see the parameter tables); the others keep their defaults and are not saved.
+struct Operation {
+    Tool tool = Tool::Drop;
+    glm::dvec3 center{0.0};             ///< `center` or `origin`
+    glm::dvec3 axis{0.0, 0.0, 1.0};     ///< 3D `axis` of cylinder, circle, sphere, vortex (unit)
+    glm::dvec3 direction{1.0, 0.0, 0.0}; ///< 3D `direction` of line, comb, wave (unit)
+    glm::dvec3 normal{0.0, 1.0, 0.0};   ///< 3D `normal`, unit and orthogonal to `direction`
+    double angle = 0.0;                 ///< 2D direction, degrees, clockwise on screen
+    double radius = 1.0;
+    double alpha = 0.0;                 ///< largest shift
+    double lambda = 1.0;                ///< sharpness
+    double spacing = 1.0;               ///< distance between the tines of a comb
+    glm::dvec2 amplitude{0.0};          ///< wave; 2D and ripple use [0]
+    glm::dvec2 wavelength{1.0};
+    glm::dvec2 phase{0.0};              ///< degrees
+    WaveShape shape = WaveShape::Eggcrate;
+    int color = 0;                      ///< palette index of an ink-laying tool
+
+    friend bool operator==(const Operation&, const Operation&) = default;
+};
+
+/// A raster start of a 2D design: a file path (relative to the genome file) or a data URL.
+struct SourceImage {
+    std::string image;
+    friend bool operator==(const SourceImage&, const SourceImage&) = default;
+};
+
+/// A whole design.
+struct Genome {
+    int dimension = 2;
+    glm::dvec3 size{1000.0, 1000.0, 1000.0}; ///< design space; z unused in 2D
+    Color background{0xf3, 0xec, 0xdc};
+    std::vector<Color> palette;
+    std::vector<Operation> initial;    ///< drops, sprays and (3D) cylinders, applied first
+    std::vector<Operation> operations; ///< strokes applied after `initial`
+    std::optional<SourceImage> source;
+    nlohmann::ordered_json meta = nlohmann::ordered_json::object();
+
+    /// The folder relative paths of `source` are resolved against (the genome file's folder);
+    /// not part of the design and not saved.
+    std::string baseDirectory;
+
+    friend bool operator==(const Genome& a, const Genome& b) {
+        return a.dimension == b.dimension && a.size == b.size && a.background == b.background
+            && a.palette == b.palette && a.initial == b.initial && a.operations == b.operations
+            && a.source == b.source && a.meta == b.meta;
+    }
+};
+
+/// Format limits (genome-format.md, Validation).
+inline constexpr std::size_t MaxEntries = 10000;
+inline constexpr std::size_t MaxFileBytes = 16u * 1024u * 1024u;
+inline constexpr std::size_t MaxPaletteSize = 16;
+inline constexpr int FormatVersion = 1;
+
+/// `#rrggbb`, lower case.
+std::string toHex(Color c);
+/// Parses `#rrggbb` (either case); nullopt when malformed.
+std::optional<Color> parseHexColor(const std::string& text);
+
+} // namespace marbler

@@ -1,0 +1,40 @@
+#pragma once
+/// Reading and writing genome files (genome-format.md, File). Every rule of the format is
+/// checked on load; what breaks a rule throws GenomeError naming the file and JSON location.
+
+#include "marbler/Genome.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace marbler {
+
+/// Parses genome text. `name` is how errors and warnings name the source (a file name).
+/// Warnings (unknown keys, skipped) are appended to `warnings` when given.
+/// Throws GenomeError.
+Genome parseGenome(std::string_view text, const std::string& name, std::vector<std::string>* warnings = nullptr);
+
+/// Loads a genome file (at most MaxFileBytes). Sets Genome::baseDirectory to its folder.
+/// Throws GenomeError (also for a file that cannot be read).
+Genome loadGenome(const std::filesystem::path& file, std::vector<std::string>* warnings = nullptr);
+
+/// The genome as JSON text: stable key order, two-space indent, trailing newline.
+std::string serializeGenome(const Genome& genome);
+
+/// The genome as an ordered JSON value (what serializeGenome prints).
+nlohmann::ordered_json toJson(const Genome& genome);
+
+/// Checks every rule of the format on an in-memory genome (what the loader checks after
+/// parsing). Throws GenomeError with `name` as the file.
+void validateGenome(const Genome& genome, const std::string& name);
+
+/// Writes text to a file atomically: a temporary file beside it, flushed, then renamed over
+/// the target, so a failure never leaves a half-written file. Throws RuntimeFailure.
+void writeFileAtomically(const std::filesystem::path& file, std::string_view text);
+
+/// Saves a genome atomically. Throws RuntimeFailure.
+void saveGenome(const Genome& genome, const std::filesystem::path& file);
+
+} // namespace marbler

@@ -1,0 +1,78 @@
+#pragma once
+/// Parameters as data: one table per tool and dimension, read by the loader and validator, the
+/// saver, the random generator and the genetic operators (and later the editor's widgets).
+
+#include "marbler/Genome.h"
+
+#include <span>
+#include <string_view>
+
+namespace marbler {
+
+/// What kind of value a parameter holds; decides its JSON form and how it is mutated.
+enum class ParamKind : std::uint8_t {
+    Position,  ///< a point of the design space (`dimension` numbers)
+    Direction, ///< a non-zero vector (`dimension` numbers, 3D only), normalised on load
+    Angle,     ///< degrees
+    Length,    ///< design units, > 0 where `positive`
+    Shift,     ///< signed design units (alpha, amplitude)
+    Phase,     ///< degrees, any value
+    Color,     ///< integer index into the palette
+    Shape,     ///< the 3D wave shape, `"eggcrate"` or `"ripple"`
+};
+
+/// Which field of Operation a parameter lives in.
+enum class ParamField : std::uint8_t {
+    Center, Axis, Direction, Normal, Angle, Radius, Alpha, Lambda, Spacing,
+    Amplitude, Wavelength, Phase, Shape, Color,
+};
+
+/// One row of a tool's parameter table.
+struct ParamSpec {
+    std::string_view key;  ///< JSON key
+    ParamField field;
+    ParamKind kind;
+    std::string_view unit; ///< shown by the editor
+    std::string_view help; ///< one line, for tooltips and --help
+    bool positive;         ///< must be > 0
+    double defaultValue;   ///< scalars; positions default to the design's centre
+    /// How far a mutation of strength 1 moves the value: for positions, lengths and shifts a
+    /// fraction of the design's largest side; for angles and phases, degrees.
+    double mutationScale;
+    /// True for a 3D wave's per-axis pairs: two numbers for an egg-crate, one for a ripple.
+    bool pair = false;
+};
+
+/// The tools and their tables.
+struct ToolSpec {
+    Tool tool;
+    std::string_view name; ///< as in JSON
+    bool in2D, in3D;
+    bool laysInk;          ///< drop, spray, cylinder
+    bool movesInk;         ///< everything but spray
+    std::span<const ParamSpec> params2D;
+    std::span<const ParamSpec> params3D;
+
+    std::span<const ParamSpec> params(int dimension) const { return dimension == 3 ? params3D : params2D; }
+    bool available(int dimension) const { return dimension == 3 ? in3D : in2D; }
+};
+
+/// The table of a tool.
+const ToolSpec& toolSpec(Tool tool);
+/// All tools, in enum order.
+std::span<const ToolSpec> allTools();
+/// The tool of a JSON name; nullptr when unknown.
+const ToolSpec* findTool(std::string_view name);
+/// Whether a tool may appear in `initial` (drop, spray, and cylinder in 3D).
+bool allowedInInitial(Tool tool, int dimension);
+
+/// Read or write the scalar components of a parameter. A Position/Direction has `dimension`
+/// components, a pair 2 (egg-crate) or 1, everything else 1.
+int componentCount(const ParamSpec& spec, const Operation& op, int dimension);
+double getComponent(const ParamSpec& spec, const Operation& op, int index);
+void setComponent(const ParamSpec& spec, Operation& op, int index, double value);
+
+/// An operation of the given tool with every parameter at its default, placed at `center`.
+Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center);
+
+} // namespace marbler

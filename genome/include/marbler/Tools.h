@@ -1,0 +1,58 @@
+#pragma once
+/// The forward and inverse maps of every tool (genome-format.md, Tools).
+///
+/// A genome is prepared once into PreparedOp records that hold everything a map needs in
+/// ready form (unit vectors, radians, squared radii). The scalar maps here are the reference:
+/// the vectorised CPU renderer and the GLSL shaders compute the same formulas from the same
+/// prepared records, and the tests hold them to these.
+
+#include "marbler/Genome.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace marbler {
+
+/// One tool, ready to apply. 2D tools use x and y and leave z at 0.
+struct PreparedOp {
+    Tool tool = Tool::Drop;
+    int dimension = 2;
+    WaveShape shape = WaveShape::Eggcrate;
+    int color = -1;         ///< palette index for ink-laying tools, else -1
+    glm::dvec3 c{0.0};      ///< center or origin
+    glm::dvec3 m{1, 0, 0};  ///< motion direction M (line, comb, wave 2D), wave 3D u
+    glm::dvec3 n{0, 1, 0};  ///< normal N (line, comb, wave 2D), wave 3D shift direction w
+    glm::dvec3 v{0, 0, 1};  ///< wave 3D second axis v = w x u
+    glm::dvec3 a{0, 0, 1};  ///< rotation or column axis (unit)
+    double r = 0.0;         ///< radius
+    double r2 = 0.0;        ///< r^2 (2D drop, cylinder), r^3 for 3D drops
+    double alphaLambda = 0; ///< alpha * lambda
+    double lambda = 1.0;
+    double spacing = 1.0;
+    double amp[2] = {0, 0};
+    double freq[2] = {0, 0}; ///< 2 pi / wavelength
+    double phase[2] = {0, 0}; ///< radians
+};
+
+/// Prepares one entry of a genome of the given dimension.
+PreparedOp prepare(const Operation& op, int dimension);
+
+/// The whole genome in time order: `initial` then `operations`.
+std::vector<PreparedOp> prepare(const Genome& genome);
+
+/// F: where the tool moves P.
+glm::dvec3 forwardMap(const PreparedOp& op, const glm::dvec3& p);
+/// F^-1: where Q came from. For ink-laying tools defined outside the ink only.
+glm::dvec3 inverseMap(const PreparedOp& op, const glm::dvec3& q);
+/// Whether P (at the time right after the tool) lies in the tool's ink (open boundary).
+bool insideInk(const PreparedOp& op, const glm::dvec3& p);
+
+/// The colour rule: the palette index seen at P after all of `ops` (time order), or -1 where
+/// no ink lies. `where`, if given, receives the point P maps back to (for a source image).
+int traceColor(const std::vector<PreparedOp>& ops, glm::dvec3 p, glm::dvec3* where = nullptr);
+
+/// The distance-dependent shift l = alpha * lambda / (d + lambda).
+inline double shiftFor(const PreparedOp& op, double d) { return op.alphaLambda / (d + op.lambda); }
+
+} // namespace marbler

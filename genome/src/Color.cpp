@@ -1,0 +1,30 @@
+#include "marbler/Genome.h"
+
+#include <cstdio>
+
+namespace marbler {
+
+std::string toHex(Color c) {
+    char text[8];
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", c.r, c.g, c.b);
+    return text;
+}
+
+std::optional<Color> parseHexColor(const std::string& text) {
+    if (text.size() != 7 || text[0] != '#') return std::nullopt;
+    auto nibble = [](char ch) -> int {
+        if (ch >= '0' && ch <= '9') return ch - '0';
+        if (ch >= 'a' && ch <= 'f') return ch - 'a' + 10;
+        if (ch >= 'A' && ch <= 'F') return ch - 'A' + 10;
+        return -1;
+    };
+    std::uint8_t channels[3];
+    for (int i = 0; i < 3; ++i) {
+        int hi = nibble(text[1 + 2 * i]), lo = nibble(text[2 + 2 * i]);
+        if (hi < 0 || lo < 0) return std::nullopt;
+        channels[i] = static_cast<std::uint8_t>(hi * 16 + lo);
+    }
+    return Color{channels[0], channels[1], channels[2]};
+}
+
+} // namespace marbler

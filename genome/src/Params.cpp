@@ -1,0 +1,147 @@
+#include "marbler/Params.h"
+
+#include <array>
+#include <cassert>
+
+namespace marbler {
+namespace {
+
+using K = ParamKind;
+using F = ParamField;
+
+// Shared rows. Mutation scales: positions and lengths as a fraction of the design's largest
+// side, angles and phases in degrees.
+constexpr ParamSpec Center{"center", F::Center, K::Position, "design units", "centre of the tool", false, 0.0, 0.08};
+constexpr ParamSpec Origin{"origin", F::Center, K::Position, "design units", "a point on the stroke's path", false, 0.0, 0.08};
+constexpr ParamSpec Radius{"radius", F::Radius, K::Length, "design units", "radius", true, 60.0, 0.03};
+constexpr ParamSpec ColorRow{"color", F::Color, K::Color, "", "palette index of the ink", false, 0.0, 0.0};
+constexpr ParamSpec Axis{"axis", F::Axis, K::Direction, "", "axis (turned by the right-hand rule)", false, 0.0, 0.25};
+constexpr ParamSpec Angle{"angle", F::Angle, K::Angle, "degrees", "direction of motion, clockwise from +x", false, 0.0, 25.0};
+constexpr ParamSpec Direction{"direction", F::Direction, K::Direction, "", "direction of motion", false, 0.0, 0.25};
+constexpr ParamSpec Normal{"normal", F::Normal, K::Direction, "", "across the plane the tine sweeps", false, 0.0, 0.25};
+constexpr ParamSpec Alpha{"alpha", F::Alpha, K::Shift, "design units", "largest shift, at the tine", false, 60.0, 0.03};
+constexpr ParamSpec Lambda{"lambda", F::Lambda, K::Length, "design units", "sharpness: smaller concentrates the shift near the tine", true, 12.0, 0.01};
+constexpr ParamSpec Spacing{"spacing", F::Spacing, K::Length, "design units", "distance between tines", true, 80.0, 0.02};
+constexpr ParamSpec Amplitude{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", false, 25.0, 0.02};
+constexpr ParamSpec Wavelength{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", true, 300.0, 0.05};
+constexpr ParamSpec Phase{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", false, 0.0, 45.0};
+constexpr ParamSpec Shape{"shape", F::Shape, K::Shape, "", "\"eggcrate\" or \"ripple\"", false, 0.0, 0.0};
+constexpr ParamSpec AmplitudePair{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", false, 25.0, 0.02, true};
+constexpr ParamSpec WavelengthPair{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", true, 300.0, 0.05, true};
+constexpr ParamSpec PhasePair{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", false, 0.0, 45.0, true};
+
+constexpr std::array Ink{Center, Radius, ColorRow};
+constexpr std::array Cylinder3{Center, Axis, Radius, ColorRow};
+constexpr std::array Line2{Origin, Angle, Alpha, Lambda};
+constexpr std::array Line3{Origin, Direction, Normal, Alpha, Lambda};
+constexpr std::array Comb2{Origin, Angle, Alpha, Lambda, Spacing};
+constexpr std::array Comb3{Origin, Direction, Normal, Alpha, Lambda, Spacing};
+constexpr std::array Wave2{Origin, Angle, Amplitude, Wavelength, Phase};
+constexpr std::array Wave3{Origin, Direction, Normal, Shape, AmplitudePair, WavelengthPair, PhasePair};
+constexpr std::array Circle2{Center, Radius, Alpha, Lambda};
+constexpr std::array Circle3{Center, Axis, Radius, Alpha, Lambda};
+constexpr std::array Vortex2{Center, Alpha, Lambda};
+constexpr std::array Vortex3{Center, Axis, Alpha, Lambda};
+
+const std::array<ToolSpec, ToolCount> Tools{{
+    {Tool::Drop, "drop", true, true, true, true, Ink, Ink},
+    {Tool::Spray, "spray", true, true, true, false, Ink, Ink},
+    {Tool::Cylinder, "cylinder", false, true, true, true, {}, Cylinder3},
+    {Tool::Line, "line", true, true, false, true, Line2, Line3},
+    {Tool::Comb, "comb", true, true, false, true, Comb2, Comb3},
+    {Tool::Wave, "wave", true, true, false, true, Wave2, Wave3},
+    {Tool::Circle, "circle", true, true, false, true, Circle2, Circle3},
+    {Tool::Sphere, "sphere", false, true, false, true, {}, Circle3},
+    {Tool::Vortex, "vortex", true, true, false, true, Vortex2, Vortex3},
+}};
+
+glm::dvec3* vectorField(const ParamSpec& spec, Operation& op) {
+    switch (spec.field) {
+    case F::Center: return &op.center;
+    case F::Axis: return &op.axis;
+    case F::Direction: return &op.direction;
+    case F::Normal: return &op.normal;
+    default: return nullptr;
+    }
+}
+
+glm::dvec2* pairField(const ParamSpec& spec, Operation& op) {
+    switch (spec.field) {
+    case F::Amplitude: return &op.amplitude;
+    case F::Wavelength: return &op.wavelength;
+    case F::Phase: return &op.phase;
+    default: return nullptr;
+    }
+}
+
+double* scalarField(const ParamSpec& spec, Operation& op) {
+    switch (spec.field) {
+    case F::Angle: return &op.angle;
+    case F::Radius: return &op.radius;
+    case F::Alpha: return &op.alpha;
+    case F::Lambda: return &op.lambda;
+    case F::Spacing: return &op.spacing;
+    case F::Amplitude: return &op.amplitude[0];
+    case F::Wavelength: return &op.wavelength[0];
+    case F::Phase: return &op.phase[0];
+    default: return nullptr;
+    }
+}
+
+} // namespace
+
+const ToolSpec& toolSpec(Tool tool) { return Tools[static_cast<std::size_t>(tool)]; }
+
+std::span<const ToolSpec> allTools() { return Tools; }
+
+const ToolSpec* findTool(std::string_view name) {
+    for (const ToolSpec& spec : Tools)
+        if (spec.name == name) return &spec;
+    return nullptr;
+}
+
+bool allowedInInitial(Tool tool, int dimension) {
+    return tool == Tool::Drop || tool == Tool::Spray || (tool == Tool::Cylinder && dimension == 3);
+}
+
+int componentCount(const ParamSpec& spec, const Operation& op, int dimension) {
+    if (spec.kind == K::Position || spec.kind == K::Direction) return dimension;
+    if (spec.pair) return op.shape == WaveShape::Eggcrate ? 2 : 1;
+    return 1;
+}
+
+double getComponent(const ParamSpec& spec, const Operation& op, int index) {
+    auto& mutableOp = const_cast<Operation&>(op); // the field lookups do not write
+    if (glm::dvec3* v = vectorField(spec, mutableOp)) return (*v)[index];
+    if (spec.pair) return (*pairField(spec, mutableOp))[index];
+    if (spec.kind == K::Color) return op.color;
+    if (spec.kind == K::Shape) return static_cast<double>(op.shape);
+    return *scalarField(spec, mutableOp);
+}
+
+void setComponent(const ParamSpec& spec, Operation& op, int index, double value) {
+    if (glm::dvec3* v = vectorField(spec, op)) {
+        (*v)[index] = value;
+    } else if (spec.pair) {
+        (*pairField(spec, op))[index] = value;
+    } else if (spec.kind == K::Color) {
+        op.color = static_cast<int>(value);
+    } else if (spec.kind == K::Shape) {
+        op.shape = value >= 0.5 ? WaveShape::Ripple : WaveShape::Eggcrate;
+    } else {
+        *scalarField(spec, op) = value;
+    }
+}
+
+Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center) {
+    Operation op;
+    op.tool = tool;
+    op.center = dimension == 3 ? center : glm::dvec3(center.x, center.y, 0.0);
+    for (const ParamSpec& spec : toolSpec(tool).params(dimension)) {
+        if (spec.kind == K::Position || spec.kind == K::Direction || spec.kind == K::Shape) continue;
+        for (int i = 0; i < componentCount(spec, op, dimension); ++i) setComponent(spec, op, i, spec.defaultValue);
+    }
+    return op;
+}
+
+} // namespace marbler

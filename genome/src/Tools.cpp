@@ -1,0 +1,173 @@
+#include "marbler/Tools.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <numbers>
+
+namespace marbler {
+namespace {
+
+constexpr double DegToRad = std::numbers::pi / 180.0;
+
+glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback) {
+    double len = glm::length(v);
+    return len > 0.0 && std::isfinite(len) ? v / len : fallback;
+}
+
+/// Turns `rel` by theta about the unit axis `a` (right-hand rule).
+glm::dvec3 rotateAbout(const glm::dvec3& rel, const glm::dvec3& a, double theta) {
+    glm::dvec3 along = glm::dot(rel, a) * a;
+    glm::dvec3 across = rel - along;
+    return along + across * std::cos(theta) + glm::cross(a, across) * std::sin(theta);
+}
+
+/// The distance to the nearest tine of a comb: s/2 - |mod(t, s) - s/2|.
+double combDistance(double t, double s) {
+    double m = t - s * std::floor(t / s);
+    return 0.5 * s - std::abs(m - 0.5 * s);
+}
+
+double waveShift(const PreparedOp& op, const glm::dvec3& p) {
+    glm::dvec3 rel = p - op.c;
+    if (op.dimension == 2) return op.amp[0] * std::sin(op.freq[0] * glm::dot(rel, op.n) + op.phase[0]);
+    double x = glm::dot(rel, op.m), y = glm::dot(rel, op.v);
+    if (op.shape == WaveShape::Ripple) return op.amp[0] * std::sin(op.freq[0] * std::sqrt(x * x + y * y) + op.phase[0]);
+    return op.amp[0] * std::sin(op.freq[0] * x + op.phase[0]) + op.amp[1] * std::sin(op.freq[1] * y + op.phase[1]);
+}
+
+/// Circle, sphere and vortex: turn P about C (2D) or about the axis line through C (3D) by
+/// theta = l(d) / rho, `sign` +1 forward, -1 inverse. rho is kept by the turn, so the inverse
+/// finds the same angle from Q.
+glm::dvec3 swirl(const PreparedOp& op, const glm::dvec3& p, double sign) {
+    glm::dvec3 rel = p - op.c;
+    double rho;
+    if (op.tool == Tool::Circle && op.dimension == 3) {
+        rho = glm::length(rel - glm::dot(rel, op.a) * op.a);
+    } else {
+        rho = glm::length(rel);
+    }
+    if (!(rho > 0.0)) return p; // the centre (or axis) stays where it is
+    double d = op.tool == Tool::Vortex ? rho : std::abs(rho - op.r);
+    double theta = sign * shiftFor(op, d) / rho;
+    if (op.dimension == 2) {
+        double c = std::cos(theta), s = std::sin(theta);
+        return op.c + glm::dvec3(c * rel.x - s * rel.y, s * rel.x + c * rel.y, 0.0);
+    }
+    return op.c + rotateAbout(rel, op.a, theta);
+}
+
+/// Drop (2D area law, 3D volume law) and cylinder (2D law across the axis): push P radially,
+/// `sign` +1 forward, -1 inverse.
+glm::dvec3 push(const PreparedOp& op, const glm::dvec3& p, double sign) {
+    glm::dvec3 rel = p - op.c;
+    if (op.tool == Tool::Cylinder) rel -= glm::dot(rel, op.a) * op.a;
+    double len2 = glm::dot(rel, rel);
+    if (!(len2 > 0.0)) return p;
+    double factor;
+    if (op.tool == Tool::Drop && op.dimension == 3) {
+        double len3 = len2 * std::sqrt(len2);
+        factor = std::cbrt(std::max(0.0, 1.0 + sign * op.r2 / len3));
+    } else {
+        factor = std::sqrt(std::max(0.0, 1.0 + sign * op.r2 / len2));
+    }
+    return p + rel * (factor - 1.0);
+}
+
+} // namespace
+
+PreparedOp prepare(const Operation& op, int dimension) {
+    PreparedOp p;
+    p.tool = op.tool;
+    p.dimension = dimension;
+    p.shape = op.shape;
+    p.c = dimension == 3 ? op.center : glm::dvec3(op.center.x, op.center.y, 0.0);
+    p.r = op.radius;
+    p.alphaLambda = op.alpha * op.lambda;
+    p.lambda = op.lambda;
+    p.spacing = op.spacing;
+    if (op.tool == Tool::Drop || op.tool == Tool::Spray || op.tool == Tool::Cylinder) p.color = op.color;
+    if (op.tool == Tool::Drop && dimension == 3)
+        p.r2 = op.radius * op.radius * op.radius;
+    else
+        p.r2 = op.radius * op.radius;
+    if (dimension == 2) {
+        double a = op.angle * DegToRad;
+        p.m = {std::cos(a), std::sin(a), 0.0};
+        p.n = {-std::sin(a), std::cos(a), 0.0};
+    } else {
+        p.m = unitOr(op.direction, {1, 0, 0});
+        glm::dvec3 n = op.normal - glm::dot(op.normal, p.m) * p.m;
+        p.n = unitOr(n, std::abs(p.m.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
+        p.v = glm::cross(p.n, p.m);
+        p.a = unitOr(op.axis, {0, 0, 1});
+    }
+    for (int i = 0; i < 2; ++i) {
+        p.amp[i] = op.amplitude[i];
+        p.freq[i] = 2.0 * std::numbers::pi / op.wavelength[i];
+        p.phase[i] = op.phase[i] * DegToRad;
+    }
+    return p;
+}
+
+std::vector<PreparedOp> prepare(const Genome& genome) {
+    std::vector<PreparedOp> ops;
+    ops.reserve(genome.initial.size() + genome.operations.size());
+    for (const Operation& op : genome.initial) ops.push_back(prepare(op, genome.dimension));
+    for (const Operation& op : genome.operations) ops.push_back(prepare(op, genome.dimension));
+    return ops;
+}
+
+glm::dvec3 forwardMap(const PreparedOp& op, const glm::dvec3& p) {
+    switch (op.tool) {
+    case Tool::Spray: return p;
+    case Tool::Drop:
+    case Tool::Cylinder: return push(op, p, +1.0);
+    case Tool::Line: return p + shiftFor(op, std::abs(glm::dot(p - op.c, op.n))) * op.m;
+    case Tool::Comb: return p + shiftFor(op, combDistance(glm::dot(p - op.c, op.n), op.spacing)) * op.m;
+    case Tool::Wave: return p + waveShift(op, p) * (op.dimension == 2 ? op.m : op.n);
+    case Tool::Circle:
+    case Tool::Sphere:
+    case Tool::Vortex: return swirl(op, p, +1.0);
+    }
+    return p;
+}
+
+glm::dvec3 inverseMap(const PreparedOp& op, const glm::dvec3& q) {
+    switch (op.tool) {
+    case Tool::Spray: return q;
+    case Tool::Drop:
+    case Tool::Cylinder: return push(op, q, -1.0);
+    case Tool::Line: return q - shiftFor(op, std::abs(glm::dot(q - op.c, op.n))) * op.m;
+    case Tool::Comb: return q - shiftFor(op, combDistance(glm::dot(q - op.c, op.n), op.spacing)) * op.m;
+    case Tool::Wave: return q - waveShift(op, q) * (op.dimension == 2 ? op.m : op.n);
+    case Tool::Circle:
+    case Tool::Sphere:
+    case Tool::Vortex: return swirl(op, q, -1.0);
+    }
+    return q;
+}
+
+bool insideInk(const PreparedOp& op, const glm::dvec3& p) {
+    glm::dvec3 rel = p - op.c;
+    switch (op.tool) {
+    case Tool::Drop:
+    case Tool::Spray: return glm::dot(rel, rel) < op.r * op.r;
+    case Tool::Cylinder: {
+        glm::dvec3 across = rel - glm::dot(rel, op.a) * op.a;
+        return glm::dot(across, across) < op.r * op.r;
+    }
+    default: return false;
+    }
+}
+
+int traceColor(const std::vector<PreparedOp>& ops, glm::dvec3 p, glm::dvec3* where) {
+    for (auto it = ops.rbegin(); it != ops.rend(); ++it) {
+        if (it->color >= 0 && insideInk(*it, p)) return it->color;
+        p = inverseMap(*it, p);
+    }
+    if (where) *where = p;
+    return -1;
+}
+
+} // namespace marbler

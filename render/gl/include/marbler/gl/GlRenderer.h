@@ -1,0 +1,64 @@
+#pragma once
+/// The OpenGL shader back end: renders genomes offscreen (framebuffer objects on a
+/// QOffscreenSurface), 2D designs, 3D slices and solid genomes on meshes. Qt's OpenGL types stay
+/// in the implementation (pimpl), so users of this header need only QtGui's QImage-free API.
+
+#include "marbler/Genome.h"
+#include "marbler/Sampling.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace marbler::gl {
+
+/// A cutting plane through a solid object: points with dot(normal, p) > offset (in the fitted
+/// design box) are cut away, showing the marbled inside.
+struct CutPlane {
+    glm::dvec3 normal{0.0, 0.0, 1.0};
+    double offset = 0.0;
+};
+
+/// How a solid genome is shown on an object.
+struct MeshSettings {
+    int width = 512, height = 512;
+    std::string mesh = "vase"; ///< built-in name (sphere, cube, torus, vase, teapot) or a file path
+    double yaw = 30.0, pitch = 20.0; ///< orbit camera, degrees
+    double distance = 2.6;           ///< orbit radius, in units of the fitted object's radius
+    int supersample = 3;             ///< 1, 3 or 5 (n x n)
+    std::optional<CutPlane> cut;
+    Color clearColor{0x2b, 0x2b, 0x2b};
+};
+
+/// An offscreen GL renderer. Owns a GL context, current on the thread that created it; use it
+/// from that thread only.
+class GlRenderer {
+public:
+    /// Creates an offscreen OpenGL 4.3+ core context. Throws RuntimeFailure when none can be made
+    /// (no display, no driver) with the reason.
+    GlRenderer();
+    ~GlRenderer();
+    GlRenderer(const GlRenderer&) = delete;
+    GlRenderer& operator=(const GlRenderer&) = delete;
+
+    /// Whether an offscreen context can be made here (tries once, caches the answer).
+    static bool available(std::string* reason = nullptr);
+
+    /// Renders a 2D genome or a slice of a 3D one, exactly as the CPU renderer samples it.
+    /// Outputs larger than the GPU's framebuffer limit are rendered in tiles.
+    /// Throws InputError for bad settings, RuntimeFailure for GL failures.
+    Image render(const Genome& genome, const RenderSettings& settings);
+
+    /// Renders a solid genome on an object fitted into its design box. Throws InputError for a
+    /// 2D genome or a mesh that cannot be loaded.
+    Image renderMesh(const Genome& genome, const MeshSettings& settings);
+
+    /// The driver's renderer string (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
+    std::string rendererName() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> mImpl;
+};
+
+} // namespace marbler::gl

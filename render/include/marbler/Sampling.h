@@ -1,0 +1,92 @@
+#pragma once
+/// What a raster render samples (genome-format.md, Rendering a raster): the region, the 3D
+/// slice, the antialiasing patterns and the linear-light average. Shared by the CPU renderer
+/// and the GL back end so both sample the same points.
+
+#include "marbler/Genome.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace marbler {
+
+/// One antialiasing pattern: offsets in pixels from the pixel centre, and their weights
+/// (summing to 1).
+struct AaPattern {
+    std::string name;
+    std::vector<glm::dvec2> offsets;
+    std::vector<double> weights;
+};
+
+/// The pattern of a name of the spec (`none`, `rgss`, `quincunx`, `grid2`..`grid8`,
+/// `checker4`, `rooks8`). Throws InputError for any other name.
+AaPattern aaPattern(std::string_view name);
+/// Every pattern name, for --help and tests.
+std::vector<std::string> aaPatternNames();
+
+/// A rectangle of the design space (x0 < x1, y0 < y1 in the slice's own axes).
+struct Region {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+/// A cross-section of a solid genome: axis 0 (x = value), 1 (y = value) or 2 (z = value).
+struct Slice {
+    int axis = 2;
+    double value = 0.0;
+};
+
+/// Everything a raster render needs besides the genome.
+struct RenderSettings {
+    int width = 0, height = 0;
+    std::string aa = "none";
+    std::optional<Region> region; ///< default: the whole design space (of the slice plane)
+    std::optional<Slice> slice;   ///< required for a 3D genome, ignored in 2D
+    int threads = 0;              ///< 0: every core
+};
+
+/// The design-space rectangle the render covers: the region, or the whole design (in the
+/// slice's plane: x-y for z=c, x-z for y=c, y-z for x=c).
+Region effectiveRegion(const Genome& genome, const RenderSettings& settings);
+
+/// Maps the two raster axes (u along columns, v along rows) to a point of the design space.
+struct SampleFrame {
+    glm::dvec3 origin{0.0}; ///< the point of raster coordinate (0, 0)
+    glm::dvec3 du{0.0};     ///< design-space step of one pixel along a row
+    glm::dvec3 dv{0.0};     ///< design-space step of one pixel down a column
+    /// The design point of pixel (i, j) at sample offset (ox, oy).
+    glm::dvec3 at(double i, double j, double ox, double oy) const {
+        return origin + (i + 0.5 + ox) * du + (j + 0.5 + oy) * dv;
+    }
+};
+SampleFrame sampleFrame(const Genome& genome, const RenderSettings& settings);
+
+/// Largest raster Marbler renders: a side of at most MaxImageSide and at most MaxImagePixels.
+inline constexpr int MaxImageSide = 65536;
+inline constexpr std::int64_t MaxImagePixels = std::int64_t(1) << 31;
+/// Throws InputError when the settings ask for an empty or absurd raster, a bad region or a
+/// missing/bad slice.
+void checkRenderSettings(const Genome& genome, const RenderSettings& settings);
+
+/// sRGB transfer functions on [0, 1].
+double srgbToLinear(double c);
+double linearToSrgb(double c);
+/// A table of the 256 linear values of 8-bit sRGB.
+const float* srgbToLinearTable();
+/// Linear [0, 1] to 8-bit sRGB, rounded to nearest.
+std::uint8_t encodeSrgb8(double linear);
+
+/// An 8-bit sRGB raster, rows top to bottom, 3 channels interleaved.
+struct Image {
+    int width = 0, height = 0;
+    std::vector<std::uint8_t> rgb;
+    std::uint8_t* row(int y) { return rgb.data() + std::size_t(y) * std::size_t(width) * 3; }
+    const std::uint8_t* row(int y) const { return rgb.data() + std::size_t(y) * std::size_t(width) * 3; }
+};
+
+} // namespace marbler

@@ -1,0 +1,71 @@
+#include "TestUtil.h"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace marbler::test {
+
+std::filesystem::path dataDir() { return MARBLER_TEST_DATA; }
+
+std::filesystem::path outputDir(const std::string& name) {
+    std::filesystem::path dir = std::filesystem::path(MARBLER_TEST_OUTPUT) / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+std::string readFile(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + file.string());
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void writeFile(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+}
+
+RunResult runMarbler(const std::vector<std::string>& args) {
+    // Capture through files rather than pipes: no risk of a full pipe blocking the child.
+    static int counter = 0;
+    std::filesystem::path dir = std::filesystem::path(MARBLER_TEST_OUTPUT) / "run";
+    std::filesystem::create_directories(dir);
+    std::string stem = (dir / (std::to_string(::getpid()) + "-" + std::to_string(counter++))).string();
+    std::string outPath = stem + ".out", errPath = stem + ".err";
+
+    pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        int out = ::open(outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int err = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        ::dup2(out, 1);
+        ::dup2(err, 2);
+        std::vector<char*> argv;
+        std::string exe = MARBLER_EXECUTABLE;
+        argv.push_back(exe.data());
+        std::vector<std::string> copy = args;
+        for (std::string& a : copy) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        ::execv(exe.c_str(), argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    RunResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = readFile(outPath);
+    result.err = readFile(errPath);
+    std::filesystem::remove(outPath);
+    std::filesystem::remove(errPath);
+    return result;
+}
+
+} // namespace marbler::test
