@@ -1,0 +1,68 @@
+#pragma once
+/// The CPU renderer: the colour rule of genome-format.md evaluated backward per sample, over
+/// tiles of points in structure-of-arrays form, one operation at a time, on every core.
+
+#include "marbler/Genome.h"
+#include "marbler/Sampling.h"
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace marbler {
+
+/// Progress and cancellation of long work. Both optional; `progress` receives a fraction in
+/// [0, 1] and may be called from worker threads.
+struct RenderControl {
+    std::function<void(double)> progress;
+    const std::atomic<bool>* cancel = nullptr;
+    bool cancelled() const { return cancel && cancel->load(std::memory_order_relaxed); }
+};
+
+/// A genome prepared for rendering (operations in ready form, the source image decoded).
+/// Immutable once built, so one instance may render from many threads.
+class CpuRenderer {
+public:
+    /// Throws InputError when the genome's source image cannot be loaded.
+    explicit CpuRenderer(const Genome& genome);
+    ~CpuRenderer();
+    CpuRenderer(CpuRenderer&&) noexcept;
+    CpuRenderer& operator=(CpuRenderer&&) noexcept;
+
+    /// Renders the whole raster. Throws InputError for bad settings (checkRenderSettings),
+    /// Cancelled when cancelled.
+    Image render(const RenderSettings& settings, const RenderControl* control = nullptr) const;
+
+    /// Renders rows [y0, y1) of the raster into `rgb` ((y1 - y0) * width * 3 bytes).
+    void renderRows(const RenderSettings& settings, int y0, int y1, std::uint8_t* rgb,
+                    const RenderControl* control = nullptr) const;
+
+    /// The palette index seen at one design point (-1: background or source), by the vector
+    /// kernel; for tests and picking.
+    int colorIndexAt(const glm::dvec3& p) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> mImpl;
+};
+
+/// Output options of a render to a file.
+struct ExportOptions {
+    std::optional<double> dpi; ///< written into the file's resolution when set
+};
+
+/// Renders in strips of rows and writes them progressively to `file` (format by extension:
+/// PNG, TIFF, EXR, JPEG, ...), atomically: a temporary file is renamed over `file` only when
+/// complete; on failure or cancel nothing is left behind. Throws InputError, RuntimeFailure,
+/// Cancelled.
+void renderToFile(const Genome& genome, const RenderSettings& settings, const std::filesystem::path& file,
+                  const ExportOptions& options = {}, const RenderControl* control = nullptr);
+
+/// Writes an in-memory image atomically (format by extension). Throws InputError for an
+/// unknown extension, RuntimeFailure for I/O failures.
+void writeImage(const Image& image, const std::filesystem::path& file, const ExportOptions& options = {});
+
+} // namespace marbler
