@@ -1,9 +1,296 @@
-// placeholder: replaced by its owner
+// `marbler render`: a raster of a genome (spec/cli.md), on the CPU by default, with the GL back
+// end on request.
+
 #include "cli/Cli.h"
+#include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
+
+#ifdef MARBLER_HAVE_GL
+#include "marbler/gl/GlRenderer.h"
+#endif
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <mutex>
+#include <sstream>
+
+#include <unistd.h>
+
 namespace marbler::cli {
-int runRender(std::span<const std::string>) {
-    std::cerr << "marbler render: not built yet\n";
-    return ExitFailure;
+namespace {
+
+constexpr const char* Help = R"(usage: marbler render GENOME -o OUT [options]
+
+Renders a genome to a raster image. The format follows OUT's extension: .png, .tif/.tiff,
+.jpg/.jpeg (8-bit sRGB) or .exr (linear half float). Nothing is written unless the whole image
+is; exit status 0 success, 2 bad usage or bad input, 1 any other failure.
+
+options:
+  -o, --output OUT          the image file to write (required)
+  --width W                 width in pixels; alone, the height keeps the region's aspect
+  --height H                height in pixels; alone, the width keeps the region's aspect
+                            (default: 1024 pixels on the longer side)
+  --aa MODE                 antialiasing: none (default), rgss, quincunx, grid2..grid8,
+                            checker4, rooks8; samples are averaged in linear light
+  --region X0,Y0,X1,Y1      the part of the design space to render (default: all of it; for a
+                            slice, in the slice's own axes: x-y for z=, x-z for y=, y-z for x=)
+  --slice AXIS=VALUE        a cross-section of a solid (3D) genome, e.g. z=500; required in 3D
+  --dpi N                   print resolution written into the file
+  --size WxH{cm,mm,in}      print size, e.g. 42x59.4cm; with --dpi it sets the pixel size
+  --threads N               worker threads (default: every core)
+  --gpu                     render with the OpenGL back end (needs a GL 4.3 context)
+  --mesh NAME|FILE          show a solid genome on an object: sphere, cube, torus, vase, teapot
+                            or a mesh file (uses the GL back end; needs --view)
+  --view YAW,PITCH          orbit camera angles in degrees for --mesh
+  --supersample 1|3|5       supersampling of --mesh renders (default 3)
+  --progress                show progress on stderr even when it is not a terminal
+  --quiet                   no progress line
+  -h, --help                this text
+)";
+
+std::vector<double> parseNumberList(const std::string& option, const std::string& text, std::size_t count) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t comma = text.find(',', start);
+        std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        double value = 0;
+        auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+        if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value))
+            throw InputError("--" + option + ": '" + text + "' is not " + std::to_string(count) +
+                             " numbers separated by commas");
+        values.push_back(value);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (values.size() != count)
+        throw InputError("--" + option + ": '" + text + "' is not " + std::to_string(count) +
+                         " numbers separated by commas");
+    return values;
 }
+
+Slice parseSlice(const std::string& text) {
+    std::size_t eq = text.find('=');
+    std::string axis = eq == std::string::npos ? "" : text.substr(0, eq);
+    Slice slice;
+    if (axis == "x" || axis == "X") slice.axis = 0;
+    else if (axis == "y" || axis == "Y") slice.axis = 1;
+    else if (axis == "z" || axis == "Z") slice.axis = 2;
+    else throw InputError("--slice: '" + text + "' is not AXIS=VALUE with AXIS x, y or z (e.g. z=500)");
+    slice.value = parseNumberList("slice", text.substr(eq + 1), 1)[0];
+    return slice;
+}
+
+/// A print size in inches: "WxH" followed by cm, mm or in.
+std::pair<double, double> parsePrintSize(const std::string& text) {
+    auto bad = [&] { return InputError("--size: '" + text + "' is not WIDTHxHEIGHT with a unit cm, mm or in (e.g. 42x59.4cm)"); };
+    if (text.size() < 3) throw bad();
+    std::string unit = text.substr(text.size() - 2);
+    double perInch = unit == "cm" ? 2.54 : unit == "mm" ? 25.4 : unit == "in" ? 1.0 : 0.0;
+    if (perInch == 0.0) throw bad();
+    std::string numbers = text.substr(0, text.size() - 2);
+    std::size_t x = numbers.find_first_of("xX");
+    if (x == std::string::npos) throw bad();
+    std::vector<double> w = parseNumberList("size", numbers.substr(0, x), 1);
+    std::vector<double> h = parseNumberList("size", numbers.substr(x + 1), 1);
+    if (!(w[0] > 0.0) || !(h[0] > 0.0)) throw InputError("--size: width and height must be > 0 (got '" + text + "')");
+    return {w[0] / perInch, h[0] / perInch};
+}
+
+/// Pixels from a length and a ratio, refusing what cannot be an image before any allocation.
+int pixelsOf(double value, const std::string& what) {
+    double rounded = std::round(value);
+    if (!(rounded >= 1.0)) throw InputError(what + " comes to less than one pixel");
+    if (rounded > MaxImageSide)
+        throw InputError(what + " comes to " + std::to_string(static_cast<long long>(std::min(rounded, 1e18))) +
+                         " pixels, more than the largest side of " + std::to_string(MaxImageSide));
+    return static_cast<int>(rounded);
+}
+
+/// One progress line on stderr, rewritten in place.
+class ProgressLine {
+public:
+    explicit ProgressLine(bool enabled) : mEnabled(enabled) {}
+    ~ProgressLine() { finish(); }
+    void update(double fraction) {
+        if (!mEnabled) return;
+        std::lock_guard lock(mMutex);
+        int percent = static_cast<int>(fraction * 100.0);
+        if (percent == mLast) return;
+        mLast = percent;
+        std::cerr << "\rrendering " << percent << "%" << std::flush;
+        mShown = true;
+    }
+    void finish() {
+        if (mShown) std::cerr << "\r              \r" << std::flush;
+        mShown = false;
+    }
+
+private:
+    bool mEnabled;
+    bool mShown = false;
+    int mLast = -1;
+    std::mutex mMutex;
+};
+
+int renderGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
+                 const ExportOptions& exportOptions, const std::optional<std::pair<double, double>>& printSize,
+                 const std::filesystem::path& outFile);
+
+int render(std::span<const std::string> words) {
+    Args args = parseArgs(words,
+                          {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
+                           "supersample", "threads"},
+                          {"gpu", "quiet", "progress", "help", "h"});
+    if (args.has("help") || args.has("h")) {
+        std::cout << Help;
+        return ExitOk;
+    }
+    if (args.positional.size() != 1)
+        throw InputError(args.positional.empty() ? "a genome file is required (see marbler render --help)"
+                                                 : "exactly one genome file is expected (got " +
+                                                       std::to_string(args.positional.size()) + ")");
+    std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
+    if (!output || output->empty()) throw InputError("-o OUT is required (see marbler render --help)");
+    const std::filesystem::path outFile(*output);
+
+    // Everything the command line can check is checked before the genome is read.
+    RenderSettings settings;
+    settings.aa = args.get("aa").value_or("none");
+    aaPattern(settings.aa);
+    settings.threads = parseIntOption(args, "threads", 0, 0, 1024);
+    if (auto region = args.get("region")) {
+        std::vector<double> r = parseNumberList("region", *region, 4);
+        settings.region = Region{r[0], r[1], r[2], r[3]};
+    }
+    if (auto slice = args.get("slice")) settings.slice = parseSlice(*slice);
+    ExportOptions exportOptions;
+    if (args.has("dpi")) {
+        double dpi = parseDoubleOption(args, "dpi", 0.0);
+        if (!(dpi > 0.0) || dpi > 1e6) throw InputError("--dpi: must be a positive number (got " + *args.get("dpi") + ")");
+        exportOptions.dpi = dpi;
+    }
+    std::optional<std::pair<double, double>> printSize;
+    if (auto size = args.get("size")) {
+        printSize = parsePrintSize(*size);
+        if (!exportOptions.dpi) throw InputError("--size needs --dpi to give the pixel size");
+        if (args.has("width") || args.has("height")) throw InputError("--size and --width/--height exclude each other");
+    }
+    const bool meshMode = args.has("mesh");
+    if (meshMode && !args.has("view")) throw InputError("--mesh needs --view YAW,PITCH");
+    if (!meshMode && (args.has("view") || args.has("supersample")))
+        throw InputError(std::string("--") + (args.has("view") ? "view" : "supersample") + " only applies with --mesh");
+
+    const std::string genomeName = args.positional[0];
+    std::vector<std::string> warnings;
+    Genome genome = loadGenome(genomeName, &warnings);
+    for (const std::string& warning : warnings) std::cerr << "marbler render: warning: " << warning << '\n';
+
+    try {
+        return renderGenome(args, genomeName, genome, settings, exportOptions, printSize, outFile);
+    } catch (const InputError& e) {
+        // One line that names the file: the genome, unless the message names one already.
+        std::string message = e.what();
+        if (message.find('\'') != std::string::npos || message.starts_with(genomeName)) throw;
+        throw InputError(genomeName + ": " + message);
+    }
+}
+
+int renderGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
+                 const ExportOptions& exportOptions, const std::optional<std::pair<double, double>>& printSize,
+                 const std::filesystem::path& outFile) {
+    const bool meshMode = args.has("mesh");
+    auto withGenome = [&](const std::string& message) { return genomeName + ": " + message; };
+    if (genome.dimension == 3 && !settings.slice && !meshMode)
+        throw InputError(withGenome("a solid (3D) genome needs --slice AXIS=VALUE (e.g. z=" +
+                                    std::to_string(static_cast<int>(genome.size.z / 2)) + ") or --mesh"));
+    if (genome.dimension == 2 && settings.slice) throw InputError(withGenome("--slice needs a solid (3D) genome; this one is flat (2D)"));
+    if (genome.dimension == 2 && meshMode) throw InputError(withGenome("--mesh needs a solid (3D) genome; this one is flat (2D)"));
+
+    // Pixel size: --size with --dpi, else --width/--height keeping the region's aspect, else
+    // 1024 on the longer side.
+    int width = 0, height = 0;
+    if (printSize) {
+        width = pixelsOf(printSize->first * *exportOptions.dpi, "--size at --dpi (width)");
+        height = pixelsOf(printSize->second * *exportOptions.dpi, "--size at --dpi (height)");
+    } else if (meshMode) {
+        width = parseIntOption(args, "width", 1024, 1, MaxImageSide);
+        height = parseIntOption(args, "height", args.has("width") ? width : 1024, 1, MaxImageSide);
+        if (!args.has("width") && args.has("height")) width = height;
+    } else {
+        // The region and slice are checked before the aspect is taken from them.
+        RenderSettings probe = settings;
+        probe.width = probe.height = 1;
+        checkRenderSettings(genome, probe);
+        Region region = effectiveRegion(genome, settings);
+        double aspect = (region.x1 - region.x0) / (region.y1 - region.y0);
+        bool hasW = args.has("width"), hasH = args.has("height");
+        if (hasW) width = parseIntOption(args, "width", 0, 1, MaxImageSide);
+        if (hasH) height = parseIntOption(args, "height", 0, 1, MaxImageSide);
+        if (hasW && !hasH) height = pixelsOf(width / aspect, "the height for width " + std::to_string(width));
+        if (hasH && !hasW) width = pixelsOf(height * aspect, "the width for height " + std::to_string(height));
+        if (!hasW && !hasH) {
+            if (aspect >= 1.0) {
+                width = 1024;
+                height = pixelsOf(1024 / aspect, "the height for width 1024");
+            } else {
+                height = 1024;
+                width = pixelsOf(1024 * aspect, "the width for height 1024");
+            }
+        }
+    }
+    settings.width = width;
+    settings.height = height;
+
+    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
+    ProgressLine progress(showProgress);
+    RenderControl control;
+    control.progress = [&](double f) { progress.update(f); };
+
+    if (meshMode || args.has("gpu")) {
+#ifdef MARBLER_HAVE_GL
+        std::string reason;
+        if (!gl::GlRenderer::available(&reason))
+            throw RuntimeFailure("no OpenGL 4.3 context for " + std::string(meshMode ? "--mesh" : "--gpu") + ": " + reason);
+        gl::GlRenderer gpu;
+        Image image;
+        if (meshMode) {
+            gl::MeshSettings mesh;
+            mesh.width = width;
+            mesh.height = height;
+            mesh.mesh = *args.get("mesh");
+            std::vector<double> view = parseNumberList("view", *args.get("view"), 2);
+            mesh.yaw = view[0];
+            mesh.pitch = view[1];
+            mesh.supersample = parseIntOption(args, "supersample", 3, 1, 5);
+            if (mesh.supersample != 1 && mesh.supersample != 3 && mesh.supersample != 5)
+                throw InputError("--supersample: must be 1, 3 or 5 (got " + *args.get("supersample") + ")");
+            image = gpu.renderMesh(genome, mesh);
+        } else {
+            checkRenderSettings(genome, settings);
+            image = gpu.render(genome, settings);
+        }
+        writeImage(image, outFile, exportOptions);
+        return ExitOk;
+#else
+        throw RuntimeFailure(std::string(meshMode ? "--mesh" : "--gpu") +
+                             " needs the OpenGL back end, and this build has none (built without MARBLER_BUILD_GUI)");
+#endif
+    }
+
+    renderToFile(genome, settings, outFile, exportOptions, &control);
+    progress.finish();
+    return ExitOk;
+}
+
+} // namespace
+
+int runRender(std::span<const std::string> words) {
+    return guarded("render", [&] { return render(words); });
+}
+
 } // namespace marbler::cli

@@ -40,6 +40,11 @@ public:
     void renderRows(const RenderSettings& settings, int y0, int y1, std::uint8_t* rgb,
                     const RenderControl* control = nullptr) const;
 
+    /// As renderRows, in linear light: `rgb` receives (y1 - y0) * width * 3 floats, the
+    /// weighted average of the samples before 8-bit encoding (for HDR output such as EXR).
+    void renderRowsLinear(const RenderSettings& settings, int y0, int y1, float* rgb,
+                          const RenderControl* control = nullptr) const;
+
     /// The palette index seen at one design point (-1: background or source), by the vector
     /// kernel; for tests and picking.
     int colorIndexAt(const glm::dvec3& p) const;
