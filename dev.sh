@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Marbler's two developer commands (see README.md):
+#   ./dev.sh start   install what is missing, build, and start the workbench
+#   ./dev.sh test    install what is missing, build, and run every test
+# Both work on a fresh Debian 12 machine as root (or with sudo available).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+PACKAGES=(
+    build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev
+    qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl1-mesa-dev libgl1-mesa-dri libegl1
+    libglm-dev libopenimageio-dev nlohmann-json3-dev libassimp-dev
+    libgtest-dev libgmock-dev libbenchmark-dev
+    xvfb xauth
+)
+JOBS=$(nproc)
+
+install_missing() {
+    local missing=()
+    for p in "${PACKAGES[@]}"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    echo "== installing: ${missing[*]}"
+    local sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# build DIR [cmake options...]
+build() {
+    local dir=$1
+    shift
+    cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+    cmake --build "$dir" -j "$JOBS"
+}
+
+# Every test under a virtual display, so the GL and window tests get Mesa's llvmpipe OpenGL
+# and must run (MARBLER_REQUIRE_GL turns a missing GL context into a failure, not a skip).
+run_ctest() {
+    local dir=$1
+    shift
+    MARBLER_REQUIRE_GL=1 xvfb-run -a -s "-screen 0 1280x1024x24" \
+        ctest --test-dir "$dir" --output-on-failure -j "$JOBS" "$@"
+}
+
+case "${1:-}" in
+start)
+    install_missing
+    build build
+    shift
+    exec ./build/app/marbler "$@"
+    ;;
+test)
+    install_missing
+    echo "== release build and tests"
+    build build
+    run_ctest build
+    echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+    build build-asan -DMARBLER_SANITIZE=ON -DMARBLER_BUILD_BENCHMARKS=OFF
+    ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+        run_ctest build-asan
+    echo "== fuzzing the genome loader briefly"
+    ./fuzz/run.sh 60
+    echo "== all tests passed"
+    ;;
+*)
+    echo "usage: $0 start|test" >&2
+    exit 2
+    ;;
+esac
