@@ -1,1 +1,619 @@
-// placeholder: replaced by its owner
+#include "marbler/GenomeIO.h"
+
+#include "marbler/Error.h"
+#include "marbler/Params.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace marbler {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// Deeper JSON than this is refused while parsing: nlohmann's dump and destructor paths
+/// recurse, so hostile nesting must never reach them. A genome itself needs depth 4.
+constexpr int MaxDepth = 64;
+
+/// Below this sine of the angle between them, a 3D `direction` and `normal` count as parallel:
+/// the part of `normal` across `direction` would be rounding noise.
+constexpr double ParallelSine = 1e-9;
+
+/// A vector this close to unit length (or a normal this close to orthogonal) is kept exactly as
+/// written, so that normalising is idempotent and a saved file loads back bit for bit.
+constexpr double UnitTolerance = 1e-14;
+
+/// Thrown by the parser callback; turned into a GenomeError by parseGenome.
+struct TooDeep {};
+
+/// Shortest text that reads back as the same double ("-2", "0.1", "1e+300").
+std::string formatNumber(double value) {
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    char text[64];
+    auto [end, ec] = std::to_chars(text, text + sizeof text, value);
+    return ec == std::errc() ? std::string(text, end) : std::to_string(value);
+}
+
+/// A JSON value shown in an error message: compact, one line, and short.
+std::string describe(const Json& value) {
+    std::string text;
+    switch (value.type()) {
+    case Json::value_t::object: return "an object";
+    case Json::value_t::array: return "an array of " + std::to_string(value.size());
+    case Json::value_t::null: return "null";
+    case Json::value_t::number_float: return formatNumber(value.get<double>());
+    default: text = value.dump(-1, ' ', true, Json::error_handler_t::replace);
+    }
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    return text;
+}
+
+std::string indexed(const std::string& where, std::size_t index) {
+    return where + "[" + std::to_string(index) + "]";
+}
+
+std::string member(const std::string& where, std::string_view key) {
+    return where.empty() ? std::string(key) : where + "." + std::string(key);
+}
+
+/// A number that keeps a file diff clean: integral values as JSON integers.
+Json number(double value) {
+    if (std::isfinite(value) && value == std::trunc(value) && std::abs(value) < 9.0e15)
+        return static_cast<std::int64_t>(value);
+    return value;
+}
+
+/// Unit vector of a non-zero finite vector; scaled first so that tiny or huge components
+/// neither underflow nor overflow when squared.
+glm::dvec3 unitVector(const glm::dvec3& v) {
+    double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    glm::dvec3 scaled = v / largest;
+    return scaled / glm::length(scaled);
+}
+
+bool isZero(const glm::dvec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
+
+bool nearlyUnit(const glm::dvec3& v) { return std::abs(glm::dot(v, v) - 1.0) <= UnitTolerance; }
+
+/// Whether two non-zero vectors are parallel (or anti-parallel) to within ParallelSine.
+bool parallel(const glm::dvec3& a, const glm::dvec3& b) {
+    glm::dvec3 ua = unitVector(a), ub = unitVector(b);
+    return glm::length(glm::cross(ua, ub)) <= ParallelSine;
+}
+
+const ParamSpec* findParam(std::span<const ParamSpec> params, ParamField field) {
+    for (const ParamSpec& spec : params)
+        if (spec.field == field) return &spec;
+    return nullptr;
+}
+
+/// Walks a free-form value (meta), its recursion bounded by MaxDepth: refuses deeper nesting
+/// and non-finite numbers, which JSON cannot write back.
+void checkFreeForm(const Json& value, const std::string& where, const std::string& name, int depth) {
+    if (depth > MaxDepth) throw GenomeError(name, where, "nested deeper than " + std::to_string(MaxDepth) + " levels");
+    if (value.is_number_float() && !std::isfinite(value.get<double>()))
+        throw GenomeError(name, where, "must be finite (got " + describe(value) + ")");
+    if (value.is_object()) {
+        for (auto it = value.begin(); it != value.end(); ++it) checkFreeForm(*it, member(where, it.key()), name, depth + 1);
+    } else if (value.is_array()) {
+        for (std::size_t i = 0; i < value.size(); ++i) checkFreeForm(value[i], indexed(where, i), name, depth + 1);
+    }
+}
+
+/// The value rules of one entry (finite, positive, palette index, non-zero and non-parallel
+/// directions). Shared by the loader and validateGenome so both say the same thing.
+void checkOperation(const Operation& op, int dimension, int paletteSize, bool inInitial, const std::string& where,
+                    const std::string& name) {
+    if (static_cast<int>(op.tool) >= ToolCount) throw GenomeError(name, member(where, "tool"), "unknown tool");
+    const ToolSpec& tool = toolSpec(op.tool);
+    if (!tool.available(dimension))
+        throw GenomeError(name, member(where, "tool"),
+                          "\"" + std::string(tool.name) + "\" is not available in " + std::to_string(dimension) + "D");
+    if (inInitial && !allowedInInitial(op.tool, dimension))
+        throw GenomeError(name, member(where, "tool"),
+                          "\"" + std::string(tool.name) +
+                              "\" is not allowed in initial (only drop, spray and, in 3D, cylinder)");
+    std::span<const ParamSpec> params = tool.params(dimension);
+    for (const ParamSpec& spec : params) {
+        std::string key = member(where, spec.key);
+        if (spec.kind == ParamKind::Shape) {
+            if (op.shape != WaveShape::Eggcrate && op.shape != WaveShape::Ripple)
+                throw GenomeError(name, key, "must be \"eggcrate\" or \"ripple\"");
+            continue;
+        }
+        if (spec.kind == ParamKind::Color) {
+            if (op.color < 0 || op.color >= paletteSize)
+                throw GenomeError(name, key,
+                                  "must be an index into the palette, 0 to " + std::to_string(paletteSize - 1) +
+                                      " (got " + std::to_string(op.color) + ")");
+            continue;
+        }
+        int count = componentCount(spec, op, dimension);
+        bool many = spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction
+                 || (spec.pair && count == 2);
+        for (int i = 0; i < count; ++i) {
+            double value = getComponent(spec, op, i);
+            std::string at = many ? indexed(key, static_cast<std::size_t>(i)) : key;
+            if (!std::isfinite(value)) throw GenomeError(name, at, "must be finite (got " + formatNumber(value) + ")");
+            if (spec.positive && !(value > 0.0))
+                throw GenomeError(name, at, "must be > 0 (got " + formatNumber(value) + ")");
+        }
+        if (spec.kind == ParamKind::Direction) {
+            glm::dvec3 v(getComponent(spec, op, 0), getComponent(spec, op, 1), getComponent(spec, op, 2));
+            if (isZero(v)) throw GenomeError(name, key, "must be non-zero");
+        }
+    }
+    if (dimension == 3 && findParam(params, ParamField::Direction) && findParam(params, ParamField::Normal)
+        && parallel(op.direction, op.normal))
+        throw GenomeError(name, member(where, "normal"), "must not be parallel to direction");
+}
+
+/// Normalises `direction`, `axis` and `normal` (the latter made orthogonal to `direction`),
+/// leaving vectors that already are unit (and orthogonal) untouched so that a second load
+/// changes nothing.
+void normalise(Operation& op, int dimension) {
+    if (dimension != 3) return;
+    std::span<const ParamSpec> params = toolSpec(op.tool).params(dimension);
+    if (findParam(params, ParamField::Axis) && !nearlyUnit(op.axis)) op.axis = unitVector(op.axis);
+    if (!findParam(params, ParamField::Direction)) return;
+    if (!nearlyUnit(op.direction)) op.direction = unitVector(op.direction);
+    if (!findParam(params, ParamField::Normal)) return;
+    if (nearlyUnit(op.normal) && std::abs(glm::dot(op.normal, op.direction)) <= UnitTolerance) return;
+    // Gram-Schmidt twice: once leaves a residue of rounding error over the sine of the angle
+    // between the two, which a nearly parallel pair turns into a visibly skewed normal.
+    glm::dvec3 n = unitVector(op.normal);
+    for (int pass = 0; pass < 2; ++pass) n = unitVector(n - glm::dot(n, op.direction) * op.direction);
+    op.normal = n;
+}
+
+/// Reads a JSON genome into a Genome, checking types and shapes; the value rules follow in
+/// validateGenome.
+class Reader {
+public:
+    Reader(const std::string& name, std::vector<std::string>* warnings) : mName(name), mWarnings(warnings) {}
+
+    Genome read(const Json& root) {
+        if (!root.is_object()) fail("", "must be a JSON object (got " + describe(root) + ")");
+        Genome genome;
+        readHeader(root, genome);
+        readColors(root, genome);
+
+        const Json& initial = require(root, "", "initial");
+        const Json& operations = require(root, "", "operations");
+        if (!initial.is_array()) fail("initial", "must be an array (got " + describe(initial) + ")");
+        if (!operations.is_array()) fail("operations", "must be an array (got " + describe(operations) + ")");
+        if (initial.size() + operations.size() > MaxEntries)
+            fail("operations", "too many entries: at most " + std::to_string(MaxEntries) +
+                                   " in initial and operations together (got " +
+                                   std::to_string(initial.size() + operations.size()) + ")");
+        genome.initial.reserve(initial.size());
+        for (std::size_t i = 0; i < initial.size(); ++i)
+            genome.initial.push_back(readOperation(initial[i], indexed("initial", i), genome.dimension, genome.palette.size(), true));
+        genome.operations.reserve(operations.size());
+        for (std::size_t i = 0; i < operations.size(); ++i)
+            genome.operations.push_back(
+                readOperation(operations[i], indexed("operations", i), genome.dimension, genome.palette.size(), false));
+
+        if (auto it = root.find("source"); it != root.end()) genome.source = readSource(*it, genome.dimension);
+        if (auto it = root.find("meta"); it != root.end()) {
+            if (!it->is_object()) fail("meta", "must be an object (got " + describe(*it) + ")");
+            genome.meta = *it;
+        }
+        static constexpr std::array Known{"format", "version", "dimension", "size", "background",
+                                          "palette", "initial", "operations", "source", "meta"};
+        for (auto it = root.begin(); it != root.end(); ++it)
+            if (std::find(Known.begin(), Known.end(), it.key()) == Known.end()) warnUnknown("", it.key());
+        return genome;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw GenomeError(mName, where, what);
+    }
+
+    void warnUnknown(const std::string& where, const std::string& key) {
+        if (!mWarnings) return;
+        std::string clean;
+        for (char ch : key) clean += static_cast<unsigned char>(ch) < 0x20 ? '?' : ch;
+        mWarnings->push_back(mName + ": " + (where.empty() ? "" : where + ": ") + "unknown key \"" + clean + "\" ignored");
+    }
+
+    const Json& require(const Json& object, const std::string& where, std::string_view key) const {
+        auto it = object.find(key);
+        if (it == object.end()) fail(member(where, key), "missing");
+        return *it;
+    }
+
+    /// An integral number (2 and 2.0 alike), for version, dimension and colour indices.
+    static bool integral(const Json& value) {
+        if (value.is_number_integer()) return true;
+        if (!value.is_number_float()) return false;
+        double v = value.get<double>();
+        return std::isfinite(v) && v == std::trunc(v);
+    }
+
+    double readNumber(const Json& value, const std::string& where) const {
+        if (!value.is_number()) fail(where, "must be a number (got " + describe(value) + ")");
+        return value.get<double>();
+    }
+
+    void readHeader(const Json& root, Genome& genome) {
+        const Json& format = require(root, "", "format");
+        if (format != "marbler-genome") fail("format", "must be \"marbler-genome\" (got " + describe(format) + ")");
+
+        const Json& version = require(root, "", "version");
+        if (!integral(version)) fail("version", "must be an integer (got " + describe(version) + ")");
+        double v = version.get<double>();
+        if (v > FormatVersion)
+            fail("version", "made by a newer version of Marbler (format version " + describe(version) +
+                                "; this one reads version " + std::to_string(FormatVersion) + ")");
+        if (v < FormatVersion) fail("version", "must be " + std::to_string(FormatVersion) + " (got " + describe(version) + ")");
+
+        const Json& dimension = require(root, "", "dimension");
+        if (!integral(dimension) || (dimension.get<double>() != 2.0 && dimension.get<double>() != 3.0))
+            fail("dimension", "must be 2 or 3 (got " + describe(dimension) + ")");
+        genome.dimension = static_cast<int>(dimension.get<double>());
+
+        const Json& size = require(root, "", "size");
+        if (!size.is_array() || size.size() != static_cast<std::size_t>(genome.dimension))
+            fail("size", "must be an array of " + std::to_string(genome.dimension) + " numbers (got " + describe(size) + ")");
+        for (int i = 0; i < genome.dimension; ++i)
+            genome.size[i] = readNumber(size[static_cast<std::size_t>(i)], indexed("size", static_cast<std::size_t>(i)));
+    }
+
+    Color readColor(const Json& value, const std::string& where) const {
+        std::optional<Color> color;
+        if (value.is_string()) color = parseHexColor(value.get<std::string>());
+        if (!color) fail(where, "must be a colour \"#rrggbb\" (got " + describe(value) + ")");
+        return *color;
+    }
+
+    void readColors(const Json& root, Genome& genome) {
+        genome.background = readColor(require(root, "", "background"), "background");
+        const Json& palette = require(root, "", "palette");
+        if (!palette.is_array() || palette.empty() || palette.size() > MaxPaletteSize)
+            fail("palette", "must be an array of 1 to " + std::to_string(MaxPaletteSize) + " colours (got " +
+                                describe(palette) + ")");
+        for (std::size_t i = 0; i < palette.size(); ++i) genome.palette.push_back(readColor(palette[i], indexed("palette", i)));
+    }
+
+    /// Reads `count` numbers: an array when `asArray`, else one number.
+    void readComponents(const Json& value, const std::string& where, const ParamSpec& spec, Operation& op, int count,
+                        bool asArray) const {
+        if (!asArray) {
+            setComponent(spec, op, 0, readNumber(value, where));
+            return;
+        }
+        if (!value.is_array() || value.size() != static_cast<std::size_t>(count))
+            fail(where, "must be an array of " + std::to_string(count) + " numbers (got " + describe(value) + ")");
+        for (int i = 0; i < count; ++i)
+            setComponent(spec, op, i, readNumber(value[static_cast<std::size_t>(i)], indexed(where, static_cast<std::size_t>(i))));
+    }
+
+    Operation readOperation(const Json& entry, const std::string& where, int dimension, std::size_t paletteSize,
+                            bool inInitial) {
+        if (!entry.is_object()) fail(where, "must be an object (got " + describe(entry) + ")");
+        const Json& toolName = require(entry, where, "tool");
+        if (!toolName.is_string()) fail(member(where, "tool"), "must be a tool name (got " + describe(toolName) + ")");
+        const ToolSpec* tool = findTool(toolName.get<std::string>());
+        if (!tool) fail(member(where, "tool"), "unknown tool " + describe(toolName));
+        if (!tool->available(dimension))
+            fail(member(where, "tool"), describe(toolName) + " is not available in " + std::to_string(dimension) + "D (" +
+                                            (tool->in3D ? "3D" : "2D") + " only)");
+        if (inInitial && !allowedInInitial(tool->tool, dimension))
+            fail(member(where, "tool"),
+                 describe(toolName) + " is not allowed in initial (only drop, spray and, in 3D, cylinder)");
+
+        Operation op;
+        op.tool = tool->tool;
+        std::span<const ParamSpec> params = tool->params(dimension);
+        // The shape decides how many numbers the wave's pairs hold, so it is read first.
+        if (const ParamSpec* shape = findParam(params, ParamField::Shape)) {
+            std::string at = member(where, shape->key);
+            const Json& value = require(entry, where, shape->key);
+            if (value == "eggcrate")
+                op.shape = WaveShape::Eggcrate;
+            else if (value == "ripple")
+                op.shape = WaveShape::Ripple;
+            else
+                fail(at, "must be \"eggcrate\" or \"ripple\" (got " + describe(value) + ")");
+        }
+        for (const ParamSpec& spec : params) {
+            if (spec.kind == ParamKind::Shape) continue;
+            std::string at = member(where, spec.key);
+            const Json& value = require(entry, where, spec.key);
+            int count = componentCount(spec, op, dimension);
+            switch (spec.kind) {
+            case ParamKind::Position:
+            case ParamKind::Direction: readComponents(value, at, spec, op, count, true); break;
+            case ParamKind::Color: {
+                if (!integral(value)) fail(at, "must be an integer palette index (got " + describe(value) + ")");
+                // Range-checked here, before the cast to int could overflow.
+                double index = value.get<double>();
+                if (index < 0 || index >= static_cast<double>(paletteSize))
+                    fail(at, "must be an index into the palette, 0 to " + std::to_string(paletteSize - 1) + " (got " +
+                                 describe(value) + ")");
+                op.color = static_cast<int>(index);
+                break;
+            }
+            default: readComponents(value, at, spec, op, count, spec.pair && count == 2); break;
+            }
+        }
+        for (auto it = entry.begin(); it != entry.end(); ++it) {
+            if (it.key() == "tool") continue;
+            bool known = std::any_of(params.begin(), params.end(), [&](const ParamSpec& s) { return s.key == it.key(); });
+            if (!known) warnUnknown(where, it.key());
+        }
+        return op;
+    }
+
+    SourceImage readSource(const Json& value, int dimension) {
+        if (dimension != 2) fail("source", "only allowed in 2D designs");
+        if (!value.is_object()) fail("source", "must be an object {\"image\": ...} (got " + describe(value) + ")");
+        const Json& image = require(value, "source", "image");
+        if (!image.is_string() || image.get<std::string>().empty())
+            fail("source.image", "must be a file name or a data URL (got " + describe(image) + ")");
+        for (auto it = value.begin(); it != value.end(); ++it)
+            if (it.key() != "image") warnUnknown("source", it.key());
+        return SourceImage{image.get<std::string>()};
+    }
+
+    std::string mName;
+    std::vector<std::string>* mWarnings;
+};
+
+/// "line L, column C" of a byte offset (0-based) of the text.
+std::string textPosition(std::string_view text, std::size_t offset) {
+    offset = std::min(offset, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < offset; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+/// nlohmann's explanation without its "[json.exception...] ... column N: " prefix, on one line:
+/// no control characters or stray bytes from the input reach stderr.
+std::string explanation(const std::string& message) {
+    std::string what = message;
+    if (auto at = what.find("column "); at != std::string::npos) {
+        if (auto colon = what.find(": ", at); colon != std::string::npos) what = what.substr(colon + 2);
+    } else if (auto bracket = what.find("] "); bracket != std::string::npos) {
+        what = what.substr(bracket + 2);
+    }
+    for (char& ch : what)
+        if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f) ch = '?';
+    return what;
+}
+
+/// A JSON syntax error, located by nlohmann's byte count (1-based: the last byte read).
+[[noreturn]] void syntaxError(std::string_view text, const nlohmann::json::parse_error& e, const std::string& name) {
+    throw GenomeError(name, textPosition(text, e.byte == 0 ? 0 : e.byte - 1), "JSON " + explanation(e.what()));
+}
+
+/// Any other failure of the JSON reader; a number too large for a double names itself in the
+/// message ("number overflow parsing '1e999'"), which locates it in the text.
+[[noreturn]] void readerError(std::string_view text, const nlohmann::json::exception& e, const std::string& name) {
+    std::string what = explanation(e.what());
+    std::string location;
+    auto open = what.find('\''), close = what.rfind('\'');
+    if (open != std::string::npos && close > open + 1) {
+        std::string token = what.substr(open + 1, close - open - 1);
+        if (auto at = text.find(token); at != std::string_view::npos) location = textPosition(text, at);
+    }
+    throw GenomeError(name, location, "JSON " + what);
+}
+
+Json operationJson(const Operation& op, int dimension) {
+    Json entry = Json::object();
+    entry["tool"] = std::string(toolSpec(op.tool).name);
+    for (const ParamSpec& spec : toolSpec(op.tool).params(dimension)) {
+        std::string key(spec.key);
+        int count = componentCount(spec, op, dimension);
+        if (spec.kind == ParamKind::Shape) {
+            entry[key] = op.shape == WaveShape::Ripple ? "ripple" : "eggcrate";
+        } else if (spec.kind == ParamKind::Color) {
+            entry[key] = op.color;
+        } else if (spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction || (spec.pair && count == 2)) {
+            Json values = Json::array();
+            for (int i = 0; i < count; ++i) values.push_back(number(getComponent(spec, op, i)));
+            entry[key] = std::move(values);
+        } else {
+            entry[key] = number(getComponent(spec, op, 0));
+        }
+    }
+    return entry;
+}
+
+[[noreturn]] void ioFailure(const std::string& what, const std::filesystem::path& file, int error) {
+    throw RuntimeFailure("cannot " + what + " " + file.string() + ": " + std::strerror(error));
+}
+
+} // namespace
+
+Genome parseGenome(std::string_view text, const std::string& name, std::vector<std::string>* warnings) {
+    if (text.size() > MaxFileBytes)
+        throw GenomeError(name, "", "larger than " + std::to_string(MaxFileBytes / (1024 * 1024)) + " MiB (" +
+                                        std::to_string(text.size()) + " bytes)");
+    Json root;
+    try {
+        Json::parser_callback_t refuseDeep = [](int depth, Json::parse_event_t event, Json&) {
+            if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start)
+                && depth >= MaxDepth)
+                throw TooDeep{};
+            return true;
+        };
+        root = Json::parse(text.begin(), text.end(), refuseDeep);
+    } catch (const TooDeep&) {
+        throw GenomeError(name, "", "JSON nested deeper than " + std::to_string(MaxDepth) + " levels");
+    } catch (const nlohmann::json::parse_error& e) {
+        syntaxError(text, e, name);
+    } catch (const nlohmann::json::exception& e) {
+        readerError(text, e, name);
+    }
+    Genome genome = Reader(name, warnings).read(root);
+    validateGenome(genome, name);
+    for (Operation& op : genome.initial) normalise(op, genome.dimension);
+    for (Operation& op : genome.operations) normalise(op, genome.dimension);
+    return genome;
+}
+
+Genome loadGenome(const std::filesystem::path& file, std::vector<std::string>* warnings) {
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) throw GenomeError(name, "", "cannot read: no such file");
+    if (std::filesystem::is_directory(file, ec)) throw GenomeError(name, "", "cannot read: is a folder");
+    // The size is checked before reading so a huge file is never pulled into memory; the read
+    // below is bounded too, in case the file grows meanwhile or is not a regular file.
+    std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+    if (!ec && bytes > MaxFileBytes)
+        throw GenomeError(name, "", "larger than " + std::to_string(MaxFileBytes / (1024 * 1024)) + " MiB (" +
+                                        std::to_string(bytes) + " bytes)");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw GenomeError(name, "", std::string("cannot read: ") + std::strerror(errno));
+    std::string text;
+    text.resize(MaxFileBytes + 1);
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (in.bad()) throw GenomeError(name, "", "cannot read: I/O error");
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    Genome genome = parseGenome(text, name, warnings);
+    std::filesystem::path folder = file.parent_path();
+    genome.baseDirectory = folder.empty() ? std::string(".") : folder.string();
+    return genome;
+}
+
+void validateGenome(const Genome& genome, const std::string& name) {
+    if (genome.dimension != 2 && genome.dimension != 3)
+        throw GenomeError(name, "dimension", "must be 2 or 3 (got " + std::to_string(genome.dimension) + ")");
+    for (int i = 0; i < genome.dimension; ++i) {
+        double side = genome.size[i];
+        std::string at = indexed("size", static_cast<std::size_t>(i));
+        if (!std::isfinite(side)) throw GenomeError(name, at, "must be finite (got " + formatNumber(side) + ")");
+        if (!(side > 0.0)) throw GenomeError(name, at, "must be > 0 (got " + formatNumber(side) + ")");
+    }
+    if (genome.palette.empty() || genome.palette.size() > MaxPaletteSize)
+        throw GenomeError(name, "palette", "must hold 1 to " + std::to_string(MaxPaletteSize) + " colours (got " +
+                                               std::to_string(genome.palette.size()) + ")");
+    if (genome.initial.size() + genome.operations.size() > MaxEntries)
+        throw GenomeError(name, "operations", "too many entries: at most " + std::to_string(MaxEntries) +
+                                                  " in initial and operations together (got " +
+                                                  std::to_string(genome.initial.size() + genome.operations.size()) + ")");
+    int paletteSize = static_cast<int>(genome.palette.size());
+    for (std::size_t i = 0; i < genome.initial.size(); ++i)
+        checkOperation(genome.initial[i], genome.dimension, paletteSize, true, indexed("initial", i), name);
+    for (std::size_t i = 0; i < genome.operations.size(); ++i)
+        checkOperation(genome.operations[i], genome.dimension, paletteSize, false, indexed("operations", i), name);
+    if (genome.source) {
+        if (genome.dimension != 2) throw GenomeError(name, "source", "only allowed in 2D designs");
+        if (genome.source->image.empty()) throw GenomeError(name, "source.image", "must be a file name or a data URL");
+    }
+    if (!genome.meta.is_object()) throw GenomeError(name, "meta", "must be an object");
+    checkFreeForm(genome.meta, "meta", name, 1);
+}
+
+Json toJson(const Genome& genome) {
+    Json root = Json::object();
+    root["format"] = "marbler-genome";
+    root["version"] = FormatVersion;
+    root["dimension"] = genome.dimension;
+    Json size = Json::array();
+    for (int i = 0; i < (genome.dimension == 3 ? 3 : 2); ++i) size.push_back(number(genome.size[i]));
+    root["size"] = std::move(size);
+    root["background"] = toHex(genome.background);
+    Json palette = Json::array();
+    for (const Color& color : genome.palette) palette.push_back(toHex(color));
+    root["palette"] = std::move(palette);
+    Json initial = Json::array();
+    for (const Operation& op : genome.initial) initial.push_back(operationJson(op, genome.dimension));
+    root["initial"] = std::move(initial);
+    Json operations = Json::array();
+    for (const Operation& op : genome.operations) operations.push_back(operationJson(op, genome.dimension));
+    root["operations"] = std::move(operations);
+    if (genome.source) root["source"] = Json{{"image", genome.source->image}};
+    if (genome.meta.is_object() && !genome.meta.empty()) root["meta"] = genome.meta;
+    return root;
+}
+
+std::string serializeGenome(const Genome& genome) {
+    // `replace` rather than throwing: a string built in memory with broken UTF-8 (a meta note)
+    // should not make a design unsaveable.
+    return toJson(genome).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+void writeFileAtomically(const std::filesystem::path& file, std::string_view text) {
+    static std::atomic<unsigned> counter{0};
+    std::filesystem::path folder = file.parent_path();
+    if (folder.empty()) folder = ".";
+    if (file.filename().empty()) throw RuntimeFailure("cannot write " + file.string() + ": not a file name");
+
+    // The temporary lives beside the target so that rename() stays within one file system and
+    // is atomic; its name is hidden and unique to this process and call.
+    std::filesystem::path temp;
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+        temp = folder / ("." + file.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                         std::to_string(counter.fetch_add(1)));
+        fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0 && errno != EEXIST) ioFailure("write", file, errno);
+    }
+    if (fd < 0) ioFailure("write", file, EEXIST);
+
+    auto abandon = [&](int error) {
+        ::close(fd);
+        ::unlink(temp.c_str());
+        ioFailure("write", file, error);
+    };
+    const char* data = text.data();
+    std::size_t left = text.size();
+    while (left > 0) {
+        ssize_t written = ::write(fd, data, left);
+        if (written < 0) {
+            if (errno == EINTR) continue;
+            abandon(errno);
+        }
+        data += written;
+        left -= static_cast<std::size_t>(written);
+    }
+    if (::fsync(fd) != 0) abandon(errno);
+    if (::close(fd) != 0) {
+        int error = errno;
+        ::unlink(temp.c_str());
+        ioFailure("write", file, error);
+    }
+    if (::rename(temp.c_str(), file.c_str()) != 0) {
+        int error = errno;
+        ::unlink(temp.c_str());
+        ioFailure("write", file, error);
+    }
+    // Persist the rename itself; a failure here loses nothing already written, so it is ignored.
+    int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir >= 0) {
+        ::fsync(dir);
+        ::close(dir);
+    }
+}
+
+void saveGenome(const Genome& genome, const std::filesystem::path& file) {
+    writeFileAtomically(file, serializeGenome(genome));
+}
+
+} // namespace marbler

@@ -1,0 +1,233 @@
+// The tool maps against the conformance data (maps.json, probes-*.json), and their two laws
+// on random tools and points: F^-1(F(P)) = P, and det(dF/dP) = 1 (area and volume kept).
+
+#include "TestUtil.h"
+
+#include "marbler/GenomeIO.h"
+#include "marbler/Params.h"
+#include "marbler/Random.h"
+#include "marbler/Tools.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <string>
+
+using namespace marbler;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+Json readJson(const std::string& name) {
+    return Json::parse(test::readFile(test::dataDir() / "conformance" / name));
+}
+
+glm::dvec3 point(const Json& values) {
+    glm::dvec3 p(0.0);
+    for (std::size_t i = 0; i < values.size() && i < 3; ++i) p[static_cast<int>(i)] = values[i].get<double>();
+    return p;
+}
+
+/// A genome of the given dimension that holds one operation, as the loader would see it. The
+/// palette is as large as the format allows so that any colour index of the data is valid.
+Json wrap(const Json& op, int dimension) {
+    Json genome = {{"format", "marbler-genome"}, {"version", 1}, {"dimension", dimension}};
+    genome["size"] = dimension == 3 ? Json::array({1000, 1000, 1000}) : Json::array({1000, 1000});
+    genome["background"] = "#000000";
+    genome["palette"] = Json::array();
+    for (int i = 0; i < 16; ++i) genome["palette"].push_back("#102030");
+    bool initial = op["tool"] == "drop" || op["tool"] == "spray" || op["tool"] == "cylinder";
+    genome["initial"] = initial ? Json::array({op}) : Json::array();
+    genome["operations"] = initial ? Json::array() : Json::array({op});
+    return genome;
+}
+
+PreparedOp loadOp(const Json& op, int dimension) {
+    Genome g = parseGenome(wrap(op, dimension).dump(), "maps.json");
+    std::vector<PreparedOp> ops = prepare(g);
+    EXPECT_EQ(ops.size(), 1u);
+    return ops.at(0);
+}
+
+} // namespace
+
+TEST(Maps, ConformanceCases) {
+    Json maps = readJson("maps.json");
+    const Json& cases = maps["cases"];
+    ASSERT_GE(cases.size(), 60u);
+    std::size_t checked = 0;
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        const Json& entry = cases[c];
+        int dimension = entry["dimension"].get<int>();
+        PreparedOp op = loadOp(entry["op"], dimension);
+        const Json& points = entry["points"];
+        ASSERT_EQ(points.size(), entry["forward"].size());
+        ASSERT_EQ(points.size(), entry["inverse"].size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            glm::dvec3 p = point(points[i]);
+            glm::dvec3 f = forwardMap(op, p), expectedF = point(entry["forward"][i]);
+            glm::dvec3 b = inverseMap(op, p), expectedB = point(entry["inverse"][i]);
+            for (int k = 0; k < dimension; ++k) {
+                EXPECT_NEAR(f[k], expectedF[k], 1e-6) << "case " << c << " (" << entry["op"].dump() << ") point " << i;
+                EXPECT_NEAR(b[k], expectedB[k], 1e-6) << "case " << c << " (" << entry["op"].dump() << ") point " << i;
+            }
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 1000u);
+}
+
+TEST(Maps, ConformanceProbes) {
+    for (int i = 0; i < 5; ++i) {
+        std::string name = "probes-" + std::to_string(i) + ".json";
+        Json data = readJson(name);
+        Genome genome = parseGenome(data["genome"].dump(), name);
+        std::vector<PreparedOp> ops = prepare(genome);
+        const Json& probes = data["probes"];
+        ASSERT_GT(probes.size(), 100u) << name;
+        int mismatches = 0;
+        for (const Json& probe : probes) {
+            glm::dvec3 p(probe[0].get<double>(), probe[1].get<double>(), genome.dimension == 3 ? probe[2].get<double>() : 0.0);
+            int expected = probe[static_cast<std::size_t>(genome.dimension)].get<int>();
+            int got = traceColor(ops, p);
+            if (got != expected && ++mismatches <= 5)
+                ADD_FAILURE() << name << ": " << probe.dump() << " gives " << got;
+        }
+        EXPECT_EQ(mismatches, 0) << name;
+    }
+}
+
+namespace {
+
+glm::dvec3 randomUnit(Pcg32& rng) {
+    for (;;) {
+        glm::dvec3 v(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        double len = glm::length(v);
+        if (len > 0.2 && len <= 1.0) return v / len;
+    }
+}
+
+/// A random operation of `tool`, every parameter from its table, then normalised by a trip
+/// through the loader.
+Operation randomOperation(Pcg32& rng, Tool tool, int dimension) {
+    Operation op = defaultOperation(tool, dimension, {500.0, 500.0, 500.0});
+    op.shape = rng.chance(0.5) ? WaveShape::Ripple : WaveShape::Eggcrate;
+    for (const ParamSpec& spec : toolSpec(tool).params(dimension)) {
+        for (int i = 0; i < componentCount(spec, op, dimension); ++i) {
+            double value = 0.0;
+            switch (spec.field) {
+            case ParamField::Center: value = rng.uniform(0, 1000); break;
+            case ParamField::Angle: value = rng.uniform(0, 360); break;
+            case ParamField::Radius: value = rng.uniform(20, 200); break;
+            case ParamField::Alpha: value = rng.uniform(-100, 100); break;
+            case ParamField::Lambda: value = rng.uniform(5, 60); break;
+            case ParamField::Spacing: value = rng.uniform(30, 150); break;
+            case ParamField::Amplitude: value = rng.uniform(-40, 40); break;
+            case ParamField::Wavelength: value = rng.uniform(100, 500); break;
+            case ParamField::Phase: value = rng.uniform(0, 360); break;
+            default: continue; // directions, shape, colour: below or as defaulted
+            }
+            setComponent(spec, op, i, value);
+        }
+    }
+    op.axis = randomUnit(rng) * rng.uniform(0.5, 3.0);
+    op.direction = randomUnit(rng) * rng.uniform(0.5, 3.0);
+    do {
+        op.normal = randomUnit(rng);
+    } while (glm::length(glm::cross(op.normal, glm::normalize(op.direction))) < 0.1);
+
+    Genome g;
+    g.dimension = dimension;
+    g.palette = {Color{}};
+    (allowedInInitial(tool, dimension) ? g.initial : g.operations).push_back(op);
+    Genome loaded = parseGenome(serializeGenome(g), "random");
+    return allowedInInitial(tool, dimension) ? loaded.initial[0] : loaded.operations[0];
+}
+
+/// Whether the map is smooth enough around P for central differences: away from the kinks of
+/// d (tines, comb midpoints, circle radii) and from the singular centres.
+bool smoothAt(const PreparedOp& op, const glm::dvec3& p) {
+    constexpr double Margin = 1e-2;
+    glm::dvec3 rel = p - op.c;
+    switch (op.tool) {
+    case Tool::Drop: return glm::length(rel) > 0.5 * op.r;
+    case Tool::Cylinder: return glm::length(rel - glm::dot(rel, op.a) * op.a) > 0.5 * op.r;
+    case Tool::Line: return std::abs(glm::dot(rel, op.n)) > Margin;
+    case Tool::Comb: {
+        double t = glm::dot(rel, op.n), half = 0.5 * op.spacing;
+        double m = t - half * std::floor(t / half);
+        return m > Margin && half - m > Margin;
+    }
+    case Tool::Circle: {
+        double rho = op.dimension == 3 ? glm::length(rel - glm::dot(rel, op.a) * op.a) : glm::length(rel);
+        return rho > 20.0 && std::abs(rho - op.r) > Margin;
+    }
+    case Tool::Sphere: return glm::length(rel) > 20.0 && std::abs(glm::length(rel) - op.r) > Margin;
+    case Tool::Vortex: return glm::length(rel) > 20.0;
+    default: return true;
+    }
+}
+
+double jacobianDeterminant(const PreparedOp& op, const glm::dvec3& p, int dimension) {
+    constexpr double H = 1e-4;
+    glm::dmat3 j(1.0);
+    for (int k = 0; k < dimension; ++k) {
+        glm::dvec3 step(0.0);
+        step[k] = H;
+        j[k] = (forwardMap(op, p + step) - forwardMap(op, p - step)) / (2.0 * H);
+    }
+    if (dimension == 2) return j[0][0] * j[1][1] - j[1][0] * j[0][1];
+    return glm::determinant(j);
+}
+
+} // namespace
+
+TEST(Maps, InverseUndoesForwardAndKeepsMeasure) {
+    Pcg32 rng(20240601);
+    for (int dimension : {2, 3}) {
+        for (const ToolSpec& spec : allTools()) {
+            if (!spec.available(dimension)) continue;
+            int checked = 0;
+            for (int trial = 0; trial < 40; ++trial) {
+                PreparedOp op = prepare(randomOperation(rng, spec.tool, dimension), dimension);
+                for (int i = 0; i < 50; ++i) {
+                    glm::dvec3 p(rng.uniform(-200, 1200), rng.uniform(-200, 1200),
+                                 dimension == 3 ? rng.uniform(-200, 1200) : 0.0);
+                    if (!smoothAt(op, p)) continue;
+                    glm::dvec3 q = forwardMap(op, p);
+                    glm::dvec3 back = inverseMap(op, q);
+                    double scale = std::max(1.0, glm::length(p));
+                    ASSERT_LE(glm::length(back - p) / scale, 1e-9)
+                        << spec.name << " " << dimension << "D at (" << p.x << ", " << p.y << ", " << p.z << ")";
+                    double det = jacobianDeterminant(op, p, dimension);
+                    ASSERT_NEAR(det, 1.0, 1e-6)
+                        << spec.name << " " << dimension << "D at (" << p.x << ", " << p.y << ", " << p.z << ")";
+                    ++checked;
+                }
+            }
+            EXPECT_GT(checked, 1000) << spec.name << " " << dimension << "D";
+        }
+    }
+}
+
+TEST(Maps, ForwardPushesOutOfTheInk) {
+    // What a drop or column moves ends up outside its ink, so the inverse is defined there.
+    Pcg32 rng(7);
+    for (int dimension : {2, 3}) {
+        for (Tool tool : {Tool::Drop, Tool::Cylinder}) {
+            if (!toolSpec(tool).available(dimension)) continue;
+            for (int trial = 0; trial < 20; ++trial) {
+                PreparedOp op = prepare(randomOperation(rng, tool, dimension), dimension);
+                for (int i = 0; i < 100; ++i) {
+                    glm::dvec3 p = op.c + randomUnit(rng) * rng.uniform(1e-3, 400.0);
+                    if (dimension == 2) p.z = 0.0;
+                    if (p == op.c) continue;
+                    EXPECT_FALSE(insideInk(op, forwardMap(op, p)));
+                }
+            }
+        }
+    }
+}
