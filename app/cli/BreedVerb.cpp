@@ -1,9 +1,134 @@
-// placeholder: replaced by its owner
+// `marbler breed`: offspring of genome files by a genetic operator (spec/cli.md).
+
 #include "cli/Cli.h"
+
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Operators.h"
+
+#include <cstdio>
+#include <filesystem>
 #include <iostream>
+
+#include <unistd.h>
+
 namespace marbler::cli {
-int runBreed(std::span<const std::string>) {
-    std::cerr << "marbler breed: not built yet\n";
-    return ExitFailure;
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* Help = R"(usage: marbler breed OPERATOR PARENT... --seed N [--count K] [--strength S] -o DIR
+
+Writes K children of the PARENT genome files, made by a genetic operator, as
+DIR/child-01.marble.json, DIR/child-02.marble.json, ... (DIR is created if missing).
+The same parents, operator, seed and options give the same children.
+
+operators:
+  alter      one parent: every parameter of its strokes perturbed by its mutation
+             scale times the strength; the tools and their order stay
+  recombine  two or more parents: crossover (one-point or uniform) of their strokes,
+             on the initial state of each parent in turn
+  swap       two parents: the initial state (with palette and background) of one with
+             the strokes of the other, both ways, alternately
+  reinit     one parent: a new initial drop pattern, the same strokes
+
+Parts locked in a parent's meta.locks (palette, initial, operations) are never changed.
+Each child records meta.lineage (parents' ids, operator, seed, generation) and meta.id.
+
+options:
+  --seed N          the seed, a non-negative 64-bit integer (required)
+  --count K         how many children, 1 to 1000 (default 8)
+  --strength S      alteration strength, 0 to 1 (default 0.5; alter only)
+  -o, --output DIR  the folder to write the children into (required)
+  -h, --help        this text
+)";
+
+std::string childName(int index) {
+    char name[32];
+    std::snprintf(name, sizeof name, "child-%02d.marble.json", index);
+    return name;
 }
+
+/// A relative `source` image was relative to its parent's folder; the child lives in DIR.
+void rebaseSource(Genome& child, const fs::path& dir) {
+    if (!child.source || child.source->image.starts_with("data:")) return;
+    fs::path image(child.source->image);
+    if (image.is_absolute()) return;
+    fs::path base = child.baseDirectory.empty() ? fs::path(".") : fs::path(child.baseDirectory);
+    fs::path target = fs::absolute(base / image).lexically_normal();
+    child.source->image = target.lexically_proximate(fs::absolute(dir).lexically_normal()).generic_string();
+}
+
+} // namespace
+
+int runBreed(std::span<const std::string> words) {
+    return guarded("breed", [&] {
+        Args args = parseArgs(words, {"seed", "count", "strength", "o", "output"}, {"h", "help"});
+        if (args.has("h") || args.has("help")) {
+            std::cout << Help;
+            return ExitOk;
+        }
+        if (args.positional.empty()) throw InputError("an operator is required: alter, recombine, swap or reinit");
+        std::optional<GeneticOperator> op = parseOperator(args.positional[0]);
+        if (!op)
+            throw InputError("unknown operator '" + args.positional[0] + "' (alter, recombine, swap or reinit)");
+
+        BreedRequest request;
+        request.op = *op;
+        int parents = static_cast<int>(args.positional.size()) - 1;
+        if (parents < minParents(*op) || (maxParents(*op) > 0 && parents > maxParents(*op))) {
+            std::string want = maxParents(*op) == 0 ? "at least " + std::to_string(minParents(*op))
+                                                    : std::to_string(minParents(*op));
+            throw InputError(std::string(operatorName(*op)) + " takes " + want + " parent" +
+                             (minParents(*op) == 1 && maxParents(*op) == 1 ? "" : "s") + " (got " +
+                             std::to_string(parents) + ")");
+        }
+        request.seed = parseSeedOption(args, "seed");
+        request.count = parseIntOption(args, "count", 8, 1, MaxChildren);
+        request.strength = parseDoubleOption(args, "strength", 0.5);
+        if (request.strength < 0.0 || request.strength > 1.0)
+            throw InputError("--strength: must be between 0 and 1 (got " + *args.get("strength") + ")");
+        std::optional<std::string> out = args.get("o");
+        if (!out) out = args.get("output");
+        if (!out || out->empty()) throw InputError("-o DIR is required");
+        fs::path dir(*out);
+        std::error_code ec;
+        if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError(dir.string() + ": exists and is not a folder");
+
+        for (std::size_t i = 1; i < args.positional.size(); ++i) request.parents.push_back(loadGenome(args.positional[i]));
+
+        // Everything is bred and serialised before the first byte is written, so bad input
+        // never leaves a partial set of children.
+        std::vector<Genome> children = breed(request);
+        std::vector<std::string> texts;
+        for (Genome& child : children) {
+            rebaseSource(child, dir);
+            texts.push_back(serializeGenome(child));
+        }
+
+        bool created = !fs::exists(dir, ec);
+        fs::create_directories(dir, ec);
+        if (ec) throw RuntimeFailure("cannot create " + dir.string() + ": " + ec.message());
+        // Written under temporary names first and renamed only when all are written: an I/O
+        // failure half way leaves no children at all.
+        std::vector<fs::path> temporary;
+        try {
+            for (std::size_t i = 0; i < texts.size(); ++i) {
+                fs::path tmp = dir / ("." + childName(static_cast<int>(i) + 1) + "." + std::to_string(::getpid()) + ".partial");
+                temporary.push_back(tmp);
+                writeFileAtomically(tmp, texts[i]);
+            }
+            for (std::size_t i = 0; i < texts.size(); ++i) fs::rename(temporary[i], dir / childName(static_cast<int>(i) + 1));
+        } catch (...) {
+            for (const fs::path& tmp : temporary) fs::remove(tmp, ec);
+            if (created) fs::remove(dir, ec); // only removes it when empty
+            throw;
+        }
+        for (std::size_t i = 0; i < children.size(); ++i)
+            std::cout << (dir / childName(static_cast<int>(i) + 1)).string() << "  "
+                      << children[i].meta.value("name", std::string()) << '\n';
+        return ExitOk;
+    });
+}
+
 } // namespace marbler::cli

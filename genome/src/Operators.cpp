@@ -1,1 +1,371 @@
-// placeholder: replaced by its owner
+#include "marbler/Operators.h"
+
+#include "marbler/Error.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Params.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+namespace marbler {
+namespace {
+
+constexpr std::array<std::string_view, 4> OperatorNames{"alter", "recombine", "swap", "reinit"};
+
+/// SplitMix64: spreads a seed and a child index over the whole state of a Pcg32.
+std::uint64_t splitMix64(std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+/// Child i's own random stream: depends on (seed, i) only, so children are reproducible one by
+/// one and asking for more children keeps the first ones.
+Pcg32 childRng(std::uint64_t seed, int index) {
+    auto i = static_cast<std::uint64_t>(index);
+    return Pcg32(splitMix64(seed ^ splitMix64(i)), 0x6272656564000000ULL + i);
+}
+
+double largestSide(const Genome& g) { return std::max({g.size.x, g.size.y, g.dimension == 3 ? g.size.z : 0.0}); }
+
+/// Reflects a value back into [lo, hi] (a mutation near an edge bounces instead of piling up).
+double reflectInto(double v, double lo, double hi) {
+    if (!(hi > lo)) return v;
+    double span = hi - lo;
+    double t = std::fmod(v - lo, 2.0 * span);
+    if (t < 0.0) t += 2.0 * span;
+    return lo + (t <= span ? t : 2.0 * span - t);
+}
+
+/// Perturbs every numeric parameter of one entry by its table's mutation scale. The tool,
+/// the 3D wave's shape and ink colours stay: they are the "sequence of tools", not its
+/// parameters.
+void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
+    const double side = largestSide(g);
+    const double floorLength = 1e-3 * side; // lengths stay clearly > 0
+    const glm::dvec3 before = op.direction, beforeNormal = op.normal;
+    bool hasFrame = false;
+    for (const ParamSpec& spec : toolSpec(op.tool).params(g.dimension)) {
+        const int n = componentCount(spec, op, g.dimension);
+        switch (spec.kind) {
+        case ParamKind::Position:
+            for (int i = 0; i < n; ++i) {
+                double v = getComponent(spec, op, i);
+                double moved = v + rng.normal() * spec.mutationScale * strength * side;
+                // Centres inside the design stay inside; ones a user put outside roam freely.
+                if (v >= 0.0 && v <= g.size[i]) moved = reflectInto(moved, 0.0, g.size[i]);
+                setComponent(spec, op, i, moved);
+            }
+            break;
+        case ParamKind::Direction: {
+            glm::dvec3 v(0.0);
+            for (int i = 0; i < n; ++i) v[i] = getComponent(spec, op, i);
+            glm::dvec3 moved = v;
+            for (int i = 0; i < n; ++i) moved[i] += rng.normal() * spec.mutationScale * strength;
+            double len = glm::length(moved);
+            if (len > 1e-6 && std::isfinite(len)) moved /= len;
+            else moved = v; // a degenerate draw keeps the old direction
+            for (int i = 0; i < n; ++i) setComponent(spec, op, i, moved[i]);
+            if (spec.field == ParamField::Direction || spec.field == ParamField::Normal) hasFrame = true;
+            break;
+        }
+        case ParamKind::Angle:
+        case ParamKind::Phase:
+            for (int i = 0; i < n; ++i) {
+                double v = getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength;
+                // Keep angles in a readable range; only whole turns are removed, so nothing moves.
+                if (std::abs(v) > 360.0) v = std::fmod(v, 360.0);
+                setComponent(spec, op, i, v);
+            }
+            break;
+        case ParamKind::Length:
+        case ParamKind::Shift:
+            for (int i = 0; i < n; ++i) {
+                double v = getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side;
+                if (spec.positive) v = std::max(std::abs(v), floorLength);
+                setComponent(spec, op, i, v);
+            }
+            break;
+        case ParamKind::Color:
+        case ParamKind::Shape: break;
+        }
+    }
+    if (hasFrame) {
+        // Keep direction and normal a valid frame: the normal loses its part along the
+        // direction; should they have become (nearly) parallel, the old frame stays.
+        glm::dvec3 d = op.direction;
+        glm::dvec3 nrm = op.normal - glm::dot(op.normal, d) * d;
+        double len = glm::length(nrm);
+        if (len > 1e-3 && std::isfinite(len)) {
+            op.normal = nrm / len;
+        } else {
+            op.direction = before;
+            op.normal = beforeNormal;
+        }
+    }
+}
+
+std::uint8_t nudgeChannel(std::uint8_t c, double sigma, Pcg32& rng) {
+    return static_cast<std::uint8_t>(std::clamp(std::round(c + rng.normal() * sigma), 0.0, 255.0));
+}
+
+Color nudgeColor(Color c, double sigma, Pcg32& rng) {
+    return {nudgeChannel(c.r, sigma, rng), nudgeChannel(c.g, sigma, rng), nudgeChannel(c.b, sigma, rng)};
+}
+
+/// Colour indices folded into a palette of `size` inks (clamped to its last ink).
+void clampColors(std::vector<Operation>& ops, std::size_t size) {
+    int last = static_cast<int>(size) - 1;
+    for (Operation& op : ops)
+        if (toolSpec(op.tool).laysInk) op.color = std::clamp(op.color, 0, std::max(0, last));
+}
+
+/// Keeps a child within the format's entry limit (only crossovers could exceed it).
+void capEntries(Genome& g) {
+    std::size_t room = MaxEntries > g.initial.size() ? MaxEntries - g.initial.size() : 0;
+    if (g.operations.size() > room) g.operations.resize(room);
+}
+
+int generationOf(const Genome& g) {
+    const auto& meta = g.meta;
+    if (!meta.is_object()) return 0;
+    auto lineage = meta.find("lineage");
+    if (lineage == meta.end() || !lineage->is_object()) return 0;
+    auto gen = lineage->find("generation");
+    if (gen == lineage->end() || !gen->is_number_integer()) return 0;
+    return std::max(0, gen->get<int>());
+}
+
+/// The home parent's name without an earlier child suffix " (gN #K)".
+std::string rootName(const Genome& g) {
+    std::string name = "Untitled";
+    if (g.meta.is_object()) {
+        auto it = g.meta.find("name");
+        if (it != g.meta.end() && it->is_string() && !it->get<std::string>().empty()) name = it->get<std::string>();
+    }
+    if (auto pos = name.rfind(" (g"); pos != std::string::npos && name.back() == ')') name.erase(pos);
+    return name;
+}
+
+} // namespace
+
+std::string_view operatorName(GeneticOperator op) { return OperatorNames[static_cast<std::size_t>(op)]; }
+
+std::optional<GeneticOperator> parseOperator(std::string_view name) {
+    for (std::size_t i = 0; i < OperatorNames.size(); ++i)
+        if (OperatorNames[i] == name) return static_cast<GeneticOperator>(i);
+    return std::nullopt;
+}
+
+int minParents(GeneticOperator op) {
+    return op == GeneticOperator::Recombine || op == GeneticOperator::Swap ? 2 : 1;
+}
+
+int maxParents(GeneticOperator op) {
+    switch (op) {
+    case GeneticOperator::Recombine: return 0;
+    case GeneticOperator::Swap: return 2;
+    default: return 1;
+    }
+}
+
+Locks locksOf(const Genome& genome) {
+    Locks locks;
+    if (!genome.meta.is_object()) return locks;
+    auto it = genome.meta.find("locks");
+    if (it == genome.meta.end() || !it->is_object()) return locks;
+    auto flag = [&](const char* key) {
+        auto f = it->find(key);
+        return f != it->end() && f->is_boolean() && f->get<bool>();
+    };
+    locks.palette = flag("palette");
+    locks.initial = flag("initial");
+    locks.operations = flag("operations");
+    return locks;
+}
+
+void setLocks(Genome& genome, const Locks& locks) {
+    if (!genome.meta.is_object()) genome.meta = nlohmann::ordered_json::object();
+    if (locks == Locks{}) {
+        genome.meta.erase("locks");
+        return;
+    }
+    nlohmann::ordered_json value = nlohmann::ordered_json::object();
+    value["palette"] = locks.palette;
+    value["initial"] = locks.initial;
+    value["operations"] = locks.operations;
+    genome.meta["locks"] = value;
+}
+
+std::string genomeId(const Genome& genome) {
+    nlohmann::ordered_json json = toJson(genome);
+    json.erase("meta");
+    std::string text = json.dump();
+    std::uint64_t hash = 0xcbf29ce484222325ULL;
+    for (unsigned char ch : text) {
+        hash ^= ch;
+        hash *= 0x100000001b3ULL;
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
+}
+
+Genome alterGenome(const Genome& parent, double strength, Pcg32& rng) {
+    Genome child = parent;
+    if (strength == 0.0) return child; // exactly the parent, not a renormalised copy
+    Locks locks = locksOf(parent);
+    if (!locks.operations) {
+        for (Operation& op : child.operations) perturb(op, child, strength, rng);
+        return child;
+    }
+    // The strokes are locked: vary what is free instead, more gently, so the operator still
+    // offers a choice.
+    if (!locks.initial)
+        for (Operation& op : child.initial) perturb(op, child, 0.5 * strength, rng);
+    if (!locks.palette) {
+        for (Color& c : child.palette) c = nudgeColor(c, 24.0 * strength, rng);
+        child.background = nudgeColor(child.background, 8.0 * strength, rng);
+    }
+    return child;
+}
+
+Genome recombineGenomes(const std::vector<Genome>& parents, std::size_t home, Pcg32& rng) {
+    if (parents.size() < 2 || home >= parents.size()) throw InputError("recombine needs two or more parents");
+    Genome child = parents[home];
+    if (locksOf(parents[home]).operations) return child;
+    std::vector<Operation> ops;
+    const std::vector<Operation>& mine = parents[home].operations;
+    if (parents.size() == 2 && rng.chance(0.5)) {
+        // One-point crossover: a head of the home parent's strokes, the tail of the other's.
+        const std::vector<Operation>& theirs = parents[1 - home].operations;
+        std::size_t a = mine.empty() ? 0 : 1 + rng.below(static_cast<std::uint32_t>(mine.size()));
+        std::size_t b = theirs.empty() ? 0 : rng.below(static_cast<std::uint32_t>(theirs.size()));
+        ops.assign(mine.begin(), mine.begin() + static_cast<std::ptrdiff_t>(a));
+        ops.insert(ops.end(), theirs.begin() + static_cast<std::ptrdiff_t>(b), theirs.end());
+    } else {
+        // Uniform crossover: stroke k comes from any parent that has a k-th stroke; the child
+        // is as long as one of the parents, chosen at random.
+        std::size_t length = parents[rng.below(static_cast<std::uint32_t>(parents.size()))].operations.size();
+        std::vector<std::size_t> holders;
+        for (std::size_t k = 0; k < length; ++k) {
+            holders.clear();
+            for (std::size_t p = 0; p < parents.size(); ++p)
+                if (parents[p].operations.size() > k) holders.push_back(p);
+            ops.push_back(parents[holders[rng.below(static_cast<std::uint32_t>(holders.size()))]].operations[k]);
+        }
+    }
+    clampColors(ops, child.palette.size());
+    child.operations = std::move(ops);
+    capEntries(child);
+    return child;
+}
+
+Genome swapGenomes(const Genome& home, const Genome& other) {
+    Genome child = home;
+    if (locksOf(home).operations) return child;
+    child.operations = other.operations;
+    clampColors(child.operations, child.palette.size());
+    capEntries(child);
+    return child;
+}
+
+Genome reinitGenome(const Genome& parent, Pcg32& rng) {
+    Genome child = parent;
+    Locks locks = locksOf(parent);
+    if (!locks.initial) {
+        child.initial = randomInitial(rng, child.dimension, child.size, static_cast<int>(child.palette.size()));
+        capEntries(child);
+    } else if (!locks.palette) {
+        // The drops are locked: recolour them instead, with as many inks as before so every
+        // colour index stays valid.
+        std::vector<Color> fresh = randomPalette(rng, &child.background);
+        for (std::size_t i = 0; i < child.palette.size(); ++i) child.palette[i] = fresh[i % fresh.size()];
+    }
+    return child;
+}
+
+std::vector<Genome> breed(const BreedRequest& request) {
+    const GeneticOperator op = request.op;
+    const auto parentCount = static_cast<int>(request.parents.size());
+    const std::string name(operatorName(op));
+    if (parentCount < minParents(op) || (maxParents(op) > 0 && parentCount > maxParents(op))) {
+        std::string want = maxParents(op) == 0         ? std::to_string(minParents(op)) + " or more parents"
+                           : minParents(op) == maxParents(op) ? (minParents(op) == 1 ? std::string("one parent") : std::to_string(minParents(op)) + " parents")
+                                                              : std::to_string(minParents(op)) + " to " + std::to_string(maxParents(op)) + " parents";
+        throw InputError(name + " takes " + want + " (got " + std::to_string(parentCount) + ")");
+    }
+    if (request.count < 1 || request.count > MaxChildren)
+        throw InputError("count must be between 1 and " + std::to_string(MaxChildren) + " (got " + std::to_string(request.count) + ")");
+    if (!(request.strength >= 0.0 && request.strength <= 1.0))
+        throw InputError("strength must be between 0 and 1 (got " + std::to_string(request.strength) + ")");
+    for (int p = 0; p < parentCount; ++p) {
+        validateGenome(request.parents[static_cast<std::size_t>(p)], "parent " + std::to_string(p + 1));
+        if (request.parents[static_cast<std::size_t>(p)].dimension != request.parents[0].dimension)
+            throw InputError("parent " + std::to_string(p + 1) + ": dimension " +
+                             std::to_string(request.parents[static_cast<std::size_t>(p)].dimension) +
+                             " differs from parent 1's " + std::to_string(request.parents[0].dimension));
+    }
+
+    nlohmann::ordered_json parentIds = nlohmann::ordered_json::array();
+    int generation = 0;
+    for (const Genome& parent : request.parents) {
+        parentIds.push_back(genomeId(parent));
+        generation = std::max(generation, generationOf(parent));
+    }
+    generation += 1;
+
+    std::vector<Genome> children;
+    children.reserve(static_cast<std::size_t>(request.count));
+    for (int i = 0; i < request.count; ++i) {
+        Pcg32 rng = childRng(request.seed, i);
+        std::size_t home = 0;
+        Genome child;
+        switch (op) {
+        case GeneticOperator::Alter: child = alterGenome(request.parents[0], request.strength, rng); break;
+        case GeneticOperator::Recombine:
+            home = static_cast<std::size_t>(i) % request.parents.size();
+            child = recombineGenomes(request.parents, home, rng);
+            break;
+        case GeneticOperator::Swap:
+            home = static_cast<std::size_t>(i % 2);
+            child = swapGenomes(request.parents[home], request.parents[1 - home]);
+            break;
+        case GeneticOperator::Reinit: child = reinitGenome(request.parents[0], rng); break;
+        }
+
+        const Genome& homeParent = request.parents[home];
+        nlohmann::ordered_json meta = nlohmann::ordered_json::object();
+        meta["name"] = rootName(homeParent) + " (g" + std::to_string(generation) + " #" + std::to_string(i + 1) + ")";
+        if (homeParent.meta.is_object())
+            for (const auto& [key, value] : homeParent.meta.items())
+                if (key != "name" && key != "seed" && key != "generator" && key != "id" && key != "lineage") meta[key] = value;
+        nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
+        lineage["parents"] = parentIds;
+        lineage["operator"] = name;
+        lineage["seed"] = request.seed;
+        lineage["child"] = i + 1;
+        if (op == GeneticOperator::Alter) lineage["strength"] = request.strength;
+        lineage["generation"] = generation;
+        meta["lineage"] = lineage;
+        child.meta = meta;
+        child.meta["id"] = genomeId(child);
+
+        try {
+            validateGenome(child, "child " + std::to_string(i + 1));
+        } catch (const GenomeError& e) {
+            // Valid parents must give valid children; anything else is a bug, not bad input.
+            throw RuntimeFailure(std::string("bred an invalid genome: ") + e.what());
+        }
+        children.push_back(std::move(child));
+    }
+    return children;
+}
+
+} // namespace marbler

@@ -3,25 +3,41 @@
 /// the way marblers lay a stone pattern (a harmonious palette, some drops inside others), then
 /// a few strokes of the traditional families (combed, chevron/nonpareil, waved, swirled,
 /// vortices). The same seed gives the same genome on every machine.
+///
+/// Determinism: every draw comes from Pcg32 and the generator itself uses only IEEE basic
+/// operations and square roots (correctly rounded everywhere): directions are drawn by
+/// rejection instead of from sines and cosines, colours are mixed in HSL (piecewise linear)
+/// and the 3D volume law uses a Newton cube root, so no libm difference can change a file.
 
 #include "marbler/Genome.h"
 #include "marbler/Random.h"
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace marbler {
 
-/// A complete random genome of dimension 2 or 3 (1000 units a side).
+/// What `meta.generator` says of a genome made by randomGenome; bump it when the same seed
+/// starts giving a different design.
+inline constexpr const char* GeneratorVersion = "marbler-random-1";
+
+/// A complete random genome of dimension 2 or 3 (1000 units a side), with
+/// meta {"name", "seed", "generator"}. Throws InputError for another dimension.
 Genome randomGenome(std::uint64_t seed, int dimension);
 
-/// A harmonious palette of 3 to 6 inks and a background that sets them off.
+/// A harmonious palette of 3 to 6 inks (analogous, complementary, split-complementary, triadic
+/// or monochrome-with-accent around a random base hue) and a background that sets them off.
 std::vector<Color> randomPalette(Pcg32& rng, Color* background = nullptr);
 
-/// A new initial state (stone pattern of drops, and in 3D ink columns) for a genome with the
-/// given dimension, size and palette size.
+/// A new initial state (stone pattern of drops, bull's-eyes, occasional sprays, and in 3D ink
+/// columns) for a genome with the given dimension, size and palette size (>= 1).
 std::vector<Operation> randomInitial(Pcg32& rng, int dimension, const glm::dvec3& size, int paletteSize);
 
-/// A few strokes from the traditional families.
+/// A few strokes from the traditional families (at least one, at most about ten).
 std::vector<Operation> randomStrokes(Pcg32& rng, int dimension, const glm::dvec3& size);
+
+/// An evocative two-word name ("Saffron Tide") for a seed.
+std::string randomName(std::uint64_t seed);
 
 } // namespace marbler

@@ -1,8 +1,30 @@
 #pragma once
 /// The genetic operators of the evolution workbench (after the solid marbling paper), seeded
 /// and reproducible, and the lineage every child records in its `meta`.
+///
+/// Every child has one *home* parent: the parent whose initial state, palette and background
+/// it carries (alter, reinit: the parent; swap: the parent whose initial state it takes;
+/// recombine: the parent chosen for its initial state). The locks of the home parent
+/// (`meta.locks`) hold for the child:
+///
+/// | operator  | operations unlocked                     | operations locked                      |
+/// | --------- | --------------------------------------- | -------------------------------------- |
+/// | alter     | every numeric parameter of every stroke | unlocked palette colours are nudged,   |
+/// |           | perturbed (the tools and their order    | and unlocked initial drops moved and   |
+/// |           | never change); palette, initial kept    | resized a little instead               |
+/// | recombine | crossover of the parents' strokes       | the home parent's strokes, unchanged   |
+/// | swap      | the other parent's strokes              | the home parent's strokes, unchanged   |
+///
+/// reinit draws a new initial drop pattern (randomInitial) unless the initial state is locked;
+/// then it draws a new palette instead, unless that too is locked. No operator touches a locked
+/// part; with everything locked a child has the home parent's content.
+///
+/// Colour indices that another palette does not have (swap, recombine) are clamped to its last
+/// ink. Children keep the home parent's free-form `meta` (name with a generation suffix,
+/// locks, author...) except `seed`, `generator`, `id` and `lineage`, which they set anew.
 
 #include "marbler/Genome.h"
+#include "marbler/Random.h"
 
 #include <cstdint>
 #include <optional>
@@ -34,11 +56,13 @@ struct Locks {
     bool operations = false;
     friend bool operator==(const Locks&, const Locks&) = default;
 };
+/// The locks in `meta.locks` (missing or non-boolean entries read as unlocked).
 Locks locksOf(const Genome& genome);
+/// Writes `meta.locks` (removes it when nothing is locked).
 void setLocks(Genome& genome, const Locks& locks);
 
-/// A stable identifier of a design's content (hex of a 64-bit hash of its JSON without
-/// `meta`), used for lineage.
+/// A stable identifier of a design's content: FNV-1a 64 of the compact canonical JSON
+/// (toJson) without `meta`, as 16 lower-case hex digits. Used for lineage.
 std::string genomeId(const Genome& genome);
 
 struct BreedRequest {
@@ -49,9 +73,25 @@ struct BreedRequest {
     double strength = 0.5; ///< alteration strength, 0..1
 };
 
+/// The most children one request may ask for.
+inline constexpr int MaxChildren = 1000;
+
 /// The children of a request. Each child's `meta.lineage` holds {parents: [ids], operator,
-/// seed, generation (1 + the parents' largest)} and `meta.id` its own id. Throws InputError
-/// for a wrong parent count, mixed dimensions, or a strength outside [0, 1].
+/// seed, child (1-based index), generation (1 + the parents' largest)} (alter adds strength)
+/// and `meta.id` its own id. Child i draws from a Pcg32 stream derived from (seed, i) alone,
+/// so the same request gives the same children and asking for more children keeps the
+/// first ones. Every child passes validateGenome. Throws InputError for a wrong parent count,
+/// mixed dimensions, an invalid parent, a count outside [1, MaxChildren] or a strength outside
+/// [0, 1].
 std::vector<Genome> breed(const BreedRequest& request);
+
+/// The single operators, without lineage (breed adds it). Each returns a new genome whose
+/// meta is the home parent's; they honour the home parent's locks as described above.
+Genome alterGenome(const Genome& parent, double strength, Pcg32& rng);
+/// `home` indexes the parent whose initial state, palette and background the child keeps.
+Genome recombineGenomes(const std::vector<Genome>& parents, std::size_t home, Pcg32& rng);
+/// The initial state (and palette, background) of `home` with the operations of `other`.
+Genome swapGenomes(const Genome& home, const Genome& other);
+Genome reinitGenome(const Genome& parent, Pcg32& rng);
 
 } // namespace marbler

@@ -1,0 +1,203 @@
+// The seeded random generator: determinism, validity by construction, and designs that look
+// like marbling (a covered bath, harmonious inks, strokes of the traditional families).
+
+#include "marbler/Error.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Params.h"
+#include "marbler/Tools.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <set>
+
+namespace marbler {
+namespace {
+
+double luma(Color c) { return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0; }
+
+int countTool(const std::vector<Operation>& ops, Tool tool) {
+    int n = 0;
+    for (const Operation& op : ops) n += op.tool == tool ? 1 : 0;
+    return n;
+}
+
+/// The fraction of a grid of sample points over the bath (2D) or a slice set (3D) where no
+/// ink lies.
+double backgroundFraction(const Genome& g, bool initialOnly, int grid) {
+    Genome probe = g;
+    if (initialOnly) probe.operations.clear();
+    std::vector<PreparedOp> ops = prepare(probe);
+    int empty = 0, total = 0;
+    int layers = g.dimension == 3 ? 5 : 1;
+    for (int k = 0; k < layers; ++k)
+        for (int j = 0; j < grid; ++j)
+            for (int i = 0; i < grid; ++i) {
+                glm::dvec3 p((i + 0.5) * g.size.x / grid, (j + 0.5) * g.size.y / grid,
+                             g.dimension == 3 ? (k + 0.5) * g.size.z / layers : 0.0);
+                empty += traceColor(ops, p) < 0 ? 1 : 0;
+                ++total;
+            }
+    return static_cast<double>(empty) / total;
+}
+
+TEST(Generator, SameSeedGivesIdenticalText) {
+    for (int dimension : {2, 3})
+        for (std::uint64_t seed : {0ull, 1ull, 42ull, 0x8000000000000005ull, ~0ull}) {
+            std::string a = serializeGenome(randomGenome(seed, dimension));
+            std::string b = serializeGenome(randomGenome(seed, dimension));
+            EXPECT_EQ(a, b) << "seed " << seed << " dimension " << dimension;
+        }
+}
+
+TEST(Generator, DifferentSeedsGiveDifferentDesigns) {
+    for (int dimension : {2, 3}) {
+        std::set<std::string> texts, palettes, names;
+        for (std::uint64_t seed = 0; seed < 30; ++seed) {
+            Genome g = randomGenome(seed, dimension);
+            texts.insert(serializeGenome(g));
+            std::string palette;
+            for (Color c : g.palette) palette += toHex(c);
+            palettes.insert(palette);
+            names.insert(g.meta["name"].get<std::string>());
+        }
+        EXPECT_EQ(texts.size(), 30u);
+        EXPECT_EQ(palettes.size(), 30u);
+        EXPECT_GE(names.size(), 20u); // names are drawn from 32 x 32 words: a few may repeat
+    }
+}
+
+TEST(Generator, ManySeedsAreValidAndShapedLikeMarbling) {
+    for (int dimension : {2, 3}) {
+        int seeds = dimension == 2 ? 300 : 120;
+        for (int s = 0; s < seeds; ++s) {
+            auto seed = static_cast<std::uint64_t>(s) * 7919u + 3u;
+            Genome g = randomGenome(seed, dimension);
+            SCOPED_TRACE("seed " + std::to_string(seed) + " dimension " + std::to_string(dimension));
+            ASSERT_NO_THROW(validateGenome(g, "random"));
+            EXPECT_EQ(g.dimension, dimension);
+            EXPECT_GE(g.palette.size(), 3u);
+            EXPECT_LE(g.palette.size(), 6u);
+            int drops = countTool(g.initial, Tool::Drop);
+            if (dimension == 2) {
+                EXPECT_GE(drops, 30);
+                EXPECT_LE(drops, 120);
+                EXPECT_EQ(countTool(g.initial, Tool::Cylinder), 0);
+            } else {
+                EXPECT_GE(drops, 60);
+                EXPECT_LE(drops, 180);
+                EXPECT_GE(countTool(g.initial, Tool::Cylinder), 1);
+            }
+            EXPECT_GE(g.operations.size(), 1u);
+            EXPECT_LE(g.operations.size(), 12u);
+            EXPECT_LE(g.initial.size() + g.operations.size(), 320u);
+            for (const Operation& op : g.operations) {
+                EXPECT_TRUE(toolSpec(op.tool).movesInk);
+                if (dimension == 3 && (op.tool == Tool::Comb || op.tool == Tool::Line || op.tool == Tool::Wave)) {
+                    EXPECT_NEAR(glm::length(op.direction), 1.0, 1e-12);
+                    EXPECT_NEAR(glm::length(op.normal), 1.0, 1e-12);
+                    EXPECT_NEAR(glm::dot(op.direction, op.normal), 0.0, 1e-12);
+                }
+            }
+            // Drops come biggest first, on the whole: the first quarter outweighs the last.
+            std::vector<double> radii;
+            for (const Operation& op : g.initial)
+                if (op.tool == Tool::Drop) radii.push_back(op.radius);
+            std::size_t q = radii.size() / 4;
+            double first = 0, last = 0;
+            for (std::size_t i = 0; i < q; ++i) {
+                first += radii[i];
+                last += radii[radii.size() - 1 - i];
+            }
+            EXPECT_GT(first, last);
+            EXPECT_EQ(g.meta["seed"].get<std::uint64_t>(), seed);
+            EXPECT_EQ(g.meta["generator"], GeneratorVersion);
+            EXPECT_FALSE(g.meta["name"].get<std::string>().empty());
+        }
+    }
+}
+
+TEST(Generator, SavedTextLoadsBackToTheSameText) {
+    for (int dimension : {2, 3})
+        for (std::uint64_t seed = 100; seed < 110; ++seed) {
+            std::string text = serializeGenome(randomGenome(seed, dimension));
+            Genome loaded = parseGenome(text, "random.marble.json");
+            EXPECT_EQ(serializeGenome(loaded), text) << "seed " << seed;
+        }
+}
+
+TEST(Generator, InksAreDistinctAndStandOutFromTheBath) {
+    int weak = 0, total = 0;
+    for (std::uint64_t seed = 0; seed < 300; ++seed) {
+        Genome g = randomGenome(seed, 2);
+        std::set<std::string> distinct;
+        for (Color c : g.palette) {
+            distinct.insert(toHex(c));
+            weak += std::abs(luma(c) - luma(g.background)) < 0.15 ? 1 : 0;
+            ++total;
+        }
+        EXPECT_EQ(distinct.size(), g.palette.size()) << "seed " << seed;
+    }
+    // Nearly every ink differs clearly in brightness from the bath.
+    EXPECT_LT(static_cast<double>(weak) / total, 0.03) << weak << " of " << total;
+}
+
+TEST(Generator, DropsCoverTheBath2D) {
+    double sum = 0.0;
+    int seeds = 40;
+    for (std::uint64_t seed = 0; seed < static_cast<std::uint64_t>(seeds); ++seed) {
+        Genome g = randomGenome(seed, 2);
+        double initialOnly = backgroundFraction(g, true, 48);
+        EXPECT_LT(initialOnly, 0.3) << "seed " << seed;
+        sum += initialOnly;
+    }
+    // Thin veins of bath between the stones are part of the look; open water is not.
+    EXPECT_LT(sum / seeds, 0.15);
+}
+
+TEST(Generator, InksFillTheBlock3D) {
+    double sum = 0.0;
+    int seeds = 10;
+    for (std::uint64_t seed = 0; seed < static_cast<std::uint64_t>(seeds); ++seed) {
+        double fraction = backgroundFraction(randomGenome(seed, 3), true, 20);
+        EXPECT_LT(fraction, 0.4) << "seed " << seed;
+        sum += fraction;
+    }
+    EXPECT_LT(sum / seeds, 0.25);
+}
+
+TEST(Generator, StrokeFamiliesAllAppear) {
+    for (int dimension : {2, 3}) {
+        std::set<Tool> seen;
+        for (std::uint64_t seed = 0; seed < 200; ++seed)
+            for (const Operation& op : randomGenome(seed, dimension).operations) seen.insert(op.tool);
+        EXPECT_TRUE(seen.count(Tool::Comb));
+        EXPECT_TRUE(seen.count(Tool::Wave));
+        EXPECT_TRUE(seen.count(Tool::Circle));
+        EXPECT_TRUE(seen.count(Tool::Vortex));
+        EXPECT_TRUE(seen.count(Tool::Line));
+        if (dimension == 3) {
+            EXPECT_TRUE(seen.count(Tool::Sphere));
+        }
+    }
+}
+
+TEST(Generator, RejectsOtherDimensions) {
+    EXPECT_THROW(randomGenome(1, 1), InputError);
+    EXPECT_THROW(randomGenome(1, 4), InputError);
+}
+
+TEST(Generator, PartsUseTheirOwnStreams) {
+    Pcg32 a(5), b(5);
+    EXPECT_EQ(randomPalette(a), randomPalette(b));
+    Pcg32 c(9), d(9);
+    EXPECT_EQ(randomInitial(c, 2, {1000, 1000, 1000}, 4), randomInitial(d, 2, {1000, 1000, 1000}, 4));
+    Pcg32 e(9);
+    for (const Operation& op : randomInitial(e, 3, {1000, 1000, 1000}, 2)) EXPECT_LT(op.color, 2);
+}
+
+} // namespace
+} // namespace marbler

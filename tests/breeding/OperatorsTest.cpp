@@ -1,0 +1,350 @@
+// The genetic operators: what each keeps and exchanges, locks, reproducibility and lineage.
+
+#include "marbler/Error.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Operators.h"
+#include "marbler/Params.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <set>
+
+namespace marbler {
+namespace {
+
+std::vector<Tool> toolsOf(const std::vector<Operation>& ops) {
+    std::vector<Tool> tools;
+    for (const Operation& op : ops) tools.push_back(op.tool);
+    return tools;
+}
+
+BreedRequest request(GeneticOperator op, std::vector<Genome> parents, std::uint64_t seed, int count = 8,
+                     double strength = 0.5) {
+    BreedRequest r;
+    r.op = op;
+    r.parents = std::move(parents);
+    r.seed = seed;
+    r.count = count;
+    r.strength = strength;
+    return r;
+}
+
+/// How far the strokes of b lie from those of a, every component measured in its own
+/// mutation scale (so lengths, angles and directions count alike).
+double scaledDistance(const Genome& a, const Genome& b) {
+    double sum = 0.0;
+    int n = 0;
+    const double side = 1000.0;
+    for (std::size_t k = 0; k < a.operations.size(); ++k) {
+        const Operation& x = a.operations[k];
+        const Operation& y = b.operations[k];
+        for (const ParamSpec& spec : toolSpec(x.tool).params(a.dimension)) {
+            if (spec.mutationScale == 0.0) continue;
+            double unit = spec.kind == ParamKind::Angle || spec.kind == ParamKind::Phase ? spec.mutationScale
+                        : spec.kind == ParamKind::Direction                             ? spec.mutationScale
+                                                                                        : spec.mutationScale * side;
+            for (int i = 0; i < componentCount(spec, x, a.dimension); ++i) {
+                sum += std::abs(getComponent(spec, y, i) - getComponent(spec, x, i)) / unit;
+                ++n;
+            }
+        }
+    }
+    return n ? sum / n : 0.0;
+}
+
+class Operators : public ::testing::TestWithParam<int> {
+protected:
+    int dimension() const { return GetParam(); }
+    Genome parent(std::uint64_t seed) const { return randomGenome(seed, dimension()); }
+};
+
+TEST_P(Operators, SwapExchangesExactlyInitialStateAndOperations) {
+    Genome a = parent(1), b = parent(2);
+    std::vector<Genome> children = breed(request(GeneticOperator::Swap, {a, b}, 7, 5));
+    ASSERT_EQ(children.size(), 5u);
+    for (std::size_t i = 0; i < children.size(); ++i) {
+        const Genome& home = i % 2 == 0 ? a : b;
+        const Genome& other = i % 2 == 0 ? b : a;
+        const Genome& child = children[i];
+        EXPECT_EQ(child.initial, home.initial) << i;
+        EXPECT_EQ(child.palette, home.palette) << i;
+        EXPECT_EQ(child.background, home.background) << i;
+        EXPECT_EQ(child.size, home.size) << i;
+        EXPECT_EQ(child.operations, other.operations) << i;
+    }
+}
+
+TEST_P(Operators, SwapClampsColourIndicesToTheHomePalette) {
+    Genome a = parent(1), b = parent(2);
+    a.palette.resize(2);
+    for (Operation& op : a.initial) op.color %= 2;
+    Operation drop = defaultOperation(Tool::Drop, dimension(), {500, 500, 500});
+    drop.color = static_cast<int>(b.palette.size()) - 1;
+    b.operations.push_back(drop);
+    std::vector<Genome> children = breed(request(GeneticOperator::Swap, {a, b}, 1, 2));
+    EXPECT_EQ(children[0].operations.back().color, 1);
+    EXPECT_NO_THROW(validateGenome(children[0], "child"));
+}
+
+TEST_P(Operators, ReinitKeepsOperationsAndDrawsANewInitialState) {
+    Genome p = parent(3);
+    std::vector<Genome> children = breed(request(GeneticOperator::Reinit, {p}, 11, 4));
+    std::set<std::string> initials;
+    for (const Genome& child : children) {
+        EXPECT_EQ(child.operations, p.operations);
+        EXPECT_EQ(child.palette, p.palette);
+        EXPECT_NE(child.initial, p.initial);
+        for (const Operation& op : child.initial) EXPECT_LT(op.color, static_cast<int>(p.palette.size()));
+        initials.insert(serializeGenome(child));
+    }
+    EXPECT_EQ(initials.size(), children.size()); // each child its own pattern
+}
+
+TEST_P(Operators, AlterKeepsTheToolSequenceAndStaysValid) {
+    for (std::uint64_t seed = 0; seed < 25; ++seed) {
+        Genome p = parent(seed);
+        for (double strength : {0.1, 0.5, 1.0}) {
+            for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, seed, 4, strength))) {
+                EXPECT_EQ(toolsOf(child.operations), toolsOf(p.operations));
+                EXPECT_EQ(child.initial, p.initial);
+                EXPECT_EQ(child.palette, p.palette);
+                EXPECT_NE(child.operations, p.operations);
+                ASSERT_NO_THROW(validateGenome(child, "child"));
+                if (dimension() == 3)
+                    for (const Operation& op : child.operations) {
+                        if (op.tool != Tool::Comb && op.tool != Tool::Line && op.tool != Tool::Wave) continue;
+                        EXPECT_NEAR(glm::length(op.direction), 1.0, 1e-9);
+                        EXPECT_NEAR(glm::length(op.normal), 1.0, 1e-9);
+                        EXPECT_NEAR(glm::dot(op.direction, op.normal), 0.0, 1e-9);
+                    }
+            }
+        }
+    }
+}
+
+TEST_P(Operators, AlterKeepsPositiveParametersPositiveEvenWhenTheyAreTiny) {
+    Genome p = parent(4);
+    for (Operation& op : p.operations) {
+        op.lambda = 0.01;
+        op.spacing = 0.01;
+        op.wavelength = {0.01, 0.01};
+        op.radius = 0.01;
+    }
+    for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, 3, 20, 1.0)))
+        EXPECT_NO_THROW(validateGenome(child, "child"));
+}
+
+TEST_P(Operators, AlterWithStrengthZeroKeepsEveryParameter) {
+    Genome p = parent(5);
+    for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, 9, 3, 0.0))) {
+        EXPECT_EQ(child.operations, p.operations);
+        EXPECT_EQ(child.initial, p.initial);
+        EXPECT_EQ(genomeId(child), genomeId(p));
+    }
+}
+
+TEST_P(Operators, StrongerAlterationMovesFurtherOnAverage) {
+    double weak = 0.0, strong = 0.0;
+    for (std::uint64_t seed = 0; seed < 10; ++seed) {
+        Genome p = parent(seed + 50);
+        for (const Genome& c : breed(request(GeneticOperator::Alter, {p}, seed, 8, 0.1))) weak += scaledDistance(p, c);
+        for (const Genome& c : breed(request(GeneticOperator::Alter, {p}, seed, 8, 0.8))) strong += scaledDistance(p, c);
+    }
+    // Gaussian steps scale with strength: about eight times further, allowing for the clamps.
+    EXPECT_GT(strong, 4.0 * weak);
+    EXPECT_GT(weak, 0.0);
+}
+
+TEST_P(Operators, RecombineOnlyUsesTheParentsOperations) {
+    std::vector<Genome> parents{parent(10), parent(11), parent(12)};
+    for (std::size_t n : {2u, 3u}) {
+        std::vector<Genome> some(parents.begin(), parents.begin() + static_cast<std::ptrdiff_t>(n));
+        std::vector<Genome> children = breed(request(GeneticOperator::Recombine, some, 21, 12));
+        for (std::size_t i = 0; i < children.size(); ++i) {
+            const Genome& child = children[i];
+            const Genome& home = some[i % n];
+            EXPECT_EQ(child.initial, home.initial);
+            EXPECT_EQ(child.palette, home.palette);
+            EXPECT_FALSE(child.operations.empty());
+            for (const Operation& op : child.operations) {
+                bool found = false;
+                for (const Genome& p : some)
+                    for (const Operation& q : p.operations) found = found || q == op;
+                EXPECT_TRUE(found) << "child " << i << " has a stroke no parent has";
+            }
+            EXPECT_NO_THROW(validateGenome(child, "child"));
+        }
+    }
+}
+
+TEST_P(Operators, RecombineMixesStrokesOfBothParents) {
+    Genome a = parent(20), b = parent(21);
+    int mixed = 0;
+    for (const Genome& child : breed(request(GeneticOperator::Recombine, {a, b}, 5, 20))) {
+        bool fromA = false, fromB = false;
+        for (const Operation& op : child.operations) {
+            for (const Operation& q : a.operations) fromA = fromA || q == op;
+            for (const Operation& q : b.operations) fromB = fromB || q == op;
+        }
+        mixed += fromA && fromB ? 1 : 0;
+    }
+    EXPECT_GE(mixed, 8);
+}
+
+TEST_P(Operators, LocksHoldForEveryOperator) {
+    Genome a = parent(30), b = parent(31);
+    for (int mask = 0; mask < 8; ++mask) {
+        Locks locks{(mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0};
+        Genome la = a, lb = b;
+        setLocks(la, locks);
+        setLocks(lb, locks);
+        EXPECT_EQ(locksOf(la), locks);
+        struct Case {
+            GeneticOperator op;
+            std::vector<Genome> parents;
+        };
+        std::vector<Case> cases{{GeneticOperator::Alter, {la}},
+                                {GeneticOperator::Reinit, {la}},
+                                {GeneticOperator::Swap, {la, lb}},
+                                {GeneticOperator::Recombine, {la, lb}}};
+        for (const Case& c : cases) {
+            std::vector<Genome> children = breed(request(c.op, c.parents, 99, 6, 1.0));
+            for (std::size_t i = 0; i < children.size(); ++i) {
+                const Genome& child = children[i];
+                const Genome& home = c.parents[i % c.parents.size()];
+                SCOPED_TRACE(std::string(operatorName(c.op)) + " locks " + std::to_string(mask) + " child " +
+                             std::to_string(i));
+                if (locks.palette) {
+                    EXPECT_EQ(child.palette, home.palette);
+                    EXPECT_EQ(child.background, home.background);
+                }
+                if (locks.initial) {
+                    EXPECT_EQ(child.initial, home.initial);
+                }
+                if (locks.operations) {
+                    EXPECT_EQ(child.operations, home.operations);
+                }
+                EXPECT_EQ(locksOf(child), locks); // locks travel on to the children
+                EXPECT_NO_THROW(validateGenome(child, "child"));
+            }
+        }
+    }
+}
+
+TEST_P(Operators, AlterWithLockedOperationsVariesWhatIsFree) {
+    Genome p = parent(32);
+    setLocks(p, {false, false, true});
+    for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, 4, 4, 0.8))) {
+        EXPECT_EQ(child.operations, p.operations);
+        EXPECT_NE(child.palette, p.palette);
+        EXPECT_NE(child.initial, p.initial);
+        EXPECT_EQ(toolsOf(child.initial), toolsOf(p.initial));
+    }
+    setLocks(p, {true, true, true});
+    for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, 4, 2, 0.8))) EXPECT_EQ(genomeId(child), genomeId(p));
+}
+
+TEST_P(Operators, ReinitWithLockedInitialStateRecolours) {
+    Genome p = parent(33);
+    setLocks(p, {false, true, false});
+    for (const Genome& child : breed(request(GeneticOperator::Reinit, {p}, 4, 3))) {
+        EXPECT_EQ(child.initial, p.initial);
+        EXPECT_EQ(child.operations, p.operations);
+        EXPECT_EQ(child.palette.size(), p.palette.size());
+        EXPECT_NE(child.palette, p.palette);
+    }
+}
+
+TEST_P(Operators, SeedsReproduceAndChildrenAreIndependentOfCount) {
+    Genome a = parent(40), b = parent(41);
+    for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Reinit}) {
+        std::vector<Genome> parents = op == GeneticOperator::Recombine ? std::vector<Genome>{a, b} : std::vector<Genome>{a};
+        std::vector<Genome> first = breed(request(op, parents, 1234, 6));
+        std::vector<Genome> again = breed(request(op, parents, 1234, 6));
+        std::vector<Genome> fewer = breed(request(op, parents, 1234, 3));
+        std::vector<Genome> other = breed(request(op, parents, 1235, 6));
+        ASSERT_EQ(first.size(), 6u);
+        for (std::size_t i = 0; i < first.size(); ++i) {
+            EXPECT_EQ(serializeGenome(first[i]), serializeGenome(again[i]));
+            if (i < fewer.size()) {
+                EXPECT_EQ(serializeGenome(first[i]), serializeGenome(fewer[i]));
+            }
+        }
+        int same = 0;
+        for (std::size_t i = 0; i < first.size(); ++i) same += genomeId(first[i]) == genomeId(other[i]) ? 1 : 0;
+        EXPECT_LT(same, 3) << operatorName(op);
+    }
+}
+
+TEST_P(Operators, LineageIsRecorded) {
+    Genome a = parent(50), b = parent(51);
+    a.meta["lineage"] = {{"generation", 4}};
+    std::vector<Genome> children = breed(request(GeneticOperator::Recombine, {a, b}, 77, 3));
+    for (std::size_t i = 0; i < children.size(); ++i) {
+        const auto& meta = children[i].meta;
+        ASSERT_TRUE(meta.contains("lineage"));
+        const auto& lineage = meta["lineage"];
+        EXPECT_EQ(lineage["parents"], (nlohmann::ordered_json{genomeId(a), genomeId(b)}));
+        EXPECT_EQ(lineage["operator"], "recombine");
+        EXPECT_EQ(lineage["seed"], 77);
+        EXPECT_EQ(lineage["generation"], 5);
+        EXPECT_EQ(lineage["child"], static_cast<int>(i) + 1);
+        EXPECT_EQ(meta["id"], genomeId(children[i]));
+        EXPECT_FALSE(meta.contains("seed")); // the generator's seed belongs to the parent
+        EXPECT_NE(meta["name"].get<std::string>().find(" (g5 #"), std::string::npos);
+    }
+    // A child of a child: generation counts on, the name keeps one suffix.
+    std::vector<Genome> grand = breed(request(GeneticOperator::Alter, {children[0]}, 1, 1));
+    EXPECT_EQ(grand[0].meta["lineage"]["generation"], 6);
+    std::string name = grand[0].meta["name"];
+    EXPECT_EQ(name.find(" (g"), name.rfind(" (g"));
+}
+
+TEST_P(Operators, GenomeIdDependsOnContentOnly) {
+    Genome a = parent(60);
+    std::string id = genomeId(a);
+    EXPECT_EQ(id.size(), 16u);
+    EXPECT_EQ(id.find_first_not_of("0123456789abcdef"), std::string::npos);
+    Genome renamed = a;
+    renamed.meta["name"] = "something else";
+    EXPECT_EQ(genomeId(renamed), id);
+    Genome moved = a;
+    moved.initial[0].radius += 1.0;
+    EXPECT_NE(genomeId(moved), id);
+}
+
+TEST_P(Operators, BadRequestsAreInputErrors) {
+    Genome a = parent(70), b = parent(71);
+    EXPECT_THROW(breed(request(GeneticOperator::Alter, {}, 1)), InputError);
+    EXPECT_THROW(breed(request(GeneticOperator::Alter, {a, b}, 1)), InputError);
+    EXPECT_THROW(breed(request(GeneticOperator::Swap, {a}, 1)), InputError);
+    EXPECT_THROW(breed(request(GeneticOperator::Swap, {a, b, a}, 1)), InputError);
+    EXPECT_THROW(breed(request(GeneticOperator::Recombine, {a}, 1)), InputError);
+    EXPECT_THROW(breed(request(GeneticOperator::Alter, {a}, 1, 8, 1.5)), InputError);
+    EXPECT_THROW(breed(request(GeneticOperator::Alter, {a}, 1, 8, -0.1)), InputError);
+    EXPECT_THROW(breed(request(GeneticOperator::Alter, {a}, 1, 0)), InputError);
+    Genome other = randomGenome(72, dimension() == 2 ? 3 : 2);
+    EXPECT_THROW(breed(request(GeneticOperator::Swap, {a, other}, 1)), InputError);
+    Genome broken = a;
+    broken.operations[0].lambda = -1.0;
+    EXPECT_THROW(breed(request(GeneticOperator::Alter, {broken}, 1)), InputError);
+}
+
+INSTANTIATE_TEST_SUITE_P(Dimensions, Operators, ::testing::Values(2, 3),
+                         [](const ::testing::TestParamInfo<int>& info) { return std::to_string(info.param) + "D"; });
+
+TEST(OperatorNames, RoundTrip) {
+    for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Swap, GeneticOperator::Reinit})
+        EXPECT_EQ(parseOperator(operatorName(op)), op);
+    EXPECT_FALSE(parseOperator("mutate"));
+    EXPECT_EQ(minParents(GeneticOperator::Recombine), 2);
+    EXPECT_EQ(maxParents(GeneticOperator::Recombine), 0);
+    EXPECT_EQ(maxParents(GeneticOperator::Swap), 2);
+}
+
+} // namespace
+} // namespace marbler
