@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Fuzzes the genome loader: configures a clang build with libFuzzer, AddressSanitizer and
+# UndefinedBehaviorSanitizer in build-fuzz, then runs fuzz_genome for the given seconds
+# (default 60) from the committed corpus. Exits non-zero on a finding; the crashing input is
+# left in build-fuzz/findings/.
+#   fuzz/run.sh [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+SECONDS_TO_RUN=${1:-60}
+BUILD=build-fuzz
+
+cmake -S . -B "$BUILD" -G Ninja \
+    -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DMARBLER_FUZZ=ON -DMARBLER_SANITIZE=ON \
+    -DMARBLER_BUILD_TESTS=OFF -DMARBLER_BUILD_GUI=OFF -DMARBLER_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build "$BUILD" --target fuzz_genome -j "$(nproc)"
+
+# New inputs go to a corpus under the build folder; the committed seeds are only read.
+mkdir -p "$BUILD/corpus" "$BUILD/findings"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+"$BUILD/fuzz/fuzz_genome" "$BUILD/corpus" fuzz/corpus \
+    -max_total_time="$SECONDS_TO_RUN" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
+    -dict=fuzz/genome.dict -artifact_prefix="$BUILD/findings/" -print_final_stats=1
