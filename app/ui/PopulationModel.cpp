@@ -1,0 +1,276 @@
+#include "ui/PopulationModel.h"
+
+#include "marbler/Error.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeIO.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QStandardPaths>
+
+#include <algorithm>
+
+namespace marbler::ui {
+
+namespace {
+
+/// SplitMix64: turns (session seed, counter) into well-spread seeds, so neighbouring
+/// generations do not get neighbouring seeds.
+std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t counter) {
+    std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (counter + 1);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+} // namespace
+
+PopulationModel::PopulationModel(QObject* parent) : QObject(parent) {
+    mHistory.emplace_back();
+    mHistory.back().description = tr("Empty workbench");
+}
+
+const Genome* PopulationModel::cell(int index) const {
+    if (index < 0 || index >= CellCount) return nullptr;
+    const auto& c = current().cells[std::size_t(index)];
+    return c ? &*c : nullptr;
+}
+
+bool PopulationModel::isSelected(int index) const {
+    return index >= 0 && index < CellCount && current().selected[std::size_t(index)];
+}
+
+std::vector<int> PopulationModel::selectedCells() const {
+    std::vector<int> result;
+    for (int i = 0; i < CellCount; ++i)
+        if (isSelected(i)) result.push_back(i);
+    return result;
+}
+
+int PopulationModel::selectedCount() const { return int(selectedCells().size()); }
+
+void PopulationModel::toggleSelected(int index) { setSelected(index, !isSelected(index)); }
+
+void PopulationModel::setSelected(int index, bool selected) {
+    if (index < 0 || index >= CellCount) return;
+    if (selected && !cell(index)) return;
+    auto& flag = currentMutable().selected[std::size_t(index)];
+    if (flag == selected) return;
+    flag = selected;
+    emit selectionChanged();
+}
+
+void PopulationModel::clearSelection() {
+    auto& sel = currentMutable().selected;
+    if (std::none_of(sel.begin(), sel.end(), [](bool b) { return b; })) return;
+    sel.fill(false);
+    emit selectionChanged();
+}
+
+bool PopulationModel::canApply(GeneticOperator op) const {
+    const auto selected = selectedCells();
+    const int n = int(selected.size());
+    if (n < minParents(op)) return false;
+    if (maxParents(op) > 0 && n > maxParents(op)) return false;
+    // Every cell selected leaves no room for offspring.
+    if (n >= CellCount) return false;
+    const int dimension = cell(selected.front())->dimension;
+    return std::all_of(selected.begin(), selected.end(), [&](int i) { return cell(i)->dimension == dimension; });
+}
+
+std::uint64_t PopulationModel::nextBreedSeed() const {
+    return mixSeed(mSessionSeed, std::uint64_t(mCurrent + 1));
+}
+
+void PopulationModel::apply(GeneticOperator op, double strength) {
+    const auto selected = selectedCells();
+    BreedRequest request;
+    request.op = op;
+    request.seed = nextBreedSeed();
+    request.strength = std::clamp(strength, 0.0, 1.0);
+    for (int i : selected) request.parents.push_back(*cell(i));
+    request.count = CellCount - int(selected.size());
+    if (request.count <= 0) throw InputError("every cell is a parent: deselect one to make room for offspring");
+    std::vector<Genome> children = breed(request);
+    if (children.empty()) throw RuntimeFailure("the operator made no offspring");
+
+    Generation next;
+    next.selected = current().selected;
+    next.description = tr("%1 of %n parent(s)", nullptr, int(selected.size())).arg(operatorLabel(op));
+    std::size_t child = 0;
+    for (int i = 0; i < CellCount; ++i) {
+        if (current().selected[std::size_t(i)]) {
+            next.cells[std::size_t(i)] = current().cells[std::size_t(i)];
+        } else {
+            // Fewer children than free cells (an operator that makes pairs) repeats them.
+            next.cells[std::size_t(i)] = children[child % children.size()];
+            ++child;
+        }
+    }
+    pushGeneration(std::move(next));
+}
+
+void PopulationModel::newRandomPopulation(int dimension) {
+    Generation next;
+    next.description = dimension == 3 ? tr("New random solid population") : tr("New random population");
+    const std::uint64_t base = mixSeed(mSessionSeed, std::uint64_t(mCurrent + 1) * 1000003ULL);
+    for (int i = 0; i < CellCount; ++i) {
+        const std::uint64_t seed = mixSeed(base, std::uint64_t(i)) & 0xffffffffULL;
+        Genome g = randomGenome(seed, dimension);
+        if (!g.meta.contains("seed")) g.meta["seed"] = seed;
+        next.cells[std::size_t(i)] = std::move(g);
+    }
+    pushGeneration(std::move(next));
+}
+
+std::vector<int> PopulationModel::placeDesigns(const std::vector<Genome>& designs, const QString& description) {
+    std::vector<int> order = selectedCells();
+    for (int i = 0; i < CellCount; ++i)
+        if (!cell(i) && std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
+    for (int i = 0; i < CellCount; ++i)
+        if (std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
+
+    Generation next = current();
+    next.description = description;
+    std::vector<int> used;
+    for (std::size_t k = 0; k < designs.size() && k < order.size(); ++k) {
+        const int index = order[k];
+        next.cells[std::size_t(index)] = designs[k];
+        next.selected[std::size_t(index)] = false;
+        used.push_back(index);
+    }
+    if (!used.empty()) pushGeneration(std::move(next));
+    return used;
+}
+
+void PopulationModel::setCell(int index, const Genome& genome, const QString& description) {
+    if (index < 0 || index >= CellCount) return;
+    Generation next = current();
+    next.description = description;
+    next.cells[std::size_t(index)] = genome;
+    next.selected[std::size_t(index)] = false;
+    pushGeneration(std::move(next));
+}
+
+void PopulationModel::setCellLocks(int index, const Locks& locks) {
+    if (!cell(index)) return;
+    setLocks(*currentMutable().cells[std::size_t(index)], locks);
+    emit cellChanged(index);
+}
+
+void PopulationModel::pushGeneration(Generation generation) {
+    mHistory.resize(std::size_t(mCurrent + 1));
+    generation.number = mCurrent + 1;
+    mHistory.push_back(std::move(generation));
+    mCurrent = int(mHistory.size()) - 1;
+    emit populationChanged();
+    emit selectionChanged();
+    emit historyChanged();
+}
+
+void PopulationModel::goBack() {
+    if (!canGoBack()) return;
+    --mCurrent;
+    emit populationChanged();
+    emit selectionChanged();
+    emit historyChanged();
+}
+
+void PopulationModel::goForward() {
+    if (!canGoForward()) return;
+    ++mCurrent;
+    emit populationChanged();
+    emit selectionChanged();
+    emit historyChanged();
+}
+
+void PopulationModel::goTo(int index) {
+    if (index < 0 || index >= int(mHistory.size()) || index == mCurrent) return;
+    mCurrent = index;
+    emit populationChanged();
+    emit selectionChanged();
+    emit historyChanged();
+}
+
+QString PopulationModel::defaultFavouritesFolder() {
+    const QByteArray env = qgetenv("MARBLER_FAVOURITES_DIR");
+    if (!env.isEmpty()) return QString::fromLocal8Bit(env);
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/favourites");
+}
+
+QStringList PopulationModel::setFavouritesFolder(const QString& folder) {
+    mFavouritesFolder = folder;
+    return reloadFavourites();
+}
+
+QStringList PopulationModel::reloadFavourites() {
+    mFavourites.clear();
+    QStringList errors;
+    QDir dir(mFavouritesFolder);
+    if (!mFavouritesFolder.isEmpty() && dir.exists()) {
+        const auto files = dir.entryInfoList({QStringLiteral("*.marble.json")}, QDir::Files, QDir::Name);
+        for (const QFileInfo& info : files) {
+            try {
+                mFavourites.push_back({loadGenome(info.absoluteFilePath().toStdString()), info.absoluteFilePath()});
+            } catch (const Error& e) {
+                errors << QString::fromStdString(e.what());
+            }
+        }
+    }
+    emit favouritesChanged();
+    return errors;
+}
+
+void PopulationModel::addFavourite(const Genome& genome) {
+    if (mFavouritesFolder.isEmpty()) throw RuntimeFailure("no favourites folder is set");
+    if (!QDir().mkpath(mFavouritesFolder))
+        throw RuntimeFailure("cannot create the favourites folder " + mFavouritesFolder.toStdString());
+    const QString id = QString::fromStdString(genomeId(genome));
+    const QString file = QDir(mFavouritesFolder).filePath(id + QStringLiteral(".marble.json"));
+    // The same design kept twice stays one favourite (the file name is its content id).
+    for (const auto& f : mFavourites)
+        if (QFileInfo(f.file) == QFileInfo(file)) return;
+    saveGenome(genome, file.toStdString());
+    mFavourites.push_back({genome, file});
+    emit favouritesChanged();
+}
+
+void PopulationModel::removeFavourite(int index) {
+    if (index < 0 || index >= int(mFavourites.size())) return;
+    QFile::remove(mFavourites[std::size_t(index)].file);
+    mFavourites.erase(mFavourites.begin() + index);
+    emit favouritesChanged();
+}
+
+QString operatorLabel(GeneticOperator op) {
+    switch (op) {
+    case GeneticOperator::Alter: return PopulationModel::tr("Alter");
+    case GeneticOperator::Recombine: return PopulationModel::tr("Recombine");
+    case GeneticOperator::Swap: return PopulationModel::tr("Swap");
+    case GeneticOperator::Reinit: return PopulationModel::tr("Change initial state");
+    }
+    return {};
+}
+
+LineageInfo lineageOf(const Genome& genome) {
+    LineageInfo info;
+    const auto& meta = genome.meta;
+    if (meta.contains("id") && meta["id"].is_string())
+        info.id = QString::fromStdString(meta["id"].get<std::string>());
+    else
+        info.id = QString::fromStdString(genomeId(genome));
+    if (meta.contains("name") && meta["name"].is_string()) info.name = QString::fromStdString(meta["name"].get<std::string>());
+    if (meta.contains("lineage") && meta["lineage"].is_object()) {
+        const auto& lineage = meta["lineage"];
+        if (lineage.contains("operator") && lineage["operator"].is_string())
+            info.op = QString::fromStdString(lineage["operator"].get<std::string>());
+        if (lineage.contains("parents") && lineage["parents"].is_array())
+            for (const auto& p : lineage["parents"])
+                if (p.is_string()) info.parents << QString::fromStdString(p.get<std::string>());
+        if (lineage.contains("generation") && lineage["generation"].is_number_integer())
+            info.generation = lineage["generation"].get<int>();
+    }
+    return info;
+}
+
+} // namespace marbler::ui

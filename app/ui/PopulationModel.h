@@ -1,0 +1,141 @@
+#pragma once
+/// The workbench's model: the nine designs of the current generation, the parents the user has
+/// selected, every generation since the session began (back and forward), and the favourites
+/// shelf. No widgets here, so the breeding logic is tested without a window.
+
+#include "marbler/Genome.h"
+#include "marbler/Operators.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace marbler::ui {
+
+/// The grid holds this many designs (3 x 3).
+inline constexpr int CellCount = 9;
+
+/// One state of the grid: what each cell holds, which cells are parents, and how it came to be.
+struct Generation {
+    std::array<std::optional<Genome>, CellCount> cells;
+    std::array<bool, CellCount> selected{};
+    QString description; ///< "Alter of 1 parent", "New random population", "Opened a.marble.json"
+    int number = 0;      ///< position in the session's history, 0 for the first
+};
+
+/// A design kept aside on the favourites shelf, saved as a genome file.
+struct Favourite {
+    Genome genome;
+    QString file;
+};
+
+/// The population, its history and the favourites. Every change that alters the grid's designs
+/// (breeding, a new random population, loading a file, bringing back a favourite) adds a
+/// generation, so back/forward undoes and redoes any of them; forward history is dropped when a
+/// new change is made after going back.
+class PopulationModel : public QObject {
+    Q_OBJECT
+public:
+    explicit PopulationModel(QObject* parent = nullptr);
+
+    /// The seed every random draw of this session derives from (random populations, breeding).
+    std::uint64_t sessionSeed() const { return mSessionSeed; }
+    void setSessionSeed(std::uint64_t seed) { mSessionSeed = seed; }
+
+    /// The design in a cell (nullptr when empty).
+    const Genome* cell(int index) const;
+    bool isSelected(int index) const;
+    /// Indices of the selected cells, in grid order.
+    std::vector<int> selectedCells() const;
+    int selectedCount() const;
+    /// Toggles a cell's selection; an empty cell cannot be selected.
+    void toggleSelected(int index);
+    void setSelected(int index, bool selected);
+    void clearSelection();
+
+    /// Whether an operator can run with the current selection (parent count, dimensions).
+    bool canApply(GeneticOperator op) const;
+    /// Keeps the selected parents in their cells and fills every other cell with offspring,
+    /// seeded by the session seed and the new generation's number. Throws marbler::Error
+    /// (InputError for a wrong parent count or mixed dimensions).
+    void apply(GeneticOperator op, double strength);
+    /// The seed apply() would use for the next generation.
+    std::uint64_t nextBreedSeed() const;
+
+    /// Replaces the grid with nine random designs of the dimension (2 or 3).
+    void newRandomPopulation(int dimension);
+    /// Puts designs into cells as one new generation: first into the selected cells, then into
+    /// empty ones, then into the rest in grid order. Returns the cells used.
+    std::vector<int> placeDesigns(const std::vector<Genome>& designs, const QString& description);
+    /// Puts one design into a given cell as a new generation.
+    void setCell(int index, const Genome& genome, const QString& description);
+    /// Changes the locks of a cell's design in place (not a new generation: locks are a
+    /// property of the design the user is steering, not a breeding step).
+    void setCellLocks(int index, const Locks& locks);
+
+    /// Generation history.
+    const Generation& current() const { return mHistory[std::size_t(mCurrent)]; }
+    const std::vector<Generation>& history() const { return mHistory; }
+    int currentIndex() const { return mCurrent; }
+    bool canGoBack() const { return mCurrent > 0; }
+    bool canGoForward() const { return mCurrent + 1 < int(mHistory.size()); }
+    void goBack();
+    void goForward();
+    /// Jumps to any generation of the history.
+    void goTo(int index);
+
+    /// Favourites: the folder they live in (created when needed). Default: the app data folder's
+    /// "favourites", or $MARBLER_FAVOURITES_DIR when set.
+    QString favouritesFolder() const { return mFavouritesFolder; }
+    /// Sets the folder and loads what it holds; returns one message per file that did not load.
+    QStringList setFavouritesFolder(const QString& folder);
+    const std::vector<Favourite>& favourites() const { return mFavourites; }
+    /// Saves a copy of the design to the folder. Throws marbler::Error when it cannot be saved.
+    void addFavourite(const Genome& genome);
+    /// Removes a favourite and its file.
+    void removeFavourite(int index);
+    /// Re-reads the folder; returns one message per file that did not load.
+    QStringList reloadFavourites();
+
+    /// The default favourites folder (see favouritesFolder()).
+    static QString defaultFavouritesFolder();
+
+signals:
+    /// The designs of the grid changed (a new generation or going back/forward).
+    void populationChanged();
+    /// One cell's design changed in place (locks).
+    void cellChanged(int index);
+    void selectionChanged();
+    void historyChanged();
+    void favouritesChanged();
+
+private:
+    void pushGeneration(Generation generation);
+    Generation& currentMutable() { return mHistory[std::size_t(mCurrent)]; }
+
+    std::uint64_t mSessionSeed = 1;
+    std::vector<Generation> mHistory;
+    int mCurrent = 0;
+    QString mFavouritesFolder;
+    std::vector<Favourite> mFavourites;
+};
+
+/// A short label of an operator for the UI ("Alter", "Recombine", "Swap", "Change initial state").
+QString operatorLabel(GeneticOperator op);
+
+/// The lineage of a design as the UI shows it, read from meta.lineage and meta.id.
+struct LineageInfo {
+    QString id;
+    QString op;            ///< empty for a design that was not bred
+    QStringList parents;   ///< parent ids
+    int generation = 0;
+    QString name;          ///< meta.name when set
+};
+LineageInfo lineageOf(const Genome& genome);
+
+} // namespace marbler::ui

@@ -1,0 +1,199 @@
+#include "ui/RenderService.h"
+
+#include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
+#include "marbler/gl/GlRenderer.h"
+
+#include <QMetaObject>
+
+#include <algorithm>
+#include <map>
+#include <mutex>
+
+namespace marbler::ui {
+
+/// The work shared between the GUI thread (which adds and supersedes) and the worker (which
+/// takes). One job per key: a newer request simply replaces the older job.
+struct RenderQueue {
+    struct Job {
+        std::uint64_t ticket = 0;
+        RenderRequest request;
+        bool previewDone = false;
+    };
+    std::mutex mutex;
+    std::map<std::uint64_t, Job> jobs;
+};
+
+/// Lives on the service's thread; owns the GL renderer, which must stay on the thread that made it.
+class RenderWorker : public QObject {
+    Q_OBJECT
+public:
+    explicit RenderWorker(std::shared_ptr<RenderQueue> queue) : mQueue(std::move(queue)) {}
+
+    /// Chooses the back end; runs on the worker thread so the GL context is made there.
+    void start(bool tryGl) {
+        QString name = QStringLiteral("CPU");
+        if (tryGl && gl::GlRenderer::available()) {
+            try {
+                mGl = std::make_unique<gl::GlRenderer>();
+                name = QStringLiteral("OpenGL (%1)").arg(QString::fromStdString(mGl->rendererName()));
+            } catch (const std::exception&) {
+                mGl.reset();
+            }
+        }
+        emit backendReady(name);
+    }
+
+    /// Renders until no job is left. Previews of every waiting job come before final passes,
+    /// so a whole new generation appears quickly and then sharpens.
+    void work() {
+        for (;;) {
+            std::uint64_t key = 0;
+            RenderQueue::Job job;
+            {
+                std::lock_guard lock(mQueue->mutex);
+                if (mQueue->jobs.empty()) return;
+                auto it = std::find_if(mQueue->jobs.begin(), mQueue->jobs.end(),
+                                       [](const auto& entry) { return !entry.second.previewDone; });
+                if (it == mQueue->jobs.end()) it = mQueue->jobs.begin();
+                key = it->first;
+                job = it->second;
+            }
+            const bool final = job.previewDone;
+            QImage image;
+            QString error;
+            try {
+                image = renderPass(job.request, final);
+            } catch (const std::exception& e) {
+                error = QString::fromStdString(e.what());
+            }
+            bool current = false;
+            {
+                std::lock_guard lock(mQueue->mutex);
+                auto it = mQueue->jobs.find(key);
+                if (it != mQueue->jobs.end() && it->second.ticket == job.ticket) {
+                    current = true;
+                    if (final || job.request.previewOnly || !error.isEmpty())
+                        mQueue->jobs.erase(it);
+                    else
+                        it->second.previewDone = true;
+                }
+            }
+            // A superseded result is not worth the trip to the GUI thread.
+            if (current) emit result(key, job.ticket, image, final || job.request.previewOnly || !error.isEmpty(), error);
+        }
+    }
+
+signals:
+    void result(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final, const QString& error);
+    void backendReady(const QString& name);
+
+private:
+    QImage renderPass(const RenderRequest& request, bool final) {
+        const Genome& genome = request.genome;
+        if (genome.dimension == 3 && mGl) {
+            gl::MeshSettings mesh;
+            const QSize size = final ? request.size : request.size / 2;
+            mesh.width = std::max(size.width(), 8);
+            mesh.height = std::max(size.height(), 8);
+            mesh.mesh = request.mesh.toStdString();
+            mesh.yaw = request.yaw;
+            mesh.pitch = request.pitch;
+            mesh.supersample = final ? 3 : 1;
+            return toQImage(mGl->renderMesh(genome, mesh));
+        }
+        // Without GL a solid design is shown by its middle cross-section.
+        const QSize full = fitDesign(genome, request.size);
+        const QSize size = final ? full : (full / 3).expandedTo(QSize(8, 8));
+        RenderSettings settings;
+        settings.width = size.width();
+        settings.height = size.height();
+        settings.aa = final ? request.aa.toStdString() : std::string("none");
+        if (genome.dimension == 3) settings.slice = Slice{2, genome.size.z / 2.0};
+        if (mGl) {
+            try {
+                return toQImage(mGl->render(genome, settings));
+            } catch (const RuntimeFailure&) {
+                // A driver failure on one design should not blank the grid: the CPU can do it.
+            }
+        }
+        return toQImage(CpuRenderer(genome).render(settings));
+    }
+
+    std::shared_ptr<RenderQueue> mQueue;
+    std::unique_ptr<gl::GlRenderer> mGl;
+};
+
+RenderService::RenderService(Backend backend, QObject* parent)
+    : QObject(parent), mQueue(std::make_shared<RenderQueue>()) {
+    mThread.setObjectName(QStringLiteral("marbler-render"));
+    mWorker = new RenderWorker(mQueue); // deleted on the worker thread when it finishes
+    mWorker->moveToThread(&mThread);
+    connect(&mThread, &QThread::finished, mWorker, &QObject::deleteLater);
+    connect(mWorker, &RenderWorker::result, this, &RenderService::onResult);
+    connect(mWorker, &RenderWorker::backendReady, this, [this](const QString& name) {
+        mBackendName = name;
+        emit backendReady(name);
+    });
+    mThread.start();
+    const bool tryGl = backend == Backend::Auto;
+    QMetaObject::invokeMethod(mWorker, [worker = mWorker, tryGl] { worker->start(tryGl); }, Qt::QueuedConnection);
+}
+
+RenderService::~RenderService() {
+    {
+        std::lock_guard lock(mQueue->mutex);
+        mQueue->jobs.clear();
+    }
+    mThread.quit();
+    mThread.wait();
+}
+
+std::uint64_t RenderService::request(std::uint64_t key, RenderRequest request) {
+    const std::uint64_t ticket = mNextTicket++;
+    {
+        std::lock_guard lock(mQueue->mutex);
+        mQueue->jobs[key] = RenderQueue::Job{ticket, std::move(request), false};
+    }
+    mOutstanding[key] = ticket;
+    QMetaObject::invokeMethod(mWorker, &RenderWorker::work, Qt::QueuedConnection);
+    return ticket;
+}
+
+void RenderService::cancel(std::uint64_t key) {
+    {
+        std::lock_guard lock(mQueue->mutex);
+        mQueue->jobs.erase(key);
+    }
+    if (mOutstanding.remove(key) && mOutstanding.isEmpty()) emit becameIdle();
+}
+
+void RenderService::onResult(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final,
+                             const QString& error) {
+    auto it = mOutstanding.find(key);
+    if (it == mOutstanding.end() || it.value() != ticket) return; // superseded or cancelled
+    if (final) mOutstanding.erase(it);
+    if (!error.isEmpty())
+        emit failed(key, error);
+    else
+        emit rendered(key, image, final);
+    if (final && mOutstanding.isEmpty()) emit becameIdle();
+}
+
+QImage toQImage(const marbler::Image& image) {
+    QImage result(image.width, image.height, QImage::Format_RGB888);
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(image.row(y), std::size_t(image.width) * 3, result.scanLine(y));
+    return result;
+}
+
+QSize fitDesign(const Genome& genome, QSize box) {
+    const double w = genome.size.x, h = genome.size.y;
+    if (!(w > 0 && h > 0) || box.isEmpty()) return box.expandedTo(QSize(1, 1));
+    const double scale = std::min(box.width() / w, box.height() / h);
+    return QSize(std::max(1, int(w * scale)), std::max(1, int(h * scale)));
+}
+
+} // namespace marbler::ui
+
+#include "RenderService.moc"

@@ -1,0 +1,111 @@
+#pragma once
+/// The evolution workbench: a 3 x 3 grid of designs, parents chosen by clicking, the four genetic
+/// operators, back/forward through generations, a lineage view and a favourites shelf.
+
+#include "marbler/Operators.h"
+#include "ui/PopulationModel.h"
+
+#include <QCache>
+#include <QMainWindow>
+#include <QTimer>
+
+#include <array>
+#include <cstdint>
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QSlider;
+class QTreeWidget;
+
+namespace marbler::ui {
+
+class DesignCell;
+class RenderService;
+
+class WorkbenchWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    /// The render service is shared (the editor uses it too) and must outlive the window.
+    explicit WorkbenchWindow(RenderService* renderer, QWidget* parent = nullptr);
+    ~WorkbenchWindow() override;
+
+    PopulationModel* model() const { return mModel; }
+    DesignCell* cell(int index) const { return mCells[std::size_t(index)]; }
+    QAction* operatorAction(GeneticOperator op) const;
+    QAction* backAction() const { return mBack; }
+    QAction* forwardAction() const { return mForward; }
+    QListWidget* favouritesList() const { return mFavouritesList; }
+    QTreeWidget* lineageTree() const { return mLineageTree; }
+    /// The alteration strength the slider gives, 0..1.
+    double strength() const;
+    void setStrength(double strength);
+
+    /// Loads genome files into the selected cells, then free ones (or into `cell` and on).
+    /// A file that does not load is reported and changes nothing. Returns whether all loaded.
+    bool openFiles(const QStringList& files, int cell = -1);
+    /// Breeds the selected parents with an operator; errors are reported.
+    bool applyOperator(GeneticOperator op);
+    /// A fresh random population (2: flat, 3: solid); remembers the choice.
+    void newRandomPopulation(int dimension);
+    /// Keeps a cell's design on the favourites shelf.
+    bool keepFavourite(int cell);
+    /// Puts a favourite back into a cell (-1: the selected or first free cell).
+    void restoreFavourite(int favourite, int cell = -1);
+    /// Whether every cell shows its final image (for screenshots and tests).
+    bool renderingDone() const;
+
+signals:
+    /// Every visible design has its final image.
+    void renderingFinished();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void buildActions();
+    void buildDocks();
+    void readSettings();
+    void updateCells();
+    void updateActions();
+    void updateLineage();
+    void updateFavourites();
+    void requestRender(int cell, bool previewOnly = false);
+    void requestAllRenders();
+    void onRendered(std::uint64_t key, const QImage& image, bool final);
+    void onRenderFailed(std::uint64_t key, const QString& message);
+    void onCellClicked(int index);
+    void onFocusMove(int index, int dx, int dy);
+    void onOrbit(int index, QPoint delta, bool finished);
+    void showCellMenu(int index, const QPoint& globalPos);
+    void showFavouriteMenu(const QPoint& pos);
+    void openDesign(int index);
+    void openFileDialog();
+    void saveDesign(int index);
+    QString renderCacheKey(int cell) const;
+
+    RenderService* mRenderer;
+    PopulationModel* mModel;
+    std::array<DesignCell*, CellCount> mCells{};
+    std::array<double, CellCount> mYaw{};
+    std::array<double, CellCount> mPitch{};
+    std::array<bool, CellCount> mFinal{};
+    std::array<QString, CellCount> mPendingCacheKey;
+    QCache<QString, QImage> mImageCache{48};
+    QAction* mAlter = nullptr;
+    QAction* mRecombine = nullptr;
+    QAction* mSwap = nullptr;
+    QAction* mReinit = nullptr;
+    QAction* mBack = nullptr;
+    QAction* mForward = nullptr;
+    QSlider* mStrength = nullptr;
+    QComboBox* mDimension = nullptr;
+    QComboBox* mMesh = nullptr;
+    QListWidget* mFavouritesList = nullptr;
+    QTreeWidget* mLineageTree = nullptr;
+    QLabel* mBackendLabel = nullptr;
+    QTimer mResizeTimer;
+};
+
+} // namespace marbler::ui
