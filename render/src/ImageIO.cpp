@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 
@@ -154,6 +156,7 @@ public:
                              "' (use .png, .tif, .exr or .jpg)");
         }
         mFloat = extension == ".exr" || extension == ".hdr";
+        mJpegDpi = options.dpi && (extension == ".jpg" || extension == ".jpeg");
         OIIO::ImageSpec spec(width, height, 3, mFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
         spec.attribute("oiio:ColorSpace", mFloat ? "Linear" : "sRGB");
         spec.attribute("Software", "Marbler");
@@ -194,6 +197,7 @@ public:
     void commit() {
         mOpen = false;
         if (!mOut->close()) fail(mOut->geterror());
+        if (mJpegDpi) markJfifDensityInInches();
         std::error_code ec;
         fs::rename(mTemp, mFile, ec);
         if (ec) fail(ec.message());
@@ -204,6 +208,23 @@ private:
     [[noreturn]] void fail(const std::string& reason) {
         throw RuntimeFailure("cannot write '" + mFile.string() + "': " + reason);
     }
+    /// OpenImageIO 2.4 writes a JPEG's density with the unit byte 0 (aspect ratio only) even
+    /// when asked for inches; set the JFIF unit to 1 (dots per inch) so the dpi means something.
+    void markJfifDensityInInches() {
+        std::FILE* f = std::fopen(mTemp.c_str(), "r+b");
+        if (!f) return;
+        unsigned char head[20] = {};
+        std::size_t got = std::fread(head, 1, sizeof head, f);
+        // SOI, APP0 marker, 2 length bytes, "JFIF\0", 2 version bytes, then the unit byte.
+        if (got == sizeof head && head[0] == 0xff && head[1] == 0xd8 && head[2] == 0xff && head[3] == 0xe0 &&
+            std::memcmp(head + 6, "JFIF", 5) == 0 && head[13] == 0) {
+            const unsigned char inches = 1;
+            std::fseek(f, 13, SEEK_SET);
+            std::fwrite(&inches, 1, 1, f);
+        }
+        std::fclose(f);
+    }
+
     void removeTemp() {
         std::error_code ec;
         fs::remove(mTemp, ec);
@@ -212,6 +233,7 @@ private:
     fs::path mFile, mTemp;
     std::unique_ptr<OIIO::ImageOutput> mOut;
     bool mFloat = false;
+    bool mJpegDpi = false;
     bool mOpen = false;
     bool mCommitted = false;
 };

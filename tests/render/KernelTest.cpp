@@ -1,1 +1,165 @@
+// The vectorised tile kernel against the scalar reference maps (genome/src/Tools.cpp).
+
+#include "Kernel.h"
+#include "marbler/CpuRenderer.h"
+#include "marbler/Params.h"
+#include "marbler/Random.h"
+#include "marbler/Tools.h"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace marbler {
+namespace {
+
+TEST(KernelMath, SinCosWithinAnUlpOrTwoOfTheLibrary) {
+    Pcg32 rng(7);
+    double worst = 0;
+    for (int k = 0; k < 200000; ++k) {
+        double scale = std::pow(10.0, rng.uniform(-3.0, 6.0));
+        double x = rng.uniform(-scale, scale);
+        double s, c;
+        kernel::sinCosForTest(x, s, c);
+        worst = std::max({worst, std::abs(s - std::sin(x)), std::abs(c - std::cos(x))});
+        ASSERT_NEAR(s, std::sin(x), 1e-15) << x;
+        ASSERT_NEAR(c, std::cos(x), 1e-15) << x;
+    }
+    std::printf("  largest sin/cos difference: %.3g\n", worst);
+    for (double x : {0.0, -0.0, std::numbers::pi / 4, std::numbers::pi / 2, std::numbers::pi, 1e6, -1e6}) {
+        double s, c;
+        kernel::sinCosForTest(x, s, c);
+        EXPECT_NEAR(s, std::sin(x), 1e-15) << x;
+        EXPECT_NEAR(c, std::cos(x), 1e-15) << x;
+    }
+    // Beyond the fast reduction: the library's own answer.
+    for (double x : {1.5e6, -3e9, 1e300}) {
+        double s, c;
+        kernel::sinCosForTest(x, s, c);
+        EXPECT_EQ(s, std::sin(x)) << x;
+        EXPECT_EQ(c, std::cos(x)) << x;
+    }
+}
+
+TEST(KernelMath, CubeRootOnTheUnitInterval) {
+    Pcg32 rng(8);
+    EXPECT_EQ(kernel::cbrtForTest(0.0), 0.0);
+    EXPECT_NEAR(kernel::cbrtForTest(1.0), 1.0, 2e-16);
+    for (int k = 0; k < 100000; ++k) {
+        double x = std::pow(10.0, rng.uniform(-17.0, 0.0));
+        ASSERT_NEAR(kernel::cbrtForTest(x), std::cbrt(x), 1e-15 * std::cbrt(x)) << x; // a few ulps
+    }
+}
+
+/// A random operation of any tool allowed in `dimension`, with parameters drawn around the
+/// parameter tables' defaults.
+Operation randomOperation(Pcg32& rng, Tool tool, int dimension) {
+    glm::dvec3 center(rng.uniform(0, 1000), rng.uniform(0, 1000), dimension == 3 ? rng.uniform(0, 1000) : 0.0);
+    Operation op = defaultOperation(tool, dimension, center);
+    auto unit = [&] {
+        glm::dvec3 v(rng.normal(), rng.normal(), rng.normal());
+        return v / std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    };
+    op.radius = rng.uniform(20, 200);
+    op.alpha = rng.uniform(-150, 150);
+    op.lambda = rng.uniform(5, 80);
+    op.spacing = rng.uniform(30, 200);
+    op.angle = rng.uniform(-180, 180);
+    op.amplitude = {rng.uniform(-60, 60), rng.uniform(-60, 60)};
+    op.wavelength = {rng.uniform(50, 500), rng.uniform(50, 500)};
+    op.phase = {rng.uniform(-180, 180), rng.uniform(-180, 180)};
+    op.shape = rng.chance(0.5) ? WaveShape::Ripple : WaveShape::Eggcrate;
+    op.axis = unit();
+    op.direction = unit();
+    glm::dvec3 n = unit();
+    n -= (n.x * op.direction.x + n.y * op.direction.y + n.z * op.direction.z) * op.direction;
+    op.normal = n / std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    op.color = static_cast<int>(rng.below(4));
+    return op;
+}
+
+std::vector<Tool> toolsOf(int dimension) {
+    std::vector<Tool> tools;
+    for (const ToolSpec& spec : allTools())
+        if (spec.available(dimension)) tools.push_back(spec.tool);
+    return tools;
+}
+
+class KernelVsReference : public ::testing::TestWithParam<int> {};
+
+TEST_P(KernelVsReference, EveryToolMovesPointsLikeTheReference) {
+    const int dim = GetParam();
+    Pcg32 rng(100 + dim);
+    auto tile = std::make_unique<kernel::Tile>();
+    std::vector<int> colors(kernel::TileSize);
+    for (Tool tool : toolsOf(dim)) {
+        for (int trial = 0; trial < 20; ++trial) {
+            PreparedOp op = prepare(randomOperation(rng, tool, dim), dim);
+            const int n = 300 + trial; // not a multiple of the vector width
+            std::vector<glm::dvec3> points;
+            for (int i = 0; i < n; ++i) {
+                glm::dvec3 p(rng.uniform(-200, 1200), rng.uniform(-200, 1200), dim == 3 ? rng.uniform(-200, 1200) : 0.0);
+                if (i == 0) p = op.c; // the centre itself stays
+                points.push_back(p);
+                tile->x[i] = p.x;
+                tile->y[i] = p.y;
+                tile->z[i] = p.z;
+                tile->id[i] = i;
+            }
+            kernel::traceTile(&op, 1, dim, *tile, n, colors.data(), nullptr, nullptr);
+            // Points that found ink were swapped out; the others keep their order.
+            int k = 0;
+            for (int i = 0; i < n; ++i) {
+                const glm::dvec3& p = points[i];
+                bool ink = op.color >= 0 && insideInk(op, p);
+                ASSERT_EQ(colors[i], ink ? op.color : -1) << toolSpec(tool).name << " point " << i;
+                if (ink) continue;
+                ASSERT_EQ(tile->id[k], i);
+                glm::dvec3 want = inverseMap(op, p);
+                glm::dvec3 got(tile->x[k], tile->y[k], dim == 3 ? tile->z[k] : 0.0);
+                double tolerance = 1e-9 * (1.0 + std::abs(want.x) + std::abs(want.y) + std::abs(want.z));
+                ASSERT_NEAR(got.x, want.x, tolerance) << toolSpec(tool).name << " point " << i;
+                ASSERT_NEAR(got.y, want.y, tolerance) << toolSpec(tool).name << " point " << i;
+                ASSERT_NEAR(got.z, want.z, tolerance) << toolSpec(tool).name << " point " << i;
+                ++k;
+            }
+        }
+    }
+}
+
+TEST_P(KernelVsReference, RandomGenomesGiveTheReferenceColours) {
+    const int dim = GetParam();
+    Pcg32 rng(200 + dim);
+    std::vector<Tool> tools = toolsOf(dim);
+    int mismatches = 0, total = 0;
+    for (int genomeIndex = 0; genomeIndex < 12; ++genomeIndex) {
+        Genome g;
+        g.dimension = dim;
+        g.palette = {{10, 20, 30}, {200, 10, 10}, {10, 200, 10}, {10, 10, 200}};
+        for (int i = 0; i < 25; ++i) {
+            Tool tool = dim == 3 && rng.chance(0.2) ? Tool::Cylinder : rng.chance(0.8) ? Tool::Drop : Tool::Spray;
+            g.initial.push_back(randomOperation(rng, tool, dim));
+        }
+        for (int i = 0; i < 10; ++i) g.operations.push_back(randomOperation(rng, tools[rng.below(std::uint32_t(tools.size()))], dim));
+        CpuRenderer renderer(g);
+        std::vector<PreparedOp> ops = prepare(g);
+        for (int k = 0; k < 2000; ++k) {
+            glm::dvec3 p(rng.uniform(0, 1000), rng.uniform(0, 1000), dim == 3 ? rng.uniform(0, 1000) : 0.0);
+            int want = traceColor(ops, p), got = renderer.colorIndexAt(p);
+            if (want != got) {
+                ++mismatches;
+                std::printf("  genome %d point (%.17g, %.17g, %.17g): kernel %d, reference %d\n", genomeIndex, p.x,
+                            p.y, p.z, got, want);
+            }
+            ++total;
+        }
+    }
+    // Only a point within an ulp-sized hair of an ink boundary could differ.
+    EXPECT_LE(mismatches, 1) << "of " << total;
+}
+
+INSTANTIATE_TEST_SUITE_P(Dimensions, KernelVsReference, ::testing::Values(2, 3));
+
+} // namespace
+} // namespace marbler

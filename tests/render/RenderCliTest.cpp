@@ -1,1 +1,132 @@
+// `marbler render` through the executable: sizes, exit codes, one-line errors, no partial output.
+
+#include "RenderTestUtil.h"
+#include "TestUtil.h"
+
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+
+namespace marbler {
+namespace {
+
+using test::runMarbler;
+
+std::string example(const std::string& name) { return (test::dataDir() / "examples" / name).string(); }
+std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+TEST(RenderCli, DefaultSizeAndAspect) {
+    const auto dir = test::outputDir("cli-sizes");
+    auto r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "a.png").string(), "--threads", "2"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Image a = test::readImage8(dir / "a.png");
+    EXPECT_EQ(a.width, 1024);
+    EXPECT_EQ(a.height, 1024);
+
+    r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "b.png").string(), "--width", "300",
+                    "--region", "0,0,1000,500"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Image b = test::readImage8(dir / "b.png");
+    EXPECT_EQ(b.width, 300);
+    EXPECT_EQ(b.height, 150);
+
+    r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "c.tif").string(), "--height", "100",
+                    "--region=0,0,1000,500", "--aa", "rgss"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Image c = test::readImage8(dir / "c.tif");
+    EXPECT_EQ(c.width, 200);
+    EXPECT_EQ(c.height, 100);
+
+    // A y slice of the solid example covers x-z.
+    r = runMarbler({"render", example("slate-block.marble.json"), "-o", (dir / "d.png").string(), "--width", "64",
+                    "--slice", "y=500"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(test::readImage8(dir / "d.png").height, 64);
+}
+
+TEST(RenderCli, PrintSizeAndDpiSetThePixels) {
+    const auto dir = test::outputDir("cli-print");
+    auto r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "p.png").string(), "--size",
+                         "10x5cm", "--dpi", "254", "--quiet"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto in = OIIO::ImageInput::open((dir / "p.png").string());
+    ASSERT_TRUE(in);
+    EXPECT_EQ(in->spec().width, 1000); // 10 cm = 3.937 in at 254 dpi
+    EXPECT_EQ(in->spec().height, 500);
+    EXPECT_NEAR(in->spec().get_float_attribute("XResolution"), 254.0f, 0.05f);
+    in->close();
+    r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "q.png").string(), "--size", "2x1in",
+                    "--dpi", "50"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(test::readImage8(dir / "q.png").width, 100);
+    r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "r.png").string(), "--size", "20x10mm",
+                    "--dpi", "127"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(test::readImage8(dir / "r.png").width, 100);
+}
+
+/// A failure: the exit status, one stderr line that mentions `mention`, and no output file.
+void expectFailure(const std::vector<std::string>& args, int exitCode, const std::string& mention,
+                   const std::filesystem::path& out) {
+    auto r = runMarbler(args);
+    EXPECT_EQ(r.exitCode, exitCode) << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << out;
+    for (const auto& entry : std::filesystem::directory_iterator(out.parent_path()))
+        ADD_FAILURE() << "left behind: " << entry.path();
+}
+
+TEST(RenderCli, BadInputExitsTwoWithOneLineAndNoOutput) {
+    const auto dir = test::outputDir("cli-bad");
+    const std::string out = (dir / "out.png").string();
+    const std::string good = example("five-stones.marble.json");
+    test::writeFile(dir.parent_path() / "broken.marble.json", "{\"format\": \"marbler-genome\", ");
+    expectFailure({"render", (dir.parent_path() / "broken.marble.json").string(), "-o", out}, 2, "broken.marble.json", out);
+    expectFailure({"render", (dir.parent_path() / "absent.marble.json").string(), "-o", out}, 2, "absent.marble.json", out);
+    expectFailure({"render", good, "-o", out, "--frobnicate"}, 2, "--frobnicate", out);
+    expectFailure({"render", good, "-o", out, "--width", "1000000", "--height", "1000000"}, 2, "width", out);
+    expectFailure({"render", good, "-o", out, "--width", "60000", "--height", "60000"}, 2, "too large", out);
+    expectFailure({"render", good, "-o", out, "--aa", "fxaa"}, 2, "fxaa", out);
+    expectFailure({"render", good, "-o", out, "--region", "5,5,5,9"}, 2, "region", out);
+    expectFailure({"render", good, "-o", out, "--slice", "z=10"}, 2, "five-stones", out);
+    expectFailure({"render", example("slate-block.marble.json"), "-o", out}, 2, "slate-block", out);
+    expectFailure({"render", good, "-o", out, "--size", "10x10cm"}, 2, "--dpi", out);
+    expectFailure({"render", good, "-o", out, "--size", "10x10furlong", "--dpi", "300"}, 2, "--size", out);
+    expectFailure({"render", good, "-o", (dir / "out.xyz").string()}, 2, "out.xyz", dir / "out.xyz");
+    expectFailure({"render", good}, 2, "-o", out);
+    expectFailure({"render", good, "-o", out, "--mesh", "vase", "--view", "30,20"}, 2, "five-stones", out);
+}
+
+TEST(RenderCli, UnwritableFolderExitsOne) {
+    const auto dir = test::outputDir("cli-unwritable");
+    const auto out = dir / "no" / "such" / "folder" / "out.png";
+    auto r = runMarbler({"render", example("five-stones.marble.json"), "-o", out.string(), "--width", "16"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find("out.png"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(RenderCli, GpuEitherRendersOrSaysWhyNot) {
+    const auto dir = test::outputDir("cli-gpu");
+    const auto out = dir / "gpu.png";
+    auto r = runMarbler({"render", example("five-stones.marble.json"), "-o", out.string(), "--width", "32", "--gpu"});
+    if (r.exitCode == 0) {
+        EXPECT_EQ(test::readImage8(out).width, 32);
+    } else {
+        EXPECT_EQ(r.exitCode, 1) << r.err;
+        EXPECT_EQ(lines(r.err), 1u) << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out));
+    }
+}
+
+TEST(RenderCli, HelpDescribesEveryOption) {
+    auto r = runMarbler({"render", "--help"});
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* option : {"-o", "--width", "--height", "--aa", "--region", "--slice", "--dpi", "--size", "--gpu",
+                               "--mesh", "--view", "--supersample", "--threads", "--quiet", "rooks8", "checker4"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << option;
+}
+
+} // namespace
+} // namespace marbler
