@@ -1,1 +1,634 @@
-// placeholder
+#include "marbler/gl/GlRenderer.h"
+
+#include "GlProgram.h"
+#include "OpPacking.h"
+#include "marbler/Error.h"
+#include "marbler/Tools.h"
+#include "marbler/gl/Meshes.h"
+#include "marbler/gl/ShaderSource.h"
+
+#include <QByteArray>
+#include <QGuiApplication>
+#include <QImage>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QOpenGLFunctions_4_3_Core>
+#include <QOpenGLVersionFunctionsFactory>
+#include <QSurfaceFormat>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <mutex>
+#include <numbers>
+
+namespace marbler::gl {
+namespace {
+
+/// Largest tile of a raster render: small enough to keep one draw call well below a desktop
+/// driver's watchdog for long genomes, large enough that tiles cost nothing extra.
+constexpr int MaxTileSide = 2048;
+/// Colour-rule evaluations (pixels x samples x operations) one draw may take before the tile
+/// is made smaller, for the same watchdog.
+constexpr double MaxWorkPerDraw = 4e9;
+/// The largest output side of a mesh render (the G-buffer is n times larger).
+constexpr int MaxMeshSide = 8192;
+/// Samples of the largest antialiasing pattern (grid8); the shaders' uniform arrays hold this.
+constexpr int MaxSamples = 64;
+
+bool nonEmptyEnv(const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value;
+}
+
+/// Whether Qt can open a platform here without aborting the process: QGuiApplication calls
+/// qFatal when its platform plugin cannot connect, so look before creating one.
+bool platformUsable(std::string& why) {
+    if (nonEmptyEnv("QT_QPA_PLATFORM")) return true;
+    if (nonEmptyEnv("WAYLAND_DISPLAY")) return true;
+    if (nonEmptyEnv("DISPLAY")) {
+        std::string display = std::getenv("DISPLAY");
+        // A local display ":N" has a socket; a remote one (host:N) cannot be checked cheaply.
+        if (display.front() == ':') {
+            std::string number = display.substr(1, display.find('.') - 1);
+            std::error_code ec;
+            if (!std::filesystem::exists("/tmp/.X11-unix/X" + number, ec)) {
+                why = "DISPLAY=" + display + " names no running X server";
+                return false;
+            }
+        }
+        return true;
+    }
+    why = "no display: none of DISPLAY, WAYLAND_DISPLAY, QT_QPA_PLATFORM is set (run under xvfb-run)";
+    return false;
+}
+
+QSurfaceFormat requestedFormat(bool core43) {
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    if (core43) {
+        format.setVersion(4, 3);
+        format.setProfile(QSurfaceFormat::CoreProfile);
+    }
+    return format;
+}
+
+/// A context (4.3 core, else whatever the driver gives if that is 4.3 or newer) on an offscreen
+/// surface, current. Empty `why` on success.
+struct ContextParts {
+    std::unique_ptr<QOpenGLContext> context;
+    std::unique_ptr<QOffscreenSurface> surface;
+    QOpenGLFunctions_4_3_Core* gl = nullptr;
+};
+
+ContextParts makeContext(std::string& why) {
+    ContextParts parts;
+    if (!QGuiApplication::instance()) {
+        if (QCoreApplication::instance()) {
+            why = "a QCoreApplication without a GUI is running; OpenGL needs a QGuiApplication";
+            return {};
+        }
+        if (!platformUsable(why)) return {};
+        // Made once and never destroyed: a library cannot know when its caller's last GL use is,
+        // and tearing Qt down in static destructors is unsafe.
+        static int argc = 1;
+        static char name[] = "marbler";
+        static char* argv[] = {name, nullptr};
+        new QGuiApplication(argc, argv);
+    }
+    for (bool core43 : {true, false}) {
+        parts.context = std::make_unique<QOpenGLContext>();
+        parts.context->setFormat(requestedFormat(core43));
+        if (!parts.context->create()) continue;
+        parts.surface = std::make_unique<QOffscreenSurface>();
+        parts.surface->setFormat(parts.context->format());
+        parts.surface->create();
+        if (!parts.surface->isValid() || !parts.context->makeCurrent(parts.surface.get())) continue;
+        auto [major, minor] = parts.context->format().version();
+        if (major * 10 + minor < 43) {
+            why = "OpenGL 4.3 is needed (shader storage buffers); the driver gives " + std::to_string(major) + "."
+                + std::to_string(minor) + " ("
+                + reinterpret_cast<const char*>(parts.context->functions()->glGetString(GL_RENDERER)) + ")";
+            continue;
+        }
+        parts.gl = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_4_3_Core>(parts.context.get());
+        if (parts.gl && parts.gl->initializeOpenGLFunctions()) {
+            why.clear();
+            return parts;
+        }
+        why = "the OpenGL 4.3 core functions cannot be resolved";
+    }
+    if (why.empty())
+        why = "no OpenGL context can be made on the \"" + QGuiApplication::platformName().toStdString()
+            + "\" platform";
+    return {};
+}
+
+struct Availability {
+    bool ok = false;
+    std::string reason;
+};
+
+Availability probeOnce() {
+    Availability result;
+    ContextParts parts = makeContext(result.reason);
+    result.ok = parts.gl != nullptr;
+    if (parts.context) parts.context->doneCurrent();
+    return result;
+}
+
+glm::vec3 linearColor(Color c) {
+    return {float(srgbToLinear(c.r / 255.0)), float(srgbToLinear(c.g / 255.0)), float(srgbToLinear(c.b / 255.0))};
+}
+
+QImage loadSourceImage(const Genome& genome) {
+    const std::string& image = genome.source->image;
+    QImage result;
+    if (image.rfind("data:", 0) == 0) {
+        std::size_t comma = image.find(',');
+        if (comma == std::string::npos || image.find(";base64") > comma)
+            throw InputError("source image: the data URL is not base64 encoded");
+        QByteArray bytes = QByteArray::fromBase64(QByteArray::fromStdString(image.substr(comma + 1)));
+        if (!result.loadFromData(bytes)) throw InputError("source image: the data URL holds no readable image");
+    } else {
+        std::filesystem::path file(image);
+        if (file.is_relative() && !genome.baseDirectory.empty()) file = std::filesystem::path(genome.baseDirectory) / file;
+        if (!result.load(QString::fromStdString(file.string())))
+            throw InputError(file.string() + ": the source image cannot be read");
+    }
+    return result.convertToFormat(QImage::Format_RGBA8888);
+}
+
+} // namespace
+
+struct GlRenderer::Impl {
+    ContextParts parts;
+    QOpenGLFunctions_4_3_Core* gl = nullptr;
+    GlProgram raster;
+    GlProgram gbuffer;
+    GlProgram mesh;
+    GLuint emptyVao = 0;
+    GLuint opBuffer = 0;
+    GLuint sourceTexture = 0;
+
+    // The last mesh, kept on the GPU: re-rendering from another angle uploads nothing.
+    std::string meshName;
+    GLuint meshVao = 0, meshVbo = 0, meshIbo = 0;
+    GLsizei meshIndexCount = 0;
+    glm::dvec3 meshBoxSize{0.0};
+    double meshRadius = 1.0;
+
+    void makeCurrent() {
+        if (!parts.context->makeCurrent(parts.surface.get())) throw RuntimeFailure("GL: the context cannot be made current");
+    }
+
+    GLint limit(GLenum name) const {
+        GLint value = 0;
+        gl->glGetIntegerv(name, &value);
+        return value;
+    }
+
+    void buildRaster() {
+        if (raster.id()) return;
+        raster = GlProgram(*gl, "raster", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
+                                           {GL_FRAGMENT_SHADER, assembledShader("raster.frag")}});
+    }
+
+    void buildMesh() {
+        if (!gbuffer.id())
+            gbuffer = GlProgram(*gl, "gbuffer", {{GL_VERTEX_SHADER, assembledShader("gbuffer.vert")},
+                                                 {GL_FRAGMENT_SHADER, assembledShader("gbuffer.frag")}});
+        if (!mesh.id())
+            mesh = GlProgram(*gl, "mesh", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
+                                           {GL_FRAGMENT_SHADER, assembledShader("mesh.frag")}});
+    }
+
+    /// The genome's operations relative to `reference` into the storage buffer, and the inks,
+    /// into the uniforms of `program` (current).
+    void uploadGenome(const GlProgram& program, const std::vector<PreparedOp>& ops, const Genome& genome,
+                      const glm::dvec3& reference) {
+        std::vector<float> packed = packOps(ops, reference);
+        if (packed.empty()) packed.assign(PackedOpFloats, 0.0f); // a bound buffer may not be empty
+        gl->glBindBuffer(GL_SHADER_STORAGE_BUFFER, opBuffer);
+        gl->glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(packed.size() * sizeof(float)), packed.data(), GL_STREAM_DRAW);
+        gl->glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, opBuffer);
+        gl->glUniform1i(program.uniform("uOpCount"), GLint(ops.size()));
+        std::vector<float> inks(17 * 3, 0.0f);
+        for (std::size_t k = 0; k < genome.palette.size() && k < 16; ++k) {
+            glm::vec3 c = linearColor(genome.palette[k]);
+            std::copy_n(&c.x, 3, &inks[k * 3]);
+        }
+        glm::vec3 background = linearColor(genome.background);
+        std::copy_n(&background.x, 3, &inks[16 * 3]);
+        gl->glUniform3fv(program.uniform("uInk"), 17, inks.data());
+        glm::vec3 ref(reference);
+        gl->glUniform3fv(program.uniform("uReference"), 1, &ref.x);
+        gl->glUniform2f(program.uniform("uDesignSize"), float(genome.size.x), float(genome.size.y));
+    }
+
+    /// An RGBA8UI colour target with a framebuffer around it.
+    void makeTarget(int width, int height, GLuint& fbo, GLuint& texture) {
+        gl->glGenTextures(1, &texture);
+        gl->glBindTexture(GL_TEXTURE_2D, texture);
+        gl->glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8UI, width, height);
+        gl->glGenFramebuffers(1, &fbo);
+        gl->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+        checkFramebuffer("colour target");
+    }
+
+    void checkFramebuffer(const char* what) {
+        GLenum status = gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            throw RuntimeFailure(std::string("GL: the ") + what + " framebuffer is incomplete (status 0x"
+                                 + std::to_string(status) + ")");
+    }
+
+    void checkErrors(const char* where) {
+        GLenum error = gl->glGetError();
+        if (error != GL_NO_ERROR) throw RuntimeFailure(std::string("GL error ") + std::to_string(error) + " in " + where);
+    }
+
+    void loadMeshToGpu(const std::string& name) {
+        if (name == meshName && meshVao) return;
+        MeshData data = meshByNameOrFile(name);
+        glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+        for (const glm::vec3& p : data.positions) {
+            lo = glm::min(lo, glm::dvec3(p));
+            hi = glm::max(hi, glm::dvec3(p));
+        }
+        meshBoxSize = hi - lo;
+        std::vector<float> vertices;
+        vertices.reserve(data.positions.size() * 6);
+        glm::dvec3 centre = 0.5 * (lo + hi);
+        for (std::size_t v = 0; v < data.positions.size(); ++v) {
+            glm::dvec3 p = glm::dvec3(data.positions[v]) - centre; // fitted later by a uniform scale
+            glm::vec3 n = data.normals[v];
+            float len = glm::length(n);
+            n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
+            vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z), n.x, n.y, n.z});
+        }
+        if (!meshVao) {
+            gl->glGenVertexArrays(1, &meshVao);
+            gl->glGenBuffers(1, &meshVbo);
+            gl->glGenBuffers(1, &meshIbo);
+        }
+        gl->glBindVertexArray(meshVao);
+        gl->glBindBuffer(GL_ARRAY_BUFFER, meshVbo);
+        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+        gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshIbo);
+        gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(data.indices.size() * sizeof(std::uint32_t)),
+                         data.indices.data(), GL_STATIC_DRAW);
+        gl->glEnableVertexAttribArray(0);
+        gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+        gl->glEnableVertexAttribArray(1);
+        gl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                                  reinterpret_cast<const void*>(3 * sizeof(float)));
+        gl->glBindVertexArray(0);
+        meshIndexCount = GLsizei(data.indices.size());
+        meshRadius = 0.0;
+        for (std::size_t v = 0; v < data.positions.size(); ++v)
+            meshRadius = std::max(meshRadius, glm::length(glm::dvec3(data.positions[v]) - centre));
+        meshName = name;
+    }
+
+    void release() {
+        raster.release();
+        gbuffer.release();
+        mesh.release();
+        if (emptyVao) gl->glDeleteVertexArrays(1, &emptyVao);
+        if (opBuffer) gl->glDeleteBuffers(1, &opBuffer);
+        if (sourceTexture) gl->glDeleteTextures(1, &sourceTexture);
+        if (meshVao) gl->glDeleteVertexArrays(1, &meshVao);
+        if (meshVbo) gl->glDeleteBuffers(1, &meshVbo);
+        if (meshIbo) gl->glDeleteBuffers(1, &meshIbo);
+    }
+};
+
+bool GlRenderer::available(std::string* reason) {
+    static std::once_flag once;
+    static Availability result;
+    std::call_once(once, [] { result = probeOnce(); });
+    if (reason) *reason = result.reason;
+    return result.ok;
+}
+
+GlRenderer::GlRenderer()
+    : mImpl(std::make_unique<Impl>()) {
+    std::string why;
+    if (!available(&why)) throw RuntimeFailure("OpenGL is not available: " + why);
+    mImpl->parts = makeContext(why);
+    if (!mImpl->parts.gl) throw RuntimeFailure("OpenGL is not available: " + why);
+    mImpl->gl = mImpl->parts.gl;
+    mImpl->gl->glGenVertexArrays(1, &mImpl->emptyVao);
+    mImpl->gl->glGenBuffers(1, &mImpl->opBuffer);
+}
+
+GlRenderer::~GlRenderer() {
+    if (mImpl && mImpl->parts.context && mImpl->parts.context->makeCurrent(mImpl->parts.surface.get())) {
+        mImpl->release();
+        mImpl->parts.context->doneCurrent();
+    }
+}
+
+std::string GlRenderer::rendererName() const {
+    mImpl->makeCurrent();
+    return reinterpret_cast<const char*>(mImpl->gl->glGetString(GL_RENDERER));
+}
+
+std::string GlRenderer::glVersion() const {
+    auto [major, minor] = mImpl->parts.context->format().version();
+    return std::to_string(major) + "." + std::to_string(minor);
+}
+
+void GlRenderer::checkProgram(const std::string& vertexSource, const std::string& fragmentSource) {
+    mImpl->makeCurrent();
+    auto load = [](const std::string& name) { return shaderFile(name); };
+    GLuint program = buildProgram(*mImpl->gl, "checked program",
+                                  {{GL_VERTEX_SHADER, expandIncludes(vertexSource, load)},
+                                   {GL_FRAGMENT_SHADER, expandIncludes(fragmentSource, load)}});
+    mImpl->gl->glDeleteProgram(program);
+}
+
+void GlRenderer::finish() {
+    mImpl->makeCurrent();
+    mImpl->gl->glFinish();
+}
+
+Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
+    checkRenderSettings(genome, settings);
+    AaPattern aa = aaPattern(settings.aa);
+    if (aa.offsets.size() > std::size_t(MaxSamples))
+        throw InputError("antialiasing pattern " + aa.name + " has more samples than the GL back end takes");
+    SampleFrame frame = sampleFrame(genome, settings);
+    std::vector<PreparedOp> ops = prepare(genome);
+
+    Impl& d = *mImpl;
+    d.makeCurrent();
+    auto* gl = d.gl;
+    d.buildRaster();
+    gl->glUseProgram(d.raster.id());
+
+    std::vector<float> offsets, weights;
+    for (std::size_t s = 0; s < aa.offsets.size(); ++s) {
+        offsets.push_back(float(aa.offsets[s].x));
+        offsets.push_back(float(aa.offsets[s].y));
+        weights.push_back(float(aa.weights[s]));
+    }
+    gl->glUniform1i(d.raster.uniform("uSampleCount"), GLint(weights.size()));
+    gl->glUniform2fv(d.raster.uniform("uOffsets"), GLsizei(weights.size()), offsets.data());
+    gl->glUniform1fv(d.raster.uniform("uWeights"), GLsizei(weights.size()), weights.data());
+
+    bool hasSource = genome.dimension == 2 && genome.source.has_value();
+    gl->glUniform1i(d.raster.uniform("uHasSource"), hasSource ? 1 : 0);
+    // Unit 2: units 0 and 1 get rebound by the targets and the mesh G-buffer.
+    gl->glUniform1i(d.raster.uniform("uSource"), 2);
+    if (hasSource) {
+        QImage image = loadSourceImage(genome);
+        if (!d.sourceTexture) gl->glGenTextures(1, &d.sourceTexture);
+        gl->glActiveTexture(GL_TEXTURE2);
+        gl->glBindTexture(GL_TEXTURE_2D, d.sourceTexture);
+        gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, GLint(image.bytesPerLine() / 4));
+        // An sRGB texture is decoded before filtering: bilinear in linear light, as the spec asks;
+        // clamping to the edge texels is the spec's rule within the design space.
+        gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image.width(), image.height(), 0, GL_RGBA,
+                         GL_UNSIGNED_BYTE, image.constBits());
+        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        gl->glActiveTexture(GL_TEXTURE0);
+    }
+
+    int side = std::min({MaxTileSide, d.limit(GL_MAX_RENDERBUFFER_SIZE), d.limit(GL_MAX_TEXTURE_SIZE)});
+    GLint viewport[2] = {0, 0};
+    gl->glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    side = std::min({side, int(viewport[0]), int(viewport[1])});
+    double work = double(std::max<std::size_t>(ops.size(), 1)) * double(weights.size());
+    int workSide = int(std::sqrt(MaxWorkPerDraw / work));
+    side = std::max(64, std::min(side, workSide));
+    int tileW = std::min(side, settings.width), tileH = std::min(side, settings.height);
+
+    GLuint fbo = 0, texture = 0;
+    d.makeTarget(tileW, tileH, fbo, texture);
+    gl->glBindVertexArray(d.emptyVao);
+    gl->glDisable(GL_DEPTH_TEST);
+    gl->glDisable(GL_BLEND);
+
+    Image image;
+    image.width = settings.width;
+    image.height = settings.height;
+    image.rgb.resize(std::size_t(image.width) * std::size_t(image.height) * 3);
+    std::vector<std::uint8_t> rgba(std::size_t(tileW) * std::size_t(tileH) * 4);
+    try {
+        for (int ty = 0; ty < settings.height; ty += tileH) {
+            for (int tx = 0; tx < settings.width; tx += tileW) {
+                int w = std::min(tileW, settings.width - tx), h = std::min(tileH, settings.height - ty);
+                glm::dvec3 tileOrigin = frame.origin + double(tx) * frame.du + double(ty) * frame.dv;
+                // The tile's centre as the reference: float positions are then small where the
+                // samples are, however deep the region zooms.
+                glm::dvec3 reference = tileOrigin + 0.5 * double(w) * frame.du + 0.5 * double(h) * frame.dv;
+                if (genome.dimension == 2) reference.z = 0.0;
+                d.uploadGenome(d.raster, ops, genome, reference);
+                glm::vec3 origin(tileOrigin - reference), du(frame.du), dv(frame.dv);
+                gl->glUniform3fv(d.raster.uniform("uOrigin"), 1, &origin.x);
+                gl->glUniform3fv(d.raster.uniform("uDu"), 1, &du.x);
+                gl->glUniform3fv(d.raster.uniform("uDv"), 1, &dv.x);
+                gl->glViewport(0, 0, w, h);
+                gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+                gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+                gl->glReadPixels(0, 0, w, h, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, rgba.data());
+                d.checkErrors("the raster render");
+                for (int y = 0; y < h; ++y) {
+                    const std::uint8_t* in = rgba.data() + std::size_t(y) * std::size_t(w) * 4;
+                    std::uint8_t* out = image.row(ty + y) + std::size_t(tx) * 3;
+                    for (int x = 0; x < w; ++x) {
+                        out[x * 3 + 0] = in[x * 4 + 0];
+                        out[x * 3 + 1] = in[x * 4 + 1];
+                        out[x * 3 + 2] = in[x * 4 + 2];
+                    }
+                }
+            }
+        }
+    } catch (...) {
+        gl->glDeleteFramebuffers(1, &fbo);
+        gl->glDeleteTextures(1, &texture);
+        throw;
+    }
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl->glDeleteFramebuffers(1, &fbo);
+    gl->glDeleteTextures(1, &texture);
+    return image;
+}
+
+Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings) {
+    if (genome.dimension != 3) throw InputError("a mesh render needs a solid (3D) genome");
+    if (settings.width < 1 || settings.height < 1 || settings.width > MaxMeshSide || settings.height > MaxMeshSide)
+        throw InputError("mesh render size must be 1 to " + std::to_string(MaxMeshSide) + " pixels a side (got "
+                         + std::to_string(settings.width) + "x" + std::to_string(settings.height) + ")");
+    int n = settings.supersample;
+    if (n != 1 && n != 3 && n != 5) throw InputError("supersample must be 1, 3 or 5 (got " + std::to_string(n) + ")");
+    if (!(settings.fovY > 1.0 && settings.fovY < 170.0))
+        throw InputError("the field of view must lie between 1 and 170 degrees");
+    if (!std::isfinite(settings.yaw) || !std::isfinite(settings.pitch) || !(settings.distance > 0.0)
+        || !std::isfinite(settings.distance))
+        throw InputError("the camera needs finite yaw and pitch and a positive distance");
+    glm::dvec3 cutNormal(0.0);
+    double cutOffset = 0.0;
+    if (settings.cut) {
+        double len = glm::length(settings.cut->normal);
+        if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(settings.cut->offset))
+            throw InputError("the cutting plane needs a finite, non-zero normal");
+        cutNormal = settings.cut->normal / len;
+        cutOffset = settings.cut->offset / len;
+    }
+
+    Impl& d = *mImpl;
+    d.makeCurrent();
+    auto* gl = d.gl;
+    d.buildMesh();
+    d.loadMeshToGpu(settings.mesh);
+    int gw = settings.width * n, gh = settings.height * n;
+    if (gw > d.limit(GL_MAX_TEXTURE_SIZE) || gh > d.limit(GL_MAX_TEXTURE_SIZE))
+        throw InputError("mesh render too large for this GPU at " + std::to_string(n) + "x" + std::to_string(n)
+                         + " supersampling");
+
+    // Fit: the largest uniform scale that keeps the object inside the design box, centred in it.
+    // Its positions are then design coordinates, relative to the box centre (the reference).
+    glm::dvec3 box = genome.size;
+    glm::dvec3 reference = 0.5 * box;
+    double scale = std::numeric_limits<double>::max();
+    for (int k = 0; k < 3; ++k)
+        if (d.meshBoxSize[k] > 0.0) scale = std::min(scale, box[k] / d.meshBoxSize[k]);
+    if (scale == std::numeric_limits<double>::max()) scale = 1.0;
+    double radius = d.meshRadius * scale;
+
+    double yaw = glm::radians(settings.yaw), pitch = glm::radians(settings.pitch);
+    glm::dvec3 toEye(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+    glm::dvec3 eye = toEye * (settings.distance * radius);
+    glm::dvec3 up = std::abs(toEye.y) > 0.999 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
+    double eyeDistance = settings.distance * radius;
+    double nearPlane = std::max(eyeDistance - 1.01 * radius, 1e-3 * radius);
+    double farPlane = eyeDistance + 1.01 * radius;
+    glm::dmat4 view = glm::lookAt(eye, glm::dvec3(0.0), up);
+    glm::dmat4 projection = glm::perspective(glm::radians(settings.fovY), double(settings.width) / settings.height, nearPlane, farPlane);
+    glm::mat4 viewProjection(projection * view);
+
+    // Pass 1: the G-buffer at n x n samples per output pixel.
+    GLuint textures[2] = {0, 0}, depth = 0, gbufferFbo = 0;
+    gl->glGenTextures(2, textures);
+    for (GLuint t : textures) {
+        gl->glBindTexture(GL_TEXTURE_2D, t);
+        gl->glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, gw, gh);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    gl->glGenRenderbuffers(1, &depth);
+    gl->glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    gl->glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, gw, gh);
+    gl->glGenFramebuffers(1, &gbufferFbo);
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo);
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, textures[0], 0);
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, textures[1], 0);
+    gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    GLuint outputFbo = 0, outputTexture = 0;
+    auto cleanup = [&] {
+        gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        gl->glDeleteFramebuffers(1, &gbufferFbo);
+        gl->glDeleteRenderbuffers(1, &depth);
+        gl->glDeleteTextures(2, textures);
+        if (outputFbo) gl->glDeleteFramebuffers(1, &outputFbo);
+        if (outputTexture) gl->glDeleteTextures(1, &outputTexture);
+    };
+
+    Image image;
+    try {
+        d.checkFramebuffer("G-buffer");
+        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        gl->glDrawBuffers(2, buffers);
+        const float zero[4] = {0, 0, 0, 0};
+        gl->glClearBufferfv(GL_COLOR, 0, zero);
+        gl->glClearBufferfv(GL_COLOR, 1, zero);
+        gl->glClear(GL_DEPTH_BUFFER_BIT);
+        gl->glViewport(0, 0, gw, gh);
+        gl->glEnable(GL_DEPTH_TEST);
+        gl->glDepthFunc(GL_LESS);
+        gl->glDisable(GL_CULL_FACE); // back faces carry the cut's cap and the inside of open meshes
+        gl->glUseProgram(d.gbuffer.id());
+        gl->glUniformMatrix4fv(d.gbuffer.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+        glm::vec3 eyeF(eye), normalF(cutNormal);
+        gl->glUniform3fv(d.gbuffer.uniform("uEye"), 1, &eyeF.x);
+        gl->glUniform1i(d.gbuffer.uniform("uCut"), settings.cut ? 1 : 0);
+        gl->glUniform3fv(d.gbuffer.uniform("uCutNormal"), 1, &normalF.x);
+        gl->glUniform1f(d.gbuffer.uniform("uCutOffset"), float(cutOffset - glm::dot(cutNormal, reference)));
+        gl->glUniform1f(d.gbuffer.uniform("uScale"), float(scale));
+        gl->glBindVertexArray(d.meshVao);
+        gl->glDrawElements(GL_TRIANGLES, d.meshIndexCount, GL_UNSIGNED_INT, nullptr);
+        gl->glDisable(GL_DEPTH_TEST);
+        d.checkErrors("the G-buffer pass");
+
+        // Pass 2: the colour rule per sample, lit and averaged.
+        d.makeTarget(settings.width, settings.height, outputFbo, outputTexture);
+        gl->glViewport(0, 0, settings.width, settings.height);
+        gl->glUseProgram(d.mesh.id());
+        std::vector<PreparedOp> ops = prepare(genome);
+        d.uploadGenome(d.mesh, ops, genome, reference);
+        gl->glUniform1i(d.mesh.uniform("uHasSource"), 0);
+        gl->glActiveTexture(GL_TEXTURE0);
+        gl->glBindTexture(GL_TEXTURE_2D, textures[0]);
+        gl->glActiveTexture(GL_TEXTURE1);
+        gl->glBindTexture(GL_TEXTURE_2D, textures[1]);
+        gl->glActiveTexture(GL_TEXTURE0);
+        gl->glUniform1i(d.mesh.uniform("uPositions"), 0);
+        gl->glUniform1i(d.mesh.uniform("uNormals"), 1);
+        gl->glUniform1i(d.mesh.uniform("uSource"), 2);
+        gl->glUniform1i(d.mesh.uniform("uSupersample"), n);
+        gl->glUniform3fv(d.mesh.uniform("uEye"), 1, &eyeF.x);
+        // A key light above and to the left of the camera.
+        glm::dvec3 forward = -toEye;
+        glm::dvec3 right = glm::normalize(glm::cross(forward, up));
+        glm::dvec3 cameraUp = glm::cross(right, forward);
+        glm::vec3 light(glm::normalize(toEye * 0.9 + cameraUp * 0.6 - right * 0.45));
+        gl->glUniform3fv(d.mesh.uniform("uLight"), 1, &light.x);
+        gl->glUniform1i(d.mesh.uniform("uLighting"), settings.lighting ? 1 : 0);
+        glm::vec3 clear = linearColor(settings.clearColor);
+        gl->glUniform3fv(d.mesh.uniform("uClear"), 1, &clear.x);
+        gl->glBindVertexArray(d.emptyVao);
+        gl->glDrawArrays(GL_TRIANGLES, 0, 3);
+
+        std::vector<std::uint8_t> rgba(std::size_t(settings.width) * std::size_t(settings.height) * 4);
+        gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        gl->glReadPixels(0, 0, settings.width, settings.height, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, rgba.data());
+        d.checkErrors("the shading pass");
+        image.width = settings.width;
+        image.height = settings.height;
+        image.rgb.resize(std::size_t(image.width) * std::size_t(image.height) * 3);
+        for (int y = 0; y < image.height; ++y) {
+            // GL's first row is the bottom of the view.
+            const std::uint8_t* in = rgba.data() + std::size_t(image.height - 1 - y) * std::size_t(image.width) * 4;
+            std::uint8_t* out = image.row(y);
+            for (int x = 0; x < image.width; ++x) {
+                out[x * 3 + 0] = in[x * 4 + 0];
+                out[x * 3 + 1] = in[x * 4 + 1];
+                out[x * 3 + 2] = in[x * 4 + 2];
+            }
+        }
+    } catch (...) {
+        cleanup();
+        throw;
+    }
+    cleanup();
+    return image;
+}
+
+} // namespace marbler::gl

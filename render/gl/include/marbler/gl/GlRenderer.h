@@ -23,8 +23,13 @@ struct CutPlane {
 struct MeshSettings {
     int width = 512, height = 512;
     std::string mesh = "vase"; ///< built-in name (sphere, cube, torus, vase, teapot) or a file path
-    double yaw = 30.0, pitch = 20.0; ///< orbit camera, degrees
+    /// Orbit camera about the design box centre, +y up: the eye sits at
+    /// centre + distance * radius * (cos pitch sin yaw, sin pitch, cos pitch cos yaw), where
+    /// radius is the fitted object's bounding radius about the box centre.
+    double yaw = 30.0, pitch = 20.0; ///< degrees
     double distance = 2.6;           ///< orbit radius, in units of the fitted object's radius
+    double fovY = 50.0;              ///< vertical field of view, degrees (a whole object at distance 2.6)
+    bool lighting = true;            ///< false: the marbling's own colours, unlit (tests, flat previews)
     int supersample = 3;             ///< 1, 3 or 5 (n x n)
     std::optional<CutPlane> cut;
     Color clearColor{0x2b, 0x2b, 0x2b};
@@ -55,6 +60,17 @@ public:
 
     /// The driver's renderer string (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
     std::string rendererName() const;
+
+    /// The GL version the context got, e.g. "4.5".
+    std::string glVersion() const;
+
+    /// Compiles and links a program from GLSL sources (after `#include` expansion against the
+    /// shipped shader files) and discards it: for tests and shader development. Throws
+    /// RuntimeFailure carrying the numbered assembled source and the driver's log.
+    void checkProgram(const std::string& vertexSource, const std::string& fragmentSource);
+
+    /// Blocks until the GPU has finished every command (glFinish), for benchmarks.
+    void finish();
 
 private:
     struct Impl;

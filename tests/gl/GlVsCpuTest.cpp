@@ -1,0 +1,222 @@
+// The GL back end against the CPU renderer: same genome, same settings, the same pixels up to
+// float rounding. Pixels may differ by more than 2 levels only where an ink boundary passes
+// (float and double disagree on which side a sample lies), and at most 0.5% of them.
+
+#include "GlTestUtil.h"
+#include "TestUtil.h"
+#include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Tools.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <set>
+
+namespace marbler {
+namespace {
+
+struct NamedGenome {
+    std::string name;
+    Genome genome;
+};
+
+std::vector<NamedGenome> sampleGenomes() {
+    std::vector<NamedGenome> out;
+    for (const auto& entry : std::filesystem::directory_iterator(test::dataDir() / "examples"))
+        if (entry.path().string().ends_with(".marble.json"))
+            out.push_back({entry.path().filename().string(), loadGenome(entry.path())});
+    for (int k = 0; k < 5; ++k) {
+        std::filesystem::path file = test::dataDir() / "conformance" / ("probes-" + std::to_string(k) + ".json");
+        if (!std::filesystem::exists(file)) continue;
+        auto json = nlohmann::json::parse(test::readFile(file));
+        out.push_back({file.filename().string(), parseGenome(json.at("genome").dump(), file.string())});
+    }
+    std::filesystem::path renderData = test::dataDir() / "render";
+    if (std::filesystem::exists(renderData))
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(renderData))
+            if (entry.path().string().ends_with(".marble.json"))
+                out.push_back({entry.path().filename().string(), loadGenome(entry.path())});
+    for (std::uint64_t seed : {1u, 2u, 3u})
+        for (int dimension : {2, 3})
+            out.push_back({"random-" + std::to_string(seed) + "-" + std::to_string(dimension) + "d",
+                           randomGenome(seed, dimension)});
+    std::sort(out.begin(), out.end(), [](const NamedGenome& a, const NamedGenome& b) { return a.name < b.name; });
+    return out;
+}
+
+int maxChannelDiff(const Image& a, const Image& b, std::size_t pixel) {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(int(a.rgb[pixel * 3 + c]) - int(b.rgb[pixel * 3 + c])));
+    return worst;
+}
+
+/// Whether pixel (x, y) touches an ink boundary: a neighbour of another CPU colour, or samples
+/// of different inks.
+bool atInkBoundary(const Genome& genome, const CpuRenderer& cpu, const RenderSettings& settings, const Image& ref,
+                   int x, int y) {
+    const std::uint8_t* centre = ref.rgb.data() + (std::size_t(y) * ref.width + x) * 3;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= ref.width || ny >= ref.height) continue;
+            if (!std::equal(centre, centre + 3, ref.rgb.data() + (std::size_t(ny) * ref.width + nx) * 3)) return true;
+        }
+    SampleFrame frame = sampleFrame(genome, settings);
+    AaPattern aa = aaPattern(settings.aa);
+    std::set<int> inks;
+    for (const glm::dvec2& o : aa.offsets) inks.insert(cpu.colorIndexAt(frame.at(x, y, o.x, o.y)));
+    return inks.size() > 1;
+}
+
+/// Renders on both and holds GL to the CPU; saves both images when they disagree.
+void expectMatchesCpu(const Genome& genome, const RenderSettings& settings, const std::string& label) {
+    CpuRenderer cpu(genome);
+    Image expected = cpu.render(settings);
+    Image actual = test::glRenderer()->render(genome, settings);
+    ASSERT_EQ(actual.width, expected.width);
+    ASSERT_EQ(actual.height, expected.height);
+    std::size_t pixels = std::size_t(expected.width) * std::size_t(expected.height);
+    std::size_t off = 0, unexplained = 0;
+    std::string firstUnexplained;
+    for (int y = 0; y < expected.height; ++y) {
+        for (int x = 0; x < expected.width; ++x) {
+            if (maxChannelDiff(expected, actual, std::size_t(y) * expected.width + x) <= 2) continue;
+            ++off;
+            if (!atInkBoundary(genome, cpu, settings, expected, x, y)) {
+                if (unexplained++ == 0) firstUnexplained = "(" + std::to_string(x) + ", " + std::to_string(y) + ")";
+            }
+        }
+    }
+    bool ok = double(off) <= 0.005 * double(pixels) && unexplained == 0;
+    EXPECT_LE(double(off), 0.005 * double(pixels)) << label << ": " << off << " of " << pixels << " pixels differ by > 2";
+    EXPECT_EQ(unexplained, 0u) << label << ": pixels differ away from ink boundaries, first at " << firstUnexplained;
+    if (!ok) {
+        std::filesystem::path dir = test::outputDir("gl-vs-cpu");
+        std::string stem = label;
+        std::replace_if(stem.begin(), stem.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+        test::savePng(expected, dir / (stem + "-cpu.png"));
+        test::savePng(actual, dir / (stem + "-gl.png"));
+        ADD_FAILURE() << "images saved in " << dir;
+    }
+}
+
+class GlVsCpu : public ::testing::Test {
+protected:
+    void SetUp() override { MARBLER_REQUIRE_GL_OR_SKIP(); }
+};
+
+TEST_F(GlVsCpu, EverySampleGenomeWithAndWithoutAntialiasing) {
+    for (const NamedGenome& g : sampleGenomes()) {
+        for (const char* aa : {"none", "rgss"}) {
+            RenderSettings settings;
+            settings.width = 120;
+            settings.height = 96;
+            settings.aa = aa;
+            if (g.genome.dimension == 2) {
+                expectMatchesCpu(g.genome, settings, g.name + " " + aa);
+                continue;
+            }
+            for (int axis = 0; axis < 3; ++axis) {
+                settings.slice = Slice{axis, g.genome.size[axis] * (axis == 1 ? 0.37 : 0.5)};
+                expectMatchesCpu(g.genome, settings, g.name + " axis " + std::to_string(axis) + " " + aa);
+            }
+        }
+    }
+}
+
+TEST_F(GlVsCpu, EveryAntialiasingPattern) {
+    Genome genome = randomGenome(7, 2);
+    for (const std::string& aa : aaPatternNames()) {
+        RenderSettings settings;
+        settings.width = 48;
+        settings.height = 40;
+        settings.aa = aa;
+        expectMatchesCpu(genome, settings, "pattern " + aa);
+    }
+}
+
+TEST_F(GlVsCpu, DeepZoomKeepsPrecision) {
+    // A 4-unit window at 128 pixels: 0.03 units a pixel, where float design coordinates alone
+    // (ulp 6e-5 at 1000) would still do, and a 0.05-unit one, where only the tile-relative
+    // packing keeps the samples apart.
+    Genome genome = randomGenome(11, 2);
+    for (double half : {2.0, 0.025}) {
+        RenderSettings settings;
+        settings.width = 128;
+        settings.height = 128;
+        settings.region = Region{612.3 - half, 401.7 - half, 612.3 + half, 401.7 + half};
+        expectMatchesCpu(genome, settings, "zoom " + std::to_string(half));
+    }
+}
+
+TEST_F(GlVsCpu, TilesJoinWithoutSeams) {
+    // Wider than one 2048-pixel tile, so a tile edge crosses the image.
+    Genome genome = randomGenome(5, 2);
+    RenderSettings settings;
+    settings.width = 2300;
+    settings.height = 24;
+    settings.region = Region{0, 480, 1000, 480 + 24.0 * 1000.0 / 2300.0};
+    expectMatchesCpu(genome, settings, "tiles");
+}
+
+TEST_F(GlVsCpu, TenThousandEntriesRender) {
+    Genome genome;
+    genome.dimension = 2;
+    genome.size = {1000, 1000, 1000};
+    genome.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}};
+    Pcg32 rng(99);
+    for (int k = 0; k < 5000; ++k) {
+        Operation drop;
+        drop.tool = Tool::Drop;
+        drop.center = {rng.uniform() * 1000.0, rng.uniform() * 1000.0, 0.0};
+        drop.radius = 5.0 + rng.uniform() * 20.0;
+        drop.color = k % 3;
+        genome.initial.push_back(drop);
+    }
+    for (int k = 0; k < 5000; ++k) {
+        Operation line;
+        line.tool = k % 2 ? Tool::Line : Tool::Comb;
+        line.center = {rng.uniform() * 1000.0, rng.uniform() * 1000.0, 0.0};
+        line.angle = rng.uniform() * 360.0;
+        line.alpha = 2.0;
+        line.lambda = 10.0;
+        line.spacing = 90.0;
+        genome.operations.push_back(line);
+    }
+    ASSERT_EQ(genome.initial.size() + genome.operations.size(), MaxEntries);
+    RenderSettings settings;
+    settings.width = 40;
+    settings.height = 40;
+    expectMatchesCpu(genome, settings, "10000 entries");
+}
+
+TEST_F(GlVsCpu, BadSettingsAreInputErrors) {
+    Genome genome = randomGenome(3, 3);
+    RenderSettings settings;
+    settings.width = 16;
+    settings.height = 16; // a solid genome needs a slice
+    EXPECT_THROW(test::glRenderer()->render(genome, settings), InputError);
+    settings.slice = Slice{2, 500};
+    settings.aa = "grid9";
+    EXPECT_THROW(test::glRenderer()->render(genome, settings), InputError);
+}
+
+TEST(GlAvailability, ReportsAReasonOrARenderer) {
+    std::string why;
+    if (gl::GlRenderer::available(&why)) {
+        EXPECT_FALSE(test::glRenderer()->rendererName().empty());
+        std::string version = test::glRenderer()->glVersion();
+        EXPECT_GE(std::stod(version), 4.3) << version;
+    } else {
+        EXPECT_FALSE(why.empty());
+        if (test::glRequired()) ADD_FAILURE() << "MARBLER_REQUIRE_GL=1 but no GL: " << why;
+    }
+}
+
+} // namespace
+} // namespace marbler
