@@ -480,8 +480,10 @@ Genome parseGenome(std::string_view text, const std::string& name, std::vector<s
 Genome loadGenome(const std::filesystem::path& file, std::vector<std::string>* warnings) {
     const std::string name = file.string();
     std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) throw GenomeError(name, "", "cannot read: no such file");
-    if (std::filesystem::is_directory(file, ec)) throw GenomeError(name, "", "cannot read: is a folder");
+    std::filesystem::file_status status = std::filesystem::status(file, ec);
+    if (ec) throw GenomeError(name, "", "cannot read: " + ec.message());
+    if (!std::filesystem::exists(status)) throw GenomeError(name, "", "cannot read: no such file");
+    if (std::filesystem::is_directory(status)) throw GenomeError(name, "", "cannot read: is a folder");
     // The size is checked before reading so a huge file is never pulled into memory; the read
     // below is bounded too, in case the file grows meanwhile or is not a regular file.
     std::uintmax_t bytes = std::filesystem::file_size(file, ec);
