@@ -196,6 +196,17 @@ TEST(Generator, StrokeFamiliesAllAppear) {
             EXPECT_TRUE(seen.count(Tool::Sphere));
         }
     }
+    // Both 3D wave shapes, and now and then a spatter of sprayed ink.
+    std::set<WaveShape> shapes;
+    int sprayed = 0;
+    for (std::uint64_t seed = 0; seed < 200; ++seed) {
+        for (const Operation& op : randomGenome(seed, 3).operations)
+            if (op.tool == Tool::Wave) shapes.insert(op.shape);
+        sprayed += countTool(randomGenome(seed, 2).initial, Tool::Spray) > 0 ? 1 : 0;
+    }
+    EXPECT_EQ(shapes.size(), 2u);
+    EXPECT_GT(sprayed, 20);
+    EXPECT_LT(sprayed, 120);
 }
 
 TEST(Generator, RejectsOtherDimensions) {
