@@ -1,0 +1,131 @@
+// Frames per second of the GL back end: a 1024x1024 design and a 3x3 grid of 256x256
+// thumbnails (the workbench's breeding view) at 10, 100 and 1000 entries, without and with
+// antialiasing (rgss), and a 512x512 marbled mesh. Every frame ends in glFinish and the
+// read-back, so a frame is a finished image in memory.
+
+#include "marbler/Genome.h"
+#include "marbler/Random.h"
+#include "marbler/gl/GlRenderer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+namespace {
+
+using namespace marbler;
+
+/// A design of exactly `entries` tools: half drops, half strokes of every family.
+Genome makeGenome(int entries, int dimension) {
+    Genome genome;
+    genome.dimension = dimension;
+    genome.size = {1000, 1000, 1000};
+    genome.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}, {0x2e, 0x6e, 0x5e}};
+    Pcg32 rng(2024);
+    auto point = [&] {
+        return glm::dvec3(rng.uniform(0, 1000), rng.uniform(0, 1000), dimension == 3 ? rng.uniform(0, 1000) : 0.0);
+    };
+    for (int k = 0; k < entries / 2; ++k) {
+        Operation drop;
+        drop.tool = Tool::Drop;
+        drop.center = point();
+        drop.radius = rng.uniform(20, 120);
+        drop.color = k % 4;
+        genome.initial.push_back(drop);
+    }
+    const Tool strokes[] = {Tool::Comb, Tool::Wave, Tool::Line, Tool::Vortex, Tool::Circle};
+    for (int k = entries / 2; k < entries; ++k) {
+        Operation op;
+        op.tool = strokes[k % 5];
+        op.center = point();
+        op.angle = rng.uniform(0, 360);
+        op.alpha = rng.uniform(10, 60);
+        op.lambda = rng.uniform(5, 40);
+        op.spacing = rng.uniform(40, 150);
+        op.radius = rng.uniform(50, 300);
+        op.amplitude = {rng.uniform(5, 40), rng.uniform(5, 40)};
+        op.wavelength = {rng.uniform(100, 400), rng.uniform(100, 400)};
+        if (dimension == 3) {
+            op.direction = {1, 0, 0};
+            op.normal = {0, 1, 0};
+            if (op.tool == Tool::Circle) op.tool = Tool::Sphere;
+        }
+        genome.operations.push_back(op);
+    }
+    return genome;
+}
+
+// Released in main, before exit: the driver's own exit handlers may already have torn the
+// context down by the time static destructors run.
+std::unique_ptr<gl::GlRenderer> instance;
+
+gl::GlRenderer* renderer(benchmark::State& state) {
+    std::string why;
+    if (!instance && gl::GlRenderer::available(&why)) instance = std::make_unique<gl::GlRenderer>();
+    if (!instance) state.SkipWithError(("no OpenGL context: " + why).c_str());
+    return instance.get();
+}
+
+const char* aaName(int64_t index) { return index ? "rgss" : "none"; }
+
+void BM_Design1024(benchmark::State& state) {
+    gl::GlRenderer* gl = renderer(state);
+    if (!gl) return;
+    Genome genome = makeGenome(int(state.range(0)), 2);
+    RenderSettings settings;
+    settings.width = settings.height = 1024;
+    settings.aa = aaName(state.range(1));
+    for (auto _ : state) {
+        Image image = gl->render(genome, settings);
+        gl->finish();
+        benchmark::DoNotOptimize(image.rgb.data());
+    }
+    state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+    state.SetLabel(gl->rendererName());
+}
+
+void BM_Thumbnails3x3(benchmark::State& state) {
+    gl::GlRenderer* gl = renderer(state);
+    if (!gl) return;
+    std::vector<Genome> genomes;
+    for (int k = 0; k < 9; ++k) genomes.push_back(makeGenome(int(state.range(0)), 2));
+    RenderSettings settings;
+    settings.width = settings.height = 256;
+    settings.aa = aaName(state.range(1));
+    for (auto _ : state) {
+        for (const Genome& genome : genomes) benchmark::DoNotOptimize(gl->render(genome, settings).rgb.data());
+        gl->finish();
+    }
+    state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void BM_Mesh512(benchmark::State& state) {
+    gl::GlRenderer* gl = renderer(state);
+    if (!gl) return;
+    Genome genome = makeGenome(int(state.range(0)), 3);
+    gl::MeshSettings settings;
+    settings.width = settings.height = 512;
+    settings.mesh = "vase";
+    settings.supersample = 3;
+    for (auto _ : state) {
+        Image image = gl->renderMesh(genome, settings);
+        gl->finish();
+        benchmark::DoNotOptimize(image.rgb.data());
+    }
+    state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_Design1024)->ArgsProduct({{10, 100, 1000}, {0, 1}})->ArgNames({"ops", "rgss"})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Thumbnails3x3)->ArgsProduct({{10, 100, 1000}, {0, 1}})->ArgNames({"ops", "rgss"})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Mesh512)->Arg(100)->ArgName("ops")->Unit(benchmark::kMillisecond)->UseRealTime();
+
+} // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    instance.reset();
+    return 0;
+}
