@@ -96,7 +96,10 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
 
     Generation next;
     next.selected = current().selected;
-    next.description = tr("%1 of %n parent(s)", nullptr, int(selected.size())).arg(operatorLabel(op));
+    next.parentCells = selected;
+    next.description = selected.size() == 1
+        ? tr("%1 of 1 parent").arg(operatorLabel(op))
+        : tr("%1 of %2 parents").arg(operatorLabel(op)).arg(selected.size());
     std::size_t child = 0;
     for (int i = 0; i < CellCount; ++i) {
         if (current().selected[std::size_t(i)]) {

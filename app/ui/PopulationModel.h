@@ -26,6 +26,7 @@ struct Generation {
     std::array<bool, CellCount> selected{};
     QString description; ///< "Alter of 1 parent", "New random population", "Opened a.marble.json"
     int number = 0;      ///< position in the session's history, 0 for the first
+    std::vector<int> parentCells; ///< the cells whose designs this generation was bred from
 };
 
 /// A design kept aside on the favourites shelf, saved as a genome file.

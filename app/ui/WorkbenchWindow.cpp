@@ -170,6 +170,7 @@ void WorkbenchWindow::buildActions() {
         newRandomPopulation(mDimension->currentData().toInt());
     });
     newRandom->setShortcut(QKeySequence::New);
+    newRandom->setIconText(tr("New random"));
     newRandom->setToolTip(tr("Nine new random designs of the kind chosen beside (Ctrl+N)"));
     fileMenu->addSeparator();
     fileMenu->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
@@ -177,10 +178,12 @@ void WorkbenchWindow::buildActions() {
     mBack = editMenu->addAction(style()->standardIcon(QStyle::SP_ArrowBack), tr("&Back a generation"), mModel,
                                 &PopulationModel::goBack);
     mBack->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
+    mBack->setIconText(tr("◀ Back"));
     mBack->setToolTip(tr("Back to the previous generation (Ctrl+Z)"));
     mForward = editMenu->addAction(style()->standardIcon(QStyle::SP_ArrowForward), tr("&Forward a generation"),
                                    mModel, &PopulationModel::goForward);
     mForward->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
+    mForward->setIconText(tr("Forward ▶"));
     mForward->setToolTip(tr("Forward to the next generation (Ctrl+Shift+Z)"));
     editMenu->addSeparator();
     editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection)
@@ -286,7 +289,11 @@ void WorkbenchWindow::buildDocks() {
 void WorkbenchWindow::readSettings() {
     QSettings settings;
     if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray())) resize(1180, 860);
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    if (!restoreState(settings.value(QStringLiteral("window/state")).toByteArray())) {
+        // First start: docks wide enough for the lineage columns, the shelf above the lineage.
+        const auto docks = findChildren<QDockWidget*>();
+        resizeDocks(QList<QDockWidget*>(docks.begin(), docks.end()), QList<int>(docks.size(), 380), Qt::Horizontal);
+    }
     const int dimension = settings.value(QStringLiteral("population/dimension"), 2).toInt();
     mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
     mStrength->setValue(settings.value(QStringLiteral("breed/strength"), 50).toInt());
@@ -343,10 +350,11 @@ void WorkbenchWindow::updateActions() {
     mBack->setEnabled(mModel->canGoBack());
     mForward->setEnabled(mModel->canGoForward());
     const auto& gen = mModel->current();
-    statusBar()->showMessage(tr("Generation %1 of %2: %3 — %n parent(s) selected", nullptr, n)
+    statusBar()->showMessage(tr("Generation %1 of %2: %3 — %4 selected")
                                  .arg(mModel->currentIndex() + 1)
                                  .arg(mModel->history().size())
-                                 .arg(gen.description));
+                                 .arg(gen.description)
+                                 .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
 }
 
 void WorkbenchWindow::updateLineage() {
@@ -369,8 +377,7 @@ void WorkbenchWindow::updateLineage() {
     const auto& history = mModel->history();
     for (std::size_t k = 0; k < history.size(); ++k) {
         QStringList parents;
-        for (int i = 0; i < CellCount; ++i)
-            if (history[k].selected[std::size_t(i)]) parents << tr("cell %1").arg(i + 1);
+        for (int i : history[k].parentCells) parents << tr("cell %1").arg(i + 1);
         auto* item = new QTreeWidgetItem(generations, {tr("#%1").arg(k + 1), history[k].description,
                                                        parents.join(QStringLiteral(", ")), QString()});
         item->setData(0, Qt::UserRole, int(k));
@@ -501,7 +508,7 @@ void WorkbenchWindow::onOrbit(int index, QPoint delta, bool finished) {
 
 bool WorkbenchWindow::applyOperator(GeneticOperator op) {
     if (!mModel->canApply(op)) {
-        statusBar()->showMessage(tr("%1 needs %2 parent(s) of one kind")
+        statusBar()->showMessage(tr("%1 needs %2 parents of one kind")
                                      .arg(operatorLabel(op))
                                      .arg(maxParents(op) == 0 ? tr("%1 or more").arg(minParents(op))
                                                               : QString::number(minParents(op))),
