@@ -1,154 +1,128 @@
 // The tools of genome-format.md in GLSL: inverse maps, ink tests and the colour rule, read from
-// packed PreparedOp records (render/gl/src/OpPacking.cpp writes them, 8 vec4 each). This is the
+// packed PreparedOp records (render/gl/src/OpPacking.cpp writes them, 7 vec4 each). This is the
 // float twin of genome/src/Tools.cpp: keep the two in step.
 //
 // Every position here is relative to a reference point R chosen by the host near the pixels being
 // drawn (op centres are packed as c - R in double before the cast to float). All maps depend on
 // P - C only, so the shift is exact and keeps float precision where the samples are.
 //
-// Record layout:
-//   head  = (tool, dimension, wave shape, ink colour or -1)
-//   c     = (centre - R, radius)
-//   m     = (motion direction M / wave u, r^2 (2D drop, cylinder) or r^3 (3D drop))
-//   n     = (normal N / wave w, alpha * lambda)
-//   v     = (wave v = w x u, lambda)
-//   a     = (axis, comb spacing)
-//   wave  = (amplitude 1, amplitude 2, 1 / wavelength 1, 1 / wavelength 2)
-//   extra = (phase 1, phase 2 (radians), r^2 of the ink test, unused)
+// Speed: a software rasteriser (llvmpipe) runs both sides of every branch whose condition varies
+// between lanes or that it cannot prove uniform, so a switch over nine tools costs nine tools per
+// operation. Instead every operation runs one branch-free body: the host packs each tool into the
+// coefficients of three shared forms (radial push, translation along a direction, turn about an
+// axis) and the body picks the form's result by the operation's class. The shared pieces (the
+// distance to the centre or axis, the shift alpha lambda / (d + lambda), two sines that are the
+// wave's two terms or the turn's sine and cosine) are computed once per operation.
+//
+// Record layout (classes: 0 push with a square root, 1 push with a cube root (3D drop),
+// 2 translation by the distance-dependent shift (line, comb), 3 translation by the wave's shift,
+// 4 turn (circle, sphere, vortex); spray is a push of strength 0):
+//   o0 = (centre - R, r^2 of the ink test or -1 (no ink))
+//   o1 = (axis projected out of the distance: cylinder, 3D circle; else 0, palette index or -1)
+//   o2 = (move direction (translations) or turn axis, class)
+//   o3 = (U: the distance axis (line, comb: N; wave: its first axis), 1 for a radial wave)
+//   o4 = (V: the wave's second axis or 0, radius of the circle or sphere (0 for a vortex))
+//   o5 = push: (r^2 or r^3, -, -, -); line, comb, turn: (alpha lambda, lambda, comb spacing or 0, -);
+//        wave: (amplitude 1, amplitude 2 (0 for one term), 1 / wavelength 1, 1 / wavelength 2)
+//   o6 = (wave phase 1, wave phase 2 (radians), -, -)
 
-const int ToolDrop = 0;
-const int ToolSpray = 1;
-const int ToolCylinder = 2;
-const int ToolLine = 3;
-const int ToolComb = 4;
-const int ToolWave = 5;
-const int ToolCircle = 6;
-const int ToolSphere = 7;
-const int ToolVortex = 8;
 const float TwoPi = 6.28318530717958647692;
+const float HalfPi = 1.57079632679489661923;
+const int OpVec4s = 7;
 
-struct Op {
-    vec4 head;
-    vec4 c;
-    vec4 m;
-    vec4 n;
-    vec4 v;
-    vec4 a;
-    vec4 wave;
-    vec4 extra;
-};
-
-// The genome is data, never code: a new design is a buffer upload, not a recompile.
-layout(std430, binding = 0) readonly buffer OpBuffer { Op ops[]; };
+// The genome is data, never code: a new design is a buffer upload, not a recompile. A buffer
+// texture: llvmpipe fetches a texel for every lane at once, where a storage buffer read goes
+// lane by lane.
+uniform samplerBuffer uOps;
 uniform int uOpCount;
 
 // Linear inks 0..15; [16] is the background.
 uniform vec3 uInk[17];
+#if MARBLER_HAS_SOURCE
 // A 2D raster start, stretched over the design space (sRGB texture: filtered in linear light).
-uniform bool uHasSource;
 uniform sampler2D uSource;
 uniform vec2 uDesignSize;
 uniform vec3 uReference; // R, to turn relative positions back into design coordinates
-
-float shiftFor(Op op, float d) { return op.n.w / (d + op.v.w); }
+#endif
 
 float combDistance(float t, float s) {
     float md = t - s * floor(t / s);
     return 0.5 * s - abs(md - 0.5 * s);
 }
 
-// The sine's argument reduced to one period before the multiplication by 2 pi, since GPU sines
-// lose accuracy far from zero.
-float waveSin(float t, float invLength, float phase) { return sin(TwoPi * fract(t * invLength) + phase); }
-
-float waveShift(Op op, vec3 rel) {
-    if (int(op.head.y) == 2) return op.wave.x * waveSin(dot(rel, op.n.xyz), op.wave.z, op.extra.x);
-    float x = dot(rel, op.m.xyz);
-    float y = dot(rel, op.v.xyz);
-    if (int(op.head.z) == 1) return op.wave.x * waveSin(sqrt(x * x + y * y), op.wave.z, op.extra.x);
-    return op.wave.x * waveSin(x, op.wave.z, op.extra.x) + op.wave.y * waveSin(y, op.wave.w, op.extra.y);
-}
-
-vec3 rotateAbout(vec3 rel, vec3 axis, float theta) {
-    vec3 along = dot(rel, axis) * axis;
-    vec3 across = rel - along;
-    return along + across * cos(theta) + cross(axis, across) * sin(theta);
-}
-
-// Circle, sphere and vortex: turn about C (2D) or about the axis line through C (3D).
-vec3 swirl(Op op, vec3 p, float sgn) {
-    vec3 rel = p - op.c.xyz;
-    int tool = int(op.head.x);
-    bool flat2d = int(op.head.y) == 2;
-    float rho = (tool == ToolCircle && !flat2d) ? length(rel - dot(rel, op.a.xyz) * op.a.xyz) : length(rel);
-    if (!(rho > 0.0)) return p;
-    float d = tool == ToolVortex ? rho : abs(rho - op.c.w);
-    float theta = sgn * shiftFor(op, d) / rho;
-    if (flat2d) {
-        float cs = cos(theta), sn = sin(theta);
-        return op.c.xyz + vec3(cs * rel.x - sn * rel.y, sn * rel.x + cs * rel.y, 0.0);
-    }
-    return op.c.xyz + rotateAbout(rel, op.a.xyz, theta);
-}
-
-// Drop (area or volume law) and cylinder: the radial push. factor - 1 is computed without the
-// cancellation of sqrt(1 + s) - 1, which in float would cost most of the digits far from a drop.
-vec3 push(Op op, vec3 p, float sgn) {
-    vec3 rel = p - op.c.xyz;
-    int tool = int(op.head.x);
-    if (tool == ToolCylinder) rel -= dot(rel, op.a.xyz) * op.a.xyz;
-    float len2 = dot(rel, rel);
-    if (!(len2 > 0.0)) return p;
-    float s;
-    float grow;
-    if (tool == ToolDrop && int(op.head.y) == 3) {
-        s = max(-1.0, sgn * op.m.w / (len2 * sqrt(len2)));
-        float f = pow(1.0 + s, 1.0 / 3.0);
-        grow = s / (f * f + f + 1.0);
-    } else {
-        s = max(-1.0, sgn * op.m.w / len2);
-        grow = s / (sqrt(1.0 + s) + 1.0);
-    }
-    return p + rel * grow;
-}
-
-vec3 inverseMap(Op op, vec3 q) {
-    int tool = int(op.head.x);
-    if (tool == ToolDrop || tool == ToolCylinder) return push(op, q, -1.0);
-    if (tool == ToolLine) return q - shiftFor(op, abs(dot(q - op.c.xyz, op.n.xyz))) * op.m.xyz;
-    if (tool == ToolComb) return q - shiftFor(op, combDistance(dot(q - op.c.xyz, op.n.xyz), op.a.w)) * op.m.xyz;
-    if (tool == ToolWave) return q - waveShift(op, q - op.c.xyz) * (int(op.head.y) == 2 ? op.m.xyz : op.n.xyz);
-    if (tool == ToolCircle || tool == ToolSphere || tool == ToolVortex) return swirl(op, q, -1.0);
-    return q; // spray moves nothing
-}
-
-// Open boundary: a point on the rim is outside.
-bool insideInk(Op op, vec3 p) {
-    vec3 rel = p - op.c.xyz;
-    if (int(op.head.x) == ToolCylinder) rel -= dot(rel, op.a.xyz) * op.a.xyz;
-    return dot(rel, rel) < op.extra.z;
-}
-
 // The colour rule: back through time until an ink is hit. Returns the palette index or -1; p is
 // left where the point came from (for the source image).
 int traceColor(inout vec3 p) {
+    int color = -1;
     for (int k = uOpCount - 1; k >= 0; --k) {
-        Op op = ops[k];
-        if (op.head.w >= 0.0 && insideInk(op, p)) return int(op.head.w);
-        p = inverseMap(op, p);
+        int b = k * OpVec4s;
+        vec4 o0 = texelFetch(uOps, b);
+        vec4 o1 = texelFetch(uOps, b + 1);
+        vec4 o2 = texelFetch(uOps, b + 2);
+        vec4 o3 = texelFetch(uOps, b + 3);
+        vec4 o4 = texelFetch(uOps, b + 4);
+        vec4 o5 = texelFetch(uOps, b + 5);
+        vec4 o6 = texelFetch(uOps, b + 6);
+        int kind = int(o2.w);
+
+        vec3 rel = p - o0.xyz;
+        vec3 across = rel - dot(rel, o1.xyz) * o1.xyz; // rel itself where nothing is projected out
+        float len2 = dot(across, across);
+        // Open boundary: a point on the rim is outside (o0.w is -1 where the tool lays no ink).
+        if (len2 < o0.w) {
+            color = int(o1.w);
+            break;
+        }
+        float rho = sqrt(len2);
+
+        // Translations and turns: the distance d, the shift alpha lambda / (d + lambda).
+        float t = dot(rel, o3.xyz);
+        float d = kind == 4 ? abs(rho - o4.w) : (o5.z > 0.0 ? combDistance(t, o5.z) : abs(t));
+        float shift = o5.x / (d + o5.y);
+        float theta = -shift / rho;
+        // The two sines: the wave's terms, or the turn's sine and cosine.
+        float y = dot(rel, o4.xyz);
+        float x = o3.w > 0.0 ? sqrt(t * t + y * y) : t;
+        vec2 args = kind == 3 ? vec2(TwoPi * fract(x * o5.z) + o6.x, TwoPi * fract(y * o5.w) + o6.y)
+                              : vec2(theta, theta + HalfPi);
+        vec2 sines = sin(args);
+
+        vec3 moved;
+        if (kind <= 1) {
+            // Drop (area or volume law) and cylinder: the radial push. factor - 1 is computed
+            // without the cancellation of sqrt(1 + s) - 1, which in float would cost most of the
+            // digits far from a drop.
+#if MARBLER_DIMENSION == 3
+            float s = max(-1.0, -o5.x / (kind == 1 ? len2 * rho : len2));
+            float f = kind == 1 ? pow(1.0 + s, 1.0 / 3.0) : sqrt(1.0 + s);
+            float grow = s / (kind == 1 ? f * f + f + 1.0 : f + 1.0);
+#else
+            float s = max(-1.0, -o5.x / len2);
+            float grow = s / (sqrt(1.0 + s) + 1.0);
+#endif
+            moved = len2 > 0.0 ? p + across * grow : p;
+        } else if (kind <= 3) {
+            moved = p - (kind == 3 ? o5.x * sines.x + o5.y * sines.y : shift) * o2.xyz;
+        } else {
+            // Turn about the axis (2D: z) through the centre.
+            vec3 side = rel - dot(rel, o2.xyz) * o2.xyz;
+            vec3 turned = o0.xyz + (rel - side) + side * sines.y + cross(o2.xyz, side) * sines.x;
+            moved = rho > 0.0 ? turned : p;
+        }
+        p = moved;
     }
-    return -1;
+    return color;
 }
 
 // The linear colour seen at p (relative to uReference).
 vec3 inkColor(vec3 p) {
     int k = traceColor(p);
     if (k >= 0) return uInk[k];
-    if (uHasSource) {
-        vec2 w = (p + uReference).xy;
-        if (w.x >= 0.0 && w.y >= 0.0 && w.x <= uDesignSize.x && w.y <= uDesignSize.y)
-            return texture(uSource, w / uDesignSize).rgb;
-    }
+#if MARBLER_HAS_SOURCE
+    vec2 w = (p + uReference).xy;
+    if (w.x >= 0.0 && w.y >= 0.0 && w.x <= uDesignSize.x && w.y <= uDesignSize.y)
+        return texture(uSource, w / uDesignSize).rgb;
+#endif
     return uInk[16];
 }
 

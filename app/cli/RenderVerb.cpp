@@ -46,7 +46,9 @@ options:
   --mesh NAME|FILE          show a solid genome on an object: sphere, cube, torus, vase, teapot
                             or a mesh file (uses the GL back end; needs --view)
   --view YAW,PITCH          orbit camera angles in degrees for --mesh
-  --supersample 1|3|5       supersampling of --mesh renders (default 3)
+  --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
+  --cut NX,NY,NZ,OFFSET     cut the --mesh object open: the part where NX*x + NY*y + NZ*z >
+                            OFFSET (design coordinates) is removed, showing the marbled inside
   --progress                show progress on stderr even when it is not a terminal
   --quiet                   no progress line
   -h, --help                this text
@@ -144,7 +146,7 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
 int render(std::span<const std::string> words) {
     Args args = parseArgs(words,
                           {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
-                           "supersample", "threads"},
+                           "supersample", "cut", "threads"},
                           {"gpu", "quiet", "progress", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << Help;
@@ -182,8 +184,13 @@ int render(std::span<const std::string> words) {
     }
     const bool meshMode = args.has("mesh");
     if (meshMode && !args.has("view")) throw InputError("--mesh needs --view YAW,PITCH");
-    if (!meshMode && (args.has("view") || args.has("supersample")))
-        throw InputError(std::string("--") + (args.has("view") ? "view" : "supersample") + " only applies with --mesh");
+    for (const char* meshOnly : {"view", "supersample", "cut"})
+        if (!meshMode && args.has(meshOnly)) throw InputError(std::string("--") + meshOnly + " only applies with --mesh");
+    if (auto cut = args.get("cut")) {
+        std::vector<double> plane = parseNumberList("cut", *cut, 4);
+        if (plane[0] == 0.0 && plane[1] == 0.0 && plane[2] == 0.0)
+            throw InputError("--cut: the plane's normal NX,NY,NZ must not be zero (got '" + *cut + "')");
+    }
 
     const std::string genomeName = args.positional[0];
     std::vector<std::string> warnings;
@@ -269,6 +276,10 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
             mesh.supersample = parseIntOption(args, "supersample", 3, 1, 5);
             if (mesh.supersample != 1 && mesh.supersample != 3 && mesh.supersample != 5)
                 throw InputError("--supersample: must be 1, 3 or 5 (got " + *args.get("supersample") + ")");
+            if (auto cut = args.get("cut")) {
+                std::vector<double> plane = parseNumberList("cut", *cut, 4);
+                mesh.cut = gl::CutPlane{{plane[0], plane[1], plane[2]}, plane[3]};
+            }
             image = gpu.renderMesh(genome, mesh);
         } else {
             checkRenderSettings(genome, settings);

@@ -24,9 +24,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <numbers>
 
@@ -71,6 +74,17 @@ bool platformUsable(std::string& why) {
     return false;
 }
 
+/// The message handler of a QGuiApplication this library made itself: drops debug, info and
+/// warning messages (e.g. "QStandardPaths: XDG_RUNTIME_DIR not set"), writes critical and fatal
+/// ones as a single line on stderr.
+void headlessMessages(QtMsgType type, const QMessageLogContext&, const QString& message) {
+    if (type != QtCriticalMsg && type != QtFatalMsg) return;
+    std::string line = message.toStdString();
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    std::fprintf(stderr, "marbler: Qt: %s\n", line.c_str());
+    std::fflush(stderr);
+}
+
 QSurfaceFormat requestedFormat(bool core43) {
     QSurfaceFormat format;
     format.setRenderableType(QSurfaceFormat::OpenGL);
@@ -97,6 +111,9 @@ ContextParts makeContext(std::string& why) {
             return {};
         }
         if (!platformUsable(why)) return {};
+        // Headless (the CLI, tests, benchmarks): Qt's chatter would break the contract of a clean
+        // stderr on success, so only its critical and fatal messages get through, one line each.
+        if (!nonEmptyEnv("MARBLER_QT_MESSAGES")) qInstallMessageHandler(headlessMessages);
         // Made once and never destroyed: a library cannot know when its caller's last GL use is,
         // and tearing Qt down in static destructors is unsafe.
         static int argc = 1;
@@ -132,6 +149,36 @@ ContextParts makeContext(std::string& why) {
     return {};
 }
 
+/// Renderers still alive, torn down by an exit handler: a renderer held in a static would
+/// otherwise be destroyed after the driver's own exit handlers (Mesa stops its threads at exit)
+/// and crash the process on its way out. The handler is registered after the first context is
+/// made, so it runs before the driver's handlers and before the destructors of statics made
+/// earlier.
+struct LiveRenderers {
+    std::mutex mutex;
+    std::map<const void*, std::function<void()>> teardown;
+};
+
+LiveRenderers& liveRenderers() {
+    static auto* live = new LiveRenderers; // never destroyed: used by the exit handler
+    return *live;
+}
+
+void tearDownAtExit() {
+    LiveRenderers& live = liveRenderers();
+    std::map<const void*, std::function<void()>> pending;
+    {
+        std::lock_guard lock(live.mutex);
+        pending.swap(live.teardown);
+    }
+    for (auto& [key, teardown] : pending) teardown();
+}
+
+void registerExitHandler() {
+    static std::once_flag once;
+    std::call_once(once, [] { std::atexit(tearDownAtExit); });
+}
+
 struct Availability {
     bool ok = false;
     std::string reason;
@@ -142,6 +189,7 @@ Availability probeOnce() {
     ContextParts parts = makeContext(result.reason);
     result.ok = parts.gl != nullptr;
     if (parts.context) parts.context->doneCurrent();
+    if (result.ok) registerExitHandler();
     return result;
 }
 
@@ -172,11 +220,12 @@ QImage loadSourceImage(const Genome& genome) {
 struct GlRenderer::Impl {
     ContextParts parts;
     QOpenGLFunctions_4_3_Core* gl = nullptr;
-    GlProgram raster;
+    GlProgram raster[4]; // by dimension and source image (buildRaster)
     GlProgram gbuffer;
     GlProgram mesh;
     GLuint emptyVao = 0;
     GLuint opBuffer = 0;
+    GLuint opTexture = 0; // the buffer texture over opBuffer
     GLuint sourceTexture = 0;
 
     // The last mesh, kept on the GPU: re-rendering from another angle uploads nothing.
@@ -196,10 +245,22 @@ struct GlRenderer::Impl {
         return value;
     }
 
-    void buildRaster() {
-        if (raster.id()) return;
-        raster = GlProgram(*gl, "raster", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
-                                           {GL_FRAGMENT_SHADER, assembledShader("raster.frag")}});
+    /// The shared shader source with the variant's switches after its #version line: the
+    /// dimension (a flat design never pays for the volume law's cube root) and whether a source
+    /// image is sampled. Four raster variants at most, so compiling them costs nothing per genome.
+    static std::string withDefines(std::string source, int dimension, bool hasSource) {
+        std::string defines = "#define MARBLER_DIMENSION " + std::to_string(dimension) + "\n#define MARBLER_HAS_SOURCE "
+            + (hasSource ? "1" : "0") + "\n";
+        source.insert(source.find('\n') + 1, defines);
+        return source;
+    }
+
+    GlProgram& buildRaster(int dimension, bool hasSource) {
+        GlProgram& program = raster[(dimension == 3 ? 2 : 0) + (hasSource ? 1 : 0)];
+        if (!program.id())
+            program = GlProgram(*gl, "raster", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
+                                                {GL_FRAGMENT_SHADER, withDefines(assembledShader("raster.frag"), dimension, hasSource)}});
+        return program;
     }
 
     void buildMesh() {
@@ -208,7 +269,7 @@ struct GlRenderer::Impl {
                                                  {GL_FRAGMENT_SHADER, assembledShader("gbuffer.frag")}});
         if (!mesh.id())
             mesh = GlProgram(*gl, "mesh", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
-                                           {GL_FRAGMENT_SHADER, assembledShader("mesh.frag")}});
+                                           {GL_FRAGMENT_SHADER, withDefines(assembledShader("mesh.frag"), 3, false)}});
     }
 
     /// The genome's operations relative to `reference` into the storage buffer, and the inks,
@@ -217,9 +278,17 @@ struct GlRenderer::Impl {
                       const glm::dvec3& reference) {
         std::vector<float> packed = packOps(ops, reference);
         if (packed.empty()) packed.assign(PackedOpFloats, 0.0f); // a bound buffer may not be empty
-        gl->glBindBuffer(GL_SHADER_STORAGE_BUFFER, opBuffer);
-        gl->glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(packed.size() * sizeof(float)), packed.data(), GL_STREAM_DRAW);
-        gl->glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, opBuffer);
+        if (packed.size() / 4 > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE)))
+            throw RuntimeFailure("GL: " + std::to_string(ops.size()) + " operations exceed this driver's buffer texture limit");
+        gl->glBindBuffer(GL_TEXTURE_BUFFER, opBuffer);
+        gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(packed.size() * sizeof(float)), packed.data(), GL_STREAM_DRAW);
+        gl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
+        // Unit 3: 0 and 1 hold the mesh G-buffer, 2 the source image.
+        gl->glActiveTexture(GL_TEXTURE3);
+        gl->glBindTexture(GL_TEXTURE_BUFFER, opTexture);
+        gl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, opBuffer);
+        gl->glActiveTexture(GL_TEXTURE0);
+        gl->glUniform1i(program.uniform("uOps"), 3);
         gl->glUniform1i(program.uniform("uOpCount"), GLint(ops.size()));
         std::vector<float> inks(17 * 3, 0.0f);
         for (std::size_t k = 0; k < genome.palette.size() && k < 16; ++k) {
@@ -300,8 +369,26 @@ struct GlRenderer::Impl {
         meshName = name;
     }
 
+    /// Frees the GL objects and the context; afterwards the renderer holds nothing. At exit, a
+    /// context that cannot be made current here (another thread's) is left to the process's end.
+    void shutdown(bool atExit) {
+        if (!parts.context) return;
+        if (parts.context->makeCurrent(parts.surface.get())) {
+            release();
+            parts.context->doneCurrent();
+        } else if (atExit) {
+            (void)parts.context.release();
+            (void)parts.surface.release();
+        }
+        parts.context.reset();
+        parts.surface.reset();
+        parts.gl = nullptr;
+        gl = nullptr;
+    }
+
     void release() {
-        raster.release();
+        for (GlProgram& program : raster) program.release();
+        if (opTexture) gl->glDeleteTextures(1, &opTexture);
         gbuffer.release();
         mesh.release();
         if (emptyVao) gl->glDeleteVertexArrays(1, &emptyVao);
@@ -330,13 +417,23 @@ GlRenderer::GlRenderer()
     mImpl->gl = mImpl->parts.gl;
     mImpl->gl->glGenVertexArrays(1, &mImpl->emptyVao);
     mImpl->gl->glGenBuffers(1, &mImpl->opBuffer);
+    mImpl->gl->glGenTextures(1, &mImpl->opTexture);
+    registerExitHandler();
+    LiveRenderers& live = liveRenderers();
+    std::lock_guard lock(live.mutex);
+    Impl* impl = mImpl.get();
+    live.teardown[impl] = [impl] { impl->shutdown(true); };
 }
 
 GlRenderer::~GlRenderer() {
-    if (mImpl && mImpl->parts.context && mImpl->parts.context->makeCurrent(mImpl->parts.surface.get())) {
-        mImpl->release();
-        mImpl->parts.context->doneCurrent();
+    if (!mImpl) return;
+    {
+        LiveRenderers& live = liveRenderers();
+        std::lock_guard lock(live.mutex);
+        // Gone from the registry: the exit handler has torn this renderer down already.
+        if (live.teardown.erase(mImpl.get()) == 0) return;
     }
+    mImpl->shutdown(false);
 }
 
 std::string GlRenderer::rendererName() const {
@@ -374,8 +471,9 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
     Impl& d = *mImpl;
     d.makeCurrent();
     auto* gl = d.gl;
-    d.buildRaster();
-    gl->glUseProgram(d.raster.id());
+    bool hasSource = genome.dimension == 2 && genome.source.has_value();
+    GlProgram& raster = d.buildRaster(genome.dimension, hasSource);
+    gl->glUseProgram(raster.id());
 
     std::vector<float> offsets, weights;
     for (std::size_t s = 0; s < aa.offsets.size(); ++s) {
@@ -383,14 +481,12 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
         offsets.push_back(float(aa.offsets[s].y));
         weights.push_back(float(aa.weights[s]));
     }
-    gl->glUniform1i(d.raster.uniform("uSampleCount"), GLint(weights.size()));
-    gl->glUniform2fv(d.raster.uniform("uOffsets"), GLsizei(weights.size()), offsets.data());
-    gl->glUniform1fv(d.raster.uniform("uWeights"), GLsizei(weights.size()), weights.data());
+    gl->glUniform1i(raster.uniform("uSampleCount"), GLint(weights.size()));
+    gl->glUniform2fv(raster.uniform("uOffsets"), GLsizei(weights.size()), offsets.data());
+    gl->glUniform1fv(raster.uniform("uWeights"), GLsizei(weights.size()), weights.data());
 
-    bool hasSource = genome.dimension == 2 && genome.source.has_value();
-    gl->glUniform1i(d.raster.uniform("uHasSource"), hasSource ? 1 : 0);
     // Unit 2: units 0 and 1 get rebound by the targets and the mesh G-buffer.
-    gl->glUniform1i(d.raster.uniform("uSource"), 2);
+    gl->glUniform1i(raster.uniform("uSource"), 2);
     if (hasSource) {
         QImage image = loadSourceImage(genome);
         if (!d.sourceTexture) gl->glGenTextures(1, &d.sourceTexture);
@@ -439,11 +535,11 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
                 // samples are, however deep the region zooms.
                 glm::dvec3 reference = tileOrigin + 0.5 * double(w) * frame.du + 0.5 * double(h) * frame.dv;
                 if (genome.dimension == 2) reference.z = 0.0;
-                d.uploadGenome(d.raster, ops, genome, reference);
+                d.uploadGenome(raster, ops, genome, reference);
                 glm::vec3 origin(tileOrigin - reference), du(frame.du), dv(frame.dv);
-                gl->glUniform3fv(d.raster.uniform("uOrigin"), 1, &origin.x);
-                gl->glUniform3fv(d.raster.uniform("uDu"), 1, &du.x);
-                gl->glUniform3fv(d.raster.uniform("uDv"), 1, &dv.x);
+                gl->glUniform3fv(raster.uniform("uOrigin"), 1, &origin.x);
+                gl->glUniform3fv(raster.uniform("uDu"), 1, &du.x);
+                gl->glUniform3fv(raster.uniform("uDv"), 1, &dv.x);
                 gl->glViewport(0, 0, w, h);
                 gl->glDrawArrays(GL_TRIANGLES, 0, 3);
                 gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -583,7 +679,6 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
         gl->glUseProgram(d.mesh.id());
         std::vector<PreparedOp> ops = prepare(genome);
         d.uploadGenome(d.mesh, ops, genome, reference);
-        gl->glUniform1i(d.mesh.uniform("uHasSource"), 0);
         gl->glActiveTexture(GL_TEXTURE0);
         gl->glBindTexture(GL_TEXTURE_2D, textures[0]);
         gl->glActiveTexture(GL_TEXTURE1);

@@ -1,6 +1,6 @@
 #pragma once
-/// The genome as shader data: PreparedOp records packed as 8 vec4 (std430) per tool, in the
-/// layout tools.glsl documents.
+/// The genome as shader data: PreparedOp records packed as 7 vec4 (a buffer texture of RGBA32F)
+/// per tool, in the layout tools.glsl documents.
 
 #include "marbler/Tools.h"
 
@@ -11,7 +11,7 @@
 namespace marbler::gl {
 
 /// Floats per packed record.
-inline constexpr int PackedOpFloats = 32;
+inline constexpr int PackedOpFloats = 28;
 
 /// Packs `ops` (time order) with every position taken relative to `reference` (in double, before
 /// the cast to float), so the shader keeps float precision near the reference.

@@ -37,6 +37,14 @@ struct MeshSettings {
 
 /// An offscreen GL renderer. Owns a GL context, current on the thread that created it; use it
 /// from that thread only.
+///
+/// Lifetime: destroy every renderer before the QGuiApplication it runs under (an application
+/// that makes its own QGuiApplication must reset its renderers first). Where no
+/// QGuiApplication exists, the first renderer (or available()) makes one itself, never
+/// destroys it, and installs a message handler that keeps Qt's warnings off stderr (set
+/// MARBLER_QT_MESSAGES=1 to see them). Renderers still alive at exit (held in statics) are torn
+/// down by an exit handler that runs before the driver's own, so the process exits cleanly; a
+/// renderer must not be used after exit() has begun.
 class GlRenderer {
 public:
     /// Creates an offscreen OpenGL 4.3+ core context. Throws RuntimeFailure when none can be made
