@@ -14,6 +14,7 @@
 namespace {
 
 constexpr const char* Usage = R"(usage: marbler [GENOME...]            open the workbench (with these designs)
+       marbler --solid | --flat         open it breeding solid (3D) or flat (2D) designs
        marbler VERB [OPTIONS]           work headless (no display, no GPU needed)
 
 verbs:
@@ -59,11 +60,26 @@ int main(int argc, char** argv) {
             std::cerr << "marbler svg: vector output is not built yet in this version\n";
             return marbler::cli::ExitFailure;
         }
-        if (verb.starts_with("-")) {
-            std::cerr << "marbler: unknown option " << verb << " (see marbler --help)\n";
+    }
+#ifdef MARBLER_HAVE_GUI
+    // No verb: the words are for the window (genome files and its options). A bad option is
+    // reported here, on one line, before anything needs a display.
+    const marbler::ui::WorkbenchArgs windowArgs = marbler::ui::parseWorkbenchArgs(words);
+    if (!windowArgs.error.empty()) {
+        std::cerr << windowArgs.error << "\n";
+        return marbler::cli::ExitBadInput;
+    }
+    if (windowArgs.help) {
+        std::cout << Usage;
+        return marbler::cli::ExitOk;
+    }
+#else
+    for (const std::string& word : words)
+        if (word.starts_with("-")) {
+            std::cerr << "marbler: unknown option " << word << " (see marbler --help)\n";
             return marbler::cli::ExitBadInput;
         }
-    }
+#endif
     // No verb: genome files (or nothing) open the workbench.
     if (!hasDisplay()) {
         std::cout << "marbler: no display here, so the workbench window cannot open.\n"

@@ -154,7 +154,14 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     });
 }
 
-DesignDialog::~DesignDialog() { mRenderer->cancel(mKey); }
+DesignDialog::~DesignDialog() {
+    mRenderer->cancel(mKey);
+    // Closing the view stops its export; renderToFile leaves no partial file.
+    if (mExportThread) {
+        mExportCancel->store(true);
+        mExportThread->wait();
+    }
+}
 
 void DesignDialog::resizeEvent(QResizeEvent* event) {
     QDialog::resizeEvent(event);
@@ -202,18 +209,25 @@ void DesignDialog::exportImage() {
     if (file.isEmpty()) return;
     settings.setValue(QStringLiteral("files/exportDir"), QFileInfo(file).absolutePath());
 
+    exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi());
+}
+
+bool DesignDialog::saveTo(const QString& file) { return saveGenomeTo(this, mGenome, file); }
+
+bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi) {
+    if (mExportCancel) return false;
     RenderSettings render;
-    const QSize pixels = settingsDialog.pixels();
-    render.width = pixels.width();
-    render.height = pixels.height();
-    render.aa = settingsDialog.aa();
+    render.width = std::max(1, pixels.width());
+    render.height = std::max(1, pixels.height());
+    render.aa = aa.toStdString();
     if (mGenome.dimension == 3) render.slice = Slice{2, mGenome.size.z / 2.0};
     ExportOptions options;
-    options.dpi = settingsDialog.dpi();
+    options.dpi = dpi;
 
     // The export runs on its own thread; the dialog polls its progress so the worker never
     // touches a widget.
     auto cancel = std::make_shared<std::atomic<bool>>(false);
+    mExportCancel = cancel;
     auto progress = std::make_shared<std::atomic<double>>(0.0);
     auto error = std::make_shared<QString>();
     QThread* thread = QThread::create([genome = mGenome, render, file, options, cancel, progress, error] {
@@ -228,22 +242,34 @@ void DesignDialog::exportImage() {
         }
     });
     thread->setParent(this);
+    mExportThread = thread;
     auto* dialog = new QProgressDialog(tr("Exporting %1…").arg(QFileInfo(file).fileName()), tr("Cancel"), 0, 1000, this);
     dialog->setWindowModality(Qt::WindowModal);
     dialog->setMinimumDuration(300);
+    dialog->setAutoReset(false);
+    dialog->setAutoClose(false);
     auto* poll = new QTimer(dialog);
     connect(poll, &QTimer::timeout, dialog, [dialog, progress] { dialog->setValue(int(progress->load() * 999)); });
     connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
     connect(thread, &QThread::finished, this, [this, thread, dialog, cancel, error, file] {
         dialog->deleteLater();
         thread->deleteLater();
+        mExportCancel.reset();
+        mExportThread = nullptr;
+        const bool written = error->isEmpty() && !cancel->load();
         if (!error->isEmpty())
             reportError(this, tr("Cannot export the image"), *error);
-        else if (!cancel->load())
+        else if (written)
             setWindowTitle(tr("Exported %1").arg(QFileInfo(file).fileName()));
+        emit exportFinished(file, written, *error);
     });
     poll->start(100);
     thread->start();
+    return true;
+}
+
+void DesignDialog::cancelExport() {
+    if (mExportCancel) mExportCancel->store(true);
 }
 
 bool saveGenomeWithDialog(QWidget* parent, const Genome& genome) {
@@ -256,6 +282,10 @@ bool saveGenomeWithDialog(QWidget* parent, const Genome& genome) {
     if (file.isEmpty()) return false;
     if (!file.endsWith(QStringLiteral(".json"))) file += QStringLiteral(".marble.json");
     settings.setValue(QStringLiteral("files/saveDir"), QFileInfo(file).absolutePath());
+    return saveGenomeTo(parent, genome, file);
+}
+
+bool saveGenomeTo(QWidget* parent, const Genome& genome, const QString& file) {
     try {
         saveGenome(genome, file.toStdString());
     } catch (const Error& e) {

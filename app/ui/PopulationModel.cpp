@@ -162,6 +162,11 @@ void PopulationModel::setCellLocks(int index, const Locks& locks) {
 }
 
 void PopulationModel::pushGeneration(Generation generation) {
+    if (mEmptyStart) {
+        // The first designs replace the empty placeholder: they are generation 1.
+        mEmptyStart = false;
+        mCurrent = -1;
+    }
     mHistory.resize(std::size_t(mCurrent + 1));
     generation.number = mCurrent + 1;
     mHistory.push_back(std::move(generation));

@@ -25,7 +25,7 @@ struct Generation {
     std::array<std::optional<Genome>, CellCount> cells;
     std::array<bool, CellCount> selected{};
     QString description; ///< "Alter of 1 parent", "New random population", "Opened a.marble.json"
-    int number = 0;      ///< position in the session's history, 0 for the first
+    int number = 0;      ///< position in the session's history, 0 for the first (shown as "#1")
     std::vector<int> parentCells; ///< the cells whose designs this generation was bred from
 };
 
@@ -38,7 +38,9 @@ struct Favourite {
 /// The population, its history and the favourites. Every change that alters the grid's designs
 /// (breeding, a new random population, loading a file, bringing back a favourite) adds a
 /// generation, so back/forward undoes and redoes any of them; forward history is dropped when a
-/// new change is made after going back.
+/// new change is made after going back. A new model holds an empty placeholder grid that is not
+/// a generation: the first designs (a random population, opened files) replace it and become
+/// generation 1, so there is never an empty grid to go back to.
 class PopulationModel : public QObject {
     Q_OBJECT
 public:
@@ -83,6 +85,8 @@ public:
     const Generation& current() const { return mHistory[std::size_t(mCurrent)]; }
     const std::vector<Generation>& history() const { return mHistory; }
     int currentIndex() const { return mCurrent; }
+    /// Whether no design has been put in yet (the placeholder before generation 1).
+    bool isEmptyWorkbench() const { return mEmptyStart; }
     bool canGoBack() const { return mCurrent > 0; }
     bool canGoForward() const { return mCurrent + 1 < int(mHistory.size()); }
     void goBack();
@@ -122,6 +126,7 @@ private:
     std::uint64_t mSessionSeed = 1;
     std::vector<Generation> mHistory;
     int mCurrent = 0;
+    bool mEmptyStart = true;
     QString mFavouritesFolder;
     std::vector<Favourite> mFavourites;
 };

@@ -7,6 +7,7 @@
 #include <QMetaObject>
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <mutex>
 
@@ -22,6 +23,14 @@ struct RenderQueue {
     };
     std::mutex mutex;
     std::map<std::uint64_t, Job> jobs;
+    /// The job the worker is rendering (ticket 0: none), and the flag that stops its CPU
+    /// render early once it is superseded, cancelled or the service closes.
+    std::uint64_t inFlightKey = 0, inFlightTicket = 0;
+    std::atomic<bool> abort{false};
+    /// Under the mutex: stops the in-flight render when it is for this key.
+    void abortIfInFlight(std::uint64_t key) {
+        if (inFlightTicket != 0 && inFlightKey == key) abort.store(true, std::memory_order_relaxed);
+    }
 };
 
 /// Lives on the service's thread; owns the GL renderer, which must stay on the thread that made it.
@@ -58,18 +67,26 @@ public:
                 if (it == mQueue->jobs.end()) it = mQueue->jobs.begin();
                 key = it->first;
                 job = it->second;
+                mQueue->inFlightKey = key;
+                mQueue->inFlightTicket = job.ticket;
+                mQueue->abort.store(false, std::memory_order_relaxed);
             }
             const bool final = job.previewDone;
             QImage image;
             QString error;
+            bool aborted = false;
             try {
                 image = renderPass(job.request, final);
+            } catch (const Cancelled&) {
+                aborted = true; // superseded or cancelled: a newer job (if any) is waiting
             } catch (const std::exception& e) {
                 error = QString::fromStdString(e.what());
             }
             bool current = false;
             {
                 std::lock_guard lock(mQueue->mutex);
+                mQueue->inFlightTicket = 0;
+                if (aborted) continue;
                 auto it = mQueue->jobs.find(key);
                 if (it != mQueue->jobs.end() && it->second.ticket == job.ticket) {
                     current = true;
@@ -117,7 +134,9 @@ private:
                 // A driver failure on one design should not blank the grid: the CPU can do it.
             }
         }
-        return toQImage(CpuRenderer(genome).render(settings));
+        RenderControl control;
+        control.cancel = &mQueue->abort;
+        return toQImage(CpuRenderer(genome).render(settings, &control));
     }
 
     std::shared_ptr<RenderQueue> mQueue;
@@ -144,6 +163,7 @@ RenderService::~RenderService() {
     {
         std::lock_guard lock(mQueue->mutex);
         mQueue->jobs.clear();
+        mQueue->abort.store(true, std::memory_order_relaxed);
     }
     mThread.quit();
     mThread.wait();
@@ -154,6 +174,7 @@ std::uint64_t RenderService::request(std::uint64_t key, RenderRequest request) {
     {
         std::lock_guard lock(mQueue->mutex);
         mQueue->jobs[key] = RenderQueue::Job{ticket, std::move(request), false};
+        mQueue->abortIfInFlight(key);
     }
     mOutstanding[key] = ticket;
     QMetaObject::invokeMethod(mWorker, &RenderWorker::work, Qt::QueuedConnection);
@@ -164,6 +185,7 @@ void RenderService::cancel(std::uint64_t key) {
     {
         std::lock_guard lock(mQueue->mutex);
         mQueue->jobs.erase(key);
+        mQueue->abortIfInFlight(key);
     }
     if (mOutstanding.remove(key) && mOutstanding.isEmpty()) emit becameIdle();
 }

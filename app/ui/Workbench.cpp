@@ -1,22 +1,38 @@
 #include "ui/Workbench.h"
 
 #include "ui/RenderService.h"
+#include "ui/StartDialog.h"
 #include "ui/WorkbenchWindow.h"
 
 #include <QApplication>
-#include <QCommandLineParser>
-#include <QSettings>
+#include <QStringList>
 #include <QTimer>
 
+#include <algorithm>
+#include <array>
+#include <charconv>
 #include <iostream>
 #include <memory>
+#include <string_view>
 
 namespace marbler::ui {
 
 namespace {
 
-/// `--screenshot FILE`: breed one generation from the middle design, wait for every final
-/// image, save the window and quit. Used to make docs/screenshot.png reproducibly.
+/// Qt's own options that take a value (QGuiApplication / QApplication), with one or two dashes.
+constexpr std::array QtValueOptions{"platform", "platformpluginpath", "platformtheme", "plugin", "qwindowgeometry",
+                                    "qwindowtitle", "qwindowicon", "style", "stylesheet", "session", "display",
+                                    "geometry", "title"};
+/// Qt's own options without a value.
+constexpr std::array QtFlagOptions{"reverse", "widgetcount", "nograb", "dograb", "sync"};
+
+template <std::size_t N>
+bool contains(const std::array<const char*, N>& names, std::string_view name) {
+    return std::any_of(names.begin(), names.end(), [&](const char* n) { return name == n; });
+}
+
+/// `--screenshot FILE`: breed from the middle design, wait for every final image, save the
+/// window and quit. Used to make docs/screenshot.png reproducibly.
 void takeScreenshot(WorkbenchWindow& window, RenderService& service, const QString& file, int* status) {
     auto done = std::make_shared<bool>(false);
     auto grab = [&window, &service, file, status, done] {
@@ -31,12 +47,18 @@ void takeScreenshot(WorkbenchWindow& window, RenderService& service, const QStri
     };
     auto breedThenGrab = [&window, &service, grab] {
         if (window.model()->cell(4)) {
+            // Two generations: two random designs recombined, then one offspring altered.
             window.model()->clearSelection();
+            window.model()->setSelected(0, true);
             window.model()->setSelected(4, true);
+            window.applyOperator(GeneticOperator::Recombine);
+            window.model()->clearSelection();
+            window.model()->setSelected(2, true);
             window.applyOperator(GeneticOperator::Alter);
             // Show a stocked shelf, but only into a folder chosen for the picture.
             if (!qEnvironmentVariableIsEmpty("MARBLER_FAVOURITES_DIR")) {
                 window.keepFavourite(0);
+                window.keepFavourite(5);
                 window.keepFavourite(8);
             }
         }
@@ -50,48 +72,120 @@ void takeScreenshot(WorkbenchWindow& window, RenderService& service, const QStri
 
 } // namespace
 
+WorkbenchArgs parseWorkbenchArgs(std::span<const std::string> words) {
+    WorkbenchArgs args;
+    bool optionsEnded = false;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+        const std::string& word = words[i];
+        if (optionsEnded || word.size() < 2 || word[0] != '-') {
+            args.files.push_back(word);
+            continue;
+        }
+        if (word == "--") {
+            optionsEnded = true;
+            continue;
+        }
+        const bool doubleDash = word.starts_with("--");
+        std::string name = word.substr(doubleDash ? 2 : 1);
+        std::optional<std::string> inlineValue;
+        if (const auto eq = name.find('='); eq != std::string::npos) {
+            inlineValue = name.substr(eq + 1);
+            name.resize(eq);
+        }
+        const auto value = [&]() -> std::optional<std::string> {
+            if (inlineValue) return inlineValue;
+            if (i + 1 < words.size()) return words[++i];
+            args.error = "marbler: " + word + " needs a value";
+            return std::nullopt;
+        };
+        if (word == "--help" || word == "-h") {
+            args.help = true;
+        } else if (doubleDash && name == "screenshot") {
+            const auto file = value();
+            if (!file) return args;
+            if (file->empty()) {
+                args.error = "marbler: --screenshot needs a file name";
+                return args;
+            }
+            args.screenshot = *file;
+        } else if (doubleDash && name == "seed") {
+            const auto text = value();
+            if (!text) return args;
+            unsigned long long seed = 0;
+            const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), seed);
+            if (ec != std::errc() || end != text->data() + text->size() || text->empty()) {
+                args.error = "marbler: --seed needs a whole number, not '" + *text + "'";
+                return args;
+            }
+            args.seed = seed;
+        } else if (doubleDash && (name == "solid" || name == "flat") && !inlineValue) {
+            args.dimension = name == "solid" ? 3 : 2;
+        } else if (contains(QtValueOptions, name)) {
+            if (!inlineValue && !value()) return args; // Qt reads the value itself
+        } else if (contains(QtFlagOptions, name) && !inlineValue) {
+        } else {
+            args.error = "marbler: unknown option " + word + " (see marbler --help)";
+            return args;
+        }
+    }
+    return args;
+}
+
+void startSession(WorkbenchWindow& window, const StartOptions& options) {
+    if (!options.files.empty()) {
+        QStringList files;
+        for (const std::string& f : options.files) files << QString::fromStdString(f);
+        window.openFiles(files);
+    }
+    // Opened designs are generation 1; with none (no files, or none that loaded) a random one is.
+    if (!window.model()->isEmptyWorkbench()) return;
+    StartChoice choice = lastStartChoice();
+    if (options.dimension) {
+        choice.dimension = *options.dimension;
+    } else if (options.ask && askStartChoice()) {
+        if (const auto chosen = chooseStart(&window, choice)) choice = *chosen;
+    }
+    if (choice.dimension == 3) window.setMesh(choice.mesh);
+    window.newRandomPopulation(choice.dimension);
+}
+
 int runWorkbench(int argc, char** argv) {
+    const std::vector<std::string> words(argv + std::min(argc, 1), argv + argc);
+    const WorkbenchArgs args = parseWorkbenchArgs(words);
+    if (!args.error.empty()) {
+        std::cerr << args.error << "\n";
+        return 2;
+    }
+
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("Marbler"));
     QApplication::setApplicationName(QStringLiteral("Marbler"));
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
 
-    QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Marbler evolution workbench"));
-    QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("save a picture of the window and quit"),
-                                  QStringLiteral("FILE"));
-    screenshot.setFlags(QCommandLineOption::HiddenFromHelp);
-    QCommandLineOption seed(QStringLiteral("seed"), QStringLiteral("the session seed"), QStringLiteral("N"));
-    seed.setFlags(QCommandLineOption::HiddenFromHelp);
-    QCommandLineOption solid(QStringLiteral("solid"), QStringLiteral("start with a solid population"));
-    solid.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOptions({screenshot, seed, solid});
-    parser.addPositionalArgument(QStringLiteral("genome"), QStringLiteral("designs to open"), QStringLiteral("[GENOME...]"));
-    parser.process(app);
-
-    // main() treats a leading option as an unknown verb, so the hidden options can also come
-    // from the environment: MARBLER_SCREENSHOT=FILE, MARBLER_SEED=N, MARBLER_SOLID=1.
-    QString screenshotFile = parser.value(screenshot);
+    // The hidden options can also come from the environment: MARBLER_SCREENSHOT=FILE,
+    // MARBLER_SEED=N, MARBLER_SOLID=1 (or 0 for flat), MARBLER_NO_START_DIALOG=1.
+    QString screenshotFile = QString::fromStdString(args.screenshot);
     if (screenshotFile.isEmpty()) screenshotFile = qEnvironmentVariable("MARBLER_SCREENSHOT");
-    QString seedText = parser.value(seed);
-    if (seedText.isEmpty()) seedText = qEnvironmentVariable("MARBLER_SEED");
-    const bool startSolid = parser.isSet(solid) || qEnvironmentVariableIntValue("MARBLER_SOLID") == 1;
+    std::optional<unsigned long long> seed = args.seed;
+    if (!seed && !qEnvironmentVariableIsEmpty("MARBLER_SEED")) seed = qEnvironmentVariable("MARBLER_SEED").toULongLong();
+    StartOptions start;
+    start.files = args.files;
+    start.dimension = args.dimension;
+    if (!start.dimension && !qEnvironmentVariableIsEmpty("MARBLER_SOLID"))
+        start.dimension = qEnvironmentVariableIntValue("MARBLER_SOLID") == 1 ? 3 : 2;
+    start.ask = screenshotFile.isEmpty() && qEnvironmentVariableIntValue("MARBLER_NO_START_DIALOG") != 1;
 
     RenderService service;
     WorkbenchWindow window(&service);
-    if (!seedText.isEmpty()) window.model()->setSessionSeed(seedText.toULongLong());
-    const QStringList files = parser.positionalArguments();
-    if (!files.isEmpty()) window.openFiles(files);
-    if (!window.model()->cell(0) && window.model()->history().size() <= 1) {
-        const int dimension = startSolid ? 3 : QSettings().value(QStringLiteral("population/dimension"), 2).toInt();
-        window.newRandomPopulation(dimension);
-    }
+    if (seed) window.model()->setSessionSeed(*seed);
     int status = 0;
     if (!screenshotFile.isEmpty()) {
         window.resize(1280, 900);
         takeScreenshot(window, service, screenshotFile, &status);
     }
     window.show();
+    // Asked over the shown window, so the question sits on the workbench it sets up.
+    startSession(window, start);
     const int result = QApplication::exec();
     return status != 0 ? status : result;
 }

@@ -6,6 +6,7 @@
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
 #include "ui/RenderService.h"
+#include "ui/StartDialog.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -235,7 +236,7 @@ void WorkbenchWindow::buildActions() {
     bar->addAction(newRandom);
 
     mMesh = new QComboBox(bar);
-    for (const char* name : {"vase", "sphere", "cube", "torus", "teapot"}) mMesh->addItem(QString::fromLatin1(name));
+    mMesh->addItems(meshNames());
     mMesh->setToolTip(tr("The object solid designs are shown on (drag in a cell to turn it)"));
     connect(mMesh, &QComboBox::currentTextChanged, this, [this](const QString& mesh) {
         QSettings().setValue(QStringLiteral("view/mesh"), mesh);
@@ -256,6 +257,12 @@ void WorkbenchWindow::buildDocks() {
     list->setIconSize(QSize(ThumbnailSide, ThumbnailSide));
     list->setResizeMode(QListView::Adjust);
     list->setMovement(QListView::Static);
+    // A fixed grid: thumbnails arrive after the items, and the names vary in length, so items
+    // laid out by their own size would overlap.
+    list->setGridSize(QSize(ThumbnailSide + 56, ThumbnailSide + 30));
+    list->setUniformItemSizes(true);
+    list->setWordWrap(false);
+    list->setTextElideMode(Qt::ElideRight);
     list->setDragEnabled(true);
     list->setDragDropMode(QAbstractItemView::DragOnly);
     list->setContextMenuPolicy(Qt::CustomContextMenu);
@@ -350,6 +357,10 @@ void WorkbenchWindow::updateActions() {
     mBack->setEnabled(mModel->canGoBack());
     mForward->setEnabled(mModel->canGoForward());
     const auto& gen = mModel->current();
+    if (mModel->isEmptyWorkbench()) {
+        statusBar()->showMessage(tr("No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)"));
+        return;
+    }
     statusBar()->showMessage(tr("Generation %1 of %2: %3 — %4 selected")
                                  .arg(mModel->currentIndex() + 1)
                                  .arg(mModel->history().size())
@@ -375,7 +386,8 @@ void WorkbenchWindow::updateLineage() {
     }
     auto* generations = new QTreeWidgetItem(mLineageTree, {tr("Generations")});
     const auto& history = mModel->history();
-    for (std::size_t k = 0; k < history.size(); ++k) {
+    // The empty placeholder before the first designs is no generation.
+    for (std::size_t k = 0; k < history.size() && !mModel->isEmptyWorkbench(); ++k) {
         QStringList parents;
         for (int i : history[k].parentCells) parents << tr("cell %1").arg(i + 1);
         auto* item = new QTreeWidgetItem(generations, {tr("#%1").arg(k + 1), history[k].description,
@@ -393,10 +405,14 @@ void WorkbenchWindow::updateLineage() {
 void WorkbenchWindow::updateFavourites() {
     mFavouritesList->clear();
     const auto& favourites = mModel->favourites();
+    // Until its thumbnail is rendered, a favourite shows a blank of the thumbnail's size.
+    QPixmap placeholder(ThumbnailSide, ThumbnailSide);
+    placeholder.fill(palette().color(QPalette::Mid));
     for (std::size_t i = 0; i < favourites.size(); ++i) {
         const LineageInfo info = lineageOf(favourites[i].genome);
         auto* item = new QListWidgetItem(info.name.isEmpty() ? shortId(info.id) : info.name, mFavouritesList);
-        item->setToolTip(favourites[i].file);
+        item->setToolTip(QStringLiteral("%1\n%2").arg(item->text(), favourites[i].file));
+        item->setIcon(placeholder);
         RenderRequest request;
         request.genome = favourites[i].genome;
         request.size = QSize(ThumbnailSide, ThumbnailSide);
@@ -658,12 +674,20 @@ void WorkbenchWindow::saveDesign(int index) {
     saveGenomeWithDialog(this, *g);
 }
 
-void WorkbenchWindow::openDesign(int index) {
+DesignDialog* WorkbenchWindow::openDesign(int index) {
     const Genome* g = mModel->cell(index);
-    if (!g) return;
+    if (!g) return nullptr;
     auto* dialog = new DesignDialog(*g, mRenderer, mMesh->currentText(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->show();
+    emit designOpened(dialog);
+    return dialog;
+}
+
+QString WorkbenchWindow::mesh() const { return mMesh->currentText(); }
+
+void WorkbenchWindow::setMesh(const QString& mesh) {
+    if (mMesh->findText(mesh) >= 0) mMesh->setCurrentText(mesh);
 }
 
 } // namespace marbler::ui

@@ -22,6 +22,7 @@ class QTreeWidget;
 namespace marbler::ui {
 
 class DesignCell;
+class DesignDialog;
 class RenderService;
 
 class WorkbenchWindow : public QMainWindow {
@@ -49,16 +50,24 @@ public:
     bool applyOperator(GeneticOperator op);
     /// A fresh random population (2: flat, 3: solid); remembers the choice.
     void newRandomPopulation(int dimension);
+    /// The object solid designs are shown on ("vase", "sphere", ...; see meshNames()).
+    QString mesh() const;
+    void setMesh(const QString& mesh);
     /// Keeps a cell's design on the favourites shelf.
     bool keepFavourite(int cell);
     /// Puts a favourite back into a cell (-1: the selected or first free cell).
     void restoreFavourite(int favourite, int cell = -1);
     /// Whether every cell shows its final image (for screenshots and tests).
     bool renderingDone() const;
+    /// Shows a cell's design large (double-click, Enter); returns the dialog (not modal, deleted
+    /// on close), or nullptr for an empty cell.
+    DesignDialog* openDesign(int index);
 
 signals:
     /// Every visible design has its final image.
     void renderingFinished();
+    /// A design was opened large (tests close the dialog).
+    void designOpened(DesignDialog* dialog);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -80,7 +89,6 @@ private:
     void onOrbit(int index, QPoint delta, bool finished);
     void showCellMenu(int index, const QPoint& globalPos);
     void showFavouriteMenu(const QPoint& pos);
-    void openDesign(int index);
     void openFileDialog();
     void saveDesign(int index);
     QString renderCacheKey(int cell) const;

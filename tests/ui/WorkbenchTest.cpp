@@ -8,20 +8,30 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/gl/GlRenderer.h"
 #include "ui/DesignCell.h"
+#include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
+#include "ui/StartDialog.h"
+#include "ui/Workbench.h"
 #include "ui/WorkbenchWindow.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
 #include <QDropEvent>
 #include <QFileInfo>
+#include <QImageReader>
 #include <QMimeData>
+#include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QUrl>
 
@@ -88,6 +98,41 @@ protected:
     std::unique_ptr<RenderService> mService;
     std::unique_ptr<WorkbenchWindow> mWindow;
 };
+
+TEST_F(WorkbenchTest, FirstRandomPopulationIsGenerationOne) {
+    ASSERT_EQ(model().history().size(), 1u);
+    EXPECT_EQ(model().currentIndex(), 0);
+    EXPECT_FALSE(model().isEmptyWorkbench());
+    EXPECT_FALSE(model().canGoBack());
+    EXPECT_FALSE(mWindow->backAction()->isEnabled());
+    EXPECT_FALSE(mWindow->forwardAction()->isEnabled());
+    QTreeWidget* tree = mWindow->lineageTree();
+    ASSERT_EQ(tree->topLevelItemCount(), 2);
+    ASSERT_EQ(tree->topLevelItem(1)->childCount(), 1);
+    EXPECT_EQ(tree->topLevelItem(1)->child(0)->text(0), QStringLiteral("#1"));
+    EXPECT_EQ(tree->topLevelItem(1)->child(0)->text(1), QStringLiteral("New random population"));
+}
+
+TEST(PopulationModelTest, OpenedDesignsAreGenerationOne) {
+    PopulationModel model;
+    EXPECT_TRUE(model.isEmptyWorkbench());
+    EXPECT_FALSE(model.canGoBack());
+    const auto used = model.placeDesigns({randomGenome(3, 2), randomGenome(4, 2)}, QStringLiteral("Opened two"));
+    EXPECT_EQ(used, (std::vector<int>{0, 1}));
+    EXPECT_FALSE(model.isEmptyWorkbench());
+    ASSERT_EQ(model.history().size(), 1u);
+    EXPECT_EQ(model.current().number, 0);
+    EXPECT_EQ(model.current().description, QStringLiteral("Opened two"));
+    EXPECT_FALSE(model.canGoBack());
+    // A second change is generation 2, and back returns to the opened designs, never to an
+    // empty grid.
+    model.newRandomPopulation(3);
+    ASSERT_EQ(model.history().size(), 2u);
+    model.goBack();
+    EXPECT_NE(model.cell(0), nullptr);
+    EXPECT_EQ(model.cell(2), nullptr);
+    EXPECT_FALSE(model.canGoBack());
+}
 
 TEST_F(WorkbenchTest, RandomPopulationFillsNineValidCells) {
     for (int i = 0; i < CellCount; ++i) {
@@ -159,7 +204,7 @@ TEST_F(WorkbenchTest, OperatorKeepsParentsAndFillsNineCells) {
         EXPECT_EQ(info.op, QStringLiteral("recombine"));
         EXPECT_TRUE(info.parents.contains(QString::fromStdString(idA)) || info.parents.contains(QString::fromStdString(idB)));
     }
-    EXPECT_EQ(model().history().size(), 3u);
+    EXPECT_EQ(model().history().size(), 2u) << "the random population is generation 1, the offspring 2";
 }
 
 TEST_F(WorkbenchTest, BreedingIsReproducibleFromTheSessionSeed) {
@@ -192,6 +237,9 @@ TEST_F(WorkbenchTest, BackAndForwardRestoreGenerationsExactly) {
     mWindow->backAction()->trigger();
     EXPECT_EQ(snapshot(model()), gen1);
     EXPECT_TRUE(model().isSelected(5)) << "a generation keeps the selection it was left with";
+    mWindow->backAction()->trigger();
+    EXPECT_EQ(snapshot(model()), gen0);
+    EXPECT_FALSE(mWindow->backAction()->isEnabled()) << "generation 1 is the first";
     mWindow->backAction()->trigger();
     EXPECT_EQ(snapshot(model()), gen0);
     mWindow->forwardAction()->trigger();
@@ -280,6 +328,253 @@ TEST_F(WorkbenchTest, LineageListsEveryCellAndGeneration) {
     ASSERT_EQ(tree->topLevelItemCount(), 2);
     EXPECT_EQ(tree->topLevelItem(0)->childCount(), CellCount);
     EXPECT_EQ(tree->topLevelItem(1)->childCount(), int(model().history().size()));
+    EXPECT_EQ(tree->topLevelItem(1)->childCount(), 2);
+}
+
+TEST_F(WorkbenchTest, EmptyWorkbenchListsNoGeneration) {
+    RenderService service(RenderService::Backend::Cpu);
+    WorkbenchWindow window(&service);
+    EXPECT_TRUE(window.model()->isEmptyWorkbench());
+    EXPECT_FALSE(window.backAction()->isEnabled());
+    ASSERT_EQ(window.lineageTree()->topLevelItemCount(), 2);
+    EXPECT_EQ(window.lineageTree()->topLevelItem(1)->childCount(), 0);
+}
+
+// The large view of a design: save and export.
+
+TEST_F(WorkbenchTest, LargeDesignSavesGenomeAtomically) {
+    ErrorCapture errors;
+    DesignDialog* dialog = mWindow->openDesign(3);
+    ASSERT_NE(dialog, nullptr);
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString file = dir.filePath(QStringLiteral("kept.marble.json"));
+    ASSERT_TRUE(dialog->saveTo(file));
+    EXPECT_EQ(loadGenome(file.toStdString()), *model().cell(3));
+    // Saving again replaces the file whole; no temporary is left beside it.
+    ASSERT_TRUE(dialog->saveTo(file));
+    EXPECT_EQ(loadGenome(file.toStdString()), *model().cell(3));
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("kept.marble.json")});
+    // A folder that does not exist is reported, and nothing is written.
+    EXPECT_FALSE(dialog->saveTo(dir.filePath(QStringLiteral("no/such/folder/x.marble.json"))));
+    EXPECT_EQ(errors.messages.size(), 1);
+    EXPECT_TRUE(errors.messages.isEmpty() || errors.messages.front().startsWith(QStringLiteral("Cannot save the design")));
+}
+
+TEST_F(WorkbenchTest, LargeDesignExportsImageAtTheChosenSize) {
+    ErrorCapture errors;
+    DesignDialog* dialog = mWindow->openDesign(1);
+    ASSERT_NE(dialog, nullptr);
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString file = dir.filePath(QStringLiteral("export.png"));
+    QSignalSpy finished(dialog, &DesignDialog::exportFinished);
+    ASSERT_TRUE(dialog->exportTo(file, QSize(96, 60), QStringLiteral("none"), 150.0));
+    EXPECT_TRUE(dialog->isExporting());
+    EXPECT_FALSE(dialog->exportTo(file, QSize(8, 8))) << "one export at a time";
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+    EXPECT_EQ(finished.front().at(0).toString(), file);
+    EXPECT_TRUE(finished.front().at(1).toBool()) << finished.front().at(2).toString().toStdString();
+    EXPECT_FALSE(dialog->isExporting());
+    EXPECT_TRUE(errors.messages.isEmpty());
+    QImageReader reader(file);
+    EXPECT_EQ(reader.size(), QSize(96, 60));
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("export.png")})
+        << "no temporary file remains";
+}
+
+TEST_F(WorkbenchTest, CancelledExportLeavesNoFile) {
+    ErrorCapture errors;
+    DesignDialog* dialog = mWindow->openDesign(2);
+    ASSERT_NE(dialog, nullptr);
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    QSignalSpy finished(dialog, &DesignDialog::exportFinished);
+    ASSERT_TRUE(dialog->exportTo(dir.filePath(QStringLiteral("big.png")), QSize(6000, 6000), QStringLiteral("grid4")));
+    dialog->cancelExport();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+    EXPECT_FALSE(finished.front().at(1).toBool());
+    EXPECT_TRUE(finished.front().at(2).toString().isEmpty()) << "a cancel is no failure";
+    EXPECT_TRUE(errors.messages.isEmpty());
+    EXPECT_TRUE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+}
+
+// Keyboard use of the grid.
+
+TEST_F(WorkbenchTest, ArrowsMoveFocusSpaceSelectsEnterOpens) {
+    mWindow->show();
+    mWindow->activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(mWindow.get()));
+    mWindow->cell(4)->setFocus(Qt::TabFocusReason);
+    QTRY_VERIFY(mWindow->cell(4)->hasFocus());
+    const auto press = [](int key) { QTest::keyClick(QApplication::focusWidget(), Qt::Key(key)); };
+    press(Qt::Key_Right);
+    EXPECT_TRUE(mWindow->cell(5)->hasFocus());
+    press(Qt::Key_Right); // the edge stops it
+    EXPECT_TRUE(mWindow->cell(5)->hasFocus());
+    press(Qt::Key_Down);
+    EXPECT_TRUE(mWindow->cell(8)->hasFocus());
+    press(Qt::Key_Left);
+    press(Qt::Key_Left);
+    EXPECT_TRUE(mWindow->cell(6)->hasFocus());
+    press(Qt::Key_Up);
+    EXPECT_TRUE(mWindow->cell(3)->hasFocus());
+
+    press(Qt::Key_Space);
+    EXPECT_EQ(model().selectedCells(), std::vector<int>{3});
+
+    // Enter opens the design large; the dialog is not modal, so the test just closes it.
+    QSignalSpy opened(mWindow.get(), &WorkbenchWindow::designOpened);
+    press(Qt::Key_Return);
+    ASSERT_EQ(opened.size(), 1);
+    auto* dialog = opened.front().at(0).value<DesignDialog*>();
+    ASSERT_NE(dialog, nullptr);
+    EXPECT_EQ(dialog->genome(), *model().cell(3));
+    EXPECT_FALSE(dialog->isModal());
+    dialog->close();
+    EXPECT_EQ(model().selectedCells(), std::vector<int>{3}) << "opening does not change the selection";
+}
+
+// The start choice.
+
+class StartChoiceTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().remove(QStringLiteral("start"));
+        QSettings().remove(QStringLiteral("population"));
+        QSettings().remove(QStringLiteral("view"));
+        setStartChooser([this](QWidget*, const StartChoice& defaults) -> std::optional<StartChoice> {
+            ++asked;
+            lastDefaults = defaults;
+            return answer;
+        });
+    }
+    void TearDown() override { setStartChooser({}); }
+
+    int asked = 0;
+    StartChoice lastDefaults;
+    std::optional<StartChoice> answer;
+    RenderService service{RenderService::Backend::Cpu};
+};
+
+TEST_F(StartChoiceTest, SolidChoiceBreedsSolidGenomesOnTheChosenObject) {
+    answer = StartChoice{3, QStringLiteral("torus")};
+    WorkbenchWindow window(&service);
+    startSession(window, {});
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(lastDefaults, StartChoice{}) << "flat on a vase the first time";
+    for (int i = 0; i < CellCount; ++i) {
+        ASSERT_NE(window.model()->cell(i), nullptr);
+        EXPECT_EQ(window.model()->cell(i)->dimension, 3);
+    }
+    EXPECT_EQ(window.mesh(), QStringLiteral("torus"));
+    EXPECT_EQ(window.model()->history().size(), 1u);
+    EXPECT_FALSE(window.backAction()->isEnabled());
+    // Breeding keeps to solids.
+    window.model()->setSelected(0, true);
+    ASSERT_TRUE(window.applyOperator(GeneticOperator::Alter));
+    for (int i = 0; i < CellCount; ++i) EXPECT_EQ(window.model()->cell(i)->dimension, 3);
+
+    // The next start offers the last choice.
+    WorkbenchWindow next(&service);
+    answer.reset(); // the question closed: the defaults apply
+    startSession(next, {});
+    EXPECT_EQ(lastDefaults, (StartChoice{3, QStringLiteral("torus")}));
+    EXPECT_EQ(next.model()->cell(0)->dimension, 3);
+}
+
+TEST_F(StartChoiceTest, FlatChoiceBreedsFlatGenomes) {
+    answer = StartChoice{2, QStringLiteral("vase")};
+    WorkbenchWindow window(&service);
+    startSession(window, {});
+    EXPECT_EQ(asked, 1);
+    for (int i = 0; i < CellCount; ++i) EXPECT_EQ(window.model()->cell(i)->dimension, 2);
+}
+
+TEST_F(StartChoiceTest, ForcedDimensionFilesAndDontAskSkipTheQuestion) {
+    answer = StartChoice{2, QStringLiteral("vase")};
+    {
+        WorkbenchWindow window(&service);
+        StartOptions options;
+        options.dimension = 3; // --solid or MARBLER_SOLID=1
+        startSession(window, options);
+        EXPECT_EQ(window.model()->cell(4)->dimension, 3);
+    }
+    {
+        WorkbenchWindow window(&service);
+        StartOptions options;
+        options.ask = false; // screenshots, MARBLER_NO_START_DIALOG=1
+        startSession(window, options);
+        EXPECT_EQ(window.model()->cell(4)->dimension, 3) << "as last time";
+    }
+    {
+        const std::string file = (test::dataDir() / "examples" / "five-stones.marble.json").string();
+        WorkbenchWindow window(&service);
+        StartOptions options;
+        options.files = {file};
+        startSession(window, options);
+        EXPECT_EQ(*window.model()->cell(0), loadGenome(file));
+        EXPECT_EQ(window.model()->history().size(), 1u) << "the opened file is generation 1";
+        EXPECT_FALSE(window.backAction()->isEnabled());
+    }
+    EXPECT_EQ(asked, 0);
+    // "Don't ask again": the last choice is used without a question.
+    rememberStartChoice({3, QStringLiteral("cube")}, false);
+    WorkbenchWindow window(&service);
+    startSession(window, {});
+    EXPECT_EQ(asked, 0);
+    EXPECT_EQ(window.model()->cell(0)->dimension, 3);
+    EXPECT_EQ(window.mesh(), QStringLiteral("cube"));
+}
+
+TEST_F(StartChoiceTest, StartDialogOffersBothKindsAndRemembersNotAsking) {
+    StartDialog dialog(StartChoice{3, QStringLiteral("sphere")});
+    EXPECT_TRUE(dialog.solidButton()->isDefault());
+    EXPECT_FALSE(dialog.flatButton()->isDefault());
+    EXPECT_EQ(dialog.meshBox()->currentText(), QStringLiteral("sphere"));
+    EXPECT_FALSE(dialog.dontAskAgain());
+    dialog.meshBox()->setCurrentText(QStringLiteral("teapot"));
+    dialog.dontAskBox()->setChecked(true);
+    dialog.solidButton()->click();
+    EXPECT_EQ(dialog.result(), QDialog::Accepted);
+    EXPECT_EQ(dialog.choice(), (StartChoice{3, QStringLiteral("teapot")}));
+    EXPECT_TRUE(dialog.dontAskAgain());
+
+    StartDialog flat(StartChoice{});
+    EXPECT_TRUE(flat.flatButton()->isDefault());
+    flat.flatButton()->click();
+    EXPECT_EQ(flat.choice().dimension, 2);
+
+    EXPECT_TRUE(askStartChoice());
+    rememberStartChoice(dialog.choice(), !dialog.dontAskAgain());
+    EXPECT_FALSE(askStartChoice());
+    EXPECT_EQ(lastStartChoice(), (StartChoice{3, QStringLiteral("teapot")}));
+}
+
+// The window's command line.
+
+TEST(WorkbenchArgsTest, HiddenOptionsAndFiles) {
+    const std::vector<std::string> words{"a.marble.json", "--seed", "17", "--screenshot=shot.png", "--solid",
+                                         "-platform", "offscreen", "-reverse", "--", "--odd-name.json"};
+    const WorkbenchArgs args = parseWorkbenchArgs(words);
+    EXPECT_EQ(args.error, "");
+    EXPECT_EQ(args.files, (std::vector<std::string>{"a.marble.json", "--odd-name.json"}));
+    EXPECT_EQ(args.seed, 17ULL);
+    EXPECT_EQ(args.screenshot, "shot.png");
+    EXPECT_EQ(args.dimension, 3);
+    EXPECT_FALSE(args.help);
+    EXPECT_EQ(parseWorkbenchArgs(std::vector<std::string>{"--flat"}).dimension, 2);
+    EXPECT_TRUE(parseWorkbenchArgs(std::vector<std::string>{"x.json", "-h"}).help);
+}
+
+TEST(WorkbenchArgsTest, BadOptionsAreNamedOnOneLine) {
+    const auto error = [](std::vector<std::string> words) { return parseWorkbenchArgs(words).error; };
+    EXPECT_EQ(error({"a.json", "--bogus"}), "marbler: unknown option --bogus (see marbler --help)");
+    EXPECT_EQ(error({"-seed", "3"}), "marbler: unknown option -seed (see marbler --help)");
+    EXPECT_EQ(error({"--seed", "x3"}), "marbler: --seed needs a whole number, not 'x3'");
+    EXPECT_EQ(error({"--screenshot"}), "marbler: --screenshot needs a value");
+    EXPECT_EQ(error({"--solid=yes"}), "marbler: unknown option --solid=yes (see marbler --help)");
+    for (const std::string& e : {error({"--bogus"}), error({"--seed"})}) EXPECT_EQ(e.find('\n'), std::string::npos);
 }
 
 TEST_F(WorkbenchTest, WindowRendersEveryCellOnTheCpu) {
@@ -292,6 +587,43 @@ TEST_F(WorkbenchTest, WindowRendersEveryCellOnTheCpu) {
 }
 
 // The render service on its own.
+
+TEST(RenderServiceTest, GuiThreadRunsWhileALargeRenderIsInFlight) {
+    RenderService service(RenderService::Backend::Cpu);
+    RenderRequest request;
+    request.genome = randomGenome(9, 2);
+    request.size = QSize(2048, 2048);
+    request.aa = QStringLiteral("grid4");
+    bool finalArrived = false;
+    int previews = 0;
+    QObject::connect(&service, &RenderService::rendered, [&](std::uint64_t, const QImage&, bool final) {
+        if (final)
+            finalArrived = true;
+        else
+            ++previews;
+    });
+    service.request(3, request);
+
+    // Work queued on the GUI thread after the request: a posted call and a repeating timer.
+    bool postedRan = false, finalBeforePosted = false;
+    QMetaObject::invokeMethod(&service, [&] {
+        postedRan = true;
+        finalBeforePosted = finalArrived;
+    }, Qt::QueuedConnection);
+    int ticks = 0;
+    QTimer timer;
+    QObject::connect(&timer, &QTimer::timeout, [&] { ++ticks; });
+    timer.start(0);
+    QTRY_VERIFY_WITH_TIMEOUT(postedRan && ticks >= 50 && previews >= 1, 120000);
+    EXPECT_FALSE(finalBeforePosted);
+    EXPECT_FALSE(finalArrived) << "the large final pass is still rendering while the GUI thread runs";
+    EXPECT_FALSE(service.idle());
+    // Cancelling stops the in-flight render; the service goes idle and closes promptly.
+    QSignalSpy idle(&service, &RenderService::becameIdle);
+    service.cancel(3);
+    EXPECT_EQ(idle.size(), 1);
+    EXPECT_TRUE(service.idle());
+}
 
 TEST(RenderServiceTest, NewerRequestSupersedesOlder) {
     RenderService service(RenderService::Backend::Cpu);

@@ -1,0 +1,104 @@
+#include "ui/StartDialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QVBoxLayout>
+
+namespace marbler::ui {
+
+namespace {
+
+const QString DimensionKey = QStringLiteral("population/dimension");
+const QString MeshKey = QStringLiteral("view/mesh");
+const QString AskKey = QStringLiteral("start/ask");
+
+StartChooser& chooserHook() {
+    static StartChooser hook;
+    return hook;
+}
+
+} // namespace
+
+QStringList meshNames() {
+    return {QStringLiteral("vase"), QStringLiteral("sphere"), QStringLiteral("cube"), QStringLiteral("torus"),
+            QStringLiteral("teapot")};
+}
+
+StartChoice lastStartChoice() {
+    QSettings settings;
+    StartChoice choice;
+    choice.dimension = settings.value(DimensionKey, 2).toInt() == 3 ? 3 : 2;
+    const QString mesh = settings.value(MeshKey, choice.mesh).toString();
+    if (meshNames().contains(mesh)) choice.mesh = mesh;
+    return choice;
+}
+
+bool askStartChoice() { return QSettings().value(AskKey, true).toBool(); }
+
+void rememberStartChoice(const StartChoice& choice, bool askAgain) {
+    QSettings settings;
+    settings.setValue(DimensionKey, choice.dimension);
+    settings.setValue(MeshKey, choice.mesh);
+    settings.setValue(AskKey, askAgain);
+}
+
+StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog(parent), mChoice(defaults) {
+    setWindowTitle(tr("Marbler — what to breed"));
+    auto* intro = new QLabel(tr("<b>What would you like to breed?</b><br>"
+                                "Nine random designs start the first generation; pick the ones you like "
+                                "as parents and breed the next."),
+                             this);
+    intro->setWordWrap(true);
+
+    mFlat = new QPushButton(tr("Breed &flat (2D) designs"), this);
+    mFlat->setToolTip(tr("Marbled paper: patterns in the plane"));
+    mSolid = new QPushButton(tr("Breed &solid (3D) designs on an object"), this);
+    mSolid->setToolTip(tr("Marbling through a volume, shown on the object chosen beside"));
+    mMesh = new QComboBox(this);
+    mMesh->addItems(meshNames());
+    mMesh->setCurrentText(defaults.mesh);
+    mMesh->setToolTip(tr("The object solid designs are shown on"));
+    mDontAsk = new QCheckBox(tr("&Don't ask again (the toolbar still changes it)"), this);
+
+    (defaults.dimension == 3 ? mSolid : mFlat)->setDefault(true);
+    (defaults.dimension == 3 ? mSolid : mFlat)->setFocus();
+
+    connect(mFlat, &QPushButton::clicked, this, [this] {
+        mChoice.dimension = 2;
+        accept();
+    });
+    connect(mSolid, &QPushButton::clicked, this, [this] {
+        mChoice.dimension = 3;
+        mChoice.mesh = mMesh->currentText();
+        accept();
+    });
+
+    auto* solidRow = new QHBoxLayout;
+    solidRow->addWidget(mSolid, 1);
+    solidRow->addWidget(mMesh);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(intro);
+    layout->addSpacing(8);
+    layout->addWidget(mFlat);
+    layout->addLayout(solidRow);
+    layout->addSpacing(8);
+    layout->addWidget(mDontAsk);
+}
+
+bool StartDialog::dontAskAgain() const { return mDontAsk->isChecked(); }
+
+void setStartChooser(StartChooser chooser) { chooserHook() = std::move(chooser); }
+
+std::optional<StartChoice> chooseStart(QWidget* parent, const StartChoice& defaults) {
+    if (chooserHook()) return chooserHook()(parent, defaults);
+    StartDialog dialog(defaults, parent);
+    if (dialog.exec() != QDialog::Accepted) return std::nullopt;
+    rememberStartChoice(dialog.choice(), !dialog.dontAskAgain());
+    return dialog.choice();
+}
+
+} // namespace marbler::ui

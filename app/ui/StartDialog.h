@@ -1,0 +1,63 @@
+#pragma once
+/// The start choice: breed flat (2D) designs, or solid (3D) designs shown on an object. Asked
+/// when the workbench opens with no genome files, unless the user ticked "don't ask again";
+/// the toolbar's kind box changes it later.
+
+#include <QDialog>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <optional>
+
+class QCheckBox;
+class QComboBox;
+class QPushButton;
+
+namespace marbler::ui {
+
+/// The objects solid designs can be shown on.
+QStringList meshNames();
+
+struct StartChoice {
+    int dimension = 2;                   ///< 2: flat, 3: solid
+    QString mesh = QStringLiteral("vase"); ///< the object a solid design is shown on
+    bool operator==(const StartChoice&) const = default;
+};
+
+/// The last choice (QSettings population/dimension and view/mesh).
+StartChoice lastStartChoice();
+/// Whether the start choice is asked (false once "don't ask again" was ticked).
+bool askStartChoice();
+/// Remembers a choice as the next default, and whether to ask again.
+void rememberStartChoice(const StartChoice& choice, bool askAgain);
+
+class StartDialog : public QDialog {
+    Q_OBJECT
+public:
+    explicit StartDialog(const StartChoice& defaults, QWidget* parent = nullptr);
+
+    /// The choice made (the defaults until a button is pressed).
+    StartChoice choice() const { return mChoice; }
+    bool dontAskAgain() const;
+
+    QPushButton* flatButton() const { return mFlat; }
+    QPushButton* solidButton() const { return mSolid; }
+    QComboBox* meshBox() const { return mMesh; }
+    QCheckBox* dontAskBox() const { return mDontAsk; }
+
+private:
+    StartChoice mChoice;
+    QPushButton* mFlat;
+    QPushButton* mSolid;
+    QComboBox* mMesh;
+    QCheckBox* mDontAsk;
+};
+
+/// Asks the start choice; nullopt when the user closed the question (the defaults apply then).
+/// The default shows a StartDialog modally; tests replace it so nothing blocks.
+using StartChooser = std::function<std::optional<StartChoice>(QWidget* parent, const StartChoice& defaults)>;
+void setStartChooser(StartChooser chooser);
+std::optional<StartChoice> chooseStart(QWidget* parent, const StartChoice& defaults);
+
+} // namespace marbler::ui
