@@ -236,10 +236,27 @@ Genome alterGenome(const Genome& parent, double strength, Pcg32& rng) {
     return child;
 }
 
+/// One crossover of the parents' stroke lists, the home parent's first.
+static std::vector<Operation> crossover(const std::vector<Genome>& parents, std::size_t home, Pcg32& rng);
+
 Genome recombineGenomes(const std::vector<Genome>& parents, std::size_t home, Pcg32& rng) {
     if (parents.size() < 2 || home >= parents.size()) throw InputError("recombine needs two or more parents");
     Genome child = parents[home];
     if (locksOf(parents[home]).operations) return child;
+    const std::vector<Operation>& mine = parents[home].operations;
+    bool othersDiffer = false;
+    for (const Genome& parent : parents) othersDiffer = othersDiffer || parent.operations != mine;
+    // A child whose strokes all come from its home parent is a copy of it, which wastes a cell
+    // of the population; draw again a few times while another parent has different strokes.
+    std::vector<Operation> ops = crossover(parents, home, rng);
+    for (int attempt = 0; othersDiffer && ops == mine && attempt < 16; ++attempt) ops = crossover(parents, home, rng);
+    clampColors(ops, child.palette.size());
+    child.operations = std::move(ops);
+    capEntries(child);
+    return child;
+}
+
+static std::vector<Operation> crossover(const std::vector<Genome>& parents, std::size_t home, Pcg32& rng) {
     std::vector<Operation> ops;
     const std::vector<Operation>& mine = parents[home].operations;
     if (parents.size() == 2 && rng.chance(0.5)) {
@@ -261,10 +278,7 @@ Genome recombineGenomes(const std::vector<Genome>& parents, std::size_t home, Pc
             ops.push_back(parents[holders[rng.below(static_cast<std::uint32_t>(holders.size()))]].operations[k]);
         }
     }
-    clampColors(ops, child.palette.size());
-    child.operations = std::move(ops);
-    capEntries(child);
-    return child;
+    return ops;
 }
 
 Genome swapGenomes(const Genome& home, const Genome& other) {

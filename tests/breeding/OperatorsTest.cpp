@@ -195,6 +195,20 @@ TEST_P(Operators, RecombineMixesStrokesOfBothParents) {
     EXPECT_GE(mixed, 8);
 }
 
+TEST_P(Operators, RecombineNeverCopiesTheHomeParent) {
+    // Parents with few strokes make a copy of one parent a likely draw; no cell may be wasted
+    // on one when the other parent's strokes differ.
+    for (std::uint64_t seed = 30; seed < 40; ++seed) {
+        Genome a = parent(seed), b = parent(seed + 100);
+        a.operations.resize(std::min<std::size_t>(a.operations.size(), 2));
+        b.operations.resize(std::min<std::size_t>(b.operations.size(), 2));
+        ASSERT_NE(a.operations, b.operations);
+        for (const Genome& child : breed(request(GeneticOperator::Recombine, {a, b}, seed, 8))) {
+            EXPECT_NE(child.operations, child.initial == a.initial ? a.operations : b.operations) << "seed " << seed;
+        }
+    }
+}
+
 TEST_P(Operators, LocksHoldForEveryOperator) {
     Genome a = parent(30), b = parent(31);
     for (int mask = 0; mask < 8; ++mask) {
