@@ -112,6 +112,7 @@ void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int
             std::vector<int> colors(kernel::TileSize);
             std::vector<double> whereX(kernel::TileSize), whereY(kernel::TileSize);
             std::vector<double> line(std::size_t(width) * 3);
+            std::vector<glm::dvec3> rowPart(static_cast<std::size_t>(samples));
             const bool useSource = source.has_value();
             for (;;) {
                 if (stop.load(std::memory_order_relaxed)) return;
@@ -121,15 +122,21 @@ void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int
                 }
                 int j = nextRow.fetch_add(1);
                 if (j >= y1) return;
+                // frame.at(i, j, ox, oy) component by component, in the same order of
+                // operations (so the same bits), with the row's part computed once per sample.
+                for (int s = 0; s < samples; ++s) {
+                    const double b = (double(j) + 0.5) + pattern.offsets[s].y;
+                    rowPart[s] = b * frame.dv;
+                }
                 for (int i0 = 0; i0 < width; i0 += pixelsPerTile) {
                     int pixels = std::min(pixelsPerTile, width - i0);
                     int n = 0;
                     for (int p = 0; p < pixels; ++p)
                         for (int s = 0; s < samples; ++s, ++n) {
-                            glm::dvec3 point = frame.at(i0 + p, j, pattern.offsets[s].x, pattern.offsets[s].y);
-                            tile->x[n] = point.x;
-                            tile->y[n] = point.y;
-                            tile->z[n] = point.z;
+                            const double a = (double(i0 + p) + 0.5) + pattern.offsets[s].x;
+                            tile->x[n] = (frame.origin.x + a * frame.du.x) + rowPart[s].x;
+                            tile->y[n] = (frame.origin.y + a * frame.du.y) + rowPart[s].y;
+                            tile->z[n] = (frame.origin.z + a * frame.du.z) + rowPart[s].z;
                             tile->id[n] = n;
                         }
                     kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
@@ -205,7 +212,19 @@ void CpuRenderer::renderRows(const RenderSettings& settings, int y0, int y1, std
     const std::size_t stride = std::size_t(settings.width) * 3;
     mImpl->renderLinear(settings, y0, y1, control, [&](int j, const double* line) {
         std::uint8_t* out = rgb + std::size_t(j - y0) * stride;
-        for (std::size_t k = 0; k < stride; ++k) out[k] = encodeSrgb8(line[k]);
+        // Neighbouring pixels mostly share their colour: encode a channel again only when it
+        // changes (NaN never equals itself, so the first pixel is always encoded).
+        double last[3] = {std::nan(""), std::nan(""), std::nan("")};
+        std::uint8_t code[3] = {0, 0, 0};
+        for (std::size_t k = 0; k < stride; k += 3)
+            for (std::size_t c = 0; c < 3; ++c) {
+                const double v = line[k + c];
+                if (!(v == last[c])) {
+                    last[c] = v;
+                    code[c] = encodeSrgb8(v);
+                }
+                out[k + c] = code[c];
+            }
     });
 }
 

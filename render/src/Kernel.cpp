@@ -1,9 +1,11 @@
-// The tile kernel. Every loop here computes exactly the formulas of genome/src/Tools.cpp (the
-// scalar reference), in the same order of operations, so that the renderer and the reference
-// agree to the last bit wherever no sine, cosine or cube root is involved, and within an ulp or
-// two where one is. This file is built with -O3 -fno-math-errno -fno-trapping-math
-// -ffp-contract=off: the first two let GCC vectorise sqrt and floor, the last keeps it from
-// fusing multiply-adds, which would round differently from the reference.
+// The tile kernel. Every loop here computes the formulas of genome/src/Tools.cpp (the scalar
+// reference), in the same order of operations, so that the renderer and the reference agree to
+// the last bit wherever no sine, cosine, cube root or AVX-512 drop is involved, and within an
+// ulp or a few where one is (the 2D drop on AVX-512 CPUs replaces the divide and the square
+// root by a refined reciprocal square root: see drop2Avx512). This file is built with -O3
+// -fno-math-errno -fno-trapping-math -ffp-contract=off: the first two let GCC vectorise sqrt
+// and floor, the last keeps it from fusing multiply-adds, which would round differently from
+// the reference.
 //
 // traceTile is compiled three times (AVX-512, AVX2+FMA, baseline x86-64) and the loader picks
 // the best for the running CPU, so the binary runs anywhere and uses the widest vectors it can.
@@ -12,6 +14,21 @@
 
 #include <bit>
 #include <cmath>
+#include <cstring>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#endif
+
+// "These loop iterations are independent": GCC and clang spell it differently, and each warns
+// about the other's pragma.
+#if defined(__clang__)
+#define MARBLER_IVDEP _Pragma("clang loop vectorize(assume_safety)")
+#elif defined(__GNUC__)
+#define MARBLER_IVDEP _Pragma("GCC ivdep")
+#else
+#define MARBLER_IVDEP
+#endif
 
 namespace marbler::kernel {
 namespace {
@@ -85,7 +102,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
 [[gnu::always_inline]] inline void sinCosArray(const double* __restrict angle, double* __restrict sinOut,
                                        double* __restrict cosOut, int n) {
     std::int64_t large = 0;
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double s, c;
         sinCos(angle[i], s, c);
@@ -106,19 +123,59 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     sinCosArray(angle, sinOut, scratch, n);
 }
 
-/// Removes the points whose flag is set (they found ink), recording their colour.
+/// Moves `count` entries from `from` down to `to` (to < from; the ranges may overlap). Copying
+/// forward in blocks is safe when moving down: a block is read before any later block's
+/// destination, which lies below that block's source, is written.
+template <typename T>
+[[gnu::always_inline]] inline void slide(T* a, int to, int from, int count) {
+    constexpr int Block = 64 / sizeof(T);
+    int k = 0;
+    for (; k + Block <= count; k += Block) {
+        T block[Block];
+        std::memcpy(block, a + from + k, sizeof(block));
+        std::memcpy(a + to + k, block, sizeof(block));
+    }
+    for (; k < count; ++k) a[to + k] = a[from + k];
+}
+
+/// Whether the 8 flags from i are all clear (or all set).
+[[gnu::always_inline]] inline bool noneSet8(const std::int64_t* f) {
+    return (f[0] | f[1] | f[2] | f[3] | f[4] | f[5] | f[6] | f[7]) == 0;
+}
+[[gnu::always_inline]] inline bool allSet8(const std::int64_t* f) {
+    return (f[0] & f[1] & f[2] & f[3] & f[4] & f[5] & f[6] & f[7]) != 0;
+}
+
+/// Removes the points whose flag (0 or 1) is set (they found ink), recording their colour; the
+/// others keep their order. Ink lies in runs along a tile (a tile is a stretch of a pixel row),
+/// so this walks the runs, eight flags at a time where it can, and slides each run of
+/// survivors down in blocks instead of testing and copying point by point; the points before
+/// the first hit stay where they are.
 [[gnu::always_inline]] inline int compact(Tile& t, int n, int dimension, int color, int* colors) {
-    int j = 0;
-    for (int i = 0; i < n; ++i) {
-        if (t.flag[i]) {
-            colors[t.id[i]] = color;
-            continue;
+    const std::int64_t* __restrict flag = t.flag;
+    const int* __restrict id = t.id;
+    int i = 0;
+    while (i + 8 <= n && noneSet8(flag + i)) i += 8;
+    while (i < n && !flag[i]) ++i;
+    int j = i;
+    while (i < n) {
+        while (i + 8 <= n && allSet8(flag + i)) {
+            for (int k = 0; k < 8; ++k) colors[id[i + k]] = color;
+            i += 8;
         }
-        t.x[j] = t.x[i];
-        t.y[j] = t.y[i];
-        if (dimension == 3) t.z[j] = t.z[i];
-        t.id[j] = t.id[i];
-        ++j;
+        while (i < n && flag[i]) {
+            colors[id[i]] = color;
+            ++i;
+        }
+        const int start = i;
+        while (i + 8 <= n && noneSet8(flag + i)) i += 8;
+        while (i < n && !flag[i]) ++i;
+        const int count = i - start;
+        slide(t.x, j, start, count);
+        slide(t.y, j, start, count);
+        if (dimension == 3) slide(t.z, j, start, count);
+        slide(t.id, j, start, count);
+        j += count;
     }
     return j;
 }
@@ -133,7 +190,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     std::int64_t* __restrict flag = t.flag;
     const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r, r2 = op.r2;
     std::int64_t inside = 0;
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy;
         double len2 = dx * dx + dy * dy;
@@ -150,12 +207,96 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     return inside;
 }
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define MARBLER_AVX512_DROP 1
+
+/// One step of drop2Avx512: 8 points from i; `live` masks the points past n in the last
+/// step (full steps use plain loads and stores).
+template <bool Full>
+[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline void drop2Step(
+    double* __restrict x, double* __restrict y, std::int64_t* __restrict flag, int i, __mmask8 live, __m512d cx,
+    __m512d cy, __m512d rr, __m512d r2, std::int64_t& inside) {
+    const __m512d zero = _mm512_setzero_pd(), half = _mm512_set1_pd(0.5), one = _mm512_set1_pd(1.0);
+    const __m512d tiny = _mm512_set1_pd(1e-290), huge = _mm512_set1_pd(1e290);
+    const __m512i oneBit = _mm512_set1_epi64(1);
+    const bool full = Full;
+    __m512d px = full ? _mm512_loadu_pd(x + i) : _mm512_maskz_loadu_pd(live, x + i);
+    __m512d py = full ? _mm512_loadu_pd(y + i) : _mm512_maskz_loadu_pd(live, y + i);
+    const __m512d dx = _mm512_sub_pd(px, cx), dy = _mm512_sub_pd(py, cy);
+    const __m512d len2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+    const __mmask8 in = _mm512_mask_cmp_pd_mask(live, len2, rr, _CMP_LT_OQ);
+    const __m512i inFlag = _mm512_maskz_mov_epi64(in, oneBit);
+    if (full)
+        _mm512_storeu_si512(flag + i, inFlag);
+    else
+        _mm512_mask_storeu_epi64(flag + i, live, inFlag);
+    inside += __builtin_popcount(unsigned(in));
+    const __m512d w = _mm512_sub_pd(len2, r2);
+    const __mmask8 outside = _mm512_cmp_pd_mask(w, zero, _CMP_GT_OQ);
+    const __m512d prod = _mm512_mul_pd(len2, w);
+    const __mmask8 normal = _mm512_cmp_pd_mask(prod, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(prod, huge, _CMP_LE_OQ);
+    __m512d factor;
+    if ((outside & live & ~normal) == 0) [[likely]] {
+        const __m512d hp = _mm512_mul_pd(prod, half);
+        __m512d g = _mm512_maskz_rsqrt14_pd(0xFF, prod);
+        for (int k = 0; k < 2; ++k) {
+            const __m512d e = _mm512_fnmadd_pd(_mm512_mul_pd(hp, g), g, half);
+            g = _mm512_fmadd_pd(g, e, g);
+        }
+        factor = _mm512_maskz_mul_pd(outside, w, g);
+    } else {
+        factor = _mm512_maskz_sqrt_pd(0xFF, _mm512_maskz_max_pd(0xFF, zero, _mm512_sub_pd(one, _mm512_div_pd(r2, len2))));
+    }
+    const __m512d fm1 = _mm512_sub_pd(factor, one);
+    const __mmask8 moves = _mm512_mask_cmp_pd_mask(live, len2, zero, _CMP_GT_OQ);
+    px = _mm512_mask_add_pd(px, moves, px, _mm512_mul_pd(dx, fm1));
+    py = _mm512_mask_add_pd(py, moves, py, _mm512_mul_pd(dy, fm1));
+    if (full) {
+        _mm512_storeu_pd(x + i, px);
+        _mm512_storeu_pd(y + i, py);
+    } else {
+        _mm512_mask_storeu_pd(x + i, live, px);
+        _mm512_mask_storeu_pd(y + i, live, py);
+    }
+}
+
+/// Whether the running CPU has AVX-512F (for the drop below); looked up once.
+bool cpuHasAvx512() {
+    static const bool has = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx512f") != 0;
+    }();
+    return has;
+}
+
+/// The 2D drop with AVX-512 (see ink2): the same ink test, and the push with the factor
+/// sqrt(1 - r^2/len2) computed as w / sqrt(len2 w), w = len2 - r^2, from the hardware's
+/// 14-bit reciprocal square root and two Newton steps: a few ulps from the correctly rounded
+/// value (the test against the reference allows 1e-9), with no divide and no square root, which
+/// share one slow unit and bound the exact form. Vectors where len2 w is not a normal double
+/// (absurdly large or tiny distances) use the exact form.
+__attribute__((target("avx512f,fma"))) std::int64_t drop2Avx512(const PreparedOp& op, Tile& t, int n) {
+    double* __restrict x = t.x;
+    double* __restrict y = t.y;
+    std::int64_t* __restrict flag = t.flag;
+    const __m512d cx = _mm512_set1_pd(op.c.x), cy = _mm512_set1_pd(op.c.y);
+    const __m512d rr = _mm512_set1_pd(op.r * op.r), r2 = _mm512_set1_pd(op.r2);
+    std::int64_t inside = 0;
+    // One step of 8 points; `live` masks the points past n in the last step (full steps use
+    // plain loads and stores).
+    int i = 0;
+    for (; i + 8 <= n; i += 8) drop2Step<true>(x, y, flag, i, __mmask8(0xFF), cx, cy, rr, r2, inside);
+    if (i < n) drop2Step<false>(x, y, flag, i, __mmask8((1u << (n - i)) - 1u), cx, cy, rr, r2, inside);
+    return inside;
+}
+#endif
+
 [[gnu::always_inline]] inline void line2(const PreparedOp& op, Tile& t, int n, bool comb) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
     const double cx = op.c.x, cy = op.c.y, nx = op.n.x, ny = op.n.y, mx = op.m.x, my = op.m.y;
     const double al = op.alphaLambda, lambda = op.lambda, s = op.spacing;
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double along = (x[i] - cx) * nx + (y[i] - cy) * ny;
         double d = comb ? combDistance(along, s) : std::abs(along);
@@ -172,10 +313,10 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     double* __restrict sn = t.t1;
     const double cx = op.c.x, cy = op.c.y, nx = op.n.x, ny = op.n.y, mx = op.m.x, my = op.m.y;
     const double amp = op.amp[0], freq = op.freq[0], phase = op.phase[0];
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) arg[i] = freq * ((x[i] - cx) * nx + (y[i] - cy) * ny) + phase;
     sinArray(arg, sn, t.t2, n);
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double f = amp * sn[i];
         x[i] = x[i] - f * mx;
@@ -191,7 +332,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     double* __restrict sn = t.t1;
     double* __restrict cs = t.t2;
     const double cx = op.c.x, cy = op.c.y, r = op.r, al = op.alphaLambda, lambda = op.lambda;
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy;
         double rho = std::sqrt(dx * dx + dy * dy);
@@ -199,7 +340,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
         theta[i] = -(al / (d + lambda)) / rho;
     }
     sinCosArray(theta, sn, cs, n);
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy;
         bool moves = dx * dx + dy * dy > 0.0;
@@ -223,7 +364,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     const double ax = op.a.x, ay = op.a.y, az = op.a.z;
     std::int64_t inside = 0;
     if (op.tool == Tool::Cylinder) {
-#pragma GCC ivdep
+MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
             double along = dx * ax + dy * ay + dz * az;
@@ -241,7 +382,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
             z[i] = moves ? z[i] + dz * (factor - 1.0) : z[i];
         }
     } else if (op.tool == Tool::Drop) {
-#pragma GCC ivdep
+MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
             double len2 = dx * dx + dy * dy + dz * dz;
@@ -256,7 +397,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
             z[i] = moves ? z[i] + dz * (factor - 1.0) : z[i];
         }
     } else { // spray
-#pragma GCC ivdep
+MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
             std::int64_t in = dx * dx + dy * dy + dz * dz < rr;
@@ -274,7 +415,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     const double cx = op.c.x, cy = op.c.y, cz = op.c.z, nx = op.n.x, ny = op.n.y, nz = op.n.z;
     const double mx = op.m.x, my = op.m.y, mz = op.m.z;
     const double al = op.alphaLambda, lambda = op.lambda, s = op.spacing;
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double along = (x[i] - cx) * nx + (y[i] - cy) * ny + (z[i] - cz) * nz;
         double d = comb ? combDistance(along, s) : std::abs(along);
@@ -296,7 +437,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     const double ux = op.m.x, uy = op.m.y, uz = op.m.z, vx = op.v.x, vy = op.v.y, vz = op.v.z;
     const double wx = op.n.x, wy = op.n.y, wz = op.n.z;
     const bool ripple = op.shape == WaveShape::Ripple;
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
         double a = dx * ux + dy * uy + dz * uz;
@@ -311,16 +452,16 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     double* __restrict scratch = t.t3;
     sinArray(arg0, sn, scratch, n);
     if (ripple) {
-#pragma GCC ivdep
+MARBLER_IVDEP
         for (int i = 0; i < n; ++i) arg0[i] = op.amp[0] * sn[i];
     } else {
-#pragma GCC ivdep
+MARBLER_IVDEP
         for (int i = 0; i < n; ++i) arg0[i] = op.amp[0] * sn[i];
         sinArray(arg1, sn, scratch, n);
-#pragma GCC ivdep
+MARBLER_IVDEP
         for (int i = 0; i < n; ++i) arg0[i] = arg0[i] + op.amp[1] * sn[i];
     }
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double shift = arg0[i];
         x[i] = x[i] - shift * wx;
@@ -342,7 +483,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
     const double r = op.r, al = op.alphaLambda, lambda = op.lambda;
     std::int64_t* __restrict moves = t.flag;
     const bool cylindrical = op.tool == Tool::Circle, vortex = op.tool == Tool::Vortex;
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
         double rho;
@@ -360,7 +501,7 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
         moves[i] = rho > 0.0;
     }
     sinCosArray(theta, sn, cs, n);
-#pragma GCC ivdep
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
         double along = dx * ax + dy * ay + dz * az;
@@ -382,15 +523,26 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
                         double* whereX, double* whereY) {
     std::uint64_t traversed = 0;
+#ifdef MARBLER_AVX512_DROP
+    const bool hasAvx512 = cpuHasAvx512();
+#endif
     for (std::size_t k = 0; k < count && n > 0; ++k) {
         const PreparedOp& op = ops[k];
         traversed += static_cast<std::uint64_t>(n);
         if (dimension == 2) {
             switch (op.tool) {
             case Tool::Drop:
-            case Tool::Spray:
-                if (ink2(op, tile, n, op.tool == Tool::Drop) != 0) n = compact(tile, n, 2, op.color, colors);
+            case Tool::Spray: {
+                std::int64_t inside;
+#ifdef MARBLER_AVX512_DROP
+                if (op.tool == Tool::Drop && hasAvx512)
+                    inside = drop2Avx512(op, tile, n);
+                else
+#endif
+                    inside = ink2(op, tile, n, op.tool == Tool::Drop);
+                if (inside != 0) n = compact(tile, n, 2, op.color, colors);
                 break;
+            }
             case Tool::Line: line2(op, tile, n, false); break;
             case Tool::Comb: line2(op, tile, n, true); break;
             case Tool::Wave: wave2(op, tile, n); break;

@@ -2,12 +2,16 @@
 // sample visits operations backward until it finds ink, so samples x operations traversed is
 // the work done, independent of how much of the design happens to be ink.
 
+#include "Kernel.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Tools.h"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstring>
+#include <memory>
 #include <thread>
 
 namespace {
@@ -83,6 +87,42 @@ void BM_Flame2D_AllThreads(benchmark::State& state) { runRenderer(state, flameCa
 void BM_SlateSlice3D_OneThread(benchmark::State& state) { runRenderer(state, slateSliceCase(), 1); }
 void BM_SlateSlice3D_AllThreads(benchmark::State& state) { runRenderer(state, slateSliceCase(), allThreads()); }
 
+/// The tile kernel alone, on one thread: the samples of the render (one row per tile, as the
+/// renderer fills them) traced with no sampling set-up, no colour averaging and no sRGB
+/// encoding around it. Its rate against the full renderer's shows what those cost.
+void kernelOnly(benchmark::State& state, const Case& c) {
+    std::vector<PreparedOp> ops = prepare(c.genome);
+    std::reverse(ops.begin(), ops.end());
+    SampleFrame frame = sampleFrame(c.genome, c.settings);
+    const int width = std::min(c.settings.width, kernel::TileSize);
+    std::vector<double> xs, ys, zs;
+    for (int j = 0; j < c.settings.height; ++j)
+        for (int i = 0; i < width; ++i) {
+            glm::dvec3 p = frame.at(i, j, 0.0, 0.0);
+            xs.push_back(p.x);
+            ys.push_back(p.y);
+            zs.push_back(p.z);
+        }
+    auto tile = std::make_unique<kernel::Tile>();
+    std::vector<int> colors(kernel::TileSize);
+    std::uint64_t traversed = 0;
+    for (auto _ : state) {
+        for (int j = 0; j < c.settings.height; ++j) {
+            const std::size_t at = std::size_t(j) * std::size_t(width);
+            std::memcpy(tile->x, xs.data() + at, sizeof(double) * std::size_t(width));
+            std::memcpy(tile->y, ys.data() + at, sizeof(double) * std::size_t(width));
+            std::memcpy(tile->z, zs.data() + at, sizeof(double) * std::size_t(width));
+            for (int k = 0; k < width; ++k) tile->id[k] = k;
+            traversed += kernel::traceTile(ops.data(), ops.size(), c.genome.dimension, *tile, width, colors.data(),
+                                           nullptr, nullptr);
+        }
+        benchmark::DoNotOptimize(colors.data());
+    }
+    state.counters["sample_ops_per_s"] = benchmark::Counter(double(traversed), benchmark::Counter::kIsRate);
+}
+void BM_Flame2D_KernelOnly(benchmark::State& state) { kernelOnly(state, flameCase()); }
+void BM_SlateSlice3D_KernelOnly(benchmark::State& state) { kernelOnly(state, slateSliceCase()); }
+
 /// The per-pixel scalar loop the tile kernel replaces: the reference traceColor per sample.
 void scalarBaseline(benchmark::State& state, const Case& c) {
     std::vector<PreparedOp> ops = prepare(c.genome);
@@ -103,9 +143,11 @@ void BM_SlateSlice3D_ScalarReference(benchmark::State& state) { scalarBaseline(s
 // overstate the rate.
 BENCHMARK(BM_Flame2D_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Flame2D_AllThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Flame2D_KernelOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Flame2D_ScalarReference)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SlateSlice3D_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SlateSlice3D_AllThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SlateSlice3D_KernelOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SlateSlice3D_ScalarReference)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
