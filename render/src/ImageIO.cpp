@@ -56,8 +56,11 @@ std::vector<unsigned char> decodeBase64(std::string_view text) {
 
 namespace {
 
-/// Rasters larger than this are refused as sources: a 2D design never needs more.
-constexpr std::int64_t MaxSourcePixels = std::int64_t(1) << 28;
+/// Rasters larger than this (64 megapixels, 8192 x 8192) are refused as sources, so a hostile
+/// file that claims a huge size cannot make the loader allocate gigabytes of float pixels.
+constexpr std::int64_t MaxSourcePixels = std::int64_t(1) << 26;
+/// Channels decoded at most (RGBA); extra channels are not read.
+constexpr int MaxSourceChannels = 4;
 
 bool isLinearColorSpace(const OIIO::ImageSpec& spec) {
     std::string space = spec.get_string_attribute("oiio:ColorSpace");
@@ -71,7 +74,7 @@ LinearRaster readRaster(OIIO::ImageInput& in, const std::string& name) {
         std::int64_t(spec.width) * spec.height > MaxSourcePixels)
         throw InputError("source image " + name + ": unsupported size " + std::to_string(spec.width) + "x" +
                          std::to_string(spec.height));
-    const int channels = spec.nchannels;
+    const int channels = std::min(spec.nchannels, MaxSourceChannels);
     std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
     if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
         throw InputError("source image " + name + ": " + in.geterror());

@@ -314,5 +314,43 @@ TEST(Render, MissingSourceImageIsAnInputErrorNamingTheFile) {
     EXPECT_THROW(CpuRenderer{g}, InputError);
 }
 
+/// A PNG whose header claims `width` x `height` RGB pixels and that holds almost no data.
+std::string pngHeaderOnly(std::uint32_t width, std::uint32_t height) {
+    auto crc32 = [](const std::string& bytes) {
+        std::uint32_t crc = 0xffffffffu;
+        for (unsigned char b : bytes) {
+            crc ^= b;
+            for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+        }
+        return ~crc;
+    };
+    auto be32 = [](std::uint32_t v) {
+        return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+    };
+    auto chunk = [&](const std::string& type, const std::string& data) {
+        return be32(std::uint32_t(data.size())) + type + data + be32(crc32(type + data));
+    };
+    std::string ihdr = be32(width) + be32(height) + std::string{8, 2, 0, 0, 0};
+    const std::string emptyZlibStream("\x78\x9c\x03\x00\x00\x00\x00\x01", 8);
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", emptyZlibStream) +
+           chunk("IEND", "");
+}
+
+TEST(Render, HugeSourceImageIsRefusedBeforeDecoding) {
+    // A hostile file may claim a giant raster in a few bytes; the loader must refuse it with a
+    // clear message instead of trying to allocate it.
+    std::filesystem::path dir = test::outputDir("huge-source");
+    test::writeFile(dir / "huge.png", pngHeaderOnly(100000, 100000));
+    Genome g = loadGenome(test::dataDir() / "render" / "source-2d.marble.json");
+    g.baseDirectory = dir.string();
+    g.source = SourceImage{"huge.png"};
+    try {
+        CpuRenderer renderer(g);
+        FAIL() << "a 100000 x 100000 source was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("100000x100000"), std::string::npos) << e.what();
+    }
+}
+
 } // namespace
 } // namespace marbler
