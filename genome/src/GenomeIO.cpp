@@ -149,8 +149,8 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
             double value = getComponent(spec, op, i);
             std::string at = many ? indexed(key, static_cast<std::size_t>(i)) : key;
             if (!std::isfinite(value)) throw GenomeError(name, at, "must be finite (got " + formatNumber(value) + ")");
-            if (spec.positive && !(value > 0.0))
-                throw GenomeError(name, at, "must be > 0 (got " + formatNumber(value) + ")");
+            if (!spec.range.contains(value))
+                throw GenomeError(name, at, spec.range.describe() + " (got " + formatNumber(value) + ")");
         }
         if (spec.kind == ParamKind::Direction) {
             glm::dvec3 v(getComponent(spec, op, 0), getComponent(spec, op, 1), getComponent(spec, op, 2));

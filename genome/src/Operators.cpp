@@ -88,7 +88,7 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
         case ParamKind::Shift:
             for (int i = 0; i < n; ++i) {
                 double v = getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side;
-                if (spec.positive) v = std::max(std::abs(v), floorLength);
+                if (spec.positive()) v = std::max(std::abs(v), floorLength);
                 setComponent(spec, op, i, v);
             }
             break;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cassert>
+#include <cmath>
 
 namespace marbler {
 namespace {
@@ -11,24 +12,24 @@ using F = ParamField;
 
 // Shared rows. Mutation scales: positions and lengths as a fraction of the design's largest
 // side, angles and phases in degrees.
-constexpr ParamSpec Center{"center", F::Center, K::Position, "design units", "centre of the tool", false, 0.0, 0.08};
-constexpr ParamSpec Origin{"origin", F::Center, K::Position, "design units", "a point on the stroke's path", false, 0.0, 0.08};
-constexpr ParamSpec Radius{"radius", F::Radius, K::Length, "design units", "radius", true, 60.0, 0.03};
-constexpr ParamSpec ColorRow{"color", F::Color, K::Color, "", "palette index of the ink", false, 0.0, 0.0};
-constexpr ParamSpec Axis{"axis", F::Axis, K::Direction, "", "axis (turned by the right-hand rule)", false, 0.0, 0.25};
-constexpr ParamSpec Angle{"angle", F::Angle, K::Angle, "degrees", "direction of motion, clockwise from +x", false, 0.0, 25.0};
-constexpr ParamSpec Direction{"direction", F::Direction, K::Direction, "", "direction of motion", false, 0.0, 0.25};
-constexpr ParamSpec Normal{"normal", F::Normal, K::Direction, "", "across the plane the tine sweeps", false, 0.0, 0.25};
-constexpr ParamSpec Alpha{"alpha", F::Alpha, K::Shift, "design units", "largest shift, at the tine", false, 60.0, 0.03};
-constexpr ParamSpec Lambda{"lambda", F::Lambda, K::Length, "design units", "sharpness: smaller concentrates the shift near the tine", true, 12.0, 0.01};
-constexpr ParamSpec Spacing{"spacing", F::Spacing, K::Length, "design units", "distance between tines", true, 80.0, 0.02};
-constexpr ParamSpec Amplitude{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", false, 25.0, 0.02};
-constexpr ParamSpec Wavelength{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", true, 300.0, 0.05};
-constexpr ParamSpec Phase{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", false, 0.0, 45.0};
-constexpr ParamSpec Shape{"shape", F::Shape, K::Shape, "", "\"eggcrate\" or \"ripple\"", false, 0.0, 0.0};
-constexpr ParamSpec AmplitudePair{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", false, 25.0, 0.02, true};
-constexpr ParamSpec WavelengthPair{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", true, 300.0, 0.05, true};
-constexpr ParamSpec PhasePair{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", false, 0.0, 45.0, true};
+constexpr ParamSpec Center{"center", F::Center, K::Position, "design units", "centre of the tool", AnyNumber, 0.0, 0.08};
+constexpr ParamSpec Origin{"origin", F::Center, K::Position, "design units", "a point on the stroke's path", AnyNumber, 0.0, 0.08};
+constexpr ParamSpec Radius{"radius", F::Radius, K::Length, "design units", "radius", PositiveNumber, 60.0, 0.03};
+constexpr ParamSpec ColorRow{"color", F::Color, K::Color, "", "palette index of the ink", AnyNumber, 0.0, 0.0};
+constexpr ParamSpec Axis{"axis", F::Axis, K::Direction, "", "axis (turned by the right-hand rule)", AnyNumber, 0.0, 0.25};
+constexpr ParamSpec Angle{"angle", F::Angle, K::Angle, "degrees", "direction of motion, clockwise from +x", AnyNumber, 0.0, 25.0};
+constexpr ParamSpec Direction{"direction", F::Direction, K::Direction, "", "direction of motion", AnyNumber, 0.0, 0.25};
+constexpr ParamSpec Normal{"normal", F::Normal, K::Direction, "", "across the plane the tine sweeps", AnyNumber, 0.0, 0.25};
+constexpr ParamSpec Alpha{"alpha", F::Alpha, K::Shift, "design units", "largest shift, at the tine", AnyNumber, 60.0, 0.03};
+constexpr ParamSpec Lambda{"lambda", F::Lambda, K::Length, "design units", "sharpness: smaller concentrates the shift near the tine", PositiveNumber, 12.0, 0.01};
+constexpr ParamSpec Spacing{"spacing", F::Spacing, K::Length, "design units", "distance between tines", PositiveNumber, 80.0, 0.02};
+constexpr ParamSpec Amplitude{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02};
+constexpr ParamSpec Wavelength{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05};
+constexpr ParamSpec Phase{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0};
+constexpr ParamSpec Shape{"shape", F::Shape, K::Shape, "", "\"eggcrate\" or \"ripple\"", AnyNumber, 0.0, 0.0};
+constexpr ParamSpec AmplitudePair{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02, true};
+constexpr ParamSpec WavelengthPair{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05, true};
+constexpr ParamSpec PhasePair{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0, true};
 
 constexpr std::array Ink{Center, Radius, ColorRow};
 constexpr std::array Cylinder3{Center, Axis, Radius, ColorRow};
@@ -89,6 +90,20 @@ double* scalarField(const ParamSpec& spec, Operation& op) {
 }
 
 } // namespace
+
+std::string ParamRange::describe() const {
+    auto number = [](double v) {
+        std::string text = std::to_string(v);
+        text.erase(text.find_last_not_of('0') + 1);
+        if (!text.empty() && text.back() == '.') text.pop_back();
+        return text;
+    };
+    bool hasMin = std::isfinite(min), hasMax = std::isfinite(max);
+    if (hasMin && hasMax) return "must be in " + std::string(minOpen ? "(" : "[") + number(min) + ", " + number(max) + "]";
+    if (hasMin) return std::string("must be ") + (minOpen ? "> " : ">= ") + number(min);
+    if (hasMax) return "must be <= " + number(max);
+    return "must be finite";
+}
 
 const ToolSpec& toolSpec(Tool tool) { return Tools[static_cast<std::size_t>(tool)]; }
 

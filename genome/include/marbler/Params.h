@@ -4,7 +4,9 @@
 
 #include "marbler/Genome.h"
 
+#include <limits>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace marbler {
@@ -14,7 +16,7 @@ enum class ParamKind : std::uint8_t {
     Position,  ///< a point of the design space (`dimension` numbers)
     Direction, ///< a non-zero vector (`dimension` numbers, 3D only), normalised on load
     Angle,     ///< degrees
-    Length,    ///< design units, > 0 where `positive`
+    Length,    ///< design units, > 0 where the range says so
     Shift,     ///< signed design units (alpha, amplitude)
     Phase,     ///< degrees, any value
     Color,     ///< integer index into the palette
@@ -27,6 +29,22 @@ enum class ParamField : std::uint8_t {
     Amplitude, Wavelength, Phase, Shape, Color,
 };
 
+/// The values a parameter may take: [min, max], or (min, max] where `minOpen`.
+struct ParamRange {
+    double min = -std::numeric_limits<double>::infinity();
+    double max = std::numeric_limits<double>::infinity();
+    bool minOpen = false;
+
+    bool contains(double v) const { return (minOpen ? v > min : v >= min) && v <= max; }
+    /// What the validator says when a value is outside, e.g. "must be > 0".
+    std::string describe() const;
+};
+
+/// Any finite number.
+inline constexpr ParamRange AnyNumber{};
+/// Strictly positive numbers (radius, lambda, spacing, wavelength).
+inline constexpr ParamRange PositiveNumber{0.0, std::numeric_limits<double>::infinity(), true};
+
 /// One row of a tool's parameter table.
 struct ParamSpec {
     std::string_view key;  ///< JSON key
@@ -34,11 +52,12 @@ struct ParamSpec {
     ParamKind kind;
     std::string_view unit; ///< shown by the editor
     std::string_view help; ///< one line, for tooltips and --help
-    bool positive;         ///< must be > 0
+    ParamRange range;      ///< the values the validator accepts (every number must also be finite)
     double defaultValue;   ///< scalars; positions default to the design's centre
     /// How far a mutation of strength 1 moves the value: for positions, lengths and shifts a
     /// fraction of the design's largest side; for angles and phases, degrees.
     double mutationScale;
+    bool positive() const { return range.minOpen && range.min == 0.0; }
     /// True for a 3D wave's per-axis pairs: two numbers for an egg-crate, one for a ripple.
     bool pair = false;
 };
