@@ -1,8 +1,9 @@
 // The tile kernel. Every loop here computes the formulas of genome/src/Tools.cpp (the scalar
 // reference), in the same order of operations, so that the renderer and the reference agree to
 // the last bit wherever no sine, cosine, cube root or AVX-512 drop is involved, and within an
-// ulp or a few where one is (the 2D drop on AVX-512 CPUs replaces the divide and the square
-// root by a refined reciprocal square root: see drop2Avx512). This file is built with -O3
+// ulp or a few where one is (the drops on AVX-512 CPUs replace the divides, square roots and
+// cube root by refined reciprocal square roots and a multiply-only cube root, and fold the
+// compaction into the same pass: see dropAvx512). This file is built with -O3
 // -fno-math-errno -fno-trapping-math -ffp-contract=off: the first two let GCC vectorise sqrt
 // and floor, the last keeps it from fusing multiply-adds, which would round differently from
 // the reference.
@@ -210,57 +211,7 @@ MARBLER_IVDEP
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define MARBLER_AVX512_DROP 1
 
-/// One step of drop2Avx512: 8 points from i; `live` masks the points past n in the last
-/// step (full steps use plain loads and stores).
-template <bool Full>
-[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline void drop2Step(
-    double* __restrict x, double* __restrict y, std::int64_t* __restrict flag, int i, __mmask8 live, __m512d cx,
-    __m512d cy, __m512d rr, __m512d r2, std::int64_t& inside) {
-    const __m512d zero = _mm512_setzero_pd(), half = _mm512_set1_pd(0.5), one = _mm512_set1_pd(1.0);
-    const __m512d tiny = _mm512_set1_pd(1e-290), huge = _mm512_set1_pd(1e290);
-    const __m512i oneBit = _mm512_set1_epi64(1);
-    const bool full = Full;
-    __m512d px = full ? _mm512_loadu_pd(x + i) : _mm512_maskz_loadu_pd(live, x + i);
-    __m512d py = full ? _mm512_loadu_pd(y + i) : _mm512_maskz_loadu_pd(live, y + i);
-    const __m512d dx = _mm512_sub_pd(px, cx), dy = _mm512_sub_pd(py, cy);
-    const __m512d len2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
-    const __mmask8 in = _mm512_mask_cmp_pd_mask(live, len2, rr, _CMP_LT_OQ);
-    const __m512i inFlag = _mm512_maskz_mov_epi64(in, oneBit);
-    if (full)
-        _mm512_storeu_si512(flag + i, inFlag);
-    else
-        _mm512_mask_storeu_epi64(flag + i, live, inFlag);
-    inside += __builtin_popcount(unsigned(in));
-    const __m512d w = _mm512_sub_pd(len2, r2);
-    const __mmask8 outside = _mm512_cmp_pd_mask(w, zero, _CMP_GT_OQ);
-    const __m512d prod = _mm512_mul_pd(len2, w);
-    const __mmask8 normal = _mm512_cmp_pd_mask(prod, tiny, _CMP_GE_OQ) & _mm512_cmp_pd_mask(prod, huge, _CMP_LE_OQ);
-    __m512d factor;
-    if ((outside & live & ~normal) == 0) [[likely]] {
-        const __m512d hp = _mm512_mul_pd(prod, half);
-        __m512d g = _mm512_maskz_rsqrt14_pd(0xFF, prod);
-        for (int k = 0; k < 2; ++k) {
-            const __m512d e = _mm512_fnmadd_pd(_mm512_mul_pd(hp, g), g, half);
-            g = _mm512_fmadd_pd(g, e, g);
-        }
-        factor = _mm512_maskz_mul_pd(outside, w, g);
-    } else {
-        factor = _mm512_maskz_sqrt_pd(0xFF, _mm512_maskz_max_pd(0xFF, zero, _mm512_sub_pd(one, _mm512_div_pd(r2, len2))));
-    }
-    const __m512d fm1 = _mm512_sub_pd(factor, one);
-    const __mmask8 moves = _mm512_mask_cmp_pd_mask(live, len2, zero, _CMP_GT_OQ);
-    px = _mm512_mask_add_pd(px, moves, px, _mm512_mul_pd(dx, fm1));
-    py = _mm512_mask_add_pd(py, moves, py, _mm512_mul_pd(dy, fm1));
-    if (full) {
-        _mm512_storeu_pd(x + i, px);
-        _mm512_storeu_pd(y + i, py);
-    } else {
-        _mm512_mask_storeu_pd(x + i, live, px);
-        _mm512_mask_storeu_pd(y + i, live, py);
-    }
-}
-
-/// Whether the running CPU has AVX-512F (for the drop below); looked up once.
+/// Whether the running CPU has AVX-512F (for the drops below); looked up once.
 bool cpuHasAvx512() {
     static const bool has = [] {
         __builtin_cpu_init();
@@ -269,25 +220,147 @@ bool cpuHasAvx512() {
     return has;
 }
 
-/// The 2D drop with AVX-512 (see ink2): the same ink test, and the push with the factor
-/// sqrt(1 - r^2/len2) computed as w / sqrt(len2 w), w = len2 - r^2, from the hardware's
-/// 14-bit reciprocal square root and two Newton steps: a few ulps from the correctly rounded
-/// value (the test against the reference allows 1e-9), with no divide and no square root, which
-/// share one slow unit and bound the exact form. Vectors where len2 w is not a normal double
-/// (absurdly large or tiny distances) use the exact form.
-__attribute__((target("avx512f,fma"))) std::int64_t drop2Avx512(const PreparedOp& op, Tile& t, int n) {
-    double* __restrict x = t.x;
-    double* __restrict y = t.y;
-    std::int64_t* __restrict flag = t.flag;
-    const __m512d cx = _mm512_set1_pd(op.c.x), cy = _mm512_set1_pd(op.c.y);
+/// The exact 3D drop factor (ink3's formula) for the lanes of `len2`: the fallback of
+/// dropAvx512 where its fast form's inputs are out of range.
+[[gnu::noinline, gnu::cold]] void dropFactor3Exact(const double* len2, double r2, double* factor) {
+    for (int k = 0; k < 8; ++k) {
+        double len3 = len2[k] * std::sqrt(len2[k]);
+        factor[k] = cbrtUnit(std::max(0.0, 1.0 - r2 / len3));
+    }
+}
+
+/// The 3D drop factor cbrt(1 - r^3/len^3) without a divide or a square root: g = 1/len from
+/// the 14-bit reciprocal square root and two Newton steps, x = 1 - r^3 g^3 in one rounding,
+/// then y = x^(-1/3) from a float bit-trick guess (3.5%) and two third-order steps
+/// y += y h (1/3 + 2h/9 + 14h^2/81), h = 1 - x y^3 (error 2e-5, then below an ulp), and the
+/// cube root as x y^2: within a few ulps of the reference. Sets `bad` for the live lanes that
+/// need the exact form: len2 not a moderate normal double, or a point outside the ink with x
+/// below 1e-30 (float's range for the guess; only a hair from the ink's edge).
+[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline __m512d dropFactor3(
+    __m512d len2, __m512d r3, __mmask8 live, __mmask8 in, __mmask8& bad) {
+    const __m512d half = _mm512_set1_pd(0.5), one = _mm512_set1_pd(1.0);
+    const __m512d hp = _mm512_mul_pd(len2, half);
+    __m512d g = _mm512_maskz_rsqrt14_pd(0xFF, len2);
+    for (int k = 0; k < 2; ++k) {
+        const __m512d e = _mm512_fnmadd_pd(_mm512_mul_pd(hp, g), g, half);
+        g = _mm512_fmadd_pd(g, e, g);
+    }
+    const __m512d g3 = _mm512_mul_pd(_mm512_mul_pd(g, g), g);
+    const __m512d x = _mm512_fnmadd_pd(r3, g3, one);
+    bad = live & ~(_mm512_cmp_pd_mask(len2, _mm512_set1_pd(1e-200), _CMP_GE_OQ) &
+                   _mm512_cmp_pd_mask(len2, _mm512_set1_pd(1e200), _CMP_LE_OQ));
+    bad |= live & ~in & ~_mm512_cmp_pd_mask(x, _mm512_set1_pd(1e-30), _CMP_GE_OQ);
+    // Guess: the float's bits b give x^(-1/3) ~ bits magic - b/3 (b/3 in double: exact enough).
+    const __m256i bits = _mm256_castps_si256(_mm512_maskz_cvtpd_ps(0xFF, x));
+    const __m256i third =
+        _mm512_maskz_cvttpd_epi32(0xFF, _mm512_mul_pd(_mm512_maskz_cvtepi32_pd(0xFF, bits), _mm512_set1_pd(1.0 / 3.0)));
+    __m512d y = _mm512_maskz_cvtps_pd(0xFF, _mm256_castsi256_ps(_mm256_sub_epi32(_mm256_set1_epi32(0x54a21d2a), third)));
+    const __m512d c1 = _mm512_set1_pd(1.0 / 3.0), c2 = _mm512_set1_pd(2.0 / 9.0), c3 = _mm512_set1_pd(14.0 / 81.0);
+    for (int k = 0; k < 2; ++k) {
+        const __m512d y3 = _mm512_mul_pd(_mm512_mul_pd(y, y), y);
+        const __m512d h = _mm512_fnmadd_pd(x, y3, one);
+        const __m512d poly = _mm512_fmadd_pd(_mm512_fmadd_pd(c3, h, c2), h, c1);
+        y = _mm512_fmadd_pd(_mm512_mul_pd(y, h), poly, y);
+    }
+    // Points in the ink get 0, as max(0, .) gives the reference (they are removed anyway).
+    return _mm512_maskz_mul_pd(~in, x, _mm512_mul_pd(y, y));
+}
+
+/// One step of dropAvx512: 8 points from i (`live` masks those past n in the last step).
+/// Traces them through the drop and writes the survivors, compressed, from j; records the
+/// colour of those in the ink.
+template <int Dim>
+[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline void dropStep(
+    Tile& t, int i, int& j, __mmask8 live, __m512d cx, __m512d cy, __m512d cz, __m512d rr, __m512d r2, double r2s,
+    int color, int* __restrict colors) {
+    const __m512d zero = _mm512_setzero_pd(), half = _mm512_set1_pd(0.5), one = _mm512_set1_pd(1.0);
+    const bool full = live == 0xFF;
+    __m512d px = full ? _mm512_loadu_pd(t.x + i) : _mm512_maskz_loadu_pd(live, t.x + i);
+    __m512d py = full ? _mm512_loadu_pd(t.y + i) : _mm512_maskz_loadu_pd(live, t.y + i);
+    __m512d pz = zero;
+    if (Dim == 3) pz = full ? _mm512_loadu_pd(t.z + i) : _mm512_maskz_loadu_pd(live, t.z + i);
+    const __m512d dx = _mm512_sub_pd(px, cx), dy = _mm512_sub_pd(py, cy);
+    const __m512d dz = Dim == 3 ? _mm512_sub_pd(pz, cz) : zero;
+    __m512d len2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+    if (Dim == 3) len2 = _mm512_add_pd(len2, _mm512_mul_pd(dz, dz));
+    const __mmask8 in = _mm512_mask_cmp_pd_mask(live, len2, rr, _CMP_LT_OQ);
+    __m512d factor;
+    if (Dim == 2) {
+        // sqrt(1 - r^2/len2) as w / sqrt(len2 w), w = len2 - r^2 (see dropAvx512).
+        const __m512d w = _mm512_sub_pd(len2, r2);
+        const __mmask8 outside = _mm512_cmp_pd_mask(w, zero, _CMP_GT_OQ);
+        const __m512d prod = _mm512_mul_pd(len2, w);
+        const __mmask8 normal = _mm512_cmp_pd_mask(prod, _mm512_set1_pd(1e-290), _CMP_GE_OQ) &
+                                _mm512_cmp_pd_mask(prod, _mm512_set1_pd(1e290), _CMP_LE_OQ);
+        if ((outside & live & ~normal) == 0) [[likely]] {
+            const __m512d hp = _mm512_mul_pd(prod, half);
+            __m512d g = _mm512_maskz_rsqrt14_pd(0xFF, prod);
+            for (int k = 0; k < 2; ++k) {
+                const __m512d e = _mm512_fnmadd_pd(_mm512_mul_pd(hp, g), g, half);
+                g = _mm512_fmadd_pd(g, e, g);
+            }
+            factor = _mm512_maskz_mul_pd(outside, w, g);
+        } else {
+            factor = _mm512_maskz_sqrt_pd(0xFF, _mm512_maskz_max_pd(0xFF, zero, _mm512_sub_pd(one, _mm512_div_pd(r2, len2))));
+        }
+    } else {
+        __mmask8 bad;
+        factor = dropFactor3(len2, r2, live, in, bad);
+        if (bad != 0) [[unlikely]] {
+            alignas(64) double l[8], f[8];
+            _mm512_store_pd(l, len2);
+            dropFactor3Exact(l, r2s, f);
+            factor = _mm512_load_pd(f);
+        }
+    }
+    const __m512d fm1 = _mm512_sub_pd(factor, one);
+    const __mmask8 moves = _mm512_mask_cmp_pd_mask(live, len2, zero, _CMP_GT_OQ);
+    px = _mm512_mask_add_pd(px, moves, px, _mm512_mul_pd(dx, fm1));
+    py = _mm512_mask_add_pd(py, moves, py, _mm512_mul_pd(dy, fm1));
+    if (Dim == 3) pz = _mm512_mask_add_pd(pz, moves, pz, _mm512_mul_pd(dz, fm1));
+    const __mmask8 keep = live & ~in;
+    if (j == i && keep == live) {
+        // Nothing removed so far: the points stay where they are.
+        if (full) {
+            _mm512_storeu_pd(t.x + i, px);
+            _mm512_storeu_pd(t.y + i, py);
+            if (Dim == 3) _mm512_storeu_pd(t.z + i, pz);
+        } else {
+            _mm512_mask_storeu_pd(t.x + i, live, px);
+            _mm512_mask_storeu_pd(t.y + i, live, py);
+            if (Dim == 3) _mm512_mask_storeu_pd(t.z + i, live, pz);
+        }
+        j += __builtin_popcount(unsigned(live));
+        return;
+    }
+    for (unsigned m = in; m != 0; m &= m - 1) colors[t.id[i + __builtin_ctz(m)]] = color;
+    // Compress in registers and store whole vectors: j <= i, so the 8 slots from j lie below
+    // i + 8 (within the tile) and hold nothing not yet read; those past the survivors are junk
+    // beyond the new count.
+    const __m512i ids = _mm512_maskz_loadu_epi32(0xFF, t.id + i);
+    _mm512_storeu_pd(t.x + j, _mm512_maskz_compress_pd(keep, px));
+    _mm512_storeu_pd(t.y + j, _mm512_maskz_compress_pd(keep, py));
+    if (Dim == 3) _mm512_storeu_pd(t.z + j, _mm512_maskz_compress_pd(keep, pz));
+    _mm512_mask_storeu_epi32(t.id + j, 0xFF, _mm512_maskz_compress_epi32(__mmask16(keep), ids));
+    j += __builtin_popcount(unsigned(keep));
+}
+
+/// The drop with AVX-512 (see ink2 and ink3), with the compaction folded in: returns the number
+/// of points left. The push's factor has no divide and no square root, which share one slow
+/// unit and bound the exact form. In 2D, sqrt(1 - r^2/len2) is w / sqrt(len2 w), w = len2 -
+/// r^2, from the hardware's 14-bit reciprocal square root and two Newton steps; in 3D see
+/// dropFactor3. Both are a few ulps from the correctly rounded value (the test against the
+/// reference allows 1e-9); vectors with absurdly large or tiny distances use the exact form.
+/// The ink test itself is the reference's, bit for bit.
+template <int Dim>
+__attribute__((target("avx512f,fma"))) int dropAvx512(const PreparedOp& op, Tile& t, int n, int* colors) {
+    const __m512d cx = _mm512_set1_pd(op.c.x), cy = _mm512_set1_pd(op.c.y), cz = _mm512_set1_pd(op.c.z);
     const __m512d rr = _mm512_set1_pd(op.r * op.r), r2 = _mm512_set1_pd(op.r2);
-    std::int64_t inside = 0;
-    // One step of 8 points; `live` masks the points past n in the last step (full steps use
-    // plain loads and stores).
-    int i = 0;
-    for (; i + 8 <= n; i += 8) drop2Step<true>(x, y, flag, i, __mmask8(0xFF), cx, cy, rr, r2, inside);
-    if (i < n) drop2Step<false>(x, y, flag, i, __mmask8((1u << (n - i)) - 1u), cx, cy, rr, r2, inside);
-    return inside;
+    int i = 0, j = 0;
+    for (; i + 8 <= n; i += 8) dropStep<Dim>(t, i, j, __mmask8(0xFF), cx, cy, cz, rr, r2, op.r2, op.color, colors);
+    if (i < n)
+        dropStep<Dim>(t, i, j, __mmask8((1u << (n - i)) - 1u), cx, cy, cz, rr, r2, op.r2, op.color, colors);
+    return j;
 }
 #endif
 
@@ -533,14 +606,13 @@ std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension,
             switch (op.tool) {
             case Tool::Drop:
             case Tool::Spray: {
-                std::int64_t inside;
 #ifdef MARBLER_AVX512_DROP
-                if (op.tool == Tool::Drop && hasAvx512)
-                    inside = drop2Avx512(op, tile, n);
-                else
+                if (op.tool == Tool::Drop && hasAvx512) {
+                    n = dropAvx512<2>(op, tile, n, colors);
+                    break;
+                }
 #endif
-                    inside = ink2(op, tile, n, op.tool == Tool::Drop);
-                if (inside != 0) n = compact(tile, n, 2, op.color, colors);
+                if (ink2(op, tile, n, op.tool == Tool::Drop) != 0) n = compact(tile, n, 2, op.color, colors);
                 break;
             }
             case Tool::Line: line2(op, tile, n, false); break;
@@ -554,6 +626,13 @@ std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension,
         } else {
             switch (op.tool) {
             case Tool::Drop:
+#ifdef MARBLER_AVX512_DROP
+                if (hasAvx512) {
+                    n = dropAvx512<3>(op, tile, n, colors);
+                    break;
+                }
+#endif
+                [[fallthrough]];
             case Tool::Spray:
             case Tool::Cylinder:
                 if (ink3(op, tile, n) != 0) n = compact(tile, n, 3, op.color, colors);
