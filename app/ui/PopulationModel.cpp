@@ -3,6 +3,7 @@
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
+#include "ui/Session.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -158,7 +159,9 @@ void PopulationModel::setCell(int index, const Genome& genome, const QString& de
 void PopulationModel::setCellLocks(int index, const Locks& locks) {
     if (!cell(index)) return;
     setLocks(*currentMutable().cells[std::size_t(index)], locks);
+    if (std::size_t(mCurrent) < mSessionCells.size()) mSessionCells[std::size_t(mCurrent)].clear();
     emit cellChanged(index);
+    autosave();
 }
 
 void PopulationModel::pushGeneration(Generation generation) {
@@ -168,12 +171,14 @@ void PopulationModel::pushGeneration(Generation generation) {
         mCurrent = -1;
     }
     mHistory.resize(std::size_t(mCurrent + 1));
+    if (mSessionCells.size() > mHistory.size()) mSessionCells.resize(mHistory.size());
     generation.number = mCurrent + 1;
     mHistory.push_back(std::move(generation));
     mCurrent = int(mHistory.size()) - 1;
     emit populationChanged();
     emit selectionChanged();
     emit historyChanged();
+    autosave();
 }
 
 void PopulationModel::goBack() {
@@ -182,6 +187,7 @@ void PopulationModel::goBack() {
     emit populationChanged();
     emit selectionChanged();
     emit historyChanged();
+    autosave();
 }
 
 void PopulationModel::goForward() {
@@ -190,6 +196,7 @@ void PopulationModel::goForward() {
     emit populationChanged();
     emit selectionChanged();
     emit historyChanged();
+    autosave();
 }
 
 void PopulationModel::goTo(int index) {
@@ -198,6 +205,54 @@ void PopulationModel::goTo(int index) {
     emit populationChanged();
     emit selectionChanged();
     emit historyChanged();
+    autosave();
+}
+
+void PopulationModel::setSessionFile(const QString& file) {
+    mSessionFile = file;
+    autosave();
+}
+
+bool PopulationModel::saveSession() {
+    if (mSessionFile.isEmpty() || mEmptyStart) return true;
+    try {
+        const QString folder = QFileInfo(mSessionFile).absolutePath();
+        if (!QDir().mkpath(folder)) throw RuntimeFailure("cannot create the session folder " + folder.toStdString());
+        writeFileAtomically(mSessionFile.toStdString(), serializeSession(*this, &mSessionCells));
+        return true;
+    } catch (const std::exception& e) { // also the JSON library's (a folder name that is not UTF-8)
+        emit sessionSaveFailed(QString::fromStdString(e.what()));
+        return false;
+    }
+}
+
+void PopulationModel::autosave() { saveSession(); }
+
+void PopulationModel::restoreSession(SavedSession session) {
+    if (session.history.empty()) return;
+    mHistory = std::move(session.history);
+    mSessionCells.clear();
+    for (std::size_t k = 0; k < mHistory.size(); ++k) mHistory[k].number = int(k);
+    mCurrent = std::clamp(session.current, 0, int(mHistory.size()) - 1);
+    mSessionSeed = session.seed;
+    mMesh = session.mesh;
+    mEmptyStart = false;
+    emit populationChanged();
+    emit selectionChanged();
+    emit historyChanged();
+    autosave();
+}
+
+void PopulationModel::setMesh(const QString& mesh) {
+    if (mesh == mMesh) return;
+    mMesh = mesh;
+    autosave();
+}
+
+int PopulationModel::populationDimension() const {
+    for (const auto& c : current().cells)
+        if (c) return c->dimension;
+    return 2;
 }
 
 QString PopulationModel::defaultFavouritesFolder() {

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace marbler::ui {
@@ -41,6 +42,8 @@ struct Favourite {
 /// new change is made after going back. A new model holds an empty placeholder grid that is not
 /// a generation: the first designs (a random population, opened files) replace it and become
 /// generation 1, so there is never an empty grid to go back to.
+struct SavedSession;
+
 class PopulationModel : public QObject {
     Q_OBJECT
 public:
@@ -110,6 +113,24 @@ public:
     /// The default favourites folder (see favouritesFolder()).
     static QString defaultFavouritesFolder();
 
+    /// Session autosave (Session.h): with a file set, the whole session (every generation, the
+    /// current one, the seed, the kind and the object) is written to it atomically after every
+    /// change of the population: a new generation, back/forward, a lock changed, the object
+    /// changed. Selecting parents alone does not write; the selection goes with the next save.
+    /// An empty workbench is never written. Setting a file writes it at once. Empty: no autosave.
+    void setSessionFile(const QString& file);
+    QString sessionFile() const { return mSessionFile; }
+    /// Writes the session now; false (and sessionSaveFailed) when it could not be written.
+    bool saveSession();
+    /// Replaces the history with a saved one (its generations, current generation, seed and
+    /// object), then autosaves as after any change.
+    void restoreSession(SavedSession session);
+    /// The object solid designs are shown on, kept with the session.
+    QString mesh() const { return mMesh; }
+    void setMesh(const QString& mesh);
+    /// The kind of the current grid: the dimension of its first design (2 when empty).
+    int populationDimension() const;
+
 signals:
     /// The designs of the grid changed (a new generation or going back/forward).
     void populationChanged();
@@ -118,9 +139,12 @@ signals:
     void selectionChanged();
     void historyChanged();
     void favouritesChanged();
+    /// The session could not be autosaved (the message names the file and the reason).
+    void sessionSaveFailed(const QString& message);
 
 private:
     void pushGeneration(Generation generation);
+    void autosave();
     Generation& currentMutable() { return mHistory[std::size_t(mCurrent)]; }
 
     std::uint64_t mSessionSeed = 1;
@@ -129,6 +153,10 @@ private:
     bool mEmptyStart = true;
     QString mFavouritesFolder;
     std::vector<Favourite> mFavourites;
+    QString mSessionFile;
+    /// Each generation's designs as session text (serializeSession); empty: to be made.
+    std::vector<std::string> mSessionCells;
+    QString mMesh = QStringLiteral("vase");
 };
 
 /// A short label of an operator for the UI ("Alter", "Recombine", "Swap", "Change initial state").

@@ -64,14 +64,28 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog
     mMesh->setToolTip(tr("The object solid designs are shown on"));
     mDontAsk = new QCheckBox(tr("&Don't ask again (the toolbar still changes it)"), this);
 
-    (defaults.dimension == 3 ? mSolid : mFlat)->setDefault(true);
-    (defaults.dimension == 3 ? mSolid : mFlat)->setFocus();
+    if (defaults.resumeGeneration > 0) {
+        mResume = new QPushButton(tr("&Resume the last session (generation %1, %2)")
+                                      .arg(defaults.resumeGeneration)
+                                      .arg(defaults.resumeDimension == 3 ? tr("solid") : tr("2D")),
+                                  this);
+        mResume->setToolTip(tr("Every generation of the last session, back where you left it"));
+        connect(mResume, &QPushButton::clicked, this, [this] {
+            mChoice.resume = true;
+            accept();
+        });
+    }
+    QPushButton* preferred = mResume ? mResume : (defaults.dimension == 3 ? mSolid : mFlat);
+    preferred->setDefault(true);
+    preferred->setFocus();
 
     connect(mFlat, &QPushButton::clicked, this, [this] {
+        mChoice.resume = false;
         mChoice.dimension = 2;
         accept();
     });
     connect(mSolid, &QPushButton::clicked, this, [this] {
+        mChoice.resume = false;
         mChoice.dimension = 3;
         mChoice.mesh = mMesh->currentText();
         accept();
@@ -83,6 +97,7 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);
     layout->addSpacing(8);
+    if (mResume) layout->addWidget(mResume);
     layout->addWidget(mFlat);
     layout->addLayout(solidRow);
     layout->addSpacing(8);

@@ -1,7 +1,7 @@
 #pragma once
-/// The start choice: breed flat (2D) designs, or solid (3D) designs shown on an object. Asked
-/// when the workbench opens with no genome files, unless the user ticked "don't ask again";
-/// the toolbar's kind box changes it later.
+/// The start choice: resume the last session (when one was saved), breed flat (2D) designs, or
+/// solid (3D) designs shown on an object. Asked when the workbench opens with no genome files,
+/// unless the user ticked "don't ask again"; the toolbar's kind box changes it later.
 
 #include <QDialog>
 #include <QString>
@@ -22,6 +22,13 @@ QStringList meshNames();
 struct StartChoice {
     int dimension = 2;                   ///< 2: flat, 3: solid
     QString mesh = QStringLiteral("vase"); ///< the object a solid design is shown on
+    /// The answer: resume the saved session instead of a new population (the default when one
+    /// is offered).
+    bool resume = false;
+    /// The offer: the saved session's current generation (as shown, from 1) and kind; 0 when
+    /// there is no session to resume.
+    int resumeGeneration = 0;
+    int resumeDimension = 2;
     bool operator==(const StartChoice&) const = default;
 };
 
@@ -41,6 +48,8 @@ public:
     StartChoice choice() const { return mChoice; }
     bool dontAskAgain() const;
 
+    /// "Resume the last session (...)": nullptr when no session is offered.
+    QPushButton* resumeButton() const { return mResume; }
     QPushButton* flatButton() const { return mFlat; }
     QPushButton* solidButton() const { return mSolid; }
     QComboBox* meshBox() const { return mMesh; }
@@ -48,6 +57,7 @@ public:
 
 private:
     StartChoice mChoice;
+    QPushButton* mResume = nullptr;
     QPushButton* mFlat;
     QPushButton* mSolid;
     QComboBox* mMesh;

@@ -1,16 +1,20 @@
 #include "ui/Workbench.h"
 
+#include "ui/ErrorReport.h"
 #include "ui/RenderService.h"
+#include "ui/Session.h"
 #include "ui/StartDialog.h"
 #include "ui/WorkbenchWindow.h"
 
 #include <QApplication>
+#include <QFileInfo>
 #include <QStringList>
 #include <QTimer>
 
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string_view>
@@ -132,21 +136,59 @@ WorkbenchArgs parseWorkbenchArgs(std::span<const std::string> words) {
 }
 
 void startSession(WorkbenchWindow& window, const StartOptions& options) {
+    const QString sessionFile =
+        options.sessionFolder.empty() ? QString() : sessionFilePath(QString::fromStdString(options.sessionFolder));
+    // The saved session is offered only to a start that names neither files nor a kind.
+    std::optional<SavedSession> saved;
+    if (!sessionFile.isEmpty() && options.files.empty() && !options.dimension && QFileInfo::exists(sessionFile)) {
+        try {
+            saved = loadSession(sessionFile);
+        } catch (const std::exception& e) { // a bad session never stops the start
+            const QString aside = keepBadSession(sessionFile);
+            reportError(&window, WorkbenchWindow::tr("Cannot resume the last session"),
+                        WorkbenchWindow::tr("The last session could not be read, so a new one starts.\n\n%1\n\n%2")
+                            .arg(QString::fromStdString(e.what()),
+                                 aside.isEmpty() ? WorkbenchWindow::tr("The file could not be moved aside.")
+                                                 : WorkbenchWindow::tr("The file is kept as %1.").arg(aside)));
+        }
+    }
+
     if (!options.files.empty()) {
         QStringList files;
         for (const std::string& f : options.files) files << QString::fromStdString(f);
         window.openFiles(files);
     }
-    // Opened designs are generation 1; with none (no files, or none that loaded) a random one is.
-    if (!window.model()->isEmptyWorkbench()) return;
-    StartChoice choice = lastStartChoice();
-    if (options.dimension) {
-        choice.dimension = *options.dimension;
-    } else if (options.ask && askStartChoice()) {
-        if (const auto chosen = chooseStart(&window, choice)) choice = *chosen;
+    // Opened designs are generation 1; with none (no files, or none that loaded) the saved
+    // session or a random population is.
+    bool resumed = false;
+    if (window.model()->isEmptyWorkbench()) {
+        StartChoice choice = lastStartChoice();
+        if (saved) {
+            choice.resume = true;
+            choice.resumeGeneration = saved->current + 1;
+            choice.resumeDimension = saved->dimension;
+        }
+        if (options.dimension) {
+            choice.dimension = *options.dimension;
+        } else if (options.ask && askStartChoice()) {
+            if (const auto chosen = chooseStart(&window, choice)) choice = *chosen;
+        }
+        if (saved && choice.resume) {
+            window.resumeSession(std::move(*saved));
+            resumed = true;
+        } else {
+            if (choice.dimension == 3) window.setMesh(choice.mesh);
+            window.newRandomPopulation(choice.dimension);
+        }
     }
-    if (choice.dimension == 3) window.setMesh(choice.mesh);
-    window.newRandomPopulation(choice.dimension);
+    if (sessionFile.isEmpty()) return;
+    if (!resumed && QFileInfo::exists(sessionFile)) {
+        // A new session replaces the saved one: keep the old one a step behind, not destroyed.
+        std::error_code ignored;
+        const std::filesystem::path file = sessionFile.toStdString();
+        std::filesystem::rename(file, file.parent_path() / "session.previous.json", ignored);
+    }
+    window.model()->setSessionFile(sessionFile);
 }
 
 int runWorkbench(int argc, char** argv) {
@@ -174,6 +216,8 @@ int runWorkbench(int argc, char** argv) {
     if (!start.dimension && !qEnvironmentVariableIsEmpty("MARBLER_SOLID"))
         start.dimension = qEnvironmentVariableIntValue("MARBLER_SOLID") == 1 ? 3 : 2;
     start.ask = screenshotFile.isEmpty() && qEnvironmentVariableIntValue("MARBLER_NO_START_DIALOG") != 1;
+    // A screenshot is made from a fresh, reproducible session and leaves the saved one alone.
+    if (screenshotFile.isEmpty()) start.sessionFolder = defaultSessionFolder().toStdString();
 
     RenderService service;
     WorkbenchWindow window(&service);

@@ -31,10 +31,17 @@ struct StartOptions {
     std::vector<std::string> files;
     std::optional<int> dimension; ///< forced (command line or MARBLER_SOLID); no question then
     bool ask = true;              ///< whether the start choice may be asked at all
+    /// The folder the session is autosaved to and resumed from (defaultSessionFolder() for the
+    /// window); empty: neither.
+    std::string sessionFolder;
 };
 
-/// Opens the files, or else makes the first random population: flat or solid as forced, as the
-/// start chooser answers (unless "don't ask again" was ticked), or as last time.
+/// Opens the files, or else resumes the saved session or makes the first random population:
+/// flat or solid as forced, as the start chooser answers (unless "don't ask again" was ticked),
+/// or as last time. With no files and no forced kind, a saved session is offered as the default
+/// choice (and resumed when the question is not asked). A session file that does not load is
+/// reported once and moved aside as `.bad`; a saved session not resumed is kept as
+/// `session.previous.json`. From then on the session autosaves to the folder.
 void startSession(WorkbenchWindow& window, const StartOptions& options);
 
 /// Creates the QApplication, opens the window (with the genome files named in argv) and runs

@@ -136,8 +136,20 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     });
     connect(mModel, &PopulationModel::historyChanged, this, &WorkbenchWindow::updateActions);
     connect(mModel, &PopulationModel::favouritesChanged, this, &WorkbenchWindow::updateFavourites);
+    connect(mModel, &PopulationModel::sessionSaveFailed, this, [this](const QString& message) {
+        // Once as a message, after that on the status bar: every change would fail the same way.
+        if (!mSaveFailureShown) {
+            mSaveFailureShown = true;
+            reportError(this, tr("Cannot save the session"),
+                        tr("The breeding session could not be saved, so it would not survive a crash; "
+                           "keep the designs you like as favourites.\n\n%1").arg(message));
+        } else {
+            statusBar()->showMessage(tr("The session could not be saved: %1").arg(message), 10000);
+        }
+    });
 
     readSettings();
+    mModel->setMesh(mMesh->currentText());
     const QStringList favouriteErrors = mModel->setFavouritesFolder(PopulationModel::defaultFavouritesFolder());
     if (!favouriteErrors.isEmpty())
         statusBar()->showMessage(tr("Some favourites could not be read: %1").arg(favouriteErrors.join(QStringLiteral("; "))), 10000);
@@ -240,6 +252,7 @@ void WorkbenchWindow::buildActions() {
     mMesh->setToolTip(tr("The object solid designs are shown on (drag in a cell to turn it)"));
     connect(mMesh, &QComboBox::currentTextChanged, this, [this](const QString& mesh) {
         QSettings().setValue(QStringLiteral("view/mesh"), mesh);
+        mModel->setMesh(mesh);
         requestAllRenders();
     });
     bar->addWidget(mMesh);
@@ -682,6 +695,14 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
     dialog->show();
     emit designOpened(dialog);
     return dialog;
+}
+
+void WorkbenchWindow::resumeSession(SavedSession session) {
+    const int dimension = session.dimension;
+    mModel->restoreSession(std::move(session));
+    mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
+    setMesh(mModel->mesh());
+    statusBar()->showMessage(tr("Resumed the last session at generation %1").arg(mModel->currentIndex() + 1), 5000);
 }
 
 QString WorkbenchWindow::mesh() const { return mMesh->currentText(); }

@@ -4,6 +4,7 @@
 
 #include "marbler/Operators.h"
 #include "ui/PopulationModel.h"
+#include "ui/Session.h"
 
 #include <QCache>
 #include <QMainWindow>
@@ -50,6 +51,9 @@ public:
     bool applyOperator(GeneticOperator op);
     /// A fresh random population (2: flat, 3: solid); remembers the choice.
     void newRandomPopulation(int dimension);
+    /// Brings back a saved session: its generations, the current one, the seed, the kind box
+    /// and the object.
+    void resumeSession(SavedSession session);
     /// The object solid designs are shown on ("vase", "sphere", ...; see meshNames()).
     QString mesh() const;
     void setMesh(const QString& mesh);
@@ -114,6 +118,7 @@ private:
     QTreeWidget* mLineageTree = nullptr;
     QLabel* mBackendLabel = nullptr;
     QTimer mResizeTimer;
+    bool mSaveFailureShown = false;
 };
 
 } // namespace marbler::ui

@@ -4,6 +4,7 @@
 #include "TestUtil.h"
 
 #include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/gl/GlRenderer.h"
@@ -12,6 +13,7 @@
 #include "ui/ErrorReport.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
+#include "ui/Session.h"
 #include "ui/StartDialog.h"
 #include "ui/Workbench.h"
 #include "ui/WorkbenchWindow.h"
@@ -549,6 +551,320 @@ TEST_F(StartChoiceTest, StartDialogOffersBothKindsAndRemembersNotAsking) {
     rememberStartChoice(dialog.choice(), !dialog.dontAskAgain());
     EXPECT_FALSE(askStartChoice());
     EXPECT_EQ(lastStartChoice(), (StartChoice{3, QStringLiteral("teapot")}));
+}
+
+// The session: autosaved after every change, offered and resumed at the next start.
+
+/// Everything a session's history holds, as text, for exact comparisons.
+std::vector<std::string> historySnapshot(const PopulationModel& model) {
+    std::vector<std::string> result;
+    for (const Generation& g : model.history()) {
+        std::string text = std::to_string(g.number) + "|" + g.description.toStdString() + "|";
+        for (int p : g.parentCells) text += std::to_string(p) + ",";
+        text += "|";
+        for (int i = 0; i < CellCount; ++i) {
+            text += g.selected[std::size_t(i)] ? "S" : "-";
+            text += g.cells[std::size_t(i)] ? serializeGenome(*g.cells[std::size_t(i)]) : std::string("(empty)");
+        }
+        result.push_back(text);
+    }
+    return result;
+}
+
+/// Every entry of a folder, hidden ones (a temporary file of an atomic write) included.
+QStringList folderEntries(const QString& folder) {
+    return QDir(folder).entryList(QDir::Files | QDir::Dirs | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
+}
+
+class SessionTest : public StartChoiceTest {
+protected:
+    void SetUp() override {
+        StartChoiceTest::SetUp();
+        ASSERT_TRUE(mFavourites.isValid());
+        ASSERT_TRUE(mSession.isValid());
+        qputenv("MARBLER_FAVOURITES_DIR", mFavourites.path().toLocal8Bit());
+        options.sessionFolder = mSession.path().toStdString();
+    }
+    void TearDown() override {
+        qunsetenv("MARBLER_FAVOURITES_DIR");
+        StartChoiceTest::TearDown();
+    }
+    QString sessionFile() const { return sessionFilePath(mSession.path()); }
+
+    QTemporaryDir mFavourites;
+    QTemporaryDir mSession;
+    StartOptions options;
+};
+
+TEST_F(SessionTest, ResumeBringsBackGenerationsCurrentSeedAndHistory) {
+    answer = StartChoice{2, QStringLiteral("vase")};
+    std::vector<std::string> before;
+    std::vector<std::string> grid;
+    std::uint64_t seed = 0, nextSeed = 0;
+    {
+        WorkbenchWindow window(&service);
+        startSession(window, options);
+        EXPECT_EQ(lastDefaults.resumeGeneration, 0) << "nothing to resume the first time";
+        PopulationModel& m = *window.model();
+        m.setSelected(0, true);
+        ASSERT_TRUE(window.applyOperator(GeneticOperator::Alter));
+        m.clearSelection();
+        m.setSelected(1, true);
+        m.setSelected(2, true);
+        ASSERT_TRUE(window.applyOperator(GeneticOperator::Recombine));
+        m.goBack(); // generation 2 of 3: forward history to bring back too
+        m.setCellLocks(5, Locks{true, false, true});
+        ASSERT_EQ(m.history().size(), 3u);
+        ASSERT_EQ(m.currentIndex(), 1);
+        before = historySnapshot(m);
+        grid = snapshot(m);
+        seed = m.sessionSeed();
+        nextSeed = m.nextBreedSeed();
+    } // the window and its model are gone, as after a crash or a close
+
+    WorkbenchWindow window(&service);
+    answer.reset(); // the question closed: its default, resuming, applies
+    startSession(window, options);
+    EXPECT_EQ(asked, 2);
+    EXPECT_TRUE(lastDefaults.resume) << "resuming is the default choice";
+    EXPECT_EQ(lastDefaults.resumeGeneration, 2);
+    EXPECT_EQ(lastDefaults.resumeDimension, 2);
+    PopulationModel& m = *window.model();
+    EXPECT_EQ(historySnapshot(m), before);
+    EXPECT_EQ(snapshot(m), grid);
+    EXPECT_EQ(m.currentIndex(), 1);
+    EXPECT_EQ(m.sessionSeed(), seed);
+    EXPECT_EQ(m.nextBreedSeed(), nextSeed) << "breeding goes on as it would have";
+    EXPECT_EQ(locksOf(*m.cell(5)), (Locks{true, false, true}));
+    EXPECT_TRUE(window.backAction()->isEnabled());
+    EXPECT_TRUE(window.forwardAction()->isEnabled());
+    m.goForward();
+    EXPECT_EQ(m.currentIndex(), 2);
+    EXPECT_EQ(m.current().description, QStringLiteral("Recombine of 2 parents"));
+    m.goTo(0);
+    EXPECT_EQ(m.current().description, QStringLiteral("New random population"));
+    EXPECT_EQ(folderEntries(mSession.path()), QStringList{QStringLiteral("session.json")})
+        << "resuming keeps one session file";
+}
+
+TEST_F(SessionTest, SolidSessionResumesItsKindAndObject) {
+    answer = StartChoice{3, QStringLiteral("torus")};
+    {
+        WorkbenchWindow window(&service);
+        startSession(window, options);
+        ASSERT_EQ(window.model()->cell(0)->dimension, 3);
+        window.setMesh(QStringLiteral("teapot")); // changing the object is saved too
+    }
+    rememberStartChoice({2, QStringLiteral("cube")}, true); // what the settings say now
+    answer = StartChoice{2, QStringLiteral("cube"), true};
+    WorkbenchWindow window(&service);
+    startSession(window, options);
+    EXPECT_EQ(lastDefaults.resumeGeneration, 1);
+    EXPECT_EQ(lastDefaults.resumeDimension, 3);
+    EXPECT_EQ(window.model()->cell(4)->dimension, 3);
+    EXPECT_EQ(window.mesh(), QStringLiteral("teapot"));
+    EXPECT_EQ(window.model()->populationDimension(), 3);
+}
+
+TEST_F(SessionTest, NotResumingKeepsTheOldSessionAStepBehind) {
+    answer = StartChoice{2, QStringLiteral("vase")};
+    std::vector<std::string> first;
+    {
+        WorkbenchWindow window(&service);
+        startSession(window, options);
+        first = snapshot(*window.model());
+    }
+    answer = StartChoice{3, QStringLiteral("vase")}; // "breed solid" instead of resuming
+    WorkbenchWindow window(&service);
+    startSession(window, options);
+    EXPECT_EQ(window.model()->cell(0)->dimension, 3);
+    EXPECT_EQ(folderEntries(mSession.path()),
+              (QStringList{QStringLiteral("session.json"), QStringLiteral("session.previous.json")}));
+    const SavedSession previous = loadSession(mSession.filePath(QStringLiteral("session.previous.json")));
+    ASSERT_EQ(previous.history.size(), 1u);
+    EXPECT_EQ(serializeGenome(*previous.history[0].cells[0]), first[0]);
+    EXPECT_EQ(loadSession(sessionFile()).dimension, 3);
+
+    // A forced kind (--solid, --flat) starts a new session without offering the old one.
+    const int askedBefore = asked;
+    WorkbenchWindow forced(&service);
+    StartOptions flat = options;
+    flat.dimension = 2;
+    startSession(forced, flat);
+    EXPECT_EQ(asked, askedBefore);
+    EXPECT_EQ(forced.model()->cell(0)->dimension, 2);
+}
+
+TEST_F(SessionTest, EveryChangeIsSavedAtomically) {
+    answer = StartChoice{2, QStringLiteral("vase")};
+    ErrorCapture errors;
+    WorkbenchWindow window(&service);
+    PopulationModel& m = *window.model();
+    // Saved state equals the model: generations, current, seed.
+    const auto expectSaved = [&](const char* after) {
+        const SavedSession saved = loadSession(sessionFile());
+        PopulationModel copy;
+        copy.restoreSession(saved);
+        EXPECT_EQ(historySnapshot(copy), historySnapshot(m)) << after;
+        EXPECT_EQ(saved.current, m.currentIndex()) << after;
+        EXPECT_EQ(saved.seed, m.sessionSeed()) << after;
+        EXPECT_EQ(folderEntries(mSession.path()), QStringList{QStringLiteral("session.json")})
+            << after << ": no temporary file is left behind";
+    };
+    startSession(window, options);
+    expectSaved("the first population");
+    m.setSelected(3, true);
+    ASSERT_TRUE(window.applyOperator(GeneticOperator::Alter));
+    expectSaved("an operator");
+    m.goBack();
+    expectSaved("back");
+    m.goForward();
+    expectSaved("forward");
+    m.goBack();
+    m.clearSelection();
+    m.setSelected(6, true);
+    ASSERT_TRUE(window.applyOperator(GeneticOperator::Reinit));
+    EXPECT_EQ(m.history().size(), 2u);
+    expectSaved("breeding after going back (the forward history is dropped)");
+    window.newRandomPopulation(2);
+    expectSaved("a new random population");
+    const QString design = QString::fromStdString((test::dataDir() / "examples" / "five-stones.marble.json").string());
+    ASSERT_TRUE(window.openFiles({design}, 2));
+    expectSaved("an opened file");
+    dropFiles(window.cell(7), {design});
+    EXPECT_EQ(*m.cell(7), loadGenome(design.toStdString()));
+    expectSaved("a dropped file");
+    m.setCellLocks(1, Locks{false, true, false});
+    expectSaved("locks");
+    EXPECT_EQ(locksOf(*loadSession(sessionFile()).history[std::size_t(m.currentIndex())].cells[1]),
+              (Locks{false, true, false}));
+    EXPECT_TRUE(errors.messages.isEmpty()) << errors.messages.join(QStringLiteral("\n")).toStdString();
+}
+
+TEST_F(SessionTest, CorruptSessionIsReportedKeptAsBadAndAFreshOneStarts) {
+    answer = StartChoice{2, QStringLiteral("vase")};
+    {
+        WorkbenchWindow window(&service);
+        startSession(window, options);
+    }
+    // Half a session, as a crash in a non-atomic writer would leave it.
+    QFile file(sessionFile());
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QByteArray whole = file.readAll();
+    file.close();
+    const QByteArray half = whole.left(whole.size() / 2);
+    {
+        QFile out(sessionFile());
+        ASSERT_TRUE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        out.write(half);
+    }
+    ErrorCapture errors;
+    const int askedBefore = asked;
+    lastDefaults = {};
+    WorkbenchWindow window(&service);
+    startSession(window, options);
+    ASSERT_EQ(errors.messages.size(), 1) << "reported once";
+    EXPECT_TRUE(errors.messages.front().startsWith(QStringLiteral("Cannot resume the last session")));
+    EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("session.json.bad")));
+    EXPECT_EQ(asked, askedBefore + 1);
+    EXPECT_EQ(lastDefaults.resumeGeneration, 0) << "nothing to resume offered";
+    EXPECT_EQ(window.model()->history().size(), 1u) << "a fresh session";
+    QFile bad(sessionFile() + QStringLiteral(".bad"));
+    ASSERT_TRUE(bad.open(QIODevice::ReadOnly)) << "the bad file is kept aside";
+    EXPECT_EQ(bad.readAll(), half);
+    EXPECT_NO_THROW(loadSession(sessionFile())) << "the fresh session is saved";
+
+    // Valid JSON holding a broken design: also kept aside (beside the first), named.
+    std::string broken = whole.toStdString();
+    const auto pos = broken.find("\"format\":\"marbler-genome\",\"version\":1,\"dimension\":2");
+    ASSERT_NE(pos, std::string::npos) << broken.substr(0, 400);
+    broken.replace(pos, 51, "\"format\":\"marbler-genome\",\"version\":1,\"dimension\":7");
+    {
+        QFile out(sessionFile());
+        ASSERT_TRUE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        out.write(QByteArray::fromStdString(broken));
+    }
+    EXPECT_THROW(loadSession(sessionFile()), InputError);
+    WorkbenchWindow again(&service);
+    startSession(again, options);
+    ASSERT_EQ(errors.messages.size(), 2);
+    EXPECT_TRUE(errors.messages.back().contains(QStringLiteral("session.json.2.bad")));
+    EXPECT_TRUE(QFileInfo::exists(sessionFile() + QStringLiteral(".2.bad")));
+    EXPECT_TRUE(QFileInfo::exists(sessionFile() + QStringLiteral(".bad")));
+    EXPECT_EQ(again.model()->history().size(), 1u);
+}
+
+TEST_F(SessionTest, BadSessionDocumentsThrowInputErrors) {
+    const auto fails = [](const std::string& text) {
+        try {
+            parseSession(text, "s.json");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_NE(fails(""), "(no error)");
+    EXPECT_NE(fails("[]"), "(no error)");
+    EXPECT_NE(fails(R"({"format":"marbler-session","version":1})"), "(no error)");
+    const std::string genome = serializeGenome(randomGenome(3, 2));
+    const std::string cells = "[" + genome + ",null,null,null,null,null,null,null,null]";
+    const std::string good = R"({"format":"marbler-session","version":1,"seed":5,"dimension":2,"current":0,)"
+                             R"("generations":[{"cells":)" + cells + "}]}";
+    EXPECT_EQ(fails(good), "(no error)");
+    const SavedSession s = parseSession(good, "s.json");
+    EXPECT_EQ(s.seed, 5u);
+    EXPECT_EQ(*s.history[0].cells[0], randomGenome(3, 2));
+    std::string outOfRange = good;
+    outOfRange.replace(outOfRange.find("\"current\":0"), 11, "\"current\":1");
+    EXPECT_EQ(fails(outOfRange), "s.json: current: must name one of the generations");
+    std::string noDesigns = R"({"format":"marbler-session","version":1,"seed":5,"dimension":2,"current":0,)"
+                            R"("generations":[{"cells":[null,null,null,null,null,null,null,null,null]}]})";
+    EXPECT_EQ(fails(noDesigns), "s.json: generations[0].cells: a generation holds at least one design");
+}
+
+TEST_F(SessionTest, SaveFailureIsReportedOnce) {
+    ErrorCapture errors;
+    // A file where the session folder should be: the folder cannot be made.
+    const QString blocker = mSession.filePath(QStringLiteral("blocker"));
+    QFile f(blocker);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.close();
+    options.sessionFolder = (blocker + QStringLiteral("/session")).toStdString();
+    answer = StartChoice{2, QStringLiteral("vase")};
+    WorkbenchWindow window(&service);
+    startSession(window, options);
+    window.model()->setSelected(0, true);
+    ASSERT_TRUE(window.applyOperator(GeneticOperator::Alter));
+    ASSERT_EQ(errors.messages.size(), 1);
+    EXPECT_TRUE(errors.messages.front().startsWith(QStringLiteral("Cannot save the session")));
+    EXPECT_EQ(window.model()->history().size(), 2u) << "breeding goes on";
+}
+
+TEST_F(SessionTest, SessionFolderComesFromTheEnvironmentInTests) {
+    qputenv("MARBLER_SESSION_DIR", mSession.path().toLocal8Bit());
+    EXPECT_EQ(defaultSessionFolder(), mSession.path());
+    qunsetenv("MARBLER_SESSION_DIR");
+    EXPECT_TRUE(defaultSessionFolder().endsWith(QStringLiteral("/session")));
+}
+
+TEST_F(StartChoiceTest, StartDialogOffersToResumeASavedSession) {
+    StartChoice offer{2, QStringLiteral("vase"), true, 4, 3};
+    StartDialog dialog(offer);
+    ASSERT_NE(dialog.resumeButton(), nullptr);
+    EXPECT_TRUE(dialog.resumeButton()->isDefault());
+    EXPECT_FALSE(dialog.flatButton()->isDefault());
+    EXPECT_TRUE(dialog.resumeButton()->text().contains(QStringLiteral("generation 4, solid")))
+        << dialog.resumeButton()->text().toStdString();
+    dialog.resumeButton()->click();
+    EXPECT_TRUE(dialog.choice().resume);
+
+    StartDialog flat(offer);
+    flat.flatButton()->click();
+    EXPECT_FALSE(flat.choice().resume);
+    EXPECT_EQ(flat.choice().dimension, 2);
+
+    StartDialog none(StartChoice{});
+    EXPECT_EQ(none.resumeButton(), nullptr);
 }
 
 // The window's command line.

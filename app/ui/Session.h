@@ -1,0 +1,59 @@
+#pragma once
+/// The breeding session on disk: every generation's nine designs, the current generation, the
+/// session seed, the population's kind and the object solid designs are shown on. The model
+/// writes it (atomically) after every change of the population, so a crash or a closed window
+/// loses nothing; the next start offers to resume it.
+///
+/// One JSON document, `session.json` in the session folder:
+///
+///     {"format": "marbler-session", "version": 1, "seed": 42, "current": 1,
+///      "dimension": 2, "mesh": "vase",
+///      "generations": [{"description": "...", "parents": [4], "selected": [4],
+///                       "cells": [GENOME, null, ...], "bases": ["/dir", null, ...]}, ...]}
+///
+/// where GENOME is a genome document exactly as a genome file holds it (marbler::toJson, read
+/// back with marbler::parseGenome, so every rule of the genome format is checked on resume),
+/// and `bases` the folders relative source images resolve against (absent when none).
+
+#include "ui/PopulationModel.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace marbler::ui {
+
+/// A session read back from disk.
+struct SavedSession {
+    std::vector<Generation> history; ///< at least one generation
+    int current = 0;                 ///< index into history
+    std::uint64_t seed = 1;
+    int dimension = 2;               ///< 2: flat, 3: solid (the kind of the current grid)
+    QString mesh = QStringLiteral("vase");
+};
+
+/// The session folder: $MARBLER_SESSION_DIR when set, else the app data folder's "session".
+QString defaultSessionFolder();
+/// The session file in a folder.
+QString sessionFilePath(const QString& folder);
+
+/// The session document of a model's history (see above). The designs of a generation do not
+/// change once bred, so their text can be kept between saves: `cellsCache` (when given) holds
+/// one fragment per generation, and empty entries are filled; the model clears the entries of
+/// the generations it changes.
+std::string serializeSession(const PopulationModel& model, std::vector<std::string>* cellsCache = nullptr);
+/// Parses a session document; `name` names the source in errors. Throws InputError (or
+/// GenomeError naming the generation and cell) for anything that breaks the format.
+SavedSession parseSession(std::string_view text, const std::string& name);
+/// Reads and parses a session file. Throws InputError/GenomeError as parseSession, and
+/// RuntimeFailure when the file cannot be read.
+SavedSession loadSession(const QString& file);
+
+/// Moves a bad session file aside (`session.json.bad`, or `.2.bad`, ... when taken) so that a
+/// fresh session can start without destroying it. Returns the new name, empty when it failed.
+QString keepBadSession(const QString& file);
+
+} // namespace marbler::ui
