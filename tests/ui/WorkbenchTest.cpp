@@ -29,6 +29,7 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QSettings>
+#include <QFile>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -1009,8 +1010,16 @@ int main(int argc, char** argv) {
     // Keep the user's settings and data out of the tests.
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("MarblerTest"));
+    // ctest runs test cases as parallel processes: each process gets settings of its own, so
+    // one test's remembered choices never leak into another running beside it.
+    QApplication::setOrganizationName(QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
     QApplication::setApplicationName(QStringLiteral("MarblerTest"));
     ::testing::InitGoogleTest(&argc, argv);
-    return RUN_ALL_TESTS();
+    int status = RUN_ALL_TESTS();
+    QSettings settings;
+    settings.clear();
+    settings.sync();
+    QFile::remove(settings.fileName());
+    QDir().rmdir(QFileInfo(settings.fileName()).absolutePath());
+    return status;
 }
