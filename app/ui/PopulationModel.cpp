@@ -175,37 +175,25 @@ void PopulationModel::pushGeneration(Generation generation) {
     generation.number = mCurrent + 1;
     mHistory.push_back(std::move(generation));
     mCurrent = int(mHistory.size()) - 1;
-    emit populationChanged();
-    emit selectionChanged();
-    emit historyChanged();
-    autosave();
+    currentGenerationChanged();
 }
 
 void PopulationModel::goBack() {
     if (!canGoBack()) return;
     --mCurrent;
-    emit populationChanged();
-    emit selectionChanged();
-    emit historyChanged();
-    autosave();
+    currentGenerationChanged();
 }
 
 void PopulationModel::goForward() {
     if (!canGoForward()) return;
     ++mCurrent;
-    emit populationChanged();
-    emit selectionChanged();
-    emit historyChanged();
-    autosave();
+    currentGenerationChanged();
 }
 
 void PopulationModel::goTo(int index) {
     if (index < 0 || index >= int(mHistory.size()) || index == mCurrent) return;
     mCurrent = index;
-    emit populationChanged();
-    emit selectionChanged();
-    emit historyChanged();
-    autosave();
+    currentGenerationChanged();
 }
 
 void PopulationModel::setSessionFile(const QString& file) {
@@ -237,10 +225,7 @@ void PopulationModel::restoreSession(SavedSession session) {
     mSessionSeed = session.seed;
     mMesh = session.mesh;
     mEmptyStart = false;
-    emit populationChanged();
-    emit selectionChanged();
-    emit historyChanged();
-    autosave();
+    currentGenerationChanged();
 }
 
 void PopulationModel::setMesh(const QString& mesh) {
@@ -334,6 +319,13 @@ LineageInfo lineageOf(const Genome& genome) {
             info.generation = lineage["generation"].get<int>();
     }
     return info;
+}
+
+void PopulationModel::currentGenerationChanged() {
+    emit populationChanged();
+    emit selectionChanged();
+    emit historyChanged();
+    autosave();
 }
 
 } // namespace marbler::ui

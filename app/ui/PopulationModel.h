@@ -145,6 +145,9 @@ signals:
 private:
     void pushGeneration(Generation generation);
     void autosave();
+    /// Tells the views that the current generation (population, selection, history) changed,
+    /// and saves the session.
+    void currentGenerationChanged();
     Generation& currentMutable() { return mHistory[std::size_t(mCurrent)]; }
 
     std::uint64_t mSessionSeed = 1;
