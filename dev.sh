@@ -6,12 +6,22 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
+# What the build needs, and why where it is not obvious. Every package config that CMake's
+# find_package loads was read for imported targets that point at files of other packages:
+# assimp's target links /usr/lib/x86_64-linux-gnu/libz.so (zlib1g-dev), which libassimp-dev does
+# not depend on. OpenImageIO is found through pkg-config instead of its CMake config, which
+# declares its command-line tools as imported targets (iconvert, iv, ...) and so fails unless
+# openimageio-tools and Qt 5 are installed.
 PACKAGES=(
-    build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev
+    build-essential cmake ninja-build pkg-config
+    clang libclang-rt-14-dev                     # the fuzzer build (fuzz/run.sh)
     qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl1-mesa-dev libgl1-mesa-dri libegl1
-    libglm-dev libopenimageio-dev nlohmann-json3-dev libassimp-dev
+    libglm-dev nlohmann-json3-dev
+    libopenimageio-dev                           # EXR, JPEG and other formats; source images
+    libpng-dev libtiff-dev                       # PNG and TIFF, written directly (fast start)
+    libassimp-dev zlib1g-dev                     # mesh files; zlib for assimp's CMake target
     libgtest-dev libgmock-dev libbenchmark-dev
-    xvfb xauth
+    xvfb xauth                                   # a virtual display for the GL and window tests
 )
 JOBS=$(nproc)
 

@@ -1,15 +1,15 @@
 // The marbler executable: a verb runs headless (spec/cli.md); no verb opens the workbench.
+// The window lives in a module loaded only then (WindowModule.h), so verbs start fast.
 
+#include "WindowModule.h"
 #include "cli/Cli.h"
+#include "marbler/Error.h"
+#include "ui/Workbench.h"
 
 #include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
-
-#ifdef MARBLER_HAVE_GUI
-#include "ui/Workbench.h"
-#endif
 
 namespace {
 
@@ -24,6 +24,8 @@ verbs:
                           a random genome; the same seed gives the same file
   breed OPERATOR PARENT... --seed N -o DIR
                           offspring by alter, recombine, swap or reinit
+  doctor                  what this machine gives Marbler: versions, OpenGL, the window's
+                          renderer and why, the CPU kernel in use
 
 'marbler VERB --help' describes each verb's options.
 exit status: 0 success, 2 bad usage or bad input, 1 any other failure.
@@ -48,6 +50,7 @@ int main(int argc, char** argv) {
         if (verb == "info") return marbler::cli::runInfo(rest);
         if (verb == "random") return marbler::cli::runRandom(rest);
         if (verb == "breed") return marbler::cli::runBreed(rest);
+        if (verb == "doctor") return marbler::cli::runDoctor(rest);
         if (verb == "--help" || verb == "-h" || verb == "help") {
             std::cout << Usage;
             return marbler::cli::ExitOk;
@@ -90,7 +93,12 @@ int main(int argc, char** argv) {
         return marbler::cli::ExitOk;
     }
 #ifdef MARBLER_HAVE_GUI
-    return marbler::ui::runWorkbench(argc, argv);
+    try {
+        return marbler::app::windowModule().runWorkbench(argc, argv);
+    } catch (const marbler::Error& e) {
+        std::cerr << "marbler: cannot open the workbench: " << e.what() << "\n";
+        return marbler::cli::ExitFailure;
+    }
 #else
     std::cerr << "marbler: this build has no workbench window (built without MARBLER_BUILD_GUI)\n";
     return marbler::cli::ExitFailure;

@@ -6,9 +6,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 
-#ifdef MARBLER_HAVE_GL
-#include "marbler/gl/GlRenderer.h"
-#endif
+#include "WindowModule.h"
 
 #include <algorithm>
 #include <charconv>
@@ -259,11 +257,7 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
     control.progress = [&](double f) { progress.update(f); };
 
     if (meshMode || args.has("gpu")) {
-#ifdef MARBLER_HAVE_GL
-        std::string reason;
-        if (!gl::GlRenderer::available(&reason))
-            throw RuntimeFailure("no OpenGL 4.3 context for " + std::string(meshMode ? "--mesh" : "--gpu") + ": " + reason);
-        gl::GlRenderer gpu;
+#ifdef MARBLER_HAVE_GUI
         Image image;
         if (meshMode) {
             gl::MeshSettings mesh;
@@ -280,10 +274,9 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
                 std::vector<double> plane = parseNumberList("cut", *cut, 4);
                 mesh.cut = gl::CutPlane{{plane[0], plane[1], plane[2]}, plane[3]};
             }
-            image = gpu.renderMesh(genome, mesh);
+            image = app::windowModule().renderMesh(genome, mesh);
         } else {
-            checkRenderSettings(genome, settings);
-            image = gpu.render(genome, settings);
+            image = app::windowModule().render(genome, settings);
         }
         writeImage(image, outFile, exportOptions);
         return ExitOk;

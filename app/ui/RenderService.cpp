@@ -3,13 +3,18 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/gl/GlRenderer.h"
+#include "marbler/gl/HybridMesh.h"
 
 #include <QMetaObject>
+#include <QSettings>
 
 #include <algorithm>
 #include <atomic>
 #include <map>
 #include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
 
 namespace marbler::ui {
 
@@ -20,9 +25,14 @@ struct RenderQueue {
         std::uint64_t ticket = 0;
         RenderRequest request;
         bool previewDone = false;
+        /// The genome prepared by the preview's CPU pass, kept for the final one.
+        std::shared_ptr<const CpuRenderer> prepared;
     };
     std::mutex mutex;
     std::map<std::uint64_t, Job> jobs;
+    /// A back-end preference the worker has yet to act on (set at start and by setPreference);
+    /// taken before the next job, so a change applies from the next pass on.
+    std::optional<gl::BackendPreference> pendingPreference;
     /// The job the worker is rendering (ticket 0: none), and the flag that stops its CPU
     /// render early once it is superseded, cancelled or the service closes.
     std::uint64_t inFlightKey = 0, inFlightTicket = 0;
@@ -37,21 +47,8 @@ struct RenderQueue {
 class RenderWorker : public QObject {
     Q_OBJECT
 public:
-    explicit RenderWorker(std::shared_ptr<RenderQueue> queue) : mQueue(std::move(queue)) {}
-
-    /// Chooses the back end; runs on the worker thread so the GL context is made there.
-    void start(bool tryGl) {
-        QString name = QStringLiteral("CPU");
-        if (tryGl && gl::GlRenderer::available()) {
-            try {
-                mGl = std::make_unique<gl::GlRenderer>();
-                name = QStringLiteral("OpenGL (%1)").arg(QString::fromStdString(mGl->rendererName()));
-            } catch (const std::exception&) {
-                mGl.reset();
-            }
-        }
-        emit backendReady(name);
-    }
+    RenderWorker(std::shared_ptr<RenderQueue> queue, bool glAllowed)
+        : mQueue(std::move(queue)), mGlAllowed(glAllowed) {}
 
     /// Renders until no job is left. Previews of every waiting job come before final passes,
     /// so a whole new generation appears quickly and then sharpens.
@@ -59,6 +56,12 @@ public:
         for (;;) {
             std::uint64_t key = 0;
             RenderQueue::Job job;
+            std::optional<gl::BackendPreference> preference;
+            {
+                std::lock_guard lock(mQueue->mutex);
+                preference = std::exchange(mQueue->pendingPreference, std::nullopt);
+            }
+            if (preference) choose(*preference);
             {
                 std::lock_guard lock(mQueue->mutex);
                 if (mQueue->jobs.empty()) return;
@@ -76,7 +79,7 @@ public:
             QString error;
             bool aborted = false;
             try {
-                image = renderPass(job.request, final);
+                image = renderPass(job.request, final, job.prepared);
             } catch (const Cancelled&) {
                 aborted = true; // superseded or cancelled: a newer job (if any) is waiting
             } catch (const std::exception& e) {
@@ -90,10 +93,12 @@ public:
                 auto it = mQueue->jobs.find(key);
                 if (it != mQueue->jobs.end() && it->second.ticket == job.ticket) {
                     current = true;
-                    if (final || job.request.previewOnly || !error.isEmpty())
+                    if (final || job.request.previewOnly || !error.isEmpty()) {
                         mQueue->jobs.erase(it);
-                    else
+                    } else {
                         it->second.previewDone = true;
+                        it->second.prepared = job.prepared;
+                    }
                 }
             }
             // A superseded result is not worth the trip to the GUI thread.
@@ -103,23 +108,60 @@ public:
 
 signals:
     void result(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final, const QString& error);
-    void backendReady(const QString& name);
+    void backendChosen(const QString& name, const QString& why, bool useGl);
 
 private:
-    QImage renderPass(const RenderRequest& request, bool final) {
-        const Genome& genome = request.genome;
-        if (genome.dimension == 3 && mGl) {
-            gl::MeshSettings mesh;
-            const QSize size = final ? request.size : request.size / 2;
-            mesh.width = std::max(size.width(), 8);
-            mesh.height = std::max(size.height(), 8);
-            mesh.mesh = request.mesh.toStdString();
-            mesh.yaw = request.yaw;
-            mesh.pitch = request.pitch;
-            mesh.supersample = final ? 3 : 1;
-            return toQImage(mGl->renderMesh(genome, mesh));
+    /// Chooses the back end for a preference (already overridden by the environment).
+    void choose(gl::BackendPreference preference) {
+        gl::BackendChoice choice{false, "OpenGL is not used by this render service"};
+        if (mGlAllowed) choice = gl::chooseBackend(gl::probeGl(), preference);
+        mUseGl = choice.useGl && glRenderer();
+        if (choice.useGl && !mUseGl) choice.why = "OpenGL failed: " + mGlError;
+        const QString name = mUseGl ? QStringLiteral("OpenGL (%1)").arg(QString::fromStdString(mGl->rendererName()))
+                                    : QStringLiteral("CPU (%1 threads)").arg(cpuThreads());
+        emit backendChosen(name, QString::fromStdString(choice.why), mUseGl);
+    }
+
+    static int cpuThreads() { return std::max(1, int(std::thread::hardware_concurrency())); }
+
+    /// The GL renderer, made on first need (a GPU render, or an object's rasterising for the
+    /// CPU back end), so a CPU session that shows only flat designs never pays for a context.
+    /// Null where none can be made.
+    gl::GlRenderer* glRenderer() {
+        if (mGl || !mGlAllowed || !mGlError.empty()) return mGl.get();
+        const gl::GlProbe probe = gl::probeGl();
+        if (!probe.available) {
+            mGlError = probe.reason;
+            return nullptr;
         }
-        // Without GL a solid design is shown by its middle cross-section.
+        try {
+            mGl = std::make_unique<gl::GlRenderer>();
+        } catch (const std::exception& e) {
+            mGlError = e.what();
+        }
+        return mGl.get();
+    }
+
+    QImage renderPass(const RenderRequest& request, bool final, std::shared_ptr<const CpuRenderer>& prepared) {
+        const Genome& genome = request.genome;
+        RenderControl control;
+        control.cancel = &mQueue->abort;
+        if (genome.dimension == 3) {
+            // On the CPU back end GL only rasterises the object; without any GL the object is
+            // replaced by its middle cross-section below.
+            if (gl::GlRenderer* renderer = mUseGl ? mGl.get() : glRenderer()) {
+                gl::MeshSettings mesh;
+                const QSize size = final ? request.size : request.size / 2;
+                mesh.width = std::max(size.width(), 8);
+                mesh.height = std::max(size.height(), 8);
+                mesh.mesh = request.mesh.toStdString();
+                mesh.yaw = request.yaw;
+                mesh.pitch = request.pitch;
+                mesh.supersample = final ? 3 : 1;
+                return toQImage(mUseGl ? renderer->renderMesh(genome, mesh)
+                                       : gl::renderMeshHybrid(*renderer, genome, mesh, &control));
+            }
+        }
         const QSize full = fitDesign(genome, request.size);
         const QSize size = final ? full : (full / 3).expandedTo(QSize(8, 8));
         RenderSettings settings;
@@ -127,36 +169,67 @@ private:
         settings.height = size.height();
         settings.aa = final ? request.aa.toStdString() : std::string("none");
         if (genome.dimension == 3) settings.slice = Slice{2, genome.size.z / 2.0};
-        if (mGl) {
+        if (mUseGl) {
             try {
                 return toQImage(mGl->render(genome, settings));
             } catch (const RuntimeFailure&) {
                 // A driver failure on one design should not blank the grid: the CPU can do it.
             }
         }
-        RenderControl control;
-        control.cancel = &mQueue->abort;
-        return toQImage(CpuRenderer(genome).render(settings, &control));
+        if (!prepared) prepared = std::make_shared<const CpuRenderer>(genome);
+        return toQImage(prepared->render(settings, &control));
     }
 
     std::shared_ptr<RenderQueue> mQueue;
+    const bool mGlAllowed;
+    bool mUseGl = false;
     std::unique_ptr<gl::GlRenderer> mGl;
+    std::string mGlError; ///< why no GL renderer could be made (made once, never retried)
 };
 
-RenderService::RenderService(Backend backend, QObject* parent)
-    : QObject(parent), mQueue(std::make_shared<RenderQueue>()) {
+RenderService::RenderService(Backend backend, QObject* parent) : QObject(parent) {
+    start(backend, storedPreference());
+}
+
+RenderService::RenderService(gl::BackendPreference preference, QObject* parent) : QObject(parent) {
+    start(Backend::Auto, preference);
+}
+
+void RenderService::start(Backend backend, gl::BackendPreference preference) {
+    mQueue = std::make_shared<RenderQueue>();
+    mGlAllowed = backend == Backend::Auto;
     mThread.setObjectName(QStringLiteral("marbler-render"));
-    mWorker = new RenderWorker(mQueue); // deleted on the worker thread when it finishes
+    mWorker = new RenderWorker(mQueue, mGlAllowed); // deleted on the worker thread when it finishes
     mWorker->moveToThread(&mThread);
     connect(&mThread, &QThread::finished, mWorker, &QObject::deleteLater);
     connect(mWorker, &RenderWorker::result, this, &RenderService::onResult);
-    connect(mWorker, &RenderWorker::backendReady, this, [this](const QString& name) {
+    connect(mWorker, &RenderWorker::backendChosen, this, [this](const QString& name, const QString& why, bool useGl) {
         mBackendName = name;
+        mBackendReason = why;
+        mUsesGl = useGl;
         emit backendReady(name);
     });
     mThread.start();
-    const bool tryGl = backend == Backend::Auto;
-    QMetaObject::invokeMethod(mWorker, [worker = mWorker, tryGl] { worker->start(tryGl); }, Qt::QueuedConnection);
+    setPreference(preference);
+}
+
+gl::BackendPreference RenderService::storedPreference() {
+    const QString text = QSettings().value(QStringLiteral("view/renderer"), QStringLiteral("auto")).toString();
+    return gl::parseBackendPreference(text.toStdString()).value_or(gl::BackendPreference::Auto);
+}
+
+std::optional<gl::BackendPreference> RenderService::environmentPreference() {
+    return gl::environmentBackendPreference();
+}
+
+void RenderService::setPreference(gl::BackendPreference preference) {
+    mPreference = preference;
+    {
+        std::lock_guard lock(mQueue->mutex);
+        mQueue->pendingPreference = environmentPreference().value_or(preference);
+    }
+    // The worker takes the new choice before its next job, or now when idle.
+    QMetaObject::invokeMethod(mWorker, &RenderWorker::work, Qt::QueuedConnection);
 }
 
 RenderService::~RenderService() {
@@ -173,7 +246,7 @@ std::uint64_t RenderService::request(std::uint64_t key, RenderRequest request) {
     const std::uint64_t ticket = mNextTicket++;
     {
         std::lock_guard lock(mQueue->mutex);
-        mQueue->jobs[key] = RenderQueue::Job{ticket, std::move(request), false};
+        mQueue->jobs[key] = RenderQueue::Job{ticket, std::move(request), false, nullptr};
         mQueue->abortIfInFlight(key);
     }
     mOutstanding[key] = ticket;

@@ -1,12 +1,19 @@
 #pragma once
 /// Renders designs for the window (and later the editor) off the GUI thread. One worker thread
-/// owns an offscreen GL renderer when one can be made, else renders with the CPU renderer.
+/// renders either with the GL shaders or with the CPU kernel on every core, as
+/// gl::chooseBackend decides from the GL probe and the user's preference (a GPU renders on GL; a
+/// software rasteriser such as llvmpipe, or no GL, on the CPU). On the CPU, solid designs are
+/// still shown on their object where any GL context exists: GL rasterises only the object's
+/// positions and normals and the kernel colours them (gl::renderMeshHybrid); with no GL at all
+/// they are shown by their middle cross-section.
 /// Requests are keyed (a grid cell, a thumbnail): a newer request for a key supersedes an older
 /// one that has not finished, and only the newest result of a key is delivered. Each request is
-/// rendered twice: a fast preview, then the antialiased final image.
+/// rendered twice: a fast preview, then the antialiased final image; the previews of all waiting
+/// requests come before any final pass.
 
 #include "marbler/Genome.h"
 #include "marbler/Sampling.h"
+#include "marbler/gl/Backend.h"
 
 #include <QHash>
 #include <QImage>
@@ -17,6 +24,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 namespace marbler::ui {
 
@@ -39,11 +47,26 @@ struct RenderQueue;
 class RenderService : public QObject {
     Q_OBJECT
 public:
+    /// Auto: the back end follows the preference (storedPreference() unless given) and the GL
+    /// probe. Cpu: no GL context is ever made, not even to rasterise objects (headless tests).
     enum class Backend { Auto, Cpu };
 
-    /// Starts the worker thread. With Backend::Cpu the GL renderer is never tried (tests).
+    /// Starts the worker thread, which probes GL and chooses the back end (backendReady).
     explicit RenderService(Backend backend = Backend::Auto, QObject* parent = nullptr);
+    /// Starts with this preference instead of the stored one (tests, tools).
+    explicit RenderService(gl::BackendPreference preference, QObject* parent = nullptr);
     ~RenderService() override;
+
+    /// The preference remembered in the settings ("view/renderer": auto, gpu, cpu).
+    static gl::BackendPreference storedPreference();
+    /// MARBLER_RENDERER's preference when set and valid: it overrides the setting.
+    static std::optional<gl::BackendPreference> environmentPreference();
+
+    /// Chooses the back end again for a new preference (MARBLER_RENDERER still overrides it);
+    /// backendReady follows. Requests keep their place in the queue.
+    void setPreference(gl::BackendPreference preference);
+    /// The preference asked for (before the environment's override).
+    gl::BackendPreference preference() const { return mPreference; }
 
     /// Queues a request for a key (superseding any unfinished one); returns its ticket.
     std::uint64_t request(std::uint64_t key, RenderRequest request);
@@ -51,8 +74,12 @@ public:
     void cancel(std::uint64_t key);
     /// Whether no request is waiting or being rendered.
     bool idle() const { return mOutstanding.isEmpty(); }
-    /// "OpenGL (renderer)" or "CPU"; empty until the worker has started.
+    /// "OpenGL (renderer)" or "CPU (n threads)"; empty until the worker has chosen.
     QString backendName() const { return mBackendName; }
+    /// Why that back end (gl::BackendChoice::why); empty until the worker has chosen.
+    QString backendReason() const { return mBackendReason; }
+    /// Whether the chosen back end is GL (false until the worker has chosen).
+    bool usesGl() const { return mUsesGl; }
 
 signals:
     /// A result for a key: the preview (final false) or the final image.
@@ -61,10 +88,11 @@ signals:
     void failed(std::uint64_t key, const QString& message);
     /// Every request has been delivered.
     void becameIdle();
-    /// The worker chose its back end.
+    /// The worker chose its back end (at start, and after each setPreference).
     void backendReady(const QString& name);
 
 private:
+    void start(Backend backend, gl::BackendPreference preference);
     void onResult(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final, const QString& error);
 
     QThread mThread;
@@ -74,6 +102,10 @@ private:
     QHash<std::uint64_t, std::uint64_t> mOutstanding;
     std::uint64_t mNextTicket = 1;
     QString mBackendName;
+    QString mBackendReason;
+    bool mUsesGl = false;
+    bool mGlAllowed = true;
+    gl::BackendPreference mPreference = gl::BackendPreference::Auto;
 };
 
 /// Converts a renderer image to a QImage (deep copy).

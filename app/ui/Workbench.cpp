@@ -7,33 +7,22 @@
 #include "ui/WorkbenchWindow.h"
 
 #include <QApplication>
+#include <QFile>
 #include <QFileInfo>
 #include <QStringList>
 #include <QTimer>
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <string_view>
+
+#include <time.h>
+#include <unistd.h>
 
 namespace marbler::ui {
 
 namespace {
-
-/// Qt's own options that take a value (QGuiApplication / QApplication), with one or two dashes.
-constexpr std::array QtValueOptions{"platform", "platformpluginpath", "platformtheme", "plugin", "qwindowgeometry",
-                                    "qwindowtitle", "qwindowicon", "style", "stylesheet", "session", "display",
-                                    "geometry", "title"};
-/// Qt's own options without a value.
-constexpr std::array QtFlagOptions{"reverse", "widgetcount", "nograb", "dograb", "sync"};
-
-template <std::size_t N>
-bool contains(const std::array<const char*, N>& names, std::string_view name) {
-    return std::any_of(names.begin(), names.end(), [&](const char* n) { return name == n; });
-}
 
 /// `--screenshot FILE`: breed from the middle design, wait for every final image, save the
 /// window and quit. Used to make docs/screenshot.png reproducibly.
@@ -74,66 +63,34 @@ void takeScreenshot(WorkbenchWindow& window, RenderService& service, const QStri
                      [breedThenGrab] { QTimer::singleShot(500, breedThenGrab); }, Qt::SingleShotConnection);
 }
 
-} // namespace
-
-WorkbenchArgs parseWorkbenchArgs(std::span<const std::string> words) {
-    WorkbenchArgs args;
-    bool optionsEnded = false;
-    for (std::size_t i = 0; i < words.size(); ++i) {
-        const std::string& word = words[i];
-        if (optionsEnded || word.size() < 2 || word[0] != '-') {
-            args.files.push_back(word);
-            continue;
-        }
-        if (word == "--") {
-            optionsEnded = true;
-            continue;
-        }
-        const bool doubleDash = word.starts_with("--");
-        std::string name = word.substr(doubleDash ? 2 : 1);
-        std::optional<std::string> inlineValue;
-        if (const auto eq = name.find('='); eq != std::string::npos) {
-            inlineValue = name.substr(eq + 1);
-            name.resize(eq);
-        }
-        const auto value = [&]() -> std::optional<std::string> {
-            if (inlineValue) return inlineValue;
-            if (i + 1 < words.size()) return words[++i];
-            args.error = "marbler: " + word + " needs a value";
-            return std::nullopt;
-        };
-        if (word == "--help" || word == "-h") {
-            args.help = true;
-        } else if (doubleDash && name == "screenshot") {
-            const auto file = value();
-            if (!file) return args;
-            if (file->empty()) {
-                args.error = "marbler: --screenshot needs a file name";
-                return args;
-            }
-            args.screenshot = *file;
-        } else if (doubleDash && name == "seed") {
-            const auto text = value();
-            if (!text) return args;
-            unsigned long long seed = 0;
-            const auto [end, ec] = std::from_chars(text->data(), text->data() + text->size(), seed);
-            if (ec != std::errc() || end != text->data() + text->size() || text->empty()) {
-                args.error = "marbler: --seed needs a whole number, not '" + *text + "'";
-                return args;
-            }
-            args.seed = seed;
-        } else if (doubleDash && (name == "solid" || name == "flat") && !inlineValue) {
-            args.dimension = name == "solid" ? 3 : 2;
-        } else if (contains(QtValueOptions, name)) {
-            if (!inlineValue && !value()) return args; // Qt reads the value itself
-        } else if (contains(QtFlagOptions, name) && !inlineValue) {
-        } else {
-            args.error = "marbler: unknown option " + word + " (see marbler --help)";
-            return args;
-        }
-    }
-    return args;
+/// Seconds since this process started (the kernel's start time, so the dynamic loading before
+/// main() counts too).
+double secondsSinceLaunch() {
+    QFile stat(QStringLiteral("/proc/self/stat"));
+    timespec now{};
+    if (!stat.open(QIODevice::ReadOnly) || ::clock_gettime(CLOCK_BOOTTIME, &now) != 0) return -1.0;
+    // Field 22, after the parenthesised command name (which may hold spaces): start time in ticks.
+    const QByteArray text = stat.readAll();
+    const QList<QByteArray> fields = text.mid(text.lastIndexOf(')') + 2).split(' ');
+    if (fields.size() < 20) return -1.0;
+    const double started = fields[19].toDouble() / double(::sysconf(_SC_CLK_TCK));
+    return double(now.tv_sec) + double(now.tv_nsec) * 1e-9 - started;
 }
+
+/// MARBLER_EXIT_WHEN_SHOWN=1: print how long after launch the first population was shown
+/// sharp (every cell's final image) and quit; the window's start-up benchmark
+/// (tests/bench/process) runs the whole process this way.
+void exitWhenShown(WorkbenchWindow& window) {
+    QObject::connect(
+        &window, &WorkbenchWindow::renderingFinished, &window,
+        [] {
+            std::cout << "first population shown " << secondsSinceLaunch() << " s after launch" << std::endl;
+            QApplication::quit();
+        },
+        Qt::SingleShotConnection);
+}
+
+} // namespace
 
 void startSession(WorkbenchWindow& window, const StartOptions& options) {
     const QString sessionFile =
@@ -227,6 +184,7 @@ int runWorkbench(int argc, char** argv) {
         window.resize(1280, 900);
         takeScreenshot(window, service, screenshotFile, &status);
     }
+    if (qEnvironmentVariableIntValue("MARBLER_EXIT_WHEN_SHOWN") == 1) exitWhenShown(window);
     window.show();
     // Asked over the shown window, so the question sits on the workbench it sets up.
     startSession(window, start);

@@ -112,15 +112,15 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     buildDocks();
 
     mBackendLabel = new QLabel(this);
+    mBackendLabel->setObjectName(QStringLiteral("backendLabel"));
     statusBar()->addPermanentWidget(mBackendLabel);
-    const auto showBackend = [this](const QString& name) {
-        mBackendLabel->setText(tr("Renderer: %1").arg(name));
-        if (!name.startsWith(QStringLiteral("OpenGL")))
-            mBackendLabel->setToolTip(tr("No OpenGL here: solid designs are shown by their middle cross-section."));
-    };
-    if (!mRenderer->backendName().isEmpty()) showBackend(mRenderer->backendName());
-    connect(mRenderer, &RenderService::backendReady, this, showBackend);
-    connect(mRenderer, &RenderService::backendReady, this, &WorkbenchWindow::requestAllRenders);
+    if (!mRenderer->backendName().isEmpty()) showBackend();
+    connect(mRenderer, &RenderService::backendReady, this, [this] {
+        showBackend();
+        // Images from the other back end differ in the last bits: render everything anew.
+        mImageCache.clear();
+        requestAllRenders();
+    });
     connect(mRenderer, &RenderService::rendered, this, &WorkbenchWindow::onRendered);
     connect(mRenderer, &RenderService::failed, this, &WorkbenchWindow::onRenderFailed);
 
@@ -304,6 +304,66 @@ void WorkbenchWindow::buildDocks() {
     viewMenu->addAction(lineageDock->toggleViewAction());
     favDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
     lineageDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
+
+    viewMenu->addSeparator();
+    QMenu* rendererMenu = viewMenu->addMenu(tr("&Renderer"));
+    rendererMenu->setObjectName(QStringLiteral("rendererMenu"));
+    rendererMenu->setToolTipsVisible(true);
+    auto* group = new QActionGroup(rendererMenu);
+    const auto addChoice = [&](gl::BackendPreference preference, const QString& text, const QString& tip) {
+        QAction* action = rendererMenu->addAction(text);
+        action->setCheckable(true);
+        action->setChecked(mRenderer->preference() == preference);
+        action->setToolTip(tip);
+        action->setStatusTip(tip);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, preference] { setRendererPreference(preference); });
+        mRendererActions[std::size_t(preference)] = action;
+    };
+    addChoice(gl::BackendPreference::Auto, tr("Renderer: &Automatic"),
+              tr("OpenGL on a graphics card; the CPU where OpenGL is a software rasteriser (such as llvmpipe) or "
+                 "missing, since the CPU renderer is faster there"));
+    addChoice(gl::BackendPreference::Gpu, tr("Renderer: &GPU"),
+              tr("Always render with OpenGL shaders, even on a software rasteriser (the CPU where there is no "
+                 "OpenGL at all)"));
+    addChoice(gl::BackendPreference::Cpu, tr("Renderer: &CPU"),
+              tr("Always render with the CPU renderer on every core; solid objects are still rasterised by "
+                 "OpenGL where it exists, and coloured by the CPU"));
+    std::string problem;
+    if (!gl::environmentBackendPreference(&problem) && !problem.empty())
+        statusBar()->showMessage(QString::fromStdString(problem), 10000);
+    if (const auto forced = RenderService::environmentPreference()) {
+        // The environment wins over the setting, so the menu only shows what it forces.
+        const QString why = tr("%1=%2 is set, which overrides this setting")
+                                .arg(QString::fromLatin1(gl::BackendEnvironmentVariable),
+                                     QString::fromLatin1(gl::backendPreferenceName(*forced).data()));
+        for (QAction* action : group->actions()) {
+            action->setEnabled(false);
+            action->setToolTip(why);
+        }
+        mRendererActions[std::size_t(*forced)]->setChecked(true);
+    }
+}
+
+void WorkbenchWindow::setRendererPreference(gl::BackendPreference preference) {
+    QSettings().setValue(QStringLiteral("view/renderer"),
+                         QString::fromLatin1(gl::backendPreferenceName(preference).data()));
+    mRendererActions[std::size_t(preference)]->setChecked(true);
+    if (preference != mRenderer->preference()) mRenderer->setPreference(preference);
+}
+
+QAction* WorkbenchWindow::rendererAction(gl::BackendPreference preference) const {
+    return mRendererActions[std::size_t(preference)];
+}
+
+void WorkbenchWindow::showBackend() {
+    const QString where = mRenderer->usesGl() ? tr("Rendering with %1").arg(mRenderer->backendName())
+                                              : tr("Rendering on the %1").arg(mRenderer->backendName());
+    const QString why = mRenderer->backendReason();
+    mBackendLabel->setText(why.isEmpty() ? where : tr("%1: %2").arg(where, why));
+    mBackendLabel->setToolTip(tr("%1.\nChoose the renderer in View ▸ Renderer (the environment variable %2=auto|gpu|cpu "
+                                 "overrides it).")
+                                  .arg(why.isEmpty() ? where : why, QString::fromLatin1(gl::BackendEnvironmentVariable)));
 }
 
 void WorkbenchWindow::readSettings() {

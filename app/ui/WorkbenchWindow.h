@@ -3,6 +3,7 @@
 /// operators, back/forward through generations, a lineage view and a favourites shelf.
 
 #include "marbler/Operators.h"
+#include "marbler/gl/Backend.h"
 #include "ui/PopulationModel.h"
 #include "ui/Session.h"
 
@@ -66,6 +67,11 @@ public:
     /// Shows a cell's design large (double-click, Enter); returns the dialog (not modal, deleted
     /// on close), or nullptr for an empty cell.
     DesignDialog* openDesign(int index);
+    /// Remembers the renderer preference (View ▸ Renderer) and has the service choose again,
+    /// which re-renders every design.
+    void setRendererPreference(gl::BackendPreference preference);
+    /// The View ▸ Renderer entry of a preference.
+    QAction* rendererAction(gl::BackendPreference preference) const;
 
 signals:
     /// Every visible design has its final image.
@@ -84,6 +90,7 @@ private:
     void updateActions();
     void updateLineage();
     void updateFavourites();
+    void showBackend();
     void requestRender(int cell, bool previewOnly = false);
     void requestAllRenders();
     void onRendered(std::uint64_t key, const QImage& image, bool final);
@@ -117,6 +124,7 @@ private:
     QListWidget* mFavouritesList = nullptr;
     QTreeWidget* mLineageTree = nullptr;
     QLabel* mBackendLabel = nullptr;
+    std::array<QAction*, 3> mRendererActions{}; ///< by gl::BackendPreference
     QTimer mResizeTimer;
     bool mSaveFailureShown = false;
 };

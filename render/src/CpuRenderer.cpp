@@ -6,7 +6,9 @@
 #include "marbler/Tools.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -19,6 +21,9 @@ struct CpuRenderer::Impl {
     std::vector<PreparedOp> reversed; ///< operations in the order the colour rule visits them
     std::vector<glm::dvec3> paletteLinear;
     glm::dvec3 backgroundLinear{0.0};
+    /// encodeSrgb8 of paletteLinear and backgroundLinear.
+    std::vector<std::array<std::uint8_t, 3>> paletteSrgb8;
+    std::array<std::uint8_t, 3> backgroundSrgb8{};
     std::optional<detail::LinearRaster> source;
     /// The genome's dimension and size only: what the sampling functions read.
     Genome shape;
@@ -43,8 +48,31 @@ struct CpuRenderer::Impl {
         return top * (1.0 - tv) + bottom * tv;
     }
 
-    /// Renders rows [y0, y1) on every requested core; `emit(row, linearRgb)` receives each
-    /// finished row (width * 3 doubles) from the worker that made it.
+    /// The samples of one tile, traced: colors[k] is sample k's palette index (-1: none); with a
+    /// source image, whereX[k], whereY[k] is where a sample without ink mapped back to.
+    struct Traced {
+        const int* colors;
+        const double* whereX;
+        const double* whereY;
+    };
+
+    /// The linear colour a traced sample shows: its ink, else the source image where it mapped
+    /// back to, else the background.
+    glm::dvec3 linearAt(const Traced& t, int k) const {
+        const int c = t.colors[k];
+        return c >= 0 ? paletteLinear[std::size_t(c)] : source ? sourceAt(t.whereX[k], t.whereY[k]) : backgroundLinear;
+    }
+
+    /// Traces rows [y0, y1) on every requested core, one tile at a time: a run of pixels of one
+    /// row with all their samples, pixel by pixel, left to right. Each worker gets its own
+    /// shader from `makeShader()`; `shade(row, i0, pixels, traced)` turns a traced tile into
+    /// pixels i0 .. i0 + pixels - 1 of the row.
+    template <typename MakeShader>
+    void traceRows(const RenderSettings& settings, int y0, int y1, const RenderControl* control,
+                   const MakeShader& makeShader) const;
+
+    /// Renders rows [y0, y1) in linear light; `emit(row, linearRgb)` receives each finished row
+    /// (width * 3 doubles, the weighted average of its samples) from the worker that made it.
     template <typename Emit>
     void renderLinear(const RenderSettings& settings, int y0, int y1, const RenderControl* control,
                       const Emit& emit) const;
@@ -86,9 +114,9 @@ private:
 
 } // namespace
 
-template <typename Emit>
-void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int y1, const RenderControl* control,
-                                     const Emit& emit) const {
+template <typename MakeShader>
+void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1, const RenderControl* control,
+                                  const MakeShader& makeShader) const {
     const AaPattern pattern = aaPattern(settings.aa);
     const SampleFrame frame = sampleFrame(shape, settings);
     const int width = settings.width;
@@ -111,9 +139,9 @@ void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int
             auto tile = std::make_unique<kernel::Tile>();
             std::vector<int> colors(kernel::TileSize);
             std::vector<double> whereX(kernel::TileSize), whereY(kernel::TileSize);
-            std::vector<double> line(std::size_t(width) * 3);
+            const Traced traced{colors.data(), whereX.data(), whereY.data()};
             std::vector<glm::dvec3> rowPart(static_cast<std::size_t>(samples));
-            const bool useSource = source.has_value();
+            auto shade = makeShader();
             for (;;) {
                 if (stop.load(std::memory_order_relaxed)) return;
                 if (control && control->cancelled()) {
@@ -129,34 +157,25 @@ void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int
                     rowPart[s] = b * frame.dv;
                 }
                 for (int i0 = 0; i0 < width; i0 += pixelsPerTile) {
-                    int pixels = std::min(pixelsPerTile, width - i0);
-                    int n = 0;
-                    for (int p = 0; p < pixels; ++p)
-                        for (int s = 0; s < samples; ++s, ++n) {
-                            const double a = (double(i0 + p) + 0.5) + pattern.offsets[s].x;
-                            tile->x[n] = (frame.origin.x + a * frame.du.x) + rowPart[s].x;
-                            tile->y[n] = (frame.origin.y + a * frame.du.y) + rowPart[s].y;
-                            tile->z[n] = (frame.origin.z + a * frame.du.z) + rowPart[s].z;
-                            tile->id[n] = n;
+                    const int pixels = std::min(pixelsPerTile, width - i0);
+                    for (int s = 0; s < samples; ++s) {
+                        // One sample of every pixel at a time: a plain strided loop.
+                        const double ox = pattern.offsets[s].x;
+                        const glm::dvec3 rp = rowPart[s];
+                        for (int p = 0, n = s; p < pixels; ++p, n += samples) {
+                            const double a = (double(i0 + p) + 0.5) + ox;
+                            tile->x[n] = (frame.origin.x + a * frame.du.x) + rp.x;
+                            tile->y[n] = (frame.origin.y + a * frame.du.y) + rp.y;
+                            // 2D kernels never read z.
+                            if (dimension == 3) tile->z[n] = (frame.origin.z + a * frame.du.z) + rp.z;
                         }
-                    kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
-                                      useSource ? whereX.data() : nullptr, whereY.data());
-                    for (int p = 0, k = 0; p < pixels; ++p) {
-                        glm::dvec3 sum(0.0);
-                        for (int s = 0; s < samples; ++s, ++k) {
-                            int c = colors[k];
-                            glm::dvec3 lin = c >= 0 ? paletteLinear[c]
-                                             : useSource ? sourceAt(whereX[k], whereY[k])
-                                                         : backgroundLinear;
-                            sum += pattern.weights[s] * lin;
-                        }
-                        double* out = line.data() + std::size_t(i0 + p) * 3;
-                        out[0] = sum.x;
-                        out[1] = sum.y;
-                        out[2] = sum.z;
                     }
+                    const int n = pixels * samples;
+                    for (int k = 0; k < n; ++k) tile->id[k] = k;
+                    kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
+                                      source ? whereX.data() : nullptr, whereY.data());
+                    shade(j, i0, pixels, traced);
                 }
-                emit(j, line.data());
                 progress.rowDone();
             }
         } catch (...) {
@@ -174,6 +193,29 @@ void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int
     if (control && control->cancelled()) throw Cancelled();
 }
 
+template <typename Emit>
+void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int y1, const RenderControl* control,
+                                     const Emit& emit) const {
+    const AaPattern pattern = aaPattern(settings.aa);
+    const int samples = static_cast<int>(pattern.offsets.size());
+    const int width = settings.width;
+    traceRows(settings, y0, y1, control, [&] {
+        // A worker traces each of its rows whole, left to right, into its own row buffer.
+        return [&, line = std::vector<double>(std::size_t(width) * 3)](int j, int i0, int pixels,
+                                                                     const Traced& traced) mutable {
+            for (int p = 0, k = 0; p < pixels; ++p) {
+                glm::dvec3 sum(0.0);
+                for (int s = 0; s < samples; ++s, ++k) sum += pattern.weights[s] * linearAt(traced, k);
+                double* out = line.data() + std::size_t(i0 + p) * 3;
+                out[0] = sum.x;
+                out[1] = sum.y;
+                out[2] = sum.z;
+            }
+            if (i0 + pixels == width) emit(j, line.data());
+        };
+    });
+}
+
 CpuRenderer::CpuRenderer(const Genome& genome) : mImpl(std::make_unique<Impl>()) {
     mImpl->dimension = genome.dimension;
     mImpl->size = genome.size;
@@ -187,6 +229,11 @@ CpuRenderer::CpuRenderer(const Genome& genome) : mImpl(std::make_unique<Impl>())
                              std::to_string(genome.palette.size()) + " inks");
     for (Color c : genome.palette) mImpl->paletteLinear.push_back(linearOf(c));
     mImpl->backgroundLinear = linearOf(genome.background);
+    auto encode = [](const glm::dvec3& v) {
+        return std::array<std::uint8_t, 3>{encodeSrgb8(v.x), encodeSrgb8(v.y), encodeSrgb8(v.z)};
+    };
+    for (const glm::dvec3& v : mImpl->paletteLinear) mImpl->paletteSrgb8.push_back(encode(v));
+    mImpl->backgroundSrgb8 = encode(mImpl->backgroundLinear);
     if (genome.source && genome.dimension == 2)
         mImpl->source = detail::loadSourceImage(*genome.source, genome.baseDirectory);
 }
@@ -210,6 +257,34 @@ void CpuRenderer::renderRows(const RenderSettings& settings, int y0, int y1, std
     checkRenderSettings(mImpl->shape, settings);
     checkRows(settings, y0, y1);
     const std::size_t stride = std::size_t(settings.width) * 3;
+    const AaPattern pattern = aaPattern(settings.aa);
+    if (pattern.offsets.size() == 1 && pattern.weights[0] == 1.0) {
+        // One sample of weight 1 is its own average (0 + 1 x is x, bit for bit), so an ink's or
+        // the background's 8-bit code comes from a table made once instead of being averaged
+        // and encoded per pixel.
+        const Impl& impl = *mImpl;
+        impl.traceRows(settings, y0, y1, control, [&] {
+            return [&](int j, int i0, int pixels, const Impl::Traced& traced) {
+                std::uint8_t* out = rgb + std::size_t(j - y0) * stride + std::size_t(i0) * 3;
+                for (int p = 0; p < pixels; ++p, out += 3) {
+                    const int c = traced.colors[p];
+                    if (c >= 0 || !impl.source) {
+                        const std::uint8_t* code = c >= 0 ? impl.paletteSrgb8[std::size_t(c)].data()
+                                                          : impl.backgroundSrgb8.data();
+                        out[0] = code[0];
+                        out[1] = code[1];
+                        out[2] = code[2];
+                    } else {
+                        const glm::dvec3 lin = impl.sourceAt(traced.whereX[p], traced.whereY[p]);
+                        out[0] = encodeSrgb8(lin.x);
+                        out[1] = encodeSrgb8(lin.y);
+                        out[2] = encodeSrgb8(lin.z);
+                    }
+                }
+            };
+        });
+        return;
+    }
     mImpl->renderLinear(settings, y0, y1, control, [&](int j, const double* line) {
         std::uint8_t* out = rgb + std::size_t(j - y0) * stride;
         // Neighbouring pixels mostly share their colour: encode a channel again only when it
@@ -239,6 +314,28 @@ void CpuRenderer::renderRowsLinear(const RenderSettings& settings, int y0, int y
     });
 }
 
+CpuKernelInfo cpuKernel() {
+    kernel::Choice choice = kernel::activeChoice();
+    return {kernel::variantName(choice.variant), choice.reason};
+}
+
+std::vector<std::string> cpuKernelsSupported() {
+    std::vector<std::string> names;
+    for (kernel::Variant v : kernel::supportedVariants()) names.emplace_back(kernel::variantName(v));
+    return names;
+}
+
+void setCpuKernelForTesting(const std::string& name) {
+    if (name.empty()) {
+        kernel::setActiveChoice(kernel::chooseVariant(std::getenv("MARBLER_KERNEL")));
+        return;
+    }
+    std::optional<kernel::Variant> v = kernel::variantNamed(name);
+    if (!v) throw InputError("'" + name + "' is not a CPU kernel variant (avx512, avx2, baseline)");
+    if (!kernel::cpuRuns(*v)) throw InputError("this CPU cannot run the " + name + " kernel");
+    kernel::setActiveChoice({*v, "set for testing"});
+}
+
 int CpuRenderer::colorIndexAt(const glm::dvec3& p) const {
     auto tile = std::make_unique<kernel::Tile>();
     tile->x[0] = p.x;
@@ -249,6 +346,23 @@ int CpuRenderer::colorIndexAt(const glm::dvec3& p) const {
     kernel::traceTile(mImpl->reversed.data(), mImpl->reversed.size(), mImpl->dimension, *tile, 1, &color, nullptr,
                       nullptr);
     return color;
+}
+
+void CpuRenderer::colorIndicesAt(const double* x, const double* y, const double* z, std::size_t count,
+                                 int* colors) const {
+    auto tile = std::make_unique<kernel::Tile>();
+    const bool solid = mImpl->dimension == 3;
+    for (std::size_t first = 0; first < count; first += kernel::TileSize) {
+        const int n = static_cast<int>(std::min<std::size_t>(kernel::TileSize, count - first));
+        for (int k = 0; k < n; ++k) {
+            tile->x[k] = x[first + std::size_t(k)];
+            tile->y[k] = y[first + std::size_t(k)];
+            tile->z[k] = solid ? z[first + std::size_t(k)] : 0.0;
+            tile->id[k] = k;
+        }
+        kernel::traceTile(mImpl->reversed.data(), mImpl->reversed.size(), mImpl->dimension, *tile, n,
+                          colors + first, nullptr, nullptr);
+    }
 }
 
 } // namespace marbler

@@ -1,19 +1,20 @@
-// Image input and output: the one file of Marbler that sees OpenImageIO.
+// Image input and output: source images, atomic image files, renders streamed to a file. The
+// formats themselves live in ImageWriters.cpp (PNG, TIFF, PPM) and in the OpenImageIO module.
 
-#include "ImageData.h"
-#include "marbler/CpuRenderer.h"
+#include "ImageSink.h"
 #include "marbler/Error.h"
-
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include "marbler/Modules.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
+#include <thread>
+#include <utility>
 
 #include <unistd.h>
 
@@ -54,48 +55,13 @@ std::vector<unsigned char> decodeBase64(std::string_view text) {
     return out;
 }
 
-namespace {
-
-/// Rasters larger than this (64 megapixels, 8192 x 8192) are refused as sources, so a hostile
-/// file that claims a huge size cannot make the loader allocate gigabytes of float pixels.
-constexpr std::int64_t MaxSourcePixels = std::int64_t(1) << 26;
-/// Channels decoded at most (RGBA); extra channels are not read.
-constexpr int MaxSourceChannels = 4;
-
-bool isLinearColorSpace(const OIIO::ImageSpec& spec) {
-    std::string space = spec.get_string_attribute("oiio:ColorSpace");
-    std::transform(space.begin(), space.end(), space.begin(), [](unsigned char c) { return std::tolower(c); });
-    return space == "linear" || space == "scene_linear" || space == "lin_srgb";
+ImageIoModule& imageIoModule() {
+    static ImageIoModule* module = [] {
+        auto entry = reinterpret_cast<ImageIoModule* (*)()>(moduleEntry(ImageIoModuleFile, ImageIoModuleEntry));
+        return entry();
+    }();
+    return *module;
 }
-
-LinearRaster readRaster(OIIO::ImageInput& in, const std::string& name) {
-    const OIIO::ImageSpec& spec = in.spec();
-    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 ||
-        std::int64_t(spec.width) * spec.height > MaxSourcePixels)
-        throw InputError("source image " + name + ": unsupported size " + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height));
-    const int channels = std::min(spec.nchannels, MaxSourceChannels);
-    std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
-    if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        throw InputError("source image " + name + ": " + in.geterror());
-    LinearRaster raster;
-    raster.width = spec.width;
-    raster.height = spec.height;
-    raster.rgb.resize(std::size_t(spec.width) * std::size_t(spec.height) * 3);
-    const bool linear = isLinearColorSpace(spec);
-    const std::size_t count = std::size_t(spec.width) * std::size_t(spec.height);
-    for (std::size_t p = 0; p < count; ++p)
-        for (int c = 0; c < 3; ++c) {
-            // Grey and grey+alpha images repeat their one channel; alpha is ignored.
-            int from = channels >= 3 ? c : 0;
-            float v = pixels[p * std::size_t(channels) + std::size_t(from)];
-            raster.rgb[p * 3 + std::size_t(c)] =
-                linear ? v : static_cast<float>(srgbToLinear(std::clamp(double(v), 0.0, 1.0)));
-        }
-    return raster;
-}
-
-} // namespace
 
 LinearRaster loadSourceImage(const SourceImage& source, const std::string& baseDirectory) {
     const std::string& text = source.image;
@@ -118,72 +84,59 @@ LinearRaster loadSourceImage(const SourceImage& source, const std::string& baseD
         } catch (const InputError& e) {
             throw InputError("source image " + name + ": " + e.what());
         }
-        OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
-        auto in = OIIO::ImageInput::open("source." + extension, nullptr, &reader);
-        if (!in) throw InputError("source image " + name + ": cannot decode: " + OIIO::geterror());
-        LinearRaster raster = readRaster(*in, name);
-        in->close();
-        return raster;
+        return imageIoModule().readMemory(bytes.data(), bytes.size(), extension, name);
     }
     fs::path file(text);
     if (file.is_relative() && !baseDirectory.empty()) file = fs::path(baseDirectory) / file;
     const std::string name = "'" + file.string() + "'";
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) throw InputError("source image " + name + ": no such file");
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) throw InputError("source image " + name + ": cannot load: " + OIIO::geterror());
-    LinearRaster raster = readRaster(*in, name);
-    in->close();
-    return raster;
+    return imageIoModule().readFile(file.string(), name);
 }
 
 } // namespace detail
 
 namespace {
 
-/// Rows rendered and written at a time: bounds the memory of a poster-sized render.
-constexpr int StripRows = 64;
+using detail::ImageSink;
+using detail::SinkTarget;
+using detail::imageIoModule;
+using detail::openBuiltinSink;
+
+/// Rows of a strip: several strips an image, so writing one overlaps rendering the next, and at
+/// most about two megapixels a strip, so memory stays bounded at poster sizes.
+int stripRows(int width, int height) {
+    const int most = std::max(16, (1 << 21) / std::max(1, width));
+    return std::clamp((height + 7) / 8, 16, most);
+}
+
+std::string lowerExtension(const fs::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    return extension;
+}
 
 /// An image file written in strips to a temporary name beside the target, renamed over the
 /// target only by commit(); destroyed uncommitted, it leaves nothing behind.
 class AtomicImageFile {
 public:
     AtomicImageFile(const fs::path& file, int width, int height, const ExportOptions& options) : mFile(file) {
-        std::string extension = file.extension().string();
-        std::transform(extension.begin(), extension.end(), extension.begin(),
-                       [](unsigned char c) { return std::tolower(c); });
-        mOut = OIIO::ImageOutput::create(file.string());
-        if (!mOut) {
-            OIIO::geterror(); // clear the library's message; ours says it better
-            throw InputError("'" + file.string() + "': unknown image format '" + extension +
-                             "' (use .png, .tif, .exr or .jpg)");
-        }
-        mFloat = extension == ".exr" || extension == ".hdr";
-        mJpegDpi = options.dpi && (extension == ".jpg" || extension == ".jpeg");
-        OIIO::ImageSpec spec(width, height, 3, mFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
-        spec.attribute("oiio:ColorSpace", mFloat ? "Linear" : "sRGB");
-        spec.attribute("Software", "Marbler");
-        if (extension == ".jpg" || extension == ".jpeg") spec.attribute("Compression", "jpeg:95");
-        if (options.dpi) {
-            spec.attribute("XResolution", static_cast<float>(*options.dpi));
-            spec.attribute("YResolution", static_cast<float>(*options.dpi));
-            spec.attribute("ResolutionUnit", "inch");
-        }
         static std::atomic<int> counter{0};
-        fs::path folder = file.parent_path();
-        mTemp = folder / ("." + file.stem().string() + ".part-" + std::to_string(::getpid()) + "-" +
-                          std::to_string(counter++) + file.extension().string());
-        if (!mOut->open(mTemp.string(), spec)) {
-            std::string reason = mOut->geterror();
-            mOut.reset();
+        mTemp = file.parent_path() / ("." + file.stem().string() + ".part-" + std::to_string(::getpid()) + "-" +
+                                      std::to_string(counter++) + file.extension().string());
+        SinkTarget target{mTemp.string(), lowerExtension(file), file.string(), width, height, options};
+        try {
+            mSink = openBuiltinSink(target);
+            if (!mSink) mSink = imageIoModule().openSink(target);
+        } catch (...) {
             removeTemp();
-            throw RuntimeFailure("cannot write '" + file.string() + "': " + reason);
+            throw;
         }
-        mOpen = true;
     }
 
     ~AtomicImageFile() {
-        if (mOpen) mOut->close();
+        mSink.reset(); // closes the file first
         if (!mCommitted) removeTemp();
     }
 
@@ -191,54 +144,57 @@ public:
     AtomicImageFile& operator=(const AtomicImageFile&) = delete;
 
     /// Whether the file holds linear floats (EXR) rather than 8-bit sRGB.
-    bool linearFloat() const { return mFloat; }
+    bool linearFloat() const { return mSink->linearFloat(); }
 
-    void writeRows(int y0, int y1, const void* data, OIIO::TypeDesc type) {
-        if (!mOut->write_scanlines(y0, y1, 0, type, data)) fail(mOut->geterror());
-    }
+    void writeRows(int y0, int y1, const void* data) { mSink->writeRows(y0, y1, data); }
 
     void commit() {
-        mOpen = false;
-        if (!mOut->close()) fail(mOut->geterror());
-        if (mJpegDpi) markJfifDensityInInches();
+        mSink->finish();
+        mSink.reset();
         std::error_code ec;
         fs::rename(mTemp, mFile, ec);
-        if (ec) fail(ec.message());
+        if (ec) throw RuntimeFailure("cannot write '" + mFile.string() + "': " + ec.message());
         mCommitted = true;
     }
 
 private:
-    [[noreturn]] void fail(const std::string& reason) {
-        throw RuntimeFailure("cannot write '" + mFile.string() + "': " + reason);
-    }
-    /// OpenImageIO 2.4 writes a JPEG's density with the unit byte 0 (aspect ratio only) even
-    /// when asked for inches; set the JFIF unit to 1 (dots per inch) so the dpi means something.
-    void markJfifDensityInInches() {
-        std::FILE* f = std::fopen(mTemp.c_str(), "r+b");
-        if (!f) return;
-        unsigned char head[20] = {};
-        std::size_t got = std::fread(head, 1, sizeof head, f);
-        // SOI, APP0 marker, 2 length bytes, "JFIF\0", 2 version bytes, then the unit byte.
-        if (got == sizeof head && head[0] == 0xff && head[1] == 0xd8 && head[2] == 0xff && head[3] == 0xe0 &&
-            std::memcmp(head + 6, "JFIF", 5) == 0 && head[13] == 0) {
-            const unsigned char inches = 1;
-            std::fseek(f, 13, SEEK_SET);
-            std::fwrite(&inches, 1, 1, f);
-        }
-        std::fclose(f);
-    }
-
     void removeTemp() {
         std::error_code ec;
         fs::remove(mTemp, ec);
     }
 
     fs::path mFile, mTemp;
-    std::unique_ptr<OIIO::ImageOutput> mOut;
-    bool mFloat = false;
-    bool mJpegDpi = false;
-    bool mOpen = false;
+    std::unique_ptr<ImageSink> mSink;
     bool mCommitted = false;
+};
+
+/// Writes strips on a thread of its own while the caller renders the next one. At most one
+/// write is in flight; wait() returns when it is done and rethrows what it threw.
+class StripWriter {
+public:
+    explicit StripWriter(AtomicImageFile& out) : mOut(out) {}
+    ~StripWriter() {
+        if (mThread.joinable()) mThread.join();
+    }
+    void write(int y0, int y1, const void* rows) {
+        wait();
+        mThread = std::thread([this, y0, y1, rows] {
+            try {
+                mOut.writeRows(y0, y1, rows);
+            } catch (...) {
+                mError = std::current_exception();
+            }
+        });
+    }
+    void wait() {
+        if (mThread.joinable()) mThread.join();
+        if (mError) std::rethrow_exception(std::exchange(mError, nullptr));
+    }
+
+private:
+    AtomicImageFile& mOut;
+    std::thread mThread;
+    std::exception_ptr mError;
 };
 
 } // namespace
@@ -249,16 +205,17 @@ void writeImage(const Image& image, const fs::path& file, const ExportOptions& o
         throw RuntimeFailure("cannot write '" + file.string() + "': the image is empty or malformed");
     AtomicImageFile out(file, image.width, image.height, options);
     if (!out.linearFloat()) {
-        out.writeRows(0, image.height, image.rgb.data(), OIIO::TypeDesc::UINT8);
+        out.writeRows(0, image.height, image.rgb.data());
     } else {
         const float* table = srgbToLinearTable();
+        const int rows = stripRows(image.width, image.height);
         std::vector<float> strip;
-        for (int y0 = 0; y0 < image.height; y0 += StripRows) {
-            int y1 = std::min(image.height, y0 + StripRows);
+        for (int y0 = 0; y0 < image.height; y0 += rows) {
+            int y1 = std::min(image.height, y0 + rows);
             strip.resize(std::size_t(y1 - y0) * std::size_t(image.width) * 3);
             const std::uint8_t* src = image.row(y0);
             for (std::size_t k = 0; k < strip.size(); ++k) strip[k] = table[src[k]];
-            out.writeRows(y0, y1, strip.data(), OIIO::TypeDesc::FLOAT);
+            out.writeRows(y0, y1, strip.data());
         }
     }
     out.commit();
@@ -271,11 +228,20 @@ void renderToFile(const Genome& genome, const RenderSettings& settings, const fs
         throw InputError("dpi must be a positive number");
     CpuRenderer renderer(genome);
     AtomicImageFile out(file, settings.width, settings.height, options);
-    const std::size_t rowValues = std::size_t(settings.width) * 3;
-    std::vector<std::uint8_t> bytes;
-    std::vector<float> floats;
-    for (int y0 = 0; y0 < settings.height; y0 += StripRows) {
-        int y1 = std::min(settings.height, y0 + StripRows);
+    const bool linear = out.linearFloat();
+    const int rows = stripRows(settings.width, settings.height);
+    const std::size_t stripValues = std::size_t(rows) * std::size_t(settings.width) * 3;
+    // Two strip buffers: one being written while the other is rendered.
+    std::vector<std::uint8_t> bytes[2];
+    std::vector<float> floats[2];
+    for (int b = 0; b < 2; ++b) {
+        if (linear) floats[b].resize(stripValues);
+        else bytes[b].resize(stripValues);
+    }
+    StripWriter writer(out);
+    int buffer = 0;
+    for (int y0 = 0; y0 < settings.height; y0 += rows, buffer ^= 1) {
+        int y1 = std::min(settings.height, y0 + rows);
         RenderControl strip;
         if (control) {
             strip.cancel = control->cancel;
@@ -284,16 +250,18 @@ void renderToFile(const Genome& genome, const RenderSettings& settings, const fs
                     control->progress((y0 + f * (y1 - y0)) / settings.height);
                 };
         }
-        if (out.linearFloat()) {
-            floats.resize(std::size_t(y1 - y0) * rowValues);
-            renderer.renderRowsLinear(settings, y0, y1, floats.data(), &strip);
-            out.writeRows(y0, y1, floats.data(), OIIO::TypeDesc::FLOAT);
+        const void* data;
+        if (linear) {
+            renderer.renderRowsLinear(settings, y0, y1, floats[buffer].data(), &strip);
+            data = floats[buffer].data();
         } else {
-            bytes.resize(std::size_t(y1 - y0) * rowValues);
-            renderer.renderRows(settings, y0, y1, bytes.data(), &strip);
-            out.writeRows(y0, y1, bytes.data(), OIIO::TypeDesc::UINT8);
+            renderer.renderRows(settings, y0, y1, bytes[buffer].data(), &strip);
+            data = bytes[buffer].data();
         }
+        if (control && control->cancelled()) break;
+        writer.write(y0, y1, data);
     }
+    writer.wait();
     if (control && control->cancelled()) throw Cancelled();
     out.commit();
 }

@@ -1,21 +1,29 @@
 // The tile kernel. Every loop here computes the formulas of genome/src/Tools.cpp (the scalar
 // reference), in the same order of operations, so that the renderer and the reference agree to
-// the last bit wherever no sine, cosine, cube root or AVX-512 drop is involved, and within an
-// ulp or a few where one is (the drops on AVX-512 CPUs replace the divides, square roots and
-// cube root by refined reciprocal square roots and a multiply-only cube root, and fold the
-// compaction into the same pass: see dropAvx512). This file is built with -O3
+// the last bit wherever no sine, cosine, cube root or AVX-512 variant is involved, and within
+// an ulp or a few where one is (the AVX-512 variant's drops replace the divides, square roots
+// and cube root by refined reciprocal square roots and a multiply-only cube root, and fold the
+// compaction into the same pass: see dropAvx512; its lines and combs replace their divides by
+// refined reciprocals: see lineAvx512). This file is built with -O3
 // -fno-math-errno -fno-trapping-math -ffp-contract=off: the first two let GCC vectorise sqrt
 // and floor, the last keeps it from fusing multiply-adds, which would round differently from
 // the reference.
 //
-// traceTile is compiled three times (AVX-512, AVX2+FMA, baseline x86-64) and the loader picks
-// the best for the running CPU, so the binary runs anywhere and uses the widest vectors it can.
+// The body of traceTile is compiled three times, as explicit variants (AVX-512 with the
+// hand-written drops, lines and combs, AVX2+FMA, baseline x86-64); traceTile calls the one chosen once per
+// process: the best the CPU runs, or the one MARBLER_KERNEL names (see chooseVariant), so the
+// binary runs anywhere, uses the widest vectors it can, and every variant can be tested on a
+// machine that runs it.
 
 #include "Kernel.h"
 
+#include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <mutex>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
@@ -33,6 +41,10 @@
 
 namespace marbler::kernel {
 namespace {
+
+/// The variant that ran the last traceTile on this thread: lets the tests see which code a
+/// selection actually runs, for the price of one store per tile.
+thread_local Variant lastVariantRun = Variant::Baseline;
 
 // Cody-Waite split of pi/2 (fdlibm e_rem_pio2.c): the first two parts have 33 significant bits,
 // so q * part is exact for |q| < 2^20, which covers |x| <= SinCosLimit.
@@ -209,16 +221,8 @@ MARBLER_IVDEP
 }
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define MARBLER_AVX512_DROP 1
-
-/// Whether the running CPU has AVX-512F (for the drops below); looked up once.
-bool cpuHasAvx512() {
-    static const bool has = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx512f") != 0;
-    }();
-    return has;
-}
+// x86-64: the AVX-512 drops, lines and combs below, and the AVX-512 and AVX2 variants.
+#define MARBLER_X86_VARIANTS 1
 
 /// The exact 3D drop factor (ink3's formula) for the lanes of `len2`: the fallback of
 /// dropAvx512 where its fast form's inputs are out of range.
@@ -361,6 +365,56 @@ __attribute__((target("avx512f,fma"))) int dropAvx512(const PreparedOp& op, Tile
     if (i < n)
         dropStep<Dim>(t, i, j, __mmask8((1u << (n - i)) - 1u), cx, cy, cz, rr, r2, op.r2, op.color, colors);
     return j;
+}
+
+/// One step of lineAvx512: 8 points from i, `live` masking those past n in the last step.
+template <int Dim, bool Comb, bool Full>
+[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline void lineStep(
+    Tile& t, int i, __mmask8 live, const __m512d (&c)[3], const __m512d (&nrm)[3], const __m512d (&alm)[3],
+    __m512d s, __m512d invS, __m512d halfS, __m512d lambda) {
+    double* const axes[3] = {t.x, t.y, t.z};
+    __m512d p[3];
+    for (int a = 0; a < Dim; ++a)
+        p[a] = Full ? _mm512_loadu_pd(axes[a] + i) : _mm512_maskz_loadu_pd(live, axes[a] + i);
+    __m512d along = _mm512_mul_pd(_mm512_sub_pd(p[0], c[0]), nrm[0]);
+    for (int a = 1; a < Dim; ++a) along = _mm512_fmadd_pd(_mm512_sub_pd(p[a], c[a]), nrm[a], along);
+    __m512d d;
+    // (The zero-masked forms of roundscale and rcp14: the plain ones trip GCC 12's
+    // -Wmaybe-uninitialized in its own header.)
+    if (Comb) {
+        const __m512d k = _mm512_maskz_roundscale_pd(0xFF, _mm512_mul_pd(along, invS), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+        const __m512d rem = _mm512_fnmadd_pd(s, k, along);
+        d = _mm512_sub_pd(halfS, _mm512_abs_pd(_mm512_sub_pd(rem, halfS)));
+    } else {
+        d = _mm512_abs_pd(along);
+    }
+    const __m512d den = _mm512_add_pd(d, lambda);
+    const __m512d one = _mm512_set1_pd(1.0);
+    __m512d r = _mm512_maskz_rcp14_pd(0xFF, den);
+    for (int step = 0; step < 2; ++step) r = _mm512_fmadd_pd(r, _mm512_fnmadd_pd(den, r, one), r);
+    for (int a = 0; a < Dim; ++a) {
+        const __m512d moved = _mm512_fnmadd_pd(r, alm[a], p[a]);
+        if (Full) _mm512_storeu_pd(axes[a] + i, moved);
+        else _mm512_mask_storeu_pd(axes[a] + i, live, moved);
+    }
+}
+
+/// Line and comb with AVX-512 (see line2 and line3) without a divide, as the drops: t / s is
+/// t (1/s), 1 / (d + lambda) comes from the 14-bit reciprocal and two Newton steps, and the
+/// shift l M is that times alpha lambda M: a few ulps from the reference's quotient. d stays continuous across the tines' midlines, so where
+/// t (1/s) rounds to the other side of an integer, d still moves by an ulp or so.
+template <int Dim, bool Comb>
+__attribute__((target("avx512f,fma"))) void lineAvx512(const PreparedOp& op, Tile& t, int n) {
+    const __m512d c[3] = {_mm512_set1_pd(op.c.x), _mm512_set1_pd(op.c.y), _mm512_set1_pd(op.c.z)};
+    const __m512d nrm[3] = {_mm512_set1_pd(op.n.x), _mm512_set1_pd(op.n.y), _mm512_set1_pd(op.n.z)};
+    const double al = op.alphaLambda;
+    const __m512d alm[3] = {_mm512_set1_pd(al * op.m.x), _mm512_set1_pd(al * op.m.y), _mm512_set1_pd(al * op.m.z)};
+    const __m512d s = _mm512_set1_pd(op.spacing), invS = _mm512_set1_pd(1.0 / op.spacing);
+    const __m512d halfS = _mm512_set1_pd(0.5 * op.spacing), lambda = _mm512_set1_pd(op.lambda);
+    int i = 0;
+    for (; i + 8 <= n; i += 8) lineStep<Dim, Comb, true>(t, i, 0xFF, c, nrm, alm, s, invS, halfS, lambda);
+    if (i < n)
+        lineStep<Dim, Comb, false>(t, i, __mmask8((1u << (n - i)) - 1u), c, nrm, alm, s, invS, halfS, lambda);
 }
 #endif
 
@@ -590,15 +644,14 @@ MARBLER_IVDEP
     }
 }
 
-} // namespace
-
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
-                        double* whereX, double* whereY) {
+/// The body of every variant: V says which, so only the AVX-512 variant calls the
+/// hand-written drops (which need AVX-512 to run, whatever the variant is compiled for).
+template <Variant V>
+[[gnu::always_inline]] inline std::uint64_t traceTileBody(const PreparedOp* ops, std::size_t count, int dimension,
+                                                          Tile& tile, int n, int* colors, double* whereX,
+                                                          double* whereY) {
+    lastVariantRun = V;
     std::uint64_t traversed = 0;
-#ifdef MARBLER_AVX512_DROP
-    const bool hasAvx512 = cpuHasAvx512();
-#endif
     for (std::size_t k = 0; k < count && n > 0; ++k) {
         const PreparedOp& op = ops[k];
         traversed += static_cast<std::uint64_t>(n);
@@ -606,17 +659,29 @@ std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension,
             switch (op.tool) {
             case Tool::Drop:
             case Tool::Spray: {
-#ifdef MARBLER_AVX512_DROP
-                if (op.tool == Tool::Drop && hasAvx512) {
-                    n = dropAvx512<2>(op, tile, n, colors);
-                    break;
+#ifdef MARBLER_X86_VARIANTS
+                if constexpr (V == Variant::Avx512) {
+                    if (op.tool == Tool::Drop) {
+                        n = dropAvx512<2>(op, tile, n, colors);
+                        break;
+                    }
                 }
 #endif
                 if (ink2(op, tile, n, op.tool == Tool::Drop) != 0) n = compact(tile, n, 2, op.color, colors);
                 break;
             }
-            case Tool::Line: line2(op, tile, n, false); break;
-            case Tool::Comb: line2(op, tile, n, true); break;
+            case Tool::Line:
+            case Tool::Comb: {
+#ifdef MARBLER_X86_VARIANTS
+                if constexpr (V == Variant::Avx512) {
+                    if (op.tool == Tool::Comb) lineAvx512<2, true>(op, tile, n);
+                    else lineAvx512<2, false>(op, tile, n);
+                    break;
+                }
+#endif
+                line2(op, tile, n, op.tool == Tool::Comb);
+                break;
+            }
             case Tool::Wave: wave2(op, tile, n); break;
             case Tool::Circle: swirl2(op, tile, n, false); break;
             case Tool::Vortex: swirl2(op, tile, n, true); break;
@@ -626,8 +691,8 @@ std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension,
         } else {
             switch (op.tool) {
             case Tool::Drop:
-#ifdef MARBLER_AVX512_DROP
-                if (hasAvx512) {
+#ifdef MARBLER_X86_VARIANTS
+                if constexpr (V == Variant::Avx512) {
                     n = dropAvx512<3>(op, tile, n, colors);
                     break;
                 }
@@ -637,8 +702,18 @@ std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension,
             case Tool::Cylinder:
                 if (ink3(op, tile, n) != 0) n = compact(tile, n, 3, op.color, colors);
                 break;
-            case Tool::Line: line3(op, tile, n, false); break;
-            case Tool::Comb: line3(op, tile, n, true); break;
+            case Tool::Line:
+            case Tool::Comb: {
+#ifdef MARBLER_X86_VARIANTS
+                if constexpr (V == Variant::Avx512) {
+                    if (op.tool == Tool::Comb) lineAvx512<3, true>(op, tile, n);
+                    else lineAvx512<3, false>(op, tile, n);
+                    break;
+                }
+#endif
+                line3(op, tile, n, op.tool == Tool::Comb);
+                break;
+            }
             case Tool::Wave: wave3(op, tile, n); break;
             case Tool::Circle:
             case Tool::Sphere:
@@ -655,6 +730,154 @@ std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension,
     }
     return traversed;
 }
+
+using TraceFn = std::uint64_t (*)(const PreparedOp*, std::size_t, int, Tile&, int, int*, double*, double*);
+
+// The variants. Each is the same body compiled for its instruction set; the always-inline
+// helpers above are compiled into each with that variant's vectors.
+#ifdef MARBLER_X86_VARIANTS
+__attribute__((target("arch=x86-64-v4"))) std::uint64_t traceTileAvx512(
+    const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors, double* whereX,
+    double* whereY) {
+    return traceTileBody<Variant::Avx512>(ops, count, dimension, tile, n, colors, whereX, whereY);
+}
+
+__attribute__((target("arch=x86-64-v3"))) std::uint64_t traceTileAvx2(const PreparedOp* ops, std::size_t count,
+                                                                     int dimension, Tile& tile, int n, int* colors,
+                                                                     double* whereX, double* whereY) {
+    return traceTileBody<Variant::Avx2>(ops, count, dimension, tile, n, colors, whereX, whereY);
+}
+#endif
+
+std::uint64_t traceTileBaseline(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n,
+                                int* colors, double* whereX, double* whereY) {
+    return traceTileBody<Variant::Baseline>(ops, count, dimension, tile, n, colors, whereX, whereY);
+}
+
+TraceFn functionOf(Variant v) {
+    switch (v) {
+#ifdef MARBLER_X86_VARIANTS
+    case Variant::Avx512: return traceTileAvx512;
+    case Variant::Avx2: return traceTileAvx2;
+#else
+    case Variant::Avx512:
+    case Variant::Avx2: break;
+#endif
+    case Variant::Baseline: break;
+    }
+    return traceTileBaseline;
+}
+
+/// The variant in use. `trace` is read on every tile, so it is an atomic of its own; the
+/// choice itself changes only at start-up and in tests.
+struct Active {
+    std::atomic<TraceFn> trace;
+    std::mutex mutex;
+    Choice choice;
+
+    Active() : choice(chooseVariant(std::getenv("MARBLER_KERNEL"))) { trace = functionOf(choice.variant); }
+};
+
+Active& active() {
+    static Active instance;
+    return instance;
+}
+
+} // namespace
+
+const char* variantName(Variant v) {
+    switch (v) {
+    case Variant::Avx512: return "avx512";
+    case Variant::Avx2: return "avx2";
+    case Variant::Baseline: return "baseline";
+    }
+    return "baseline";
+}
+
+std::optional<Variant> variantNamed(std::string_view name) {
+    for (Variant v : AllVariants)
+        if (name == variantName(v)) return v;
+    return std::nullopt;
+}
+
+bool cpuRuns(Variant v) {
+#ifdef MARBLER_X86_VARIANTS
+    // Looked up once: the CPU (and the operating system's saving of the wide registers, which
+    // the runtime checks too) does not change while the process runs.
+    static const bool v3 = [] {
+        __builtin_cpu_init();
+#if defined(__clang__)
+        // clang (14) knows no level names here: the features that the levels add.
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+               __builtin_cpu_supports("bmi2");
+#else
+        return __builtin_cpu_supports("x86-64-v3") != 0;
+#endif
+    }();
+    static const bool v4 = [] {
+#if defined(__clang__)
+        return v3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+               __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
+               __builtin_cpu_supports("avx512vl");
+#else
+        return __builtin_cpu_supports("x86-64-v4") != 0;
+#endif
+    }();
+    switch (v) {
+    case Variant::Avx512: return v4;
+    case Variant::Avx2: return v3;
+    case Variant::Baseline: return true;
+    }
+    return false;
+#else
+    return v == Variant::Baseline;
+#endif
+}
+
+std::vector<Variant> supportedVariants() {
+    std::vector<Variant> out;
+    for (Variant v : AllVariants)
+        if (cpuRuns(v)) out.push_back(v);
+    return out;
+}
+
+Choice chooseVariant(const char* requested) { return chooseVariant(requested, supportedVariants()); }
+
+Choice chooseVariant(const char* requested, const std::vector<Variant>& supported) {
+    const Variant best = supported.front();
+    const std::string name = requested ? requested : "";
+    if (name.empty() || name == "auto") return {best, "best this CPU runs"};
+    const std::string setting = "MARBLER_KERNEL=" + name;
+    std::optional<Variant> v = variantNamed(name);
+    if (!v) {
+        std::string known = "auto";
+        for (Variant k : AllVariants) known += std::string(", ") + variantName(k);
+        return {best, setting + " is not a kernel (" + known + "); using the best this CPU runs"};
+    }
+    if (std::find(supported.begin(), supported.end(), *v) == supported.end())
+        return {best, setting + " asks for instructions this CPU lacks; using the best this CPU runs"};
+    return {*v, setting};
+}
+
+Choice activeChoice() {
+    Active& a = active();
+    std::lock_guard lock(a.mutex);
+    return a.choice;
+}
+
+void setActiveChoice(const Choice& choice) {
+    Active& a = active();
+    std::lock_guard lock(a.mutex);
+    a.choice = choice;
+    a.trace = functionOf(choice.variant);
+}
+
+std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
+                        double* whereX, double* whereY) {
+    return active().trace.load(std::memory_order_relaxed)(ops, count, dimension, tile, n, colors, whereX, whereY);
+}
+
+Variant lastVariantRunForTest() { return lastVariantRun; }
 
 void sinCosForTest(double x, double& s, double& c) {
     double angle[1] = {x}, sn[1], cs[1];

@@ -8,6 +8,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace marbler::kernel {
 
@@ -33,9 +37,45 @@ struct alignas(64) Tile {
 /// operations in reverse time order (`count` of them, all of `dimension`). Writes the palette
 /// index seen by point k (-1: none) to colors[tile.id[k]]; for points that find no ink, when
 /// `whereX` is given, writes where they map back to into whereX/whereY[tile.id[k]]. Returns the
-/// number of sample-operations traversed. The tile's arrays are clobbered.
+/// number of sample-operations traversed. The tile's arrays are clobbered. Runs the active
+/// variant (activeChoice).
 std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
                         double* whereX, double* whereY);
+
+/// The compiled variants of traceTile, best first. Avx512 (x86-64-v4) also replaces the
+/// divides and roots of drops, lines and combs by refined hardware estimates (a few ulps from
+/// the reference); Avx2 (x86-64-v3) and Baseline (x86-64) round exactly like the reference
+/// outside sine, cosine and cube root.
+enum class Variant { Avx512, Avx2, Baseline };
+inline constexpr Variant AllVariants[] = {Variant::Avx512, Variant::Avx2, Variant::Baseline};
+
+/// "avx512", "avx2", "baseline": the names MARBLER_KERNEL takes.
+const char* variantName(Variant v);
+std::optional<Variant> variantNamed(std::string_view name);
+/// Whether the running CPU (and operating system) can execute the variant.
+bool cpuRuns(Variant v);
+/// The variants the CPU runs, best first (never empty: Baseline runs everywhere).
+std::vector<Variant> supportedVariants();
+
+/// A variant and why it was picked.
+struct Choice {
+    Variant variant;
+    std::string reason;
+};
+/// The variant for a value of MARBLER_KERNEL (null, "" or "auto": the best the CPU runs). A
+/// name that is not a variant, or a variant the CPU cannot run, falls back to the best, and
+/// the reason says so; nothing is refused, so a stale setting never stops a render.
+Choice chooseVariant(const char* requested);
+/// As chooseVariant, for a CPU that runs `supported` (best first, not empty): for tests.
+Choice chooseVariant(const char* requested, const std::vector<Variant>& supported);
+/// The variant traceTile uses: chosen from MARBLER_KERNEL on first use, or set.
+Choice activeChoice();
+/// Makes traceTile use `choice.variant` from now on, in every thread (the caller checks that
+/// the CPU runs it).
+void setActiveChoice(const Choice& choice);
+
+/// The variant that ran the last traceTile on the calling thread.
+Variant lastVariantRunForTest();
 
 /// sin and cos of x as the kernel computes them (for tests): Cody-Waite reduction by pi/2 and
 /// the fdlibm polynomials, within about 1 ulp of std::sin/std::cos for |x| <= 1e6.

@@ -1,5 +1,6 @@
 #include "TestUtil.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -28,12 +29,15 @@ std::string readFile(const std::filesystem::path& file) {
 }
 
 void writeFile(const std::filesystem::path& file, const std::string& text) {
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
     std::ofstream out(file, std::ios::binary);
     out << text;
     if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-RunResult runMarbler(const std::vector<std::string>& args) {
+RunResult runMarbler(const std::vector<std::string>& args) { return runMarbler(args, {}); }
+
+RunResult runMarbler(const std::vector<std::string>& args, const std::vector<EnvChange>& env) {
     // Capture through files rather than pipes: no risk of a full pipe blocking the child.
     static int counter = 0;
     std::filesystem::path dir = std::filesystem::path(MARBLER_TEST_OUTPUT) / "run";
@@ -48,6 +52,10 @@ RunResult runMarbler(const std::vector<std::string>& args) {
         int err = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         ::dup2(out, 1);
         ::dup2(err, 2);
+        for (const auto& [name, value] : env) {
+            if (value) ::setenv(name.c_str(), value->c_str(), 1);
+            else ::unsetenv(name.c_str());
+        }
         std::vector<char*> argv;
         std::string exe = MARBLER_EXECUTABLE;
         argv.push_back(exe.data());

@@ -2,6 +2,8 @@
 /// Helpers shared by the test executables.
 
 #include <filesystem>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -27,5 +29,11 @@ struct RunResult {
 /// Runs the built `marbler` executable with the given arguments (no shell interpretation),
 /// capturing stdout and stderr.
 RunResult runMarbler(const std::vector<std::string>& args);
+
+/// A change to the child's environment: set NAME to a value, or unset it (nullopt).
+using EnvChange = std::pair<std::string, std::optional<std::string>>;
+
+/// As runMarbler, with these changes to the environment the child inherits.
+RunResult runMarbler(const std::vector<std::string>& args, const std::vector<EnvChange>& env);
 
 } // namespace marbler::test

@@ -1,7 +1,11 @@
-// The vectorised tile kernel against the scalar reference maps (genome/src/Tools.cpp).
+// The vectorised tile kernel against the scalar reference maps (genome/src/Tools.cpp), in
+// every variant this CPU runs; and the choice of variant (MARBLER_KERNEL).
 
 #include "Kernel.h"
+#include "TestUtil.h"
 #include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
 #include "marbler/Random.h"
 #include "marbler/Tools.h"
@@ -9,7 +13,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
+#include <optional>
+#include <thread>
 
 namespace marbler {
 namespace {
@@ -86,14 +93,36 @@ std::vector<Tool> toolsOf(int dimension) {
     return tools;
 }
 
-class KernelVsReference : public ::testing::TestWithParam<int> {};
+/// Tools whose inverse map the exact variants (avx2, baseline) compute bit for bit like the
+/// reference: no sine, cosine or cube root of the kernel's own.
+bool exactTool(Tool tool, int dimension) {
+    switch (tool) {
+    case Tool::Spray:
+    case Tool::Line:
+    case Tool::Comb:
+    case Tool::Cylinder: return true;
+    case Tool::Drop: return dimension == 2;
+    default: return false;
+    }
+}
+
+/// Runs each test with one kernel variant forced, and puts back the environment's choice.
+class KernelVsReference : public ::testing::TestWithParam<std::tuple<std::string, int>> {
+protected:
+    void SetUp() override { setCpuKernelForTesting(variant()); }
+    void TearDown() override { setCpuKernelForTesting(""); }
+    const std::string& variant() const { return std::get<0>(GetParam()); }
+    int dimension() const { return std::get<1>(GetParam()); }
+};
 
 TEST_P(KernelVsReference, EveryToolMovesPointsLikeTheReference) {
-    const int dim = GetParam();
+    const int dim = dimension();
+    const bool exactVariant = variant() != "avx512";
     Pcg32 rng(100 + dim);
     auto tile = std::make_unique<kernel::Tile>();
     std::vector<int> colors(kernel::TileSize);
     for (Tool tool : toolsOf(dim)) {
+        const bool exact = exactVariant && exactTool(tool, dim);
         for (int trial = 0; trial < 20; ++trial) {
             PreparedOp op = prepare(randomOperation(rng, tool, dim), dim);
             const int n = 300 + trial; // not a multiple of the vector width
@@ -108,6 +137,7 @@ TEST_P(KernelVsReference, EveryToolMovesPointsLikeTheReference) {
                 tile->id[i] = i;
             }
             kernel::traceTile(&op, 1, dim, *tile, n, colors.data(), nullptr, nullptr);
+            ASSERT_EQ(kernel::variantName(kernel::lastVariantRunForTest()), variant());
             // Points that found ink were swapped out; the others keep their order.
             int k = 0;
             for (int i = 0; i < n; ++i) {
@@ -118,7 +148,7 @@ TEST_P(KernelVsReference, EveryToolMovesPointsLikeTheReference) {
                 ASSERT_EQ(tile->id[k], i);
                 glm::dvec3 want = inverseMap(op, p);
                 glm::dvec3 got(tile->x[k], tile->y[k], dim == 3 ? tile->z[k] : 0.0);
-                double tolerance = 1e-9 * (1.0 + std::abs(want.x) + std::abs(want.y) + std::abs(want.z));
+                double tolerance = exact ? 0.0 : 1e-9 * (1.0 + std::abs(want.x) + std::abs(want.y) + std::abs(want.z));
                 ASSERT_NEAR(got.x, want.x, tolerance) << toolSpec(tool).name << " point " << i;
                 ASSERT_NEAR(got.y, want.y, tolerance) << toolSpec(tool).name << " point " << i;
                 ASSERT_NEAR(got.z, want.z, tolerance) << toolSpec(tool).name << " point " << i;
@@ -129,7 +159,7 @@ TEST_P(KernelVsReference, EveryToolMovesPointsLikeTheReference) {
 }
 
 TEST_P(KernelVsReference, RandomGenomesGiveTheReferenceColours) {
-    const int dim = GetParam();
+    const int dim = dimension();
     Pcg32 rng(200 + dim);
     std::vector<Tool> tools = toolsOf(dim);
     int mismatches = 0, total = 0;
@@ -159,7 +189,156 @@ TEST_P(KernelVsReference, RandomGenomesGiveTheReferenceColours) {
     EXPECT_LE(mismatches, 1) << "of " << total;
 }
 
-INSTANTIATE_TEST_SUITE_P(Dimensions, KernelVsReference, ::testing::Values(2, 3));
+INSTANTIATE_TEST_SUITE_P(Variants, KernelVsReference,
+                         ::testing::Combine(::testing::ValuesIn(cpuKernelsSupported()), ::testing::Values(2, 3)),
+                         [](const auto& info) {
+                             return std::get<0>(info.param) + "_" + std::to_string(std::get<1>(info.param)) + "D";
+                         });
+
+/// The variant a traceTile call of `renderer` runs on this thread.
+kernel::Variant variantThatRuns(const CpuRenderer& renderer) {
+    renderer.colorIndexAt({500.0, 500.0, 0.0});
+    return kernel::lastVariantRunForTest();
+}
+
+/// Sets MARBLER_KERNEL for one test and puts back the value it had.
+class KernelEnvironment : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (const char* old = std::getenv("MARBLER_KERNEL")) mOld = old;
+    }
+    void TearDown() override {
+        if (mOld) ::setenv("MARBLER_KERNEL", mOld->c_str(), 1);
+        else ::unsetenv("MARBLER_KERNEL");
+        setCpuKernelForTesting("");
+    }
+    /// Sets MARBLER_KERNEL (null: unset) and has the kernel read it again.
+    static void use(const char* value) {
+        if (value) ::setenv("MARBLER_KERNEL", value, 1);
+        else ::unsetenv("MARBLER_KERNEL");
+        setCpuKernelForTesting("");
+    }
+
+private:
+    std::optional<std::string> mOld;
+};
+
+TEST(KernelSelection, TheSupportedVariantsAreKnownBestFirstAndEndWithBaseline) {
+    std::vector<std::string> names = cpuKernelsSupported();
+    ASSERT_FALSE(names.empty());
+    EXPECT_EQ(names.back(), "baseline");
+    int last = -1;
+    for (const std::string& name : names) {
+        std::optional<kernel::Variant> v = kernel::variantNamed(name);
+        ASSERT_TRUE(v) << name;
+        EXPECT_GT(static_cast<int>(*v), last) << name << " is out of order";
+        last = static_cast<int>(*v);
+    }
+    std::printf("  this CPU runs:");
+    for (const std::string& name : names) std::printf(" %s", name.c_str());
+    std::printf("\n");
+}
+
+TEST(KernelSelection, ForcingAVariantRunsItsCode) {
+    CpuRenderer renderer(loadGenome(test::dataDir() / "examples" / "five-stones.marble.json"));
+    std::vector<std::string> names = cpuKernelsSupported();
+    // Each in turn, after a different one, so a stale choice cannot pass.
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        setCpuKernelForTesting(names[(k + 1) % names.size()]);
+        variantThatRuns(renderer);
+        setCpuKernelForTesting(names[k]);
+        EXPECT_EQ(cpuKernel().name, names[k]);
+        EXPECT_EQ(cpuKernel().reason, "set for testing");
+        EXPECT_EQ(kernel::variantName(variantThatRuns(renderer)), names[k]);
+    }
+    // Other threads (the renderer's workers) follow the choice too.
+    setCpuKernelForTesting("baseline");
+    kernel::Variant seen = kernel::Variant::Avx512;
+    std::thread([&] { seen = variantThatRuns(renderer); }).join();
+    EXPECT_EQ(seen, kernel::Variant::Baseline);
+    setCpuKernelForTesting("");
+}
+
+TEST(KernelSelection, ForcingAnUnknownOrUnsupportedVariantThrows) {
+    EXPECT_THROW(setCpuKernelForTesting("sse9"), InputError);
+    EXPECT_THROW(setCpuKernelForTesting("AVX2"), InputError);
+    for (kernel::Variant v : kernel::AllVariants) {
+        if (!kernel::cpuRuns(v)) {
+            EXPECT_THROW(setCpuKernelForTesting(kernel::variantName(v)), InputError);
+        }
+    }
+    setCpuKernelForTesting("");
+}
+
+TEST_F(KernelEnvironment, MarblerKernelPicksTheVariant) {
+    CpuRenderer renderer(loadGenome(test::dataDir() / "examples" / "five-stones.marble.json"));
+    const std::string best = cpuKernelsSupported().front();
+    use(nullptr);
+    EXPECT_EQ(cpuKernel().name, best);
+    EXPECT_EQ(cpuKernel().reason, "best this CPU runs");
+    use("auto");
+    EXPECT_EQ(cpuKernel().name, best);
+    EXPECT_EQ(cpuKernel().reason, "best this CPU runs");
+    for (const std::string& name : cpuKernelsSupported()) {
+        use(name.c_str());
+        EXPECT_EQ(cpuKernel().name, name);
+        EXPECT_EQ(cpuKernel().reason, "MARBLER_KERNEL=" + name);
+        EXPECT_EQ(kernel::variantName(variantThatRuns(renderer)), name);
+    }
+}
+
+TEST_F(KernelEnvironment, AnUnknownNameFallsBackToTheBestWithAReason) {
+    CpuRenderer renderer(loadGenome(test::dataDir() / "examples" / "five-stones.marble.json"));
+    const std::string best = cpuKernelsSupported().front();
+    use("baseline"); // so that the fallback visibly changes the code that runs
+    use("avx1024");
+    EXPECT_EQ(cpuKernel().name, best);
+    EXPECT_NE(cpuKernel().reason.find("MARBLER_KERNEL=avx1024 is not a kernel"), std::string::npos)
+        << cpuKernel().reason;
+    EXPECT_EQ(kernel::variantName(variantThatRuns(renderer)), best);
+}
+
+TEST(KernelSelection, AVariantTheCpuCannotRunFallsBackToTheBestItRuns) {
+    // The choice for a CPU without AVX-512, whatever this one has.
+    kernel::Choice c = kernel::chooseVariant("avx512", {kernel::Variant::Avx2, kernel::Variant::Baseline});
+    EXPECT_EQ(c.variant, kernel::Variant::Avx2);
+    EXPECT_NE(c.reason.find("MARBLER_KERNEL=avx512"), std::string::npos) << c.reason;
+    EXPECT_NE(c.reason.find("lacks"), std::string::npos) << c.reason;
+    c = kernel::chooseVariant("avx2", {kernel::Variant::Baseline});
+    EXPECT_EQ(c.variant, kernel::Variant::Baseline);
+    EXPECT_NE(c.reason.find("lacks"), std::string::npos) << c.reason;
+    c = kernel::chooseVariant("baseline", {kernel::Variant::Avx2, kernel::Variant::Baseline});
+    EXPECT_EQ(c.variant, kernel::Variant::Baseline);
+    EXPECT_EQ(c.reason, "MARBLER_KERNEL=baseline");
+    // And on this CPU, for real, where it lacks one.
+    for (kernel::Variant v : kernel::AllVariants)
+        if (!kernel::cpuRuns(v)) {
+            kernel::Choice real = kernel::chooseVariant(kernel::variantName(v));
+            EXPECT_TRUE(kernel::cpuRuns(real.variant));
+            EXPECT_NE(real.reason.find("lacks"), std::string::npos) << real.reason;
+        }
+}
+
+TEST(KernelSelection, EveryVariantRendersTheSameImage) {
+    Genome g = loadGenome(test::dataDir() / "examples" / "flame-comb-vortex.marble.json");
+    CpuRenderer renderer(g);
+    RenderSettings settings;
+    settings.width = settings.height = 160;
+    settings.aa = "rgss";
+    setCpuKernelForTesting("baseline");
+    const Image want = renderer.render(settings);
+    for (const std::string& name : cpuKernelsSupported()) {
+        setCpuKernelForTesting(name);
+        const Image got = renderer.render(settings);
+        int differ = 0;
+        for (std::size_t k = 0; k < got.rgb.size(); ++k) differ += got.rgb[k] != want.rgb[k];
+        // The kernels' own sine and cube root and the AVX-512 drops differ from the exact forms
+        // by ulps: only a sample on an ink boundary could change, moving a channel by a level
+        // or so through the average.
+        EXPECT_LE(differ, 6) << name;
+    }
+    setCpuKernelForTesting("");
+}
 
 } // namespace
 } // namespace marbler

@@ -26,6 +26,7 @@
 #include <QDropEvent>
 #include <QFileInfo>
 #include <QImageReader>
+#include <QLabel>
 #include <QMimeData>
 #include <QPushButton>
 #include <QSettings>
@@ -976,9 +977,14 @@ TEST(RenderServiceTest, GlRendersSolidOnAnObject) {
         if (qEnvironmentVariableIntValue("MARBLER_REQUIRE_GL") == 1) FAIL() << "no GL: " << reason;
         GTEST_SKIP() << "no OpenGL context here: " << reason;
     }
-    RenderService service(RenderService::Backend::Auto);
+    // Asked for explicitly: on a software rasteriser the automatic choice is the CPU.
+    const QByteArray forced = qgetenv("MARBLER_RENDERER");
+    qunsetenv("MARBLER_RENDERER");
+    RenderService service(gl::BackendPreference::Gpu);
+    if (!forced.isEmpty()) qputenv("MARBLER_RENDERER", forced);
     QSignalSpy ready(&service, &RenderService::backendReady);
     ASSERT_TRUE(ready.wait(60000));
+    EXPECT_TRUE(service.usesGl());
     EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("OpenGL"))) << service.backendName().toStdString();
     QSignalSpy idle(&service, &RenderService::becameIdle);
     QImage finalImage;
@@ -998,6 +1004,157 @@ TEST(RenderServiceTest, GlRendersSolidOnAnObject) {
     for (int y = 0; y < finalImage.height() && !varied; ++y)
         for (int x = 0; x < finalImage.width() && !varied; ++x) varied = finalImage.pixel(x, y) != corner;
     EXPECT_TRUE(varied);
+}
+
+/// Unsets MARBLER_RENDERER for a test's lifetime (a developer's shell may set it).
+struct NoRendererOverride {
+    QByteArray saved = qgetenv("MARBLER_RENDERER");
+    NoRendererOverride() { qunsetenv("MARBLER_RENDERER"); }
+    ~NoRendererOverride() {
+        if (!saved.isEmpty()) qputenv("MARBLER_RENDERER", saved);
+    }
+};
+
+/// Mean channel difference and the share of channels off by more than 24 between two renders
+/// that differ by float rounding at ink edges only.
+void expectCloseImages(const QImage& actualImage, const QImage& expectedImage) {
+    const QImage actual = actualImage.convertToFormat(QImage::Format_RGB888);
+    const QImage expected = expectedImage.convertToFormat(QImage::Format_RGB888);
+    ASSERT_EQ(actual.size(), expected.size());
+    double sum = 0.0;
+    std::size_t far = 0, channels = 0;
+    for (int y = 0; y < actual.height(); ++y)
+        for (int x = 0; x < actual.width() * 3; ++x, ++channels) {
+            const int diff = std::abs(int(actual.constScanLine(y)[x]) - int(expected.constScanLine(y)[x]));
+            sum += diff;
+            if (diff > 24) ++far;
+        }
+    const double mean = sum / double(channels);
+    EXPECT_TRUE(mean < 0.6 && far * 200 < channels)
+        << "mean difference " << mean << ", " << far << " of " << channels << " channels off by more than 24";
+}
+
+TEST(RenderServiceTest, CpuChoiceShowsSolidsOnTheirObjectLikeGl) {
+    std::string reason;
+    if (!gl::GlRenderer::available(&reason)) {
+        if (qEnvironmentVariableIntValue("MARBLER_REQUIRE_GL") == 1) FAIL() << "no GL: " << reason;
+        GTEST_SKIP() << "no OpenGL context here: " << reason;
+    }
+    NoRendererOverride noOverride;
+    RenderService service(gl::BackendPreference::Cpu);
+    QSignalSpy ready(&service, &RenderService::backendReady);
+    ASSERT_TRUE(ready.wait(60000));
+    EXPECT_FALSE(service.usesGl());
+    EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("CPU"))) << service.backendName().toStdString();
+    QSignalSpy idle(&service, &RenderService::becameIdle);
+    QImage preview, finalImage;
+    QObject::connect(&service, &RenderService::rendered, [&](std::uint64_t, const QImage& image, bool final) {
+        (final ? finalImage : preview) = image;
+    });
+    RenderRequest request;
+    request.genome = randomGenome(5, 3);
+    request.size = QSize(96, 80);
+    request.mesh = QStringLiteral("torus");
+    request.yaw = 50.0;
+    service.request(1, request);
+    ASSERT_TRUE(idle.wait(120000));
+    ASSERT_FALSE(finalImage.isNull());
+    EXPECT_EQ(preview.size(), QSize(48, 40)) << "the preview is the object at half size, not a slice";
+    gl::GlRenderer renderer;
+    gl::MeshSettings mesh;
+    mesh.width = 96;
+    mesh.height = 80;
+    mesh.mesh = "torus";
+    mesh.yaw = 50.0;
+    mesh.pitch = request.pitch;
+    mesh.supersample = 3;
+    expectCloseImages(finalImage, toQImage(renderer.renderMesh(request.genome, mesh)));
+}
+
+TEST(RenderServiceTest, EnvironmentOverridesThePreference) {
+    NoRendererOverride noOverride;
+    qputenv("MARBLER_RENDERER", "cpu");
+    RenderService service(gl::BackendPreference::Gpu);
+    QSignalSpy ready(&service, &RenderService::backendReady);
+    ASSERT_TRUE(ready.wait(60000));
+    EXPECT_EQ(service.preference(), gl::BackendPreference::Gpu);
+    EXPECT_FALSE(service.usesGl());
+    EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("CPU"))) << service.backendName().toStdString();
+    EXPECT_TRUE(service.backendReason().contains(QStringLiteral("CPU renderer was asked for")))
+        << service.backendReason().toStdString();
+    // The window's menu shows what the environment forces, and cannot change it.
+    WorkbenchWindow window(&service);
+    EXPECT_TRUE(window.rendererAction(gl::BackendPreference::Cpu)->isChecked());
+    EXPECT_FALSE(window.rendererAction(gl::BackendPreference::Gpu)->isEnabled());
+    EXPECT_TRUE(window.rendererAction(gl::BackendPreference::Gpu)->toolTip().contains(QStringLiteral("MARBLER_RENDERER")));
+}
+
+TEST_F(WorkbenchTest, StatusBarNamesTheBackEnd) {
+    auto* label = mWindow->findChild<QLabel*>(QStringLiteral("backendLabel"));
+    ASSERT_NE(label, nullptr);
+    if (mService->backendName().isEmpty()) {
+        QSignalSpy ready(mService.get(), &RenderService::backendReady);
+        ASSERT_TRUE(ready.wait(60000));
+    }
+    EXPECT_TRUE(label->text().startsWith(QStringLiteral("Rendering on the CPU ("))) << label->text().toStdString();
+    EXPECT_TRUE(label->text().contains(QStringLiteral("threads"))) << label->text().toStdString();
+    EXPECT_TRUE(label->text().contains(mService->backendReason())) << label->text().toStdString();
+    EXPECT_FALSE(mService->backendReason().isEmpty());
+}
+
+TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
+    std::string reason;
+    if (!gl::GlRenderer::available(&reason)) {
+        if (qEnvironmentVariableIntValue("MARBLER_REQUIRE_GL") == 1) FAIL() << "no GL: " << reason;
+        GTEST_SKIP() << "no OpenGL context here: " << reason;
+    }
+    NoRendererOverride noOverride;
+    QTemporaryDir favourites;
+    qputenv("MARBLER_FAVOURITES_DIR", favourites.path().toLocal8Bit());
+    QSettings().setValue(QStringLiteral("view/renderer"), QStringLiteral("auto"));
+    RenderService service;
+    EXPECT_EQ(service.preference(), gl::BackendPreference::Auto);
+    WorkbenchWindow window(&service);
+    auto* label = window.findChild<QLabel*>(QStringLiteral("backendLabel"));
+    ASSERT_NE(label, nullptr);
+    QSignalSpy ready(&service, &RenderService::backendReady);
+    if (service.backendName().isEmpty()) {
+        ASSERT_TRUE(ready.wait(60000));
+    }
+    window.model()->setSessionSeed(3);
+    window.newRandomPopulation(2);
+    QSignalSpy finished(&window, &WorkbenchWindow::renderingFinished);
+    while (!window.renderingDone()) ASSERT_TRUE(finished.wait(120000));
+
+    // Automatic: the GPU only where OpenGL is hardware.
+    const gl::GlProbe probe = gl::probeGl();
+    EXPECT_EQ(service.usesGl(), !probe.software);
+    EXPECT_TRUE(window.rendererAction(gl::BackendPreference::Auto)->isChecked());
+    if (probe.software) {
+        EXPECT_TRUE(label->text().contains(QStringLiteral("on the CPU"))) << label->text().toStdString();
+        EXPECT_TRUE(label->text().contains(QStringLiteral("software rasteriser"))) << label->text().toStdString();
+    }
+
+    // GPU, then CPU: each is remembered, named on the status bar, and renders the grid again.
+    for (gl::BackendPreference preference : {gl::BackendPreference::Gpu, gl::BackendPreference::Cpu}) {
+        const QImage before = window.cell(0)->image();
+        ready.clear();
+        finished.clear();
+        window.rendererAction(preference)->trigger();
+        ASSERT_TRUE(ready.wait(60000));
+        EXPECT_EQ(QSettings().value(QStringLiteral("view/renderer")).toString().toStdString(),
+                  gl::backendPreferenceName(preference));
+        EXPECT_EQ(service.usesGl(), preference == gl::BackendPreference::Gpu);
+        const QString expected = preference == gl::BackendPreference::Gpu ? QStringLiteral("Rendering with OpenGL")
+                                                                          : QStringLiteral("Rendering on the CPU");
+        EXPECT_TRUE(label->text().startsWith(expected)) << label->text().toStdString();
+        while (!window.renderingDone() || finished.isEmpty()) ASSERT_TRUE(finished.wait(120000));
+        EXPECT_FALSE(window.cell(0)->image().isNull());
+        EXPECT_EQ(window.cell(0)->image().size(), before.size());
+    }
+    EXPECT_EQ(RenderService::storedPreference(), gl::BackendPreference::Cpu);
+    QSettings().remove(QStringLiteral("view/renderer"));
+    qunsetenv("MARBLER_FAVOURITES_DIR");
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include "OpPacking.h"
 #include "marbler/Error.h"
 #include "marbler/Tools.h"
+#include "marbler/gl/Backend.h"
 #include "marbler/gl/Meshes.h"
 #include "marbler/gl/ShaderSource.h"
 
@@ -179,17 +180,24 @@ void registerExitHandler() {
     std::call_once(once, [] { std::atexit(tearDownAtExit); });
 }
 
-struct Availability {
-    bool ok = false;
-    std::string reason;
-};
+std::string glString(QOpenGLFunctions_4_3_Core* gl, GLenum name) {
+    const auto* text = reinterpret_cast<const char*>(gl->glGetString(name));
+    return text ? text : "";
+}
 
-Availability probeOnce() {
-    Availability result;
+/// The one probe of the process: whether a context can be made, and the driver's strings.
+GlProbe probeOnce() {
+    GlProbe result;
     ContextParts parts = makeContext(result.reason);
-    result.ok = parts.gl != nullptr;
+    result.available = parts.gl != nullptr;
+    if (result.available) {
+        result.vendor = glString(parts.gl, GL_VENDOR);
+        result.renderer = glString(parts.gl, GL_RENDERER);
+        result.version = glString(parts.gl, GL_VERSION);
+        result.software = isSoftwareRenderer(result.renderer);
+    }
     if (parts.context) parts.context->doneCurrent();
-    if (result.ok) registerExitHandler();
+    if (result.available) registerExitHandler();
     return result;
 }
 
@@ -214,6 +222,51 @@ QImage loadSourceImage(const Genome& genome) {
     }
     return result.convertToFormat(QImage::Format_RGBA8888);
 }
+
+
+/// The checks of a mesh render's settings; returns the unit cutting-plane normal and offset.
+void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal, double& cutOffset) {
+    if (genome.dimension != 3) throw InputError("a mesh render needs a solid (3D) genome");
+    if (settings.width < 1 || settings.height < 1 || settings.width > MaxMeshSide || settings.height > MaxMeshSide)
+        throw InputError("mesh render size must be 1 to " + std::to_string(MaxMeshSide) + " pixels a side (got "
+                         + std::to_string(settings.width) + "x" + std::to_string(settings.height) + ")");
+    int n = settings.supersample;
+    if (n != 1 && n != 3 && n != 5) throw InputError("supersample must be 1, 3 or 5 (got " + std::to_string(n) + ")");
+    if (!(settings.fovY > 1.0 && settings.fovY < 170.0))
+        throw InputError("the field of view must lie between 1 and 170 degrees");
+    if (!std::isfinite(settings.yaw) || !std::isfinite(settings.pitch) || !(settings.distance > 0.0)
+        || !std::isfinite(settings.distance))
+        throw InputError("the camera needs finite yaw and pitch and a positive distance");
+    cutNormal = glm::dvec3(0.0);
+    cutOffset = 0.0;
+    if (settings.cut) {
+        double len = glm::length(settings.cut->normal);
+        if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(settings.cut->offset))
+            throw InputError("the cutting plane needs a finite, non-zero normal");
+        cutNormal = settings.cut->normal / len;
+        cutOffset = settings.cut->offset / len;
+    }
+}
+
+/// The G-buffer's GL objects, freed together.
+struct GBufferTargets {
+    QOpenGLFunctions_4_3_Core* gl = nullptr;
+    GLuint textures[2] = {0, 0}, depth = 0, fbo = 0;
+    explicit GBufferTargets(QOpenGLFunctions_4_3_Core* functions) : gl(functions) {}
+    GBufferTargets(const GBufferTargets&) = delete;
+    GBufferTargets& operator=(const GBufferTargets&) = delete;
+    ~GBufferTargets() {
+        gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (fbo) gl->glDeleteFramebuffers(1, &fbo);
+        if (depth) gl->glDeleteRenderbuffers(1, &depth);
+        gl->glDeleteTextures(2, textures);
+    }
+};
+
+/// Where the camera and the key light are, relative to the design box centre.
+struct MeshView {
+    glm::dvec3 reference{0.0}, eye{0.0}, light{0.0};
+};
 
 } // namespace
 
@@ -386,6 +439,11 @@ struct GlRenderer::Impl {
         gl = nullptr;
     }
 
+    /// Pass 1 of a mesh render: the object's design-space positions and normals at n x n
+    /// samples per output pixel, into `targets` (left bound as the framebuffer).
+    MeshView drawGBuffer(const Genome& genome, const MeshSettings& settings, const glm::dvec3& cutNormal,
+                         double cutOffset, GBufferTargets& targets);
+
     void release() {
         for (GlProgram& program : raster) program.release();
         if (opTexture) gl->glDeleteTextures(1, &opTexture);
@@ -400,12 +458,17 @@ struct GlRenderer::Impl {
     }
 };
 
-bool GlRenderer::available(std::string* reason) {
+GlProbe probeGl() {
     static std::once_flag once;
-    static Availability result;
+    static GlProbe result;
     std::call_once(once, [] { result = probeOnce(); });
-    if (reason) *reason = result.reason;
-    return result.ok;
+    return result;
+}
+
+bool GlRenderer::available(std::string* reason) {
+    const GlProbe probe = probeGl();
+    if (reason) *reason = probe.reason;
+    return probe.available;
 }
 
 GlRenderer::GlRenderer()
@@ -567,133 +630,44 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
     return image;
 }
 
-Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings) {
-    if (genome.dimension != 3) throw InputError("a mesh render needs a solid (3D) genome");
-    if (settings.width < 1 || settings.height < 1 || settings.width > MaxMeshSide || settings.height > MaxMeshSide)
-        throw InputError("mesh render size must be 1 to " + std::to_string(MaxMeshSide) + " pixels a side (got "
-                         + std::to_string(settings.width) + "x" + std::to_string(settings.height) + ")");
-    int n = settings.supersample;
-    if (n != 1 && n != 3 && n != 5) throw InputError("supersample must be 1, 3 or 5 (got " + std::to_string(n) + ")");
-    if (!(settings.fovY > 1.0 && settings.fovY < 170.0))
-        throw InputError("the field of view must lie between 1 and 170 degrees");
-    if (!std::isfinite(settings.yaw) || !std::isfinite(settings.pitch) || !(settings.distance > 0.0)
-        || !std::isfinite(settings.distance))
-        throw InputError("the camera needs finite yaw and pitch and a positive distance");
-    glm::dvec3 cutNormal(0.0);
-    double cutOffset = 0.0;
-    if (settings.cut) {
-        double len = glm::length(settings.cut->normal);
-        if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(settings.cut->offset))
-            throw InputError("the cutting plane needs a finite, non-zero normal");
-        cutNormal = settings.cut->normal / len;
-        cutOffset = settings.cut->offset / len;
-    }
 
+Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings) {
+    glm::dvec3 cutNormal;
+    double cutOffset = 0.0;
+    checkMeshSettings(genome, settings, cutNormal, cutOffset);
+    const int n = settings.supersample;
     Impl& d = *mImpl;
     d.makeCurrent();
     auto* gl = d.gl;
-    d.buildMesh();
-    d.loadMeshToGpu(settings.mesh);
-    int gw = settings.width * n, gh = settings.height * n;
-    if (gw > d.limit(GL_MAX_TEXTURE_SIZE) || gh > d.limit(GL_MAX_TEXTURE_SIZE))
-        throw InputError("mesh render too large for this GPU at " + std::to_string(n) + "x" + std::to_string(n)
-                         + " supersampling");
-
-    // Fit: the largest uniform scale that keeps the object inside the design box, centred in it.
-    // Its positions are then design coordinates, relative to the box centre (the reference).
-    glm::dvec3 box = genome.size;
-    glm::dvec3 reference = 0.5 * box;
-    double scale = std::numeric_limits<double>::max();
-    for (int k = 0; k < 3; ++k)
-        if (d.meshBoxSize[k] > 0.0) scale = std::min(scale, box[k] / d.meshBoxSize[k]);
-    if (scale == std::numeric_limits<double>::max()) scale = 1.0;
-    double radius = d.meshRadius * scale;
-
-    double yaw = glm::radians(settings.yaw), pitch = glm::radians(settings.pitch);
-    glm::dvec3 toEye(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
-    glm::dvec3 eye = toEye * (settings.distance * radius);
-    glm::dvec3 up = std::abs(toEye.y) > 0.999 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
-    double eyeDistance = settings.distance * radius;
-    double nearPlane = std::max(eyeDistance - 1.01 * radius, 1e-3 * radius);
-    double farPlane = eyeDistance + 1.01 * radius;
-    glm::dmat4 view = glm::lookAt(eye, glm::dvec3(0.0), up);
-    glm::dmat4 projection = glm::perspective(glm::radians(settings.fovY), double(settings.width) / settings.height, nearPlane, farPlane);
-    glm::mat4 viewProjection(projection * view);
-
-    // Pass 1: the G-buffer at n x n samples per output pixel.
-    GLuint textures[2] = {0, 0}, depth = 0, gbufferFbo = 0;
-    gl->glGenTextures(2, textures);
-    for (GLuint t : textures) {
-        gl->glBindTexture(GL_TEXTURE_2D, t);
-        gl->glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, gw, gh);
-        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    gl->glGenRenderbuffers(1, &depth);
-    gl->glBindRenderbuffer(GL_RENDERBUFFER, depth);
-    gl->glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, gw, gh);
-    gl->glGenFramebuffers(1, &gbufferFbo);
-    gl->glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo);
-    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, textures[0], 0);
-    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, textures[1], 0);
-    gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    GBufferTargets targets(gl);
     GLuint outputFbo = 0, outputTexture = 0;
     auto cleanup = [&] {
         gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        gl->glDeleteFramebuffers(1, &gbufferFbo);
-        gl->glDeleteRenderbuffers(1, &depth);
-        gl->glDeleteTextures(2, textures);
         if (outputFbo) gl->glDeleteFramebuffers(1, &outputFbo);
         if (outputTexture) gl->glDeleteTextures(1, &outputTexture);
     };
 
     Image image;
     try {
-        d.checkFramebuffer("G-buffer");
-        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        gl->glDrawBuffers(2, buffers);
-        const float zero[4] = {0, 0, 0, 0};
-        gl->glClearBufferfv(GL_COLOR, 0, zero);
-        gl->glClearBufferfv(GL_COLOR, 1, zero);
-        gl->glClear(GL_DEPTH_BUFFER_BIT);
-        gl->glViewport(0, 0, gw, gh);
-        gl->glEnable(GL_DEPTH_TEST);
-        gl->glDepthFunc(GL_LESS);
-        gl->glDisable(GL_CULL_FACE); // back faces carry the cut's cap and the inside of open meshes
-        gl->glUseProgram(d.gbuffer.id());
-        gl->glUniformMatrix4fv(d.gbuffer.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-        glm::vec3 eyeF(eye), normalF(cutNormal);
-        gl->glUniform3fv(d.gbuffer.uniform("uEye"), 1, &eyeF.x);
-        gl->glUniform1i(d.gbuffer.uniform("uCut"), settings.cut ? 1 : 0);
-        gl->glUniform3fv(d.gbuffer.uniform("uCutNormal"), 1, &normalF.x);
-        gl->glUniform1f(d.gbuffer.uniform("uCutOffset"), float(cutOffset - glm::dot(cutNormal, reference)));
-        gl->glUniform1f(d.gbuffer.uniform("uScale"), float(scale));
-        gl->glBindVertexArray(d.meshVao);
-        gl->glDrawElements(GL_TRIANGLES, d.meshIndexCount, GL_UNSIGNED_INT, nullptr);
-        gl->glDisable(GL_DEPTH_TEST);
-        d.checkErrors("the G-buffer pass");
+        const MeshView view = d.drawGBuffer(genome, settings, cutNormal, cutOffset, targets);
 
         // Pass 2: the colour rule per sample, lit and averaged.
         d.makeTarget(settings.width, settings.height, outputFbo, outputTexture);
         gl->glViewport(0, 0, settings.width, settings.height);
         gl->glUseProgram(d.mesh.id());
         std::vector<PreparedOp> ops = prepare(genome);
-        d.uploadGenome(d.mesh, ops, genome, reference);
+        d.uploadGenome(d.mesh, ops, genome, view.reference);
         gl->glActiveTexture(GL_TEXTURE0);
-        gl->glBindTexture(GL_TEXTURE_2D, textures[0]);
+        gl->glBindTexture(GL_TEXTURE_2D, targets.textures[0]);
         gl->glActiveTexture(GL_TEXTURE1);
-        gl->glBindTexture(GL_TEXTURE_2D, textures[1]);
+        gl->glBindTexture(GL_TEXTURE_2D, targets.textures[1]);
         gl->glActiveTexture(GL_TEXTURE0);
         gl->glUniform1i(d.mesh.uniform("uPositions"), 0);
         gl->glUniform1i(d.mesh.uniform("uNormals"), 1);
         gl->glUniform1i(d.mesh.uniform("uSource"), 2);
         gl->glUniform1i(d.mesh.uniform("uSupersample"), n);
+        glm::vec3 eyeF(view.eye), light(view.light);
         gl->glUniform3fv(d.mesh.uniform("uEye"), 1, &eyeF.x);
-        // A key light above and to the left of the camera.
-        glm::dvec3 forward = -toEye;
-        glm::dvec3 right = glm::normalize(glm::cross(forward, up));
-        glm::dvec3 cameraUp = glm::cross(right, forward);
-        glm::vec3 light(glm::normalize(toEye * 0.9 + cameraUp * 0.6 - right * 0.45));
         gl->glUniform3fv(d.mesh.uniform("uLight"), 1, &light.x);
         gl->glUniform1i(d.mesh.uniform("uLighting"), settings.lighting ? 1 : 0);
         glm::vec3 clear = linearColor(settings.clearColor);
@@ -724,6 +698,116 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
     }
     cleanup();
     return image;
+}
+
+MeshGBuffer GlRenderer::renderMeshGBuffer(const Genome& genome, const MeshSettings& settings) {
+    glm::dvec3 cutNormal;
+    double cutOffset = 0.0;
+    checkMeshSettings(genome, settings, cutNormal, cutOffset);
+    Impl& d = *mImpl;
+    d.makeCurrent();
+    auto* gl = d.gl;
+    GBufferTargets targets(gl);
+    const MeshView view = d.drawGBuffer(genome, settings, cutNormal, cutOffset, targets);
+
+    MeshGBuffer result;
+    result.width = settings.width;
+    result.height = settings.height;
+    result.supersample = settings.supersample;
+    result.reference = view.reference;
+    result.eye = view.eye;
+    result.light = view.light;
+    const int gw = settings.width * settings.supersample, gh = settings.height * settings.supersample;
+    const std::size_t floats = std::size_t(gw) * std::size_t(gh) * 4;
+    result.positions.resize(floats);
+    result.normals.resize(floats);
+    gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl->glReadPixels(0, 0, gw, gh, GL_RGBA, GL_FLOAT, result.positions.data());
+    gl->glReadBuffer(GL_COLOR_ATTACHMENT1);
+    gl->glReadPixels(0, 0, gw, gh, GL_RGBA, GL_FLOAT, result.normals.data());
+    gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
+    d.checkErrors("the G-buffer read-back");
+    return result;
+}
+
+MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings& settings, const glm::dvec3& cutNormal,
+                                       double cutOffset, GBufferTargets& targets) {
+    Impl& d = *this;
+    const int n = settings.supersample;
+    d.buildMesh();
+    d.loadMeshToGpu(settings.mesh);
+    int gw = settings.width * n, gh = settings.height * n;
+    if (gw > d.limit(GL_MAX_TEXTURE_SIZE) || gh > d.limit(GL_MAX_TEXTURE_SIZE))
+        throw InputError("mesh render too large for this GPU at " + std::to_string(n) + "x" + std::to_string(n)
+                         + " supersampling");
+
+    // Fit: the largest uniform scale that keeps the object inside the design box, centred in it.
+    // Its positions are then design coordinates, relative to the box centre (the reference).
+    MeshView view;
+    glm::dvec3 box = genome.size;
+    view.reference = 0.5 * box;
+    double scale = std::numeric_limits<double>::max();
+    for (int k = 0; k < 3; ++k)
+        if (d.meshBoxSize[k] > 0.0) scale = std::min(scale, box[k] / d.meshBoxSize[k]);
+    if (scale == std::numeric_limits<double>::max()) scale = 1.0;
+    double radius = d.meshRadius * scale;
+
+    double yaw = glm::radians(settings.yaw), pitch = glm::radians(settings.pitch);
+    glm::dvec3 toEye(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
+    view.eye = toEye * (settings.distance * radius);
+    glm::dvec3 up = std::abs(toEye.y) > 0.999 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
+    double eyeDistance = settings.distance * radius;
+    double nearPlane = std::max(eyeDistance - 1.01 * radius, 1e-3 * radius);
+    double farPlane = eyeDistance + 1.01 * radius;
+    glm::dmat4 lookAt = glm::lookAt(view.eye, glm::dvec3(0.0), up);
+    glm::dmat4 projection = glm::perspective(glm::radians(settings.fovY), double(settings.width) / settings.height, nearPlane, farPlane);
+    glm::mat4 viewProjection(projection * lookAt);
+    // A key light above and to the left of the camera.
+    glm::dvec3 forward = -toEye;
+    glm::dvec3 right = glm::normalize(glm::cross(forward, up));
+    glm::dvec3 cameraUp = glm::cross(right, forward);
+    view.light = glm::normalize(toEye * 0.9 + cameraUp * 0.6 - right * 0.45);
+
+    gl->glGenTextures(2, targets.textures);
+    for (GLuint t : targets.textures) {
+        gl->glBindTexture(GL_TEXTURE_2D, t);
+        gl->glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, gw, gh);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    gl->glGenRenderbuffers(1, &targets.depth);
+    gl->glBindRenderbuffer(GL_RENDERBUFFER, targets.depth);
+    gl->glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, gw, gh);
+    gl->glGenFramebuffers(1, &targets.fbo);
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo);
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, targets.textures[0], 0);
+    gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, targets.textures[1], 0);
+    gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, targets.depth);
+    d.checkFramebuffer("G-buffer");
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl->glDrawBuffers(2, buffers);
+    const float zero[4] = {0, 0, 0, 0};
+    gl->glClearBufferfv(GL_COLOR, 0, zero);
+    gl->glClearBufferfv(GL_COLOR, 1, zero);
+    gl->glClear(GL_DEPTH_BUFFER_BIT);
+    gl->glViewport(0, 0, gw, gh);
+    gl->glEnable(GL_DEPTH_TEST);
+    gl->glDepthFunc(GL_LESS);
+    gl->glDisable(GL_CULL_FACE); // back faces carry the cut's cap and the inside of open meshes
+    gl->glUseProgram(d.gbuffer.id());
+    gl->glUniformMatrix4fv(d.gbuffer.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glm::vec3 eyeF(view.eye), normalF(cutNormal);
+    gl->glUniform3fv(d.gbuffer.uniform("uEye"), 1, &eyeF.x);
+    gl->glUniform1i(d.gbuffer.uniform("uCut"), settings.cut ? 1 : 0);
+    gl->glUniform3fv(d.gbuffer.uniform("uCutNormal"), 1, &normalF.x);
+    gl->glUniform1f(d.gbuffer.uniform("uCutOffset"), float(cutOffset - glm::dot(cutNormal, view.reference)));
+    gl->glUniform1f(d.gbuffer.uniform("uScale"), float(scale));
+    gl->glBindVertexArray(d.meshVao);
+    gl->glDrawElements(GL_TRIANGLES, d.meshIndexCount, GL_UNSIGNED_INT, nullptr);
+    gl->glDisable(GL_DEPTH_TEST);
+    d.checkErrors("the G-buffer pass");
+    return view;
 }
 
 } // namespace marbler::gl

@@ -11,6 +11,8 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace marbler {
 
@@ -49,10 +51,33 @@ public:
     /// kernel; for tests and picking.
     int colorIndexAt(const glm::dvec3& p) const;
 
+    /// The palette indices seen at `count` design points (z is ignored in 2D), by the vector
+    /// kernel: colors[k] for (x[k], y[k], z[k]), -1 for the background or source. For callers
+    /// that find their own sample points (an object's surface, shaded by the GL back end on the
+    /// CPU). Safe to call from many threads at once.
+    void colorIndicesAt(const double* x, const double* y, const double* z, std::size_t count, int* colors) const;
+
 private:
     struct Impl;
     std::unique_ptr<Impl> mImpl;
 };
+
+/// The variant of the CPU renderer's vector kernel in use ("avx512", "avx2" or "baseline") and
+/// why: "best this CPU runs", "MARBLER_KERNEL=avx2", or why MARBLER_KERNEL was not followed.
+struct CpuKernelInfo {
+    std::string name;
+    std::string reason;
+};
+/// The kernel variant this process renders with. The environment variable MARBLER_KERNEL
+/// (auto, avx512, avx2, baseline; read on first use) picks one; a name that is unknown or
+/// that this CPU cannot run falls back to the best it runs, with the reason saying so.
+CpuKernelInfo cpuKernel();
+/// The kernel variants this CPU runs, best first.
+std::vector<std::string> cpuKernelsSupported();
+/// Makes every later render in this process use the variant `name` (for tests); "" goes back to
+/// what MARBLER_KERNEL picks, read again. Throws InputError for a name that is not a variant or
+/// that this CPU cannot run.
+void setCpuKernelForTesting(const std::string& name);
 
 /// Output options of a render to a file.
 struct ExportOptions {

@@ -3,6 +3,7 @@
 // the work done, independent of how much of the design happens to be ink.
 
 #include "Kernel.h"
+#include "SoaProbe.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Tools.h"
@@ -10,6 +11,8 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cstring>
 #include <memory>
 #include <thread>
@@ -67,6 +70,18 @@ const Case& slateSliceCase() {
     return c;
 }
 
+/// 50 stone drops then 50 combs: the operation mix of the SoA probe.
+const Case& dropCombCase() {
+    static const Case c = [] {
+        Case k;
+        k.genome = loadGenome(MARBLER_TEST_DATA "/bench/drop-comb-50x50.marble.json");
+        k.settings.width = k.settings.height = 512;
+        k.sampleOps = countSampleOps(k.genome, k.settings);
+        return k;
+    }();
+    return c;
+}
+
 void runRenderer(benchmark::State& state, const Case& c, int threads) {
     CpuRenderer renderer(c.genome);
     RenderSettings settings = c.settings;
@@ -84,6 +99,8 @@ int allThreads() { return std::max(1, static_cast<int>(std::thread::hardware_con
 
 void BM_Flame2D_OneThread(benchmark::State& state) { runRenderer(state, flameCase(), 1); }
 void BM_Flame2D_AllThreads(benchmark::State& state) { runRenderer(state, flameCase(), allThreads()); }
+void BM_DropComb2D_OneThread(benchmark::State& state) { runRenderer(state, dropCombCase(), 1); }
+void BM_DropComb2D_TwoThreads(benchmark::State& state) { runRenderer(state, dropCombCase(), 2); }
 void BM_SlateSlice3D_OneThread(benchmark::State& state) { runRenderer(state, slateSliceCase(), 1); }
 void BM_SlateSlice3D_AllThreads(benchmark::State& state) { runRenderer(state, slateSliceCase(), allThreads()); }
 
@@ -123,6 +140,165 @@ void kernelOnly(benchmark::State& state, const Case& c) {
 void BM_Flame2D_KernelOnly(benchmark::State& state) { kernelOnly(state, flameCase()); }
 void BM_SlateSlice3D_KernelOnly(benchmark::State& state) { kernelOnly(state, slateSliceCase()); }
 
+/// The samples of a render (pixel centres, no antialiasing) as arrays, in blocks of the SoA
+/// probe's size, shared out to `threads` workers block by block, as the renderer shares rows.
+struct SampleBlocks {
+    std::vector<double> x, y;
+    std::size_t blocks = 0;
+
+    explicit SampleBlocks(const Case& c) {
+        SampleFrame frame = sampleFrame(c.genome, c.settings);
+        for (int j = 0; j < c.settings.height; ++j)
+            for (int i = 0; i < c.settings.width; ++i) {
+                glm::dvec3 p = frame.at(i, j, 0.0, 0.0);
+                x.push_back(p.x);
+                y.push_back(p.y);
+            }
+        blocks = (x.size() + probe::BlockSize - 1) / probe::BlockSize;
+    }
+    std::size_t size() const { return x.size(); }
+    std::size_t begin(std::size_t block) const { return block * probe::BlockSize; }
+    std::size_t count(std::size_t block) const { return std::min(probe::BlockSize, size() - begin(block)); }
+
+    /// Calls work(block) for every block, on `threads` threads; returns the sum of its results.
+    template <typename Work>
+    std::uint64_t forEachBlock(int threads, const Work& work) const {
+        std::atomic<std::size_t> next{0};
+        std::atomic<std::uint64_t> total{0};
+        auto worker = [&] {
+            std::uint64_t sum = 0;
+            for (std::size_t b; (b = next.fetch_add(1)) < blocks;) sum += work(b);
+            total += sum;
+        };
+        std::vector<std::thread> pool;
+        for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+        worker();
+        for (std::thread& t : pool) t.join();
+        return total;
+    }
+};
+
+/// The SoA probe and the tile kernel on the same samples, blocks and threads. The probe
+/// (SoaProbe.h) runs every sample through every operation, so its sample-ops are samples x
+/// operations, all of which it computes; the kernel's are the operations each sample traverses
+/// before it finds its ink, as in every other figure here.
+struct ProbeAndKernel {
+    std::vector<PreparedOp> ops; ///< in reverse time order
+    SampleBlocks samples;
+    std::vector<double> x, y;
+    std::vector<int> probeColors, kernelColors;
+
+    explicit ProbeAndKernel(const Case& c)
+        : ops(prepare(c.genome)), samples(c), x(samples.size()), y(samples.size()), probeColors(samples.size()),
+          kernelColors(samples.size()) {
+        std::reverse(ops.begin(), ops.end());
+    }
+    bool probeHandles() const { return probe::handles(ops.data(), ops.size()); }
+    double probeSampleOps() const { return double(samples.size()) * double(ops.size()); }
+
+    void probePass(int threads) {
+        samples.forEachBlock(threads, [&](std::size_t b) {
+            const std::size_t at = samples.begin(b), n = samples.count(b);
+            std::memcpy(x.data() + at, samples.x.data() + at, n * sizeof(double));
+            std::memcpy(y.data() + at, samples.y.data() + at, n * sizeof(double));
+            probe::trace(ops.data(), ops.size(), x.data() + at, y.data() + at, probeColors.data() + at, n);
+            return std::uint64_t(0);
+        });
+        benchmark::DoNotOptimize(probeColors.data());
+    }
+
+    /// Returns the sample-operations traversed.
+    std::uint64_t kernelPass(int threads) {
+        std::uint64_t traversed = samples.forEachBlock(threads, [&](std::size_t b) {
+            thread_local std::unique_ptr<kernel::Tile> tile = std::make_unique<kernel::Tile>();
+            std::uint64_t sum = 0;
+            for (std::size_t at = samples.begin(b), end = at + samples.count(b); at < end; at += kernel::TileSize) {
+                const int n = static_cast<int>(std::min<std::size_t>(kernel::TileSize, end - at));
+                std::memcpy(tile->x, samples.x.data() + at, sizeof(double) * std::size_t(n));
+                std::memcpy(tile->y, samples.y.data() + at, sizeof(double) * std::size_t(n));
+                for (int k = 0; k < n; ++k) tile->id[k] = k;
+                sum += kernel::traceTile(ops.data(), ops.size(), 2, *tile, n, kernelColors.data() + at, nullptr,
+                                         nullptr);
+            }
+            return sum;
+        });
+        benchmark::DoNotOptimize(kernelColors.data());
+        return traversed;
+    }
+
+    /// Samples whose colour differs from the kernel's (0, or a hair-line few: the probe's drop
+    /// rounds as genome-format.md writes it, not as the reference does).
+    int colourMismatches() const {
+        int mismatches = 0;
+        for (std::size_t k = 0; k < samples.size(); ++k) mismatches += probeColors[k] != kernelColors[k];
+        return mismatches;
+    }
+};
+
+void soaProbe(benchmark::State& state, const Case& c, int threads) {
+    ProbeAndKernel work(c);
+    if (!work.probeHandles()) {
+        state.SkipWithError("the probe handles 2D drops and combs only");
+        return;
+    }
+    for (auto _ : state) work.probePass(threads);
+    work.kernelPass(1);
+    state.counters["sample_ops_per_s"] =
+        benchmark::Counter(work.probeSampleOps() * double(state.iterations()), benchmark::Counter::kIsRate);
+    state.counters["ops_per_sample"] = double(work.ops.size());
+    state.counters["colour_mismatches"] = work.colourMismatches();
+    state.counters["threads"] = threads;
+}
+
+void kernelOnBlocks(benchmark::State& state, const Case& c, int threads) {
+    ProbeAndKernel work(c);
+    std::uint64_t traversed = 0;
+    for (auto _ : state) traversed += work.kernelPass(threads);
+    state.counters["sample_ops_per_s"] = benchmark::Counter(double(traversed), benchmark::Counter::kIsRate);
+    state.counters["ops_per_sample"] =
+        double(traversed) / (double(work.samples.size()) * double(std::max<benchmark::IterationCount>(1, state.iterations())));
+    state.counters["threads"] = threads;
+    state.SetLabel(cpuKernel().name);
+}
+
+/// The probe and the kernel in turn within each iteration, each timed by the wall clock: on a
+/// machine busy with other work both see the same load, so `kernel_over_probe` (the ratio of
+/// their sample-op rates) holds up better than two separate benchmarks' figures.
+void kernelVsProbe(benchmark::State& state, const Case& c, int threads) {
+    ProbeAndKernel work(c);
+    if (!work.probeHandles()) {
+        state.SkipWithError("the probe handles 2D drops and combs only");
+        return;
+    }
+    using Clock = std::chrono::steady_clock;
+    double probeSeconds = 0, kernelSeconds = 0;
+    std::uint64_t traversed = 0;
+    for (auto _ : state) {
+        const Clock::time_point t0 = Clock::now();
+        work.probePass(threads);
+        const Clock::time_point t1 = Clock::now();
+        traversed += work.kernelPass(threads);
+        const Clock::time_point t2 = Clock::now();
+        probeSeconds += std::chrono::duration<double>(t1 - t0).count();
+        kernelSeconds += std::chrono::duration<double>(t2 - t1).count();
+    }
+    const double probeRate = work.probeSampleOps() * double(state.iterations()) / probeSeconds;
+    const double kernelRate = double(traversed) / kernelSeconds;
+    state.counters["probe_sample_ops_per_s"] = probeRate;
+    state.counters["kernel_sample_ops_per_s"] = kernelRate;
+    state.counters["kernel_over_probe"] = kernelRate / probeRate;
+    state.counters["colour_mismatches"] = work.colourMismatches();
+    state.counters["threads"] = threads;
+    state.SetLabel(cpuKernel().name);
+}
+
+void BM_DropComb2D_SoaProbe_OneThread(benchmark::State& state) { soaProbe(state, dropCombCase(), 1); }
+void BM_DropComb2D_SoaProbe_TwoThreads(benchmark::State& state) { soaProbe(state, dropCombCase(), 2); }
+void BM_DropComb2D_Kernel_OneThread(benchmark::State& state) { kernelOnBlocks(state, dropCombCase(), 1); }
+void BM_DropComb2D_Kernel_TwoThreads(benchmark::State& state) { kernelOnBlocks(state, dropCombCase(), 2); }
+void BM_DropComb2D_KernelVsProbe_OneThread(benchmark::State& state) { kernelVsProbe(state, dropCombCase(), 1); }
+void BM_DropComb2D_KernelVsProbe_TwoThreads(benchmark::State& state) { kernelVsProbe(state, dropCombCase(), 2); }
+
 /// The per-pixel scalar loop the tile kernel replaces: the reference traceColor per sample.
 void scalarBaseline(benchmark::State& state, const Case& c) {
     std::vector<PreparedOp> ops = prepare(c.genome);
@@ -145,6 +321,15 @@ BENCHMARK(BM_Flame2D_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Flame2D_AllThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Flame2D_KernelOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Flame2D_ScalarReference)->Unit(benchmark::kMillisecond)->UseRealTime();
+// The drop+comb mix: the SoA probe, the kernel alone on the same samples, the whole renderer.
+BENCHMARK(BM_DropComb2D_SoaProbe_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DropComb2D_Kernel_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DropComb2D_SoaProbe_TwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DropComb2D_Kernel_TwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DropComb2D_KernelVsProbe_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DropComb2D_KernelVsProbe_TwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DropComb2D_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_DropComb2D_TwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SlateSlice3D_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SlateSlice3D_AllThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SlateSlice3D_KernelOnly)->Unit(benchmark::kMillisecond);

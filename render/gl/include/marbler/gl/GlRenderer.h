@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace marbler::gl {
 
@@ -33,6 +34,22 @@ struct MeshSettings {
     int supersample = 3;             ///< 1, 3 or 5 (n x n)
     std::optional<CutPlane> cut;
     Color clearColor{0x2b, 0x2b, 0x2b};
+};
+
+/// The first pass of a mesh render, read back: per sample of the n x n supersampled raster
+/// (width * n by height * n, rows bottom to top as GL reads them), where the object is seen, for a caller that
+/// colours the samples itself (the CPU kernel, where the GL is a software rasteriser).
+struct MeshGBuffer {
+    int width = 0, height = 0; ///< the output raster
+    int supersample = 1;       ///< n
+    /// 4 floats a sample: the design point relative to `reference`, and w = 1 where the object
+    /// covers the sample (0: the clear colour).
+    std::vector<float> positions;
+    /// 4 floats a sample: the unit normal facing the way the GL shading pass takes it, w = 0.
+    std::vector<float> normals;
+    glm::dvec3 reference{0.0}; ///< the design box centre
+    glm::dvec3 eye{0.0};       ///< the camera, relative to `reference`
+    glm::dvec3 light{0.0};     ///< unit direction towards the key light
 };
 
 /// An offscreen GL renderer. Owns a GL context, current on the thread that created it; use it
@@ -65,6 +82,10 @@ public:
     /// Renders a solid genome on an object fitted into its design box. Throws InputError for a
     /// 2D genome or a mesh that cannot be loaded.
     Image renderMesh(const Genome& genome, const MeshSettings& settings);
+
+    /// Only the rasterising pass of renderMesh (same checks and throws), read back; see
+    /// shadeMeshOnCpu (HybridMesh.h) for the other pass.
+    MeshGBuffer renderMeshGBuffer(const Genome& genome, const MeshSettings& settings);
 
     /// The driver's renderer string (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").
     std::string rendererName() const;

@@ -1,0 +1,77 @@
+// marbler-window.so: the workbench window and the GL back end behind app::WindowModule.
+
+#include "WindowModule.h"
+
+#include "marbler/Error.h"
+#include "marbler/gl/Backend.h"
+#include "marbler/gl/GlRenderer.h"
+#include "ui/Workbench.h"
+
+#include <QSettings>
+#include <QString>
+#include <QtGlobal>
+
+#include <memory>
+
+namespace marbler::app {
+namespace {
+
+class Module final : public WindowModule {
+public:
+    int runWorkbench(int argc, char** argv) override { return ui::runWorkbench(argc, argv); }
+
+    Image render(const Genome& genome, const RenderSettings& settings) override {
+        checkRenderSettings(genome, settings);
+        return renderer().render(genome, settings);
+    }
+
+    Image renderMesh(const Genome& genome, const gl::MeshSettings& settings) override {
+        return renderer().renderMesh(genome, settings);
+    }
+
+    GlReport probeGl() override {
+        const gl::GlProbe probe = gl::probeGl();
+        GlReport report;
+        report.available = probe.available;
+        report.reason = probe.reason;
+        report.vendor = probe.vendor;
+        report.renderer = probe.renderer;
+        report.version = probe.version;
+        report.software = probe.software;
+        // The window's choice as it would make it now: the environment's override, else the
+        // window's remembered setting (the window's QSettings file, named here because doctor
+        // runs without the window's application object).
+        const QString stored = QSettings(QStringLiteral("Marbler"), QStringLiteral("Marbler"))
+                                   .value(QStringLiteral("view/renderer"), QStringLiteral("auto"))
+                                   .toString();
+        const gl::BackendPreference preference = gl::environmentBackendPreference().value_or(
+            gl::parseBackendPreference(stored.toStdString()).value_or(gl::BackendPreference::Auto));
+        const gl::BackendChoice choice = gl::chooseBackend(probe, preference);
+        report.backend = choice.useGl ? "GPU" : "CPU";
+        report.backendWhy = choice.why;
+        return report;
+    }
+
+    std::string qtVersion() const override { return qVersion(); }
+
+private:
+    /// One renderer for the process, made on first use (the GL back end tears it down at exit).
+    gl::GlRenderer& renderer() {
+        if (!mRenderer) {
+            std::string reason;
+            if (!gl::GlRenderer::available(&reason)) throw RuntimeFailure("no OpenGL 4.3 context: " + reason);
+            mRenderer = std::make_unique<gl::GlRenderer>();
+        }
+        return *mRenderer;
+    }
+
+    std::unique_ptr<gl::GlRenderer> mRenderer;
+};
+
+} // namespace
+} // namespace marbler::app
+
+extern "C" __attribute__((visibility("default"))) marbler::app::WindowModule* marbler_window_module() {
+    static auto* module = new marbler::app::Module; // never destroyed: GL tears itself down at exit
+    return module;
+}

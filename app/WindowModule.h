@@ -1,0 +1,47 @@
+#pragma once
+/// The boundary between the `marbler` executable and marbler-window.so, the module that holds
+/// everything that needs Qt: the workbench window and the OpenGL back end (with assimp for mesh
+/// files). The executable links neither, so the headless verbs start without loading them; the
+/// window, `render --gpu`, `render --mesh` and `doctor` load the module on first use
+/// (marbler/Modules.h).
+
+#include "marbler/Genome.h"
+#include "marbler/Sampling.h"
+#include "marbler/gl/GlRenderer.h" // MeshSettings only: a plain struct, no GL code
+
+#include <string>
+
+namespace marbler::app {
+
+/// What the machine's OpenGL gives Marbler, and the back end the window will render with.
+struct GlReport {
+    bool available = false;
+    std::string reason; ///< why no context could be made (when !available)
+    std::string vendor, renderer, version;
+    bool software = false;   ///< a software rasteriser (llvmpipe, softpipe, swrast, ...)
+    std::string backend;     ///< "GPU" or "CPU": what the window renders with
+    std::string backendWhy;  ///< why, in words
+};
+
+class WindowModule {
+public:
+    virtual ~WindowModule() = default;
+    /// Runs the workbench window (argv as main() got it); returns the exit status.
+    virtual int runWorkbench(int argc, char** argv) = 0;
+    /// The GL back end's renders (`render --gpu`, `render --mesh`). Throw InputError for bad
+    /// settings, RuntimeFailure when there is no GL 4.3 context or the driver fails.
+    virtual Image render(const Genome& genome, const RenderSettings& settings) = 0;
+    virtual Image renderMesh(const Genome& genome, const gl::MeshSettings& settings) = 0;
+    /// Probes OpenGL (makes an offscreen context when it can) for `marbler doctor`.
+    virtual GlReport probeGl() = 0;
+    /// The Qt version the module runs with.
+    virtual std::string qtVersion() const = 0;
+};
+
+/// The module, loaded on first call. Throws RuntimeFailure when it cannot be loaded.
+WindowModule& windowModule();
+
+inline constexpr const char* WindowModuleFile = "marbler-window.so";
+inline constexpr const char* WindowModuleEntry = "marbler_window_module";
+
+} // namespace marbler::app

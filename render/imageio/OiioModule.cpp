@@ -1,0 +1,162 @@
+// marbler-imageio.so: the one file of Marbler that sees OpenImageIO. Loaded on first use by
+// render/src/ImageIO.cpp for the formats render/ does not write itself (EXR, JPEG, ...) and to
+// decode source images.
+
+#include "ImageSink.h"
+#include "marbler/Error.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+
+namespace marbler::detail {
+namespace {
+
+/// Rasters larger than this (64 megapixels, 8192 x 8192) are refused as sources, so a hostile
+/// file that claims a huge size cannot make the loader allocate gigabytes of float pixels.
+constexpr std::int64_t MaxSourcePixels = std::int64_t(1) << 26;
+/// Channels decoded at most (RGBA); extra channels are not read.
+constexpr int MaxSourceChannels = 4;
+
+bool isLinearColorSpace(const OIIO::ImageSpec& spec) {
+    std::string space = spec.get_string_attribute("oiio:ColorSpace");
+    std::transform(space.begin(), space.end(), space.begin(), [](unsigned char c) { return std::tolower(c); });
+    return space == "linear" || space == "scene_linear" || space == "lin_srgb";
+}
+
+LinearRaster readRaster(OIIO::ImageInput& in, const std::string& name) {
+    const OIIO::ImageSpec& spec = in.spec();
+    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 ||
+        std::int64_t(spec.width) * spec.height > MaxSourcePixels)
+        throw InputError("source image " + name + ": unsupported size " + std::to_string(spec.width) + "x" +
+                         std::to_string(spec.height));
+    const int channels = std::min(spec.nchannels, MaxSourceChannels);
+    std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
+    if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
+        throw InputError("source image " + name + ": " + in.geterror());
+    LinearRaster raster;
+    raster.width = spec.width;
+    raster.height = spec.height;
+    raster.rgb.resize(std::size_t(spec.width) * std::size_t(spec.height) * 3);
+    const bool linear = isLinearColorSpace(spec);
+    const std::size_t count = std::size_t(spec.width) * std::size_t(spec.height);
+    for (std::size_t p = 0; p < count; ++p)
+        for (int c = 0; c < 3; ++c) {
+            // Grey and grey+alpha images repeat their one channel; alpha is ignored.
+            int from = channels >= 3 ? c : 0;
+            float v = pixels[p * std::size_t(channels) + std::size_t(from)];
+            raster.rgb[p * 3 + std::size_t(c)] =
+                linear ? v : static_cast<float>(srgbToLinear(std::clamp(double(v), 0.0, 1.0)));
+        }
+    return raster;
+}
+
+/// An OpenImageIO writer. OpenImageIO 2.4 writes a JPEG's density with the unit byte 0 (aspect
+/// ratio only) even when asked for inches; finish() sets the JFIF unit to 1 (dots per inch) so
+/// the dpi means something.
+class OiioSink final : public ImageSink {
+public:
+    explicit OiioSink(const SinkTarget& target) : mTarget(target) {
+        mOut = OIIO::ImageOutput::create(target.displayName);
+        if (!mOut) {
+            OIIO::geterror(); // clear the library's message; ours says it better
+            throw InputError("'" + target.displayName + "': unknown image format '" + target.extension +
+                             "' (use .png, .tif, .exr or .jpg)");
+        }
+        const std::string& ext = target.extension;
+        mFloat = ext == ".exr" || ext == ".hdr";
+        mJpegDpi = target.options.dpi && (ext == ".jpg" || ext == ".jpeg");
+        OIIO::ImageSpec spec(target.width, target.height, 3, mFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
+        spec.attribute("oiio:ColorSpace", mFloat ? "Linear" : "sRGB");
+        spec.attribute("Software", "Marbler");
+        if (ext == ".jpg" || ext == ".jpeg") spec.attribute("Compression", "jpeg:95");
+        if (target.options.dpi) {
+            spec.attribute("XResolution", static_cast<float>(*target.options.dpi));
+            spec.attribute("YResolution", static_cast<float>(*target.options.dpi));
+            spec.attribute("ResolutionUnit", "inch");
+        }
+        if (!mOut->open(target.file, spec)) fail(mOut->geterror());
+        mOpen = true;
+    }
+    ~OiioSink() override {
+        if (mOpen) mOut->close();
+    }
+
+    bool linearFloat() const override { return mFloat; }
+
+    void writeRows(int y0, int y1, const void* rows) override {
+        if (!mOut->write_scanlines(y0, y1, 0, mFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, rows))
+            fail(mOut->geterror());
+    }
+
+    void finish() override {
+        mOpen = false;
+        if (!mOut->close()) fail(mOut->geterror());
+        if (mJpegDpi) markJfifDensityInInches();
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& reason) {
+        throw RuntimeFailure("cannot write '" + mTarget.displayName + "': " + reason);
+    }
+
+    void markJfifDensityInInches() {
+        std::FILE* f = std::fopen(mTarget.file.c_str(), "r+b");
+        if (!f) return;
+        unsigned char head[20] = {};
+        std::size_t got = std::fread(head, 1, sizeof head, f);
+        // SOI, APP0 marker, 2 length bytes, "JFIF\0", 2 version bytes, then the unit byte.
+        if (got == sizeof head && head[0] == 0xff && head[1] == 0xd8 && head[2] == 0xff && head[3] == 0xe0 &&
+            std::memcmp(head + 6, "JFIF", 5) == 0 && head[13] == 0) {
+            const unsigned char inches = 1;
+            std::fseek(f, 13, SEEK_SET);
+            std::fwrite(&inches, 1, 1, f);
+        }
+        std::fclose(f);
+    }
+
+    SinkTarget mTarget;
+    std::unique_ptr<OIIO::ImageOutput> mOut;
+    bool mFloat = false;
+    bool mJpegDpi = false;
+    bool mOpen = false;
+};
+
+class OiioModule final : public ImageIoModule {
+public:
+    std::unique_ptr<ImageSink> openSink(const SinkTarget& target) override {
+        return std::make_unique<OiioSink>(target);
+    }
+
+    LinearRaster readFile(const std::string& file, const std::string& name) override {
+        auto in = OIIO::ImageInput::open(file);
+        if (!in) throw InputError("source image " + name + ": cannot load: " + OIIO::geterror());
+        LinearRaster raster = readRaster(*in, name);
+        in->close();
+        return raster;
+    }
+
+    LinearRaster readMemory(const unsigned char* data, std::size_t size, const std::string& extension,
+                            const std::string& name) override {
+        OIIO::Filesystem::IOMemReader reader(const_cast<unsigned char*>(data), size);
+        auto in = OIIO::ImageInput::open("source." + extension, nullptr, &reader);
+        if (!in) throw InputError("source image " + name + ": cannot decode: " + OIIO::geterror());
+        LinearRaster raster = readRaster(*in, name);
+        in->close();
+        return raster;
+    }
+
+    std::string version() const override { return OIIO_VERSION_STRING; }
+};
+
+} // namespace
+} // namespace marbler::detail
+
+extern "C" __attribute__((visibility("default"))) marbler::detail::ImageIoModule* marbler_imageio_module() {
+    static marbler::detail::OiioModule module;
+    return &module;
+}

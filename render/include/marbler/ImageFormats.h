@@ -1,0 +1,16 @@
+#pragma once
+/// Where Marbler's image formats come from, for `marbler doctor`.
+
+#include <string>
+
+namespace marbler {
+
+/// The formats written without OpenImageIO, with their libraries' versions, e.g.
+/// "PNG (libpng 1.6.39), TIFF (libtiff 4.5.0), PPM".
+std::string builtinImageFormats();
+
+/// OpenImageIO's version, loading its module (marbler-imageio.so) if need be. Throws
+/// RuntimeFailure when the module cannot be loaded.
+std::string openImageIoVersion();
+
+} // namespace marbler
