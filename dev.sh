@@ -48,10 +48,12 @@ build() {
 
 # Every test under a virtual display, so the GL and window tests get Mesa's llvmpipe OpenGL
 # and must run (MARBLER_REQUIRE_GL turns a missing GL context into a failure, not a skip).
+# -noreset: by default Xvfb resets whenever its last client disconnects, and a test that
+# connects during the reset fails with "could not connect to display" (seen under load).
 run_ctest() {
     local dir=$1
     shift
-    MARBLER_REQUIRE_GL=1 xvfb-run -a -s "-screen 0 1280x1024x24" \
+    MARBLER_REQUIRE_GL=1 xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
         ctest --test-dir "$dir" --output-on-failure -j "$JOBS" "$@"
 }
 

@@ -30,14 +30,8 @@ public:
     }
 
     GlReport probeGl() override {
-        const gl::GlProbe probe = gl::probeGl();
         GlReport report;
-        report.available = probe.available;
-        report.reason = probe.reason;
-        report.vendor = probe.vendor;
-        report.renderer = probe.renderer;
-        report.version = probe.version;
-        report.software = probe.software;
+        report.probe = gl::probeGl();
         // The window's choice as it would make it now: the environment's override, else the
         // window's remembered setting (the window's QSettings file, named here because doctor
         // runs without the window's application object).
@@ -46,7 +40,7 @@ public:
                                    .toString();
         const gl::BackendPreference preference = gl::environmentBackendPreference().value_or(
             gl::parseBackendPreference(stored.toStdString()).value_or(gl::BackendPreference::Auto));
-        const gl::BackendChoice choice = gl::chooseBackend(probe, preference);
+        const gl::BackendChoice choice = gl::chooseBackend(report.probe, preference);
         report.backend = choice.useGl ? "GPU" : "CPU";
         report.backendWhy = choice.why;
         return report;

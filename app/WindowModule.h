@@ -7,6 +7,7 @@
 
 #include "marbler/Genome.h"
 #include "marbler/Sampling.h"
+#include "marbler/gl/Backend.h"    // GlProbe only: a plain struct
 #include "marbler/gl/GlRenderer.h" // MeshSettings only: a plain struct, no GL code
 
 #include <string>
@@ -15,12 +16,9 @@ namespace marbler::app {
 
 /// What the machine's OpenGL gives Marbler, and the back end the window will render with.
 struct GlReport {
-    bool available = false;
-    std::string reason; ///< why no context could be made (when !available)
-    std::string vendor, renderer, version;
-    bool software = false;   ///< a software rasteriser (llvmpipe, softpipe, swrast, ...)
-    std::string backend;     ///< "GPU" or "CPU": what the window renders with
-    std::string backendWhy;  ///< why, in words
+    gl::GlProbe probe;
+    std::string backend;    ///< "GPU" or "CPU": what the window renders with
+    std::string backendWhy; ///< why, in words
 };
 
 class WindowModule {

@@ -72,13 +72,14 @@ int doctor(std::span<const std::string> words) {
         std::cout << "window and GL back end: Qt " << window.qtVersion() << " ("
                   << moduleLocation(app::WindowModuleFile) << ")\n"
                   << std::flush;
-        const app::GlReport gl = window.probeGl();
+        const app::GlReport report = window.probeGl();
+        const gl::GlProbe& gl = report.probe;
         if (gl.available)
             std::cout << "OpenGL: " << gl.version << ", " << gl.renderer << " (" << gl.vendor << ")"
                       << (gl.software ? ", a software rasteriser" : ", hardware") << "\n";
         else
             std::cout << "OpenGL: none: " << gl.reason << "\n";
-        std::cout << "window renders with: " << gl.backend << ": " << gl.backendWhy << "\n";
+        std::cout << "window renders with: " << report.backend << ": " << report.backendWhy << "\n";
     } catch (const Error& e) {
         std::cout << "window and GL back end: unavailable: " << e.what() << "\n";
         std::cout << "window renders with: nothing (no window module)\n";

@@ -15,6 +15,8 @@
 #include <chrono>
 #include <cstring>
 #include <memory>
+#include <optional>
+#include <string>
 #include <thread>
 
 namespace {
@@ -47,38 +49,28 @@ std::uint64_t countSampleOps(const Genome& genome, const RenderSettings& setting
     return total;
 }
 
+Case makeCase(const char* file, int side, std::optional<Slice> slice = std::nullopt) {
+    Case k;
+    k.genome = loadGenome(std::string(MARBLER_TEST_DATA) + file);
+    k.settings.width = k.settings.height = side;
+    k.settings.slice = slice;
+    k.sampleOps = countSampleOps(k.genome, k.settings);
+    return k;
+}
+
 const Case& flameCase() {
-    static const Case c = [] {
-        Case k;
-        k.genome = loadGenome(MARBLER_TEST_DATA "/examples/flame-comb-vortex.marble.json");
-        k.settings.width = k.settings.height = 512;
-        k.sampleOps = countSampleOps(k.genome, k.settings);
-        return k;
-    }();
+    static const Case c = makeCase("/examples/flame-comb-vortex.marble.json", 512);
     return c;
 }
 
 const Case& slateSliceCase() {
-    static const Case c = [] {
-        Case k;
-        k.genome = loadGenome(MARBLER_TEST_DATA "/examples/slate-block.marble.json");
-        k.settings.width = k.settings.height = 256;
-        k.settings.slice = Slice{2, 500.0};
-        k.sampleOps = countSampleOps(k.genome, k.settings);
-        return k;
-    }();
+    static const Case c = makeCase("/examples/slate-block.marble.json", 256, Slice{2, 500.0});
     return c;
 }
 
 /// 50 stone drops then 50 combs: the operation mix of the SoA probe.
 const Case& dropCombCase() {
-    static const Case c = [] {
-        Case k;
-        k.genome = loadGenome(MARBLER_TEST_DATA "/bench/drop-comb-50x50.marble.json");
-        k.settings.width = k.settings.height = 512;
-        k.sampleOps = countSampleOps(k.genome, k.settings);
-        return k;
-    }();
+    static const Case c = makeCase("/bench/drop-comb-50x50.marble.json", 512);
     return c;
 }
 
