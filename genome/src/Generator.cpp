@@ -316,7 +316,7 @@ struct ColorWord {
     const char* word;
     Color color;
 };
-constexpr std::array<ColorWord, 32> ColorWords{{
+constexpr std::array<ColorWord, 36> ColorWords{{
     {"Carmine", {150, 0, 24}},     {"Crimson", {196, 30, 58}},    {"Cinnabar", {227, 66, 52}},
     {"Coral", {240, 128, 110}},    {"Rose", {215, 120, 150}},     {"Madder", {165, 40, 70}},
     {"Russet", {128, 70, 27}},     {"Umber", {99, 81, 71}},       {"Sepia", {112, 66, 20}},
@@ -327,7 +327,8 @@ constexpr std::array<ColorWord, 32> ColorWords{{
     {"Azure", {40, 130, 220}},     {"Cobalt", {0, 71, 171}},      {"Lapis", {38, 97, 156}},
     {"Indigo", {55, 45, 125}},     {"Violet", {130, 80, 180}},    {"Plum", {120, 50, 100}},
     {"Lilac", {190, 160, 210}},    {"Slate", {112, 128, 144}},    {"Charcoal", {54, 62, 70}},
-    {"Pearl", {212, 212, 205}},    {"Ebony", {30, 28, 26}},
+    {"Pearl", {212, 212, 205}},    {"Ebony", {30, 28, 26}},       {"Emerald", {50, 190, 70}},
+    {"Chartreuse", {150, 215, 40}}, {"Prussian", {0, 49, 83}},    {"Spruce", {35, 88, 82}},
 }};
 
 /// A perceptual distance good enough to name colours ("redmean": RGB weighted by how red the
