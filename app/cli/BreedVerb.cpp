@@ -29,9 +29,13 @@ operators:
   recombine  two or more parents: crossover (one-point or uniform) of their strokes,
              on the initial state of each parent in turn
   swap       two parents: the initial state (with palette and background) of one with
-             the strokes of the other, both ways, alternately
+             the strokes of the other, both ways (children 1 and 2); further children
+             are gentle variations of these two, alternately
   reinit     one parent: a new initial drop pattern, the same strokes
 
+No two children are equal, and none equals a parent (meta aside): a child that would
+repeat one is drawn again, or becomes a gentle variation of itself, which its
+meta.lineage.variation records (the id it varies and the strength).
 Parts locked in a parent's meta.locks (palette, initial, operations) are never changed.
 Each child records meta.lineage (parents' ids, operator, seed, generation) and meta.id.
 

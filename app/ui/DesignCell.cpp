@@ -11,6 +11,8 @@
 #include <QPainterPath>
 #include <QUrl>
 
+#include <algorithm>
+
 namespace marbler::ui {
 
 DesignCell::DesignCell(int index, QWidget* parent) : QWidget(parent), mIndex(index) {
@@ -48,6 +50,43 @@ void DesignCell::setCaption(const QString& caption) {
     update();
 }
 
+void DesignCell::setLocked(bool locked) {
+    if (mLocked == locked) return;
+    mLocked = locked;
+    update();
+}
+
+namespace {
+constexpr int CaptionHeight = 20;
+}
+
+QRect DesignCell::lockMarkerRect() const {
+    if (!mLocked || !mHasDesign) return {};
+    const QRect inner = rect().adjusted(6, 6, -6, -6);
+    return {inner.right() - 6 - 14, inner.bottom() - CaptionHeight + 3, 14, 14};
+}
+
+/// A padlock: a body with a keyhole under a shackle, in the caption's colour.
+static void drawPadlock(QPainter& p, const QRectF& box, const QColor& color) {
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing);
+    const qreal w = box.width(), h = box.height();
+    const QRectF body(box.left(), box.top() + 0.45 * h, w, 0.55 * h);
+    QPen pen(color, std::max<qreal>(1.5, w / 7.0));
+    p.setPen(pen);
+    p.setBrush(Qt::NoBrush);
+    const QRectF shackle(box.left() + 0.22 * w, box.top(), 0.56 * w, 0.9 * h);
+    p.drawArc(shackle, 0, 180 * 16);
+    p.drawLine(QPointF(shackle.left(), shackle.center().y()), QPointF(shackle.left(), body.top()));
+    p.drawLine(QPointF(shackle.right(), shackle.center().y()), QPointF(shackle.right(), body.top()));
+    p.setPen(Qt::NoPen);
+    p.setBrush(color);
+    p.drawRoundedRect(body, 0.12 * w, 0.12 * w);
+    p.setBrush(QColor(0, 0, 0, 160));
+    p.drawEllipse(QPointF(body.center().x(), body.center().y() - 0.05 * h), 0.09 * w, 0.09 * w);
+    p.restore();
+}
+
 void DesignCell::setError(const QString& message) {
     mError = message;
     update();
@@ -81,10 +120,14 @@ void DesignCell::paintEvent(QPaintEvent*) {
         QFont f = font();
         f.setPointSizeF(f.pointSizeF() * 0.85);
         p.setFont(f);
-        const QRect band(inner.left(), inner.bottom() - 20, inner.width(), 20);
+        const QRect band(inner.left(), inner.bottom() - CaptionHeight, inner.width(), CaptionHeight);
         p.fillRect(band, QColor(0, 0, 0, 110));
         p.setPen(Qt::white);
-        p.drawText(band.adjusted(6, 0, -6, 0), Qt::AlignVCenter | Qt::AlignLeft, mCaption);
+        const QRect lock = lockMarkerRect();
+        const QRect text = band.adjusted(6, 0, lock.isEmpty() ? -6 : -(lock.width() + 12), 0);
+        p.drawText(text, Qt::AlignVCenter | Qt::AlignLeft,
+                   p.fontMetrics().elidedText(mCaption, Qt::ElideRight, text.width()));
+        if (!lock.isEmpty()) drawPadlock(p, lock, Qt::white);
     }
 
     if (mSelected) {

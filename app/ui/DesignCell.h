@@ -4,6 +4,7 @@
 
 #include <QImage>
 #include <QPoint>
+#include <QRect>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -29,6 +30,13 @@ public:
     void setOrbitEnabled(bool enabled) { mOrbitEnabled = enabled; }
     /// A short caption drawn under the image (e.g. the operator that made the design).
     void setCaption(const QString& caption);
+    const QString& caption() const { return mCaption; }
+    /// Whether the design has a lock: a padlock drawn at the caption's end (drawn, not a
+    /// character, so it shows without an emoji font).
+    void setLocked(bool locked);
+    bool isLocked() const { return mLocked; }
+    /// Where the padlock is drawn (empty when the cell shows none).
+    QRect lockMarkerRect() const;
     /// A line drawn when rendering failed.
     void setError(const QString& message);
 
@@ -70,6 +78,7 @@ private:
     QString mError;
     bool mHasDesign = false;
     bool mSelected = false;
+    bool mLocked = false;
     bool mOrbitEnabled = false;
     bool mDragging = false;
     bool mSwallowRelease = false; ///< the release that ends a double-click is not a click

@@ -26,6 +26,7 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <memory>
@@ -40,74 +41,142 @@ std::uint64_t nextDialogKey() {
     return next++;
 }
 
-/// The size and antialiasing of an exported image, in pixels or as a print size at a dpi.
-class ExportSettingsDialog : public QDialog {
-public:
-    ExportSettingsDialog(const Genome& genome, QWidget* parent) : QDialog(parent), mAspect(genome.size.y / genome.size.x) {
-        setWindowTitle(tr("Export image"));
-        auto* form = new QFormLayout;
-        mUnit = new QComboBox(this);
-        mUnit->addItem(tr("pixels"), 0.0);
-        mUnit->addItem(tr("cm"), 2.54);
-        mUnit->addItem(tr("mm"), 25.4);
-        mUnit->addItem(tr("inches"), 1.0);
-        mWidth = new QDoubleSpinBox(this);
-        mWidth->setRange(0.01, 65536);
-        mWidth->setDecimals(2);
-        mWidth->setValue(2048);
-        mDpi = new QSpinBox(this);
-        mDpi->setRange(10, 4800);
-        mDpi->setValue(300);
-        mDpi->setToolTip(tr("Dots per inch for a print size; written into the file"));
-        mAa = new QComboBox(this);
-        for (const std::string& name : aaPatternNames()) mAa->addItem(QString::fromStdString(name));
-        mAa->setCurrentText(QStringLiteral("rgss"));
-        mAa->setToolTip(tr("Antialiasing pattern: more samples, smoother edges, slower"));
-        mPixels = new QLabel(this);
-        form->addRow(tr("Width"), mWidth);
-        form->addRow(tr("Unit"), mUnit);
-        form->addRow(tr("Resolution (dpi)"), mDpi);
-        form->addRow(tr("Antialiasing"), mAa);
-        form->addRow(tr("Image"), mPixels);
-        if (genome.dimension == 3)
-            form->addRow(new QLabel(tr("A solid design exports its middle cross-section (z = depth / 2)."), this));
-        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-        connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
-        connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-        auto* layout = new QVBoxLayout(this);
-        layout->addLayout(form);
-        layout->addWidget(buttons);
-        const auto update = [this] {
-            mDpi->setEnabled(perInch() > 0.0);
-            const QSize s = pixels();
-            mPixels->setText(tr("%1 × %2 pixels").arg(s.width()).arg(s.height()));
-        };
-        connect(mUnit, &QComboBox::currentIndexChanged, this, update);
-        connect(mWidth, &QDoubleSpinBox::valueChanged, this, update);
-        connect(mDpi, &QSpinBox::valueChanged, this, update);
-        update();
-    }
-
-    double perInch() const { return mUnit->currentData().toDouble(); }
-    QSize pixels() const {
-        double w = mWidth->value();
-        if (perInch() > 0.0) w = w / perInch() * mDpi->value();
-        const int width = std::max(1, int(std::lround(w)));
-        return {width, std::max(1, int(std::lround(width * mAspect)))};
-    }
-    std::optional<double> dpi() const { return perInch() > 0.0 ? std::optional<double>(mDpi->value()) : std::nullopt; }
-    std::string aa() const { return mAa->currentText().toStdString(); }
-
-private:
-    double mAspect;
-    QComboBox* mUnit;
-    QDoubleSpinBox* mWidth;
-    QSpinBox* mDpi;
-    QComboBox* mAa;
-    QLabel* mPixels;
-};
-
 } // namespace
+
+QString exportSizeProblem(QSize pixels) {
+    const std::int64_t w = pixels.width(), h = pixels.height();
+    if (w < 1 || h < 1) return QObject::tr("The image would be %1 × %2 pixels: choose a size of at least 1 pixel.").arg(w).arg(h);
+    if (w > MaxImageSide || h > MaxImageSide || w * h > MaxImagePixels)
+        return QObject::tr("The image would be %L1 × %L2 pixels (%L3 megapixels); Marbler renders at most %L4 pixels "
+                           "a side and %L5 megapixels. Choose a smaller size or a lower resolution.")
+            .arg(w)
+            .arg(h)
+            .arg(double(w) * double(h) / 1e6, 0, 'f', 0)
+            .arg(MaxImageSide)
+            .arg(double(MaxImagePixels) / 1e6, 0, 'f', 0);
+    return {};
+}
+
+ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent)
+    : QDialog(parent), mAspect(genome.size.y / genome.size.x) {
+    setWindowTitle(tr("Export image"));
+    auto* form = new QFormLayout;
+    mWidth = new QDoubleSpinBox(this);
+    mWidth->setObjectName(QStringLiteral("exportWidth"));
+    // Wide enough for any unit at any dpi; the size check says what is too large.
+    mWidth->setDecimals(0);
+    mWidth->setRange(1, 1e7);
+    mWidth->setValue(mPixelWidth);
+    mWidth->setToolTip(tr("The image's width in the unit beside; the height follows the design's proportions"));
+    mUnit = new QComboBox(this);
+    mUnit->setObjectName(QStringLiteral("exportUnit"));
+    mUnit->addItem(tr("pixels"), 0.0);
+    mUnit->addItem(tr("cm"), 2.54);
+    mUnit->addItem(tr("mm"), 25.4);
+    mUnit->addItem(tr("inches"), 1.0);
+    mUnit->setToolTip(tr("Pixels, or a print size at the resolution below; changing it converts the width"));
+    mDpi = new QSpinBox(this);
+    mDpi->setObjectName(QStringLiteral("exportDpi"));
+    mDpi->setRange(10, 4800);
+    mDpi->setValue(300);
+    mDpi->setToolTip(tr("Dots per inch: turns a print size into pixels, and is written into the file"));
+    mAa = new QComboBox(this);
+    mAa->setObjectName(QStringLiteral("exportAa"));
+    for (const std::string& name : aaPatternNames()) mAa->addItem(QString::fromStdString(name));
+    mAa->setCurrentText(QStringLiteral("rgss"));
+    mAa->setToolTip(tr("Antialiasing pattern: more samples, smoother edges, slower"));
+    mPixels = new QLabel(this);
+    mPixels->setObjectName(QStringLiteral("exportPixels"));
+    mPixels->setWordWrap(true);
+    form->addRow(tr("&Width"), mWidth);
+    form->addRow(tr("&Unit"), mUnit);
+    form->addRow(tr("&Resolution (dpi)"), mDpi);
+    form->addRow(tr("&Antialiasing"), mAa);
+    form->addRow(tr("Image"), mPixels);
+    if (genome.dimension == 3)
+        form->addRow(new QLabel(tr("A solid design exports its middle cross-section (z = depth / 2)."), this));
+    mButtons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(mButtons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(mButtons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(mButtons);
+    // Every field in reading order, then the buttons.
+    setTabOrder(mWidth, mUnit);
+    setTabOrder(mUnit, mDpi);
+    setTabOrder(mDpi, mAa);
+    setTabOrder(mAa, mButtons->button(QDialogButtonBox::Ok));
+    setTabOrder(mButtons->button(QDialogButtonBox::Ok), mButtons->button(QDialogButtonBox::Cancel));
+
+    connect(mUnit, &QComboBox::currentIndexChanged, this, [this] { showWidth(); });
+    connect(mWidth, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+        if (mShowing) return;
+        // What the user typed, in pixels; the unit and dpi only change how it is shown.
+        mPixelWidth = perInch() > 0.0 ? value / perInch() * mDpi->value() : value;
+        updateSummary();
+    });
+    connect(mDpi, &QSpinBox::valueChanged, this, [this] {
+        // A print size keeps its size at another resolution (so the pixels change); a pixel
+        // size keeps its pixels.
+        if (perInch() > 0.0) mPixelWidth = mWidth->value() / perInch() * mDpi->value();
+        updateSummary();
+    });
+    updateSummary();
+}
+
+double ExportSettingsDialog::perInch() const { return mUnit->currentData().toDouble(); }
+
+void ExportSettingsDialog::showWidth() {
+    mShowing = true;
+    mWidth->setDecimals(perInch() > 0.0 ? 3 : 0);
+    mWidth->setMinimum(perInch() > 0.0 ? 0.001 : 1.0);
+    mWidth->setValue(perInch() > 0.0 ? mPixelWidth / mDpi->value() * perInch() : mPixelWidth);
+    mShowing = false;
+    updateSummary();
+}
+
+void ExportSettingsDialog::updateSummary() {
+    const QSize s = pixels();
+    const QString problem = exportSizeProblem(s);
+    QString text = tr("%L1 × %L2 pixels").arg(s.width()).arg(s.height());
+    if (perInch() <= 0.0)
+        text += tr(" (%1 × %2 in at %3 dpi)")
+                    .arg(s.width() / double(mDpi->value()), 0, 'f', 2)
+                    .arg(s.height() / double(mDpi->value()), 0, 'f', 2)
+                    .arg(mDpi->value());
+    mPixels->setText(problem.isEmpty() ? text : problem);
+    mPixels->setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("color: #c03030"));
+    mButtons->button(QDialogButtonBox::Ok)->setEnabled(problem.isEmpty());
+}
+
+void ExportSettingsDialog::setUnit(const QString& unit) {
+    const int index = mUnit->findText(unit);
+    if (index >= 0) mUnit->setCurrentIndex(index);
+}
+
+QString ExportSettingsDialog::unit() const { return mUnit->currentText(); }
+double ExportSettingsDialog::widthValue() const { return mWidth->value(); }
+void ExportSettingsDialog::setWidthValue(double value) { mWidth->setValue(value); }
+void ExportSettingsDialog::setDpi(int dpi) { mDpi->setValue(dpi); }
+
+QSize ExportSettingsDialog::pixels() const {
+    const double w = std::round(mPixelWidth);
+    const double h = std::round(w * mAspect);
+    // Clamped only so the numbers fit an int; the size check refuses what is too large.
+    const auto fit = [](double v) { return int(std::clamp(v, 0.0, 2e9)); };
+    return {std::max(1, fit(w)), std::max(1, fit(h))};
+}
+
+std::optional<double> ExportSettingsDialog::dpi() const { return double(mDpi->value()); }
+std::string ExportSettingsDialog::aa() const { return mAa->currentText().toStdString(); }
+
+void ExportSettingsDialog::accept() {
+    if (const QString problem = exportSizeProblem(pixels()); !problem.isEmpty()) {
+        reportError(this, tr("The image is too large"), problem);
+        return;
+    }
+    QDialog::accept();
+}
 
 DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent)
     : QDialog(parent), mGenome(std::move(genome)), mRenderer(renderer), mMesh(mesh), mKey(nextDialogKey()) {
@@ -216,6 +285,10 @@ bool DesignDialog::saveTo(const QString& file) { return saveGenomeTo(this, mGeno
 
 bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi) {
     if (mExportCancel) return false;
+    if (const QString problem = exportSizeProblem(pixels); !problem.isEmpty()) {
+        reportError(this, tr("Cannot export the image"), problem);
+        return false;
+    }
     RenderSettings render;
     render.width = std::max(1, pixels.width());
     render.height = std::max(1, pixels.height());
@@ -244,6 +317,7 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     thread->setParent(this);
     mExportThread = thread;
     auto* dialog = new QProgressDialog(tr("Exporting %1…").arg(QFileInfo(file).fileName()), tr("Cancel"), 0, 1000, this);
+    dialog->setObjectName(QStringLiteral("exportProgress"));
     dialog->setWindowModality(Qt::WindowModal);
     dialog->setMinimumDuration(300);
     dialog->setAutoReset(false);
@@ -251,7 +325,12 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     auto* poll = new QTimer(dialog);
     connect(poll, &QTimer::timeout, dialog, [dialog, progress] { dialog->setValue(int(progress->load() * 999)); });
     connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
-    connect(thread, &QThread::finished, this, [this, thread, dialog, cancel, error, file] {
+    connect(thread, &QThread::finished, this, [this, thread, dialog, poll, cancel, error, file] {
+        // The progress box goes before any message: a stale one must never cover an error,
+        // and its poll must not show it again (setValue shows a box past its minimum duration).
+        poll->stop();
+        dialog->reset();
+        dialog->hide();
         dialog->deleteLater();
         thread->deleteLater();
         mExportCancel.reset();

@@ -11,8 +11,13 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
+class QComboBox;
+class QDialogButtonBox;
+class QDoubleSpinBox;
 class QLabel;
+class QSpinBox;
 class QThread;
 
 namespace marbler::ui {
@@ -31,7 +36,8 @@ public:
     bool saveTo(const QString& file);
     /// Starts rendering the design to an image file (format by extension) at a pixel size on a
     /// thread of its own, written atomically; exportFinished follows. Returns false when an
-    /// export is already running.
+    /// export is already running, or when the size is beyond the renderer's limits (reported,
+    /// see exportSizeProblem).
     bool exportTo(const QString& file, QSize pixels, const QString& aa = QStringLiteral("rgss"),
                   std::optional<double> dpi = std::nullopt);
     /// Stops a running export; no file is left behind.
@@ -64,6 +70,49 @@ private:
     bool mDragging = false;
     std::shared_ptr<std::atomic<bool>> mExportCancel; ///< set while an export runs
     QThread* mExportThread = nullptr;
+};
+
+/// Why an image of this many pixels cannot be exported (empty when it can): the renderer's
+/// limits MaxImageSide and MaxImagePixels (marbler/Sampling.h), said in pixels and megapixels.
+QString exportSizeProblem(QSize pixels);
+
+/// The size and antialiasing of an exported image, in pixels or as a print size (cm, mm,
+/// inches) at a dpi. Changing the unit converts the width at the dpi, so the image keeps its
+/// pixels; changing the dpi of a print size keeps the print size. Sizes beyond the renderer's
+/// limits are refused with the reason, before any work starts.
+class ExportSettingsDialog : public QDialog {
+    Q_OBJECT
+public:
+    explicit ExportSettingsDialog(const Genome& genome, QWidget* parent = nullptr);
+
+    /// The unit by its label: "pixels", "cm", "mm" or "inches".
+    void setUnit(const QString& unit);
+    QString unit() const;
+    /// The width in the current unit.
+    double widthValue() const;
+    void setWidthValue(double value);
+    void setDpi(int dpi);
+    /// The image size in pixels (the height keeps the design's proportions).
+    QSize pixels() const;
+    std::optional<double> dpi() const;
+    std::string aa() const;
+
+    void accept() override;
+
+private:
+    double perInch() const;
+    void showWidth();
+    void updateSummary();
+
+    double mAspect;
+    double mPixelWidth = 2048.0; ///< the chosen width in pixels, exact whatever unit shows it
+    bool mShowing = false;       ///< the width field is being set from mPixelWidth
+    QComboBox* mUnit = nullptr;
+    QDoubleSpinBox* mWidth = nullptr;
+    QSpinBox* mDpi = nullptr;
+    QComboBox* mAa = nullptr;
+    QLabel* mPixels = nullptr;
+    QDialogButtonBox* mButtons = nullptr;
 };
 
 /// Asks for a file name and saves the genome atomically; errors are reported. Returns success.

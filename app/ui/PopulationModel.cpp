@@ -10,6 +10,7 @@
 #include <QStandardPaths>
 
 #include <algorithm>
+#include <set>
 
 namespace marbler::ui {
 
@@ -92,8 +93,13 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     for (int i : selected) request.parents.push_back(*cell(i));
     request.count = CellCount - int(selected.size());
     if (request.count <= 0) throw InputError("every cell is a parent: deselect one to make room for offspring");
+    // The children carry the numbers the user sees: the generation they make (as the status
+    // bar counts it) and the design (cell) each goes to.
+    request.generation = displayNumber(mCurrent + 1);
+    for (int i = 0; i < CellCount; ++i)
+        if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
     std::vector<Genome> children = breed(request);
-    if (children.empty()) throw RuntimeFailure("the operator made no offspring");
+    if (children.size() != std::size_t(request.count)) throw RuntimeFailure("the operator made too few offspring");
 
     Generation next;
     next.selected = current().selected;
@@ -106,9 +112,7 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
         if (current().selected[std::size_t(i)]) {
             next.cells[std::size_t(i)] = current().cells[std::size_t(i)];
         } else {
-            // Fewer children than free cells (an operator that makes pairs) repeats them.
-            next.cells[std::size_t(i)] = children[child % children.size()];
-            ++child;
+            next.cells[std::size_t(i)] = children[child++];
         }
     }
     pushGeneration(std::move(next));
@@ -117,12 +121,24 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
 void PopulationModel::newRandomPopulation(int dimension) {
     Generation next;
     next.description = dimension == 3 ? tr("New random solid population") : tr("New random population");
-    const std::uint64_t base = mixSeed(mSessionSeed, std::uint64_t(mCurrent + 1) * 1000003ULL);
+    // Seeded by the number the new generation gets, which the placeholder does not take: the
+    // first population (generation 1) and the next one (2) draw from different seeds.
+    const int number = mEmptyStart ? 0 : mCurrent + 1;
+    const std::uint64_t base = mixSeed(mSessionSeed, std::uint64_t(number) * 1000003ULL);
+    // A new population is new: no design repeats one of the grid it replaces, or another.
+    std::set<std::string> taken;
+    for (const auto& c : current().cells)
+        if (c) taken.insert(genomeId(*c));
+    std::uint64_t draw = 0;
     for (int i = 0; i < CellCount; ++i) {
-        const std::uint64_t seed = mixSeed(base, std::uint64_t(i)) & 0xffffffffULL;
-        Genome g = randomGenome(seed, dimension);
-        if (!g.meta.contains("seed")) g.meta["seed"] = seed;
-        next.cells[std::size_t(i)] = std::move(g);
+        for (;;) {
+            const std::uint64_t seed = mixSeed(base, draw++) & 0xffffffffULL;
+            Genome g = randomGenome(seed, dimension);
+            if (!taken.insert(genomeId(g)).second && draw < 1000) continue;
+            if (!g.meta.contains("seed")) g.meta["seed"] = seed;
+            next.cells[std::size_t(i)] = std::move(g);
+            break;
+        }
     }
     pushGeneration(std::move(next));
 }
@@ -300,6 +316,13 @@ QString operatorLabel(GeneticOperator op) {
     return {};
 }
 
+QString operatorLabel(const QString& name) {
+    const std::optional<GeneticOperator> op = parseOperator(name.toStdString());
+    return op ? operatorLabel(*op) : name;
+}
+
+int displayNumber(int index) { return index + 1; }
+
 LineageInfo lineageOf(const Genome& genome) {
     LineageInfo info;
     const auto& meta = genome.meta;
@@ -317,6 +340,7 @@ LineageInfo lineageOf(const Genome& genome) {
                 if (p.is_string()) info.parents << QString::fromStdString(p.get<std::string>());
         if (lineage.contains("generation") && lineage["generation"].is_number_integer())
             info.generation = lineage["generation"].get<int>();
+        info.varied = lineage.contains("variation") && lineage["variation"].is_object();
     }
     return info;
 }

@@ -163,7 +163,15 @@ private:
 };
 
 /// A short label of an operator for the UI ("Alter", "Recombine", "Swap", "Change initial state").
+/// Files and the command line keep the operator names (alter, recombine, swap, reinit); the
+/// window says only these labels.
 QString operatorLabel(GeneticOperator op);
+/// The label of an operator given by its file name ("reinit" -> "Change initial state"); an
+/// unknown name is returned as it is.
+QString operatorLabel(const QString& name);
+/// The number the user sees for a generation at a history index (0-based): "generation 1" is
+/// the first. The status bar, the lineage, the cells and bred designs' names all count so.
+int displayNumber(int index);
 
 /// The lineage of a design as the UI shows it, read from meta.lineage and meta.id.
 struct LineageInfo {
@@ -172,6 +180,7 @@ struct LineageInfo {
     QStringList parents;   ///< parent ids
     int generation = 0;
     QString name;          ///< meta.name when set
+    bool varied = false;   ///< a gentle variation of a result already in its generation
 };
 LineageInfo lineageOf(const Genome& genome);
 

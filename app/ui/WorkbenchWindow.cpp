@@ -62,6 +62,14 @@ protected:
 
 QString shortId(const QString& id) { return id.left(8); }
 
+/// How a design was made, in the window's words ("Change initial state", never "reinit").
+QString madeBy(const LineageInfo& info) {
+    if (info.op.isEmpty()) return WorkbenchWindow::tr("(not bred)");
+    const QString label = operatorLabel(info.op);
+    return info.varied ? WorkbenchWindow::tr("%1, varied").arg(label) : label;
+}
+
+
 } // namespace
 
 WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
@@ -101,6 +109,8 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
         grid->setRowStretch(r, 1);
         grid->setColumnStretch(r, 1);
     }
+    // Nine cells stay big enough to judge a design however small the window gets.
+    central->setMinimumSize(3 * 120 + 16, 3 * 120 + 16);
     setCentralWidget(central);
 
     // Re-rendering nine cells on every pixel of a window drag would flood the queue.
@@ -129,7 +139,10 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
         requestAllRenders();
         updateLineage();
     });
-    connect(mModel, &PopulationModel::cellChanged, this, [this] { updateLineage(); });
+    connect(mModel, &PopulationModel::cellChanged, this, [this] {
+        updateCells(); // the lock marker
+        updateLineage();
+    });
     connect(mModel, &PopulationModel::selectionChanged, this, [this] {
         updateCells();
         updateActions();
@@ -283,6 +296,9 @@ void WorkbenchWindow::buildDocks() {
     connect(list, &QListWidget::itemDoubleClicked, this,
             [this](QListWidgetItem* item) { restoreFavourite(mFavouritesList->row(item)); });
     connect(list, &QWidget::customContextMenuRequested, this, &WorkbenchWindow::showFavouriteMenu);
+    // Docks never shrink past the point where a thumbnail or the lineage columns stay usable,
+    // so a small window cannot squash them (nor save a squashed layout).
+    list->setMinimumSize(ThumbnailSide + 80, ThumbnailSide + 50);
     favDock->setWidget(list);
     addDockWidget(Qt::RightDockWidgetArea, favDock);
 
@@ -297,6 +313,7 @@ void WorkbenchWindow::buildDocks() {
         const QVariant generation = item->data(0, Qt::UserRole);
         if (generation.isValid()) mModel->goTo(generation.toInt());
     });
+    mLineageTree->setMinimumSize(260, 140);
     lineageDock->setWidget(mLineageTree);
     addDockWidget(Qt::RightDockWidgetArea, lineageDock);
 
@@ -413,12 +430,9 @@ void WorkbenchWindow::updateCells() {
             c->setCaption({});
             continue;
         }
-        const LineageInfo info = lineageOf(*g);
-        QString caption = info.name.isEmpty() ? shortId(info.id) : info.name;
-        if (!info.op.isEmpty()) caption += tr(" · %1, gen %2").arg(info.op).arg(info.generation);
+        c->setCaption(designCaption(*g));
         const Locks locks = locksOf(*g);
-        if (locks.palette || locks.initial || locks.operations) caption += QStringLiteral(" · 🔒");
-        c->setCaption(caption);
+        c->setLocked(locks.palette || locks.initial || locks.operations);
     }
 }
 
@@ -435,7 +449,7 @@ void WorkbenchWindow::updateActions() {
         return;
     }
     statusBar()->showMessage(tr("Generation %1 of %2: %3 — %4 selected")
-                                 .arg(mModel->currentIndex() + 1)
+                                 .arg(displayNumber(mModel->currentIndex()))
                                  .arg(mModel->history().size())
                                  .arg(gen.description)
                                  .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
@@ -450,10 +464,9 @@ void WorkbenchWindow::updateLineage() {
         const LineageInfo info = lineageOf(*g);
         QStringList parents;
         for (const QString& p : info.parents) parents << shortId(p);
-        auto* item = new QTreeWidgetItem(designs, {tr("Cell %1: %2").arg(i + 1).arg(shortId(info.id)),
-                                                   info.op.isEmpty() ? tr("(not bred)") : info.op,
-                                                   parents.join(QStringLiteral(", ")),
-                                                   QString::number(info.generation)});
+        auto* item = new QTreeWidgetItem(designs, {tr("Design %1: %2").arg(i + 1).arg(info.name.isEmpty() ? shortId(info.id) : info.name),
+                                                   madeBy(info), parents.join(QStringLiteral(", ")),
+                                                   info.op.isEmpty() ? QString() : QString::number(info.generation)});
         item->setToolTip(0, info.id);
         item->setToolTip(2, info.parents.join(QLatin1Char('\n')));
     }
@@ -462,8 +475,8 @@ void WorkbenchWindow::updateLineage() {
     // The empty placeholder before the first designs is no generation.
     for (std::size_t k = 0; k < history.size() && !mModel->isEmptyWorkbench(); ++k) {
         QStringList parents;
-        for (int i : history[k].parentCells) parents << tr("cell %1").arg(i + 1);
-        auto* item = new QTreeWidgetItem(generations, {tr("#%1").arg(k + 1), history[k].description,
+        for (int i : history[k].parentCells) parents << tr("design %1").arg(i + 1);
+        auto* item = new QTreeWidgetItem(generations, {tr("Generation %1").arg(displayNumber(int(k))), history[k].description,
                                                        parents.join(QStringLiteral(", ")), QString()});
         item->setData(0, Qt::UserRole, int(k));
         if (int(k) == mModel->currentIndex()) {
@@ -610,7 +623,7 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
         reportError(this, tr("Cannot breed"), QString::fromStdString(e.what()));
         return false;
     }
-    statusBar()->showMessage(tr("%1: generation %2").arg(operatorLabel(op)).arg(mModel->currentIndex() + 1), 5000);
+    statusBar()->showMessage(tr("%1: generation %2").arg(operatorLabel(op)).arg(displayNumber(mModel->currentIndex())), 5000);
     return true;
 }
 
@@ -762,10 +775,17 @@ void WorkbenchWindow::resumeSession(SavedSession session) {
     mModel->restoreSession(std::move(session));
     mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
     setMesh(mModel->mesh());
-    statusBar()->showMessage(tr("Resumed the last session at generation %1").arg(mModel->currentIndex() + 1), 5000);
+    statusBar()->showMessage(tr("Resumed the last session at generation %1").arg(displayNumber(mModel->currentIndex())), 5000);
 }
 
 QString WorkbenchWindow::mesh() const { return mMesh->currentText(); }
+
+QString designCaption(const Genome& genome) {
+    const LineageInfo info = lineageOf(genome);
+    QString caption = info.name.isEmpty() ? shortId(info.id) : info.name;
+    if (!info.op.isEmpty()) caption += QStringLiteral(" · ") + madeBy(info);
+    return caption;
+}
 
 void WorkbenchWindow::setMesh(const QString& mesh) {
     if (mMesh->findText(mesh) >= 0) mMesh->setCurrentText(mesh);

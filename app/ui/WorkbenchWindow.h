@@ -129,4 +129,8 @@ private:
     bool mSaveFailureShown = false;
 };
 
+/// The caption a cell shows under a design: its name (a bred design's carries " (gN #K)",
+/// generation N, design K, as the status bar and the lineage count) and how it was made.
+QString designCaption(const Genome& genome);
+
 } // namespace marbler::ui

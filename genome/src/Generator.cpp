@@ -310,12 +310,35 @@ struct StrokeMaker {
     }
 };
 
-constexpr std::array<const char*, 32> Adjectives{
-    "Saffron", "Indigo", "Amber", "Ochre", "Cobalt", "Umber", "Verdigris", "Carmine",
-    "Slate", "Ivory", "Madder", "Sepia", "Cinnabar", "Teal", "Russet", "Lapis",
-    "Turkish", "Venetian", "Dusky", "Gilded", "Smoky", "Twilight", "Autumn", "Winter",
-    "Stormy", "Quiet", "Tidal", "Ember", "Marsh", "Mossy", "Pale", "Deep",
+/// Colour words for names, each with the sRGB colour it stands for (pigments and stones a
+/// marbler would know). A name takes the word nearest its main ink.
+struct ColorWord {
+    const char* word;
+    Color color;
 };
+constexpr std::array<ColorWord, 36> ColorWords{{
+    {"Carmine", {150, 0, 24}},     {"Crimson", {196, 30, 58}},    {"Cinnabar", {227, 66, 52}},
+    {"Coral", {240, 128, 110}},    {"Rose", {215, 120, 150}},     {"Madder", {165, 40, 70}},
+    {"Russet", {128, 70, 27}},     {"Umber", {99, 81, 71}},       {"Sepia", {112, 66, 20}},
+    {"Ochre", {204, 119, 34}},     {"Amber", {230, 150, 20}},     {"Saffron", {244, 196, 48}},
+    {"Sand", {214, 190, 150}},     {"Ivory", {240, 234, 214}},    {"Olive", {128, 128, 0}},
+    {"Moss", {100, 130, 60}},      {"Sage", {150, 175, 130}},     {"Jade", {0, 168, 107}},
+    {"Malachite", {20, 110, 60}},  {"Verdigris", {67, 179, 174}}, {"Teal", {0, 128, 128}},
+    {"Azure", {40, 130, 220}},     {"Cobalt", {0, 71, 171}},      {"Lapis", {38, 97, 156}},
+    {"Indigo", {55, 45, 125}},     {"Violet", {130, 80, 180}},    {"Plum", {120, 50, 100}},
+    {"Lilac", {190, 160, 210}},    {"Slate", {112, 128, 144}},    {"Charcoal", {54, 62, 70}},
+    {"Pearl", {212, 212, 205}},    {"Ebony", {30, 28, 26}},       {"Emerald", {50, 190, 70}},
+    {"Chartreuse", {150, 215, 40}}, {"Prussian", {0, 49, 83}},    {"Spruce", {35, 88, 82}},
+}};
+
+/// A perceptual distance good enough to name colours ("redmean": RGB weighted by how red the
+/// pair is, after Riemersma); only basic operations, so the same on every machine.
+double colorDistance2(Color a, Color b) {
+    double rm = (a.r + b.r) / 2.0;
+    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+    return (2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - rm) / 256.0) * db * db;
+}
+
 constexpr std::array<const char*, 32> Nouns{
     "Tide", "Stone", "Quarry", "Feather", "Peacock", "Bouquet", "Nonpareil", "Chevron",
     "Lagoon", "Ember", "Tapestry", "Current", "Agate", "Marble", "Ripple", "Whorl",
@@ -325,9 +348,30 @@ constexpr std::array<const char*, 32> Nouns{
 
 } // namespace
 
-std::string randomName(std::uint64_t seed) {
+std::string colorWord(Color color) {
+    const ColorWord* best = &ColorWords[0];
+    for (const ColorWord& w : ColorWords)
+        if (colorDistance2(color, w.color) < colorDistance2(color, best->color)) best = &w;
+    return best->word;
+}
+
+int mainInk(const Genome& genome) {
+    if (genome.palette.empty()) return -1;
+    // Area (volume) is what a drop keeps through every later stroke, so the initial state's
+    // share of each ink is what the eye sees most of.
+    std::vector<double> share(genome.palette.size(), 0.0);
+    for (const Operation& op : genome.initial) {
+        if (!toolSpec(op.tool).laysInk || op.color < 0 || op.color >= static_cast<int>(share.size())) continue;
+        double r = std::max(op.radius, 1.0);
+        share[static_cast<std::size_t>(op.color)] += genome.dimension == 3 ? r * r * r : r * r;
+    }
+    return static_cast<int>(std::max_element(share.begin(), share.end()) - share.begin());
+}
+
+std::string randomName(std::uint64_t seed, const Genome& genome) {
     Pcg32 rng(seed, NameStream);
-    std::string adjective = Adjectives[rng.below(Adjectives.size())];
+    const int ink = mainInk(genome);
+    std::string adjective = ink >= 0 ? colorWord(genome.palette[static_cast<std::size_t>(ink)]) : "Quiet";
     std::string noun = Nouns[rng.below(Nouns.size())];
     return adjective + " " + noun;
 }
@@ -553,7 +597,7 @@ Genome randomGenome(std::uint64_t seed, int dimension) {
     Pcg32 strokeRng(seed, StrokeStream);
     g.operations = randomStrokes(strokeRng, dimension, g.size);
     g.meta = nlohmann::ordered_json::object();
-    g.meta["name"] = randomName(seed);
+    g.meta["name"] = randomName(seed, g);
     g.meta["seed"] = seed;
     g.meta["generator"] = GeneratorVersion;
     return g;

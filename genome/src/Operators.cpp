@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 namespace marbler {
 namespace {
@@ -327,36 +328,69 @@ std::vector<Genome> breed(const BreedRequest& request) {
                              " differs from parent 1's " + std::to_string(request.parents[0].dimension));
     }
 
+    if (request.generation && *request.generation < 1)
+        throw InputError("generation must be 1 or more (got " + std::to_string(*request.generation) + ")");
+    if (!request.childNumbers.empty() && static_cast<int>(request.childNumbers.size()) != request.count)
+        throw InputError("childNumbers must hold one number per child");
+
     nlohmann::ordered_json parentIds = nlohmann::ordered_json::array();
+    // The designs already in the generation: no child may repeat one (the window keeps the
+    // parents beside their children).
+    std::set<std::string> taken;
     int generation = 0;
     for (const Genome& parent : request.parents) {
         parentIds.push_back(genomeId(parent));
+        taken.insert(genomeId(parent));
         generation = std::max(generation, generationOf(parent));
     }
-    generation += 1;
+    generation = request.generation.value_or(generation + 1);
 
     std::vector<Genome> children;
     children.reserve(static_cast<std::size_t>(request.count));
     for (int i = 0; i < request.count; ++i) {
         Pcg32 rng = childRng(request.seed, i);
         std::size_t home = 0;
-        Genome child;
-        switch (op) {
-        case GeneticOperator::Alter: child = alterGenome(request.parents[0], request.strength, rng); break;
-        case GeneticOperator::Recombine:
-            home = static_cast<std::size_t>(i) % request.parents.size();
-            child = recombineGenomes(request.parents, home, rng);
-            break;
-        case GeneticOperator::Swap:
-            home = static_cast<std::size_t>(i % 2);
-            child = swapGenomes(request.parents[home], request.parents[1 - home]);
-            break;
-        case GeneticOperator::Reinit: child = reinitGenome(request.parents[0], rng); break;
+        const auto draw = [&] {
+            switch (op) {
+            case GeneticOperator::Alter: return alterGenome(request.parents[0], request.strength, rng);
+            case GeneticOperator::Recombine:
+                home = static_cast<std::size_t>(i) % request.parents.size();
+                return recombineGenomes(request.parents, home, rng);
+            case GeneticOperator::Swap:
+                home = static_cast<std::size_t>(i % 2);
+                return swapGenomes(request.parents[home], request.parents[1 - home]);
+            case GeneticOperator::Reinit: return reinitGenome(request.parents[0], rng);
+            }
+            return request.parents[0];
+        };
+        Genome child = draw();
+        // Swap has exactly two results and alter at strength 0 one: drawing again cannot help.
+        const bool random = op == GeneticOperator::Recombine || op == GeneticOperator::Reinit ||
+                            (op == GeneticOperator::Alter && request.strength > 0.0);
+        for (int attempt = 0; random && taken.count(genomeId(child)) && attempt < 16; ++attempt) child = draw();
+        std::optional<nlohmann::ordered_json> variation;
+        if (taken.count(genomeId(child))) {
+            // A repeat wastes a cell: vary it gently instead (more on a further repeat). alterGenome
+            // honours the home parent's locks, which the child carries in its meta.
+            const Genome repeated = child;
+            double strength = VariationStrength;
+            for (int attempt = 0; attempt < 8; ++attempt) {
+                if (attempt > 0) strength = std::min(1.0, strength * 1.5);
+                child = alterGenome(repeated, strength, rng);
+                if (!taken.count(genomeId(child))) break;
+            }
+            if (genomeId(child) != genomeId(repeated)) {
+                variation = nlohmann::ordered_json::object();
+                (*variation)["of"] = genomeId(repeated);
+                (*variation)["strength"] = strength;
+            }
         }
+        taken.insert(genomeId(child));
 
         const Genome& homeParent = request.parents[home];
         nlohmann::ordered_json meta = nlohmann::ordered_json::object();
-        meta["name"] = rootName(homeParent) + " (g" + std::to_string(generation) + " #" + std::to_string(i + 1) + ")";
+        const int number = request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
+        meta["name"] = rootName(homeParent) + " (g" + std::to_string(generation) + " #" + std::to_string(number) + ")";
         if (homeParent.meta.is_object())
             for (const auto& [key, value] : homeParent.meta.items())
                 if (key != "name" && key != "seed" && key != "generator" && key != "id" && key != "lineage") meta[key] = value;
@@ -366,6 +400,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
         lineage["seed"] = request.seed;
         lineage["child"] = i + 1;
         if (op == GeneticOperator::Alter) lineage["strength"] = request.strength;
+        if (variation) lineage["variation"] = *variation;
         lineage["generation"] = generation;
         meta["lineage"] = lineage;
         child.meta = meta;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 
 namespace marbler {
 namespace {
@@ -142,6 +143,36 @@ TEST(BreedVerb, EveryOperatorWithCountAndStrength) {
             EXPECT_EQ(child.meta["lineage"]["generation"], 1);
         }
     }
+}
+
+// `marbler breed swap A B --count 8` wrote 4 + 4 identical genomes: every child must differ
+// from the others and from the parents (meta aside), for every operator and count.
+TEST(BreedVerb, NoTwoChildrenAreEqual) {
+    Parents parents("breed-distinct");
+    const std::vector<std::vector<std::string>> operators{
+        {"alter", parents.a.string()},
+        {"recombine", parents.a.string(), parents.b.string()},
+        {"swap", parents.a.string(), parents.b.string()},
+        {"reinit", parents.a.string()},
+    };
+    const std::string idA = genomeId(loadGenome(parents.a)), idB = genomeId(loadGenome(parents.b));
+    for (const auto& op : operators)
+        for (int count = 1; count <= 9; ++count) {
+            SCOPED_TRACE(op[0] + " --count " + std::to_string(count));
+            fs::path out = parents.dir / (op[0] + "-" + std::to_string(count));
+            std::vector<std::string> args{"breed"};
+            args.insert(args.end(), op.begin(), op.end());
+            for (const std::string& a : {std::string("--seed"), std::string("11"), std::string("--count"),
+                                         std::to_string(count), std::string("-o"), out.string()})
+                args.push_back(a);
+            test::RunResult r = runMarbler(args);
+            ASSERT_EQ(r.exitCode, 0) << r.err;
+            std::set<std::string> ids{idA, idB};
+            std::vector<std::string> names = filesIn(out);
+            ASSERT_EQ(names.size(), std::size_t(count));
+            for (const std::string& name : names)
+                EXPECT_TRUE(ids.insert(genomeId(loadGenome(out / name))).second) << name << " repeats a design";
+        }
 }
 
 TEST(BreedVerb, BadInputExitsWithTwoAndWritesNothing) {

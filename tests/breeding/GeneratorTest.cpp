@@ -223,5 +223,33 @@ TEST(Generator, PartsUseTheirOwnStreams) {
     for (const Operation& op : randomInitial(e, 3, {1000, 1000, 1000}, 2)) EXPECT_LT(op.color, 2);
 }
 
+// Names follow the colours: "Umber Marble" for a blue and yellow design told the user the
+// name had nothing to do with what they saw.
+TEST(Generator, NamesComeFromThePalette) {
+    EXPECT_EQ(colorWord({0, 71, 171}), "Cobalt");
+    EXPECT_EQ(colorWord({245, 200, 50}), "Saffron");
+    EXPECT_EQ(colorWord({200, 30, 55}), "Crimson");
+    EXPECT_EQ(colorWord({0, 130, 128}), "Teal");
+    EXPECT_EQ(colorWord({110, 126, 142}), "Slate");
+    for (int dimension : {2, 3})
+        for (std::uint64_t seed = 0; seed < 60; ++seed) {
+            Genome g = randomGenome(seed, dimension);
+            const std::string name = g.meta["name"];
+            const std::string word = name.substr(0, name.find(' '));
+            // The colour word of the ink that covers most of the design...
+            const int ink = mainInk(g);
+            ASSERT_GE(ink, 0);
+            EXPECT_EQ(word, colorWord(g.palette[std::size_t(ink)])) << name << " seed " << seed;
+            // ...which is an ink of the palette, and one that covers the most.
+            double best = 0.0, mine = 0.0;
+            std::vector<double> share(g.palette.size(), 0.0);
+            for (const Operation& op : g.initial)
+                if (toolSpec(op.tool).laysInk) share[std::size_t(op.color)] += std::pow(op.radius, dimension);
+            for (double v : share) best = std::max(best, v);
+            mine = share[std::size_t(ink)];
+            EXPECT_GE(mine, 0.999 * best) << name << " seed " << seed;
+        }
+}
+
 } // namespace
 } // namespace marbler

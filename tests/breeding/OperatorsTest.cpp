@@ -74,8 +74,83 @@ TEST_P(Operators, SwapExchangesExactlyInitialStateAndOperations) {
         EXPECT_EQ(child.palette, home.palette) << i;
         EXPECT_EQ(child.background, home.background) << i;
         EXPECT_EQ(child.size, home.size) << i;
-        EXPECT_EQ(child.operations, other.operations) << i;
+        if (i < 2) {
+            // The two swaps themselves.
+            EXPECT_EQ(child.operations, other.operations) << i;
+            EXPECT_FALSE(child.meta["lineage"].contains("variation")) << i;
+        } else {
+            // Then gentle variations of them, in turn: the other's tools, moved a little.
+            EXPECT_EQ(toolsOf(child.operations), toolsOf(other.operations)) << i;
+            EXPECT_NE(child.operations, other.operations) << i;
+            const auto& variation = child.meta["lineage"]["variation"];
+            ASSERT_TRUE(variation.is_object()) << i;
+            EXPECT_EQ(variation["of"], genomeId(children[i % 2])) << i;
+            EXPECT_GT(variation["strength"].get<double>(), 0.0) << i;
+            EXPECT_LE(variation["strength"].get<double>(), 0.5) << i;
+        }
     }
+}
+
+/// Every child is worth a cell: for every operator and count, the children differ from each
+/// other and from the parents (meta aside), whatever the parents are like.
+TEST_P(Operators, NoTwoChildrenAreEqual) {
+    Genome a = parent(80), b = parent(81), c = parent(82);
+    Genome few = parent(83); // few strokes: crossovers repeat easily
+    few.operations.resize(std::min<std::size_t>(few.operations.size(), 1));
+    Genome sameStrokes = parent(84); // swapping with `a` gives `a` back
+    sameStrokes.operations = a.operations;
+    struct Case {
+        GeneticOperator op;
+        std::vector<Genome> parents;
+        double strength;
+        const char* what;
+    };
+    const std::vector<Case> cases{
+        {GeneticOperator::Alter, {a}, 0.5, "alter"},
+        {GeneticOperator::Alter, {a}, 0.0, "alter at strength 0"},
+        {GeneticOperator::Alter, {a}, 0.01, "alter at strength 0.01"},
+        {GeneticOperator::Recombine, {a, b}, 0.5, "recombine of two"},
+        {GeneticOperator::Recombine, {a, b, c}, 0.5, "recombine of three"},
+        {GeneticOperator::Recombine, {few, few}, 0.5, "recombine of equal parents"},
+        {GeneticOperator::Recombine, {few, sameStrokes}, 0.5, "recombine of few strokes"},
+        {GeneticOperator::Swap, {a, b}, 0.5, "swap"},
+        {GeneticOperator::Swap, {a, sameStrokes}, 0.5, "swap of the same strokes"},
+        {GeneticOperator::Reinit, {a}, 0.5, "reinit"},
+    };
+    for (const Case& k : cases)
+        for (std::uint64_t seed : {1ull, 2ull, 3ull})
+            for (int count = 1; count <= 9; ++count) {
+                SCOPED_TRACE(std::string(k.what) + ", seed " + std::to_string(seed) + ", count " + std::to_string(count));
+                std::vector<Genome> children = breed(request(k.op, k.parents, seed, count, k.strength));
+                ASSERT_EQ(children.size(), std::size_t(count));
+                std::set<std::string> ids;
+                for (const Genome& p : k.parents) ids.insert(genomeId(p));
+                const std::size_t parentIds = ids.size();
+                for (const Genome& child : children) {
+                    EXPECT_TRUE(ids.insert(genomeId(child)).second) << "a child repeats a design of its generation";
+                    EXPECT_NO_THROW(validateGenome(child, "child"));
+                }
+                EXPECT_EQ(ids.size(), parentIds + children.size());
+            }
+}
+
+TEST_P(Operators, ChildrenCarryTheGenerationAndNumbersTheyAreGiven) {
+    Genome a = parent(90);
+    BreedRequest r = request(GeneticOperator::Alter, {a}, 3, 3);
+    r.generation = 7;
+    r.childNumbers = {2, 5, 9};
+    std::vector<Genome> children = breed(r);
+    for (std::size_t i = 0; i < children.size(); ++i) {
+        EXPECT_EQ(children[i].meta["lineage"]["generation"], 7);
+        EXPECT_EQ(children[i].meta["lineage"]["child"], int(i) + 1);
+        const std::string name = children[i].meta["name"];
+        EXPECT_NE(name.find(" (g7 #" + std::to_string(r.childNumbers[i]) + ")"), std::string::npos) << name;
+    }
+    r.childNumbers = {1};
+    EXPECT_THROW(breed(r), InputError);
+    r.childNumbers.clear();
+    r.generation = 0;
+    EXPECT_THROW(breed(r), InputError);
 }
 
 TEST_P(Operators, SwapClampsColourIndicesToTheHomePalette) {
@@ -140,10 +215,17 @@ TEST_P(Operators, AlterKeepsPositiveParametersPositiveEvenWhenTheyAreTiny) {
 
 TEST_P(Operators, AlterWithStrengthZeroKeepsEveryParameter) {
     Genome p = parent(5);
+    Pcg32 rng(9, 1);
+    const Genome same = alterGenome(p, 0.0, rng);
+    EXPECT_EQ(same.operations, p.operations);
+    EXPECT_EQ(same.initial, p.initial);
+    EXPECT_EQ(genomeId(same), genomeId(p));
+    // Bred, copies of the parent would waste cells: the children are gentle variations.
     for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, 9, 3, 0.0))) {
-        EXPECT_EQ(child.operations, p.operations);
-        EXPECT_EQ(child.initial, p.initial);
-        EXPECT_EQ(genomeId(child), genomeId(p));
+        EXPECT_EQ(toolsOf(child.operations), toolsOf(p.operations));
+        EXPECT_NE(genomeId(child), genomeId(p));
+        EXPECT_EQ(child.meta["lineage"]["variation"]["of"], genomeId(p));
+        EXPECT_LT(scaledDistance(p, child), 0.5);
     }
 }
 

@@ -7,6 +7,7 @@
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Sampling.h"
 #include "marbler/gl/GlRenderer.h"
 #include "ui/DesignCell.h"
 #include "ui/DesignDialog.h"
@@ -22,17 +23,23 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDialogButtonBox>
 #include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QDropEvent>
+#include <QFile>
 #include <QFileInfo>
 #include <QImageReader>
 #include <QLabel>
 #include <QMimeData>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
-#include <QFile>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -42,6 +49,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <set>
 
 using namespace marbler;
 using namespace marbler::ui;
@@ -113,7 +121,7 @@ TEST_F(WorkbenchTest, FirstRandomPopulationIsGenerationOne) {
     QTreeWidget* tree = mWindow->lineageTree();
     ASSERT_EQ(tree->topLevelItemCount(), 2);
     ASSERT_EQ(tree->topLevelItem(1)->childCount(), 1);
-    EXPECT_EQ(tree->topLevelItem(1)->child(0)->text(0), QStringLiteral("#1"));
+    EXPECT_EQ(tree->topLevelItem(1)->child(0)->text(0), QStringLiteral("Generation 1"));
     EXPECT_EQ(tree->topLevelItem(1)->child(0)->text(1), QStringLiteral("New random population"));
 }
 
@@ -344,6 +352,132 @@ TEST_F(WorkbenchTest, EmptyWorkbenchListsNoGeneration) {
     EXPECT_EQ(window.lineageTree()->topLevelItem(1)->childCount(), 0);
 }
 
+// Every child is worth a cell (issue 12).
+
+/// The designs of the grid, compared without meta.
+std::set<std::string> distinctDesigns(const PopulationModel& model) {
+    std::set<std::string> ids;
+    for (int i = 0; i < CellCount; ++i)
+        if (model.cell(i)) ids.insert(genomeId(*model.cell(i)));
+    return ids;
+}
+
+TEST_F(WorkbenchTest, EveryOperatorFillsTheGridWithDistinctDesigns) {
+    ASSERT_EQ(distinctDesigns(model()).size(), std::size_t(CellCount));
+    for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Swap,
+                               GeneticOperator::Reinit}) {
+        const int most = maxParents(op) == 0 ? CellCount - 1 : maxParents(op);
+        for (int parents = minParents(op); parents <= most; ++parents) {
+            SCOPED_TRACE(std::string(operatorName(op)) + " of " + std::to_string(parents) + " parents");
+            model().clearSelection();
+            for (int i = 0; i < parents; ++i) model().setSelected(i, true);
+            ASSERT_TRUE(mWindow->applyOperator(op));
+            EXPECT_EQ(distinctDesigns(model()).size(), std::size_t(CellCount)) << "two cells hold the same design";
+            model().goBack();
+        }
+    }
+    // Swap twice in a row: the grid's swaps and their variations stay distinct too.
+    model().clearSelection();
+    model().setSelected(2, true);
+    model().setSelected(6, true);
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Swap));
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Swap));
+    EXPECT_EQ(distinctDesigns(model()).size(), std::size_t(CellCount));
+    // The lineage says which children are variations.
+    int varied = 0;
+    for (int i = 0; i < mWindow->lineageTree()->topLevelItem(0)->childCount(); ++i)
+        varied += mWindow->lineageTree()->topLevelItem(0)->child(i)->text(1) == QStringLiteral("Swap, varied") ? 1 : 0;
+    EXPECT_EQ(varied, CellCount - 2 - 2) << "two parents, two swaps, the rest varied";
+}
+
+TEST(PopulationModelTest, EveryNewRandomPopulationIsNew) {
+    PopulationModel model;
+    model.setSessionSeed(42);
+    model.newRandomPopulation(2);
+    std::set<std::string> seen = distinctDesigns(model);
+    ASSERT_EQ(seen.size(), std::size_t(CellCount));
+    for (int round = 0; round < 3; ++round) {
+        model.newRandomPopulation(2);
+        for (const std::string& id : distinctDesigns(model)) EXPECT_TRUE(seen.insert(id).second) << "round " << round;
+    }
+    // Back to the first and new again: new against the grid it replaces as well.
+    model.goTo(0);
+    const std::set<std::string> first = distinctDesigns(model);
+    model.newRandomPopulation(2);
+    for (const std::string& id : distinctDesigns(model)) EXPECT_EQ(first.count(id), 0u);
+    EXPECT_EQ(distinctDesigns(model).size(), std::size_t(CellCount));
+}
+
+// One vocabulary: the window's words and numbers agree everywhere.
+
+TEST_F(WorkbenchTest, GenerationsAndOperatorsAreNamedAlikeEverywhere) {
+    model().setSelected(4, true);
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Reinit));
+    EXPECT_TRUE(mWindow->statusBar()->currentMessage().contains(QStringLiteral("eneration 2")))
+        << mWindow->statusBar()->currentMessage().toStdString();
+    QTreeWidget* tree = mWindow->lineageTree();
+    QTreeWidgetItem* designs = tree->topLevelItem(0);
+    QTreeWidgetItem* generations = tree->topLevelItem(1);
+    ASSERT_EQ(generations->childCount(), 2);
+    EXPECT_EQ(generations->child(0)->text(0), QStringLiteral("Generation 1"));
+    EXPECT_EQ(generations->child(1)->text(0), QStringLiteral("Generation 2"));
+    EXPECT_EQ(generations->child(1)->text(2), QStringLiteral("design 5"));
+    for (int i = 0; i < CellCount; ++i) {
+        SCOPED_TRACE("design " + std::to_string(i + 1));
+        const QString caption = mWindow->cell(i)->caption();
+        const QString row = designs->child(i)->text(0) + designs->child(i)->text(1) + designs->child(i)->text(3);
+        EXPECT_FALSE(caption.contains(QStringLiteral("reinit")) || row.contains(QStringLiteral("reinit")));
+        EXPECT_TRUE(designs->child(i)->text(0).startsWith(QStringLiteral("Design %1: ").arg(i + 1)));
+        if (i == 4) continue; // the parent, from generation 1
+        // A child of generation 2 in design 7 is called "(g2 #7)", as the status bar counts.
+        EXPECT_TRUE(caption.contains(QStringLiteral("(g2 #%1)").arg(i + 1))) << caption.toStdString();
+        EXPECT_TRUE(caption.contains(QStringLiteral("Change initial state"))) << caption.toStdString();
+        EXPECT_EQ(designs->child(i)->text(1), QStringLiteral("Change initial state"));
+        EXPECT_EQ(designs->child(i)->text(3), QStringLiteral("2"));
+        EXPECT_EQ(lineageOf(*model().cell(i)).generation, 2);
+    }
+}
+
+TEST_F(WorkbenchTest, LockMarkerIsDrawnNotAnEmoji) {
+    mWindow->show();
+    DesignCell* cell = mWindow->cell(2);
+    cell->setImage(QImage()); // a plain cell, so only the marker differs
+    const QImage before = cell->grab().toImage();
+    EXPECT_TRUE(cell->lockMarkerRect().isEmpty());
+    Locks locks;
+    locks.initial = true;
+    model().setCellLocks(2, locks);
+    EXPECT_TRUE(cell->isLocked());
+    const QRect marker = cell->lockMarkerRect();
+    ASSERT_FALSE(marker.isEmpty());
+    for (QChar ch : cell->caption()) EXPECT_FALSE(ch.isSurrogate()) << "no emoji (or other astral character) in the caption";
+    const QImage after = cell->grab().toImage();
+    const qreal dpr = after.devicePixelRatio();
+    int changed = 0;
+    for (int y = marker.top(); y <= marker.bottom(); ++y)
+        for (int x = marker.left(); x <= marker.right(); ++x)
+            changed += after.pixel(int(x * dpr), int(y * dpr)) != before.pixel(int(x * dpr), int(y * dpr)) ? 1 : 0;
+    EXPECT_GT(changed, marker.width() * marker.height() / 5) << "a padlock is drawn where the marker goes";
+    model().setCellLocks(2, Locks{});
+    EXPECT_FALSE(cell->isLocked());
+}
+
+TEST_F(WorkbenchTest, ShrinkingTheWindowKeepsDocksAndCellsUsable) {
+    mWindow->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
+    mWindow->resize(200, 150);
+    QTest::qWait(50);
+    for (QDockWidget* dock : mWindow->findChildren<QDockWidget*>()) {
+        if (!dock->isVisible()) continue;
+        EXPECT_GE(dock->widget()->width(), 170) << dock->objectName().toStdString();
+        EXPECT_GE(dock->widget()->height(), 120) << dock->objectName().toStdString();
+    }
+    for (int i = 0; i < CellCount; ++i) {
+        EXPECT_GE(mWindow->cell(i)->width(), 110) << i;
+        EXPECT_GE(mWindow->cell(i)->height(), 110) << i;
+    }
+}
+
 // The large view of a design: save and export.
 
 TEST_F(WorkbenchTest, LargeDesignSavesGenomeAtomically) {
@@ -401,6 +535,119 @@ TEST_F(WorkbenchTest, CancelledExportLeavesNoFile) {
     EXPECT_TRUE(finished.front().at(2).toString().isEmpty()) << "a cancel is no failure";
     EXPECT_TRUE(errors.messages.isEmpty());
     EXPECT_TRUE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+}
+
+// The export settings: units, the size check, focus order, and no stale progress box.
+
+TEST_F(WorkbenchTest, ExportUnitChangeConvertsTheWidth) {
+    ExportSettingsDialog dialog(*model().cell(0));
+    dialog.setDpi(300);
+    ASSERT_EQ(dialog.unit(), QStringLiteral("pixels"));
+    EXPECT_EQ(dialog.pixels().width(), 2048);
+    // 2048 px became 2048 in (614,400 px): the value must be converted, the pixels kept.
+    dialog.setUnit(QStringLiteral("inches"));
+    EXPECT_NEAR(dialog.widthValue(), 2048.0 / 300.0, 1e-3);
+    EXPECT_EQ(dialog.pixels().width(), 2048);
+    dialog.setUnit(QStringLiteral("cm"));
+    EXPECT_NEAR(dialog.widthValue(), 2048.0 / 300.0 * 2.54, 1e-3);
+    EXPECT_EQ(dialog.pixels().width(), 2048);
+    dialog.setUnit(QStringLiteral("mm"));
+    EXPECT_NEAR(dialog.widthValue(), 2048.0 / 300.0 * 25.4, 1e-3);
+    dialog.setUnit(QStringLiteral("pixels"));
+    EXPECT_DOUBLE_EQ(dialog.widthValue(), 2048.0);
+    EXPECT_EQ(dialog.pixels().width(), 2048);
+    // A print size: 100 mm at 300 dpi, then the same print at 600 dpi.
+    dialog.setUnit(QStringLiteral("mm"));
+    dialog.setWidthValue(100.0);
+    EXPECT_EQ(dialog.pixels().width(), 1181);
+    dialog.setDpi(600);
+    EXPECT_DOUBLE_EQ(dialog.widthValue(), 100.0);
+    EXPECT_EQ(dialog.pixels().width(), 2362);
+    EXPECT_EQ(dialog.dpi(), 600.0);
+    // In pixels the dpi only labels the file: the pixels stay.
+    dialog.setUnit(QStringLiteral("pixels"));
+    dialog.setDpi(150);
+    EXPECT_EQ(dialog.pixels().width(), 2362);
+}
+
+TEST_F(WorkbenchTest, ExportRefusesSizesBeyondTheRenderersLimits) {
+    EXPECT_TRUE(exportSizeProblem(QSize(2048, 2048)).isEmpty());
+    EXPECT_TRUE(exportSizeProblem(QSize(MaxImageSide, 1000)).isEmpty());
+    EXPECT_FALSE(exportSizeProblem(QSize(MaxImageSide + 1, 10)).isEmpty());
+    EXPECT_FALSE(exportSizeProblem(QSize(50000, 50000)).isEmpty()) << "2.5 gigapixels";
+    EXPECT_TRUE(exportSizeProblem(QSize(614400, 614400)).contains(QStringLiteral("at most")));
+
+    ExportSettingsDialog settings(*model().cell(0));
+    settings.setDpi(300);
+    settings.setUnit(QStringLiteral("inches"));
+    settings.setWidthValue(2048.0); // 614,400 px a side
+    auto* ok = settings.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+    EXPECT_FALSE(ok->isEnabled());
+    EXPECT_TRUE(settings.findChild<QLabel*>(QStringLiteral("exportPixels"))->text().contains(QStringLiteral("at most")));
+    settings.setWidthValue(10.0);
+    EXPECT_TRUE(ok->isEnabled());
+
+    ErrorCapture errors;
+    DesignDialog* dialog = mWindow->openDesign(0);
+    ASSERT_NE(dialog, nullptr);
+    QTemporaryDir dir;
+    QSignalSpy finished(dialog, &DesignDialog::exportFinished);
+    EXPECT_FALSE(dialog->exportTo(dir.filePath(QStringLiteral("huge.png")), QSize(614400, 614400)));
+    EXPECT_FALSE(dialog->isExporting()) << "refused before any work starts";
+    ASSERT_EQ(errors.messages.size(), 1);
+    EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("614")));
+    EXPECT_TRUE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+    dialog->close();
+}
+
+TEST_F(WorkbenchTest, ExportSettingsTabOrderReachesEveryField) {
+    ExportSettingsDialog dialog(*model().cell(0));
+    dialog.show();
+    dialog.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&dialog));
+    QWidget* width = dialog.findChild<QWidget*>(QStringLiteral("exportWidth"));
+    width->setFocus(Qt::TabFocusReason);
+    QTRY_VERIFY(width->hasFocus());
+    QStringList reached;
+    for (int i = 0; i < 8; ++i) {
+        for (QWidget* w = QApplication::focusWidget(); w; w = w->parentWidget())
+            if (!w->objectName().isEmpty()) {
+                if (!reached.contains(w->objectName())) reached << w->objectName();
+                break;
+            }
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+    }
+    for (const char* field : {"exportWidth", "exportUnit", "exportDpi", "exportAa"})
+        EXPECT_TRUE(reached.contains(QString::fromLatin1(field))) << field << " is not reached: " << reached.join(',').toStdString();
+    EXPECT_EQ(reached.mid(0, 4), (QStringList{QStringLiteral("exportWidth"), QStringLiteral("exportUnit"),
+                                              QStringLiteral("exportDpi"), QStringLiteral("exportAa")}));
+}
+
+TEST_F(WorkbenchTest, ExportErrorIsNeverCoveredByAStaleProgressBox) {
+    DesignDialog* dialog = mWindow->openDesign(1);
+    ASSERT_NE(dialog, nullptr);
+    bool progressVisibleAtError = false;
+    int errorCount = 0;
+    setErrorHandler([&](QWidget*, const QString&, const QString&) {
+        ++errorCount;
+        for (QProgressDialog* box : dialog->findChildren<QProgressDialog*>())
+            progressVisibleAtError = progressVisibleAtError || box->isVisible();
+    });
+    QTemporaryDir dir;
+    QSignalSpy finished(dialog, &DesignDialog::exportFinished);
+    ASSERT_TRUE(dialog->exportTo(dir.filePath(QStringLiteral("no/such/folder/x.png")), QSize(64, 64), QStringLiteral("none")));
+    // As after a long export: the progress box is up when the failure arrives.
+    auto* box = dialog->findChild<QProgressDialog*>(QStringLiteral("exportProgress"));
+    ASSERT_NE(box, nullptr);
+    box->show();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    setErrorHandler({});
+    EXPECT_EQ(errorCount, 1);
+    EXPECT_FALSE(finished.front().at(2).toString().isEmpty());
+    EXPECT_FALSE(progressVisibleAtError) << "the progress box covered the error";
+    QTest::qWait(400); // past the box's minimum duration: it must not come back
+    for (QProgressDialog* b : dialog->findChildren<QProgressDialog*>()) EXPECT_FALSE(b->isVisible());
+    dialog->close();
 }
 
 // Keyboard use of the grid.

@@ -20,7 +20,7 @@ namespace marbler {
 
 /// What `meta.generator` says of a genome made by randomGenome; bump it when the same seed
 /// starts giving a different design.
-inline constexpr const char* GeneratorVersion = "marbler-random-1";
+inline constexpr const char* GeneratorVersion = "marbler-random-2";
 
 /// A complete random genome of dimension 2 or 3 (1000 units a side), with
 /// meta {"name", "seed", "generator"}. Throws InputError for another dimension.
@@ -37,7 +37,14 @@ std::vector<Operation> randomInitial(Pcg32& rng, int dimension, const glm::dvec3
 /// A few strokes from the traditional families (at least one, at most about ten).
 std::vector<Operation> randomStrokes(Pcg32& rng, int dimension, const glm::dvec3& size);
 
-/// An evocative two-word name ("Saffron Tide") for a seed.
-std::string randomName(std::uint64_t seed);
+/// The colour word nearest an sRGB colour ("Cobalt", "Saffron", "Slate", ...), from a fixed
+/// table of pigment and stone names.
+std::string colorWord(Color color);
+/// The palette index of a design's main ink: the one covering the most of its initial state
+/// (-1 for an empty palette).
+int mainInk(const Genome& genome);
+/// An evocative two-word name for a design: the colour word of its main ink and a noun drawn
+/// from the seed ("Cobalt Tide" for a mostly blue design), so names never contradict colours.
+std::string randomName(std::uint64_t seed, const Genome& genome);
 
 } // namespace marbler

@@ -19,6 +19,14 @@
 /// then it draws a new palette instead, unless that too is locked. No operator touches a locked
 /// part; with everything locked a child has the home parent's content.
 ///
+/// Every child is worth a cell: no two children of a request are equal, and none equals a
+/// parent (genomes compared without `meta`, by genomeId). A draw that repeats one is drawn
+/// again (alter, recombine, reinit); what still repeats (swap, which has exactly two results,
+/// alter at strength 0, recombine of parents with few strokes) becomes a gentle variation of
+/// itself (alterGenome at VariationStrength, more on a further repeat), recorded in
+/// `meta.lineage.variation`. So swap gives the two swaps, then variations of them in turn.
+/// Only a home parent with everything locked can still give copies: nothing may change.
+///
 /// Colour indices that another palette does not have (swap, recombine) are clamped to its last
 /// ink. Children keep the home parent's free-form `meta` (name with a generation suffix,
 /// locks, author...) except `seed`, `generator`, `id` and `lineage`, which they set anew.
@@ -71,18 +79,30 @@ struct BreedRequest {
     std::uint64_t seed = 0;
     int count = 8;
     double strength = 0.5; ///< alteration strength, 0..1
+    /// The generation the children record (meta.lineage.generation and the name's " (gN #K)");
+    /// default 1 + the parents' largest. The window passes its own generation number.
+    std::optional<int> generation;
+    /// The number each child's name carries (" #K"); default 1, 2, ... (the child's index).
+    /// The window passes the design (cell) number each child goes to.
+    std::vector<int> childNumbers;
 };
+
+/// How far a child is altered when the operator's own result repeats a design already in the
+/// generation (see above): gentle, so it stays recognisably that result.
+inline constexpr double VariationStrength = 0.12;
 
 /// The most children one request may ask for.
 inline constexpr int MaxChildren = 1000;
 
 /// The children of a request. Each child's `meta.lineage` holds {parents: [ids], operator,
-/// seed, child (1-based index), generation (1 + the parents' largest)} (alter adds strength)
-/// and `meta.id` its own id. Child i draws from a Pcg32 stream derived from (seed, i) alone,
-/// so the same request gives the same children and asking for more children keeps the
-/// first ones. Every child passes validateGenome. Throws InputError for a wrong parent count,
-/// mixed dimensions, an invalid parent, a count outside [1, MaxChildren] or a strength outside
-/// [0, 1].
+/// seed, child (1-based index), generation (1 + the parents' largest)} (alter adds strength; a
+/// varied child adds variation: {of: the id of the repeated design, strength}) and `meta.id`
+/// its own id. Child i draws from a Pcg32 stream derived from (seed, i) alone (and is checked
+/// against the children before it), so the same request gives the same children and asking
+/// for more children keeps the first ones. Every child passes validateGenome. Throws
+/// InputError for a wrong parent count, mixed dimensions, an invalid parent, a count outside
+/// [1, MaxChildren], a strength outside [0, 1], a generation below 1 or childNumbers that are
+/// neither empty nor one per child.
 std::vector<Genome> breed(const BreedRequest& request);
 
 /// The single operators, without lineage (breed adds it). Each returns a new genome whose
