@@ -14,7 +14,8 @@
 // distance to the centre or axis, the shift alpha lambda / (d + lambda), two sines that are the
 // wave's two terms or the turn's sine and cosine) are computed once per operation.
 //
-// Record layout (classes: 0 push with a square root, 1 push with a cube root (3D drop),
+// Record layout (classes, the registry's ShaderForm in genome/include/marbler/Params.h, which names
+// each tool's: 0 push with a square root, 1 push with a cube root (3D drop),
 // 2 translation by the distance-dependent shift (line, comb), 3 translation by the wave's shift,
 // 4 turn (circle, sphere, vortex); spray is a push of strength 0):
 //   o0 = (centre - R, r^2 of the ink test or -1 (no ink))

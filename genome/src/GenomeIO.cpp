@@ -125,14 +125,14 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
                           "\"" + std::string(tool.name) + "\" is not available in " + std::to_string(dimension) + "D");
     if (inInitial && !allowedInInitial(op.tool, dimension))
         throw GenomeError(name, member(where, "tool"),
-                          "\"" + std::string(tool.name) +
-                              "\" is not allowed in initial (only drop, spray and, in 3D, cylinder)");
+                          "\"" + std::string(tool.name) + "\" is not allowed in initial (only " +
+                              initialToolsText() + ")");
     std::span<const ParamSpec> params = tool.params(dimension);
     for (const ParamSpec& spec : params) {
         std::string key = member(where, spec.key);
-        if (spec.kind == ParamKind::Shape) {
-            if (op.shape != WaveShape::Eggcrate && op.shape != WaveShape::Ripple)
-                throw GenomeError(name, key, "must be \"eggcrate\" or \"ripple\"");
+        if (spec.kind == ParamKind::Choice) {
+            auto index = static_cast<std::size_t>(getComponent(spec, op, 0));
+            if (index >= spec.choices.size()) throw GenomeError(name, key, spec.describeChoices());
             continue;
         }
         if (spec.kind == ParamKind::Color) {
@@ -316,24 +316,22 @@ private:
                                             (tool->in3D ? "3D" : "2D") + " only)");
         if (inInitial && !allowedInInitial(tool->tool, dimension))
             fail(member(where, "tool"),
-                 describe(toolName) + " is not allowed in initial (only drop, spray and, in 3D, cylinder)");
+                 describe(toolName) + " is not allowed in initial (only " + initialToolsText() + ")");
 
         Operation op;
         op.tool = tool->tool;
         std::span<const ParamSpec> params = tool->params(dimension);
-        // The shape decides how many numbers the wave's pairs hold, so it is read first.
-        if (const ParamSpec* shape = findParam(params, ParamField::Shape)) {
-            std::string at = member(where, shape->key);
-            const Json& value = require(entry, where, shape->key);
-            if (value == "eggcrate")
-                op.shape = WaveShape::Eggcrate;
-            else if (value == "ripple")
-                op.shape = WaveShape::Ripple;
-            else
-                fail(at, "must be \"eggcrate\" or \"ripple\" (got " + describe(value) + ")");
+        // Choices (a wave's shape) decide how many numbers the wave's pairs hold, so they are
+        // read first.
+        for (const ParamSpec& spec : params) {
+            if (spec.kind != ParamKind::Choice) continue;
+            const Json& value = require(entry, where, spec.key);
+            int index = value.is_string() ? spec.choiceIndex(value.get<std::string>()) : -1;
+            if (index < 0) fail(member(where, spec.key), spec.describeChoices() + " (got " + describe(value) + ")");
+            setComponent(spec, op, 0, index);
         }
         for (const ParamSpec& spec : params) {
-            if (spec.kind == ParamKind::Shape) continue;
+            if (spec.kind == ParamKind::Choice) continue;
             std::string at = member(where, spec.key);
             const Json& value = require(entry, where, spec.key);
             int count = componentCount(spec, op, dimension);
@@ -429,8 +427,8 @@ Json operationJson(const Operation& op, int dimension) {
     for (const ParamSpec& spec : toolSpec(op.tool).params(dimension)) {
         std::string key(spec.key);
         int count = componentCount(spec, op, dimension);
-        if (spec.kind == ParamKind::Shape) {
-            entry[key] = op.shape == WaveShape::Ripple ? "ripple" : "eggcrate";
+        if (spec.kind == ParamKind::Choice) {
+            entry[key] = std::string(spec.choices[static_cast<std::size_t>(getComponent(spec, op, 0))]);
         } else if (spec.kind == ParamKind::Color) {
             entry[key] = op.color;
         } else if (spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction || (spec.pair && count == 2)) {

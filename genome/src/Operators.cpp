@@ -44,12 +44,33 @@ double reflectInto(double v, double lo, double hi) {
     return lo + (t <= span ? t : 2.0 * span - t);
 }
 
+/// Brings a mutated value back into the table's range: a bound reflects it (as at the design's
+/// edges), and an open bound keeps it `margin` clear of the bound. Values the range accepts are
+/// returned unchanged.
+double keepInRange(const ParamRange& range, double v, double margin) {
+    const bool hasMin = std::isfinite(range.min), hasMax = std::isfinite(range.max);
+    if (hasMin && hasMax) {
+        v = reflectInto(v, range.min, range.max);
+    } else if (hasMin) {
+        v = range.min + std::abs(v - range.min);
+    } else if (hasMax) {
+        v = range.max - std::abs(range.max - v);
+    }
+    if (range.minOpen) {
+        double floor = range.min + margin;
+        if (hasMax && !(floor < range.max)) floor = 0.5 * (range.min + range.max);
+        v = std::max(v, floor);
+    }
+    return v;
+}
+
 /// Perturbs every numeric parameter of one entry by its table's mutation scale. The tool,
 /// the 3D wave's shape and ink colours stay: they are the "sequence of tools", not its
 /// parameters.
 void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
     const double side = largestSide(g);
     const double floorLength = 1e-3 * side; // lengths stay clearly > 0
+    constexpr double AngleMargin = 1e-3;    // degrees, for an angle whose range is open
     const glm::dvec3 before = op.direction, beforeNormal = op.normal;
     bool hasFrame = false;
     for (const ParamSpec& spec : toolSpec(op.tool).params(g.dimension)) {
@@ -61,7 +82,7 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
                 double moved = v + rng.normal() * spec.mutationScale * strength * side;
                 // Centres inside the design stay inside; ones a user put outside roam freely.
                 if (v >= 0.0 && v <= g.size[i]) moved = reflectInto(moved, 0.0, g.size[i]);
-                setComponent(spec, op, i, moved);
+                setComponent(spec, op, i, keepInRange(spec.range, moved, floorLength));
             }
             break;
         case ParamKind::Direction: {
@@ -82,19 +103,19 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
                 double v = getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength;
                 // Keep angles in a readable range; only whole turns are removed, so nothing moves.
                 if (std::abs(v) > 360.0) v = std::fmod(v, 360.0);
-                setComponent(spec, op, i, v);
+                setComponent(spec, op, i, keepInRange(spec.range, v, AngleMargin));
             }
             break;
         case ParamKind::Length:
         case ParamKind::Shift:
             for (int i = 0; i < n; ++i) {
                 double v = getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side;
-                if (spec.positive()) v = std::max(std::abs(v), floorLength);
-                setComponent(spec, op, i, v);
+                // Lengths that must be > 0 stay clearly so.
+                setComponent(spec, op, i, keepInRange(spec.range, v, floorLength));
             }
             break;
         case ParamKind::Color:
-        case ParamKind::Shape: break;
+        case ParamKind::Choice: break;
         }
     }
     if (hasFrame) {

@@ -1,5 +1,6 @@
 #include "marbler/Params.h"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -26,7 +27,10 @@ constexpr ParamSpec Spacing{"spacing", F::Spacing, K::Length, "design units", "d
 constexpr ParamSpec Amplitude{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02};
 constexpr ParamSpec Wavelength{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05};
 constexpr ParamSpec Phase{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0};
-constexpr ParamSpec Shape{"shape", F::Shape, K::Shape, "", "\"eggcrate\" or \"ripple\"", AnyNumber, 0.0, 0.0};
+// In the order of WaveShape.
+constexpr std::array<std::string_view, 2> WaveShapes{"eggcrate", "ripple"};
+static_assert(WaveShapes.size() == static_cast<std::size_t>(WaveShape::Ripple) + 1);
+constexpr ParamSpec Shape{"shape", F::Shape, K::Choice, "", "shape of the wave", AnyNumber, 0.0, 0.0, false, WaveShapes};
 constexpr ParamSpec AmplitudePair{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02, true};
 constexpr ParamSpec WavelengthPair{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05, true};
 constexpr ParamSpec PhasePair{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0, true};
@@ -44,17 +48,38 @@ constexpr std::array Circle3{Center, Axis, Radius, Alpha, Lambda};
 constexpr std::array Vortex2{Center, Alpha, Lambda};
 constexpr std::array Vortex3{Center, Axis, Alpha, Lambda};
 
-const std::array<ToolSpec, ToolCount> Tools{{
-    {Tool::Drop, "drop", true, true, true, true, Ink, Ink},
-    {Tool::Spray, "spray", true, true, true, false, Ink, Ink},
-    {Tool::Cylinder, "cylinder", false, true, true, true, {}, Cylinder3},
-    {Tool::Line, "line", true, true, false, true, Line2, Line3},
-    {Tool::Comb, "comb", true, true, false, true, Comb2, Comb3},
-    {Tool::Wave, "wave", true, true, false, true, Wave2, Wave3},
-    {Tool::Circle, "circle", true, true, false, true, Circle2, Circle3},
-    {Tool::Sphere, "sphere", false, true, false, true, {}, Circle3},
-    {Tool::Vortex, "vortex", true, true, false, true, Vortex2, Vortex3},
+using SF = ShaderForm;
+
+/// The registry, in the order of enum Tool.
+constexpr std::array<ToolSpec, ToolCount> Tools{{
+    // tool, JSON name, in 2D, in 3D, lays ink, moves ink, shader form in 2D and 3D, parameters in 2D and 3D
+    {Tool::Drop, "drop", true, true, true, true, SF::PushArea, SF::PushVolume, Ink, Ink},
+    {Tool::Spray, "spray", true, true, true, false, SF::PushArea, SF::PushArea, Ink, Ink},
+    {Tool::Cylinder, "cylinder", false, true, true, true, SF::PushArea, SF::PushArea, {}, Cylinder3},
+    {Tool::Line, "line", true, true, false, true, SF::Shift, SF::Shift, Line2, Line3},
+    {Tool::Comb, "comb", true, true, false, true, SF::Shift, SF::Shift, Comb2, Comb3},
+    {Tool::Wave, "wave", true, true, false, true, SF::WaveShift, SF::WaveShift, Wave2, Wave3},
+    {Tool::Circle, "circle", true, true, false, true, SF::Turn, SF::Turn, Circle2, Circle3},
+    {Tool::Sphere, "sphere", false, true, false, true, SF::Turn, SF::Turn, {}, Circle3},
+    {Tool::Vortex, "vortex", true, true, false, true, SF::Turn, SF::Turn, Vortex2, Vortex3},
 }};
+
+constexpr bool inEnumOrder() {
+    for (std::size_t i = 0; i < Tools.size(); ++i)
+        if (Tools[i].tool != static_cast<Tool>(i) || Tools[i].name.empty()) return false;
+    return true;
+}
+static_assert(inEnumOrder(), "the registry holds every tool once, in the order of enum Tool");
+
+/// Only choice parameters have choices, and every choice parameter has some.
+constexpr bool choicesWhereChosen() {
+    for (const ToolSpec& tool : Tools)
+        for (std::span<const ParamSpec> params : {tool.params2D, tool.params3D})
+            for (const ParamSpec& spec : params)
+                if ((spec.kind == K::Choice) != !spec.choices.empty()) return false;
+    return true;
+}
+static_assert(choicesWhereChosen(), "a Choice parameter lists its choices, no other parameter has any");
 
 glm::dvec3* vectorField(const ParamSpec& spec, Operation& op) {
     switch (spec.field) {
@@ -116,7 +141,36 @@ const ToolSpec* findTool(std::string_view name) {
 }
 
 bool allowedInInitial(Tool tool, int dimension) {
-    return tool == Tool::Drop || tool == Tool::Spray || (tool == Tool::Cylinder && dimension == 3);
+    const ToolSpec& spec = toolSpec(tool);
+    return spec.laysInk && spec.available(dimension);
+}
+
+std::string initialToolsText() {
+    std::string both, only3D;
+    for (const ToolSpec& spec : Tools) {
+        if (!spec.laysInk) continue;
+        std::string& list = spec.in2D ? both : only3D;
+        list += (list.empty() ? "" : ", ") + std::string(spec.name);
+    }
+    if (only3D.empty()) return both;
+    if (both.empty()) return "in 3D, " + only3D;
+    // "drop, spray and, in 3D, cylinder": the last tool of both dimensions loses its comma.
+    return both + " and, in 3D, " + only3D;
+}
+
+int ParamSpec::choiceIndex(std::string_view value) const {
+    for (std::size_t i = 0; i < choices.size(); ++i)
+        if (choices[i] == value) return static_cast<int>(i);
+    return -1;
+}
+
+std::string ParamSpec::describeChoices() const {
+    std::string text = "must be ";
+    for (std::size_t i = 0; i < choices.size(); ++i) {
+        if (i > 0) text += i + 1 == choices.size() ? " or " : ", ";
+        text += "\"" + std::string(choices[i]) + "\"";
+    }
+    return text;
 }
 
 int componentCount(const ParamSpec& spec, const Operation& op, int dimension) {
@@ -130,7 +184,7 @@ double getComponent(const ParamSpec& spec, const Operation& op, int index) {
     if (glm::dvec3* v = vectorField(spec, mutableOp)) return (*v)[index];
     if (spec.pair) return (*pairField(spec, mutableOp))[index];
     if (spec.kind == K::Color) return op.color;
-    if (spec.kind == K::Shape) return static_cast<double>(op.shape);
+    if (spec.kind == K::Choice) return static_cast<double>(op.shape);
     return *scalarField(spec, mutableOp);
 }
 
@@ -141,8 +195,10 @@ void setComponent(const ParamSpec& spec, Operation& op, int index, double value)
         (*pairField(spec, op))[index] = value;
     } else if (spec.kind == K::Color) {
         op.color = static_cast<int>(value);
-    } else if (spec.kind == K::Shape) {
-        op.shape = value >= 0.5 ? WaveShape::Ripple : WaveShape::Eggcrate;
+    } else if (spec.kind == K::Choice) {
+        // The nearest choice: an index within the table's list.
+        double last = static_cast<double>(spec.choices.size()) - 1.0;
+        op.shape = static_cast<WaveShape>(static_cast<int>(std::clamp(std::round(value), 0.0, std::max(0.0, last))));
     } else {
         *scalarField(spec, op) = value;
     }
@@ -153,7 +209,7 @@ Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center) {
     op.tool = tool;
     op.center = dimension == 3 ? center : glm::dvec3(center.x, center.y, 0.0);
     for (const ParamSpec& spec : toolSpec(tool).params(dimension)) {
-        if (spec.kind == K::Position || spec.kind == K::Direction || spec.kind == K::Shape) continue;
+        if (spec.kind == K::Position || spec.kind == K::Direction || spec.kind == K::Choice) continue;
         for (int i = 0; i < componentCount(spec, op, dimension); ++i) setComponent(spec, op, i, spec.defaultValue);
     }
     return op;

@@ -36,19 +36,27 @@ double waveShift(const PreparedOp& op, const glm::dvec3& p) {
     return op.amp[0] * std::sin(op.freq[0] * x + op.phase[0]) + op.amp[1] * std::sin(op.freq[1] * y + op.phase[1]);
 }
 
+/// How circle, sphere and vortex measure the distance d of the shift, the one thing in which
+/// their turns differ.
+enum class Swirl {
+    AboutTheAxis,  ///< 3D circle: rho is the distance to the axis line, d = |rho - r|
+    AboutTheCentre, ///< 2D circle, sphere: rho is the distance to the centre, d = |rho - r|
+    Vortex,        ///< rho is the distance to the centre, d = rho
+};
+
 /// Circle, sphere and vortex: turn P about C (2D) or about the axis line through C (3D) by
 /// theta = l(d) / rho, `sign` +1 forward, -1 inverse. rho is kept by the turn, so the inverse
 /// finds the same angle from Q.
-glm::dvec3 swirl(const PreparedOp& op, const glm::dvec3& p, double sign) {
+glm::dvec3 swirl(const PreparedOp& op, const glm::dvec3& p, double sign, Swirl kind) {
     glm::dvec3 rel = p - op.c;
     double rho;
-    if (op.tool == Tool::Circle && op.dimension == 3) {
+    if (kind == Swirl::AboutTheAxis) {
         rho = glm::length(rel - glm::dot(rel, op.a) * op.a);
     } else {
         rho = glm::length(rel);
     }
     if (!(rho > 0.0)) return p; // the centre (or axis) stays where it is
-    double d = op.tool == Tool::Vortex ? rho : std::abs(rho - op.r);
+    double d = kind == Swirl::Vortex ? rho : std::abs(rho - op.r);
     double theta = sign * shiftFor(op, d) / rho;
     if (op.dimension == 2) {
         double c = std::cos(theta), s = std::sin(theta);
@@ -57,21 +65,31 @@ glm::dvec3 swirl(const PreparedOp& op, const glm::dvec3& p, double sign) {
     return op.c + rotateAbout(rel, op.a, theta);
 }
 
+/// The circle's turn: about its centre in 2D, about its axis in 3D.
+Swirl circleSwirl(const PreparedOp& op) { return op.dimension == 3 ? Swirl::AboutTheAxis : Swirl::AboutTheCentre; }
+
 /// Drop (2D area law, 3D volume law) and cylinder (2D law across the axis): push P radially,
-/// `sign` +1 forward, -1 inverse.
-glm::dvec3 push(const PreparedOp& op, const glm::dvec3& p, double sign) {
+/// `sign` +1 forward, -1 inverse; `acrossAxis` measures from the axis line instead of the centre.
+glm::dvec3 push(const PreparedOp& op, const glm::dvec3& p, double sign, bool acrossAxis) {
     glm::dvec3 rel = p - op.c;
-    if (op.tool == Tool::Cylinder) rel -= glm::dot(rel, op.a) * op.a;
+    if (acrossAxis) rel -= glm::dot(rel, op.a) * op.a;
     double len2 = glm::dot(rel, rel);
     if (!(len2 > 0.0)) return p;
     double factor;
-    if (op.tool == Tool::Drop && op.dimension == 3) {
+    if (op.form == ShaderForm::PushVolume) {
         double len3 = len2 * std::sqrt(len2);
         factor = std::cbrt(std::max(0.0, 1.0 + sign * op.r2 / len3));
     } else {
         factor = std::sqrt(std::max(0.0, 1.0 + sign * op.r2 / len2));
     }
     return p + rel * (factor - 1.0);
+}
+
+/// Drops, sprays and columns: whether P lies in the ink (open boundary).
+bool inDisc(const PreparedOp& op, const glm::dvec3& p, bool acrossAxis) {
+    glm::dvec3 rel = p - op.c;
+    if (acrossAxis) rel -= glm::dot(rel, op.a) * op.a;
+    return glm::dot(rel, rel) < op.r * op.r;
 }
 
 } // namespace
@@ -86,8 +104,10 @@ PreparedOp prepare(const Operation& op, int dimension) {
     p.alphaLambda = op.alpha * op.lambda;
     p.lambda = op.lambda;
     p.spacing = op.spacing;
-    if (op.tool == Tool::Drop || op.tool == Tool::Spray || op.tool == Tool::Cylinder) p.color = op.color;
-    if (op.tool == Tool::Drop && dimension == 3)
+    const ToolSpec& spec = toolSpec(op.tool);
+    p.form = spec.form(dimension);
+    if (spec.laysInk) p.color = op.color;
+    if (p.form == ShaderForm::PushVolume)
         p.r2 = op.radius * op.radius * op.radius;
     else
         p.r2 = op.radius * op.radius;
@@ -121,14 +141,14 @@ std::vector<PreparedOp> prepare(const Genome& genome) {
 glm::dvec3 forwardMap(const PreparedOp& op, const glm::dvec3& p) {
     switch (op.tool) {
     case Tool::Spray: return p;
-    case Tool::Drop:
-    case Tool::Cylinder: return push(op, p, +1.0);
+    case Tool::Drop: return push(op, p, +1.0, false);
+    case Tool::Cylinder: return push(op, p, +1.0, true);
     case Tool::Line: return p + shiftFor(op, std::abs(glm::dot(p - op.c, op.n))) * op.m;
     case Tool::Comb: return p + shiftFor(op, combDistance(glm::dot(p - op.c, op.n), op.spacing)) * op.m;
     case Tool::Wave: return p + waveShift(op, p) * (op.dimension == 2 ? op.m : op.n);
-    case Tool::Circle:
-    case Tool::Sphere:
-    case Tool::Vortex: return swirl(op, p, +1.0);
+    case Tool::Circle: return swirl(op, p, +1.0, circleSwirl(op));
+    case Tool::Sphere: return swirl(op, p, +1.0, Swirl::AboutTheCentre);
+    case Tool::Vortex: return swirl(op, p, +1.0, Swirl::Vortex);
     }
     return p;
 }
@@ -136,29 +156,31 @@ glm::dvec3 forwardMap(const PreparedOp& op, const glm::dvec3& p) {
 glm::dvec3 inverseMap(const PreparedOp& op, const glm::dvec3& q) {
     switch (op.tool) {
     case Tool::Spray: return q;
-    case Tool::Drop:
-    case Tool::Cylinder: return push(op, q, -1.0);
+    case Tool::Drop: return push(op, q, -1.0, false);
+    case Tool::Cylinder: return push(op, q, -1.0, true);
     case Tool::Line: return q - shiftFor(op, std::abs(glm::dot(q - op.c, op.n))) * op.m;
     case Tool::Comb: return q - shiftFor(op, combDistance(glm::dot(q - op.c, op.n), op.spacing)) * op.m;
     case Tool::Wave: return q - waveShift(op, q) * (op.dimension == 2 ? op.m : op.n);
-    case Tool::Circle:
-    case Tool::Sphere:
-    case Tool::Vortex: return swirl(op, q, -1.0);
+    case Tool::Circle: return swirl(op, q, -1.0, circleSwirl(op));
+    case Tool::Sphere: return swirl(op, q, -1.0, Swirl::AboutTheCentre);
+    case Tool::Vortex: return swirl(op, q, -1.0, Swirl::Vortex);
     }
     return q;
 }
 
 bool insideInk(const PreparedOp& op, const glm::dvec3& p) {
-    glm::dvec3 rel = p - op.c;
     switch (op.tool) {
     case Tool::Drop:
-    case Tool::Spray: return glm::dot(rel, rel) < op.r * op.r;
-    case Tool::Cylinder: {
-        glm::dvec3 across = rel - glm::dot(rel, op.a) * op.a;
-        return glm::dot(across, across) < op.r * op.r;
+    case Tool::Spray: return inDisc(op, p, false);
+    case Tool::Cylinder: return inDisc(op, p, true);
+    case Tool::Line:
+    case Tool::Comb:
+    case Tool::Wave:
+    case Tool::Circle:
+    case Tool::Sphere:
+    case Tool::Vortex: return false;
     }
-    default: return false;
-    }
+    return false;
 }
 
 int traceColor(const std::vector<PreparedOp>& ops, glm::dvec3 p, glm::dvec3* where) {

@@ -481,8 +481,15 @@ MARBLER_IVDEP
 
 // ---- 3D -------------------------------------------------------------------------------------
 
+/// What an ink-laying tool does in 3D besides its ink test.
+enum class Push3 {
+    VolumeLaw, ///< drop: the volume law from the centre
+    Column,    ///< cylinder: the area law across the axis (and the ink test across it too)
+    None,      ///< spray: nothing
+};
+
 /// Drop (volume law), spray and cylinder (area law across the axis): ink test, then the push.
-[[gnu::always_inline]] inline std::int64_t ink3(const PreparedOp& op, Tile& t, int n) {
+[[gnu::always_inline]] inline std::int64_t ink3(const PreparedOp& op, Tile& t, int n, Push3 push) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
     double* __restrict z = t.z;
@@ -490,7 +497,7 @@ MARBLER_IVDEP
     const double cx = op.c.x, cy = op.c.y, cz = op.c.z, rr = op.r * op.r, r2 = op.r2;
     const double ax = op.a.x, ay = op.a.y, az = op.a.z;
     std::int64_t inside = 0;
-    if (op.tool == Tool::Cylinder) {
+    if (push == Push3::Column) {
 MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
@@ -508,7 +515,7 @@ MARBLER_IVDEP
             y[i] = moves ? y[i] + dy * (factor - 1.0) : y[i];
             z[i] = moves ? z[i] + dz * (factor - 1.0) : z[i];
         }
-    } else if (op.tool == Tool::Drop) {
+    } else if (push == Push3::VolumeLaw) {
 MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
@@ -597,9 +604,10 @@ MARBLER_IVDEP
     }
 }
 
-/// Circle (about the axis line), sphere and vortex (distance to the centre) in 3D: turn by
-/// -theta about the line through the centre along the axis (Tools.cpp rotateAbout).
-[[gnu::always_inline]] inline void swirl3(const PreparedOp& op, Tile& t, int n) {
+/// Circle (about the axis line: `cylindrical`), sphere and vortex (distance to the centre; a
+/// `vortex` has d = rho) in 3D: turn by -theta about the line through the centre along the axis
+/// (Tools.cpp rotateAbout).
+[[gnu::always_inline]] inline void swirl3(const PreparedOp& op, Tile& t, int n, bool cylindrical, bool vortex) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
     double* __restrict z = t.z;
@@ -609,7 +617,6 @@ MARBLER_IVDEP
     const double cx = op.c.x, cy = op.c.y, cz = op.c.z, ax = op.a.x, ay = op.a.y, az = op.a.z;
     const double r = op.r, al = op.alphaLambda, lambda = op.lambda;
     std::int64_t* __restrict moves = t.flag;
-    const bool cylindrical = op.tool == Tool::Circle, vortex = op.tool == Tool::Vortex;
 MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
@@ -644,8 +651,37 @@ MARBLER_IVDEP
     }
 }
 
+/// Line (`Comb` false) or comb in `Dim` dimensions: the AVX-512 variant's divide-free form, the
+/// others' exact one.
+template <Variant V, int Dim, bool Comb>
+[[gnu::always_inline]] inline void lineOrComb(const PreparedOp& op, Tile& tile, int n) {
+#ifdef MARBLER_X86_VARIANTS
+    if constexpr (V == Variant::Avx512) {
+        lineAvx512<Dim, Comb>(op, tile, n);
+        return;
+    }
+#endif
+    if constexpr (Dim == 2) line2(op, tile, n, Comb);
+    else line3(op, tile, n, Comb);
+}
+
+/// The drop in `Dim` dimensions: the AVX-512 variant's hand-written form (the compaction folded
+/// in), the others' exact one. Returns the number of points left.
+template <Variant V, int Dim>
+[[gnu::always_inline]] inline int drop(const PreparedOp& op, Tile& tile, int n, int* colors) {
+#ifdef MARBLER_X86_VARIANTS
+    if constexpr (V == Variant::Avx512) return dropAvx512<Dim>(op, tile, n, colors);
+#endif
+    std::int64_t inside;
+    if constexpr (Dim == 2) inside = ink2(op, tile, n, true);
+    else inside = ink3(op, tile, n, Push3::VolumeLaw);
+    return inside != 0 ? compact(tile, n, Dim, op.color, colors) : n;
+}
+
 /// The body of every variant: V says which, so only the AVX-512 variant calls the
-/// hand-written drops (which need AVX-512 to run, whatever the variant is compiled for).
+/// hand-written drops (which need AVX-512 to run, whatever the variant is compiled for). One
+/// switch per dimension over every tool, with no default: a tool added to the registry
+/// (Params.h) without its kernel fails the build (-Werror=switch).
 template <Variant V>
 [[gnu::always_inline]] inline std::uint64_t traceTileBody(const PreparedOp* ops, std::size_t count, int dimension,
                                                           Tile& tile, int n, int* colors, double* whereX,
@@ -657,31 +693,12 @@ template <Variant V>
         traversed += static_cast<std::uint64_t>(n);
         if (dimension == 2) {
             switch (op.tool) {
-            case Tool::Drop:
-            case Tool::Spray: {
-#ifdef MARBLER_X86_VARIANTS
-                if constexpr (V == Variant::Avx512) {
-                    if (op.tool == Tool::Drop) {
-                        n = dropAvx512<2>(op, tile, n, colors);
-                        break;
-                    }
-                }
-#endif
-                if (ink2(op, tile, n, op.tool == Tool::Drop) != 0) n = compact(tile, n, 2, op.color, colors);
+            case Tool::Drop: n = drop<V, 2>(op, tile, n, colors); break;
+            case Tool::Spray:
+                if (ink2(op, tile, n, false) != 0) n = compact(tile, n, 2, op.color, colors);
                 break;
-            }
-            case Tool::Line:
-            case Tool::Comb: {
-#ifdef MARBLER_X86_VARIANTS
-                if constexpr (V == Variant::Avx512) {
-                    if (op.tool == Tool::Comb) lineAvx512<2, true>(op, tile, n);
-                    else lineAvx512<2, false>(op, tile, n);
-                    break;
-                }
-#endif
-                line2(op, tile, n, op.tool == Tool::Comb);
-                break;
-            }
+            case Tool::Line: lineOrComb<V, 2, false>(op, tile, n); break;
+            case Tool::Comb: lineOrComb<V, 2, true>(op, tile, n); break;
             case Tool::Wave: wave2(op, tile, n); break;
             case Tool::Circle: swirl2(op, tile, n, false); break;
             case Tool::Vortex: swirl2(op, tile, n, true); break;
@@ -690,34 +707,19 @@ template <Variant V>
             }
         } else {
             switch (op.tool) {
-            case Tool::Drop:
-#ifdef MARBLER_X86_VARIANTS
-                if constexpr (V == Variant::Avx512) {
-                    n = dropAvx512<3>(op, tile, n, colors);
-                    break;
-                }
-#endif
-                [[fallthrough]];
+            case Tool::Drop: n = drop<V, 3>(op, tile, n, colors); break;
             case Tool::Spray:
+                if (ink3(op, tile, n, Push3::None) != 0) n = compact(tile, n, 3, op.color, colors);
+                break;
             case Tool::Cylinder:
-                if (ink3(op, tile, n) != 0) n = compact(tile, n, 3, op.color, colors);
+                if (ink3(op, tile, n, Push3::Column) != 0) n = compact(tile, n, 3, op.color, colors);
                 break;
-            case Tool::Line:
-            case Tool::Comb: {
-#ifdef MARBLER_X86_VARIANTS
-                if constexpr (V == Variant::Avx512) {
-                    if (op.tool == Tool::Comb) lineAvx512<3, true>(op, tile, n);
-                    else lineAvx512<3, false>(op, tile, n);
-                    break;
-                }
-#endif
-                line3(op, tile, n, op.tool == Tool::Comb);
-                break;
-            }
+            case Tool::Line: lineOrComb<V, 3, false>(op, tile, n); break;
+            case Tool::Comb: lineOrComb<V, 3, true>(op, tile, n); break;
             case Tool::Wave: wave3(op, tile, n); break;
-            case Tool::Circle:
-            case Tool::Sphere:
-            case Tool::Vortex: swirl3(op, tile, n); break;
+            case Tool::Circle: swirl3(op, tile, n, true, false); break;
+            case Tool::Sphere: swirl3(op, tile, n, false, false); break;
+            case Tool::Vortex: swirl3(op, tile, n, false, true); break;
             }
         }
     }

@@ -5,6 +5,7 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Operators.h"
 #include "marbler/Params.h"
+#include "marbler/Random.h"
 
 #include <gtest/gtest.h>
 
@@ -198,6 +199,49 @@ TEST_P(Operators, AlterKeepsTheToolSequenceAndStaysValid) {
                     }
             }
         }
+    }
+}
+
+TEST_P(Operators, AlterKeepsEveryParameterOfEveryToolInItsTablesRange) {
+    // Every tool of the registry as a stroke, twice (at its defaults, and with every bounded
+    // number at its bound's edge), altered generation after generation at full strength:
+    // every component of every parameter stays finite and within its table's range.
+    Genome g;
+    g.dimension = dimension();
+    g.palette = {Color{}, Color{10, 20, 30}};
+    for (const ToolSpec& spec : allTools()) {
+        if (!spec.available(dimension())) continue;
+        Operation op = defaultOperation(spec.tool, dimension(), {500, 500, 500});
+        g.operations.push_back(op);
+        for (const ParamSpec& param : spec.params(dimension())) {
+            if (param.kind == ParamKind::Choice || param.kind == ParamKind::Color) continue;
+            for (int i = 0; i < componentCount(param, op, dimension()); ++i) {
+                if (std::isfinite(param.range.min)) setComponent(param, op, i, param.range.min + 1e-3);
+                else if (std::isfinite(param.range.max)) setComponent(param, op, i, param.range.max);
+            }
+        }
+        g.operations.push_back(op);
+    }
+    ASSERT_NO_THROW(validateGenome(g, "start"));
+    Pcg32 rng(99);
+    for (int generation = 0; generation < 200; ++generation) {
+        g = alterGenome(g, 1.0, rng);
+        for (const Operation& op : g.operations) {
+            for (const ParamSpec& param : toolSpec(op.tool).params(dimension())) {
+                const std::string what = std::string(toolSpec(op.tool).name) + "." + std::string(param.key);
+                if (param.kind == ParamKind::Choice) {
+                    EXPECT_LT(getComponent(param, op, 0), double(param.choices.size())) << what;
+                    continue;
+                }
+                for (int i = 0; i < componentCount(param, op, dimension()); ++i) {
+                    double v = getComponent(param, op, i);
+                    ASSERT_TRUE(std::isfinite(v)) << what << " generation " << generation;
+                    ASSERT_TRUE(param.range.contains(v))
+                        << what << "[" << i << "] = " << v << " " << param.range.describe() << ", generation " << generation;
+                }
+            }
+        }
+        ASSERT_NO_THROW(validateGenome(g, "child")) << "generation " << generation;
     }
 }
 

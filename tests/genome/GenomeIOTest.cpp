@@ -411,3 +411,72 @@ TEST(GenomeIO, FailedSaveLeavesTargetAndNoTemporary) {
         EXPECT_NE(std::string(e.what()).find("missing-folder/a.json"), std::string::npos) << e.what();
     }
 }
+
+// ---- The tool registry (Params.h) ------------------------------------------------------------
+
+TEST(Registry, EveryToolIsFoundByItsNameAndSavesAndLoadsInEveryDimension) {
+    for (const ToolSpec& spec : allTools()) {
+        ASSERT_EQ(&toolSpec(spec.tool), &spec);
+        ASSERT_EQ(findTool(spec.name), &spec) << spec.name;
+        EXPECT_TRUE(spec.in2D || spec.in3D) << spec.name;
+        for (int dimension : {2, 3}) {
+            if (!spec.available(dimension)) continue;
+            // Every choice of its choice parameters (a wave's shapes) goes through a file.
+            std::vector<int> choices{0};
+            for (const ParamSpec& param : spec.params(dimension))
+                for (std::size_t k = 1; k < param.choices.size(); ++k) choices.push_back(int(k));
+            for (int choice : choices) {
+                Genome g;
+                g.dimension = dimension;
+                g.palette = {Color{}};
+                Operation op = defaultOperation(spec.tool, dimension, {500, 500, 500});
+                for (const ParamSpec& param : spec.params(dimension))
+                    if (param.kind == ParamKind::Choice) setComponent(param, op, 0, choice);
+                (allowedInInitial(spec.tool, dimension) ? g.initial : g.operations).push_back(op);
+                // (A ripple keeps the egg-crate's second numbers in memory, unsaved: compare files.)
+                std::string file = serializeGenome(g);
+                EXPECT_EQ(serializeGenome(parseGenome(file, "mem")), file) << spec.name << " " << dimension << "D choice " << choice;
+            }
+        }
+    }
+}
+
+TEST(Registry, InkLayingToolsAreTheInitialStateAndPushForms) {
+    for (const ToolSpec& spec : allTools()) {
+        for (int dimension : {2, 3}) {
+            EXPECT_EQ(allowedInInitial(spec.tool, dimension), spec.laysInk && spec.available(dimension)) << spec.name;
+            if (!spec.available(dimension)) continue;
+            bool push = spec.form(dimension) == ShaderForm::PushArea || spec.form(dimension) == ShaderForm::PushVolume;
+            // The shader's push form is the only one with an ink test (tools.glsl).
+            if (spec.laysInk) {
+                EXPECT_TRUE(push) << spec.name;
+            }
+            bool hasColor = false;
+            for (const ParamSpec& param : spec.params(dimension)) hasColor = hasColor || param.kind == ParamKind::Color;
+            EXPECT_EQ(hasColor, spec.laysInk) << spec.name << " " << dimension << "D";
+        }
+    }
+    EXPECT_EQ(initialToolsText(), "drop, spray and, in 3D, cylinder");
+}
+
+TEST(Registry, DefaultsLieInTheirRanges) {
+    for (const ToolSpec& spec : allTools())
+        for (int dimension : {2, 3}) {
+            if (!spec.available(dimension)) continue;
+            Operation op = defaultOperation(spec.tool, dimension, {500, 500, 500});
+            ASSERT_NO_THROW(validateGenome([&] {
+                Genome g;
+                g.dimension = dimension;
+                g.palette = {Color{}};
+                (allowedInInitial(spec.tool, dimension) ? g.initial : g.operations).push_back(op);
+                return g;
+            }(), "defaults")) << spec.name;
+            for (const ParamSpec& param : spec.params(dimension)) {
+                if (param.kind == ParamKind::Choice || param.kind == ParamKind::Position
+                    || param.kind == ParamKind::Direction || param.kind == ParamKind::Color)
+                    continue;
+                EXPECT_TRUE(param.range.contains(param.defaultValue)) << spec.name << "." << param.key;
+                EXPECT_GE(param.mutationScale, 0.0) << spec.name << "." << param.key;
+            }
+        }
+}

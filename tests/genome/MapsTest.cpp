@@ -39,7 +39,8 @@ Json wrap(const Json& op, int dimension) {
     genome["background"] = "#000000";
     genome["palette"] = Json::array();
     for (int i = 0; i < 16; ++i) genome["palette"].push_back("#102030");
-    bool initial = op["tool"] == "drop" || op["tool"] == "spray" || op["tool"] == "cylinder";
+    const ToolSpec* tool = findTool(op["tool"].get<std::string>());
+    bool initial = tool && allowedInInitial(tool->tool, dimension);
     genome["initial"] = initial ? Json::array({op}) : Json::array();
     genome["operations"] = initial ? Json::array() : Json::array({op});
     return genome;
@@ -78,6 +79,33 @@ TEST(Maps, ConformanceCases) {
         }
     }
     EXPECT_GT(checked, 1000u);
+}
+
+TEST(Maps, ConformanceCasesCoverEveryToolOfTheRegistry) {
+    // A tool without conformance cases fails here rather than going unchecked: every tool in
+    // every dimension it exists in, and every choice of its choice parameters (a wave's shapes).
+    const Json maps = readJson("maps.json");
+    const Json& cases = maps["cases"];
+    for (int dimension : {2, 3}) {
+        for (const ToolSpec& spec : allTools()) {
+            if (!spec.available(dimension)) continue;
+            const std::string name(spec.name);
+            int count = 0;
+            for (const Json& entry : cases)
+                if (entry["dimension"] == dimension && entry["op"]["tool"] == name) ++count;
+            EXPECT_GE(count, 2) << "maps.json has no conformance cases for " << spec.name << " in " << dimension << "D";
+            for (const ParamSpec& param : spec.params(dimension)) {
+                for (std::string_view choice : param.choices) {
+                    bool seen = false;
+                    for (const Json& entry : cases)
+                        seen = seen || (entry["dimension"] == dimension && entry["op"]["tool"] == name
+                                        && entry["op"].value(std::string(param.key), std::string()) == choice);
+                    EXPECT_TRUE(seen) << "maps.json has no " << spec.name << " with " << param.key << " \"" << choice
+                                      << "\" in " << dimension << "D";
+                }
+            }
+        }
+    }
 }
 
 TEST(Maps, ConformanceProbes) {
@@ -167,8 +195,10 @@ bool smoothAt(const PreparedOp& op, const glm::dvec3& p) {
     }
     case Tool::Sphere: return glm::length(rel) > 20.0 && std::abs(glm::length(rel) - op.r) > Margin;
     case Tool::Vortex: return glm::length(rel) > 20.0;
-    default: return true;
+    case Tool::Spray:
+    case Tool::Wave: return true; // smooth everywhere
     }
+    return true;
 }
 
 double jacobianDeterminant(const PreparedOp& op, const glm::dvec3& p, int dimension) {
@@ -217,8 +247,10 @@ TEST(Maps, ForwardPushesOutOfTheInk) {
     // What a drop or column moves ends up outside its ink, so the inverse is defined there.
     Pcg32 rng(7);
     for (int dimension : {2, 3}) {
-        for (Tool tool : {Tool::Drop, Tool::Cylinder}) {
-            if (!toolSpec(tool).available(dimension)) continue;
+        for (const ToolSpec& spec : allTools()) {
+            // Every ink-laying tool that moves ink: drop and cylinder.
+            if (!spec.laysInk || !spec.movesInk || !spec.available(dimension)) continue;
+            const Tool tool = spec.tool;
             for (int trial = 0; trial < 20; ++trial) {
                 PreparedOp op = prepare(randomOperation(rng, tool, dimension), dimension);
                 for (int i = 0; i < 100; ++i) {

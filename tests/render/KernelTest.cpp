@@ -102,8 +102,12 @@ bool exactTool(Tool tool, int dimension) {
     case Tool::Comb:
     case Tool::Cylinder: return true;
     case Tool::Drop: return dimension == 2;
-    default: return false;
+    case Tool::Wave:
+    case Tool::Circle:
+    case Tool::Sphere:
+    case Tool::Vortex: return false;
     }
+    return false;
 }
 
 /// Runs each test with one kernel variant forced, and puts back the environment's choice.

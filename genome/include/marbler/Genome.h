@@ -17,7 +17,7 @@
 
 namespace marbler {
 
-/// Every tool of the format. The order is the order of the parameter tables (Params.h).
+/// Every tool of the format, in the order of the registry (Params.h), which a static_assert holds.
 enum class Tool : std::uint8_t { Drop, Spray, Cylinder, Line, Comb, Wave, Circle, Sphere, Vortex };
 inline constexpr int ToolCount = 9;
 

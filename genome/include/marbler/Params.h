@@ -1,6 +1,10 @@
 #pragma once
-/// Parameters as data: one table per tool and dimension, read by the loader and validator, the
-/// saver, the random generator and the genetic operators (and later the editor's widgets).
+/// The registry of tools: one entry per tool (its name, the dimensions it exists in, whether it
+/// lays ink, the shader form it is packed into, its parameters with kind, unit, range, default,
+/// mutation scale and enumerated choices). The loader and validator, the saver, the random
+/// generator, the genetic operators, the scalar maps, the vector kernel and the shader packing
+/// read it (and later the editor's widgets); the tests iterate it, so a tool added here without
+/// its maps, kernel, shader and conformance cases fails the build or the tests.
 
 #include "marbler/Genome.h"
 
@@ -20,7 +24,7 @@ enum class ParamKind : std::uint8_t {
     Shift,     ///< signed design units (alpha, amplitude)
     Phase,     ///< degrees, any value
     Color,     ///< integer index into the palette
-    Shape,     ///< the 3D wave shape, `"eggcrate"` or `"ripple"`
+    Choice,    ///< one of the spec's `choices` (a 3D wave's shape), held as its index
 };
 
 /// Which field of Operation a parameter lives in.
@@ -60,30 +64,53 @@ struct ParamSpec {
     bool positive() const { return range.minOpen && range.min == 0.0; }
     /// True for a 3D wave's per-axis pairs: two numbers for an egg-crate, one for a ripple.
     bool pair = false;
+    /// A Choice's JSON values, in the order of the enum they stand for.
+    std::span<const std::string_view> choices = {};
+
+    /// The index of `value` among the choices; -1 when it is none of them.
+    int choiceIndex(std::string_view value) const;
+    /// What the validator says when a choice is none of them, e.g. `must be "eggcrate" or "ripple"`.
+    std::string describeChoices() const;
 };
 
-/// The tools and their tables.
+/// The shared forms of the branch-free shader body (shaders/tools.glsl), numbered as its
+/// classes: the GL back end packs each tool into the coefficients of its form.
+enum class ShaderForm : std::uint8_t {
+    PushArea = 0,   ///< radial push by the area law, from a centre or across an axis
+    PushVolume = 1, ///< radial push by the volume law (3D drop)
+    Shift = 2,      ///< translation by the distance-dependent shift (line, comb)
+    WaveShift = 3,  ///< translation by a wave's shift
+    Turn = 4,       ///< turn about a centre or an axis (circle, sphere, vortex)
+};
+
+/// One entry of the registry.
 struct ToolSpec {
     Tool tool;
     std::string_view name; ///< as in JSON
     bool in2D, in3D;
-    bool laysInk;          ///< drop, spray, cylinder
+    /// Lays ink (drop, spray, cylinder): has a colour, is seen where a point lies in it, and is
+    /// the only kind of tool `initial` holds.
+    bool laysInk;
     bool movesInk;         ///< everything but spray
+    ShaderForm form2D, form3D;
     std::span<const ParamSpec> params2D;
     std::span<const ParamSpec> params3D;
 
     std::span<const ParamSpec> params(int dimension) const { return dimension == 3 ? params3D : params2D; }
     bool available(int dimension) const { return dimension == 3 ? in3D : in2D; }
+    ShaderForm form(int dimension) const { return dimension == 3 ? form3D : form2D; }
 };
 
-/// The table of a tool.
+/// The entry of a tool.
 const ToolSpec& toolSpec(Tool tool);
 /// All tools, in enum order.
 std::span<const ToolSpec> allTools();
 /// The tool of a JSON name; nullptr when unknown.
 const ToolSpec* findTool(std::string_view name);
-/// Whether a tool may appear in `initial` (drop, spray, and cylinder in 3D).
+/// Whether a tool may appear in `initial`: the ink-laying tools of that dimension.
 bool allowedInInitial(Tool tool, int dimension);
+/// The tools `initial` may hold, for messages: "drop, spray and, in 3D, cylinder".
+std::string initialToolsText();
 
 /// Read or write the scalar components of a parameter. A Position/Direction has `dimension`
 /// components, a pair 2 (egg-crate) or 1, everything else 1.

@@ -7,6 +7,7 @@
 /// prepared records, and the tests hold them to these.
 
 #include "marbler/Genome.h"
+#include "marbler/Params.h"
 
 #include <glm/vec3.hpp>
 
@@ -19,6 +20,7 @@ struct PreparedOp {
     Tool tool = Tool::Drop;
     int dimension = 2;
     WaveShape shape = WaveShape::Eggcrate;
+    ShaderForm form = ShaderForm::PushArea; ///< the tool's form in this dimension (Params.h)
     int color = -1;         ///< palette index for ink-laying tools, else -1
     glm::dvec3 c{0.0};      ///< center or origin
     glm::dvec3 m{1, 0, 0};  ///< motion direction M (line, comb, wave 2D), wave 3D u

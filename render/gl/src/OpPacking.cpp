@@ -5,8 +5,36 @@
 namespace marbler::gl {
 namespace {
 
-/// The shared forms of tools.glsl.
-enum Form { PushSqrt = 0, PushCbrt = 1, Shift = 2, WaveShift = 3, Turn = 4 };
+// The registry's shader forms are the classes of tools.glsl (its "Record layout").
+static_assert(static_cast<int>(ShaderForm::PushArea) == 0 && static_cast<int>(ShaderForm::PushVolume) == 1
+              && static_cast<int>(ShaderForm::Shift) == 2 && static_cast<int>(ShaderForm::WaveShift) == 3
+              && static_cast<int>(ShaderForm::Turn) == 4);
+
+/// One record's coefficients besides its centre, ink and form (see tools.glsl).
+struct Coefficients {
+    glm::dvec3 projected{0.0}, direction{0.0}, u{0.0}, v{0.0};
+    double radial = 0.0, radius = 0.0;
+    double p5[4] = {0, 0, 0, 0}, p6[2] = {0, 0};
+};
+
+/// Line and comb: the shift along M by the distance along N (to the nearest tine of a comb).
+void shiftCoefficients(const PreparedOp& op, double spacing, Coefficients& k) {
+    k.direction = op.m;
+    k.u = op.n;
+    k.p5[0] = op.alphaLambda;
+    k.p5[1] = op.lambda;
+    k.p5[2] = spacing;
+}
+
+/// Circle, sphere and vortex: the turn about `axis` (2D: z), d = |rho - radius| with rho
+/// measured across `projected` (zero: from the centre).
+void turnCoefficients(const PreparedOp& op, const glm::dvec3& projected, double radius, Coefficients& k) {
+    k.direction = op.dimension == 2 ? glm::dvec3(0.0, 0.0, 1.0) : op.a;
+    k.projected = projected;
+    k.radius = radius;
+    k.p5[0] = op.alphaLambda;
+    k.p5[1] = op.lambda;
+}
 
 } // namespace
 
@@ -21,70 +49,51 @@ std::vector<float> packOps(const std::vector<PreparedOp>& ops, const glm::dvec3&
     };
     // freq = 2 pi / wavelength; the shader wants cycles per unit to reduce the argument.
     const double cycles = 0.5 / std::numbers::pi;
-    const glm::dvec3 zero(0.0), zAxis(0.0, 0.0, 1.0);
     for (const PreparedOp& op : ops) {
         const bool flat = op.dimension == 2;
         glm::dvec3 c = op.c - reference;
         if (flat) c.z = 0.0; // 2D points live at z = 0 whatever the reference
-        const bool inks = op.color >= 0 && (op.tool == Tool::Drop || op.tool == Tool::Spray || op.tool == Tool::Cylinder);
-        glm::dvec3 projected = zero, direction = zero, u = zero, v = zero;
-        double form = PushSqrt, radial = 0.0, radius = 0.0;
-        double p5[4] = {0, 0, 0, 0}, p6[2] = {0, 0};
+        const bool inks = op.color >= 0 && toolSpec(op.tool).laysInk;
+        Coefficients k;
+        // Every tool, no default: a tool added to the registry without its packing fails the
+        // build (-Werror=switch).
         switch (op.tool) {
-        case Tool::Drop:
-            form = flat ? PushSqrt : PushCbrt;
-            p5[0] = op.r2;
-            break;
+        case Tool::Drop: k.p5[0] = op.r2; break;
         case Tool::Spray: break; // a push of strength 0: moves nothing
         case Tool::Cylinder:
-            projected = op.a;
-            p5[0] = op.r2;
+            k.projected = op.a;
+            k.p5[0] = op.r2;
             break;
-        case Tool::Line:
-        case Tool::Comb:
-            form = Shift;
-            direction = op.m;
-            u = op.n;
-            p5[0] = op.alphaLambda;
-            p5[1] = op.lambda;
-            p5[2] = op.tool == Tool::Comb ? op.spacing : 0.0;
-            break;
+        case Tool::Line: shiftCoefficients(op, 0.0, k); break;
+        case Tool::Comb: shiftCoefficients(op, op.spacing, k); break;
         case Tool::Wave:
-            form = WaveShift;
             if (flat) {
-                direction = op.m;
-                u = op.n;
+                k.direction = op.m;
+                k.u = op.n;
             } else {
-                direction = op.n;
-                u = op.m;
-                v = op.v;
-                radial = op.shape == WaveShape::Ripple ? 1.0 : 0.0;
+                k.direction = op.n;
+                k.u = op.m;
+                k.v = op.v;
+                k.radial = op.shape == WaveShape::Ripple ? 1.0 : 0.0;
             }
-            p5[0] = op.amp[0];
-            p5[1] = flat || radial > 0.0 ? 0.0 : op.amp[1];
-            p5[2] = op.freq[0] * cycles;
-            p5[3] = op.freq[1] * cycles;
-            p6[0] = op.phase[0];
-            p6[1] = op.phase[1];
+            k.p5[0] = op.amp[0];
+            k.p5[1] = flat || k.radial > 0.0 ? 0.0 : op.amp[1];
+            k.p5[2] = op.freq[0] * cycles;
+            k.p5[3] = op.freq[1] * cycles;
+            k.p6[0] = op.phase[0];
+            k.p6[1] = op.phase[1];
             break;
-        case Tool::Circle:
-        case Tool::Sphere:
-        case Tool::Vortex:
-            form = Turn;
-            direction = flat ? zAxis : op.a;
-            if (op.tool == Tool::Circle && !flat) projected = op.a;
-            radius = op.tool == Tool::Vortex ? 0.0 : op.r;
-            p5[0] = op.alphaLambda;
-            p5[1] = op.lambda;
-            break;
+        case Tool::Circle: turnCoefficients(op, flat ? glm::dvec3(0.0) : op.a, op.r, k); break;
+        case Tool::Sphere: turnCoefficients(op, glm::dvec3(0.0), op.r, k); break;
+        case Tool::Vortex: turnCoefficients(op, glm::dvec3(0.0), 0.0, k); break; // d = rho
         }
         put(c, inks ? op.r * op.r : -1.0);
-        put(projected, inks ? op.color : -1);
-        put(direction, form);
-        put(u, radial);
-        put(v, radius);
-        out.insert(out.end(), {float(p5[0]), float(p5[1]), float(p5[2]), float(p5[3])});
-        out.insert(out.end(), {float(p6[0]), float(p6[1]), 0.0f, 0.0f});
+        put(k.projected, inks ? op.color : -1);
+        put(k.direction, static_cast<double>(op.form));
+        put(k.u, k.radial);
+        put(k.v, k.radius);
+        out.insert(out.end(), {float(k.p5[0]), float(k.p5[1]), float(k.p5[2]), float(k.p5[3])});
+        out.insert(out.end(), {float(k.p6[0]), float(k.p6[1]), 0.0f, 0.0f});
     }
     return out;
 }
