@@ -41,7 +41,7 @@ echo "== the window: launch to the first population shown sharp (median of 5)"
 cat >"$OUT/window.sh" <<SCRIPT
 #!/usr/bin/env bash
 export HOME=\$(mktemp -d) XDG_CONFIG_HOME= XDG_DATA_HOME=
-MARBLER_EXIT_WHEN_SHOWN=1 "$PWD/$M" --flat --seed 7 | sed -n 's/^first population shown \([0-9.]*\) s.*/\1/p'
+MARBLER_EXIT_WHEN_SHOWN=1 "$PWD/$M" --flat --seed 7 2>/dev/null | sed -n 's/^first population shown \([0-9.]*\) s.*/\1/p'
 rm -rf "\$HOME"
 SCRIPT
 chmod +x "$OUT/window.sh"
