@@ -1,5 +1,9 @@
 #include "TestUtil.h"
 
+#include "marbler/Params.h"
+
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -74,6 +78,36 @@ RunResult runMarbler(const std::vector<std::string>& args, const std::vector<Env
     std::filesystem::remove(outPath);
     std::filesystem::remove(errPath);
     return result;
+}
+
+void addToolsUsed(const Genome& genome, std::set<std::string>& seen) {
+    const int dimension = genome.dimension;
+    for (const std::vector<Operation>* list : {&genome.initial, &genome.operations}) {
+        for (const Operation& op : *list) {
+            const ToolSpec& spec = toolSpec(op.tool);
+            const std::string tool = std::to_string(dimension) + "D " + std::string(spec.name);
+            seen.insert(tool);
+            for (const ParamSpec& param : spec.params(dimension))
+                if (!param.choices.empty())
+                    seen.insert(tool + " " + std::string(param.key) + "=" +
+                                std::string(param.choices[std::size_t(getComponent(param, op, 0))]));
+        }
+    }
+}
+
+void expectEveryRegistryTool(const std::set<std::string>& seen, const std::string& what) {
+    for (int dimension : {2, 3}) {
+        for (const ToolSpec& spec : allTools()) {
+            if (!spec.available(dimension)) continue;
+            const std::string tool = std::to_string(dimension) + "D " + std::string(spec.name);
+            EXPECT_TRUE(seen.count(tool)) << what << " " << tool;
+            for (const ParamSpec& param : spec.params(dimension))
+                for (std::string_view choice : param.choices) {
+                    const std::string chosen = tool + " " + std::string(param.key) + "=" + std::string(choice);
+                    EXPECT_TRUE(seen.count(chosen)) << what << " " << chosen;
+                }
+        }
+    }
 }
 
 } // namespace marbler::test

@@ -1,8 +1,11 @@
 #pragma once
 /// Helpers shared by the test executables.
 
+#include "marbler/Genome.h"
+
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <utility>
 #include <string>
 #include <vector>
@@ -35,5 +38,14 @@ using EnvChange = std::pair<std::string, std::optional<std::string>>;
 
 /// As runMarbler, with these changes to the environment the child inherits.
 RunResult runMarbler(const std::vector<std::string>& args, const std::vector<EnvChange>& env);
+
+/// Adds the tools `genome` uses to `seen`, named "2D wave", and for each choice parameter also
+/// "3D wave shape=ripple".
+void addToolsUsed(const Genome& genome, std::set<std::string>& seen);
+
+/// Fails the test for every tool of the registry, in every dimension it exists in and with every
+/// choice of its choice parameters, that `seen` (as addToolsUsed names them) lacks; `what`
+/// completes the message ("no baseline renders").
+void expectEveryRegistryTool(const std::set<std::string>& seen, const std::string& what);
 
 } // namespace marbler::test

@@ -106,43 +106,12 @@ void expectMatchesCpu(const Genome& genome, const RenderSettings& settings, cons
     }
 }
 
-/// "2D wave", and for each choice parameter "3D wave shape=ripple": the tools of the sample
-/// genomes, as BaselineTest names them.
-std::set<std::string> toolsOfSamples() {
-    std::set<std::string> seen;
-    for (const NamedGenome& g : sampleGenomes()) {
-        const int dimension = g.genome.dimension;
-        for (const std::vector<Operation>* list : {&g.genome.initial, &g.genome.operations}) {
-            for (const Operation& op : *list) {
-                const ToolSpec& spec = toolSpec(op.tool);
-                const std::string tool = std::to_string(dimension) + "D " + std::string(spec.name);
-                seen.insert(tool);
-                for (const ParamSpec& param : spec.params(dimension))
-                    if (!param.choices.empty())
-                        seen.insert(tool + " " + std::string(param.key) + "=" +
-                                    std::string(param.choices[std::size_t(getComponent(param, op, 0))]));
-            }
-        }
-    }
-    return seen;
-}
-
 TEST(GlVsCpuCoverage, SampleGenomesHoldEveryToolOfTheRegistry) {
     // The shaders are held to the CPU renderer on the sample genomes, so a tool they lack
     // would go unchecked: a new tool without a sample fails here, with or without GL.
-    const std::set<std::string> seen = toolsOfSamples();
-    for (int dimension : {2, 3}) {
-        for (const ToolSpec& spec : allTools()) {
-            if (!spec.available(dimension)) continue;
-            const std::string tool = std::to_string(dimension) + "D " + std::string(spec.name);
-            EXPECT_TRUE(seen.count(tool)) << "no sample genome holds " << tool;
-            for (const ParamSpec& param : spec.params(dimension))
-                for (std::string_view choice : param.choices) {
-                    const std::string chosen = tool + " " + std::string(param.key) + "=" + std::string(choice);
-                    EXPECT_TRUE(seen.count(chosen)) << "no sample genome holds " << chosen;
-                }
-        }
-    }
+    std::set<std::string> seen;
+    for (const NamedGenome& g : sampleGenomes()) test::addToolsUsed(g.genome, seen);
+    test::expectEveryRegistryTool(seen, "no sample genome holds");
 }
 
 class GlVsCpu : public ::testing::Test {
