@@ -159,6 +159,7 @@ TEST_F(GlMesh, CubeFacesMeetWithoutSeams) {
     s.mesh = "cube";
     s.yaw = 45.0;
     s.pitch = 35.26;
+    s.distance = 2.6; // the ray cast's explicit orbit, not the framed one
     s.supersample = 1;
     s.lighting = false;
     Image image = test::glRenderer()->renderMesh(mGenome, s);

@@ -45,6 +45,8 @@ constexpr int MaxTileSide = 2048;
 constexpr double MaxWorkPerDraw = 4e9;
 /// The largest output side of a mesh render (the G-buffer is n times larger).
 constexpr int MaxMeshSide = 8192;
+/// A framed object spans this share of the view's width or height (the rest is the margin).
+constexpr double FrameFill = 0.92;
 /// Samples of the largest antialiasing pattern (grid8); the shaders' uniform arrays hold this.
 constexpr int MaxSamples = 64;
 
@@ -234,9 +236,9 @@ void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::
     if (n != 1 && n != 3 && n != 5) throw InputError("supersample must be 1, 3 or 5 (got " + std::to_string(n) + ")");
     if (!(settings.fovY > 1.0 && settings.fovY < 170.0))
         throw InputError("the field of view must lie between 1 and 170 degrees");
-    if (!std::isfinite(settings.yaw) || !std::isfinite(settings.pitch) || !(settings.distance > 0.0)
-        || !std::isfinite(settings.distance))
-        throw InputError("the camera needs finite yaw and pitch and a positive distance");
+    if (!std::isfinite(settings.yaw) || !std::isfinite(settings.pitch) || !(settings.distance >= 0.0)
+        || !std::isfinite(settings.distance) || !(settings.zoom > 0.0) || !std::isfinite(settings.zoom))
+        throw InputError("the camera needs finite yaw and pitch, a distance of 0 or more and a positive zoom");
     cutNormal = glm::dvec3(0.0);
     cutOffset = 0.0;
     if (settings.cut) {
@@ -287,6 +289,8 @@ struct GlRenderer::Impl {
     GLsizei meshIndexCount = 0;
     glm::dvec3 meshBoxSize{0.0};
     double meshRadius = 1.0;
+    /// The vertices relative to the box centre (before the fit's scale), for framing.
+    std::vector<glm::dvec3> meshPoints;
 
     void makeCurrent() {
         if (!parts.context->makeCurrent(parts.surface.get())) throw RuntimeFailure("GL: the context cannot be made current");
@@ -417,8 +421,12 @@ struct GlRenderer::Impl {
         gl->glBindVertexArray(0);
         meshIndexCount = GLsizei(data.indices.size());
         meshRadius = 0.0;
-        for (std::size_t v = 0; v < data.positions.size(); ++v)
-            meshRadius = std::max(meshRadius, glm::length(glm::dvec3(data.positions[v]) - centre));
+        meshPoints.clear();
+        meshPoints.reserve(data.positions.size());
+        for (std::size_t v = 0; v < data.positions.size(); ++v) {
+            meshPoints.push_back(glm::dvec3(data.positions[v]) - centre);
+            meshRadius = std::max(meshRadius, glm::length(meshPoints.back()));
+        }
         meshName = name;
     }
 
@@ -755,18 +763,36 @@ MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings&
 
     double yaw = glm::radians(settings.yaw), pitch = glm::radians(settings.pitch);
     glm::dvec3 toEye(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
-    view.eye = toEye * (settings.distance * radius);
     glm::dvec3 up = std::abs(toEye.y) > 0.999 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
-    double eyeDistance = settings.distance * radius;
-    double nearPlane = std::max(eyeDistance - 1.01 * radius, 1e-3 * radius);
-    double farPlane = eyeDistance + 1.01 * radius;
-    glm::dmat4 lookAt = glm::lookAt(view.eye, glm::dvec3(0.0), up);
-    glm::dmat4 projection = glm::perspective(glm::radians(settings.fovY), double(settings.width) / settings.height, nearPlane, farPlane);
-    glm::mat4 viewProjection(projection * lookAt);
-    // A key light above and to the left of the camera.
     glm::dvec3 forward = -toEye;
     glm::dvec3 right = glm::normalize(glm::cross(forward, up));
     glm::dvec3 cameraUp = glm::cross(right, forward);
+    const double aspect = double(settings.width) / settings.height;
+    const double tanY = std::tan(glm::radians(settings.fovY) / 2.0), tanX = tanY * aspect;
+    double eyeDistance = settings.distance * radius;
+    if (!(settings.distance > 0.0)) {
+        // Framed: the nearest eye (looking at the centre) that sees every vertex inside the
+        // margin. A vertex at (x, y) across the view and z towards the eye projects to
+        // x / ((D - z) tanX), so it fits when D >= z + |x| / (FrameFill tanX), and likewise for y.
+        eyeDistance = 0.0;
+        for (const glm::dvec3& p : d.meshPoints) {
+            const glm::dvec3 q = p * scale;
+            const double z = glm::dot(q, toEye);
+            eyeDistance = std::max({eyeDistance, z + std::abs(glm::dot(q, right)) / (FrameFill * tanX),
+                                    z + std::abs(glm::dot(q, cameraUp)) / (FrameFill * tanY)});
+        }
+        // Never inside the bounding sphere, where the near plane would cut the object.
+        eyeDistance = std::max(eyeDistance, 1.05 * radius);
+    }
+    view.eye = toEye * eyeDistance;
+    double nearPlane = std::max(eyeDistance - 1.01 * radius, 1e-3 * radius);
+    double farPlane = eyeDistance + 1.01 * radius;
+    glm::dmat4 lookAt = glm::lookAt(view.eye, glm::dvec3(0.0), up);
+    // The zoom magnifies by narrowing the field of view: the eye stays outside the object.
+    const double fovY = 2.0 * std::atan(tanY / settings.zoom);
+    glm::dmat4 projection = glm::perspective(fovY, aspect, nearPlane, farPlane);
+    glm::mat4 viewProjection(projection * lookAt);
+    // A key light above and to the left of the camera.
     view.light = glm::normalize(toEye * 0.9 + cameraUp * 0.6 - right * 0.45);
 
     gl->glGenTextures(2, targets.textures);

@@ -25,11 +25,16 @@ struct MeshSettings {
     int width = 512, height = 512;
     std::string mesh = "vase"; ///< built-in name (sphere, cube, torus, vase, teapot) or a file path
     /// Orbit camera about the design box centre, +y up: the eye sits at
-    /// centre + distance * radius * (cos pitch sin yaw, sin pitch, cos pitch cos yaw), where
-    /// radius is the fitted object's bounding radius about the box centre.
+    /// centre + D * (cos pitch sin yaw, sin pitch, cos pitch cos yaw), looking at the centre.
     double yaw = 30.0, pitch = 20.0; ///< degrees
-    double distance = 2.6;           ///< orbit radius, in units of the fitted object's radius
-    double fovY = 50.0;              ///< vertical field of view, degrees (a whole object at distance 2.6)
+    /// D in units of the fitted object's bounding radius about the box centre. 0 (the default):
+    /// framed, the nearest D at which every vertex of the object projects within the middle 92 %
+    /// of the view's width and height, so the object fills the view at any angle and aspect.
+    double distance = 0.0;
+    double fovY = 50.0; ///< vertical field of view before the zoom, degrees
+    /// Magnification: narrows the field of view so the image is this many times larger (the
+    /// eye stays where it is, outside the object).
+    double zoom = 1.0;
     bool lighting = true;            ///< false: the marbling's own colours, unlit (tests, flat previews)
     int supersample = 3;             ///< 1, 3 or 5 (n x n)
     std::optional<CutPlane> cut;
