@@ -770,9 +770,12 @@ MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings&
     const double aspect = double(settings.width) / settings.height;
     const double tanY = std::tan(glm::radians(settings.fovY) / 2.0), tanX = tanY * aspect;
     double eyeDistance = settings.distance * radius;
+    // Clip-space shift and scale after the projection: the framing and the zoom, an off-centre
+    // frustum that leaves the eye (and so the shading) where it is.
+    double frameScale = settings.zoom, frameX = 0.0, frameY = 0.0;
     if (!(settings.distance > 0.0)) {
-        // Framed: the nearest eye (looking at the centre) that sees every vertex inside the
-        // margin. A vertex at (x, y) across the view and z towards the eye projects to
+        // Framed. First the nearest eye (looking at the centre) that sees every vertex inside
+        // the margin: a vertex at (x, y) across the view and z towards the eye projects to
         // x / ((D - z) tanX), so it fits when D >= z + |x| / (FrameFill tanX), and likewise for y.
         eyeDistance = 0.0;
         for (const glm::dvec3& p : d.meshPoints) {
@@ -783,14 +786,32 @@ MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings&
         }
         // Never inside the bounding sphere, where the near plane would cut the object.
         eyeDistance = std::max(eyeDistance, 1.05 * radius);
+        // Then the object's projected bounds, centred and scaled to span FrameFill of the
+        // view's width or height: seen from aside, an object reaches further to one side.
+        glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+        for (const glm::dvec3& p : d.meshPoints) {
+            const glm::dvec3 q = p * scale;
+            const double depth = eyeDistance - glm::dot(q, toEye);
+            const glm::dvec2 ndc(glm::dot(q, right) / (depth * tanX), glm::dot(q, cameraUp) / (depth * tanY));
+            lo = glm::min(lo, ndc);
+            hi = glm::max(hi, ndc);
+        }
+        const glm::dvec2 half = 0.5 * (hi - lo), middle = 0.5 * (hi + lo);
+        if (half.x > 0.0 || half.y > 0.0) {
+            frameScale *= FrameFill / std::max(half.x, half.y);
+            frameX = middle.x;
+            frameY = middle.y;
+        }
     }
     view.eye = toEye * eyeDistance;
     double nearPlane = std::max(eyeDistance - 1.01 * radius, 1e-3 * radius);
     double farPlane = eyeDistance + 1.01 * radius;
     glm::dmat4 lookAt = glm::lookAt(view.eye, glm::dvec3(0.0), up);
-    // The zoom magnifies by narrowing the field of view: the eye stays outside the object.
-    const double fovY = 2.0 * std::atan(tanY / settings.zoom);
-    glm::dmat4 projection = glm::perspective(fovY, aspect, nearPlane, farPlane);
+    glm::dmat4 frame(1.0); // x' = s (x - cx w), y' = s (y - cy w) in clip space
+    frame[0][0] = frame[1][1] = frameScale;
+    frame[3][0] = -frameScale * frameX;
+    frame[3][1] = -frameScale * frameY;
+    glm::dmat4 projection = frame * glm::perspective(glm::radians(settings.fovY), aspect, nearPlane, farPlane);
     glm::mat4 viewProjection(projection * lookAt);
     // A key light above and to the left of the camera.
     view.light = glm::normalize(toEye * 0.9 + cameraUp * 0.6 - right * 0.45);

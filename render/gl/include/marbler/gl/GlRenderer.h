@@ -28,12 +28,14 @@ struct MeshSettings {
     /// centre + D * (cos pitch sin yaw, sin pitch, cos pitch cos yaw), looking at the centre.
     double yaw = 30.0, pitch = 20.0; ///< degrees
     /// D in units of the fitted object's bounding radius about the box centre. 0 (the default):
-    /// framed, the nearest D at which every vertex of the object projects within the middle 92 %
-    /// of the view's width and height, so the object fills the view at any angle and aspect.
+    /// framed, so the object fills the view at any angle and aspect: D is the nearest distance
+    /// that keeps every vertex in view, and the view is then shifted and scaled (an off-centre
+    /// frustum) so the object's projected bounds are centred and span 92 % of the view's width
+    /// or height.
     double distance = 0.0;
-    double fovY = 50.0; ///< vertical field of view before the zoom, degrees
-    /// Magnification: narrows the field of view so the image is this many times larger (the
-    /// eye stays where it is, outside the object).
+    double fovY = 50.0; ///< vertical field of view before the framing and the zoom, degrees
+    /// Magnification of the image about the view's centre (the framed object's centre), by
+    /// narrowing the frustum: the eye stays where it is, outside the object.
     double zoom = 1.0;
     bool lighting = true;            ///< false: the marbling's own colours, unlit (tests, flat previews)
     int supersample = 3;             ///< 1, 3 or 5 (n x n)
