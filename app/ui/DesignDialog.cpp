@@ -17,14 +17,18 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QKeyEvent>
 #include <QMouseEvent>
+#include <QPainter>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 #include <QThread>
 #include <QTimer>
+#include <QToolButton>
 #include <QVBoxLayout>
+#include <QWheelEvent>
 
 #include <algorithm>
 #include <atomic>
@@ -178,15 +182,88 @@ void ExportSettingsDialog::accept() {
     QDialog::accept();
 }
 
+/// The canvas of the large view: draws the image where the dialog says and hands the wheel,
+/// drags and size changes to it.
+class DesignCanvas : public QWidget {
+public:
+    explicit DesignCanvas(DesignDialog* dialog) : QWidget(dialog), mDialog(dialog) {
+        setObjectName(QStringLiteral("designView"));
+        setMinimumSize(320, 320);
+        setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter p(this);
+        p.fillRect(rect(), palette().color(QPalette::Window).darker(115));
+        if (!mDialog->mImage.isNull()) {
+            p.setRenderHint(QPainter::SmoothPixmapTransform);
+            p.drawImage(mDialog->imageTarget(), mDialog->mImage);
+        }
+        if (!mDialog->mMessage.isEmpty()) {
+            p.setPen(palette().color(QPalette::WindowText));
+            p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, mDialog->mMessage);
+        }
+    }
+    void resizeEvent(QResizeEvent*) override { mDialog->canvasResized(); }
+    void wheelEvent(QWheelEvent* event) override {
+        // Ctrl+wheel zooms too (as in most viewers); a notch (120) is the keys' step, √2.
+        const double notches = event->angleDelta().y() / 120.0;
+        if (notches != 0.0) mDialog->zoomAt(std::pow(std::sqrt(2.0), notches), event->position());
+        event->accept();
+    }
+    void mousePressEvent(QMouseEvent* event) override { mDialog->canvasPressed(event); }
+    void mouseMoveEvent(QMouseEvent* event) override { mDialog->canvasMoved(event); }
+    void mouseReleaseEvent(QMouseEvent* event) override { mDialog->canvasReleased(event); }
+
+private:
+    DesignDialog* mDialog;
+};
+
 DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent)
-    : QDialog(parent), mGenome(std::move(genome)), mRenderer(renderer), mMesh(mesh), mKey(nextDialogKey()) {
+    : QDialog(parent), mGenome(std::move(genome)), mRenderer(renderer), mMesh(mesh), mKey(nextDialogKey()),
+      mAngle(viewAngleOf(mGenome)) {
     const LineageInfo info = lineageOf(mGenome);
     setWindowTitle(tr("Design %1").arg(info.name.isEmpty() ? info.id : info.name));
-    mView = new QLabel(tr("rendering…"), this);
-    mView->setAlignment(Qt::AlignCenter);
-    mView->setMinimumSize(320, 320);
-    mView->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
-    if (mGenome.dimension == 3) mView->setToolTip(tr("Drag to turn the object"));
+    const bool solid = mGenome.dimension == 3;
+    mViewController.setDesignSize(mGenome.size.x, mGenome.size.y);
+    mMessage = tr("rendering…");
+    mCanvas = new DesignCanvas(this);
+    mCanvas->setToolTip(solid ? tr("Drag to turn the object; wheel, + and - zoom")
+                              : tr("Wheel, + and - zoom about the pointer; drag to pan"));
+
+    // The zoom controls: buttons that never take the focus, so the keys keep working.
+    auto tool = [this](const QString& name, const QString& text, const QString& tip) {
+        auto* button = new QToolButton(this);
+        button->setObjectName(name);
+        button->setText(text);
+        button->setToolTip(tip);
+        button->setFocusPolicy(Qt::NoFocus);
+        return button;
+    };
+    auto* zoomOutButton = tool(QStringLiteral("zoomOut"), QStringLiteral("−"), tr("Zoom out (-, wheel)"));
+    auto* zoomInButton = tool(QStringLiteral("zoomIn"), QStringLiteral("+"), tr("Zoom in (+, wheel)"));
+    auto* fitButton = tool(QStringLiteral("zoomFit"), tr("Fit"),
+                           solid ? tr("Frame the whole object (0)") : tr("Show the whole design (0)"));
+    auto* oneButton = tool(QStringLiteral("zoomOneToOne"), tr("1:1"),
+                           tr("One design unit to a screen pixel, the scale of an export as many pixels "
+                              "wide as the design is wide (1)"));
+    oneButton->setEnabled(!solid);
+    mZoomLabel = new QLabel(this);
+    mZoomLabel->setObjectName(QStringLiteral("zoomLevel"));
+    mZoomLabel->setToolTip(solid ? tr("Magnification of the framed object")
+                                 : tr("Screen pixels per design unit (100 %: one to one)"));
+    connect(zoomOutButton, &QToolButton::clicked, this, &DesignDialog::zoomOut);
+    connect(zoomInButton, &QToolButton::clicked, this, &DesignDialog::zoomIn);
+    connect(fitButton, &QToolButton::clicked, this, &DesignDialog::fitView);
+    connect(oneButton, &QToolButton::clicked, this, &DesignDialog::showOneToOne);
+    auto* zoomBar = new QHBoxLayout;
+    zoomBar->addWidget(zoomOutButton);
+    zoomBar->addWidget(zoomInButton);
+    zoomBar->addWidget(fitButton);
+    zoomBar->addWidget(oneButton);
+    zoomBar->addWidget(mZoomLabel);
+    zoomBar->addStretch();
 
     auto* save = new QPushButton(tr("&Save genome…"), this);
     save->setShortcut(QKeySequence::Save);
@@ -209,17 +286,27 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     buttons->addStretch();
     buttons->addWidget(close);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(mView, 1);
+    layout->addLayout(zoomBar);
+    layout->addWidget(mCanvas, 1);
     layout->addLayout(buttons);
-    resize(720, 780);
+    resize(720, 800);
+    mZoomLabel->setText(zoomText());
 
-    connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool) {
+    connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool final) {
         if (key != mKey) return;
+        // The service delivers only the newest request's results: they show its view.
         mImage = image;
-        mView->setPixmap(QPixmap::fromImage(image));
+        mImageFinal = final;
+        if (mRequestRegion) mImageRegion = *mRequestRegion;
+        mImageZoom = mRequestZoom;
+        mMessage.clear();
+        mCanvas->update();
     });
     connect(mRenderer, &RenderService::failed, this, [this](std::uint64_t key, const QString& message) {
-        if (key == mKey) mView->setText(tr("Cannot render: %1").arg(message));
+        if (key != mKey) return;
+        mImage = QImage();
+        mMessage = tr("Cannot render: %1").arg(message);
+        mCanvas->update();
     });
 }
 
@@ -232,40 +319,137 @@ DesignDialog::~DesignDialog() {
     }
 }
 
-void DesignDialog::resizeEvent(QResizeEvent* event) {
-    QDialog::resizeEvent(event);
-    requestRender();
+QWidget* DesignDialog::canvas() const { return mCanvas; }
+
+QString DesignDialog::zoomText() const {
+    const double percent = 100.0 * (mGenome.dimension == 3 ? mObjectZoom : mViewController.scale());
+    return tr("%L1 %").arg(percent, 0, 'f', percent < 10.0 ? 1 : 0);
+}
+
+void DesignDialog::canvasResized() {
+    mViewController.setViewport(mCanvas->size() * mCanvas->devicePixelRatioF());
+    viewChanged();
+}
+
+void DesignDialog::zoomIn() { zoomAt(std::sqrt(2.0), QRectF(mCanvas->rect()).center()); }
+void DesignDialog::zoomOut() { zoomAt(1.0 / std::sqrt(2.0), QRectF(mCanvas->rect()).center()); }
+
+void DesignDialog::zoomAt(double factor, QPointF anchor) {
+    if (mGenome.dimension == 3)
+        // A solid zooms about its framed centre: its camera always looks there.
+        mObjectZoom = std::clamp(mObjectZoom * factor, 0.25, 16.0);
+    else
+        mViewController.zoomBy(factor, anchor * mCanvas->devicePixelRatioF());
+    viewChanged();
+}
+
+void DesignDialog::fitView() {
+    mObjectZoom = 1.0;
+    mViewController.fit();
+    viewChanged();
+}
+
+void DesignDialog::showOneToOne() {
+    if (mGenome.dimension == 3) return;
+    mViewController.oneToOne();
+    viewChanged();
+}
+
+void DesignDialog::panBy(QPointF delta) {
+    if (mGenome.dimension == 3) return;
+    mViewController.panBy(delta * mCanvas->devicePixelRatioF());
+    viewChanged();
+}
+
+void DesignDialog::viewChanged(bool previewOnly) {
+    mZoomLabel->setText(zoomText());
+    mCanvas->update(); // the image shown so far, moved and scaled to the new view at once
+    requestRender(previewOnly);
+}
+
+QRectF DesignDialog::imageTarget() const {
+    const double ratio = mCanvas->devicePixelRatioF();
+    if (mGenome.dimension != 3) {
+        const QRectF r = mViewController.toViewport(mImageRegion);
+        return QRectF(r.topLeft() / ratio, r.size() / ratio);
+    }
+    // A solid's image fills the canvas (a cross-section keeps its proportions), magnified by
+    // the zoom asked for since.
+    const QRectF area(mCanvas->rect());
+    const QSizeF size = QSizeF(mImage.size()).scaled(area.size(), Qt::KeepAspectRatio) * (mObjectZoom / mImageZoom);
+    QRectF target(QPointF(0, 0), size);
+    target.moveCenter(area.center());
+    return target;
 }
 
 void DesignDialog::requestRender(bool previewOnly) {
     RenderRequest request;
     request.genome = mGenome;
-    request.size = (mView->size() * devicePixelRatioF()).expandedTo(QSize(32, 32));
     request.mesh = mMesh;
-    request.yaw = mYaw;
-    request.pitch = mPitch;
+    request.yaw = mAngle.yaw;
+    request.pitch = mAngle.pitch;
+    request.zoom = mObjectZoom;
     request.previewOnly = previewOnly;
+    const QSize viewport = (mCanvas->size() * mCanvas->devicePixelRatioF()).expandedTo(QSize(32, 32));
+    if (mGenome.dimension == 3) {
+        request.size = viewport;
+    } else {
+        // Only the part of the design in view, at the view's scale: exact at any zoom.
+        const auto window = mViewController.visibleWindow();
+        if (!window) {
+            mRenderer->cancel(mKey);
+            mImage = QImage();
+            mCanvas->update();
+            return;
+        }
+        request.region = window->region;
+        request.size = window->pixels.size();
+    }
+    mRequestRegion = request.region;
+    mRequestZoom = mObjectZoom;
+    mImageFinal = false; // what is shown now stands in for the view until its render comes
     mRenderer->request(mKey, std::move(request));
 }
 
-void DesignDialog::mousePressEvent(QMouseEvent* event) {
-    mLastPos = event->position().toPoint();
-    mDragging = mGenome.dimension == 3 && event->button() == Qt::LeftButton;
+void DesignDialog::keyPressEvent(QKeyEvent* event) {
+    // Plain keys, with or without Ctrl or the keypad (Ctrl++ is the platform's zoom).
+    switch (event->key()) {
+    case Qt::Key_Plus:
+    case Qt::Key_Equal: zoomIn(); return;
+    case Qt::Key_Minus: zoomOut(); return;
+    case Qt::Key_0: fitView(); return;
+    case Qt::Key_1: showOneToOne(); return;
+    default: QDialog::keyPressEvent(event);
+    }
 }
 
-void DesignDialog::mouseMoveEvent(QMouseEvent* event) {
+void DesignDialog::canvasPressed(QMouseEvent* event) {
+    mLastPos = event->position();
+    mDragging = event->button() == Qt::LeftButton;
+    if (mDragging && mGenome.dimension != 3) mCanvas->setCursor(Qt::ClosedHandCursor);
+}
+
+void DesignDialog::canvasMoved(QMouseEvent* event) {
     if (!mDragging) return;
-    const QPoint d = event->position().toPoint() - mLastPos;
-    mLastPos = event->position().toPoint();
-    mYaw = std::fmod(mYaw + d.x() * 0.5, 360.0);
-    mPitch = std::clamp(mPitch + d.y() * 0.5, -89.0, 89.0);
-    requestRender(true);
+    const QPointF d = event->position() - mLastPos;
+    mLastPos = event->position();
+    // While dragging only the quick pass is worth rendering; the release asks for the final one.
+    if (mGenome.dimension != 3)
+        mViewController.panBy(d * mCanvas->devicePixelRatioF());
+    else
+        mAngle = mAngle.dragged(d.x(), d.y());
+    viewChanged(true);
 }
 
-void DesignDialog::mouseReleaseEvent(QMouseEvent*) {
+void DesignDialog::canvasReleased(QMouseEvent*) {
     if (!mDragging) return;
     mDragging = false;
+    mCanvas->unsetCursor();
     requestRender();
+    if (mGenome.dimension != 3) return;
+    // The angle belongs to the design: saved with it, and given back to its cell.
+    setViewAngle(mGenome, mAngle);
+    emit viewAngleChanged(mAngle);
 }
 
 void DesignDialog::exportImage() {

@@ -1,8 +1,10 @@
 #pragma once
-/// One design shown large: save its genome, export an image at a chosen size, and (later) open
-/// it in the editor.
+/// One design shown large: zoom and pan a flat design (each view re-rendered sharp at its
+/// scale), zoom and turn a solid one, save its genome, export an image at a chosen size, and
+/// (later) open it in the editor.
 
 #include "marbler/Genome.h"
+#include "ui/ViewController.h"
 
 #include <QDialog>
 #include <QImage>
@@ -22,6 +24,7 @@ class QThread;
 
 namespace marbler::ui {
 
+class DesignCanvas;
 class RenderService;
 
 class DesignDialog : public QDialog {
@@ -44,18 +47,55 @@ public:
     void cancelExport();
     bool isExporting() const { return bool(mExportCancel); }
 
+    /// Zoom and pan (flat designs; a solid's zoom magnifies its framed object).
+    const ViewController& viewController() const { return mViewController; }
+    /// The magnification of a solid's framed object (1: framed).
+    double objectZoom() const { return mObjectZoom; }
+    /// The angle a solid is seen from (the design's meta.view).
+    ViewAngle viewAngle() const { return mAngle; }
+    /// The zoom level shown, e.g. "250 %" (a flat design's scale, a solid's magnification).
+    QString zoomText() const;
+    /// The image shown now (coarse or final) and whether it is the final one for the view.
+    const QImage& image() const { return mImage; }
+    bool imageIsFinal() const { return mImageFinal; }
+    /// The region the newest render was asked for (flat designs).
+    std::optional<Region> requestedRegion() const { return mRequestRegion; }
+    /// The widget the design is drawn in (it takes the wheel and drags).
+    QWidget* canvas() const;
+
+    /// By a step of the + and - keys (a factor of √2), about the view's centre.
+    void zoomIn();
+    void zoomOut();
+    /// Zooms by a factor keeping the point under `anchor` (canvas coordinates) in place.
+    void zoomAt(double factor, QPointF anchor);
+    /// Shows the whole design (the 0 key); a solid's object framed.
+    void fitView();
+    /// One design unit to a screen pixel (the 1 key; flat designs).
+    void showOneToOne();
+    /// Moves a flat design by a drag of `delta` canvas pixels.
+    void panBy(QPointF delta);
+
 signals:
+    /// The user turned the solid object; the angle is already in genome()'s meta.view.
+    void viewAngleChanged(const marbler::ui::ViewAngle& angle);
     /// An export ended: written (the file is complete), or cancelled or failed (`error` says
     /// why for a failure; nothing is left behind either way).
     void exportFinished(const QString& file, bool written, const QString& error);
 
 protected:
-    void resizeEvent(QResizeEvent* event) override;
-    void mousePressEvent(QMouseEvent* event) override;
-    void mouseMoveEvent(QMouseEvent* event) override;
-    void mouseReleaseEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
 
 private:
+    friend class DesignCanvas;
+    void canvasResized();
+    void canvasPressed(QMouseEvent* event);
+    void canvasMoved(QMouseEvent* event);
+    void canvasReleased(QMouseEvent* event);
+    /// Where the image shown goes on the canvas (canvas coordinates): moved and scaled by any
+    /// view change since it was rendered, so a change shows at once, coarse, until the new
+    /// render arrives.
+    QRectF imageTarget() const;
+    void viewChanged(bool previewOnly = false);
     void requestRender(bool previewOnly = false);
     void exportImage();
 
@@ -63,10 +103,21 @@ private:
     RenderService* mRenderer;
     QString mMesh;
     std::uint64_t mKey;
-    QLabel* mView = nullptr;
+    DesignCanvas* mCanvas = nullptr;
+    QLabel* mZoomLabel = nullptr;
+    ViewController mViewController; ///< in device pixels of the canvas
+    double mObjectZoom = 1.0;
+    ViewAngle mAngle;
+    /// The image shown, and the view it was rendered for (a region or a solid's zoom).
     QImage mImage;
-    double mYaw = 30.0, mPitch = 20.0;
-    QPoint mLastPos;
+    bool mImageFinal = false;
+    Region mImageRegion;
+    double mImageZoom = 1.0;
+    QString mMessage; ///< shown instead of an image ("rendering…", a failure)
+    /// The view of the newest request: what its results show.
+    std::optional<Region> mRequestRegion;
+    double mRequestZoom = 1.0;
+    QPointF mLastPos;
     bool mDragging = false;
     std::shared_ptr<std::atomic<bool>> mExportCancel; ///< set while an export runs
     QThread* mExportThread = nullptr;

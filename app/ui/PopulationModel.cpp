@@ -180,6 +180,14 @@ void PopulationModel::setCellLocks(int index, const Locks& locks) {
     autosave();
 }
 
+void PopulationModel::setCellView(int index, const ViewAngle& view) {
+    if (!cell(index)) return;
+    setViewAngle(*currentMutable().cells[std::size_t(index)], view);
+    if (std::size_t(mCurrent) < mSessionCells.size()) mSessionCells[std::size_t(mCurrent)].clear();
+    emit cellChanged(index);
+    autosave();
+}
+
 void PopulationModel::pushGeneration(Generation generation) {
     if (mEmptyStart) {
         // The first designs replace the empty placeholder: they are generation 1.

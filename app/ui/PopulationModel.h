@@ -5,6 +5,7 @@
 
 #include "marbler/Genome.h"
 #include "marbler/Operators.h"
+#include "ui/ViewController.h"
 
 #include <QObject>
 #include <QString>
@@ -83,6 +84,9 @@ public:
     /// Changes the locks of a cell's design in place (not a new generation: locks are a
     /// property of the design the user is steering, not a breeding step).
     void setCellLocks(int index, const Locks& locks);
+    /// Changes the angle a cell's solid design is seen from, in place like the locks (the
+    /// angle lives in the design's meta.view, so it travels with it).
+    void setCellView(int index, const ViewAngle& view);
 
     /// Generation history.
     const Generation& current() const { return mHistory[std::size_t(mCurrent)]; }
@@ -134,7 +138,7 @@ public:
 signals:
     /// The designs of the grid changed (a new generation or going back/forward).
     void populationChanged();
-    /// One cell's design changed in place (locks).
+    /// One cell's design changed in place (locks, view angle).
     void cellChanged(int index);
     void selectionChanged();
     void historyChanged();

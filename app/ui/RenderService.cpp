@@ -157,16 +157,20 @@ private:
                 mesh.mesh = request.mesh.toStdString();
                 mesh.yaw = request.yaw;
                 mesh.pitch = request.pitch;
+                mesh.zoom = request.zoom;
                 mesh.supersample = final ? 3 : 1;
                 return toQImage(mUseGl ? renderer->renderMesh(genome, mesh)
                                        : gl::renderMeshHybrid(*renderer, genome, mesh, &control));
             }
         }
-        const QSize full = fitDesign(genome, request.size);
+        const QSize full = request.region ? request.size : fitDesign(genome, request.size);
+        // A quick third-size preview; a region keeps its proportions in it as best whole
+        // pixels allow.
         const QSize size = final ? full : (full / 3).expandedTo(QSize(8, 8));
         RenderSettings settings;
         settings.width = size.width();
         settings.height = size.height();
+        settings.region = request.region;
         settings.aa = final ? request.aa.toStdString() : std::string("none");
         if (genome.dimension == 3) settings.slice = Slice{2, genome.size.z / 2.0};
         if (mUseGl) {

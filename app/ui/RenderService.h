@@ -33,9 +33,15 @@ struct RenderRequest {
     Genome genome;
     QSize size{256, 256};
     QString aa = QStringLiteral("rgss"); ///< the final pass's antialiasing pattern
-    /// Solid (3D) genomes are shown on this object, seen from this orbit.
+    /// The design-space rectangle shown (of the slice plane for a solid shown by its
+    /// cross-section), rendered exactly at `size`, whose proportions it must have: a zoomed or
+    /// panned view. Unset: the whole design, fitted into `size` with its own proportions.
+    std::optional<Region> region;
+    /// Solid (3D) genomes are shown on this object, seen from this orbit, framed and then
+    /// magnified by `zoom` (gl::MeshSettings).
     QString mesh = QStringLiteral("vase");
     double yaw = 30.0, pitch = 20.0;
+    double zoom = 1.0;
     /// Only the fast pass (while the user drags an object around).
     bool previewOnly = false;
 };

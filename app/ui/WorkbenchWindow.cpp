@@ -76,8 +76,6 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     : QMainWindow(parent), mRenderer(renderer), mModel(new PopulationModel(this)) {
     setWindowTitle(tr("Marbler — evolution workbench"));
     mModel->setSessionSeed(QRandomGenerator::global()->generate64());
-    mYaw.fill(30.0);
-    mPitch.fill(20.0);
 
     auto* central = new QWidget(this);
     auto* grid = new QGridLayout(central);
@@ -139,9 +137,10 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
         requestAllRenders();
         updateLineage();
     });
-    connect(mModel, &PopulationModel::cellChanged, this, [this] {
+    connect(mModel, &PopulationModel::cellChanged, this, [this](int index) {
         updateCells(); // the lock marker
         updateLineage();
+        requestRender(index); // a new view angle (a lock change finds its image in the cache)
     });
     connect(mModel, &PopulationModel::selectionChanged, this, [this] {
         updateCells();
@@ -503,6 +502,9 @@ void WorkbenchWindow::updateFavourites() {
         request.genome = favourites[i].genome;
         request.size = QSize(ThumbnailSide, ThumbnailSide);
         request.mesh = mMesh->currentText();
+        const ViewAngle angle = viewAngleOf(favourites[i].genome);
+        request.yaw = angle.yaw;
+        request.pitch = angle.pitch;
         mRenderer->request(FavouriteKeyBase + i, std::move(request));
     }
 }
@@ -517,8 +519,14 @@ QString WorkbenchWindow::renderCacheKey(int index) const {
         .arg(size.width())
         .arg(size.height())
         .arg(g->dimension == 3 ? mMesh->currentText() : QString())
-        .arg(g->dimension == 3 ? mYaw[std::size_t(index)] : 0.0)
-        .arg(g->dimension == 3 ? mPitch[std::size_t(index)] : 0.0);
+        .arg(g->dimension == 3 ? cellViewAngle(index).yaw : 0.0)
+        .arg(g->dimension == 3 ? cellViewAngle(index).pitch : 0.0);
+}
+
+ViewAngle WorkbenchWindow::cellViewAngle(int index) const {
+    if (index == mOrbitCell) return mOrbitAngle;
+    const Genome* g = mModel->cell(index);
+    return g ? viewAngleOf(*g) : ViewAngle{};
 }
 
 void WorkbenchWindow::requestRender(int index, bool previewOnly) {
@@ -543,8 +551,9 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
     const int margin = 12;
     request.size = ((c->size() - QSize(margin, margin)) * c->devicePixelRatioF()).expandedTo(QSize(16, 16));
     request.mesh = mMesh->currentText();
-    request.yaw = mYaw[std::size_t(index)];
-    request.pitch = mPitch[std::size_t(index)];
+    const ViewAngle angle = cellViewAngle(index);
+    request.yaw = angle.yaw;
+    request.pitch = angle.pitch;
     request.previewOnly = previewOnly;
     mPendingCacheKey[std::size_t(index)] = previewOnly ? QString() : key;
     mFinal[std::size_t(index)] = false;
@@ -601,11 +610,17 @@ void WorkbenchWindow::onFocusMove(int index, int dx, int dy) {
 }
 
 void WorkbenchWindow::onOrbit(int index, QPoint delta, bool finished) {
-    const auto i = std::size_t(index);
-    mYaw[i] = std::fmod(mYaw[i] + delta.x() * 0.5, 360.0);
-    mPitch[i] = std::clamp(mPitch[i] + delta.y() * 0.5, -89.0, 89.0);
-    // While dragging only previews are worth rendering; the release asks for the final image.
-    requestRender(index, !finished);
+    if (!mModel->cell(index)) return;
+    mOrbitAngle = cellViewAngle(index).dragged(delta.x(), delta.y());
+    mOrbitCell = index;
+    if (!finished) {
+        // While dragging only previews are worth rendering, and the session is not saved.
+        requestRender(index, true);
+        return;
+    }
+    // The angle belongs to the design; the model's cellChanged asks for the final image.
+    mOrbitCell = -1;
+    mModel->setCellView(index, mOrbitAngle);
 }
 
 bool WorkbenchWindow::applyOperator(GeneticOperator op) {
@@ -765,6 +780,12 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
     if (!g) return nullptr;
     auto* dialog = new DesignDialog(*g, mRenderer, mMesh->currentText(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
+    // Turning the object in the large view turns the design, where the cell still holds it.
+    const std::string id = genomeId(*g);
+    connect(dialog, &DesignDialog::viewAngleChanged, this, [this, index, id](const ViewAngle& angle) {
+        const Genome* shown = mModel->cell(index);
+        if (shown && genomeId(*shown) == id) mModel->setCellView(index, angle);
+    });
     dialog->show();
     emit designOpened(dialog);
     return dialog;

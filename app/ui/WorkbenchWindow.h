@@ -103,12 +103,16 @@ private:
     void openFileDialog();
     void saveDesign(int index);
     QString renderCacheKey(int cell) const;
+    /// The angle a cell's solid is seen from (while it is being turned, the drag's).
+    ViewAngle cellViewAngle(int cell) const;
 
     RenderService* mRenderer;
     PopulationModel* mModel;
     std::array<DesignCell*, CellCount> mCells{};
-    std::array<double, CellCount> mYaw{};
-    std::array<double, CellCount> mPitch{};
+    /// The cell whose solid the user is turning (-1: none) and its angle so far; the angle is
+    /// written into the design (PopulationModel::setCellView) once, on release.
+    int mOrbitCell = -1;
+    ViewAngle mOrbitAngle;
     std::array<bool, CellCount> mFinal{};
     std::array<QString, CellCount> mPendingCacheKey;
     QCache<QString, QImage> mImageCache{48};
