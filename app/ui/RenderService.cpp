@@ -171,6 +171,13 @@ private:
         settings.width = size.width();
         settings.height = size.height();
         settings.region = request.region;
+        if (genome.dimension == 3 && !settings.region && request.zoom != 1.0) {
+            // The cross-section stands in for the object, so it takes the object's zoom, about
+            // its middle.
+            const double w = genome.size.x / request.zoom, h = genome.size.y / request.zoom;
+            settings.region = Region{(genome.size.x - w) / 2.0, (genome.size.y - h) / 2.0, (genome.size.x + w) / 2.0,
+                                     (genome.size.y + h) / 2.0};
+        }
         settings.aa = final ? request.aa.toStdString() : std::string("none");
         if (genome.dimension == 3) settings.slice = Slice{2, genome.size.z / 2.0};
         if (mUseGl) {

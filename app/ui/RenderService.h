@@ -38,7 +38,8 @@ struct RenderRequest {
     /// panned view. Unset: the whole design, fitted into `size` with its own proportions.
     std::optional<Region> region;
     /// Solid (3D) genomes are shown on this object, seen from this orbit, framed and then
-    /// magnified by `zoom` (gl::MeshSettings).
+    /// magnified by `zoom` (gl::MeshSettings; without GL their middle cross-section is
+    /// magnified as much).
     QString mesh = QStringLiteral("vase");
     double yaw = 30.0, pitch = 20.0;
     double zoom = 1.0;

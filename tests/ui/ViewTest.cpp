@@ -323,10 +323,26 @@ TEST_F(ViewTest, LargeViewTurnsTheDesignAndZoomsTheObject) {
     EXPECT_EQ(dialog->zoomText(), QStringLiteral("200 %"));
     QTest::keyClick(dialog, Qt::Key_Minus);
     EXPECT_NEAR(dialog->objectZoom(), std::sqrt(2.0), 1e-9);
+    // With no GL here the middle cross-section stands in for the object, magnified alike:
+    // its final image is the middle half of the fitted one, rendered anew.
+    QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000);
+    ASSERT_TRUE(dialog->imageIsFinal());
+    const QImage magnified = dialog->image();
     QTest::keyClick(dialog, Qt::Key_0);
     EXPECT_DOUBLE_EQ(dialog->objectZoom(), 1.0);
     EXPECT_FALSE(dialog->findChild<QToolButton*>(QStringLiteral("zoomOneToOne"))->isEnabled());
     QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000);
+    const Genome& g = *model().cell(6);
+    RenderSettings settings;
+    settings.width = magnified.width();
+    settings.height = magnified.height();
+    settings.aa = "rgss";
+    settings.slice = Slice{2, g.size.z / 2.0};
+    const double w = g.size.x / std::sqrt(2.0), h = g.size.y / std::sqrt(2.0);
+    settings.region = Region{(g.size.x - w) / 2.0, (g.size.y - h) / 2.0, (g.size.x + w) / 2.0, (g.size.y + h) / 2.0};
+    EXPECT_EQ(magnified, toQImage(CpuRenderer(g).render(settings)));
+    EXPECT_EQ(dialog->image().size(), magnified.size());
+    EXPECT_NE(dialog->image(), magnified);
     dialog->close();
 }
 
