@@ -221,7 +221,8 @@ TEST_F(ViewTest, KeysAndButtonsFitShowOneToOneAndZoom) {
         const char* name;
         const char* key;
     };
-    for (Button b : {Button{"zoomIn", "(+"}, Button{"zoomOut", "(-"}, Button{"zoomFit", "(0)"}, Button{"zoomOneToOne", "(1)"}}) {
+    for (Button b : {Button{"zoomIn", "(+"}, Button{"zoomOut", "(-"}, Button{"zoomFit", "(0)"},
+                     Button{"zoomOneToOne", "(1)"}}) {
         auto* button = dialog->findChild<QToolButton*>(QString::fromLatin1(b.name));
         ASSERT_NE(button, nullptr) << b.name;
         EXPECT_TRUE(button->toolTip().contains(QString::fromLatin1(b.key))) << button->toolTip().toStdString();
