@@ -154,6 +154,7 @@ std::vector<int> PopulationModel::placeDesigns(const std::vector<Genome>& design
 
     Generation next = current();
     next.description = description;
+    next.parentCells.clear(); // put in, not bred
     std::vector<int> used;
     for (std::size_t k = 0; k < designs.size() && k < order.size(); ++k) {
         const int index = order[k];
@@ -169,6 +170,7 @@ void PopulationModel::setCell(int index, const Genome& genome, const QString& de
     if (index < 0 || index >= CellCount) return;
     Generation next = current();
     next.description = description;
+    next.parentCells.clear(); // put in, not bred
     next.cells[std::size_t(index)] = genome;
     next.selected[std::size_t(index)] = false;
     pushGeneration(std::move(next));

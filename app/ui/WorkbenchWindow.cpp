@@ -220,12 +220,12 @@ void WorkbenchWindow::buildActions() {
                                 &PopulationModel::goBack);
     mBack->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
     mBack->setIconText(tr("◀ Back"));
-    mBack->setToolTip(tr("Back to the previous generation (Ctrl+Z)"));
+    mBack->setToolTip(tr("Back to the generation this one grew from (Ctrl+Z)"));
     mForward = editMenu->addAction(style()->standardIcon(QStyle::SP_ArrowForward), tr("&Forward a generation"),
                                    mModel, &PopulationModel::goForward);
     mForward->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
     mForward->setIconText(tr("Forward ▶"));
-    mForward->setToolTip(tr("Forward to the next generation (Ctrl+Shift+Z)"));
+    mForward->setToolTip(tr("Forward to the generation last visited or made from this one (Ctrl+Shift+Z)"));
     editMenu->addSeparator();
     editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection)
         ->setShortcut(QKeySequence(Qt::Key_Escape));

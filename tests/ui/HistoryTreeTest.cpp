@@ -383,6 +383,8 @@ TEST_F(HistoryTreeTest, LineageDesignsSelectAndComeBack) {
     ASSERT_TRUE(waitFor([&] { return model().history().size() == 6u; })) << "no new generation";
     EXPECT_EQ(model().currentIndex(), 5);
     EXPECT_EQ(model().current().parent, 4);
+    EXPECT_TRUE(model().current().parentCells.empty()) << "put in, not bred";
+    EXPECT_EQ(model().current().description, QStringLiteral("Brought back design 5 of generation 3 (branch 2)"));
     EXPECT_EQ(serializeGenome(*model().cell(0)), grids[3][4]) << "into the first cell, nothing being selected";
     for (int i = 1; i < CellCount; ++i) EXPECT_EQ(serializeGenome(*model().cell(i)), grids[4][std::size_t(i)]);
     mWindow->backAction()->trigger();
