@@ -81,7 +81,9 @@ bool PopulationModel::canApply(GeneticOperator op) const {
 }
 
 std::uint64_t PopulationModel::nextBreedSeed() const {
-    return mixSeed(mSessionSeed, std::uint64_t(mCurrent + 1));
+    // The new generation's index: in a session without branches it is the generation's
+    // position, as before branches existed, and it never repeats.
+    return mixSeed(mSessionSeed, std::uint64_t(mHistory.size()));
 }
 
 void PopulationModel::apply(GeneticOperator op, double strength) {
@@ -95,7 +97,7 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     if (request.count <= 0) throw InputError("every cell is a parent: deselect one to make room for offspring");
     // The children carry the numbers the user sees: the generation they make (as the status
     // bar counts it) and the design (cell) each goes to.
-    request.generation = displayNumber(mCurrent + 1);
+    request.generation = current().number + 1;
     for (int i = 0; i < CellCount; ++i)
         if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
     std::vector<Genome> children = breed(request);
@@ -121,9 +123,9 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
 void PopulationModel::newRandomPopulation(int dimension) {
     Generation next;
     next.description = dimension == 3 ? tr("New random solid population") : tr("New random population");
-    // Seeded by the number the new generation gets, which the placeholder does not take: the
-    // first population (generation 1) and the next one (2) draw from different seeds.
-    const int number = mEmptyStart ? 0 : mCurrent + 1;
+    // Seeded by the index the new generation gets, which the placeholder does not take: the
+    // first population and every later one draw from different seeds.
+    const std::size_t number = mEmptyStart ? 0 : mHistory.size();
     const std::uint64_t base = mixSeed(mSessionSeed, std::uint64_t(number) * 1000003ULL);
     // A new population is new: no design repeats one of the grid it replaces, or another.
     std::set<std::string> taken;
@@ -152,6 +154,7 @@ std::vector<int> PopulationModel::placeDesigns(const std::vector<Genome>& design
 
     Generation next = current();
     next.description = description;
+    next.parentCells.clear(); // put in, not bred
     std::vector<int> used;
     for (std::size_t k = 0; k < designs.size() && k < order.size(); ++k) {
         const int index = order[k];
@@ -167,6 +170,7 @@ void PopulationModel::setCell(int index, const Genome& genome, const QString& de
     if (index < 0 || index >= CellCount) return;
     Generation next = current();
     next.description = description;
+    next.parentCells.clear(); // put in, not bred
     next.cells[std::size_t(index)] = genome;
     next.selected[std::size_t(index)] = false;
     pushGeneration(std::move(next));
@@ -192,31 +196,64 @@ void PopulationModel::pushGeneration(Generation generation) {
     if (mEmptyStart) {
         // The first designs replace the empty placeholder: they are generation 1.
         mEmptyStart = false;
-        mCurrent = -1;
+        mHistory.clear();
+        mSessionCells.clear();
+        mForwardChild.clear();
+        generation.parent = -1;
+    } else {
+        generation.parent = mCurrent;
     }
-    mHistory.resize(std::size_t(mCurrent + 1));
-    if (mSessionCells.size() > mHistory.size()) mSessionCells.resize(mHistory.size());
-    generation.number = mCurrent + 1;
     mHistory.push_back(std::move(generation));
-    mCurrent = int(mHistory.size()) - 1;
+    numberGeneration(mHistory, mHistory.size() - 1);
+    mForwardChild.resize(mHistory.size(), -1);
+    setCurrent(int(mHistory.size()) - 1);
     currentGenerationChanged();
+}
+
+std::vector<int> PopulationModel::children(int index) const {
+    std::vector<int> result;
+    for (std::size_t k = 0; k < mHistory.size(); ++k)
+        if (mHistory[k].parent == index && index >= 0) result.push_back(int(k));
+    return result;
+}
+
+QString PopulationModel::generationLabel(int index) const {
+    if (index < 0 || index >= int(mHistory.size())) return {};
+    const Generation& g = mHistory[std::size_t(index)];
+    return g.branch == 1 ? QString::number(g.number) : tr("%1 (branch %2)").arg(g.number).arg(g.branch);
+}
+
+int PopulationModel::forwardTarget() const {
+    if (mEmptyStart) return -1;
+    const int remembered = std::size_t(mCurrent) < mForwardChild.size() ? mForwardChild[std::size_t(mCurrent)] : -1;
+    if (remembered >= 0) return remembered;
+    const std::vector<int> next = children(mCurrent);
+    return next.empty() ? -1 : next.back();
+}
+
+void PopulationModel::setCurrent(int index) {
+    mCurrent = index;
+    // Every generation on the way from the root was visited on the way here.
+    for (int k = index; mHistory[std::size_t(k)].parent >= 0; k = mHistory[std::size_t(k)].parent)
+        mForwardChild[std::size_t(mHistory[std::size_t(k)].parent)] = k;
 }
 
 void PopulationModel::goBack() {
     if (!canGoBack()) return;
-    --mCurrent;
+    setCurrent(current().parent);
     currentGenerationChanged();
 }
 
 void PopulationModel::goForward() {
-    if (!canGoForward()) return;
-    ++mCurrent;
+    const int next = forwardTarget();
+    if (next < 0) return;
+    setCurrent(next);
     currentGenerationChanged();
 }
 
 void PopulationModel::goTo(int index) {
-    if (index < 0 || index >= int(mHistory.size()) || index == mCurrent) return;
-    mCurrent = index;
+    if (mEmptyStart || index < 0 || index >= int(mHistory.size()) || index == mCurrent) return;
+    setCurrent(index);
     currentGenerationChanged();
 }
 
@@ -244,8 +281,14 @@ void PopulationModel::restoreSession(SavedSession session) {
     if (session.history.empty()) return;
     mHistory = std::move(session.history);
     mSessionCells.clear();
-    for (std::size_t k = 0; k < mHistory.size(); ++k) mHistory[k].number = int(k);
-    mCurrent = std::clamp(session.current, 0, int(mHistory.size()) - 1);
+    for (std::size_t k = 0; k < mHistory.size(); ++k) {
+        // A parent that is not an earlier generation would make a cycle: a root instead.
+        int& parent = mHistory[k].parent;
+        if (parent < -1 || parent >= int(k)) parent = -1;
+        numberGeneration(mHistory, k);
+    }
+    mForwardChild.assign(mHistory.size(), -1);
+    setCurrent(std::clamp(session.current, 0, int(mHistory.size()) - 1));
     mSessionSeed = session.seed;
     mMesh = session.mesh;
     mEmptyStart = false;
@@ -329,7 +372,21 @@ QString operatorLabel(const QString& name) {
     return op ? operatorLabel(*op) : name;
 }
 
-int displayNumber(int index) { return index + 1; }
+void numberGeneration(std::vector<Generation>& history, std::size_t k) {
+    Generation& g = history[k];
+    const bool firstChild = std::none_of(history.begin(), history.begin() + std::ptrdiff_t(k),
+                                         [&](const Generation& other) { return other.parent == g.parent; });
+    if (g.parent >= 0 && firstChild) {
+        const Generation& parent = history[std::size_t(g.parent)];
+        g.number = parent.number + 1;
+        g.branch = parent.branch;
+        return;
+    }
+    g.number = g.parent >= 0 ? history[std::size_t(g.parent)].number + 1 : 1;
+    int branches = 0;
+    for (std::size_t j = 0; j < k; ++j) branches = std::max(branches, history[j].branch);
+    g.branch = branches + 1;
+}
 
 LineageInfo lineageOf(const Genome& genome) {
     LineageInfo info;

@@ -1,7 +1,7 @@
 #pragma once
 /// The workbench's model: the nine designs of the current generation, the parents the user has
-/// selected, every generation since the session began (back and forward), and the favourites
-/// shelf. No widgets here, so the breeding logic is tested without a window.
+/// selected, every generation since the session began (a tree: back, forward and branches), and
+/// the favourites shelf. No widgets here, so the breeding logic is tested without a window.
 
 #include "marbler/Genome.h"
 #include "marbler/Operators.h"
@@ -27,9 +27,22 @@ struct Generation {
     std::array<std::optional<Genome>, CellCount> cells;
     std::array<bool, CellCount> selected{};
     QString description; ///< "Alter of 1 parent", "New random population", "Opened a.marble.json"
-    int number = 0;      ///< position in the session's history, 0 for the first (shown as "#1")
+    /// The generation this one grew from (an index into the history, always an earlier one), or
+    /// -1 for a root (the session's first generation).
+    int parent = -1;
+    /// The number the user sees, "Generation 3": 1 for a root, the parent's number + 1 after
+    /// (its depth in the tree). Bred designs record it (meta.lineage.generation, "(g3 #7)").
+    int number = 1;
+    /// The branch it is on, numbered from 1 in the order branches were started: a generation is
+    /// on its parent's branch when it is that parent's first child, and starts a new branch
+    /// otherwise (and when it is a root other than the first generation).
+    int branch = 1;
     std::vector<int> parentCells; ///< the cells whose designs this generation was bred from
 };
+
+/// Sets history[k]'s number and branch from its parent and the generations before it (see
+/// Generation). The parent must be -1 or an index below k.
+void numberGeneration(std::vector<Generation>& history, std::size_t k);
 
 /// A design kept aside on the favourites shelf, saved as a genome file.
 struct Favourite {
@@ -38,11 +51,15 @@ struct Favourite {
 };
 
 /// The population, its history and the favourites. Every change that alters the grid's designs
-/// (breeding, a new random population, loading a file, bringing back a favourite) adds a
-/// generation, so back/forward undoes and redoes any of them; forward history is dropped when a
-/// new change is made after going back. A new model holds an empty placeholder grid that is not
-/// a generation: the first designs (a random population, opened files) replace it and become
-/// generation 1, so there is never an empty grid to go back to.
+/// (breeding, a new random population, loading a file, bringing back a favourite or a design of
+/// another generation) adds a generation as a child of the current one, so back/forward undoes
+/// and redoes any of them. History is a tree and nothing is ever dropped: a change made after
+/// going back starts a new branch beside the old one. Back goes to the parent generation;
+/// Forward goes to the child last visited or made from the current generation (the newest child
+/// when none has been, as after a resume), so Back then Forward always returns to where one
+/// was. A new model holds an empty placeholder grid that is not a generation: the first designs
+/// (a random population, opened files) replace it and become generation 1, so there is never
+/// an empty grid to go back to.
 struct SavedSession;
 
 class PopulationModel : public QObject {
@@ -68,7 +85,8 @@ public:
     /// Whether an operator can run with the current selection (parent count, dimensions).
     bool canApply(GeneticOperator op) const;
     /// Keeps the selected parents in their cells and fills every other cell with offspring,
-    /// seeded by the session seed and the new generation's number. Throws marbler::Error
+    /// seeded by the session seed and the new generation's index in the history (unique, so
+    /// breeding again from a generation one went back to draws anew). Throws marbler::Error
     /// (InputError for a wrong parent count or mixed dimensions).
     void apply(GeneticOperator op, double strength);
     /// The seed apply() would use for the next generation.
@@ -88,17 +106,26 @@ public:
     /// angle lives in the design's meta.view, so it travels with it).
     void setCellView(int index, const ViewAngle& view);
 
-    /// Generation history.
+    /// Generation history: every generation in the order they were made (a child always after
+    /// its parent), each naming its parent.
     const Generation& current() const { return mHistory[std::size_t(mCurrent)]; }
     const std::vector<Generation>& history() const { return mHistory; }
     int currentIndex() const { return mCurrent; }
+    /// The generations grown from one (indices, oldest first).
+    std::vector<int> children(int index) const;
+    /// How the user names a generation: its number, with the branch after the first branch
+    /// ("3", "3 (branch 2)"), as in "Generation 3 (branch 2)". The status bar, the lineage and
+    /// the messages all say this.
+    QString generationLabel(int index) const;
     /// Whether no design has been put in yet (the placeholder before generation 1).
     bool isEmptyWorkbench() const { return mEmptyStart; }
-    bool canGoBack() const { return mCurrent > 0; }
-    bool canGoForward() const { return mCurrent + 1 < int(mHistory.size()); }
+    bool canGoBack() const { return !mEmptyStart && current().parent >= 0; }
+    bool canGoForward() const { return forwardTarget() >= 0; }
+    /// To the parent generation.
     void goBack();
+    /// To the child last visited or made from here (the newest when none was).
     void goForward();
-    /// Jumps to any generation of the history.
+    /// Jumps to any generation of any branch; Forward then retraces the way to it.
     void goTo(int index);
 
     /// Favourites: the folder they live in (created when needed). Default: the app data folder's
@@ -147,7 +174,13 @@ signals:
     void sessionSaveFailed(const QString& message);
 
 private:
+    /// Adds a generation as a child of the current one (a root when it replaces the empty
+    /// placeholder) and makes it current.
     void pushGeneration(Generation generation);
+    /// The generation goForward() goes to, -1 when the current one has no child.
+    int forwardTarget() const;
+    /// Makes a generation current and remembers the way to it for Forward.
+    void setCurrent(int index);
     void autosave();
     /// Tells the views that the current generation (population, selection, history) changed,
     /// and saves the session.
@@ -157,6 +190,9 @@ private:
     std::uint64_t mSessionSeed = 1;
     std::vector<Generation> mHistory;
     int mCurrent = 0;
+    /// Per generation, the child Forward goes to (-1: the newest child). Not saved: after a
+    /// resume the way to the current generation is remembered again.
+    std::vector<int> mForwardChild;
     bool mEmptyStart = true;
     QString mFavouritesFolder;
     std::vector<Favourite> mFavourites;
@@ -173,9 +209,6 @@ QString operatorLabel(GeneticOperator op);
 /// The label of an operator given by its file name ("reinit" -> "Change initial state"); an
 /// unknown name is returned as it is.
 QString operatorLabel(const QString& name);
-/// The number the user sees for a generation at a history index (0-based): "generation 1" is
-/// the first. The status bar, the lineage, the cells and bred designs' names all count so.
-int displayNumber(int index);
 
 /// The lineage of a design as the UI shows it, read from meta.lineage and meta.id.
 struct LineageInfo {

@@ -16,7 +16,9 @@ namespace marbler::ui {
 namespace {
 
 constexpr const char* FormatName = "marbler-session";
-constexpr int SessionVersion = 1;
+/// Version 2 records each generation's parent (history is a tree); version 1, a line of
+/// generations, is still read.
+constexpr int SessionVersion = 2;
 /// A session larger than this is not read (it would be thousands of generations of big designs).
 constexpr qint64 MaxSessionBytes = 512LL * 1024 * 1024;
 
@@ -71,6 +73,7 @@ std::string serializeSession(const PopulationModel& model, std::vector<std::stri
         const Generation& g = history[k];
         nlohmann::ordered_json gen;
         gen["description"] = g.description.toStdString();
+        gen["parent"] = g.parent;
         gen["parents"] = g.parentCells;
         std::vector<int> selected;
         for (int i = 0; i < CellCount; ++i)
@@ -115,8 +118,10 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
     }
     if (!doc.is_object()) bad(name, "", "a session is a JSON object");
     if (!doc.contains("format") || doc["format"] != FormatName) bad(name, "format", "not a Marbler session");
-    if (!doc.contains("version") || !doc["version"].is_number_integer() || doc["version"].get<int>() != SessionVersion)
-        bad(name, "version", "only version 1 sessions are read");
+    if (!doc.contains("version") || !doc["version"].is_number_integer() || doc["version"].get<long long>() < 1
+        || doc["version"].get<long long>() > SessionVersion)
+        bad(name, "version", "only version 1 and 2 sessions are read");
+    const int version = doc["version"].get<int>();
 
     SavedSession session;
     if (!doc.contains("seed") || !doc["seed"].is_number_unsigned()) bad(name, "seed", "must be a whole number >= 0");
@@ -139,7 +144,19 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
         const auto& gen = generations[k];
         if (!gen.is_object()) bad(name, at, "must be an object");
         Generation g;
-        g.number = int(k);
+        if (version == 1) {
+            // Version 1 sessions were a line: each generation grew from the one before.
+            g.parent = int(k) - 1;
+        } else {
+            // Only an earlier generation can be a parent, which also rules out cycles.
+            if (!gen.contains("parent") || !gen["parent"].is_number_integer() || gen["parent"].get<long long>() < -1
+                || gen["parent"].get<long long>() >= static_cast<long long>(k))
+                bad(name, at + ".parent",
+                    k == 0 ? std::string("must be -1: the first generation grows from none")
+                           : "must name an earlier generation (0 to " + std::to_string(k - 1)
+                                 + "), or be -1 for a generation that grows from none");
+            g.parent = gen["parent"].get<int>();
+        }
         if (gen.contains("description")) {
             if (!gen["description"].is_string()) bad(name, at + ".description", "must be a string");
             g.description = QString::fromStdString(gen["description"].get<std::string>());
@@ -174,6 +191,7 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
         for (int i : cellList(gen, "selected", name, at))
             if (g.cells[std::size_t(i)]) g.selected[std::size_t(i)] = true;
         session.history.push_back(std::move(g));
+        numberGeneration(session.history, k);
     }
     if (!doc.contains("current") || !doc["current"].is_number_integer() || doc["current"].get<long long>() < 0
         || doc["current"].get<long long>() >= static_cast<long long>(session.history.size()))

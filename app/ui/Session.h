@@ -6,14 +6,17 @@
 ///
 /// One JSON document, `session.json` in the session folder:
 ///
-///     {"format": "marbler-session", "version": 1, "seed": 42, "current": 1,
+///     {"format": "marbler-session", "version": 2, "seed": 42, "current": 1,
 ///      "dimension": 2, "mesh": "vase",
-///      "generations": [{"description": "...", "parents": [4], "selected": [4],
+///      "generations": [{"description": "...", "parent": 0, "parents": [4], "selected": [4],
 ///                       "cells": [GENOME, null, ...], "bases": ["/dir", null, ...]}, ...]}
 ///
-/// where GENOME is a genome document exactly as a genome file holds it (marbler::toJson, read
-/// back with marbler::parseGenome, so every rule of the genome format is checked on resume),
-/// and `bases` the folders relative source images resolve against (absent when none).
+/// where `parent` is the index of the generation this one grew from (always an earlier one; -1
+/// for the first), `parents` the cells whose designs it was bred from, GENOME a genome document
+/// exactly as a genome file holds it (marbler::toJson, read back with marbler::parseGenome, so
+/// every rule of the genome format is checked on resume), and `bases` the folders relative
+/// source images resolve against (absent when none). Version 1 documents, which have no
+/// `parent` (each generation grew from the one before), are still read.
 
 #include "ui/PopulationModel.h"
 
@@ -28,7 +31,7 @@ namespace marbler::ui {
 
 /// A session read back from disk.
 struct SavedSession {
-    std::vector<Generation> history; ///< at least one generation
+    std::vector<Generation> history; ///< at least one generation, numbered (numberGeneration)
     int current = 0;                 ///< index into history
     std::uint64_t seed = 1;
     int dimension = 2;               ///< 2: flat, 3: solid (the kind of the current grid)

@@ -122,7 +122,7 @@ void startSession(WorkbenchWindow& window, const StartOptions& options) {
         StartChoice choice = lastStartChoice();
         if (saved) {
             choice.resume = true;
-            choice.resumeGeneration = saved->current + 1;
+            choice.resumeGeneration = saved->history[std::size_t(saved->current)].number;
             choice.resumeDimension = saved->dimension;
         }
         if (options.dimension) {

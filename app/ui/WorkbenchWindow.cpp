@@ -23,7 +23,9 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QPainter>
 #include <QRandomGenerator>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSlider>
 #include <QStatusBar>
@@ -37,9 +39,21 @@ namespace marbler::ui {
 
 namespace {
 
-/// Render keys: the grid uses 0..8, favourite thumbnails start here.
+/// Render keys: the grid uses 0..8, favourite thumbnails start here, lineage thumbnails at
+/// LineageKeyBase (the queue renders lower keys first, so the grid comes before thumbnails).
 constexpr std::uint64_t FavouriteKeyBase = 100;
+constexpr std::uint64_t LineageKeyBase = std::uint64_t(1) << 32;
 constexpr int ThumbnailSide = 96;
+/// The lineage's icons: a design's thumbnail, and a generation's mosaic of nine (tiles of 14
+/// pixels with 1-pixel gaps): small enough to render many, big enough to tell inks apart.
+constexpr int LineageIconSide = 44;
+
+/// Lineage thumbnails get keys of their own, unique in the process, so windows sharing one
+/// render service never take each other's results.
+std::uint64_t nextLineageKey() {
+    static std::uint64_t next = LineageKeyBase;
+    return next++;
+}
 
 /// The favourites list hands a dragged favourite over as genome JSON, which a cell accepts.
 class FavouritesList : public QListWidget {
@@ -175,6 +189,7 @@ WorkbenchWindow::~WorkbenchWindow() {
     // has no receiver then, but the work itself is wasted, so drop it.
     for (int i = 0; i < CellCount; ++i) mRenderer->cancel(std::uint64_t(i));
     for (std::size_t i = 0; i < mModel->favourites().size(); ++i) mRenderer->cancel(FavouriteKeyBase + i);
+    for (auto it = mLineageRequests.cbegin(); it != mLineageRequests.cend(); ++it) mRenderer->cancel(it.key());
 }
 
 void WorkbenchWindow::buildActions() {
@@ -204,12 +219,12 @@ void WorkbenchWindow::buildActions() {
                                 &PopulationModel::goBack);
     mBack->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
     mBack->setIconText(tr("◀ Back"));
-    mBack->setToolTip(tr("Back to the previous generation (Ctrl+Z)"));
+    mBack->setToolTip(tr("Back to the generation this one grew from (Ctrl+Z)"));
     mForward = editMenu->addAction(style()->standardIcon(QStyle::SP_ArrowForward), tr("&Forward a generation"),
                                    mModel, &PopulationModel::goForward);
     mForward->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
     mForward->setIconText(tr("Forward ▶"));
-    mForward->setToolTip(tr("Forward to the next generation (Ctrl+Shift+Z)"));
+    mForward->setToolTip(tr("Forward to the generation last visited or made from this one (Ctrl+Shift+Z)"));
     editMenu->addSeparator();
     editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection)
         ->setShortcut(QKeySequence(Qt::Key_Escape));
@@ -266,6 +281,7 @@ void WorkbenchWindow::buildActions() {
         QSettings().setValue(QStringLiteral("view/mesh"), mesh);
         mModel->setMesh(mesh);
         requestAllRenders();
+        updateLineage(); // solid designs' thumbnails show the object
     });
     bar->addWidget(mMesh);
 }
@@ -307,11 +323,51 @@ void WorkbenchWindow::buildDocks() {
     mLineageTree->setColumnCount(4);
     mLineageTree->setHeaderLabels({tr("Design"), tr("Made by"), tr("Parents"), tr("Generation")});
     mLineageTree->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    mLineageTree->setToolTip(tr("How the current designs came to be. Double-click a generation to go to it."));
-    connect(mLineageTree, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
-        const QVariant generation = item->data(0, Qt::UserRole);
-        if (generation.isValid()) mModel->goTo(generation.toInt());
+    mLineageTree->setIconSize(QSize(LineageIconSide, LineageIconSide));
+    // A double-click goes to a generation; it must not also fold it.
+    mLineageTree->setExpandsOnDoubleClick(false);
+    mLineageTree->setToolTip(tr("Every generation, branches included, and how the designs came to be. Click a "
+                                "design to select it; double-click a generation to go back to it, or a design of "
+                                "another generation to bring it back into the grid."));
+    mLineageClickTimer.setSingleShot(true);
+    mLineageClickTimer.setInterval(QApplication::doubleClickInterval());
+    connect(&mLineageClickTimer, &QTimer::timeout, this,
+            [this] { selectLineageDesign(mLineageClickGeneration, mLineageClickCell); });
+    connect(mLineageTree, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
+        const QVariant cell = item->data(0, LineageCellRole);
+        if (!cell.isValid()) return;
+        mLineageClickGeneration = item->data(0, LineageGenerationRole).toInt();
+        mLineageClickCell = cell.toInt();
+        mLineageClickTimer.start();
     });
+    connect(mLineageTree, &QTreeWidget::itemDoubleClicked, this, &WorkbenchWindow::onLineageDoubleClicked);
+    connect(mLineageTree, &QTreeWidget::itemExpanded, this, [this](QTreeWidgetItem* item) {
+        const QVariant generation = item->data(0, LineageGenerationRole);
+        if (generation.isValid() && !item->data(0, LineageCellRole).isValid()) {
+            mExpandedGenerations.insert(generation.toInt());
+            populateLineageGeneration(item);
+        }
+        const QVariant branch = item->data(0, LineageBranchRole);
+        if (branch.isValid()) mCollapsedBranches.remove(branch.toInt());
+        if (item == mLineageTree->topLevelItem(0)) mCurrentDesignsFolded = false;
+        mLineageThumbnailTimer.start();
+    });
+    connect(mLineageTree, &QTreeWidget::itemCollapsed, this, [this](QTreeWidgetItem* item) {
+        const QVariant generation = item->data(0, LineageGenerationRole);
+        if (generation.isValid()) mExpandedGenerations.remove(generation.toInt());
+        const QVariant branch = item->data(0, LineageBranchRole);
+        if (branch.isValid()) mCollapsedBranches.insert(branch.toInt());
+        if (item == mLineageTree->topLevelItem(0)) mCurrentDesignsFolded = true;
+    });
+    // Thumbnails are rendered for what comes into view: after scrolling, resizing, showing.
+    mLineageThumbnailTimer.setSingleShot(true);
+    mLineageThumbnailTimer.setInterval(30);
+    connect(&mLineageThumbnailTimer, &QTimer::timeout, this, &WorkbenchWindow::requestLineageThumbnails);
+    // The timer is the receiver: the dock hides as the window is destroyed, after the timer.
+    const auto scheduleThumbnails = [this] { mLineageThumbnailTimer.start(); };
+    connect(mLineageTree->verticalScrollBar(), &QScrollBar::valueChanged, &mLineageThumbnailTimer, scheduleThumbnails);
+    connect(mLineageTree->verticalScrollBar(), &QScrollBar::rangeChanged, &mLineageThumbnailTimer, scheduleThumbnails);
+    connect(lineageDock, &QDockWidget::visibilityChanged, &mLineageThumbnailTimer, scheduleThumbnails);
     mLineageTree->setMinimumSize(260, 140);
     lineageDock->setWidget(mLineageTree);
     addDockWidget(Qt::RightDockWidgetArea, lineageDock);
@@ -447,44 +503,240 @@ void WorkbenchWindow::updateActions() {
         statusBar()->showMessage(tr("No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)"));
         return;
     }
-    statusBar()->showMessage(tr("Generation %1 of %2: %3 — %4 selected")
-                                 .arg(displayNumber(mModel->currentIndex()))
-                                 .arg(mModel->history().size())
+    statusBar()->showMessage(tr("Generation %1: %2 — %3 selected")
+                                 .arg(mModel->generationLabel(mModel->currentIndex()))
                                  .arg(gen.description)
                                  .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
 }
 
 void WorkbenchWindow::updateLineage() {
+    mLineageDesignItems.clear();
+    mLineageGenerationItems.clear();
     mLineageTree->clear();
+    const int current = mModel->currentIndex();
     auto* designs = new QTreeWidgetItem(mLineageTree, {tr("Current designs")});
-    for (int i = 0; i < CellCount; ++i) {
-        const Genome* g = mModel->cell(i);
-        if (!g) continue;
-        const LineageInfo info = lineageOf(*g);
-        QStringList parents;
-        for (const QString& p : info.parents) parents << shortId(p);
-        auto* item = new QTreeWidgetItem(designs, {tr("Design %1: %2").arg(i + 1).arg(info.name.isEmpty() ? shortId(info.id) : info.name),
-                                                   madeBy(info), parents.join(QStringLiteral(", ")),
-                                                   info.op.isEmpty() ? QString() : QString::number(info.generation)});
-        item->setToolTip(0, info.id);
-        item->setToolTip(2, info.parents.join(QLatin1Char('\n')));
-    }
+    for (int i = 0; i < CellCount && !mModel->isEmptyWorkbench(); ++i)
+        if (mModel->cell(i)) addLineageDesign(designs, current, i);
     auto* generations = new QTreeWidgetItem(mLineageTree, {tr("Generations")});
-    const auto& history = mModel->history();
+    designs->setExpanded(!mCurrentDesignsFolded);
+    generations->setExpanded(true);
     // The empty placeholder before the first designs is no generation.
-    for (std::size_t k = 0; k < history.size() && !mModel->isEmptyWorkbench(); ++k) {
+    if (mModel->isEmptyWorkbench()) return;
+
+    const auto& history = mModel->history();
+    std::vector<std::vector<int>> children(history.size());
+    std::vector<int> roots;
+    for (std::size_t k = 0; k < history.size(); ++k) {
+        const int parent = history[k].parent;
+        (parent >= 0 ? children[std::size_t(parent)] : roots).push_back(int(k));
+    }
+    QTreeWidgetItem* currentItem = nullptr;
+    const auto addGeneration = [&](QTreeWidgetItem* container, int k) {
+        const Generation& g = history[std::size_t(k)];
         QStringList parents;
-        for (int i : history[k].parentCells) parents << tr("design %1").arg(i + 1);
-        auto* item = new QTreeWidgetItem(generations, {tr("Generation %1").arg(displayNumber(int(k))), history[k].description,
-                                                       parents.join(QStringLiteral(", ")), QString()});
-        item->setData(0, Qt::UserRole, int(k));
-        if (int(k) == mModel->currentIndex()) {
+        for (int i : g.parentCells) parents << tr("design %1").arg(i + 1);
+        auto* item = new QTreeWidgetItem(container, {tr("Generation %1").arg(mModel->generationLabel(k)), g.description,
+                                                     parents.join(QStringLiteral(", ")), QString()});
+        item->setData(0, LineageGenerationRole, k);
+        for (const auto& cell : g.cells)
+            if (cell) mLineageGenerationItems.insert(lineageThumbnailKey(*cell), item);
+        item->setIcon(0, lineageMosaic(k));
+        // Designs are added when the generation is first expanded.
+        item->setChildIndicatorPolicy(QTreeWidgetItem::ShowIndicator);
+        if (mExpandedGenerations.contains(k)) item->setExpanded(true);
+        if (k == current) {
+            currentItem = item;
             QFont f = item->font(0);
             f.setBold(true);
-            for (int c = 0; c < 4; ++c) item->setFont(c, f);
+            QColor mark = palette().color(QPalette::Highlight);
+            mark.setAlpha(60);
+            for (int c = 0; c < 4; ++c) {
+                item->setFont(c, f);
+                item->setBackground(c, mark);
+            }
+            item->setToolTip(0, tr("The current generation: its designs are in the grid"));
         }
+    };
+    // A branch's generations in order, each followed by the branches that grew from it, in
+    // the order they were started; the generation's first child continues its branch.
+    const auto addBranch = [&](auto& self, QTreeWidgetItem* container, int first) -> void {
+        for (int k = first; k >= 0;) {
+            addGeneration(container, k);
+            int next = -1;
+            for (int child : children[std::size_t(k)]) {
+                if (history[std::size_t(child)].branch == history[std::size_t(k)].branch) {
+                    next = child;
+                    continue;
+                }
+                const int branch = history[std::size_t(child)].branch;
+                auto* branchItem = new QTreeWidgetItem(
+                    container, {tr("Branch %1").arg(branch), tr("from generation %1").arg(mModel->generationLabel(k))});
+                branchItem->setData(0, LineageBranchRole, branch);
+                self(self, branchItem, child);
+                branchItem->setExpanded(!mCollapsedBranches.contains(branch));
+            }
+            k = next;
+        }
+    };
+    for (int root : roots) {
+        if (root == roots.front()) {
+            addBranch(addBranch, generations, root);
+            continue;
+        }
+        const int branch = history[std::size_t(root)].branch;
+        auto* branchItem = new QTreeWidgetItem(generations, {tr("Branch %1").arg(branch), tr("a new start")});
+        branchItem->setData(0, LineageBranchRole, branch);
+        addBranch(addBranch, branchItem, root);
+        branchItem->setExpanded(!mCollapsedBranches.contains(branch));
     }
-    mLineageTree->expandAll();
+    if (currentItem) {
+        for (QTreeWidgetItem* up = currentItem->parent(); up; up = up->parent()) up->setExpanded(true);
+        mLineageTree->scrollToItem(currentItem);
+    }
+    mLineageThumbnailTimer.start();
+}
+
+void WorkbenchWindow::populateLineageGeneration(QTreeWidgetItem* item) {
+    if (item->childCount() > 0) return;
+    const int generation = item->data(0, LineageGenerationRole).toInt();
+    const auto& history = mModel->history();
+    if (generation < 0 || generation >= int(history.size())) return;
+    for (int i = 0; i < CellCount; ++i)
+        if (history[std::size_t(generation)].cells[std::size_t(i)]) addLineageDesign(item, generation, i);
+}
+
+void WorkbenchWindow::addLineageDesign(QTreeWidgetItem* parent, int generation, int cell) {
+    const Genome& g = *mModel->history()[std::size_t(generation)].cells[std::size_t(cell)];
+    const LineageInfo info = lineageOf(g);
+    QStringList parents;
+    for (const QString& p : info.parents) parents << shortId(p);
+    auto* item = new QTreeWidgetItem(parent, {tr("Design %1: %2").arg(cell + 1).arg(info.name.isEmpty() ? shortId(info.id) : info.name),
+                                              madeBy(info), parents.join(QStringLiteral(", ")),
+                                              info.op.isEmpty() ? QString() : QString::number(info.generation)});
+    item->setToolTip(0, info.id);
+    item->setToolTip(2, info.parents.join(QLatin1Char('\n')));
+    item->setData(0, LineageGenerationRole, generation);
+    item->setData(0, LineageCellRole, cell);
+    const QString key = lineageThumbnailKey(g);
+    item->setIcon(0, lineageIcon(key));
+    mLineageDesignItems.insert(key, item);
+}
+
+QString WorkbenchWindow::lineageThumbnailKey(const Genome& genome) const {
+    return QString::fromStdString(genomeId(genome)) + QLatin1Char('/')
+         + (genome.dimension == 3 ? mMesh->currentText() : QString());
+}
+
+bool WorkbenchWindow::hasLineageThumbnail(const Genome& genome) const {
+    return mLineageThumbnails.contains(lineageThumbnailKey(genome));
+}
+
+QPixmap WorkbenchWindow::lineageIcon(const QString& key) const {
+    if (const QImage* image = mLineageThumbnails.object(key)) return QPixmap::fromImage(*image);
+    QPixmap blank(LineageIconSide, LineageIconSide);
+    blank.fill(palette().color(QPalette::Mid));
+    return blank;
+}
+
+QPixmap WorkbenchWindow::lineageMosaic(int generation) const {
+    QPixmap mosaic(LineageIconSide, LineageIconSide);
+    mosaic.fill(Qt::transparent);
+    QPainter painter(&mosaic);
+    painter.setRenderHint(QPainter::SmoothPixmapTransform);
+    const int tile = (LineageIconSide - 2) / 3;
+    const auto& cells = mModel->history()[std::size_t(generation)].cells;
+    for (int i = 0; i < CellCount; ++i) {
+        const auto& cell = cells[std::size_t(i)];
+        if (!cell) continue;
+        const QRect rect((i % 3) * (tile + 1), (i / 3) * (tile + 1), tile, tile);
+        if (const QImage* image = mLineageThumbnails.object(lineageThumbnailKey(*cell)))
+            painter.drawImage(rect, *image);
+        else
+            painter.fillRect(rect, palette().color(QPalette::Mid));
+    }
+    return mosaic;
+}
+
+void WorkbenchWindow::requestLineageThumbnails() {
+    if (!mLineageTree->isVisible() || mModel->isEmptyWorkbench()) return;
+    const int bottom = mLineageTree->viewport()->height();
+    const auto& history = mModel->history();
+    // The rows in view, top to bottom (itemBelow skips what is folded away).
+    for (QTreeWidgetItem* item = mLineageTree->itemAt(QPoint(0, 0));
+         item && mLineageTree->visualItemRect(item).top() < bottom; item = mLineageTree->itemBelow(item)) {
+        const QVariant generation = item->data(0, LineageGenerationRole);
+        if (!generation.isValid()) continue;
+        const auto& cells = history[std::size_t(generation.toInt())].cells;
+        const QVariant cell = item->data(0, LineageCellRole);
+        for (int i = 0; i < CellCount; ++i)
+            if (cells[std::size_t(i)] && (!cell.isValid() || cell.toInt() == i)) requestLineageThumbnail(*cells[std::size_t(i)]);
+    }
+}
+
+void WorkbenchWindow::requestLineageThumbnail(const Genome& genome) {
+    const QString key = lineageThumbnailKey(genome);
+    if (mLineagePending.contains(key) || mLineageThumbnails.contains(key)) return;
+    RenderRequest request;
+    request.genome = genome;
+    request.size = QSize(LineageIconSide, LineageIconSide);
+    request.mesh = mMesh->currentText();
+    const std::uint64_t renderKey = nextLineageKey();
+    mLineageRequests.insert(renderKey, key);
+    mLineagePending.insert(key);
+    mRenderer->request(renderKey, std::move(request));
+}
+
+void WorkbenchWindow::onLineageThumbnail(std::uint64_t key, const QImage& image) {
+    const QString thumbnail = mLineageRequests.take(key);
+    mLineagePending.remove(thumbnail);
+    if (thumbnail.isEmpty()) return;
+    // A failed render gets a dark blank, so it is not asked for again and again.
+    QImage shown = image;
+    if (shown.isNull()) {
+        shown = QImage(LineageIconSide, LineageIconSide, QImage::Format_RGB888);
+        shown.fill(palette().color(QPalette::Dark));
+    }
+    mLineageThumbnails.insert(thumbnail, new QImage(shown));
+    const QPixmap icon = lineageIcon(thumbnail);
+    for (QTreeWidgetItem* item : mLineageDesignItems.values(thumbnail)) item->setIcon(0, icon);
+    for (QTreeWidgetItem* item : mLineageGenerationItems.values(thumbnail))
+        item->setIcon(0, lineageMosaic(item->data(0, LineageGenerationRole).toInt()));
+}
+
+void WorkbenchWindow::selectLineageDesign(int generation, int cell) {
+    const auto& history = mModel->history();
+    if (generation < 0 || generation >= int(history.size())) return;
+    if (generation != mModel->currentIndex()) mModel->goTo(generation);
+    mModel->setSelected(cell, true);
+}
+
+void WorkbenchWindow::onLineageDoubleClicked(QTreeWidgetItem* item) {
+    mLineageClickTimer.stop();
+    const QVariant generation = item->data(0, LineageGenerationRole);
+    if (!generation.isValid()) return;
+    const int index = generation.toInt();
+    const QVariant cell = item->data(0, LineageCellRole);
+    // Changing the generation rebuilds the tree, which must not happen while the view is
+    // still handling the double-click on one of its items.
+    QTimer::singleShot(0, this, [this, index, cell] {
+        if (!cell.isValid())
+            mModel->goTo(index);
+        else if (index == mModel->currentIndex())
+            openDesign(cell.toInt());
+        else
+            bringBackDesign(index, cell.toInt());
+    });
+}
+
+void WorkbenchWindow::bringBackDesign(int generation, int cell) {
+    const auto& history = mModel->history();
+    if (generation < 0 || generation >= int(history.size()) || cell < 0 || cell >= CellCount) return;
+    const auto& design = history[std::size_t(generation)].cells[std::size_t(cell)];
+    if (!design) return;
+    const QString from = tr("design %1 of generation %2").arg(cell + 1).arg(mModel->generationLabel(generation));
+    const std::vector<int> used = mModel->placeDesigns({*design}, tr("Brought back %1").arg(from));
+    if (!used.empty())
+        statusBar()->showMessage(tr("Brought back %1 into design %2").arg(from).arg(used.front() + 1), 5000);
 }
 
 void WorkbenchWindow::updateFavourites() {
@@ -580,6 +832,10 @@ void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool fi
         }
         return;
     }
+    if (key >= LineageKeyBase) {
+        if (final) onLineageThumbnail(key, image);
+        return;
+    }
     if (key >= FavouriteKeyBase) {
         const int row = int(key - FavouriteKeyBase);
         if (QListWidgetItem* item = mFavouritesList->item(row)) item->setIcon(QIcon(QPixmap::fromImage(image)));
@@ -592,6 +848,8 @@ void WorkbenchWindow::onRenderFailed(std::uint64_t key, const QString& message) 
         mFinal[std::size_t(key)] = true;
         statusBar()->showMessage(tr("Design %1 cannot be rendered: %2").arg(key + 1).arg(message), 10000);
         if (renderingDone()) emit renderingFinished();
+    } else if (key >= LineageKeyBase) {
+        onLineageThumbnail(key, QImage());
     }
 }
 
@@ -638,7 +896,7 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
         reportError(this, tr("Cannot breed"), QString::fromStdString(e.what()));
         return false;
     }
-    statusBar()->showMessage(tr("%1: generation %2").arg(operatorLabel(op)).arg(displayNumber(mModel->currentIndex())), 5000);
+    statusBar()->showMessage(tr("%1: generation %2").arg(operatorLabel(op)).arg(mModel->generationLabel(mModel->currentIndex())), 5000);
     return true;
 }
 
@@ -796,7 +1054,7 @@ void WorkbenchWindow::resumeSession(SavedSession session) {
     mModel->restoreSession(std::move(session));
     mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
     setMesh(mModel->mesh());
-    statusBar()->showMessage(tr("Resumed the last session at generation %1").arg(displayNumber(mModel->currentIndex())), 5000);
+    statusBar()->showMessage(tr("Resumed the last session at generation %1").arg(mModel->generationLabel(mModel->currentIndex())), 5000);
 }
 
 QString WorkbenchWindow::mesh() const { return mMesh->currentText(); }

@@ -1,6 +1,7 @@
 #pragma once
 /// The evolution workbench: a 3 x 3 grid of designs, parents chosen by clicking, the four genetic
-/// operators, back/forward through generations, a lineage view and a favourites shelf.
+/// operators, back/forward through generations, a lineage view of the generation tree and a
+/// favourites shelf.
 
 #include "marbler/Operators.h"
 #include "marbler/gl/Backend.h"
@@ -8,7 +9,10 @@
 #include "ui/Session.h"
 
 #include <QCache>
+#include <QHash>
 #include <QMainWindow>
+#include <QMultiHash>
+#include <QSet>
 #include <QTimer>
 
 #include <array>
@@ -20,6 +24,7 @@ class QLabel;
 class QListWidget;
 class QSlider;
 class QTreeWidget;
+class QTreeWidgetItem;
 
 namespace marbler::ui {
 
@@ -40,7 +45,19 @@ public:
     QAction* backAction() const { return mBack; }
     QAction* forwardAction() const { return mForward; }
     QListWidget* favouritesList() const { return mFavouritesList; }
+    /// The lineage: "Current designs", then "Generations", the generation tree (a branch's
+    /// generations under a "Branch N" item placed after the generation it grew from), each
+    /// generation with its nine designs as a thumbnail mosaic and as child items.
     QTreeWidget* lineageTree() const { return mLineageTree; }
+    /// In the lineage, items of generations and designs hold the generation's history index in
+    /// this role (column 0), items of designs their cell in LineageCellRole, and branch items
+    /// their branch number in LineageBranchRole.
+    static constexpr int LineageGenerationRole = Qt::UserRole;
+    static constexpr int LineageCellRole = Qt::UserRole + 1;
+    static constexpr int LineageBranchRole = Qt::UserRole + 2;
+    /// Whether the lineage shows the rendered thumbnail of a design (else a blank, until it
+    /// arrives; thumbnails are rendered only for the items in view).
+    bool hasLineageThumbnail(const Genome& genome) const;
     /// The alteration strength the slider gives, 0..1.
     double strength() const;
     void setStrength(double strength);
@@ -58,6 +75,9 @@ public:
     /// The object solid designs are shown on ("vase", "sphere", ...; see meshNames()).
     QString mesh() const;
     void setMesh(const QString& mesh);
+    /// Brings a design of any generation back into the grid as a new generation (placed as
+    /// PopulationModel::placeDesigns places it), so Back undoes it.
+    void bringBackDesign(int generation, int cell);
     /// Keeps a cell's design on the favourites shelf.
     bool keepFavourite(int cell);
     /// Puts a favourite back into a cell (-1: the selected or first free cell).
@@ -89,6 +109,20 @@ private:
     void updateCells();
     void updateActions();
     void updateLineage();
+    /// Fills a generation's lineage item with its designs (done when it is first expanded).
+    void populateLineageGeneration(QTreeWidgetItem* item);
+    void addLineageDesign(QTreeWidgetItem* parent, int generation, int cell);
+    /// Asks for the thumbnails of the lineage items in view that are not rendered yet.
+    void requestLineageThumbnails();
+    void requestLineageThumbnail(const Genome& genome);
+    QString lineageThumbnailKey(const Genome& genome) const;
+    /// A generation's icon: its nine thumbnails in a 3 x 3 mosaic (blanks until they arrive).
+    QPixmap lineageMosaic(int generation) const;
+    QPixmap lineageIcon(const QString& key) const;
+    void onLineageThumbnail(std::uint64_t key, const QImage& image);
+    /// A design clicked in the lineage: selected in the grid, going to its generation first.
+    void selectLineageDesign(int generation, int cell);
+    void onLineageDoubleClicked(QTreeWidgetItem* item);
     void updateFavourites();
     void showBackend();
     void requestRender(int cell, bool previewOnly = false);
@@ -127,6 +161,23 @@ private:
     QComboBox* mMesh = nullptr;
     QListWidget* mFavouritesList = nullptr;
     QTreeWidget* mLineageTree = nullptr;
+    /// Lineage thumbnails by lineageThumbnailKey (a design at one size, on one object).
+    QCache<QString, QImage> mLineageThumbnails{2000};
+    /// Thumbnails asked for and not yet back: render key -> thumbnail key, and the keys.
+    QHash<std::uint64_t, QString> mLineageRequests;
+    QSet<QString> mLineagePending;
+    /// The lineage items that show a thumbnail (designs) or a mosaic (generations), by key.
+    QMultiHash<QString, QTreeWidgetItem*> mLineageDesignItems;
+    QMultiHash<QString, QTreeWidgetItem*> mLineageGenerationItems;
+    /// What the user expanded (generations) and collapsed (branches), kept across rebuilds.
+    QSet<int> mExpandedGenerations;
+    QSet<int> mCollapsedBranches;
+    bool mCurrentDesignsFolded = false;
+    QTimer mLineageThumbnailTimer;
+    /// A click waits out the double-click interval: a double-click means something else.
+    QTimer mLineageClickTimer;
+    int mLineageClickGeneration = -1;
+    int mLineageClickCell = -1;
     QLabel* mBackendLabel = nullptr;
     std::array<QAction*, 3> mRendererActions{}; ///< by gl::BackendPreference
     QTimer mResizeTimer;

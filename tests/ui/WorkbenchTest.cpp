@@ -133,7 +133,8 @@ TEST(PopulationModelTest, OpenedDesignsAreGenerationOne) {
     EXPECT_EQ(used, (std::vector<int>{0, 1}));
     EXPECT_FALSE(model.isEmptyWorkbench());
     ASSERT_EQ(model.history().size(), 1u);
-    EXPECT_EQ(model.current().number, 0);
+    EXPECT_EQ(model.current().number, 1);
+    EXPECT_EQ(model.current().parent, -1);
     EXPECT_EQ(model.current().description, QStringLiteral("Opened two"));
     EXPECT_FALSE(model.canGoBack());
     // A second change is generation 2, and back returns to the opened designs, never to an
@@ -808,7 +809,8 @@ TEST_F(StartChoiceTest, StartDialogOffersBothKindsAndRemembersNotAsking) {
 std::vector<std::string> historySnapshot(const PopulationModel& model) {
     std::vector<std::string> result;
     for (const Generation& g : model.history()) {
-        std::string text = std::to_string(g.number) + "|" + g.description.toStdString() + "|";
+        std::string text = std::to_string(g.parent) + "|" + std::to_string(g.number) + "|" + std::to_string(g.branch)
+                         + "|" + g.description.toStdString() + "|";
         for (int p : g.parentCells) text += std::to_string(p) + ",";
         text += "|";
         for (int i = 0; i < CellCount; ++i) {
@@ -973,8 +975,8 @@ TEST_F(SessionTest, EveryChangeIsSavedAtomically) {
     m.clearSelection();
     m.setSelected(6, true);
     ASSERT_TRUE(window.applyOperator(GeneticOperator::Reinit));
-    EXPECT_EQ(m.history().size(), 2u);
-    expectSaved("breeding after going back (the forward history is dropped)");
+    EXPECT_EQ(m.history().size(), 3u);
+    expectSaved("breeding after going back (a new branch beside the old one)");
     window.newRandomPopulation(2);
     expectSaved("a new random population");
     const QString design = QString::fromStdString((test::dataDir() / "examples" / "five-stones.marble.json").string());
