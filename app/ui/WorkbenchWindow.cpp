@@ -110,7 +110,8 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
             try {
                 const Genome genome = parseGenome(json.toStdString(), "dropped design");
                 const LineageInfo info = lineageOf(genome);
-                placeOpened({genome}, {info.name.isEmpty() ? shortId(info.id) : info.name}, index);
+                placeOpened({genome}, {info.name.isEmpty() ? shortId(info.id) : info.name}, index,
+                            tr("Brought back a favourite"));
             } catch (const Error& e) {
                 reportError(this, tr("Cannot use the dropped design"), QString::fromStdString(e.what()));
             }
@@ -217,7 +218,7 @@ void WorkbenchWindow::buildActions() {
 
     QAction* open = fileMenu->addAction(tr("&Open designs…"), this, &WorkbenchWindow::openFileDialog);
     open->setShortcut(QKeySequence::Open);
-    open->setStatusTip(tr("Load genome files into the selected cells, then free ones"));
+    open->setStatusTip(tr("Load genome files into the selected cells, then free ones; asks before replacing designs"));
     QAction* newRandom = fileMenu->addAction(tr("&New random population"), this, [this] {
         newRandomPopulation(mDimension->currentData().toInt());
     });
@@ -803,19 +804,22 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
     return true;
 }
 
-std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened, const QStringList& names, int cell) {
+std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened, const QStringList& names, int cell,
+                                              const QString& describe) {
     if (opened.empty()) return {};
-    const QString what = names.join(QStringLiteral(", "));
     // One kind per generation: flat and solid designs cannot breed together, and the grid's
     // object, previews and operators all assume one kind. The first design decides.
     const int kind = opened.front().dimension;
     std::vector<Genome> designs;
-    QStringList refused;
+    QStringList accepted, refused;
     for (std::size_t k = 0; k < opened.size(); ++k) {
-        if (opened[k].dimension == kind)
+        const QString name = int(k) < names.size() ? names[int(k)] : tr("design %1").arg(k + 1);
+        if (opened[k].dimension == kind) {
             designs.push_back(opened[k]);
-        else
-            refused << (int(k) < names.size() ? names[int(k)] : tr("design %1").arg(k + 1));
+            accepted << name;
+        } else {
+            refused << name;
+        }
     }
     if (!refused.isEmpty())
         reportError(this, tr("Some designs were not opened"),
@@ -823,7 +827,7 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
                        "open them on their own:\n\n%4")
                         .arg(names.value(0), kind == 3 ? tr("solid") : tr("flat"), kind == 3 ? tr("flat") : tr("solid"),
                              refused.join(QStringLiteral("\n"))));
-    const QString description = tr("Opened %1").arg(what);
+    const QString description = describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
     const auto kindName = [this](int dimension) { return dimension == 3 ? tr("solid") : tr("flat"); };
 
     std::vector<int> used;
@@ -836,9 +840,9 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
             used = mModel->placeDesigns(designs, description);
         }
     } else if (kind != mModel->populationDimension()) {
-        // Put among designs of the other kind it could breed with none of them, and the
-        // operators would grey out for no visible reason: it starts a generation of its own, and
-        // the grid it replaces is one step back.
+        // Among designs of the other kind it could breed with none of them, and the operators
+        // would grey out for no visible reason: it starts a generation of its own, and the grid
+        // it replaces stays one step back.
         const int before = mModel->populationDimension();
         used = mModel->startGenerationOf(designs, description, cell >= 0 ? cell : 0);
         mDimension->setCurrentIndex(kind == 3 ? 1 : 0);
@@ -851,7 +855,7 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
     } else {
         const bool targeted = cell >= 0 && cell < CellCount && designs.size() == 1;
         OpenQuestion question;
-        question.names = names;
+        question.names = accepted;
         if (targeted) {
             // An explicit target is the user's choice, unless it would overwrite a parent.
             if (mModel->isSelected(cell)) question.replaced = {cell};
@@ -878,7 +882,7 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
         }
     }
     if (used.size() < designs.size())
-        statusBar()->showMessage(tr("%1: only %2 of %3 designs found room (every other cell holds a parent)")
+        statusBar()->showMessage(tr("%1: only %2 of %3 designs found room in the grid")
                                      .arg(description)
                                      .arg(used.size())
                                      .arg(designs.size()),
@@ -935,7 +939,7 @@ void WorkbenchWindow::restoreFavourite(int favourite, int index) {
     if (favourite < 0 || favourite >= int(favourites.size())) return;
     const Genome genome = favourites[std::size_t(favourite)].genome;
     const LineageInfo info = lineageOf(genome);
-    placeOpened({genome}, {info.name.isEmpty() ? shortId(info.id) : info.name}, index);
+    placeOpened({genome}, {info.name.isEmpty() ? shortId(info.id) : info.name}, index, tr("Brought back a favourite"));
 }
 
 void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {

@@ -61,8 +61,10 @@ public:
     /// that cell without a question unless it is a selected parent. Designs of the other kind
     /// (flat among solid or the reverse), which could not breed with the grid, start a
     /// generation of their own kind; a mixed set opens the first file's kind and reports the
-    /// rest. Returns the cells filled (none when cancelled).
-    std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1);
+    /// rest. `description` names the new generation ("Opened NAMES" when empty). Returns the
+    /// cells filled (none when cancelled).
+    std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1,
+                                 const QString& description = {});
     /// Breeds the selected parents with an operator; errors are reported.
     bool applyOperator(GeneticOperator op);
     /// A fresh random population (2: flat, 3: solid); remembers the choice.
