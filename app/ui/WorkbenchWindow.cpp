@@ -19,7 +19,6 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
-#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
@@ -501,8 +500,9 @@ QDialog* WorkbenchWindow::showAbout() {
 }
 
 void WorkbenchWindow::noteSavedFile(const QString& file) {
+    // The notice holds the full path, long enough to reach "Show in folder"; a passing message
+    // would only say it twice.
     mSavedNotice->showFile(file);
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(mSavedNotice->file())), 10000);
 }
 
 void WorkbenchWindow::updateTask() {
@@ -927,10 +927,7 @@ bool WorkbenchWindow::keepFavourite(int index) {
     const QString id = QString::fromStdString(genomeId(*g));
     for (const Favourite& f : mModel->favourites())
         if (QFileInfo(f.file).fileName().startsWith(id)) mSavedNotice->showFile(f.file);
-    statusBar()->showMessage(tr("Design %1 kept on the favourites shelf: %2")
-                                 .arg(index + 1)
-                                 .arg(QDir::toNativeSeparators(mSavedNotice->file())),
-                             10000);
+    statusBar()->showMessage(tr("Design %1 kept on the favourites shelf").arg(index + 1), 4000);
     return true;
 }
 

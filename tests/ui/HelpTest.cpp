@@ -162,8 +162,7 @@ TEST_F(HelpTest, SavedGenomeShowsItsPathAndShowInFolderOpensItsFolder) {
     EXPECT_EQ(notice->file(), QFileInfo(file).absoluteFilePath());
     EXPECT_TRUE(notice->pathLabel()->text().contains(QDir::toNativeSeparators(QFileInfo(file).absoluteFilePath())))
         << notice->pathLabel()->text().toStdString();
-    EXPECT_TRUE(mWindow->statusBar()->currentMessage().contains(QFileInfo(file).absoluteFilePath()))
-        << mWindow->statusBar()->currentMessage().toStdString();
+    EXPECT_TRUE(notice->isVisibleTo(mWindow->statusBar()));
 
     QTest::mouseClick(notice->showInFolderButton(), Qt::LeftButton);
     ASSERT_EQ(opened.size(), 1);
