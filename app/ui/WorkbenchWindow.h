@@ -1,6 +1,7 @@
 #pragma once
 /// The evolution workbench: a 3 x 3 grid of designs, parents chosen by clicking, the four genetic
-/// operators, back/forward through generations, a lineage view and a favourites shelf.
+/// operators, back/forward through generations, a lineage view, a favourites shelf, and a Help
+/// menu (the guide, About). The status bar says what the window is doing and where files went.
 
 #include "marbler/Operators.h"
 #include "marbler/gl/Backend.h"
