@@ -7,6 +7,7 @@
 #include "ui/ErrorReport.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
+#include "ui/SavedFiles.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -275,7 +276,9 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     editor->setEnabled(false);
     editor->setToolTip(tr("The editor arrives in a later version"));
     auto* close = new QPushButton(tr("Close"), this);
-    connect(save, &QPushButton::clicked, this, [this] { saveGenomeWithDialog(this, mGenome); });
+    connect(save, &QPushButton::clicked, this, [this] {
+        if (const QString file = saveGenomeWithDialog(this, mGenome); !file.isEmpty()) emit fileSaved(file);
+    });
     connect(exportButton, &QPushButton::clicked, this, &DesignDialog::exportImage);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
@@ -452,20 +455,33 @@ void DesignDialog::canvasReleased(QMouseEvent*) {
     emit viewAngleChanged(mAngle);
 }
 
+QString DesignDialog::suggestedExportFile() const {
+    const QSettings settings;
+    return suggestedFile(mGenome, settings.value(QStringLiteral("files/exportDir")).toString(),
+                         settings.value(QStringLiteral("files/exportExtension"), QStringLiteral(".png")).toString());
+}
+
 void DesignDialog::exportImage() {
     ExportSettingsDialog settingsDialog(mGenome, this);
     if (settingsDialog.exec() != QDialog::Accepted) return;
-    QSettings settings;
-    const QString dir = settings.value(QStringLiteral("files/exportDir")).toString();
-    const QString file = QFileDialog::getSaveFileName(this, tr("Export image"), dir,
-                                                      tr("Images (*.png *.tif *.tiff *.exr *.jpg *.jpeg)"));
+    QString file = askSaveFile(this, tr("Export image"), suggestedExportFile(),
+                               tr("Images (*.png *.tif *.tiff *.exr *.jpg *.jpeg)"));
     if (file.isEmpty()) return;
+    QSettings settings;
+    // A name typed without a format gets the one offered.
+    if (QFileInfo(file).suffix().isEmpty())
+        file += settings.value(QStringLiteral("files/exportExtension"), QStringLiteral(".png")).toString();
     settings.setValue(QStringLiteral("files/exportDir"), QFileInfo(file).absolutePath());
+    settings.setValue(QStringLiteral("files/exportExtension"), QStringLiteral(".") + QFileInfo(file).suffix().toLower());
 
     exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi());
 }
 
-bool DesignDialog::saveTo(const QString& file) { return saveGenomeTo(this, mGenome, file); }
+bool DesignDialog::saveTo(const QString& file) {
+    if (!saveGenomeTo(this, mGenome, file)) return false;
+    emit fileSaved(file);
+    return true;
+}
 
 bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi) {
     if (mExportCancel) return false;
@@ -525,6 +541,7 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
         else if (written)
             setWindowTitle(tr("Exported %1").arg(QFileInfo(file).fileName()));
         emit exportFinished(file, written, *error);
+        if (written) emit fileSaved(file);
     });
     poll->start(100);
     thread->start();
@@ -535,17 +552,15 @@ void DesignDialog::cancelExport() {
     if (mExportCancel) mExportCancel->store(true);
 }
 
-bool saveGenomeWithDialog(QWidget* parent, const Genome& genome) {
+QString saveGenomeWithDialog(QWidget* parent, const Genome& genome) {
     QSettings settings;
-    const QString dir = settings.value(QStringLiteral("files/saveDir")).toString();
-    const LineageInfo info = lineageOf(genome);
-    const QString suggested = QDir(dir).filePath((info.name.isEmpty() ? info.id.left(8) : info.name) + QStringLiteral(".marble.json"));
-    QString file = QFileDialog::getSaveFileName(parent, QObject::tr("Save design"), suggested,
-                                                QObject::tr("Marbler genomes (*.marble.json)"));
-    if (file.isEmpty()) return false;
+    const QString suggested =
+        suggestedFile(genome, settings.value(QStringLiteral("files/saveDir")).toString(), QStringLiteral(".marble.json"));
+    QString file = askSaveFile(parent, QObject::tr("Save design"), suggested, QObject::tr("Marbler genomes (*.marble.json)"));
+    if (file.isEmpty()) return {};
     if (!file.endsWith(QStringLiteral(".json"))) file += QStringLiteral(".marble.json");
     settings.setValue(QStringLiteral("files/saveDir"), QFileInfo(file).absolutePath());
-    return saveGenomeTo(parent, genome, file);
+    return saveGenomeTo(parent, genome, file) ? file : QString();
 }
 
 bool saveGenomeTo(QWidget* parent, const Genome& genome, const QString& file) {

@@ -46,6 +46,9 @@ public:
     /// Stops a running export; no file is left behind.
     void cancelExport();
     bool isExporting() const { return bool(mExportCancel); }
+    /// The file Export offers: the design's name made safe, with the format and in the folder
+    /// used last (QSettings files/exportExtension and files/exportDir; PNG at first).
+    QString suggestedExportFile() const;
 
     /// Zoom and pan (flat designs; a solid's zoom magnifies its framed object).
     const ViewController& viewController() const { return mViewController; }
@@ -78,6 +81,9 @@ public:
 signals:
     /// The user turned the solid object; the angle is already in genome()'s meta.view.
     void viewAngleChanged(const marbler::ui::ViewAngle& angle);
+    /// A file the user asked for was written: the genome saved or an image exported (the
+    /// window's status bar says where, with "Show in folder").
+    void fileSaved(const QString& file);
     /// An export ended: written (the file is complete), or cancelled or failed (`error` says
     /// why for a failure; nothing is left behind either way).
     void exportFinished(const QString& file, bool written, const QString& error);
@@ -166,8 +172,10 @@ private:
     QDialogButtonBox* mButtons = nullptr;
 };
 
-/// Asks for a file name and saves the genome atomically; errors are reported. Returns success.
-bool saveGenomeWithDialog(QWidget* parent, const Genome& genome);
+/// Asks for a file name (offering the design's name made safe, in the folder used last) and saves
+/// the genome atomically; errors are reported. Returns the file written, empty when cancelled or
+/// failed.
+QString saveGenomeWithDialog(QWidget* parent, const Genome& genome);
 /// Saves the genome atomically to a file; errors are reported. Returns success.
 bool saveGenomeTo(QWidget* parent, const Genome& genome, const QString& file);
 

@@ -69,15 +69,30 @@ void PopulationModel::clearSelection() {
     emit selectionChanged();
 }
 
-bool PopulationModel::canApply(GeneticOperator op) const {
+QString PopulationModel::whyNot(GeneticOperator op) const {
+    const QString label = operatorLabel(op);
     const auto selected = selectedCells();
     const int n = int(selected.size());
-    if (n < minParents(op)) return false;
-    if (maxParents(op) > 0 && n > maxParents(op)) return false;
+    const int least = minParents(op), most = maxParents(op);
+    // What the operator takes, said the same way in every message.
+    const QString needs = most == 0 ? tr("%1 needs %2 or more parents").arg(label).arg(least)
+                          : least == most && least == 1 ? tr("%1 needs 1 parent").arg(label)
+                                                        : tr("%1 needs exactly %2 parents").arg(label).arg(least);
+    if (mEmptyStart) return tr("%1: there are no designs yet; make a new random population or open designs").arg(needs);
+    if (n == 0)
+        return least == 1 ? tr("%1: click a design to pick it").arg(needs)
+                          : tr("%1: click %2 designs").arg(needs, least == 2 ? tr("two") : QString::number(least));
+    if (n < least) return tr("%1: %2 is picked, click another design").arg(needs).arg(n);
+    if (most > 0 && n > most) return tr("%1: %2 are picked, click one to let it go").arg(needs).arg(n);
     // Every cell selected leaves no room for offspring.
-    if (n >= CellCount) return false;
+    if (n >= CellCount) return tr("%1 has no room for offspring: every design is a parent, click one to let it go").arg(label);
     const int dimension = cell(selected.front())->dimension;
-    return std::all_of(selected.begin(), selected.end(), [&](int i) { return cell(i)->dimension == dimension; });
+    if (!std::all_of(selected.begin(), selected.end(), [&](int i) { return cell(i)->dimension == dimension; }))
+        return n == 2 ? tr("%1 needs two parents of the same kind (flat/solid): one picked design is flat, the other solid")
+                            .arg(label)
+                      : tr("%1 needs parents of the same kind (flat/solid): the picked designs mix flat and solid ones")
+                            .arg(label);
+    return {};
 }
 
 std::uint64_t PopulationModel::nextBreedSeed() const {
@@ -145,21 +160,47 @@ void PopulationModel::newRandomPopulation(int dimension) {
     pushGeneration(std::move(next));
 }
 
-std::vector<int> PopulationModel::placeDesigns(const std::vector<Genome>& designs, const QString& description) {
-    std::vector<int> order = selectedCells();
-    for (int i = 0; i < CellCount; ++i)
-        if (!cell(i) && std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
-    for (int i = 0; i < CellCount; ++i)
-        if (std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
+std::vector<int> PopulationModel::placementCells(std::size_t count, Placement placement) const {
+    std::vector<int> order;
+    const auto take = [&](auto&& wanted) {
+        for (int i = 0; i < CellCount; ++i)
+            if (wanted(i) && std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
+    };
+    if (placement == Placement::IntoSelected) {
+        take([&](int i) { return isSelected(i); });
+        take([&](int i) { return !cell(i); });
+        take([](int) { return true; });
+    } else {
+        take([&](int i) { return !cell(i); });
+        take([&](int i) { return !isSelected(i); });
+    }
+    if (order.size() > count) order.resize(count);
+    return order;
+}
 
+std::vector<int> PopulationModel::placeDesigns(const std::vector<Genome>& designs, const QString& description,
+                                               Placement placement) {
+    const std::vector<int> used = placementCells(designs.size(), placement);
     Generation next = current();
     next.description = description;
-    next.parentCells.clear(); // put in, not bred
+    next.parentCells.clear(); // opened designs were not bred from the previous parents
+    for (std::size_t k = 0; k < used.size(); ++k) {
+        next.cells[std::size_t(used[k])] = designs[k];
+        next.selected[std::size_t(used[k])] = false;
+    }
+    if (!used.empty()) pushGeneration(std::move(next));
+    return used;
+}
+
+std::vector<int> PopulationModel::startGenerationOf(const std::vector<Genome>& designs, const QString& description,
+                                                    int first) {
+    Generation next;
+    next.description = description;
     std::vector<int> used;
-    for (std::size_t k = 0; k < designs.size() && k < order.size(); ++k) {
-        const int index = order[k];
+    first = std::clamp(first, 0, CellCount - 1);
+    for (std::size_t k = 0; k < designs.size() && k < std::size_t(CellCount); ++k) {
+        const int index = (first + int(k)) % CellCount;
         next.cells[std::size_t(index)] = designs[k];
-        next.selected[std::size_t(index)] = false;
         used.push_back(index);
     }
     if (!used.empty()) pushGeneration(std::move(next));
@@ -170,7 +211,7 @@ void PopulationModel::setCell(int index, const Genome& genome, const QString& de
     if (index < 0 || index >= CellCount) return;
     Generation next = current();
     next.description = description;
-    next.parentCells.clear(); // put in, not bred
+    next.parentCells.clear(); // an opened design was not bred from the previous parents
     next.cells[std::size_t(index)] = genome;
     next.selected[std::size_t(index)] = false;
     pushGeneration(std::move(next));

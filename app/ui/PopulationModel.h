@@ -83,7 +83,11 @@ public:
     void clearSelection();
 
     /// Whether an operator can run with the current selection (parent count, dimensions).
-    bool canApply(GeneticOperator op) const;
+    bool canApply(GeneticOperator op) const { return whyNot(op).isEmpty(); }
+    /// Why an operator cannot run with the current selection, in the window's words and with
+    /// what to do about it ("Swap needs exactly 2 parents: click two designs"); empty when it can.
+    /// The disabled operators' tooltips and the status bar say this.
+    QString whyNot(GeneticOperator op) const;
     /// Keeps the selected parents in their cells and fills every other cell with offspring,
     /// seeded by the session seed and the new generation's index in the history (unique, so
     /// breeding again from a generation one went back to draws anew). Throws marbler::Error
@@ -94,9 +98,25 @@ public:
 
     /// Replaces the grid with nine random designs of the dimension (2 or 3).
     void newRandomPopulation(int dimension);
-    /// Puts designs into cells as one new generation: first into the selected cells, then into
-    /// empty ones, then into the rest in grid order. Returns the cells used.
-    std::vector<int> placeDesigns(const std::vector<Genome>& designs, const QString& description);
+    /// Where placeDesigns() puts designs.
+    enum class Placement {
+        /// Into the selected cells first, then empty ones, then over the rest in grid order.
+        IntoSelected,
+        /// Never over a parent: into empty cells first, then over designs that are not selected;
+        /// the parents stay selected.
+        KeepParents,
+    };
+    /// The cells placeDesigns() would fill with `count` designs, in order (fewer when there is
+    /// no room). Lets the window see, before anything changes, which designs would be replaced.
+    std::vector<int> placementCells(std::size_t count, Placement placement = Placement::IntoSelected) const;
+    /// Puts designs into cells as one new generation, in the order placementCells() gives.
+    /// Returns the cells used (designs beyond them are not placed).
+    std::vector<int> placeDesigns(const std::vector<Genome>& designs, const QString& description,
+                                  Placement placement = Placement::IntoSelected);
+    /// Starts a generation of only these designs, from cell `first` on, every other cell empty
+    /// and nothing selected: for designs of another kind (flat or solid) than the grid's, which
+    /// cannot breed with it. The grid they replace stays a generation back. Returns the cells used.
+    std::vector<int> startGenerationOf(const std::vector<Genome>& designs, const QString& description, int first = 0);
     /// Puts one design into a given cell as a new generation.
     void setCell(int index, const Genome& genome, const QString& description);
     /// Changes the locks of a cell's design in place (not a new generation: locks are a

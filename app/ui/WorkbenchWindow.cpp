@@ -2,10 +2,14 @@
 
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ImageFormats.h"
 #include "ui/DesignCell.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
+#include "ui/Help.h"
+#include "ui/OpenPlacement.h"
 #include "ui/RenderService.h"
+#include "ui/SavedFiles.h"
 #include "ui/StartDialog.h"
 
 #include <QAction>
@@ -13,7 +17,10 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDockWidget>
+#include <QDragEnterEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
@@ -29,8 +36,10 @@
 #include <QSettings>
 #include <QSlider>
 #include <QStatusBar>
+#include <QTextBrowser>
 #include <QToolBar>
 #include <QTreeWidget>
+#include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
@@ -110,7 +119,10 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
         });
         connect(cell, &DesignCell::genomeTextDropped, this, [this](int index, const QByteArray& json) {
             try {
-                mModel->setCell(index, parseGenome(json.toStdString(), "dropped design"), tr("Brought back a favourite"));
+                const Genome genome = parseGenome(json.toStdString(), "dropped design");
+                const LineageInfo info = lineageOf(genome);
+                placeOpened({genome}, {info.name.isEmpty() ? shortId(info.id) : info.name}, index,
+                            tr("Brought back a favourite"));
             } catch (const Error& e) {
                 reportError(this, tr("Cannot use the dropped design"), QString::fromStdString(e.what()));
             }
@@ -132,13 +144,25 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
 
     buildActions();
     buildDocks();
+    buildHelpMenu();
+    setAcceptDrops(true);
 
-    mBackendLabel = new QLabel(this);
-    mBackendLabel->setObjectName(QStringLiteral("backendLabel"));
-    statusBar()->addPermanentWidget(mBackendLabel);
-    if (!mRenderer->backendName().isEmpty()) showBackend();
+    // The status bar: passing messages over the generation's summary on the left; on the right
+    // the last file saved and what the window is doing. Which renderer draws is in Help ▸ About.
+    mGenerationLabel = new QLabel(this);
+    mGenerationLabel->setObjectName(QStringLiteral("generationLabel"));
+    statusBar()->addWidget(mGenerationLabel, 1);
+    mSavedNotice = new SavedFileNotice(this);
+    statusBar()->addPermanentWidget(mSavedNotice);
+    mTaskLabel = new QLabel(this);
+    mTaskLabel->setObjectName(QStringLiteral("taskLabel"));
+    mTaskLabel->setToolTip(tr("What the window is doing. Help ▸ About Marbler says which renderer draws the designs."));
+    statusBar()->addPermanentWidget(mTaskLabel);
     connect(mRenderer, &RenderService::backendReady, this, [this] {
-        showBackend();
+        if (mAnnounceBackend) {
+            mAnnounceBackend = false;
+            statusBar()->showMessage(rendererDescription(), 8000);
+        }
         // Images from the other back end differ in the last bits: render everything anew.
         mImageCache.clear();
         requestAllRenders();
@@ -196,6 +220,8 @@ void WorkbenchWindow::buildActions() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
     QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
     QMenu* breedMenu = menuBar()->addMenu(tr("&Breed"));
+    // A greyed-out operator's tooltip says why; the menu shows it too.
+    breedMenu->setToolTipsVisible(true);
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->setObjectName(QStringLiteral("viewMenu"));
 
@@ -205,7 +231,7 @@ void WorkbenchWindow::buildActions() {
 
     QAction* open = fileMenu->addAction(tr("&Open designs…"), this, &WorkbenchWindow::openFileDialog);
     open->setShortcut(QKeySequence::Open);
-    open->setStatusTip(tr("Load genome files into the selected cells, then free ones"));
+    open->setStatusTip(tr("Load genome files into the selected cells, then free ones; asks before replacing designs"));
     QAction* newRandom = fileMenu->addAction(tr("&New random population"), this, [this] {
         newRandomPopulation(mDimension->currentData().toInt());
     });
@@ -226,13 +252,16 @@ void WorkbenchWindow::buildActions() {
     mForward->setIconText(tr("Forward ▶"));
     mForward->setToolTip(tr("Forward to the generation last visited or made from this one (Ctrl+Shift+Z)"));
     editMenu->addSeparator();
-    editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection)
-        ->setShortcut(QKeySequence(Qt::Key_Escape));
+    QAction* clearSelection = editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection);
+    clearSelection->setObjectName(QStringLiteral("clearSelectionAction"));
+    clearSelection->setShortcut(QKeySequence(Qt::Key_Escape));
 
     const auto makeOperator = [&](GeneticOperator op, const QString& text, const QString& tip, QKeySequence key) {
         QAction* action = breedMenu->addAction(text, this, [this, op] { applyOperator(op); });
         action->setShortcut(key);
         action->setToolTip(QStringLiteral("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
+        // The tooltip when the operator can run; updateActions() says why when it cannot.
+        action->setProperty("readyTip", action->toolTip());
         action->setStatusTip(tip);
         return action;
     };
@@ -254,16 +283,24 @@ void WorkbenchWindow::buildActions() {
     bar->addSeparator();
     for (QAction* a : {mAlter, mRecombine, mSwap, mReinit}) bar->addAction(a);
 
-    auto* strengthLabel = new QLabel(tr(" Strength "), bar);
     mStrength = new QSlider(Qt::Horizontal, bar);
+    mStrength->setObjectName(QStringLiteral("strengthSlider"));
     mStrength->setRange(0, 100);
-    mStrength->setValue(50);
     mStrength->setMaximumWidth(120);
-    mStrength->setToolTip(tr("How far Alter moves the strokes: 0 barely, 1 a lot"));
-    connect(mStrength, &QSlider::valueChanged, this, [this](int value) {
-        statusBar()->showMessage(tr("Alteration strength %1").arg(value / 100.0, 0, 'f', 2), 2000);
-    });
-    bar->addWidget(strengthLabel);
+    mStrength->setToolTip(tr("How far %1 moves the strokes: 0 % barely, 100 % a lot").arg(operatorLabel(GeneticOperator::Alter)));
+    // The value is always in sight, not only while the slider is dragged.
+    mStrengthLabel = new QLabel(bar);
+    mStrengthLabel->setObjectName(QStringLiteral("strengthLabel"));
+    mStrengthLabel->setToolTip(mStrength->toolTip());
+    // Wide enough for "Strength 100 %", so the toolbar does not shift as the value changes.
+    mStrengthLabel->setMinimumWidth(mStrengthLabel->fontMetrics().horizontalAdvance(tr(" Strength %1 % ").arg(100)));
+    mStrengthLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    mStrengthLabel->setBuddy(mStrength);
+    connect(mStrength, &QSlider::valueChanged, this,
+            [this](int value) { mStrengthLabel->setText(tr(" Strength %1 % ").arg(value)); });
+    mStrength->setValue(50);
+    mStrengthLabel->setText(tr(" Strength %1 % ").arg(mStrength->value()));
+    bar->addWidget(mStrengthLabel);
     bar->addWidget(mStrength);
     bar->addSeparator();
 
@@ -421,21 +458,120 @@ void WorkbenchWindow::setRendererPreference(gl::BackendPreference preference) {
     QSettings().setValue(QStringLiteral("view/renderer"),
                          QString::fromLatin1(gl::backendPreferenceName(preference).data()));
     mRendererActions[std::size_t(preference)]->setChecked(true);
-    if (preference != mRenderer->preference()) mRenderer->setPreference(preference);
+    if (preference != mRenderer->preference()) {
+        mAnnounceBackend = true;
+        mRenderer->setPreference(preference);
+    }
 }
 
 QAction* WorkbenchWindow::rendererAction(gl::BackendPreference preference) const {
     return mRendererActions[std::size_t(preference)];
 }
 
-void WorkbenchWindow::showBackend() {
+QString WorkbenchWindow::rendererDescription() const {
+    if (mRenderer->backendName().isEmpty()) return {};
     const QString where = mRenderer->usesGl() ? tr("Rendering with %1").arg(mRenderer->backendName())
                                               : tr("Rendering on the %1").arg(mRenderer->backendName());
     const QString why = mRenderer->backendReason();
-    mBackendLabel->setText(why.isEmpty() ? where : tr("%1: %2").arg(where, why));
-    mBackendLabel->setToolTip(tr("%1.\nChoose the renderer in View ▸ Renderer (the environment variable %2=auto|gpu|cpu "
-                                 "overrides it).")
-                                  .arg(why.isEmpty() ? where : why, QString::fromLatin1(gl::BackendEnvironmentVariable)));
+    return why.isEmpty() ? where : tr("%1: %2").arg(where, why);
+}
+
+void WorkbenchWindow::buildHelpMenu() {
+    QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
+    helpMenu->setObjectName(QStringLiteral("helpMenu"));
+    mGuideAction = helpMenu->addAction(tr("Marbler &guide"), this, &WorkbenchWindow::showGuide);
+    mGuideAction->setShortcut(QKeySequence::HelpContents);
+    mGuideAction->setStatusTip(tr("What the operators do, how to breed, and every keyboard shortcut"));
+    helpMenu->addSeparator();
+    mAboutAction = helpMenu->addAction(tr("&About Marbler"), this, &WorkbenchWindow::showAbout);
+    mAboutAction->setStatusTip(tr("Marbler's version, the libraries it runs with and the renderer in use"));
+    mAboutQtAction = helpMenu->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+    mAboutQtAction->setStatusTip(tr("The Qt toolkit Marbler is built with"));
+}
+
+namespace {
+
+/// A text window with a Close button: the guide and the About box.
+QDialog* makeTextDialog(QWidget* parent, const QString& name, const QString& title, QWidget* body, QSize size) {
+    auto* dialog = new QDialog(parent);
+    dialog->setObjectName(name);
+    dialog->setWindowTitle(title);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
+    QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
+    auto* layout = new QVBoxLayout(dialog);
+    body->setParent(dialog);
+    layout->addWidget(body, 1);
+    layout->addWidget(buttons);
+    dialog->resize(size);
+    return dialog;
+}
+
+} // namespace
+
+QDialog* WorkbenchWindow::showGuide() {
+    if (!mGuide) {
+        auto* browser = new QTextBrowser;
+        browser->setObjectName(QStringLiteral("guideBrowser"));
+        browser->setOpenLinks(false);
+        mGuide = makeTextDialog(this, QStringLiteral("guideDialog"), tr("Marbler guide"), browser, QSize(640, 720));
+    }
+    // Built each time it is shown, from the actions as they are now.
+    mGuide->findChild<QTextBrowser*>(QStringLiteral("guideBrowser"))->setHtml(guideHtml(*this));
+    mGuide->show();
+    mGuide->raise();
+    mGuide->activateWindow();
+    return mGuide;
+}
+
+QString WorkbenchWindow::aboutText() const {
+    AboutFacts facts;
+    facts.version = marblerVersion();
+    facts.qt = QString::fromLatin1(qVersion());
+    if (facts.qt != QStringLiteral(QT_VERSION_STR))
+        facts.qt = tr("%1 (built with %2)").arg(facts.qt, QStringLiteral(QT_VERSION_STR));
+    if (const auto imageIo = loadedOpenImageIoVersion()) facts.imageIo = QString::fromStdString(*imageIo);
+    facts.renderer = rendererDescription();
+    return aboutHtml(facts);
+}
+
+QDialog* WorkbenchWindow::showAbout() {
+    if (!mAbout) {
+        auto* text = new QLabel;
+        text->setObjectName(QStringLiteral("aboutText"));
+        text->setWordWrap(true);
+        text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        text->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+        mAbout = makeTextDialog(this, QStringLiteral("aboutDialog"), tr("About Marbler"), text, QSize(520, 340));
+        // The renderer may still be choosing, or change while the box is open.
+        connect(mRenderer, &RenderService::backendReady, text, [this, text] { text->setText(aboutText()); });
+    }
+    // Filled each time it is shown: OpenImageIO may have loaded since.
+    mAbout->findChild<QLabel*>(QStringLiteral("aboutText"))->setText(aboutText());
+    mAbout->show();
+    mAbout->raise();
+    mAbout->activateWindow();
+    return mAbout;
+}
+
+void WorkbenchWindow::noteSavedFile(const QString& file) {
+    // The notice holds the full path, long enough to reach "Show in folder"; a passing message
+    // would only say it twice.
+    mSavedNotice->showFile(file);
+}
+
+void WorkbenchWindow::updateTask() {
+    int pending = 0;
+    for (int i = 0; i < CellCount; ++i)
+        if (!mFinal[std::size_t(i)] && mModel->cell(i)) ++pending;
+    if (pending == 0) {
+        mRenderBatch = 0;
+        mTaskLabel->setText(tr("Ready"));
+        return;
+    }
+    // A batch counts every cell asked for since the window was last idle.
+    mRenderBatch = std::max(mRenderBatch, pending);
+    mTaskLabel->setText(tr("Rendering %1 of %2…").arg(mRenderBatch - pending + 1).arg(mRenderBatch));
 }
 
 void WorkbenchWindow::readSettings() {
@@ -494,16 +630,21 @@ void WorkbenchWindow::updateCells() {
 void WorkbenchWindow::updateActions() {
     const int n = mModel->selectedCount();
     for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Swap,
-                               GeneticOperator::Reinit})
-        operatorAction(op)->setEnabled(mModel->canApply(op));
+                               GeneticOperator::Reinit}) {
+        // A greyed-out operator says what it needs, so it is never disabled without a reason.
+        QAction* action = operatorAction(op);
+        const QString why = mModel->whyNot(op);
+        action->setEnabled(why.isEmpty());
+        action->setToolTip(why.isEmpty() ? action->property("readyTip").toString() : why);
+    }
     mBack->setEnabled(mModel->canGoBack());
     mForward->setEnabled(mModel->canGoForward());
     const auto& gen = mModel->current();
     if (mModel->isEmptyWorkbench()) {
-        statusBar()->showMessage(tr("No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)"));
+        mGenerationLabel->setText(tr("No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)"));
         return;
     }
-    statusBar()->showMessage(tr("Generation %1: %2 — %3 selected")
+    mGenerationLabel->setText(tr("Generation %1: %2 — %3 selected")
                                  .arg(mModel->generationLabel(mModel->currentIndex()))
                                  .arg(gen.description)
                                  .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
@@ -810,10 +951,12 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
     mPendingCacheKey[std::size_t(index)] = previewOnly ? QString() : key;
     mFinal[std::size_t(index)] = false;
     mRenderer->request(std::uint64_t(index), std::move(request));
+    updateTask();
 }
 
 void WorkbenchWindow::requestAllRenders() {
     for (int i = 0; i < CellCount; ++i) requestRender(i);
+    updateTask();
     if (renderingDone()) emit renderingFinished();
 }
 
@@ -828,6 +971,7 @@ void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool fi
         if (final) {
             if (!mPendingCacheKey[index].isEmpty()) mImageCache.insert(mPendingCacheKey[index], new QImage(image));
             mFinal[index] = true;
+            updateTask();
             if (renderingDone()) emit renderingFinished();
         }
         return;
@@ -847,6 +991,7 @@ void WorkbenchWindow::onRenderFailed(std::uint64_t key, const QString& message) 
         mCells[std::size_t(key)]->setError(message);
         mFinal[std::size_t(key)] = true;
         statusBar()->showMessage(tr("Design %1 cannot be rendered: %2").arg(key + 1).arg(message), 10000);
+        updateTask();
         if (renderingDone()) emit renderingFinished();
     } else if (key >= LineageKeyBase) {
         onLineageThumbnail(key, QImage());
@@ -882,12 +1027,8 @@ void WorkbenchWindow::onOrbit(int index, QPoint delta, bool finished) {
 }
 
 bool WorkbenchWindow::applyOperator(GeneticOperator op) {
-    if (!mModel->canApply(op)) {
-        statusBar()->showMessage(tr("%1 needs %2 parents of one kind")
-                                     .arg(operatorLabel(op))
-                                     .arg(maxParents(op) == 0 ? tr("%1 or more").arg(minParents(op))
-                                                              : QString::number(minParents(op))),
-                                 5000);
+    if (const QString why = mModel->whyNot(op); !why.isEmpty()) {
+        statusBar()->showMessage(why, 5000);
         return false;
     }
     try {
@@ -896,7 +1037,7 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
         reportError(this, tr("Cannot breed"), QString::fromStdString(e.what()));
         return false;
     }
-    statusBar()->showMessage(tr("%1: generation %2").arg(operatorLabel(op)).arg(mModel->generationLabel(mModel->currentIndex())), 5000);
+    statusBar()->showMessage(tr("Bred generation %1 with %2").arg(mModel->generationLabel(mModel->currentIndex())).arg(operatorLabel(op)), 5000);
     return true;
 }
 
@@ -925,15 +1066,8 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
             errors << QString::fromStdString(e.what());
         }
     }
-    if (!designs.empty()) {
-        const QString description = tr("Opened %1").arg(names.join(QStringLiteral(", ")));
-        if (cell >= 0 && designs.size() == 1) {
-            mModel->setCell(cell, designs.front(), description);
-        } else {
-            mModel->placeDesigns(designs, description);
-        }
-        statusBar()->showMessage(description, 5000);
-    }
+    // Several files dropped on one cell have no single target: they go where opened files go.
+    placeOpened(designs, names, designs.size() == 1 ? cell : -1);
     if (!errors.isEmpty()) {
         reportError(this, tr("Cannot open a design"),
                     tr("These files could not be loaded; the population is unchanged by them.\n\n%1")
@@ -941,6 +1075,107 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
         return false;
     }
     return true;
+}
+
+std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened, const QStringList& names, int cell,
+                                              const QString& describe) {
+    if (opened.empty()) return {};
+    // One kind per generation: flat and solid designs cannot breed together, and the grid's
+    // object, previews and operators all assume one kind. The first design decides.
+    const int kind = opened.front().dimension;
+    std::vector<Genome> designs;
+    QStringList accepted, refused;
+    for (std::size_t k = 0; k < opened.size(); ++k) {
+        const QString name = int(k) < names.size() ? names[int(k)] : tr("design %1").arg(k + 1);
+        if (opened[k].dimension == kind) {
+            designs.push_back(opened[k]);
+            accepted << name;
+        } else {
+            refused << name;
+        }
+    }
+    if (!refused.isEmpty())
+        reportError(this, tr("Some designs were not opened"),
+                    tr("A generation holds one kind of design, and %1 is %2, so these %3 designs were not opened; "
+                       "open them on their own:\n\n%4")
+                        .arg(names.value(0), kind == 3 ? tr("solid") : tr("flat"), kind == 3 ? tr("flat") : tr("solid"),
+                             refused.join(QStringLiteral("\n"))));
+    const QString description = describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
+    const auto kindName = [this](int dimension) { return dimension == 3 ? tr("solid") : tr("flat"); };
+
+    std::vector<int> used;
+    if (mModel->isEmptyWorkbench()) {
+        // Nothing to replace: the first designs, into the cell they were dropped on if any.
+        if (cell >= 0 && cell < CellCount && designs.size() == 1) {
+            mModel->setCell(cell, designs.front(), description);
+            used = {cell};
+        } else {
+            used = mModel->placeDesigns(designs, description);
+        }
+    } else if (kind != mModel->populationDimension()) {
+        // Among designs of the other kind it could breed with none of them, and the operators
+        // would grey out for no visible reason: it starts a generation of its own, and the grid
+        // it replaces stays one step back.
+        const int before = mModel->populationDimension();
+        used = mModel->startGenerationOf(designs, description, cell >= 0 ? cell : 0);
+        mDimension->setCurrentIndex(kind == 3 ? 1 : 0);
+        statusBar()->showMessage(tr("%1: %2 designs start a generation of their own; the %3 designs are one "
+                                    "generation back (%4)")
+                                     .arg(description, kindName(kind), kindName(before),
+                                          mBack->shortcut().toString(QKeySequence::NativeText)),
+                                 10000);
+        return used;
+    } else {
+        const bool targeted = cell >= 0 && cell < CellCount && designs.size() == 1;
+        OpenQuestion question;
+        question.names = accepted;
+        if (targeted) {
+            // An explicit target is the user's choice, unless it would overwrite a parent.
+            if (mModel->isSelected(cell)) question.replaced = {cell};
+        } else {
+            for (int c : mModel->placementCells(designs.size())) {
+                if (mModel->cell(c)) question.replaced.push_back(c);
+            }
+        }
+        for (int c : question.replaced)
+            if (mModel->isSelected(c)) question.parents.push_back(c);
+        std::optional<OpenChoice> choice = OpenChoice::Replace;
+        if (!question.replaced.empty()) choice = askOpenChoice() ? chooseOpenPlacement(this, question) : lastOpenChoice();
+        if (!choice) {
+            statusBar()->showMessage(tr("Nothing opened: the grid is as it was"), 5000);
+            return {};
+        }
+        if (*choice == OpenChoice::NewGeneration) {
+            used = mModel->placeDesigns(designs, description, PopulationModel::Placement::KeepParents);
+        } else if (targeted) {
+            mModel->setCell(cell, designs.front(), description);
+            used = {cell};
+        } else {
+            used = mModel->placeDesigns(designs, description);
+        }
+    }
+    if (used.size() < designs.size())
+        statusBar()->showMessage(tr("%1: only %2 of %3 designs found room in the grid")
+                                     .arg(description)
+                                     .arg(used.size())
+                                     .arg(designs.size()),
+                                 10000);
+    else
+        statusBar()->showMessage(description, 5000);
+    return used;
+}
+
+void WorkbenchWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+}
+
+void WorkbenchWindow::dropEvent(QDropEvent* event) {
+    QStringList files;
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile()) files << url.toLocalFile();
+    if (files.isEmpty()) return;
+    event->acceptProposedAction();
+    openFiles(files);
 }
 
 void WorkbenchWindow::openFileDialog() {
@@ -961,6 +1196,10 @@ bool WorkbenchWindow::keepFavourite(int index) {
         reportError(this, tr("Cannot keep the favourite"), QString::fromStdString(e.what()));
         return false;
     }
+    // Kept as a genome file: say where, as for any file the window writes.
+    const QString id = QString::fromStdString(genomeId(*g));
+    for (const Favourite& f : mModel->favourites())
+        if (QFileInfo(f.file).fileName().startsWith(id)) mSavedNotice->showFile(f.file);
     statusBar()->showMessage(tr("Design %1 kept on the favourites shelf").arg(index + 1), 4000);
     return true;
 }
@@ -969,11 +1208,8 @@ void WorkbenchWindow::restoreFavourite(int favourite, int index) {
     const auto& favourites = mModel->favourites();
     if (favourite < 0 || favourite >= int(favourites.size())) return;
     const Genome genome = favourites[std::size_t(favourite)].genome;
-    const QString description = tr("Brought back a favourite");
-    if (index >= 0)
-        mModel->setCell(index, genome, description);
-    else
-        mModel->placeDesigns({genome}, description);
+    const LineageInfo info = lineageOf(genome);
+    placeOpened({genome}, {info.name.isEmpty() ? shortId(info.id) : info.name}, index, tr("Brought back a favourite"));
 }
 
 void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
@@ -1030,7 +1266,7 @@ void WorkbenchWindow::showFavouriteMenu(const QPoint& pos) {
 void WorkbenchWindow::saveDesign(int index) {
     const Genome* g = mModel->cell(index);
     if (!g) return;
-    saveGenomeWithDialog(this, *g);
+    if (const QString file = saveGenomeWithDialog(this, *g); !file.isEmpty()) noteSavedFile(file);
 }
 
 DesignDialog* WorkbenchWindow::openDesign(int index) {
@@ -1044,6 +1280,7 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
         const Genome* shown = mModel->cell(index);
         if (shown && genomeId(*shown) == id) mModel->setCellView(index, angle);
     });
+    connect(dialog, &DesignDialog::fileSaved, this, &WorkbenchWindow::noteSavedFile);
     dialog->show();
     emit designOpened(dialog);
     return dialog;

@@ -1,7 +1,8 @@
 #pragma once
 /// The evolution workbench: a 3 x 3 grid of designs, parents chosen by clicking, the four genetic
-/// operators, back/forward through generations, a lineage view of the generation tree and a
-/// favourites shelf.
+/// operators, back/forward through generations, a lineage view of the generation tree, a
+/// favourites shelf, and a Help menu (the guide, About). The status bar says what the window is
+/// doing and where files went.
 
 #include "marbler/Operators.h"
 #include "marbler/gl/Backend.h"
@@ -13,6 +14,7 @@
 #include <QMainWindow>
 #include <QMultiHash>
 #include <QSet>
+#include <QPointer>
 #include <QTimer>
 
 #include <array>
@@ -20,6 +22,7 @@
 
 class QAction;
 class QComboBox;
+class QDialog;
 class QLabel;
 class QListWidget;
 class QSlider;
@@ -31,6 +34,7 @@ namespace marbler::ui {
 class DesignCell;
 class DesignDialog;
 class RenderService;
+class SavedFileNotice;
 
 class WorkbenchWindow : public QMainWindow {
     Q_OBJECT
@@ -62,9 +66,23 @@ public:
     double strength() const;
     void setStrength(double strength);
 
-    /// Loads genome files into the selected cells, then free ones (or into `cell` and on).
-    /// A file that does not load is reported and changes nothing. Returns whether all loaded.
+    /// Loads genome files into the grid as a new generation (see placeOpened()): into the
+    /// selected cells, then free ones, asking first when designs would be replaced; one file
+    /// dropped on a cell goes into that cell (`cell`). A file that does not load is reported and
+    /// changes nothing. Returns whether all loaded.
     bool openFiles(const QStringList& files, int cell = -1);
+    /// Puts opened designs (files, favourites, dropped designs) into the grid; `names` say what
+    /// they are in messages, `cell` is an explicit target (a drop on a cell) or -1. Designs of
+    /// the grid's kind go into the selected cells, then free ones, then the rest, and when that
+    /// would replace designs the user is asked (chooseOpenPlacement): replace them, or a new
+    /// generation that keeps the parents, or nothing. A single design dropped on a cell replaces
+    /// that cell without a question unless it is a selected parent. Designs of the other kind
+    /// (flat among solid or the reverse), which could not breed with the grid, start a
+    /// generation of their own kind; a mixed set opens the first file's kind and reports the
+    /// rest. `description` names the new generation ("Opened NAMES" when empty). Returns the
+    /// cells filled (none when cancelled).
+    std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1,
+                                 const QString& description = {});
     /// Breeds the selected parents with an operator; errors are reported.
     bool applyOperator(GeneticOperator op);
     /// A fresh random population (2: flat, 3: solid); remembers the choice.
@@ -92,6 +110,21 @@ public:
     void setRendererPreference(gl::BackendPreference preference);
     /// The View ▸ Renderer entry of a preference.
     QAction* rendererAction(gl::BackendPreference preference) const;
+    /// The renderer in use and why ("Rendering on the CPU (2 threads): ..."), as the About box
+    /// says it; empty while the service is still choosing.
+    QString rendererDescription() const;
+
+    /// Help ▸ Marbler guide (F1), About Marbler, About Qt.
+    QAction* guideAction() const { return mGuideAction; }
+    QAction* aboutAction() const { return mAboutAction; }
+    QAction* aboutQtAction() const { return mAboutQtAction; }
+    /// Shows the guide (not modal, one at a time, deleted on close) and returns it.
+    QDialog* showGuide();
+    /// Shows the About box (not modal, one at a time, deleted on close) and returns it.
+    QDialog* showAbout();
+    /// Says on the status bar that a file was written (full path, "Show in folder").
+    void noteSavedFile(const QString& file);
+    SavedFileNotice* savedFileNotice() const { return mSavedNotice; }
 
 signals:
     /// Every visible design has its final image.
@@ -101,6 +134,9 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    /// Files dropped anywhere but on a cell open like File ▸ Open.
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void buildActions();
@@ -124,7 +160,10 @@ private:
     void selectLineageDesign(int generation, int cell);
     void onLineageDoubleClicked(QTreeWidgetItem* item);
     void updateFavourites();
-    void showBackend();
+    void updateTask();
+    void buildHelpMenu();
+    /// The About box's text as things are now.
+    QString aboutText() const;
     void requestRender(int cell, bool previewOnly = false);
     void requestAllRenders();
     void onRendered(std::uint64_t key, const QImage& image, bool final);
@@ -178,7 +217,17 @@ private:
     QTimer mLineageClickTimer;
     int mLineageClickGeneration = -1;
     int mLineageClickCell = -1;
-    QLabel* mBackendLabel = nullptr;
+    QLabel* mStrengthLabel = nullptr;
+    QLabel* mGenerationLabel = nullptr; ///< the generation and its parents, under passing messages
+    QLabel* mTaskLabel = nullptr;       ///< what the window is doing: "Rendering 5 of 9…", "Ready"
+    SavedFileNotice* mSavedNotice = nullptr;
+    QAction* mGuideAction = nullptr;
+    QAction* mAboutAction = nullptr;
+    QAction* mAboutQtAction = nullptr;
+    QPointer<QDialog> mGuide;
+    QPointer<QDialog> mAbout;
+    int mRenderBatch = 0;           ///< cells in the renders under way, for "Rendering 5 of 9…"
+    bool mAnnounceBackend = false;  ///< the user switched renderer: say which one took over
     std::array<QAction*, 3> mRendererActions{}; ///< by gl::BackendPreference
     QTimer mResizeTimer;
     bool mSaveFailureShown = false;

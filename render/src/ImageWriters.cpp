@@ -5,6 +5,7 @@
 #include "ImageSink.h"
 #include "marbler/Error.h"
 #include "marbler/ImageFormats.h"
+#include "marbler/Modules.h"
 
 #include <png.h>
 #include <tiffio.h>
@@ -269,5 +270,11 @@ std::string builtinImageFormats() {
 }
 
 std::string openImageIoVersion() { return detail::imageIoModule().version(); }
+
+std::optional<std::string> loadedOpenImageIoVersion() {
+    if (!moduleLoaded(detail::ImageIoModuleFile)) return std::nullopt;
+    // Loaded already, so this copy's handle is a cheap dlopen of the same object.
+    return detail::imageIoModule().version();
+}
 
 } // namespace marbler

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <dlfcn.h>
+#include <link.h>
 
 namespace marbler {
 namespace fs = std::filesystem;
@@ -63,6 +64,23 @@ void* moduleEntry(const std::string& fileName, const std::string& entryName) {
     void* entry = ::dlsym(handle, entryName.c_str());
     if (!entry) throw RuntimeFailure(fileName + " has no entry point " + entryName + " (a module of another version?)");
     return entry;
+}
+
+bool moduleLoaded(const std::string& fileName) {
+    // The process's list of loaded objects, not this copy's handle table: the window module
+    // has its own copy of this code, which did not see the executable load the module.
+    struct Search {
+        const std::string* name;
+        bool found = false;
+    } search{&fileName};
+    ::dl_iterate_phdr(
+        [](dl_phdr_info* info, std::size_t, void* data) {
+            auto* s = static_cast<Search*>(data);
+            if (info->dlpi_name && fs::path(info->dlpi_name).filename() == *s->name) s->found = true;
+            return s->found ? 1 : 0;
+        },
+        &search);
+    return search.found;
 }
 
 std::string moduleLocation(const std::string& fileName) {

@@ -12,6 +12,7 @@
 #include "ui/DesignCell.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
+#include "ui/OpenPlacement.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/Session.h"
@@ -23,6 +24,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
@@ -98,8 +100,12 @@ protected:
         mWindow = std::make_unique<WorkbenchWindow>(mService.get());
         mWindow->model()->setSessionSeed(42);
         mWindow->newRandomPopulation(2);
+        // Opening over designs asks where they go; these tests answer "replace" without a
+        // modal dialog (tests/ui/HelpTest.cpp tests the question itself).
+        setOpenChooser([](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
     }
     void TearDown() override {
+        setOpenChooser({});
         mWindow.reset();
         mService.reset();
         qunsetenv("MARBLER_FAVOURITES_DIR");
@@ -1338,17 +1344,24 @@ TEST(RenderServiceTest, EnvironmentOverridesThePreference) {
     EXPECT_TRUE(window.rendererAction(gl::BackendPreference::Gpu)->toolTip().contains(QStringLiteral("MARBLER_RENDERER")));
 }
 
-TEST_F(WorkbenchTest, StatusBarNamesTheBackEnd) {
-    auto* label = mWindow->findChild<QLabel*>(QStringLiteral("backendLabel"));
-    ASSERT_NE(label, nullptr);
+TEST_F(WorkbenchTest, AboutNamesTheBackEndNotTheStatusBar) {
+    // The status bar speaks of the task at hand; which renderer draws, and why, is in About.
+    EXPECT_EQ(mWindow->findChild<QLabel*>(QStringLiteral("backendLabel")), nullptr);
     if (mService->backendName().isEmpty()) {
         QSignalSpy ready(mService.get(), &RenderService::backendReady);
         ASSERT_TRUE(ready.wait(60000));
     }
-    EXPECT_TRUE(label->text().startsWith(QStringLiteral("Rendering on the CPU ("))) << label->text().toStdString();
-    EXPECT_TRUE(label->text().contains(QStringLiteral("threads"))) << label->text().toStdString();
-    EXPECT_TRUE(label->text().contains(mService->backendReason())) << label->text().toStdString();
+    const QString renderer = mWindow->rendererDescription();
+    EXPECT_TRUE(renderer.startsWith(QStringLiteral("Rendering on the CPU ("))) << renderer.toStdString();
+    EXPECT_TRUE(renderer.contains(QStringLiteral("threads"))) << renderer.toStdString();
+    EXPECT_TRUE(renderer.contains(mService->backendReason())) << renderer.toStdString();
     EXPECT_FALSE(mService->backendReason().isEmpty());
+    QDialog* about = mWindow->showAbout();
+    ASSERT_NE(about, nullptr);
+    auto* text = about->findChild<QLabel*>(QStringLiteral("aboutText"));
+    ASSERT_NE(text, nullptr);
+    EXPECT_TRUE(text->text().contains(renderer.toHtmlEscaped())) << text->text().toStdString();
+    about->close();
 }
 
 TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
@@ -1364,8 +1377,6 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
     RenderService service;
     EXPECT_EQ(service.preference(), gl::BackendPreference::Auto);
     WorkbenchWindow window(&service);
-    auto* label = window.findChild<QLabel*>(QStringLiteral("backendLabel"));
-    ASSERT_NE(label, nullptr);
     QSignalSpy ready(&service, &RenderService::backendReady);
     if (service.backendName().isEmpty()) {
         ASSERT_TRUE(ready.wait(60000));
@@ -1380,11 +1391,13 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
     EXPECT_EQ(service.usesGl(), !probe.software);
     EXPECT_TRUE(window.rendererAction(gl::BackendPreference::Auto)->isChecked());
     if (probe.software) {
-        EXPECT_TRUE(label->text().contains(QStringLiteral("on the CPU"))) << label->text().toStdString();
-        EXPECT_TRUE(label->text().contains(QStringLiteral("software rasteriser"))) << label->text().toStdString();
+        const QString renderer = window.rendererDescription();
+        EXPECT_TRUE(renderer.contains(QStringLiteral("on the CPU"))) << renderer.toStdString();
+        EXPECT_TRUE(renderer.contains(QStringLiteral("software rasteriser"))) << renderer.toStdString();
     }
 
-    // GPU, then CPU: each is remembered, named on the status bar, and renders the grid again.
+    // GPU, then CPU: each is remembered, named in About (and on the status bar for a moment),
+    // and renders the grid again.
     for (gl::BackendPreference preference : {gl::BackendPreference::Gpu, gl::BackendPreference::Cpu}) {
         const QImage before = window.cell(0)->image();
         ready.clear();
@@ -1396,7 +1409,9 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
         EXPECT_EQ(service.usesGl(), preference == gl::BackendPreference::Gpu);
         const QString expected = preference == gl::BackendPreference::Gpu ? QStringLiteral("Rendering with OpenGL")
                                                                           : QStringLiteral("Rendering on the CPU");
-        EXPECT_TRUE(label->text().startsWith(expected)) << label->text().toStdString();
+        EXPECT_TRUE(window.rendererDescription().startsWith(expected)) << window.rendererDescription().toStdString();
+        EXPECT_TRUE(window.statusBar()->currentMessage().startsWith(expected))
+            << window.statusBar()->currentMessage().toStdString();
         while (!window.renderingDone() || finished.isEmpty()) ASSERT_TRUE(finished.wait(120000));
         EXPECT_FALSE(window.cell(0)->image().isNull());
         EXPECT_EQ(window.cell(0)->image().size(), before.size());

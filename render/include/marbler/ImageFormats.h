@@ -1,6 +1,7 @@
 #pragma once
 /// Where Marbler's image formats come from, for `marbler doctor`.
 
+#include <optional>
 #include <string>
 
 namespace marbler {
@@ -12,5 +13,10 @@ std::string builtinImageFormats();
 /// OpenImageIO's version, loading its module (marbler-imageio.so) if need be. Throws
 /// RuntimeFailure when the module cannot be loaded.
 std::string openImageIoVersion();
+
+/// OpenImageIO's version when its module is already loaded in this process (by an export or a
+/// source image), else nullopt: asking never loads it, since loading costs more than most
+/// renders (the window's About box says "not loaded" instead).
+std::optional<std::string> loadedOpenImageIoVersion();
 
 } // namespace marbler

@@ -17,6 +17,10 @@ namespace marbler {
 /// ask. Throws RuntimeFailure saying what is missing and where it was looked for.
 void* moduleEntry(const std::string& fileName, const std::string& entryName);
 
+/// Whether a module file (e.g. "marbler-imageio.so") is loaded in this process, by whichever
+/// copy of this library loaded it (each module links its own); never loads it.
+bool moduleLoaded(const std::string& fileName);
+
 /// The folder the module would be loaded from, or why none is found (for `marbler doctor`).
 std::string moduleLocation(const std::string& fileName);
 
