@@ -7,13 +7,16 @@
 /// One JSON document, `session.json` in the session folder:
 ///
 ///     {"format": "marbler-session", "version": 1, "seed": 42, "current": 1,
-///      "dimension": 2, "mesh": "vase",
+///      "dimension": 2, "mesh": "vase", "name": "Flat session, 2 Dec 2026 14:05",
+///      "created": "2026-12-02T14:05:12Z",
 ///      "generations": [{"description": "...", "parents": [4], "selected": [4],
 ///                       "cells": [GENOME, null, ...], "bases": ["/dir", null, ...]}, ...]}
 ///
 /// where GENOME is a genome document exactly as a genome file holds it (marbler::toJson, read
 /// back with marbler::parseGenome, so every rule of the genome format is checked on resume),
-/// and `bases` the folders relative source images resolve against (absent when none).
+/// and `bases` the folders relative source images resolve against (absent when none). `name`
+/// and `created` (ISO 8601) label the session in the list of kept sessions (SessionStore.h);
+/// both are optional.
 
 #include "ui/PopulationModel.h"
 
@@ -33,6 +36,7 @@ struct SavedSession {
     std::uint64_t seed = 1;
     int dimension = 2;               ///< 2: flat, 3: solid (the kind of the current grid)
     QString mesh = QStringLiteral("vase");
+    SessionLabel label{}; ///< empty name, invalid time when the document has none
 };
 
 /// The session folder: $MARBLER_SESSION_DIR when set, else the app data folder's "session".

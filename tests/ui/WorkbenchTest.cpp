@@ -15,6 +15,7 @@
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/Session.h"
+#include "ui/SessionStore.h"
 #include "ui/StartDialog.h"
 #include "ui/Workbench.h"
 #include "ui/WorkbenchWindow.h"
@@ -838,7 +839,13 @@ protected:
         qunsetenv("MARBLER_FAVOURITES_DIR");
         StartChoiceTest::TearDown();
     }
-    QString sessionFile() const { return sessionFilePath(mSession.path()); }
+    /// The folder the kept sessions are in.
+    QString sessionsFolder() const { return SessionStore(mSession.path()).folder(); }
+    /// The last session's file: the kept session changed most recently.
+    QString sessionFile() const {
+        const auto kept = SessionStore(mSession.path()).list();
+        return kept.empty() ? QString() : kept.front().file;
+    }
 
     QTemporaryDir mFavourites;
     QTemporaryDir mSession;
@@ -892,7 +899,7 @@ TEST_F(SessionTest, ResumeBringsBackGenerationsCurrentSeedAndHistory) {
     EXPECT_EQ(m.current().description, QStringLiteral("Recombine of 2 parents"));
     m.goTo(0);
     EXPECT_EQ(m.current().description, QStringLiteral("New random population"));
-    EXPECT_EQ(folderEntries(mSession.path()), QStringList{QStringLiteral("session.json")})
+    EXPECT_EQ(folderEntries(sessionsFolder()), QStringList{QFileInfo(m.sessionFile()).fileName()})
         << "resuming keeps one session file";
 }
 
@@ -915,24 +922,26 @@ TEST_F(SessionTest, SolidSessionResumesItsKindAndObject) {
     EXPECT_EQ(window.model()->populationDimension(), 3);
 }
 
-TEST_F(SessionTest, NotResumingKeepsTheOldSessionAStepBehind) {
+TEST_F(SessionTest, NotResumingKeepsTheOldSession) {
     answer = StartChoice{2, QStringLiteral("vase")};
     std::vector<std::string> first;
+    QString firstFile;
     {
         WorkbenchWindow window(&service);
         startSession(window, options);
         first = snapshot(*window.model());
+        firstFile = window.model()->sessionFile();
     }
     answer = StartChoice{3, QStringLiteral("vase")}; // "breed solid" instead of resuming
     WorkbenchWindow window(&service);
     startSession(window, options);
     EXPECT_EQ(window.model()->cell(0)->dimension, 3);
-    EXPECT_EQ(folderEntries(mSession.path()),
-              (QStringList{QStringLiteral("session.json"), QStringLiteral("session.previous.json")}));
-    const SavedSession previous = loadSession(mSession.filePath(QStringLiteral("session.previous.json")));
+    EXPECT_NE(window.model()->sessionFile(), firstFile) << "a new session has a file of its own";
+    EXPECT_EQ(folderEntries(sessionsFolder()).size(), 2) << folderEntries(sessionsFolder()).join(' ').toStdString();
+    const SavedSession previous = loadSession(firstFile);
     ASSERT_EQ(previous.history.size(), 1u);
     EXPECT_EQ(serializeGenome(*previous.history[0].cells[0]), first[0]);
-    EXPECT_EQ(loadSession(sessionFile()).dimension, 3);
+    EXPECT_EQ(loadSession(window.model()->sessionFile()).dimension, 3);
 
     // A forced kind (--solid, --flat) starts a new session without offering the old one.
     const int askedBefore = asked;
@@ -942,6 +951,7 @@ TEST_F(SessionTest, NotResumingKeepsTheOldSessionAStepBehind) {
     startSession(forced, flat);
     EXPECT_EQ(asked, askedBefore);
     EXPECT_EQ(forced.model()->cell(0)->dimension, 2);
+    EXPECT_EQ(SessionStore(mSession.path()).list().size(), 3u) << "every session is kept";
 }
 
 TEST_F(SessionTest, EveryChangeIsSavedAtomically) {
@@ -951,13 +961,14 @@ TEST_F(SessionTest, EveryChangeIsSavedAtomically) {
     PopulationModel& m = *window.model();
     // Saved state equals the model: generations, current, seed.
     const auto expectSaved = [&](const char* after) {
+        ASSERT_EQ(m.sessionFile(), sessionFile()) << after << ": the session being bred is the last one";
         const SavedSession saved = loadSession(sessionFile());
         PopulationModel copy;
         copy.restoreSession(saved);
         EXPECT_EQ(historySnapshot(copy), historySnapshot(m)) << after;
         EXPECT_EQ(saved.current, m.currentIndex()) << after;
         EXPECT_EQ(saved.seed, m.sessionSeed()) << after;
-        EXPECT_EQ(folderEntries(mSession.path()), QStringList{QStringLiteral("session.json")})
+        EXPECT_EQ(folderEntries(sessionsFolder()), QStringList{QFileInfo(sessionFile()).fileName()})
             << after << ": no temporary file is left behind";
     };
     startSession(window, options);
@@ -997,13 +1008,14 @@ TEST_F(SessionTest, CorruptSessionIsReportedKeptAsBadAndAFreshOneStarts) {
         startSession(window, options);
     }
     // Half a session, as a crash in a non-atomic writer would leave it.
-    QFile file(sessionFile());
+    const QString damaged = sessionFile();
+    QFile file(damaged);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     const QByteArray whole = file.readAll();
     file.close();
     const QByteArray half = whole.left(whole.size() / 2);
     {
-        QFile out(sessionFile());
+        QFile out(damaged);
         ASSERT_TRUE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
         out.write(half);
     }
@@ -1014,33 +1026,38 @@ TEST_F(SessionTest, CorruptSessionIsReportedKeptAsBadAndAFreshOneStarts) {
     startSession(window, options);
     ASSERT_EQ(errors.messages.size(), 1) << "reported once";
     EXPECT_TRUE(errors.messages.front().startsWith(QStringLiteral("Cannot resume the last session")));
-    EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("session.json.bad")));
+    EXPECT_TRUE(errors.messages.front().contains(QFileInfo(damaged).fileName() + QStringLiteral(".bad")))
+        << errors.messages.front().toStdString();
     EXPECT_EQ(asked, askedBefore + 1);
     EXPECT_EQ(lastDefaults.resumeGeneration, 0) << "nothing to resume offered";
+    EXPECT_TRUE(lastDefaults.otherSessions.isEmpty()) << "a session moved aside is not listed";
     EXPECT_EQ(window.model()->history().size(), 1u) << "a fresh session";
-    QFile bad(sessionFile() + QStringLiteral(".bad"));
+    QFile bad(damaged + QStringLiteral(".bad"));
     ASSERT_TRUE(bad.open(QIODevice::ReadOnly)) << "the bad file is kept aside";
     EXPECT_EQ(bad.readAll(), half);
+    EXPECT_FALSE(QFileInfo::exists(damaged));
+    EXPECT_EQ(window.model()->sessionFile(), sessionFile());
     EXPECT_NO_THROW(loadSession(sessionFile())) << "the fresh session is saved";
 
     // Valid JSON holding a broken design: also kept aside (beside the first), named.
-    std::string broken = whole.toStdString();
+    const QString fresh = sessionFile();
+    std::string broken = test::readFile(fresh.toStdString());
     const auto pos = broken.find("\"format\":\"marbler-genome\",\"version\":1,\"dimension\":2");
     ASSERT_NE(pos, std::string::npos) << broken.substr(0, 400);
     broken.replace(pos, 51, "\"format\":\"marbler-genome\",\"version\":1,\"dimension\":7");
-    {
-        QFile out(sessionFile());
-        ASSERT_TRUE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
-        out.write(QByteArray::fromStdString(broken));
-    }
-    EXPECT_THROW(loadSession(sessionFile()), InputError);
+    test::writeFile(fresh.toStdString(), broken);
+    EXPECT_THROW(loadSession(fresh), InputError);
     WorkbenchWindow again(&service);
     startSession(again, options);
     ASSERT_EQ(errors.messages.size(), 2);
-    EXPECT_TRUE(errors.messages.back().contains(QStringLiteral("session.json.2.bad")));
-    EXPECT_TRUE(QFileInfo::exists(sessionFile() + QStringLiteral(".2.bad")));
-    EXPECT_TRUE(QFileInfo::exists(sessionFile() + QStringLiteral(".bad")));
+    EXPECT_TRUE(errors.messages.back().contains(QFileInfo(fresh).fileName() + QStringLiteral(".bad")));
+    EXPECT_TRUE(QFileInfo::exists(fresh + QStringLiteral(".bad")));
+    EXPECT_TRUE(QFileInfo::exists(damaged + QStringLiteral(".bad")));
     EXPECT_EQ(again.model()->history().size(), 1u);
+
+    // keepBadSession never overwrites an earlier .bad of the same name.
+    test::writeFile(fresh.toStdString(), "{");
+    EXPECT_EQ(keepBadSession(fresh), fresh + QStringLiteral(".2.bad"));
 }
 
 TEST_F(SessionTest, BadSessionDocumentsThrowInputErrors) {
