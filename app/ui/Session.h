@@ -4,7 +4,7 @@
 /// writes it (atomically) after every change of the population, so a crash or a closed window
 /// loses nothing; the next start offers to resume it.
 ///
-/// One JSON document, `session.json` in the session folder:
+/// One JSON document per session, kept in the session folder's store (SessionStore.h):
 ///
 ///     {"format": "marbler-session", "version": 1, "seed": 42, "current": 1,
 ///      "dimension": 2, "mesh": "vase", "name": "Flat session, 2 Dec 2026 14:05",
@@ -41,7 +41,8 @@ struct SavedSession {
 
 /// The session folder: $MARBLER_SESSION_DIR when set, else the app data folder's "session".
 QString defaultSessionFolder();
-/// The session file in a folder.
+/// The single session file of a folder before sessions were kept (`session.json`), which
+/// SessionStore::migrate() moves into the store.
 QString sessionFilePath(const QString& folder);
 
 /// The session document of a model's history (see above). The designs of a generation do not
@@ -56,7 +57,7 @@ SavedSession parseSession(std::string_view text, const std::string& name);
 /// RuntimeFailure when the file cannot be read.
 SavedSession loadSession(const QString& file);
 
-/// Moves a bad session file aside (`session.json.bad`, or `.2.bad`, ... when taken) so that a
+/// Moves a bad session file aside (`NAME.json.bad`, or `.2.bad`, ... when taken) so that a
 /// fresh session can start without destroying it. Returns the new name, empty when it failed.
 QString keepBadSession(const QString& file);
 
