@@ -205,6 +205,9 @@ int runWorkbench(int argc, char** argv) {
     QApplication::setOrganizationName(QStringLiteral("Marbler"));
     QApplication::setApplicationName(QStringLiteral("Marbler"));
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    // Ties the window to the installed launcher (app/desktop/marbler.desktop): its icon and name
+    // in docks and task switchers (Wayland's app id).
+    QGuiApplication::setDesktopFileName(QStringLiteral("marbler"));
 
     // The hidden options can also come from the environment: MARBLER_SCREENSHOT=FILE,
     // MARBLER_SEED=N, MARBLER_SOLID=1 (or 0 for flat), MARBLER_NO_START_DIALOG=1.
