@@ -190,8 +190,7 @@ KeptSession SessionStore::create(int dimension, const QDateTime& now) {
 QStringList SessionStore::migrate(QStringList* problems) {
     QStringList moved;
     // session.json is the newer of the two; both keep their times, so the list orders them so.
-    for (const QString& old : {QStringLiteral("session.json"), QStringLiteral("session.previous.json")}) {
-        const QString file = QDir(mFolder).filePath(old);
+    for (const QString& file : {sessionFilePath(mFolder), QDir(mFolder).filePath(QStringLiteral("session.previous.json"))}) {
         if (!QFileInfo(file).isFile()) continue;
         const KeptSession head = describe(file);
         // The time it was last changed is the best known creation time of an old session.
