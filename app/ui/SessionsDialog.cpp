@@ -30,11 +30,12 @@ SessionsDialog::SessionsDialog(WorkbenchWindow* window) : QDialog(window), mWind
     mList->setColumnCount(2);
     mList->setHeaderLabels({tr("Name"), tr("Session")});
     mList->setRootIsDecorated(false);
-    mList->header()->setSectionResizeMode(0, QHeaderView::Stretch);
-    mList->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    // Names in full; the details (generation, kind, last change) take the rest.
+    mList->header()->setStretchLastSection(true);
+    mList->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     // Double-click resumes, so a name is edited with F2, a slow second click or Rename.
     mList->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);
-    mList->setMinimumSize(520, 220);
+    mList->setMinimumSize(640, 220);
 
     mResume = new QPushButton(tr("&Resume"), this);
     mRename = new QPushButton(tr("Re&name"), this);
