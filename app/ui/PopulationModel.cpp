@@ -4,6 +4,7 @@
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "ui/Session.h"
+#include "ui/Trash.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -332,8 +333,15 @@ void PopulationModel::restoreSession(SavedSession session) {
     setCurrent(std::clamp(session.current, 0, int(mHistory.size()) - 1));
     mSessionSeed = session.seed;
     mMesh = session.mesh;
+    mSessionLabel = session.label;
     mEmptyStart = false;
     currentGenerationChanged();
+}
+
+void PopulationModel::setSessionLabel(const SessionLabel& label) {
+    if (label == mSessionLabel) return;
+    mSessionLabel = label;
+    autosave();
 }
 
 void PopulationModel::setMesh(const QString& mesh) {
@@ -356,7 +364,15 @@ QString PopulationModel::defaultFavouritesFolder() {
 
 QStringList PopulationModel::setFavouritesFolder(const QString& folder) {
     mFavouritesFolder = folder;
+    mRemovedFavourites.clear();
+    // Removed favourites stay restorable for 30 days; older ones are deleted when the folder is
+    // set, which is at each start of the window.
+    if (!folder.isEmpty()) emptyTrash(favouritesTrashFolder(), 30);
     return reloadFavourites();
+}
+
+QString PopulationModel::favouritesTrashFolder() const {
+    return mFavouritesFolder.isEmpty() ? QString() : QDir(mFavouritesFolder).filePath(QStringLiteral(".trash"));
 }
 
 QStringList PopulationModel::reloadFavourites() {
@@ -364,6 +380,8 @@ QStringList PopulationModel::reloadFavourites() {
     QStringList errors;
     QDir dir(mFavouritesFolder);
     if (!mFavouritesFolder.isEmpty() && dir.exists()) {
+        // Files only, and not hidden ones: the trash (.trash) and an atomic write's temporary
+        // are not favourites.
         const auto files = dir.entryInfoList({QStringLiteral("*.marble.json")}, QDir::Files, QDir::Name);
         for (const QFileInfo& info : files) {
             try {
@@ -391,11 +409,29 @@ void PopulationModel::addFavourite(const Genome& genome) {
     emit favouritesChanged();
 }
 
-void PopulationModel::removeFavourite(int index) {
-    if (index < 0 || index >= int(mFavourites.size())) return;
-    QFile::remove(mFavourites[std::size_t(index)].file);
+QString PopulationModel::removeFavourite(int index) {
+    if (index < 0 || index >= int(mFavourites.size())) return {};
+    const QString file = mFavourites[std::size_t(index)].file;
+    const QString trashed = moveToTrash(file, favouritesTrashFolder());
+    if (trashed.isEmpty())
+        throw RuntimeFailure("cannot move " + file.toStdString() + " to the favourites' trash " +
+                             favouritesTrashFolder().toStdString());
     mFavourites.erase(mFavourites.begin() + index);
+    mRemovedFavourites << trashed;
     emit favouritesChanged();
+    return trashed;
+}
+
+bool PopulationModel::restoreRemovedFavourite(const QString& trashed) {
+    const QString file = restoreFromTrash(trashed, mFavouritesFolder);
+    mRemovedFavourites.removeAll(trashed);
+    if (file.isEmpty()) {
+        emit favouritesChanged(); // the list of removed ones changed
+        // Kept anew meanwhile (a favourite's file is named by its content): it is on the shelf.
+        return QFileInfo::exists(QDir(mFavouritesFolder).filePath(originalTrashName(trashed)));
+    }
+    reloadFavourites(); // in its place in name order, as the next start shows it
+    return true;
 }
 
 QString operatorLabel(GeneticOperator op) {

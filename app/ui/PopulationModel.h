@@ -7,6 +7,7 @@
 #include "marbler/Operators.h"
 #include "ui/ViewController.h"
 
+#include <QDateTime>
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -48,6 +49,13 @@ void numberGeneration(std::vector<Generation>& history, std::size_t k);
 struct Favourite {
     Genome genome;
     QString file;
+};
+
+/// What names a breeding session in the list of kept sessions (SessionStore.h), saved with it.
+struct SessionLabel {
+    QString name;      ///< empty: none (the document then has no name)
+    QDateTime created; ///< invalid: unknown
+    bool operator==(const SessionLabel&) const = default;
 };
 
 /// The population, its history and the favourites. Every change that alters the grid's designs
@@ -156,8 +164,17 @@ public:
     const std::vector<Favourite>& favourites() const { return mFavourites; }
     /// Saves a copy of the design to the folder. Throws marbler::Error when it cannot be saved.
     void addFavourite(const Genome& genome);
-    /// Removes a favourite and its file.
-    void removeFavourite(int index);
+    /// Removes a favourite: its file goes into the favourites folder's trash (`.trash`, which
+    /// the shelf never reads), from where restoreFavourite() brings it back. Returns the trashed
+    /// file, empty when nothing was removed. Throws RuntimeFailure when the file cannot be moved
+    /// (the favourite then stays).
+    QString removeFavourite(int index);
+    /// Brings a removed favourite back from the trash onto the shelf; returns whether it could.
+    bool restoreRemovedFavourite(const QString& trashed);
+    /// The files removed from the shelf, the most recent last (for "Restore removed favourite").
+    const QStringList& removedFavourites() const { return mRemovedFavourites; }
+    /// The trash folder of the favourites folder.
+    QString favouritesTrashFolder() const;
     /// Re-reads the folder; returns one message per file that did not load.
     QStringList reloadFavourites();
 
@@ -176,6 +193,9 @@ public:
     /// Replaces the history with a saved one (its generations, current generation, seed and
     /// object), then autosaves as after any change.
     void restoreSession(SavedSession session);
+    /// The session's name and creation time, saved with it; setting them autosaves.
+    const SessionLabel& sessionLabel() const { return mSessionLabel; }
+    void setSessionLabel(const SessionLabel& label);
     /// The object solid designs are shown on, kept with the session.
     QString mesh() const { return mMesh; }
     void setMesh(const QString& mesh);
@@ -220,6 +240,8 @@ private:
     /// Each generation's designs as session text (serializeSession); empty: to be made.
     std::vector<std::string> mSessionCells;
     QString mMesh = QStringLiteral("vase");
+    SessionLabel mSessionLabel;
+    QStringList mRemovedFavourites;
 };
 
 /// A short label of an operator for the UI ("Alter", "Recombine", "Swap", "Change initial state").

@@ -59,8 +59,14 @@ std::string serializeSession(const PopulationModel& model, std::vector<std::stri
     header["version"] = SessionVersion;
     header["seed"] = model.sessionSeed();
     header["current"] = model.currentIndex();
+    // The number the window shows for the current generation, for lists that read only the head.
+    if (!model.isEmptyWorkbench()) header["generation"] = model.current().number;
     header["dimension"] = model.populationDimension();
     header["mesh"] = model.mesh().toStdString();
+    // The label goes before the generations: lists of sessions read only the head.
+    const SessionLabel& label = model.sessionLabel();
+    if (!label.name.isEmpty()) header["name"] = label.name.toStdString();
+    if (label.created.isValid()) header["created"] = label.created.toUTC().toString(Qt::ISODate).toStdString();
     std::string text = header.dump();
     text.pop_back(); // the closing brace
     text += ",\"generations\":[";
@@ -134,6 +140,16 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
         if (!doc["mesh"].is_string()) bad(name, "mesh", "must be a string");
         const QString mesh = QString::fromStdString(doc["mesh"].get<std::string>());
         if (meshNames().contains(mesh)) session.mesh = mesh; // an unknown object falls back to the vase
+    }
+
+    if (doc.contains("name")) {
+        if (!doc["name"].is_string()) bad(name, "name", "must be a string");
+        session.label.name = QString::fromStdString(doc["name"].get<std::string>());
+    }
+    if (doc.contains("created")) {
+        if (!doc["created"].is_string()) bad(name, "created", "must be a date and time (ISO 8601)");
+        // A time that does not parse only loses the label's date, not the session.
+        session.label.created = QDateTime::fromString(QString::fromStdString(doc["created"].get<std::string>()), Qt::ISODate);
     }
 
     if (!doc.contains("generations") || !doc["generations"].is_array() || doc["generations"].empty())

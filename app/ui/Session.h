@@ -4,10 +4,11 @@
 /// writes it (atomically) after every change of the population, so a crash or a closed window
 /// loses nothing; the next start offers to resume it.
 ///
-/// One JSON document, `session.json` in the session folder:
+/// One JSON document per session, kept in the session folder's store (SessionStore.h):
 ///
-///     {"format": "marbler-session", "version": 2, "seed": 42, "current": 1,
-///      "dimension": 2, "mesh": "vase",
+///     {"format": "marbler-session", "version": 2, "seed": 42, "current": 1, "generation": 2,
+///      "dimension": 2, "mesh": "vase", "name": "Flat session, 2 Dec 2026 14:05",
+///      "created": "2026-12-02T14:05:12Z",
 ///      "generations": [{"description": "...", "parent": 0, "parents": [4], "selected": [4],
 ///                       "cells": [GENOME, null, ...], "bases": ["/dir", null, ...]}, ...]}
 ///
@@ -16,7 +17,9 @@
 /// exactly as a genome file holds it (marbler::toJson, read back with marbler::parseGenome, so
 /// every rule of the genome format is checked on resume), and `bases` the folders relative
 /// source images resolve against (absent when none). Version 1 documents, which have no
-/// `parent` (each generation grew from the one before), are still read.
+/// `parent` (each generation grew from the one before), are still read. `name` and `created`
+/// (ISO 8601) label the session in the list of kept sessions (SessionStore.h); both are optional,
+/// as is `generation`, the current generation's number as the window shows it (for that list).
 
 #include "ui/PopulationModel.h"
 
@@ -36,11 +39,13 @@ struct SavedSession {
     std::uint64_t seed = 1;
     int dimension = 2;               ///< 2: flat, 3: solid (the kind of the current grid)
     QString mesh = QStringLiteral("vase");
+    SessionLabel label{}; ///< empty name, invalid time when the document has none
 };
 
 /// The session folder: $MARBLER_SESSION_DIR when set, else the app data folder's "session".
 QString defaultSessionFolder();
-/// The session file in a folder.
+/// The single session file of a folder before sessions were kept (`session.json`), which
+/// SessionStore::migrate() moves into the store.
 QString sessionFilePath(const QString& folder);
 
 /// The session document of a model's history (see above). The designs of a generation do not
@@ -55,7 +60,7 @@ SavedSession parseSession(std::string_view text, const std::string& name);
 /// RuntimeFailure when the file cannot be read.
 SavedSession loadSession(const QString& file);
 
-/// Moves a bad session file aside (`session.json.bad`, or `.2.bad`, ... when taken) so that a
+/// Moves a bad session file aside (`NAME.json.bad`, or `.2.bad`, ... when taken) so that a
 /// fresh session can start without destroying it. Returns the new name, empty when it failed.
 QString keepBadSession(const QString& file);
 

@@ -65,13 +65,27 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog
     mDontAsk = new QCheckBox(tr("&Don't ask again (the toolbar still changes it)"), this);
 
     if (defaults.resumeGeneration > 0) {
-        mResume = new QPushButton(tr("&Resume the last session (generation %1, %2)")
+        const QString named = defaults.resumeName.isEmpty() ? QString() : tr(" “%1”").arg(defaults.resumeName);
+        mResume = new QPushButton(tr("&Resume the last session%1 (generation %2, %3)")
+                                      .arg(named)
                                       .arg(defaults.resumeGeneration)
                                       .arg(defaults.resumeDimension == 3 ? tr("solid") : tr("2D")),
                                   this);
         mResume->setToolTip(tr("Every generation of the last session, back where you left it"));
         connect(mResume, &QPushButton::clicked, this, [this] {
             mChoice.resume = true;
+            mChoice.resumeId.clear();
+            accept();
+        });
+    }
+    if (!defaults.otherSessions.isEmpty()) {
+        mOthers = new QComboBox(this);
+        for (const auto& [id, text] : defaults.otherSessions) mOthers->addItem(text, id);
+        mOthers->setToolTip(tr("Every session is kept; File ▸ Sessions renames and deletes them"));
+        mResumeOther = new QPushButton(tr("Resume &another session:"), this);
+        connect(mResumeOther, &QPushButton::clicked, this, [this] {
+            mChoice.resume = true;
+            mChoice.resumeId = mOthers->currentData().toString();
             accept();
         });
     }
@@ -98,6 +112,12 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog
     layout->addWidget(intro);
     layout->addSpacing(8);
     if (mResume) layout->addWidget(mResume);
+    if (mOthers) {
+        auto* othersRow = new QHBoxLayout;
+        othersRow->addWidget(mResumeOther);
+        othersRow->addWidget(mOthers, 1);
+        layout->addLayout(othersRow);
+    }
     layout->addWidget(mFlat);
     layout->addLayout(solidRow);
     layout->addSpacing(8);

@@ -1,6 +1,7 @@
 #pragma once
-/// The start choice: resume the last session (when one was saved), breed flat (2D) designs, or
-/// solid (3D) designs shown on an object. Asked when the workbench opens with no genome files,
+/// The start choice: resume the last session (when one was saved) or another kept one, breed
+/// flat (2D) designs, or solid (3D) designs shown on an object (a new session either way; the
+/// others stay kept). Asked when the workbench opens with no genome files,
 /// unless the user ticked "don't ask again"; the toolbar's kind box changes it later.
 
 #include <QDialog>
@@ -9,6 +10,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 
 class QCheckBox;
 class QComboBox;
@@ -29,6 +31,12 @@ struct StartChoice {
     /// there is no session to resume.
     int resumeGeneration = 0;
     int resumeDimension = 2;
+    /// The offered session's name (empty: unnamed).
+    QString resumeName{};
+    /// The other kept sessions offered, the most recent first: id and what a list shows.
+    QList<std::pair<QString, QString>> otherSessions{};
+    /// The answer: which kept session to resume (empty: the last one, offered above).
+    QString resumeId{};
     bool operator==(const StartChoice&) const = default;
 };
 
@@ -50,6 +58,9 @@ public:
 
     /// "Resume the last session (...)": nullptr when no session is offered.
     QPushButton* resumeButton() const { return mResume; }
+    /// The other kept sessions and the button resuming the one chosen: nullptr when none.
+    QComboBox* otherSessionsBox() const { return mOthers; }
+    QPushButton* resumeOtherButton() const { return mResumeOther; }
     QPushButton* flatButton() const { return mFlat; }
     QPushButton* solidButton() const { return mSolid; }
     QComboBox* meshBox() const { return mMesh; }
@@ -58,6 +69,8 @@ public:
 private:
     StartChoice mChoice;
     QPushButton* mResume = nullptr;
+    QComboBox* mOthers = nullptr;
+    QPushButton* mResumeOther = nullptr;
     QPushButton* mFlat;
     QPushButton* mSolid;
     QComboBox* mMesh;

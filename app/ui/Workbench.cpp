@@ -3,12 +3,14 @@
 #include "ui/ErrorReport.h"
 #include "ui/RenderService.h"
 #include "ui/Session.h"
+#include "ui/SessionStore.h"
 #include "ui/StartDialog.h"
 #include "ui/WorkbenchWindow.h"
 
 #include <QApplication>
 #include <QFile>
 #include <QFileInfo>
+#include <QStatusBar>
 #include <QStringList>
 #include <QTimer>
 
@@ -93,20 +95,43 @@ void exitWhenShown(WorkbenchWindow& window) {
 } // namespace
 
 void startSession(WorkbenchWindow& window, const StartOptions& options) {
-    const QString sessionFile =
-        options.sessionFolder.empty() ? QString() : sessionFilePath(QString::fromStdString(options.sessionFolder));
-    // The saved session is offered only to a start that names neither files nor a kind.
-    std::optional<SavedSession> saved;
-    if (!sessionFile.isEmpty() && options.files.empty() && !options.dimension && QFileInfo::exists(sessionFile)) {
+    std::optional<SessionStore> store;
+    std::vector<KeptSession> kept;
+    if (!options.sessionFolder.empty()) {
+        store.emplace(QString::fromStdString(options.sessionFolder));
+        QStringList problems;
+        store->migrate(&problems);
+        if (!problems.isEmpty())
+            reportError(&window, WorkbenchWindow::tr("Cannot move the saved sessions"),
+                        WorkbenchWindow::tr("Sessions saved by an earlier Marbler could not be moved into the "
+                                            "list of kept sessions; they are left where they are.\n\n%1")
+                            .arg(problems.join(QStringLiteral("\n"))));
+        // Deleted sessions can be brought back for 30 days; older ones go at start.
+        store->emptyTrash(30);
+        kept = store->list();
+        window.setSessionStore(store->sessionFolder());
+    }
+    // A kept session that does not load is reported once, moved aside as `.bad` and taken off
+    // the list; it never stops the start.
+    const auto load = [&window, &kept](const KeptSession& session) -> std::optional<SavedSession> {
         try {
-            saved = loadSession(sessionFile);
-        } catch (const std::exception& e) { // a bad session never stops the start
-            const QString aside = keepBadSession(sessionFile);
-            reportError(&window, WorkbenchWindow::tr("Cannot resume the last session"),
-                        WorkbenchWindow::tr("The last session could not be read, so a new one starts.\n\n%1\n\n%2")
-                            .arg(QString::fromStdString(e.what()),
-                                 aside.isEmpty() ? WorkbenchWindow::tr("The file could not be moved aside.")
-                                                 : WorkbenchWindow::tr("The file is kept as %1.").arg(aside)));
+            return loadSession(session.file);
+        } catch (const std::exception& e) {
+            reportBadSession(&window, session.file, QString::fromUtf8(e.what()));
+            std::erase_if(kept, [&](const KeptSession& k) { return k.id == session.id; });
+            return std::nullopt;
+        }
+    };
+    // The last session is offered only to a start that names neither files nor a kind; one that
+    // does starts a new session, and the last one stays kept.
+    std::optional<SavedSession> saved;
+    std::optional<KeptSession> last;
+    if (options.files.empty() && !options.dimension) {
+        for (const KeptSession& candidate : std::vector<KeptSession>(kept)) {
+            if ((saved = load(candidate))) {
+                last = candidate;
+                break;
+            }
         }
     }
 
@@ -117,35 +142,55 @@ void startSession(WorkbenchWindow& window, const StartOptions& options) {
     }
     // Opened designs are generation 1; with none (no files, or none that loaded) the saved
     // session or a random population is.
-    bool resumed = false;
+    std::optional<KeptSession> resumed;
     if (window.model()->isEmptyWorkbench()) {
         StartChoice choice = lastStartChoice();
         if (saved) {
             choice.resume = true;
             choice.resumeGeneration = saved->history[std::size_t(saved->current)].number;
             choice.resumeDimension = saved->dimension;
+            choice.resumeName = last->name;
         }
+        for (const KeptSession& k : kept)
+            if (!last || k.id != last->id)
+                choice.otherSessions.append({k.id, QStringLiteral("%1 — %2").arg(k.name, describeSession(k))});
         if (options.dimension) {
             choice.dimension = *options.dimension;
         } else if (options.ask && askStartChoice()) {
             if (const auto chosen = chooseStart(&window, choice)) choice = *chosen;
         }
+        if (choice.resume && !choice.resumeId.isEmpty() && (!last || choice.resumeId != last->id)) {
+            // Another kept session than the last.
+            saved.reset();
+            const auto other = std::find_if(kept.begin(), kept.end(),
+                                            [&](const KeptSession& k) { return k.id == choice.resumeId; });
+            if (other != kept.end()) {
+                last = *other;
+                saved = load(*other);
+            }
+        }
         if (saved && choice.resume) {
             window.resumeSession(std::move(*saved));
-            resumed = true;
+            resumed = last;
         } else {
             if (choice.dimension == 3) window.setMesh(choice.mesh);
             window.newRandomPopulation(choice.dimension);
         }
     }
-    if (sessionFile.isEmpty()) return;
-    if (!resumed && QFileInfo::exists(sessionFile)) {
-        // A new session replaces the saved one: keep the old one a step behind, not destroyed.
-        std::error_code ignored;
-        const std::filesystem::path file = sessionFile.toStdString();
-        std::filesystem::rename(file, file.parent_path() / "session.previous.json", ignored);
+    if (!store) return;
+    if (resumed) {
+        window.model()->setSessionFile(resumed->file);
+        return;
     }
-    window.model()->setSessionFile(sessionFile);
+    // A new session: a file of its own beside the kept ones, which stay as they are.
+    const KeptSession fresh = store->create(window.model()->populationDimension());
+    window.model()->setSessionLabel({fresh.name, fresh.created});
+    window.model()->setSessionFile(fresh.file);
+    if (!kept.empty())
+        window.statusBar()->showMessage(
+            WorkbenchWindow::tr("Started a new session; your previous session “%1” is kept under File ▸ Sessions")
+                .arg(kept.front().name),
+            15000);
 }
 
 int runWorkbench(int argc, char** argv) {
@@ -160,6 +205,9 @@ int runWorkbench(int argc, char** argv) {
     QApplication::setOrganizationName(QStringLiteral("Marbler"));
     QApplication::setApplicationName(QStringLiteral("Marbler"));
     QApplication::setApplicationVersion(QStringLiteral("0.1.0"));
+    // Ties the window to the installed launcher (app/desktop/marbler.desktop): its icon and name
+    // in docks and task switchers (Wayland's app id).
+    QGuiApplication::setDesktopFileName(QStringLiteral("marbler"));
 
     // The hidden options can also come from the environment: MARBLER_SCREENSHOT=FILE,
     // MARBLER_SEED=N, MARBLER_SOLID=1 (or 0 for flat), MARBLER_NO_START_DIALOG=1.

@@ -10,7 +10,10 @@
 #include "ui/OpenPlacement.h"
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
+#include "ui/SessionStore.h"
+#include "ui/SessionsDialog.h"
 #include "ui/StartDialog.h"
+#include "ui/Trash.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -19,6 +22,7 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QFileDialog>
@@ -31,6 +35,7 @@
 #include <QMenuBar>
 #include <QMimeData>
 #include <QPainter>
+#include <QPushButton>
 #include <QRandomGenerator>
 #include <QScrollBar>
 #include <QSettings>
@@ -158,6 +163,17 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     mTaskLabel->setObjectName(QStringLiteral("taskLabel"));
     mTaskLabel->setToolTip(tr("What the window is doing. Help ▸ About Marbler says which renderer draws the designs."));
     statusBar()->addPermanentWidget(mTaskLabel);
+    // Beside the message that a favourite was removed, while it shows.
+    mUndoRemove = new QPushButton(tr("Undo"), this);
+    mUndoRemove->setObjectName(QStringLiteral("undoRemoveFavourite"));
+    mUndoRemove->setToolTip(tr("Put the removed favourite back (%1)")
+                                .arg(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R).toString(QKeySequence::NativeText)));
+    statusBar()->insertPermanentWidget(0, mUndoRemove);
+    mUndoRemove->hide();
+    connect(mUndoRemove, &QPushButton::clicked, this, [this] { restoreRemovedFavourite(); });
+    connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& message) {
+        if (message != mUndoRemove->property("message").toString()) mUndoRemove->hide();
+    });
     connect(mRenderer, &RenderService::backendReady, this, [this] {
         if (mAnnounceBackend) {
             mAnnounceBackend = false;
@@ -239,6 +255,15 @@ void WorkbenchWindow::buildActions() {
     newRandom->setIconText(tr("New random"));
     newRandom->setToolTip(tr("Nine new random designs of the kind chosen beside (Ctrl+N)"));
     fileMenu->addSeparator();
+    mSessionsAction = fileMenu->addAction(tr("&Sessions…"), this, [this] { openSessionsDialog(); });
+    mSessionsAction->setStatusTip(tr("Every breeding session is kept: resume, rename or delete one"));
+    mRecentSessions = fileMenu->addMenu(tr("&Resume session"));
+    mRecentSessions->setObjectName(QStringLiteral("recentSessionsMenu"));
+    connect(mRecentSessions, &QMenu::aboutToShow, this, &WorkbenchWindow::fillRecentSessions);
+    // Until startSession names the session folder there is no store to show.
+    mSessionsAction->setEnabled(false);
+    mRecentSessions->setEnabled(false);
+    fileMenu->addSeparator();
     fileMenu->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
 
     mBack = editMenu->addAction(style()->standardIcon(QStyle::SP_ArrowBack), tr("&Back a generation"), mModel,
@@ -255,6 +280,13 @@ void WorkbenchWindow::buildActions() {
     QAction* clearSelection = editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection);
     clearSelection->setObjectName(QStringLiteral("clearSelectionAction"));
     clearSelection->setShortcut(QKeySequence(Qt::Key_Escape));
+    editMenu->addSeparator();
+    mRestoreFavourite = editMenu->addAction(tr("&Restore removed favourite"), this, [this] { restoreRemovedFavourite(); });
+    // Ctrl+Z steps back a generation, so undoing a removal has a key of its own.
+    mRestoreFavourite->setObjectName(QStringLiteral("restoreFavouriteAction"));
+    mRestoreFavourite->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    mRestoreFavourite->setStatusTip(tr("Puts the favourite removed last back on the shelf"));
+    mRestoreFavourite->setEnabled(false);
 
     const auto makeOperator = [&](GeneticOperator op, const QString& text, const QString& tip, QKeySequence key) {
         QAction* action = breedMenu->addAction(text, this, [this, op] { applyOperator(op); });
@@ -881,6 +913,8 @@ void WorkbenchWindow::bringBackDesign(int generation, int cell) {
 }
 
 void WorkbenchWindow::updateFavourites() {
+    mRestoreFavourite->setEnabled(!mModel->removedFavourites().isEmpty());
+    if (mModel->removedFavourites().isEmpty()) mUndoRemove->hide();
     mFavouritesList->clear();
     const auto& favourites = mModel->favourites();
     // Until its thumbnail is rendered, a favourite shows a blank of the thumbnail's size.
@@ -1254,13 +1288,175 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
 }
 
 void WorkbenchWindow::showFavouriteMenu(const QPoint& pos) {
-    QListWidgetItem* item = mFavouritesList->itemAt(pos);
-    if (!item) return;
-    const int row = mFavouritesList->row(item);
     QMenu menu(this);
-    menu.addAction(tr("Put into the grid"), this, [this, row] { restoreFavourite(row); });
-    menu.addAction(tr("Remove from favourites"), this, [this, row] { mModel->removeFavourite(row); });
+    if (QListWidgetItem* item = mFavouritesList->itemAt(pos)) {
+        const int row = mFavouritesList->row(item);
+        menu.addAction(tr("Put into the grid"), this, [this, row] { restoreFavourite(row); });
+        menu.addAction(tr("Remove from favourites"), this, [this, row] { removeFavourite(row); });
+        menu.addSeparator();
+    }
+    menu.addAction(mRestoreFavourite);
     menu.exec(mFavouritesList->viewport()->mapToGlobal(pos));
+}
+
+bool WorkbenchWindow::removeFavourite(int favourite) {
+    const auto& favourites = mModel->favourites();
+    if (favourite < 0 || favourite >= int(favourites.size())) return false;
+    const LineageInfo info = lineageOf(favourites[std::size_t(favourite)].genome);
+    const QString name = info.name.isEmpty() ? shortId(info.id) : info.name;
+    try {
+        mModel->removeFavourite(favourite);
+    } catch (const Error& e) {
+        reportError(this, tr("Cannot remove the favourite"), QString::fromStdString(e.what()));
+        return false;
+    }
+    const QString message = tr("Removed “%1” from favourites — Undo (%2)")
+                                .arg(name, mRestoreFavourite->shortcut().toString(QKeySequence::NativeText));
+    mUndoRemove->setProperty("message", message);
+    statusBar()->showMessage(message, 15000);
+    mUndoRemove->show();
+    return true;
+}
+
+bool WorkbenchWindow::restoreRemovedFavourite() {
+    if (mModel->removedFavourites().isEmpty()) return false;
+    const QString trashed = mModel->removedFavourites().back();
+    const QString back = QDir(mModel->favouritesFolder()).filePath(originalTrashName(trashed));
+    if (!mModel->restoreRemovedFavourite(trashed)) {
+        reportError(this, tr("Cannot restore the favourite"),
+                    tr("The removed favourite could not be put back from %1 to %2.").arg(trashed, back));
+        return false;
+    }
+    mUndoRemove->hide();
+    QString name = QFileInfo(back).fileName();
+    for (const Favourite& f : mModel->favourites())
+        if (QFileInfo(f.file) == QFileInfo(back)) {
+            const LineageInfo info = lineageOf(f.genome);
+            name = info.name.isEmpty() ? shortId(info.id) : info.name;
+        }
+    statusBar()->showMessage(tr("“%1” is back on the favourites shelf").arg(name), 5000);
+    return true;
+}
+
+void WorkbenchWindow::setSessionStore(const QString& sessionFolder) {
+    mSessionFolder = sessionFolder;
+    mSessionsAction->setEnabled(!sessionFolder.isEmpty());
+    mRecentSessions->setEnabled(!sessionFolder.isEmpty());
+}
+
+QString WorkbenchWindow::currentSessionId() const {
+    const QString file = mModel->sessionFile();
+    return file.isEmpty() ? QString() : QFileInfo(file).completeBaseName();
+}
+
+void WorkbenchWindow::fillRecentSessions() {
+    mRecentSessions->clear();
+    if (mSessionFolder.isEmpty()) return;
+    const QString current = currentSessionId();
+    int shown = 0;
+    for (const KeptSession& session : SessionStore(mSessionFolder).list()) {
+        if (session.id == current) continue;
+        if (++shown > 9) break;
+        QAction* action = mRecentSessions->addAction(
+            QStringLiteral("&%1 %2 — %3").arg(shown).arg(session.name, describeSession(session)),
+            this, [this, id = session.id] { resumeKeptSession(id); });
+        action->setData(session.id);
+    }
+    if (shown == 0) mRecentSessions->addAction(tr("No other sessions"))->setEnabled(false);
+    mRecentSessions->addSeparator();
+    mRecentSessions->addAction(mSessionsAction);
+}
+
+bool WorkbenchWindow::resumeKeptSession(const QString& id) {
+    if (mSessionFolder.isEmpty() || id.isEmpty() || id == currentSessionId()) return false;
+    const std::optional<KeptSession> kept = SessionStore(mSessionFolder).find(id);
+    if (!kept) {
+        reportError(this, tr("Cannot resume the session"), tr("There is no kept session %1 any more.").arg(id));
+        return false;
+    }
+    SavedSession saved;
+    try {
+        saved = loadSession(kept->file);
+    } catch (const std::exception& e) {
+        reportBadSession(this, kept->file, QString::fromStdString(e.what()));
+        return false;
+    }
+    // The current session was saved with its last change, so switching loses nothing; no file
+    // is set while the other one comes in, so nothing is written over either.
+    const QString previous = mModel->sessionLabel().name;
+    mModel->setSessionFile({});
+    resumeSession(std::move(saved));
+    mModel->setSessionFile(kept->file);
+    statusBar()->showMessage(previous.isEmpty()
+                                 ? tr("Resumed “%1” at generation %2").arg(kept->name).arg(mModel->generationLabel(mModel->currentIndex()))
+                                 : tr("Resumed “%1” at generation %2; “%3” is kept under File ▸ Sessions")
+                                       .arg(kept->name)
+                                       .arg(mModel->generationLabel(mModel->currentIndex()))
+                                       .arg(previous),
+                             15000);
+    return true;
+}
+
+bool WorkbenchWindow::renameSession(const QString& id, const QString& name) {
+    const QString trimmed = name.trimmed();
+    if (mSessionFolder.isEmpty() || id.isEmpty() || trimmed.isEmpty()) return false;
+    if (id == currentSessionId()) {
+        SessionLabel label = mModel->sessionLabel();
+        label.name = trimmed;
+        mModel->setSessionLabel(label); // saved with the session
+        return true;
+    }
+    try {
+        SessionStore(mSessionFolder).rename(id, trimmed);
+    } catch (const std::exception& e) {
+        reportError(this, tr("Cannot rename the session"), QString::fromStdString(e.what()));
+        return false;
+    }
+    return true;
+}
+
+QString WorkbenchWindow::deleteSession(const QString& id) {
+    if (mSessionFolder.isEmpty() || id.isEmpty()) return {};
+    if (id == currentSessionId()) {
+        statusBar()->showMessage(tr("The session being bred cannot be deleted; resume another one first"), 8000);
+        return {};
+    }
+    try {
+        return SessionStore(mSessionFolder).remove(id);
+    } catch (const std::exception& e) {
+        reportError(this, tr("Cannot delete the session"), QString::fromStdString(e.what()));
+        return {};
+    }
+}
+
+bool WorkbenchWindow::restoreDeletedSession(const QString& trashed) {
+    try {
+        SessionStore(mSessionFolder).restore(trashed);
+    } catch (const std::exception& e) {
+        reportError(this, tr("Cannot bring back the session"), QString::fromStdString(e.what()));
+        return false;
+    }
+    return true;
+}
+
+SessionsDialog* WorkbenchWindow::openSessionsDialog() {
+    if (mSessionFolder.isEmpty()) return nullptr;
+    if (!mSessionsDialog) {
+        mSessionsDialog = new SessionsDialog(this);
+        mSessionsDialog->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    mSessionsDialog->refresh();
+    mSessionsDialog->show();
+    mSessionsDialog->raise();
+    return mSessionsDialog;
+}
+
+void reportBadSession(QWidget* parent, const QString& file, const QString& what) {
+    const QString aside = keepBadSession(file);
+    reportError(parent, WorkbenchWindow::tr("Cannot resume the last session"),
+                WorkbenchWindow::tr("The session could not be read, so it is not resumed.\n\n%1\n\n%2")
+                    .arg(what, aside.isEmpty() ? WorkbenchWindow::tr("The file could not be moved aside.")
+                                               : WorkbenchWindow::tr("The file is kept as %1.").arg(aside)));
 }
 
 void WorkbenchWindow::saveDesign(int index) {

@@ -25,6 +25,8 @@ class QComboBox;
 class QDialog;
 class QLabel;
 class QListWidget;
+class QMenu;
+class QPushButton;
 class QSlider;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -35,6 +37,7 @@ class DesignCell;
 class DesignDialog;
 class RenderService;
 class SavedFileNotice;
+class SessionsDialog;
 
 class WorkbenchWindow : public QMainWindow {
     Q_OBJECT
@@ -96,8 +99,36 @@ public:
     /// Brings a design of any generation back into the grid as a new generation (placed as
     /// PopulationModel::placeDesigns places it), so Back undoes it.
     void bringBackDesign(int generation, int cell);
+    /// Kept sessions (SessionStore.h): the session folder whose store File ▸ Sessions shows
+    /// (set by startSession; empty: no store, and the menu entries are disabled).
+    void setSessionStore(const QString& sessionFolder);
+    QString sessionStoreFolder() const { return mSessionFolder; }
+    /// The id of the session being bred and saved (empty when none is saved).
+    QString currentSessionId() const;
+    /// Switches to a kept session; the current one is saved already and stays kept. A session
+    /// that does not load is reported, moved aside as `.bad`, and the current one goes on.
+    bool resumeKeptSession(const QString& id);
+    /// Renames a kept session (the current one too); errors are reported.
+    bool renameSession(const QString& id, const QString& name);
+    /// Deletes a kept session into the store's trash (not the current one); returns the trashed
+    /// file for restoreDeletedSession(), empty when nothing was deleted (errors are reported).
+    QString deleteSession(const QString& id);
+    /// Brings back a deleted session; errors are reported.
+    bool restoreDeletedSession(const QString& trashed);
+    /// File ▸ Sessions: the kept sessions to resume, rename or delete (not modal, deleted on
+    /// close; one at a time).
+    SessionsDialog* openSessionsDialog();
+    QAction* sessionsAction() const { return mSessionsAction; }
+    QMenu* recentSessionsMenu() const { return mRecentSessions; }
     /// Keeps a cell's design on the favourites shelf.
     bool keepFavourite(int cell);
+    /// Removes a favourite from the shelf (into the trash), saying how to undo it.
+    bool removeFavourite(int favourite);
+    /// Brings back the favourite removed last; false when there is none or it cannot be.
+    bool restoreRemovedFavourite();
+    /// Edit ▸ Restore removed favourite, and the status bar's Undo beside its message.
+    QAction* restoreFavouriteAction() const { return mRestoreFavourite; }
+    QPushButton* undoRemoveButton() const { return mUndoRemove; }
     /// Puts a favourite back into a cell (-1: the selected or first free cell).
     void restoreFavourite(int favourite, int cell = -1);
     /// Whether every cell shows its final image (for screenshots and tests).
@@ -174,6 +205,7 @@ private:
     void showCellMenu(int index, const QPoint& globalPos);
     void showFavouriteMenu(const QPoint& pos);
     void openFileDialog();
+    void fillRecentSessions();
     void saveDesign(int index);
     QString renderCacheKey(int cell) const;
     /// The angle a cell's solid is seen from (while it is being turned, the drag's).
@@ -231,7 +263,16 @@ private:
     std::array<QAction*, 3> mRendererActions{}; ///< by gl::BackendPreference
     QTimer mResizeTimer;
     bool mSaveFailureShown = false;
+    QString mSessionFolder;
+    QAction* mSessionsAction = nullptr;
+    QMenu* mRecentSessions = nullptr;
+    QPointer<SessionsDialog> mSessionsDialog;
+    QAction* mRestoreFavourite = nullptr;
+    QPushButton* mUndoRemove = nullptr;
 };
+
+/// Reports a session file that does not load (once), moving it aside as `.bad` first.
+void reportBadSession(QWidget* parent, const QString& file, const QString& what);
 
 /// The caption a cell shows under a design: its name (a bred design's carries " (gN #K)",
 /// generation N, design K, as the status bar and the lineage count) and how it was made.

@@ -17,6 +17,7 @@
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
 #include "ui/WorkbenchWindow.h"
+#include "WaitFor.h"
 
 #include <QAction>
 #include <QApplication>
@@ -244,7 +245,7 @@ TEST_F(HelpTest, ExportOffersTheDesignsNameInTheLastFolderAndFormat) {
     });
     QSignalSpy finished(dialog, &DesignDialog::exportFinished);
     exportButton->click();
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+    MARBLER_WAIT_EQ(finished.size(), 1, 120000);
     const QString file = other.filePath(QStringLiteral("poster.tif"));
     EXPECT_EQ(offered, QDir(mFiles.path()).filePath(QStringLiteral("Five stones, combed and swirled.tif")));
     EXPECT_EQ(finished.front().at(0).toString(), file);
@@ -271,7 +272,7 @@ TEST_F(HelpTest, F1OpensTheGuideWhichListsEveryShortcutOfTheWindow) {
     EXPECT_EQ(mWindow->guideAction()->shortcut(), QKeySequence(QKeySequence::HelpContents));
     QTest::keyClick(mWindow.get(), Qt::Key_F1);
     QDialog* guide = nullptr;
-    QTRY_VERIFY((guide = mWindow->findChild<QDialog*>(QStringLiteral("guideDialog"))) && guide->isVisible());
+    MARBLER_WAIT((guide = mWindow->findChild<QDialog*>(QStringLiteral("guideDialog"))) && guide->isVisible(), 5000);
     auto* browser = guide->findChild<QTextBrowser*>(QStringLiteral("guideBrowser"));
     ASSERT_NE(browser, nullptr);
     const QString text = browser->toPlainText();
@@ -299,7 +300,7 @@ TEST_F(HelpTest, F1OpensTheGuideWhichListsEveryShortcutOfTheWindow) {
 
     // Built from the actions, so a new one is listed without touching the guide.
     guide->close();
-    QTRY_VERIFY(!mWindow->findChild<QDialog*>(QStringLiteral("guideDialog")));
+    MARBLER_WAIT(!mWindow->findChild<QDialog*>(QStringLiteral("guideDialog")), 5000);
     auto* extra = new QAction(QStringLiteral("Polish the stones"), mWindow.get());
     extra->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key_P));
     QDialog* again = mWindow->showGuide();
@@ -377,13 +378,13 @@ TEST_F(HelpTest, StatusBarSpeaksOfTheTask) {
     ASSERT_NE(task, nullptr);
     // Past the resize debounce, which renders the shown cells anew at their size.
     QTest::qWait(400);
-    QTRY_COMPARE_WITH_TIMEOUT(task->text(), QStringLiteral("Ready"), 120000);
+    MARBLER_WAIT_EQ(task->text(), QStringLiteral("Ready"), 120000);
     model().setSelected(4, true);
     ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Alter));
     EXPECT_EQ(mWindow->statusBar()->currentMessage(), QStringLiteral("Bred generation 2 with Alter"));
     // Eight new designs to render (the parent's image is cached).
     EXPECT_EQ(task->text(), QStringLiteral("Rendering 1 of 8…"));
-    QTRY_COMPARE_WITH_TIMEOUT(task->text(), QStringLiteral("Ready"), 120000);
+    MARBLER_WAIT_EQ(task->text(), QStringLiteral("Ready"), 120000);
     EXPECT_TRUE(mWindow->renderingDone());
     // The generation's summary stays under passing messages.
     auto* generation = mWindow->findChild<QLabel*>(QStringLiteral("generationLabel"));

@@ -11,6 +11,7 @@
 #include "ui/RenderService.h"
 #include "ui/Session.h"
 #include "ui/WorkbenchWindow.h"
+#include "WaitFor.h"
 
 #include <QAction>
 #include <QApplication>

@@ -15,6 +15,7 @@
 #include "ui/Session.h"
 #include "ui/ViewController.h"
 #include "ui/WorkbenchWindow.h"
+#include "WaitFor.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -132,7 +133,7 @@ protected:
         DesignDialog* dialog = mWindow->openDesign(cell);
         if (!dialog) return nullptr;
         if (!QTest::qWaitForWindowExposed(dialog)) return nullptr;
-        [&] { QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000); }();
+        [&] { MARBLER_WAIT(dialog->imageIsFinal(), 120000); }();
         return dialog->imageIsFinal() ? dialog : nullptr;
     }
 
@@ -175,7 +176,7 @@ TEST_F(ViewTest, WheelZoomsAboutThePointerAndRendersTheWindowSharp) {
 
     // The final image is an exact render of that window at the new scale, not the old one
     // enlarged.
-    QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000);
+    MARBLER_WAIT(dialog->imageIsFinal(), 120000);
     ASSERT_TRUE(dialog->imageIsFinal());
     const QImage after = dialog->image();
     RenderSettings settings;
@@ -209,7 +210,7 @@ TEST_F(ViewTest, KeysAndButtonsFitShowOneToOneAndZoom) {
     QTest::keyClick(dialog, Qt::Key_1);
     EXPECT_DOUBLE_EQ(view.scale(), 1.0);
     EXPECT_EQ(dialog->zoomText(), QStringLiteral("100 %"));
-    QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000);
+    MARBLER_WAIT(dialog->imageIsFinal(), 120000);
     // At 1:1 a render is as many pixels as the design units it shows.
     EXPECT_NEAR(regionWidth(*dialog->requestedRegion()), dialog->image().width(), 1e-6);
     QTest::keyClick(dialog, Qt::Key_0);
@@ -242,7 +243,7 @@ TEST_F(ViewTest, DragPansTheView) {
     ASSERT_NE(dialog, nullptr);
     dialog->zoomIn();
     dialog->zoomIn();
-    QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000);
+    MARBLER_WAIT(dialog->imageIsFinal(), 120000);
     const double ratio = dialog->canvas()->devicePixelRatioF();
     const QPointF centre = dialog->viewController().centre();
     const Region region = *dialog->requestedRegion();
@@ -259,7 +260,7 @@ TEST_F(ViewTest, DragPansTheView) {
     const Region panned = *dialog->requestedRegion();
     EXPECT_NE(panned.x0, region.x0);
     EXPECT_NEAR(regionWidth(panned), regionWidth(region), 2.0 / dialog->viewController().scale());
-    QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000);
+    MARBLER_WAIT(dialog->imageIsFinal(), 120000);
     dialog->close();
 }
 
@@ -326,13 +327,13 @@ TEST_F(ViewTest, LargeViewTurnsTheDesignAndZoomsTheObject) {
     EXPECT_NEAR(dialog->objectZoom(), std::sqrt(2.0), 1e-9);
     // With no GL here the middle cross-section stands in for the object, magnified alike:
     // its final image is the middle half of the fitted one, rendered anew.
-    QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000);
+    MARBLER_WAIT(dialog->imageIsFinal(), 120000);
     ASSERT_TRUE(dialog->imageIsFinal());
     const QImage magnified = dialog->image();
     QTest::keyClick(dialog, Qt::Key_0);
     EXPECT_DOUBLE_EQ(dialog->objectZoom(), 1.0);
     EXPECT_FALSE(dialog->findChild<QToolButton*>(QStringLiteral("zoomOneToOne"))->isEnabled());
-    QTRY_VERIFY_WITH_TIMEOUT(dialog->imageIsFinal(), 120000);
+    MARBLER_WAIT(dialog->imageIsFinal(), 120000);
     const Genome& g = *model().cell(6);
     RenderSettings settings;
     settings.width = magnified.width();

@@ -16,9 +16,11 @@
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/Session.h"
+#include "ui/SessionStore.h"
 #include "ui/StartDialog.h"
 #include "ui/Workbench.h"
 #include "ui/WorkbenchWindow.h"
+#include "WaitFor.h"
 
 #include <QAction>
 #include <QApplication>
@@ -517,7 +519,7 @@ TEST_F(WorkbenchTest, LargeDesignExportsImageAtTheChosenSize) {
     ASSERT_TRUE(dialog->exportTo(file, QSize(96, 60), QStringLiteral("none"), 150.0));
     EXPECT_TRUE(dialog->isExporting());
     EXPECT_FALSE(dialog->exportTo(file, QSize(8, 8))) << "one export at a time";
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+    MARBLER_WAIT_EQ(finished.size(), 1, 120000);
     EXPECT_EQ(finished.front().at(0).toString(), file);
     EXPECT_TRUE(finished.front().at(1).toBool()) << finished.front().at(2).toString().toStdString();
     EXPECT_FALSE(dialog->isExporting());
@@ -537,7 +539,7 @@ TEST_F(WorkbenchTest, CancelledExportLeavesNoFile) {
     QSignalSpy finished(dialog, &DesignDialog::exportFinished);
     ASSERT_TRUE(dialog->exportTo(dir.filePath(QStringLiteral("big.png")), QSize(6000, 6000), QStringLiteral("grid4")));
     dialog->cancelExport();
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+    MARBLER_WAIT_EQ(finished.size(), 1, 120000);
     EXPECT_FALSE(finished.front().at(1).toBool());
     EXPECT_TRUE(finished.front().at(2).toString().isEmpty()) << "a cancel is no failure";
     EXPECT_TRUE(errors.messages.isEmpty());
@@ -614,7 +616,7 @@ TEST_F(WorkbenchTest, ExportSettingsTabOrderReachesEveryField) {
     ASSERT_TRUE(QTest::qWaitForWindowActive(&dialog));
     QWidget* width = dialog.findChild<QWidget*>(QStringLiteral("exportWidth"));
     width->setFocus(Qt::TabFocusReason);
-    QTRY_VERIFY(width->hasFocus());
+    MARBLER_WAIT(width->hasFocus(), 5000);
     QStringList reached;
     for (int i = 0; i < 8; ++i) {
         for (QWidget* w = QApplication::focusWidget(); w; w = w->parentWidget())
@@ -647,7 +649,7 @@ TEST_F(WorkbenchTest, ExportErrorIsNeverCoveredByAStaleProgressBox) {
     auto* box = dialog->findChild<QProgressDialog*>(QStringLiteral("exportProgress"));
     ASSERT_NE(box, nullptr);
     box->show();
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    MARBLER_WAIT_EQ(finished.size(), 1, 60000);
     setErrorHandler({});
     EXPECT_EQ(errorCount, 1);
     EXPECT_FALSE(finished.front().at(2).toString().isEmpty());
@@ -664,7 +666,7 @@ TEST_F(WorkbenchTest, ArrowsMoveFocusSpaceSelectsEnterOpens) {
     mWindow->activateWindow();
     ASSERT_TRUE(QTest::qWaitForWindowActive(mWindow.get()));
     mWindow->cell(4)->setFocus(Qt::TabFocusReason);
-    QTRY_VERIFY(mWindow->cell(4)->hasFocus());
+    MARBLER_WAIT(mWindow->cell(4)->hasFocus(), 5000);
     const auto press = [](int key) { QTest::keyClick(QApplication::focusWidget(), Qt::Key(key)); };
     press(Qt::Key_Right);
     EXPECT_TRUE(mWindow->cell(5)->hasFocus());
@@ -846,7 +848,13 @@ protected:
         qunsetenv("MARBLER_FAVOURITES_DIR");
         StartChoiceTest::TearDown();
     }
-    QString sessionFile() const { return sessionFilePath(mSession.path()); }
+    /// The folder the kept sessions are in.
+    QString sessionsFolder() const { return SessionStore(mSession.path()).folder(); }
+    /// The last session's file: the kept session changed most recently.
+    QString sessionFile() const {
+        const auto kept = SessionStore(mSession.path()).list();
+        return kept.empty() ? QString() : kept.front().file;
+    }
 
     QTemporaryDir mFavourites;
     QTemporaryDir mSession;
@@ -900,7 +908,7 @@ TEST_F(SessionTest, ResumeBringsBackGenerationsCurrentSeedAndHistory) {
     EXPECT_EQ(m.current().description, QStringLiteral("Recombine of 2 parents"));
     m.goTo(0);
     EXPECT_EQ(m.current().description, QStringLiteral("New random population"));
-    EXPECT_EQ(folderEntries(mSession.path()), QStringList{QStringLiteral("session.json")})
+    EXPECT_EQ(folderEntries(sessionsFolder()), QStringList{QFileInfo(m.sessionFile()).fileName()})
         << "resuming keeps one session file";
 }
 
@@ -923,24 +931,26 @@ TEST_F(SessionTest, SolidSessionResumesItsKindAndObject) {
     EXPECT_EQ(window.model()->populationDimension(), 3);
 }
 
-TEST_F(SessionTest, NotResumingKeepsTheOldSessionAStepBehind) {
+TEST_F(SessionTest, NotResumingKeepsTheOldSession) {
     answer = StartChoice{2, QStringLiteral("vase")};
     std::vector<std::string> first;
+    QString firstFile;
     {
         WorkbenchWindow window(&service);
         startSession(window, options);
         first = snapshot(*window.model());
+        firstFile = window.model()->sessionFile();
     }
     answer = StartChoice{3, QStringLiteral("vase")}; // "breed solid" instead of resuming
     WorkbenchWindow window(&service);
     startSession(window, options);
     EXPECT_EQ(window.model()->cell(0)->dimension, 3);
-    EXPECT_EQ(folderEntries(mSession.path()),
-              (QStringList{QStringLiteral("session.json"), QStringLiteral("session.previous.json")}));
-    const SavedSession previous = loadSession(mSession.filePath(QStringLiteral("session.previous.json")));
+    EXPECT_NE(window.model()->sessionFile(), firstFile) << "a new session has a file of its own";
+    EXPECT_EQ(folderEntries(sessionsFolder()).size(), 2) << folderEntries(sessionsFolder()).join(' ').toStdString();
+    const SavedSession previous = loadSession(firstFile);
     ASSERT_EQ(previous.history.size(), 1u);
     EXPECT_EQ(serializeGenome(*previous.history[0].cells[0]), first[0]);
-    EXPECT_EQ(loadSession(sessionFile()).dimension, 3);
+    EXPECT_EQ(loadSession(window.model()->sessionFile()).dimension, 3);
 
     // A forced kind (--solid, --flat) starts a new session without offering the old one.
     const int askedBefore = asked;
@@ -950,6 +960,7 @@ TEST_F(SessionTest, NotResumingKeepsTheOldSessionAStepBehind) {
     startSession(forced, flat);
     EXPECT_EQ(asked, askedBefore);
     EXPECT_EQ(forced.model()->cell(0)->dimension, 2);
+    EXPECT_EQ(SessionStore(mSession.path()).list().size(), 3u) << "every session is kept";
 }
 
 TEST_F(SessionTest, EveryChangeIsSavedAtomically) {
@@ -959,13 +970,14 @@ TEST_F(SessionTest, EveryChangeIsSavedAtomically) {
     PopulationModel& m = *window.model();
     // Saved state equals the model: generations, current, seed.
     const auto expectSaved = [&](const char* after) {
+        ASSERT_EQ(m.sessionFile(), sessionFile()) << after << ": the session being bred is the last one";
         const SavedSession saved = loadSession(sessionFile());
         PopulationModel copy;
         copy.restoreSession(saved);
         EXPECT_EQ(historySnapshot(copy), historySnapshot(m)) << after;
         EXPECT_EQ(saved.current, m.currentIndex()) << after;
         EXPECT_EQ(saved.seed, m.sessionSeed()) << after;
-        EXPECT_EQ(folderEntries(mSession.path()), QStringList{QStringLiteral("session.json")})
+        EXPECT_EQ(folderEntries(sessionsFolder()), QStringList{QFileInfo(sessionFile()).fileName()})
             << after << ": no temporary file is left behind";
     };
     startSession(window, options);
@@ -1005,13 +1017,14 @@ TEST_F(SessionTest, CorruptSessionIsReportedKeptAsBadAndAFreshOneStarts) {
         startSession(window, options);
     }
     // Half a session, as a crash in a non-atomic writer would leave it.
-    QFile file(sessionFile());
+    const QString damaged = sessionFile();
+    QFile file(damaged);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     const QByteArray whole = file.readAll();
     file.close();
     const QByteArray half = whole.left(whole.size() / 2);
     {
-        QFile out(sessionFile());
+        QFile out(damaged);
         ASSERT_TRUE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
         out.write(half);
     }
@@ -1022,33 +1035,38 @@ TEST_F(SessionTest, CorruptSessionIsReportedKeptAsBadAndAFreshOneStarts) {
     startSession(window, options);
     ASSERT_EQ(errors.messages.size(), 1) << "reported once";
     EXPECT_TRUE(errors.messages.front().startsWith(QStringLiteral("Cannot resume the last session")));
-    EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("session.json.bad")));
+    EXPECT_TRUE(errors.messages.front().contains(QFileInfo(damaged).fileName() + QStringLiteral(".bad")))
+        << errors.messages.front().toStdString();
     EXPECT_EQ(asked, askedBefore + 1);
     EXPECT_EQ(lastDefaults.resumeGeneration, 0) << "nothing to resume offered";
+    EXPECT_TRUE(lastDefaults.otherSessions.isEmpty()) << "a session moved aside is not listed";
     EXPECT_EQ(window.model()->history().size(), 1u) << "a fresh session";
-    QFile bad(sessionFile() + QStringLiteral(".bad"));
+    QFile bad(damaged + QStringLiteral(".bad"));
     ASSERT_TRUE(bad.open(QIODevice::ReadOnly)) << "the bad file is kept aside";
     EXPECT_EQ(bad.readAll(), half);
+    EXPECT_FALSE(QFileInfo::exists(damaged));
+    EXPECT_EQ(window.model()->sessionFile(), sessionFile());
     EXPECT_NO_THROW(loadSession(sessionFile())) << "the fresh session is saved";
 
     // Valid JSON holding a broken design: also kept aside (beside the first), named.
-    std::string broken = whole.toStdString();
+    const QString fresh = sessionFile();
+    std::string broken = test::readFile(fresh.toStdString());
     const auto pos = broken.find("\"format\":\"marbler-genome\",\"version\":1,\"dimension\":2");
     ASSERT_NE(pos, std::string::npos) << broken.substr(0, 400);
     broken.replace(pos, 51, "\"format\":\"marbler-genome\",\"version\":1,\"dimension\":7");
-    {
-        QFile out(sessionFile());
-        ASSERT_TRUE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
-        out.write(QByteArray::fromStdString(broken));
-    }
-    EXPECT_THROW(loadSession(sessionFile()), InputError);
+    test::writeFile(fresh.toStdString(), broken);
+    EXPECT_THROW(loadSession(fresh), InputError);
     WorkbenchWindow again(&service);
     startSession(again, options);
     ASSERT_EQ(errors.messages.size(), 2);
-    EXPECT_TRUE(errors.messages.back().contains(QStringLiteral("session.json.2.bad")));
-    EXPECT_TRUE(QFileInfo::exists(sessionFile() + QStringLiteral(".2.bad")));
-    EXPECT_TRUE(QFileInfo::exists(sessionFile() + QStringLiteral(".bad")));
+    EXPECT_TRUE(errors.messages.back().contains(QFileInfo(fresh).fileName() + QStringLiteral(".bad")));
+    EXPECT_TRUE(QFileInfo::exists(fresh + QStringLiteral(".bad")));
+    EXPECT_TRUE(QFileInfo::exists(damaged + QStringLiteral(".bad")));
     EXPECT_EQ(again.model()->history().size(), 1u);
+
+    // keepBadSession never overwrites an earlier .bad of the same name.
+    test::writeFile(fresh.toStdString(), "{");
+    EXPECT_EQ(keepBadSession(fresh), fresh + QStringLiteral(".2.bad"));
 }
 
 TEST_F(SessionTest, BadSessionDocumentsThrowInputErrors) {
@@ -1187,7 +1205,7 @@ TEST(RenderServiceTest, GuiThreadRunsWhileALargeRenderIsInFlight) {
     QTimer timer;
     QObject::connect(&timer, &QTimer::timeout, [&] { ++ticks; });
     timer.start(0);
-    QTRY_VERIFY_WITH_TIMEOUT(postedRan && ticks >= 50 && previews >= 1, 120000);
+    MARBLER_WAIT(postedRan && ticks >= 50 && previews >= 1, 120000);
     EXPECT_FALSE(finalBeforePosted);
     EXPECT_FALSE(finalArrived) << "the large final pass is still rendering while the GUI thread runs";
     EXPECT_FALSE(service.idle());
