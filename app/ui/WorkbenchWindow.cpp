@@ -168,7 +168,8 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     mUndoRemove->setObjectName(QStringLiteral("undoRemoveFavourite"));
     mUndoRemove->setToolTip(tr("Put the removed favourite back (%1)")
                                 .arg(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R).toString(QKeySequence::NativeText)));
-    statusBar()->insertPermanentWidget(0, mUndoRemove);
+    // The first of the permanent widgets (index 0 is the generation summary), left of the rest.
+    statusBar()->insertPermanentWidget(1, mUndoRemove);
     mUndoRemove->hide();
     connect(mUndoRemove, &QPushButton::clicked, this, [this] { restoreRemovedFavourite(); });
     connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& message) {
