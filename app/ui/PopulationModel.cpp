@@ -465,6 +465,12 @@ void numberGeneration(std::vector<Generation>& history, std::size_t k) {
     g.branch = branches + 1;
 }
 
+QString LineageInfo::madeBy() const {
+    if (op.isEmpty()) return PopulationModel::tr("(not bred)");
+    const QString label = operatorLabel(op);
+    return varied ? PopulationModel::tr("%1, varied").arg(label) : label;
+}
+
 LineageInfo lineageOf(const Genome& genome) {
     LineageInfo info;
     const auto& meta = genome.meta;

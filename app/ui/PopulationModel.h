@@ -260,6 +260,12 @@ struct LineageInfo {
     int generation = 0;
     QString name;          ///< meta.name when set
     bool varied = false;   ///< a gentle variation of a result already in its generation
+
+    /// The name the UI shows: meta.name, else the first 8 characters of the id.
+    QString displayName() const { return name.isEmpty() ? id.left(8) : name; }
+    /// How the design was made, in the window's words ("Change initial state", never "reinit";
+    /// "Alter, varied"; "(not bred)").
+    QString madeBy() const;
 };
 LineageInfo lineageOf(const Genome& genome);
 

@@ -10,8 +10,6 @@
 #include "ui/OpenPlacement.h"
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
-#include "ui/SessionStore.h"
-#include "ui/SessionsDialog.h"
 #include "ui/StartDialog.h"
 #include "ui/Trash.h"
 
@@ -34,7 +32,6 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMimeData>
-#include <QPainter>
 #include <QPushButton>
 #include <QRandomGenerator>
 #include <QScrollBar>
@@ -56,18 +53,7 @@ namespace {
 /// Render keys: the grid uses 0..8, favourite thumbnails start here, lineage thumbnails at
 /// LineageKeyBase (the queue renders lower keys first, so the grid comes before thumbnails).
 constexpr std::uint64_t FavouriteKeyBase = 100;
-constexpr std::uint64_t LineageKeyBase = std::uint64_t(1) << 32;
 constexpr int ThumbnailSide = 96;
-/// The lineage's icons: a design's thumbnail, and a generation's mosaic of nine (tiles of 14
-/// pixels with 1-pixel gaps): small enough to render many, big enough to tell inks apart.
-constexpr int LineageIconSide = 44;
-
-/// Lineage thumbnails get keys of their own, unique in the process, so windows sharing one
-/// render service never take each other's results.
-std::uint64_t nextLineageKey() {
-    static std::uint64_t next = LineageKeyBase;
-    return next++;
-}
 
 /// The favourites list hands a dragged favourite over as genome JSON, which a cell accepts.
 class FavouritesList : public QListWidget {
@@ -87,15 +73,6 @@ protected:
         return mime;
     }
 };
-
-QString shortId(const QString& id) { return id.left(8); }
-
-/// How a design was made, in the window's words ("Change initial state", never "reinit").
-QString madeBy(const LineageInfo& info) {
-    if (info.op.isEmpty()) return WorkbenchWindow::tr("(not bred)");
-    const QString label = operatorLabel(info.op);
-    return info.varied ? WorkbenchWindow::tr("%1, varied").arg(label) : label;
-}
 
 
 } // namespace
@@ -126,7 +103,7 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
             try {
                 const Genome genome = parseGenome(json.toStdString(), "dropped design");
                 const LineageInfo info = lineageOf(genome);
-                placeOpened({genome}, {info.name.isEmpty() ? shortId(info.id) : info.name}, index,
+                placeOpened({genome}, {info.displayName()}, index,
                             tr("Brought back a favourite"));
             } catch (const Error& e) {
                 reportError(this, tr("Cannot use the dropped design"), QString::fromStdString(e.what()));
@@ -683,236 +660,6 @@ void WorkbenchWindow::updateActions() {
                                  .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
 }
 
-void WorkbenchWindow::updateLineage() {
-    mLineageDesignItems.clear();
-    mLineageGenerationItems.clear();
-    mLineageTree->clear();
-    const int current = mModel->currentIndex();
-    auto* designs = new QTreeWidgetItem(mLineageTree, {tr("Current designs")});
-    for (int i = 0; i < CellCount && !mModel->isEmptyWorkbench(); ++i)
-        if (mModel->cell(i)) addLineageDesign(designs, current, i);
-    auto* generations = new QTreeWidgetItem(mLineageTree, {tr("Generations")});
-    designs->setExpanded(!mCurrentDesignsFolded);
-    generations->setExpanded(true);
-    // The empty placeholder before the first designs is no generation.
-    if (mModel->isEmptyWorkbench()) return;
-
-    const auto& history = mModel->history();
-    std::vector<std::vector<int>> children(history.size());
-    std::vector<int> roots;
-    for (std::size_t k = 0; k < history.size(); ++k) {
-        const int parent = history[k].parent;
-        (parent >= 0 ? children[std::size_t(parent)] : roots).push_back(int(k));
-    }
-    QTreeWidgetItem* currentItem = nullptr;
-    const auto addGeneration = [&](QTreeWidgetItem* container, int k) {
-        const Generation& g = history[std::size_t(k)];
-        QStringList parents;
-        for (int i : g.parentCells) parents << tr("design %1").arg(i + 1);
-        auto* item = new QTreeWidgetItem(container, {tr("Generation %1").arg(mModel->generationLabel(k)), g.description,
-                                                     parents.join(QStringLiteral(", ")), QString()});
-        item->setData(0, LineageGenerationRole, k);
-        for (const auto& cell : g.cells)
-            if (cell) mLineageGenerationItems.insert(lineageThumbnailKey(*cell), item);
-        item->setIcon(0, lineageMosaic(k));
-        // Designs are added when the generation is first expanded.
-        item->setChildIndicatorPolicy(QTreeWidgetItem::ShowIndicator);
-        if (mExpandedGenerations.contains(k)) item->setExpanded(true);
-        if (k == current) {
-            currentItem = item;
-            QFont f = item->font(0);
-            f.setBold(true);
-            QColor mark = palette().color(QPalette::Highlight);
-            mark.setAlpha(60);
-            for (int c = 0; c < 4; ++c) {
-                item->setFont(c, f);
-                item->setBackground(c, mark);
-            }
-            item->setToolTip(0, tr("The current generation: its designs are in the grid"));
-        }
-    };
-    // A branch's generations in order, each followed by the branches that grew from it, in
-    // the order they were started; the generation's first child continues its branch.
-    const auto addBranch = [&](auto& self, QTreeWidgetItem* container, int first) -> void {
-        for (int k = first; k >= 0;) {
-            addGeneration(container, k);
-            int next = -1;
-            for (int child : children[std::size_t(k)]) {
-                if (history[std::size_t(child)].branch == history[std::size_t(k)].branch) {
-                    next = child;
-                    continue;
-                }
-                const int branch = history[std::size_t(child)].branch;
-                auto* branchItem = new QTreeWidgetItem(
-                    container, {tr("Branch %1").arg(branch), tr("from generation %1").arg(mModel->generationLabel(k))});
-                branchItem->setData(0, LineageBranchRole, branch);
-                self(self, branchItem, child);
-                branchItem->setExpanded(!mCollapsedBranches.contains(branch));
-            }
-            k = next;
-        }
-    };
-    for (int root : roots) {
-        if (root == roots.front()) {
-            addBranch(addBranch, generations, root);
-            continue;
-        }
-        const int branch = history[std::size_t(root)].branch;
-        auto* branchItem = new QTreeWidgetItem(generations, {tr("Branch %1").arg(branch), tr("a new start")});
-        branchItem->setData(0, LineageBranchRole, branch);
-        addBranch(addBranch, branchItem, root);
-        branchItem->setExpanded(!mCollapsedBranches.contains(branch));
-    }
-    if (currentItem) {
-        for (QTreeWidgetItem* up = currentItem->parent(); up; up = up->parent()) up->setExpanded(true);
-        mLineageTree->scrollToItem(currentItem);
-    }
-    mLineageThumbnailTimer.start();
-}
-
-void WorkbenchWindow::populateLineageGeneration(QTreeWidgetItem* item) {
-    if (item->childCount() > 0) return;
-    const int generation = item->data(0, LineageGenerationRole).toInt();
-    const auto& history = mModel->history();
-    if (generation < 0 || generation >= int(history.size())) return;
-    for (int i = 0; i < CellCount; ++i)
-        if (history[std::size_t(generation)].cells[std::size_t(i)]) addLineageDesign(item, generation, i);
-}
-
-void WorkbenchWindow::addLineageDesign(QTreeWidgetItem* parent, int generation, int cell) {
-    const Genome& g = *mModel->history()[std::size_t(generation)].cells[std::size_t(cell)];
-    const LineageInfo info = lineageOf(g);
-    QStringList parents;
-    for (const QString& p : info.parents) parents << shortId(p);
-    auto* item = new QTreeWidgetItem(parent, {tr("Design %1: %2").arg(cell + 1).arg(info.name.isEmpty() ? shortId(info.id) : info.name),
-                                              madeBy(info), parents.join(QStringLiteral(", ")),
-                                              info.op.isEmpty() ? QString() : QString::number(info.generation)});
-    item->setToolTip(0, info.id);
-    item->setToolTip(2, info.parents.join(QLatin1Char('\n')));
-    item->setData(0, LineageGenerationRole, generation);
-    item->setData(0, LineageCellRole, cell);
-    const QString key = lineageThumbnailKey(g);
-    item->setIcon(0, lineageIcon(key));
-    mLineageDesignItems.insert(key, item);
-}
-
-QString WorkbenchWindow::lineageThumbnailKey(const Genome& genome) const {
-    return QString::fromStdString(genomeId(genome)) + QLatin1Char('/')
-         + (genome.dimension == 3 ? mMesh->currentText() : QString());
-}
-
-bool WorkbenchWindow::hasLineageThumbnail(const Genome& genome) const {
-    return mLineageThumbnails.contains(lineageThumbnailKey(genome));
-}
-
-QPixmap WorkbenchWindow::lineageIcon(const QString& key) const {
-    if (const QImage* image = mLineageThumbnails.object(key)) return QPixmap::fromImage(*image);
-    QPixmap blank(LineageIconSide, LineageIconSide);
-    blank.fill(palette().color(QPalette::Mid));
-    return blank;
-}
-
-QPixmap WorkbenchWindow::lineageMosaic(int generation) const {
-    QPixmap mosaic(LineageIconSide, LineageIconSide);
-    mosaic.fill(Qt::transparent);
-    QPainter painter(&mosaic);
-    painter.setRenderHint(QPainter::SmoothPixmapTransform);
-    const int tile = (LineageIconSide - 2) / 3;
-    const auto& cells = mModel->history()[std::size_t(generation)].cells;
-    for (int i = 0; i < CellCount; ++i) {
-        const auto& cell = cells[std::size_t(i)];
-        if (!cell) continue;
-        const QRect rect((i % 3) * (tile + 1), (i / 3) * (tile + 1), tile, tile);
-        if (const QImage* image = mLineageThumbnails.object(lineageThumbnailKey(*cell)))
-            painter.drawImage(rect, *image);
-        else
-            painter.fillRect(rect, palette().color(QPalette::Mid));
-    }
-    return mosaic;
-}
-
-void WorkbenchWindow::requestLineageThumbnails() {
-    if (!mLineageTree->isVisible() || mModel->isEmptyWorkbench()) return;
-    const int bottom = mLineageTree->viewport()->height();
-    const auto& history = mModel->history();
-    // The rows in view, top to bottom (itemBelow skips what is folded away).
-    for (QTreeWidgetItem* item = mLineageTree->itemAt(QPoint(0, 0));
-         item && mLineageTree->visualItemRect(item).top() < bottom; item = mLineageTree->itemBelow(item)) {
-        const QVariant generation = item->data(0, LineageGenerationRole);
-        if (!generation.isValid()) continue;
-        const auto& cells = history[std::size_t(generation.toInt())].cells;
-        const QVariant cell = item->data(0, LineageCellRole);
-        for (int i = 0; i < CellCount; ++i)
-            if (cells[std::size_t(i)] && (!cell.isValid() || cell.toInt() == i)) requestLineageThumbnail(*cells[std::size_t(i)]);
-    }
-}
-
-void WorkbenchWindow::requestLineageThumbnail(const Genome& genome) {
-    const QString key = lineageThumbnailKey(genome);
-    if (mLineagePending.contains(key) || mLineageThumbnails.contains(key)) return;
-    RenderRequest request;
-    request.genome = genome;
-    request.size = QSize(LineageIconSide, LineageIconSide);
-    request.mesh = mMesh->currentText();
-    const std::uint64_t renderKey = nextLineageKey();
-    mLineageRequests.insert(renderKey, key);
-    mLineagePending.insert(key);
-    mRenderer->request(renderKey, std::move(request));
-}
-
-void WorkbenchWindow::onLineageThumbnail(std::uint64_t key, const QImage& image) {
-    const QString thumbnail = mLineageRequests.take(key);
-    mLineagePending.remove(thumbnail);
-    if (thumbnail.isEmpty()) return;
-    // A failed render gets a dark blank, so it is not asked for again and again.
-    QImage shown = image;
-    if (shown.isNull()) {
-        shown = QImage(LineageIconSide, LineageIconSide, QImage::Format_RGB888);
-        shown.fill(palette().color(QPalette::Dark));
-    }
-    mLineageThumbnails.insert(thumbnail, new QImage(shown));
-    const QPixmap icon = lineageIcon(thumbnail);
-    for (QTreeWidgetItem* item : mLineageDesignItems.values(thumbnail)) item->setIcon(0, icon);
-    for (QTreeWidgetItem* item : mLineageGenerationItems.values(thumbnail))
-        item->setIcon(0, lineageMosaic(item->data(0, LineageGenerationRole).toInt()));
-}
-
-void WorkbenchWindow::selectLineageDesign(int generation, int cell) {
-    const auto& history = mModel->history();
-    if (generation < 0 || generation >= int(history.size())) return;
-    if (generation != mModel->currentIndex()) mModel->goTo(generation);
-    mModel->setSelected(cell, true);
-}
-
-void WorkbenchWindow::onLineageDoubleClicked(QTreeWidgetItem* item) {
-    mLineageClickTimer.stop();
-    const QVariant generation = item->data(0, LineageGenerationRole);
-    if (!generation.isValid()) return;
-    const int index = generation.toInt();
-    const QVariant cell = item->data(0, LineageCellRole);
-    // Changing the generation rebuilds the tree, which must not happen while the view is
-    // still handling the double-click on one of its items.
-    QTimer::singleShot(0, this, [this, index, cell] {
-        if (!cell.isValid())
-            mModel->goTo(index);
-        else if (index == mModel->currentIndex())
-            openDesign(cell.toInt());
-        else
-            bringBackDesign(index, cell.toInt());
-    });
-}
-
-void WorkbenchWindow::bringBackDesign(int generation, int cell) {
-    const auto& history = mModel->history();
-    if (generation < 0 || generation >= int(history.size()) || cell < 0 || cell >= CellCount) return;
-    const auto& design = history[std::size_t(generation)].cells[std::size_t(cell)];
-    if (!design) return;
-    const QString from = tr("design %1 of generation %2").arg(cell + 1).arg(mModel->generationLabel(generation));
-    const std::vector<int> used = mModel->placeDesigns({*design}, tr("Brought back %1").arg(from));
-    if (!used.empty())
-        statusBar()->showMessage(tr("Brought back %1 into design %2").arg(from).arg(used.front() + 1), 5000);
-}
-
 void WorkbenchWindow::updateFavourites() {
     mRestoreFavourite->setEnabled(!mModel->removedFavourites().isEmpty());
     if (mModel->removedFavourites().isEmpty()) mUndoRemove->hide();
@@ -923,7 +670,7 @@ void WorkbenchWindow::updateFavourites() {
     placeholder.fill(palette().color(QPalette::Mid));
     for (std::size_t i = 0; i < favourites.size(); ++i) {
         const LineageInfo info = lineageOf(favourites[i].genome);
-        auto* item = new QListWidgetItem(info.name.isEmpty() ? shortId(info.id) : info.name, mFavouritesList);
+        auto* item = new QListWidgetItem(info.displayName(), mFavouritesList);
         item->setToolTip(QStringLiteral("%1\n%2").arg(item->text(), favourites[i].file));
         item->setIcon(placeholder);
         RenderRequest request;
@@ -1244,7 +991,7 @@ void WorkbenchWindow::restoreFavourite(int favourite, int index) {
     if (favourite < 0 || favourite >= int(favourites.size())) return;
     const Genome genome = favourites[std::size_t(favourite)].genome;
     const LineageInfo info = lineageOf(genome);
-    placeOpened({genome}, {info.name.isEmpty() ? shortId(info.id) : info.name}, index, tr("Brought back a favourite"));
+    placeOpened({genome}, {info.displayName()}, index, tr("Brought back a favourite"));
 }
 
 void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
@@ -1304,7 +1051,7 @@ bool WorkbenchWindow::removeFavourite(int favourite) {
     const auto& favourites = mModel->favourites();
     if (favourite < 0 || favourite >= int(favourites.size())) return false;
     const LineageInfo info = lineageOf(favourites[std::size_t(favourite)].genome);
-    const QString name = info.name.isEmpty() ? shortId(info.id) : info.name;
+    const QString name = info.displayName();
     try {
         mModel->removeFavourite(favourite);
     } catch (const Error& e) {
@@ -1333,131 +1080,10 @@ bool WorkbenchWindow::restoreRemovedFavourite() {
     for (const Favourite& f : mModel->favourites())
         if (QFileInfo(f.file) == QFileInfo(back)) {
             const LineageInfo info = lineageOf(f.genome);
-            name = info.name.isEmpty() ? shortId(info.id) : info.name;
+            name = info.displayName();
         }
     statusBar()->showMessage(tr("“%1” is back on the favourites shelf").arg(name), 5000);
     return true;
-}
-
-void WorkbenchWindow::setSessionStore(const QString& sessionFolder) {
-    mSessionFolder = sessionFolder;
-    mSessionsAction->setEnabled(!sessionFolder.isEmpty());
-    mRecentSessions->setEnabled(!sessionFolder.isEmpty());
-}
-
-QString WorkbenchWindow::currentSessionId() const {
-    const QString file = mModel->sessionFile();
-    return file.isEmpty() ? QString() : QFileInfo(file).completeBaseName();
-}
-
-void WorkbenchWindow::fillRecentSessions() {
-    mRecentSessions->clear();
-    if (mSessionFolder.isEmpty()) return;
-    const QString current = currentSessionId();
-    int shown = 0;
-    for (const KeptSession& session : SessionStore(mSessionFolder).list()) {
-        if (session.id == current) continue;
-        if (++shown > 9) break;
-        QAction* action = mRecentSessions->addAction(
-            QStringLiteral("&%1 %2 — %3").arg(shown).arg(session.name, describeSession(session)),
-            this, [this, id = session.id] { resumeKeptSession(id); });
-        action->setData(session.id);
-    }
-    if (shown == 0) mRecentSessions->addAction(tr("No other sessions"))->setEnabled(false);
-    mRecentSessions->addSeparator();
-    mRecentSessions->addAction(mSessionsAction);
-}
-
-bool WorkbenchWindow::resumeKeptSession(const QString& id) {
-    if (mSessionFolder.isEmpty() || id.isEmpty() || id == currentSessionId()) return false;
-    const std::optional<KeptSession> kept = SessionStore(mSessionFolder).find(id);
-    if (!kept) {
-        reportError(this, tr("Cannot resume the session"), tr("There is no kept session %1 any more.").arg(id));
-        return false;
-    }
-    SavedSession saved;
-    try {
-        saved = loadSession(kept->file);
-    } catch (const std::exception& e) {
-        reportBadSession(this, kept->file, QString::fromStdString(e.what()));
-        return false;
-    }
-    // The current session was saved with its last change, so switching loses nothing; no file
-    // is set while the other one comes in, so nothing is written over either.
-    const QString previous = mModel->sessionLabel().name;
-    mModel->setSessionFile({});
-    resumeSession(std::move(saved));
-    mModel->setSessionFile(kept->file);
-    statusBar()->showMessage(previous.isEmpty()
-                                 ? tr("Resumed “%1” at generation %2").arg(kept->name).arg(mModel->generationLabel(mModel->currentIndex()))
-                                 : tr("Resumed “%1” at generation %2; “%3” is kept under File ▸ Sessions")
-                                       .arg(kept->name)
-                                       .arg(mModel->generationLabel(mModel->currentIndex()))
-                                       .arg(previous),
-                             15000);
-    return true;
-}
-
-bool WorkbenchWindow::renameSession(const QString& id, const QString& name) {
-    const QString trimmed = name.trimmed();
-    if (mSessionFolder.isEmpty() || id.isEmpty() || trimmed.isEmpty()) return false;
-    if (id == currentSessionId()) {
-        SessionLabel label = mModel->sessionLabel();
-        label.name = trimmed;
-        mModel->setSessionLabel(label); // saved with the session
-        return true;
-    }
-    try {
-        SessionStore(mSessionFolder).rename(id, trimmed);
-    } catch (const std::exception& e) {
-        reportError(this, tr("Cannot rename the session"), QString::fromStdString(e.what()));
-        return false;
-    }
-    return true;
-}
-
-QString WorkbenchWindow::deleteSession(const QString& id) {
-    if (mSessionFolder.isEmpty() || id.isEmpty()) return {};
-    if (id == currentSessionId()) {
-        statusBar()->showMessage(tr("The session being bred cannot be deleted; resume another one first"), 8000);
-        return {};
-    }
-    try {
-        return SessionStore(mSessionFolder).remove(id);
-    } catch (const std::exception& e) {
-        reportError(this, tr("Cannot delete the session"), QString::fromStdString(e.what()));
-        return {};
-    }
-}
-
-bool WorkbenchWindow::restoreDeletedSession(const QString& trashed) {
-    try {
-        SessionStore(mSessionFolder).restore(trashed);
-    } catch (const std::exception& e) {
-        reportError(this, tr("Cannot bring back the session"), QString::fromStdString(e.what()));
-        return false;
-    }
-    return true;
-}
-
-SessionsDialog* WorkbenchWindow::openSessionsDialog() {
-    if (mSessionFolder.isEmpty()) return nullptr;
-    if (!mSessionsDialog) {
-        mSessionsDialog = new SessionsDialog(this);
-        mSessionsDialog->setAttribute(Qt::WA_DeleteOnClose);
-    }
-    mSessionsDialog->refresh();
-    mSessionsDialog->show();
-    mSessionsDialog->raise();
-    return mSessionsDialog;
-}
-
-void reportBadSession(QWidget* parent, const QString& file, const QString& what) {
-    const QString aside = keepBadSession(file);
-    reportError(parent, WorkbenchWindow::tr("Cannot resume the last session"),
-                WorkbenchWindow::tr("The session could not be read, so it is not resumed.\n\n%1\n\n%2")
-                    .arg(what, aside.isEmpty() ? WorkbenchWindow::tr("The file could not be moved aside.")
-                                               : WorkbenchWindow::tr("The file is kept as %1.").arg(aside)));
 }
 
 void WorkbenchWindow::saveDesign(int index) {
@@ -1495,8 +1121,8 @@ QString WorkbenchWindow::mesh() const { return mMesh->currentText(); }
 
 QString designCaption(const Genome& genome) {
     const LineageInfo info = lineageOf(genome);
-    QString caption = info.name.isEmpty() ? shortId(info.id) : info.name;
-    if (!info.op.isEmpty()) caption += QStringLiteral(" · ") + madeBy(info);
+    QString caption = info.displayName();
+    if (!info.op.isEmpty()) caption += QStringLiteral(" · ") + info.madeBy();
     return caption;
 }
 

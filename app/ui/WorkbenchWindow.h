@@ -42,6 +42,13 @@ class SessionsDialog;
 class WorkbenchWindow : public QMainWindow {
     Q_OBJECT
 public:
+    /// Render keys of lineage thumbnails start here (the queue renders lower keys first, so the
+    /// grid and the favourites come before them).
+    static constexpr std::uint64_t LineageKeyBase = std::uint64_t(1) << 32;
+    /// The lineage's icons: a design's thumbnail, and a generation's mosaic of nine (tiles of 14
+    /// pixels with 1-pixel gaps): small enough to render many, big enough to tell inks apart.
+    static constexpr int LineageIconSide = 44;
+
     /// The render service is shared (the editor uses it too) and must outlive the window.
     explicit WorkbenchWindow(RenderService* renderer, QWidget* parent = nullptr);
     ~WorkbenchWindow() override;
