@@ -17,6 +17,7 @@
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
 #include "ui/WorkbenchWindow.h"
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 
 #include <QAction>
@@ -48,6 +49,7 @@
 
 using namespace marbler;
 using namespace marbler::ui;
+using marbler::test::dropFiles;
 
 namespace {
 
@@ -79,20 +81,6 @@ void answerModal(std::function<void(QWidget*)> answer) {
         }
     });
     timer->start();
-}
-
-/// Drops files on a widget as the platform does: an enter, then the drop.
-void drop(QWidget* target, const QStringList& files) {
-    QMimeData mime;
-    QList<QUrl> urls;
-    for (const QString& f : files) urls << QUrl::fromLocalFile(f);
-    mime.setUrls(urls);
-    const QPoint pos = target->rect().center();
-    QDragEnterEvent enter(pos, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
-    QApplication::sendEvent(target, &enter);
-    ASSERT_TRUE(enter.isAccepted());
-    QDropEvent dropped(pos, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
-    QApplication::sendEvent(target, &dropped);
 }
 
 class HelpTest : public ::testing::Test {
@@ -433,18 +421,18 @@ TEST_F(HelpTest, OpeningOverASelectedParentAsksAndNewGenerationKeepsIt) {
     // Dropped on a cell that is no parent: that cell, without a question; on the parent: asked.
     showWindow();
     model().setSelected(4, true);
-    drop(mWindow->cell(7), {file});
+    dropFiles(mWindow->cell(7), {file});
     EXPECT_EQ(asked, 3);
     EXPECT_EQ(*model().cell(7), opened);
     model().setSelected(4, true);
     answer = OpenChoice::NewGeneration;
-    drop(mWindow->cell(4), {file});
+    dropFiles(mWindow->cell(4), {file});
     EXPECT_EQ(asked, 4);
     EXPECT_EQ(*model().cell(4), parent);
 
     // Dropped on the window, not on a cell: like File ▸ Open.
     const std::size_t before = model().history().size();
-    drop(mWindow.get(), {file});
+    dropFiles(mWindow.get(), {file});
     EXPECT_EQ(asked, 5);
     EXPECT_EQ(model().history().size(), before + 1);
     EXPECT_EQ(*model().cell(4), parent);

@@ -450,24 +450,3 @@ TEST_F(HistoryTreeTest, LineageThumbnailsArriveForWhatIsInView) {
 }
 
 } // namespace
-
-int main(int argc, char** argv) {
-    // Headless by default: with no display, Qt's offscreen platform (the CPU fallback renders).
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
-        && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-    // Keep the user's settings and data out of the tests.
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    // Settings of this process's own, as in WorkbenchTest: parallel test processes never share them.
-    QApplication::setOrganizationName(QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
-    QApplication::setApplicationName(QStringLiteral("MarblerTest"));
-    ::testing::InitGoogleTest(&argc, argv);
-    int status = RUN_ALL_TESTS();
-    QSettings settings;
-    settings.clear();
-    settings.sync();
-    QFile::remove(settings.fileName());
-    QDir().rmdir(QFileInfo(settings.fileName()).absolutePath());
-    return status;
-}

@@ -488,24 +488,3 @@ TEST_F(SessionsTest, TrashOlderThanThirtyDaysIsEmptiedAtStart) {
 }
 
 } // namespace
-
-int main(int argc, char** argv) {
-    // Headless by default: with no display, Qt's offscreen platform (the CPU fallback renders).
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
-        && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-    // Keep the user's settings and data out of the tests; each process has settings of its own
-    // (ctest runs test cases as parallel processes).
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
-    QApplication::setApplicationName(QStringLiteral("MarblerSessionsTest"));
-    ::testing::InitGoogleTest(&argc, argv);
-    const int status = RUN_ALL_TESTS();
-    QSettings settings;
-    settings.clear();
-    settings.sync();
-    QFile::remove(settings.fileName());
-    QDir().rmdir(QFileInfo(settings.fileName()).absolutePath());
-    return status;
-}

@@ -20,6 +20,7 @@
 #include "ui/StartDialog.h"
 #include "ui/Workbench.h"
 #include "ui/WorkbenchWindow.h"
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 
 #include <QAction>
@@ -57,6 +58,7 @@
 
 using namespace marbler;
 using namespace marbler::ui;
+using marbler::test::dropFiles;
 
 namespace {
 
@@ -77,21 +79,6 @@ struct ErrorCapture {
     }
     ~ErrorCapture() { setErrorHandler({}); }
 };
-
-/// Drags files onto a widget the way the platform does: an enter (which picks the drop
-/// target), then the drop.
-void dropFiles(QWidget* target, const QStringList& files) {
-    QMimeData mime;
-    QList<QUrl> urls;
-    for (const QString& f : files) urls << QUrl::fromLocalFile(f);
-    mime.setUrls(urls);
-    const QPoint pos = target->rect().center();
-    QDragEnterEvent enter(pos, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
-    QApplication::sendEvent(target, &enter);
-    ASSERT_TRUE(enter.isAccepted());
-    QDropEvent drop(pos, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
-    QApplication::sendEvent(target, &drop);
-}
 
 class WorkbenchTest : public ::testing::Test {
 protected:
@@ -1440,25 +1427,3 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
 }
 
 } // namespace
-
-int main(int argc, char** argv) {
-    // Headless by default: with no display, Qt's offscreen platform (the CPU fallback renders).
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
-        && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-    // Keep the user's settings and data out of the tests.
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    // ctest runs test cases as parallel processes: each process gets settings of its own, so
-    // one test's remembered choices never leak into another running beside it.
-    QApplication::setOrganizationName(QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
-    QApplication::setApplicationName(QStringLiteral("MarblerTest"));
-    ::testing::InitGoogleTest(&argc, argv);
-    int status = RUN_ALL_TESTS();
-    QSettings settings;
-    settings.clear();
-    settings.sync();
-    QFile::remove(settings.fileName());
-    QDir().rmdir(QFileInfo(settings.fileName()).absolutePath());
-    return status;
-}

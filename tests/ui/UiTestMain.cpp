@@ -1,0 +1,56 @@
+// The main of the window tests: a QApplication around gtest, headless where there is no display,
+// with settings and data of its own (see below).
+#include "UiTestSupport.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFile>
+#include <QFileInfo>
+#include <QMimeData>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QUrl>
+#include <QWidget>
+
+#include <gtest/gtest.h>
+
+namespace marbler::test {
+
+void dropFiles(QWidget* target, const QStringList& files) {
+    QMimeData mime;
+    QList<QUrl> urls;
+    for (const QString& f : files) urls << QUrl::fromLocalFile(f);
+    mime.setUrls(urls);
+    const QPoint pos = target->rect().center();
+    QDragEnterEvent enter(pos, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(target, &enter);
+    ASSERT_TRUE(enter.isAccepted());
+    QDropEvent drop(pos, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(target, &drop);
+}
+
+} // namespace marbler::test
+
+int main(int argc, char** argv) {
+    // Headless by default: with no display, Qt's offscreen platform (the CPU fallback renders).
+    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
+        && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    // Keep the user's settings and data out of the tests.
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    // ctest runs test cases as parallel processes: each process gets settings of its own, so
+    // one test's remembered choices never leak into another running beside it.
+    QApplication::setOrganizationName(QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
+    QApplication::setApplicationName(QStringLiteral("MarblerTest"));
+    ::testing::InitGoogleTest(&argc, argv);
+    int status = RUN_ALL_TESTS();
+    QSettings settings;
+    settings.clear();
+    settings.sync();
+    QFile::remove(settings.fileName());
+    QDir().rmdir(QFileInfo(settings.fileName()).absolutePath());
+    return status;
+}
