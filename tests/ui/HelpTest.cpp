@@ -83,12 +83,10 @@ void answerModal(std::function<void(QWidget*)> answer) {
     timer->start();
 }
 
-class HelpTest : public ::testing::Test {
+class HelpTest : public test::WindowTest {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(mFavourites.isValid());
         ASSERT_TRUE(mFiles.isValid());
-        qputenv("MARBLER_FAVOURITES_DIR", mFavourites.path().toLocal8Bit());
         QSettings().remove(QStringLiteral("files"));
         QSettings().remove(QStringLiteral("open"));
         setUrlOpener([this](const QUrl& url) {
@@ -101,31 +99,22 @@ protected:
             lastQuestion = question;
             return answer;
         });
-        mService = std::make_unique<RenderService>(RenderService::Backend::Cpu);
-        mWindow = std::make_unique<WorkbenchWindow>(mService.get());
-        mWindow->model()->setSessionSeed(42);
-        mWindow->newRandomPopulation(2);
+        WindowTest::SetUp();
     }
     void TearDown() override {
-        mWindow.reset();
-        mService.reset();
+        WindowTest::TearDown();
         setUrlOpener({});
         setOpenChooser({});
         setSaveFileAsker({});
         QSettings().remove(QStringLiteral("files"));
         QSettings().remove(QStringLiteral("open"));
-        qunsetenv("MARBLER_FAVOURITES_DIR");
     }
-    PopulationModel& model() { return *mWindow->model(); }
     void showWindow() {
         mWindow->show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
     }
 
-    QTemporaryDir mFavourites;
     QTemporaryDir mFiles;
-    std::unique_ptr<RenderService> mService;
-    std::unique_ptr<WorkbenchWindow> mWindow;
     QList<QUrl> opened;
     int asked = 0;
     OpenQuestion lastQuestion;

@@ -11,6 +11,7 @@
 #include "ui/RenderService.h"
 #include "ui/Session.h"
 #include "ui/WorkbenchWindow.h"
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 
 #include <QAction>
@@ -109,22 +110,8 @@ QStringList childTexts(const QTreeWidgetItem* item) {
     return texts;
 }
 
-class HistoryTreeTest : public ::testing::Test {
+class HistoryTreeTest : public test::WindowTest {
 protected:
-    void SetUp() override {
-        ASSERT_TRUE(mFavourites.isValid());
-        qputenv("MARBLER_FAVOURITES_DIR", mFavourites.path().toLocal8Bit());
-        mService = std::make_unique<RenderService>(RenderService::Backend::Cpu);
-        mWindow = std::make_unique<WorkbenchWindow>(mService.get());
-        mWindow->model()->setSessionSeed(42);
-        mWindow->newRandomPopulation(2);
-    }
-    void TearDown() override {
-        mWindow.reset();
-        mService.reset();
-        qunsetenv("MARBLER_FAVOURITES_DIR");
-    }
-    PopulationModel& model() { return *mWindow->model(); }
     /// Breeds from one selected cell of the current generation.
     void breed(int parentCell, GeneticOperator op) {
         model().clearSelection();
@@ -148,9 +135,6 @@ protected:
         ASSERT_EQ(model().history().size(), 5u);
     }
 
-    QTemporaryDir mFavourites;
-    std::unique_ptr<RenderService> mService;
-    std::unique_ptr<WorkbenchWindow> mWindow;
 };
 
 TEST_F(HistoryTreeTest, BreedingAfterBackKeepsTheOldBranch) {

@@ -16,6 +16,7 @@
 #include "ui/Trash.h"
 #include "ui/Workbench.h"
 #include "ui/WorkbenchWindow.h"
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 
 #include <QAction>
@@ -42,6 +43,7 @@
 
 using namespace marbler;
 using namespace marbler::ui;
+using marbler::test::ErrorCapture;
 
 namespace {
 
@@ -52,17 +54,6 @@ std::vector<std::string> designs(const PopulationModel& model) {
         for (const auto& cell : g.cells) result.push_back(cell ? serializeGenome(*cell) : std::string("(empty)"));
     return result;
 }
-
-/// Captures errors instead of showing a modal message box.
-struct ErrorCapture {
-    QStringList messages;
-    ErrorCapture() {
-        setErrorHandler([this](QWidget*, const QString& title, const QString& message) {
-            messages << title + QStringLiteral(": ") + message;
-        });
-    }
-    ~ErrorCapture() { setErrorHandler({}); }
-};
 
 /// A start in a session folder of its own, with the start question answered by the test.
 class SessionsTest : public ::testing::Test {

@@ -2,6 +2,8 @@
 // with settings and data of its own (see below).
 #include "UiTestSupport.h"
 
+#include "ui/ErrorReport.h"
+
 #include <QApplication>
 #include <QDir>
 #include <QDragEnterEvent>
@@ -17,6 +19,29 @@
 #include <gtest/gtest.h>
 
 namespace marbler::test {
+
+void WindowTest::SetUp() {
+    ASSERT_TRUE(mFavourites.isValid());
+    qputenv("MARBLER_FAVOURITES_DIR", mFavourites.path().toLocal8Bit());
+    mService = std::make_unique<ui::RenderService>(ui::RenderService::Backend::Cpu);
+    mWindow = std::make_unique<ui::WorkbenchWindow>(mService.get());
+    mWindow->model()->setSessionSeed(42);
+    if (mPopulate) mWindow->newRandomPopulation(2);
+}
+
+void WindowTest::TearDown() {
+    mWindow.reset();
+    mService.reset();
+    qunsetenv("MARBLER_FAVOURITES_DIR");
+}
+
+ErrorCapture::ErrorCapture() {
+    ui::setErrorHandler([this](QWidget*, const QString& title, const QString& message) {
+        messages << title + QStringLiteral(": ") + message;
+    });
+}
+
+ErrorCapture::~ErrorCapture() { ui::setErrorHandler({}); }
 
 void dropFiles(QWidget* target, const QStringList& files) {
     QMimeData mime;

@@ -1,12 +1,45 @@
 #pragma once
-/// What the window tests share: the test main (UiTestMain.cpp, linked into every window test)
-/// and a drop of files as the platform makes it.
+/// What the window tests share (UiTestMain.cpp, linked into every window test): the test main,
+/// a window fixture, error capture and a drop of files as the platform makes it.
+
+#include "ui/PopulationModel.h"
+#include "ui/RenderService.h"
+#include "ui/WorkbenchWindow.h"
 
 #include <QStringList>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <memory>
 
 class QWidget;
 
 namespace marbler::test {
+
+/// A workbench window rendering on the CPU, with favourites in a folder of its own and session
+/// seed 42; `populate`: with a first random flat population.
+class WindowTest : public ::testing::Test {
+protected:
+    explicit WindowTest(bool populate = true) : mPopulate(populate) {}
+    void SetUp() override;
+    void TearDown() override;
+    ui::PopulationModel& model() { return *mWindow->model(); }
+
+    QTemporaryDir mFavourites;
+    std::unique_ptr<ui::RenderService> mService;
+    std::unique_ptr<ui::WorkbenchWindow> mWindow;
+
+private:
+    bool mPopulate;
+};
+
+/// Captures errors instead of showing a modal message box ("title: message" each).
+struct ErrorCapture {
+    QStringList messages;
+    ErrorCapture();
+    ~ErrorCapture();
+};
 
 /// Drags files onto a widget the way the platform does: an enter (which picks the drop target
 /// and must be accepted: a gtest failure otherwise), then the drop.

@@ -15,6 +15,7 @@
 #include "ui/Session.h"
 #include "ui/ViewController.h"
 #include "ui/WorkbenchWindow.h"
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 
 #include <QApplication>
@@ -113,21 +114,9 @@ TEST(ViewAngleTest, KeptInMetaViewAndReadBackFromFiles) {
     EXPECT_EQ((ViewAngle{350.0, 80.0}.dragged(40.0, 40.0)), (ViewAngle{10.0, 89.0}));
 }
 
-class ViewTest : public ::testing::Test {
+class ViewTest : public test::WindowTest {
 protected:
-    void SetUp() override {
-        ASSERT_TRUE(mFavourites.isValid());
-        qputenv("MARBLER_FAVOURITES_DIR", mFavourites.path().toLocal8Bit());
-        mService = std::make_unique<RenderService>(RenderService::Backend::Cpu);
-        mWindow = std::make_unique<WorkbenchWindow>(mService.get());
-        mWindow->model()->setSessionSeed(42);
-    }
-    void TearDown() override {
-        mWindow.reset();
-        mService.reset();
-        qunsetenv("MARBLER_FAVOURITES_DIR");
-    }
-    PopulationModel& model() { return *mWindow->model(); }
+    ViewTest() : WindowTest(/*populate=*/false) {}
     /// Opens a cell large and waits for its final image.
     DesignDialog* openAndRender(int cell) {
         DesignDialog* dialog = mWindow->openDesign(cell);
@@ -137,9 +126,6 @@ protected:
         return dialog->imageIsFinal() ? dialog : nullptr;
     }
 
-    QTemporaryDir mFavourites;
-    std::unique_ptr<RenderService> mService;
-    std::unique_ptr<WorkbenchWindow> mWindow;
 };
 
 /// A wheel turn over a widget: `notches` of 120.

@@ -59,6 +59,7 @@
 using namespace marbler;
 using namespace marbler::ui;
 using marbler::test::dropFiles;
+using marbler::test::ErrorCapture;
 
 namespace {
 
@@ -69,41 +70,18 @@ std::vector<std::string> snapshot(const PopulationModel& model) {
     return result;
 }
 
-/// Captures errors instead of showing a modal message box.
-struct ErrorCapture {
-    QStringList messages;
-    ErrorCapture() {
-        setErrorHandler([this](QWidget*, const QString& title, const QString& message) {
-            messages << title + QStringLiteral(": ") + message;
-        });
-    }
-    ~ErrorCapture() { setErrorHandler({}); }
-};
-
-class WorkbenchTest : public ::testing::Test {
+class WorkbenchTest : public test::WindowTest {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(mFavourites.isValid());
-        qputenv("MARBLER_FAVOURITES_DIR", mFavourites.path().toLocal8Bit());
-        mService = std::make_unique<RenderService>(RenderService::Backend::Cpu);
-        mWindow = std::make_unique<WorkbenchWindow>(mService.get());
-        mWindow->model()->setSessionSeed(42);
-        mWindow->newRandomPopulation(2);
+        WindowTest::SetUp();
         // Opening over designs asks where they go; these tests answer "replace" without a
         // modal dialog (tests/ui/HelpTest.cpp tests the question itself).
         setOpenChooser([](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
     }
     void TearDown() override {
         setOpenChooser({});
-        mWindow.reset();
-        mService.reset();
-        qunsetenv("MARBLER_FAVOURITES_DIR");
+        WindowTest::TearDown();
     }
-    PopulationModel& model() { return *mWindow->model(); }
-
-    QTemporaryDir mFavourites;
-    std::unique_ptr<RenderService> mService;
-    std::unique_ptr<WorkbenchWindow> mWindow;
 };
 
 TEST_F(WorkbenchTest, FirstRandomPopulationIsGenerationOne) {
