@@ -4,12 +4,18 @@
 // ends with MARBLER_RENDERER=cpu or gpu.
 //
 //   ui_grid_timing [generations] [window width] [window height] [solid]
+//   ui_grid_timing zoom [steps] [view side]
 //
-// With "solid", the nine designs are solid ones of 100 operations shown on the vase.
+// With "solid", the nine designs are solid ones of 100 operations shown on the vase. With
+// "zoom", a design of 100 operations is opened large (a square view of the given side, 900 by
+// default) and zoomed in a step (√2) at a time about a point off its centre: each step's time
+// from the wheel to the sharp image of the new view (the scaled stand-in shows at once, then the
+// quick pass, then the final one).
 
 #include "marbler/Generator.h"
 #include "marbler/Random.h"
 #include "ui/DesignCell.h"
+#include "ui/DesignDialog.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/WorkbenchWindow.h"
@@ -22,6 +28,7 @@
 #include <QTemporaryDir>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -47,6 +54,39 @@ Genome designWithOperations(std::uint64_t seed, std::size_t count, int dimension
     return genome;
 }
 
+/// The "zoom" mode (see the top of the file); returns the exit status.
+int timeZoom(int steps, int side) {
+    RenderService service;
+    WorkbenchWindow window(&service);
+    const std::vector<int> cells = window.model()->placeDesigns({designWithOperations(7, 100, 2)}, QStringLiteral("timing"));
+    DesignDialog* dialog = cells.empty() ? nullptr : window.openDesign(cells.front());
+    if (!dialog) return 1;
+    dialog->canvas()->setFixedSize(side, side);
+    dialog->adjustSize();
+    QElapsedTimer clock;
+    clock.start();
+    const auto waitFinal = [&] {
+        while (!dialog->imageIsFinal())
+            if (clock.elapsed() > 120000) return false;
+            else QApplication::processEvents(QEventLoop::AllEvents, 5);
+        return true;
+    };
+    if (!waitFinal()) return 1;
+    std::printf("back end: %s; view %dx%d\n", qPrintable(service.backendName()), side, side);
+    std::vector<double> times;
+    for (int k = 0; k < steps; ++k) {
+        clock.restart();
+        dialog->zoomAt(std::sqrt(2.0), QPointF(side * 0.3, side * 0.4));
+        const double standIn = double(clock.nsecsElapsed()) / 1e6;
+        if (!waitFinal()) return 1;
+        times.push_back(double(clock.nsecsElapsed()) / 1e6);
+        std::printf("zoom %s: stand-in %.1f ms, sharp %.1f ms\n", qPrintable(dialog->zoomText()), standIn, times.back());
+    }
+    std::sort(times.begin(), times.end());
+    std::printf("median: sharp %.1f ms after a zoom step\n", times[times.size() / 2]);
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -55,6 +95,11 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName(
         QStringLiteral("MarblerTiming-%1").arg(QCoreApplication::applicationPid()));
     QApplication::setApplicationName(QStringLiteral("MarblerTiming"));
+    if (argc > 1 && std::string(argv[1]) == "zoom") {
+        const int status = timeZoom(argc > 2 ? std::max(1, std::atoi(argv[2])) : 8, argc > 3 ? std::atoi(argv[3]) : 900);
+        QSettings().clear();
+        return status;
+    }
     const int generations = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
     const int width = argc > 2 ? std::atoi(argv[2]) : 1180;
     const int height = argc > 3 ? std::atoi(argv[3]) : 860;
