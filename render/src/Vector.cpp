@@ -8,9 +8,14 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <numbers>
+#include <optional>
+#include <thread>
 
 namespace marbler {
 namespace {
@@ -23,9 +28,9 @@ constexpr int InitialSamples = 64;
 class OutlineTracer {
 public:
     OutlineTracer(const std::vector<PreparedOp>& ops, std::size_t step, const VectorOptions& options,
-                  std::size_t& vertexBudget, std::size_t& gaps)
+                  std::atomic<std::size_t>& traced, std::atomic<std::size_t>& gaps)
         : mOps(ops), mStep(step), mCenter(ops[step].c.x, ops[step].c.y), mRadius(ops[step].r), mOptions(options),
-          mBudget(vertexBudget), mGaps(gaps) {}
+          mTraced(traced), mGaps(gaps) {}
 
     /// The circle's point at angle theta, mapped through every later step.
     glm::dvec2 at(double theta) const {
@@ -51,10 +56,9 @@ public:
 
 private:
     void push(std::vector<glm::dvec2>& out, const glm::dvec2& p) {
-        if (mBudget == 0)
+        if (mTraced.fetch_add(1, std::memory_order_relaxed) >= mOptions.maxVertices)
             throw InputError("--tolerance " + formatTolerance() + " needs more than " +
                              std::to_string(mOptions.maxVertices) + " vertices; give a larger tolerance");
-        --mBudget;
         out.push_back(p);
     }
 
@@ -74,7 +78,7 @@ private:
         bool wide = glm::distance(pa, pb) > tol || glm::distance(pa, pm) > tol || glm::distance(pm, pb) > tol;
         if (!wide) return;
         if (depth >= mOptions.maxDepth) {
-            ++mGaps;
+            mGaps.fetch_add(1, std::memory_order_relaxed);
             push(out, pm);
             return;
         }
@@ -88,8 +92,8 @@ private:
     glm::dvec2 mCenter;
     double mRadius;
     const VectorOptions& mOptions;
-    std::size_t& mBudget;
-    std::size_t& mGaps;
+    std::atomic<std::size_t>& mTraced;
+    std::atomic<std::size_t>& mGaps;
 };
 
 /// Distance from p to the segment a-b.
@@ -101,10 +105,11 @@ double distanceToSegment(const glm::dvec2& p, const glm::dvec2& a, const glm::dv
 }
 
 /// Drops vertices where the outline is straight: from each kept vertex the next kept one is the
-/// farthest whose chord is at most the tolerance long and passes within `straightness` x
-/// tolerance of every vertex it replaces. Returns how many were dropped.
+/// farthest whose chord is at most straightChord x tolerance long and passes within
+/// `straightness` x tolerance of every vertex it replaces. Returns how many were dropped.
 std::size_t simplify(std::vector<glm::dvec2>& points, const VectorOptions& options) {
-    const double tol = options.tolerance, deviation = options.straightness * options.tolerance;
+    const double tol = options.straightChord * options.tolerance;
+    const double deviation = options.straightness * options.tolerance;
     const std::size_t n = points.size();
     if (n < 4) return 0;
     std::vector<glm::dvec2> kept;
@@ -165,31 +170,59 @@ VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
     design.background = genome.background;
     design.palette = genome.palette;
     const std::vector<PreparedOp> ops = prepare(genome);
-    std::size_t budget = options.maxVertices;
-    for (std::size_t i = 0; i < ops.size(); ++i) {
-        if (!toolSpec(ops[i].tool).laysInk || ops[i].color < 0) continue;
-        OutlineTracer tracer(ops, i, options, budget, design.gapsAtDepthCap);
-        InkOutline outline;
-        outline.step = i;
-        outline.color = ops[i].color;
-        outline.points = tracer.trace();
-        // An outline whose bounding box misses the design space cannot colour any of it (its
-        // region lies inside that box).
-        glm::dvec2 lo(INFINITY), hi(-INFINITY);
-        for (const glm::dvec2& p : outline.points) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
+    std::vector<std::size_t> inks;
+    for (std::size_t i = 0; i < ops.size(); ++i)
+        if (toolSpec(ops[i].tool).laysInk && ops[i].color >= 0) inks.push_back(i);
+
+    // Outlines are independent: one worker per core takes the next ink from a counter. The
+    // vertex cap counts every vertex traced, so whether it is reached does not depend on timing.
+    std::atomic<std::size_t> traced{0}, gaps{0}, next{0};
+    std::vector<std::optional<InkOutline>> outlines(inks.size());
+    std::vector<std::size_t> dropped(inks.size(), 0);
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    auto worker = [&] {
+        try {
+            for (std::size_t k = next.fetch_add(1); k < inks.size(); k = next.fetch_add(1)) {
+                OutlineTracer tracer(ops, inks[k], options, traced, gaps);
+                InkOutline outline;
+                outline.step = inks[k];
+                outline.color = ops[inks[k]].color;
+                outline.points = tracer.trace();
+                // An outline whose bounding box misses the design space cannot colour any of it
+                // (its region lies inside that box).
+                glm::dvec2 lo(INFINITY), hi(-INFINITY);
+                for (const glm::dvec2& p : outline.points) {
+                    lo = glm::min(lo, p);
+                    hi = glm::max(hi, p);
+                }
+                if (hi.x <= 0.0 || hi.y <= 0.0 || lo.x >= design.width || lo.y >= design.height) continue;
+                dropped[k] = simplify(outline.points, options);
+                outlines[k] = std::move(outline);
+            }
+        } catch (...) {
+            std::lock_guard lock(failureMutex);
+            if (!failure) failure = std::current_exception();
+            next.store(inks.size()); // the others stop after their current outline
         }
-        if (hi.x <= 0.0 || hi.y <= 0.0 || lo.x >= design.width || lo.y >= design.height) {
-            budget += outline.points.size();
+    };
+    int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1,
+                             static_cast<int>(std::max<std::size_t>(inks.size(), 1)));
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (std::thread& thread : pool) thread.join();
+    if (failure) std::rethrow_exception(failure);
+
+    design.gapsAtDepthCap = gaps.load();
+    for (std::size_t k = 0; k < inks.size(); ++k) {
+        if (!outlines[k]) {
             ++design.outlinesOutside;
             continue;
         }
-        std::size_t dropped = simplify(outline.points, options);
-        budget += dropped;
-        design.droppedAsStraight += dropped;
-        design.vertexCount += outline.points.size();
-        design.outlines.push_back(std::move(outline));
+        design.droppedAsStraight += dropped[k];
+        design.vertexCount += outlines[k]->points.size();
+        design.outlines.push_back(std::move(*outlines[k]));
     }
     return design;
 }

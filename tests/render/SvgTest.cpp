@@ -152,7 +152,8 @@ TEST(Svg, NeighbouringVerticesAreWithinTheTolerance) {
     const auto dir = test::outputDir("svg-tolerance");
     for (const NamedGenome& g : flatGenomes(dir)) {
         for (double tolerance : {4.0, 1.0, 0.25}) {
-            if (tolerance < 1.0 && g.name == "flame-comb-vortex") continue; // 14 MB; 1 and 4 suffice
+            // The finest tolerance on two small designs only (flame-comb-vortex makes 14 MB).
+            if (tolerance < 1.0 && g.name != "five-stones" && g.name != "drops-combs-2d") continue;
             SCOPED_TRACE(g.name + " at " + std::to_string(tolerance));
             const auto svg = dir / (g.name + ".svg");
             auto r = runMarbler({"svg", g.file.string(), "-o", svg.string(), "--tolerance", std::to_string(tolerance)});
@@ -277,6 +278,56 @@ TEST(Svg, NearlyStraightRunsLoseTheirInnerVertices) {
     }
 }
 
+TEST(Svg, SimplifyReplacesOnlyStraightRuns) {
+    // --simplify: chords up to 16 T where every replaced vertex is within T/100 of them. The
+    // kept vertices are a subsequence of the strict outline's, so each dropped one is checked
+    // against the chord that replaced it.
+    const auto dir = test::outputDir("svg-simplify");
+    for (const NamedGenome& g : flatGenomes(dir)) {
+        SCOPED_TRACE(g.name);
+        VectorOptions options;
+        options.tolerance = 1.0;
+        options.straightChord = 0.0; // nothing dropped
+        VectorDesign strict = traceDesign(g.genome, options);
+        EXPECT_EQ(strict.droppedAsStraight, 0u);
+        options.straightChord = 16.0;
+        VectorDesign loose = traceDesign(g.genome, options);
+        ASSERT_EQ(strict.outlines.size(), loose.outlines.size());
+        EXPECT_LT(loose.vertexCount * 4, strict.vertexCount * 3) << "at least a quarter fewer";
+        double worst = 0.0, longest = 0.0;
+        for (std::size_t o = 0; o < strict.outlines.size(); ++o) {
+            const auto& all = strict.outlines[o].points;
+            const auto& kept = loose.outlines[o].points;
+            std::size_t i = 0;
+            for (std::size_t k = 0; k < kept.size(); ++k) {
+                const glm::dvec2 a = kept[k], b = kept[(k + 1) % kept.size()];
+                ASSERT_LT(i, all.size());
+                ASSERT_EQ(all[i], a) << "kept vertices are the strict outline's";
+                longest = std::max(longest, glm::distance(a, b));
+                for (++i; i < all.size() && all[i] != b; ++i) {
+                    glm::dvec2 ab = b - a;
+                    double t = std::clamp(glm::dot(all[i] - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+                    worst = std::max(worst, glm::distance(all[i], a + t * ab));
+                }
+            }
+        }
+        EXPECT_LE(worst, 0.01 + 1e-9);
+        EXPECT_LE(longest, 16.0 + 1e-9);
+        EXPECT_GT(longest, 1.0); // it did join runs beyond T
+    }
+    // The command line's --simplify is this.
+    const auto svg = dir / "five-stones.svg";
+    auto r = runMarbler({"svg", (test::dataDir() / "examples" / "five-stones.marble.json").string(), "-o",
+                         svg.string(), "--simplify"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    VectorOptions options;
+    options.straightChord = 16.0;
+    std::size_t vertices = 0;
+    for (const auto& path : parsePaths(test::readFile(svg))) vertices += path.size();
+    EXPECT_EQ(vertices, traceDesign(loadGenome(test::dataDir() / "examples" / "five-stones.marble.json"), options)
+                            .vertexCount);
+}
+
 /// A failure: the exit status, one stderr line that mentions `mention`, and no output file.
 void expectFailure(const std::vector<std::string>& args, int exitCode, const std::string& mention,
                    const std::filesystem::path& out) {
@@ -322,7 +373,7 @@ TEST(SvgCli, UnwritableFolderExitsOne) {
 TEST(SvgCli, HelpDescribesEveryOption) {
     auto r = runMarbler({"svg", "--help"});
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* option : {"-o", "--tolerance", "--stats", "source", "(3D)", "viewBox"})
+    for (const char* option : {"-o", "--tolerance", "--simplify", "--stats", "source", "(3D)", "viewBox"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
     r = runMarbler({"--help"});
     EXPECT_NE(r.out.find("svg GENOME"), std::string::npos);

@@ -28,12 +28,16 @@ namespace marbler {
 struct VectorOptions {
     /// Neighbouring vertices of an outline are at most this far apart (design units).
     double tolerance = 1.0;
-    /// Simplification: a vertex is dropped where it lies within `straightness` x tolerance of
-    /// the chord of its neighbours and that chord is itself at most `tolerance` long, so the
-    /// spacing guarantee holds after simplification too.
+    /// Simplification: a run of vertices is replaced by its chord where every one lies within
+    /// `straightness` x tolerance of it and the chord is at most `straightChord` x tolerance
+    /// long. With straightChord 1 (the default) the spacing guarantee holds after
+    /// simplification too, and little is dropped (refinement leaves gaps of T/2 to T); larger
+    /// values (`marbler svg --simplify`: 16) waive it where the outline is straight.
     double straightness = 0.01;
-    /// The most vertices of all outlines together; more throws InputError (a larger tolerance
-    /// is needed). 4 million vertices make an SVG of some 60 MB.
+    double straightChord = 1.0;
+    /// The most vertices traced for all outlines together (before simplification and before
+    /// outlines outside the design are left out); more throws InputError (a larger tolerance is
+    /// needed). 4 million vertices make an SVG of some 60 MB.
     std::size_t maxVertices = 4'000'000;
     /// How often a stretch of circle is halved at most. A gap that is still wider than the
     /// tolerance after this many halvings straddles a point where the forward maps tear the
@@ -61,7 +65,7 @@ struct VectorDesign {
     std::size_t gapsAtDepthCap = 0;   ///< gaps wider than the tolerance at VectorOptions::maxDepth
 };
 
-/// Traces every ink of a flat genome. Throws InputError for a solid (3D) genome, for a genome
+/// Traces every ink of a flat genome, on every core. Throws InputError for a solid (3D) genome, for a genome
 /// with a source image (its marbled pixels have no outlines; render it as a raster), for a
 /// tolerance that is not a positive number and when more than VectorOptions::maxVertices
 /// vertices would be needed.
