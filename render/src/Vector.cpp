@@ -20,8 +20,10 @@
 namespace marbler {
 namespace {
 
-/// Samples taken round every circle before refinement. Enough that the midpoint test below
-/// sees every lobe a later stroke pulls out of the circle.
+/// Samples taken round every circle before refinement. Refinement only looks between samples
+/// (at both ends and the midpoint), so a lobe a later stroke pulls out of a stretch whose ends
+/// and middle land close together would be missed; many short starting stretches make that
+/// unlikely.
 constexpr int InitialSamples = 64;
 
 /// One ink's circle carried forward through the steps after it, refined adaptively.
@@ -57,7 +59,7 @@ public:
 private:
     void push(std::vector<glm::dvec2>& out, const glm::dvec2& p) {
         if (mTraced.fetch_add(1, std::memory_order_relaxed) >= mOptions.maxVertices)
-            throw InputError("--tolerance " + formatTolerance() + " needs more than " +
+            throw InputError("a tolerance of " + formatTolerance() + " needs more than " +
                              std::to_string(mOptions.maxVertices) + " vertices; give a larger tolerance");
         out.push_back(p);
     }
