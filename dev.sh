@@ -22,6 +22,7 @@ PACKAGES=(
     libassimp-dev zlib1g-dev                     # mesh files; zlib for assimp's CMake target
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth                                   # a virtual display for the GL and window tests
+    librsvg2-bin                                 # rsvg-convert: the svg tests rasterise `marbler svg` output
 )
 JOBS=$(nproc)
 

@@ -19,6 +19,7 @@ constexpr const char* Usage = R"(usage: marbler [GENOME...]            open the 
 
 verbs:
   render GENOME -o OUT    render a raster (PNG, TIFF, EXR, JPEG), a slice or a solid on an object
+  svg GENOME -o OUT.svg   vector output of a flat design: every ink as filled paths
   info GENOME             check a genome and summarise it
   random --dimension 2|3 --seed N -o OUT.marble.json
                           a random genome; the same seed gives the same file
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
         if (verb == "random") return marbler::cli::runRandom(rest);
         if (verb == "breed") return marbler::cli::runBreed(rest);
         if (verb == "doctor") return marbler::cli::runDoctor(rest);
+        if (verb == "svg") return marbler::cli::runSvg(rest);
         if (verb == "--help" || verb == "-h" || verb == "help") {
             std::cout << Usage;
             return marbler::cli::ExitOk;
@@ -58,10 +60,6 @@ int main(int argc, char** argv) {
         if (verb == "--version") {
             std::cout << "marbler 0.1.0\n";
             return marbler::cli::ExitOk;
-        }
-        if (verb == "svg") {
-            std::cerr << "marbler svg: vector output is not built yet in this version\n";
-            return marbler::cli::ExitFailure;
         }
     }
 #ifdef MARBLER_HAVE_GUI

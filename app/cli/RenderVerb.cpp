@@ -5,6 +5,7 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Repeat.h"
 
 #include "WindowModule.h"
 
@@ -47,6 +48,12 @@ options:
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
   --cut NX,NY,NZ,OFFSET     cut the --mesh object open: the part where NX*x + NY*y + NZ*z >
                             OFFSET (design coordinates) is removed, showing the marbled inside
+  --repeat mirror           a seamless repeat tile for print and textiles: the render and its
+                            mirror images 2 x 2 (twice the width and height: the design at
+                            the top left, its horizontal mirror at the top right, the vertical
+                            mirrors of both below), so every edge meets its own mirror image
+                            and the tile wraps without a seam; the other options apply to the
+                            design (--size and --dpi: each quarter has that print size)
   --progress                show progress on stderr even when it is not a terminal
   --quiet                   no progress line
   -h, --help                this text
@@ -144,7 +151,7 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
 int render(std::span<const std::string> words) {
     Args args = parseArgs(words,
                           {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
-                           "supersample", "cut", "threads"},
+                           "supersample", "cut", "threads", "repeat"},
                           {"gpu", "quiet", "progress", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << Help;
@@ -180,6 +187,9 @@ int render(std::span<const std::string> words) {
         if (!exportOptions.dpi) throw InputError("--size needs --dpi to give the pixel size");
         if (args.has("width") || args.has("height")) throw InputError("--size and --width/--height exclude each other");
     }
+    if (auto repeat = args.get("repeat"); repeat && *repeat != "mirror")
+        throw InputError("--repeat: '" + *repeat + "' is not a repeat Marbler makes; 'mirror' is the one (an exact "
+                         "straight repeat is impossible for drops)");
     const bool meshMode = args.has("mesh");
     if (meshMode && !args.has("view")) throw InputError("--mesh needs --view YAW,PITCH");
     for (const char* meshOnly : {"view", "supersample", "cut"})
@@ -250,6 +260,13 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
     }
     settings.width = width;
     settings.height = height;
+    const bool repeat = args.has("repeat");
+    if (repeat && (2 * std::int64_t(width) > MaxImageSide || 2 * std::int64_t(height) > MaxImageSide ||
+                   4 * std::int64_t(width) * height > MaxImagePixels))
+        throw InputError("--repeat mirror: the tile of " + std::to_string(2 * std::int64_t(width)) + " x " +
+                         std::to_string(2 * std::int64_t(height)) + " pixels is too large (at most " +
+                         std::to_string(MaxImageSide) + " pixels a side and " + std::to_string(MaxImagePixels) +
+                         " pixels in all)");
 
     const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
     ProgressLine progress(showProgress);
@@ -278,7 +295,7 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
         } else {
             image = app::windowModule().render(genome, settings);
         }
-        writeImage(image, outFile, exportOptions);
+        writeImage(repeat ? mirrorRepeat(image) : image, outFile, exportOptions);
         return ExitOk;
 #else
         throw RuntimeFailure(std::string(meshMode ? "--mesh" : "--gpu") +
@@ -286,6 +303,13 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
 #endif
     }
 
+    if (repeat) {
+        // The tile is made in memory from the whole render (strips would need each one twice).
+        Image image = CpuRenderer(genome).render(settings, &control);
+        progress.finish();
+        writeImage(mirrorRepeat(image), outFile, exportOptions);
+        return ExitOk;
+    }
     renderToFile(genome, settings, outFile, exportOptions, &control);
     progress.finish();
     return ExitOk;

@@ -6,6 +6,8 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <array>
+
 namespace marbler {
 namespace {
 
@@ -120,11 +122,63 @@ TEST(RenderCli, GpuEitherRendersOrSaysWhyNot) {
     }
 }
 
+TEST(RenderCli, MirrorRepeatWrapsWithoutASeam) {
+    const auto dir = test::outputDir("cli-repeat");
+    const std::string genome = example("flame-comb-vortex.marble.json");
+    auto r = runMarbler({"render", genome, "-o", (dir / "design.png").string(), "--width", "96", "--height", "64",
+                         "--aa", "rgss", "--region", "100,200,700,600"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    r = runMarbler({"render", genome, "-o", (dir / "tile.png").string(), "--width", "96", "--height", "64", "--aa",
+                    "rgss", "--region", "100,200,700,600", "--repeat", "mirror"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Image design = test::readImage8(dir / "design.png");
+    Image tile = test::readImage8(dir / "tile.png");
+    ASSERT_EQ(tile.width, 2 * design.width);
+    ASSERT_EQ(tile.height, 2 * design.height);
+    const int w = design.width, h = design.height, tw = tile.width, th = tile.height;
+    auto px = [](const Image& image, int x, int y) {
+        const std::uint8_t* p = image.row(y) + std::size_t(x) * 3;
+        return std::array<int, 3>{p[0], p[1], p[2]};
+    };
+    // The quadrants: the design as rendered (the other options honoured), then its exact mirrors.
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            auto d = px(design, x, y);
+            ASSERT_EQ(px(tile, x, y), d) << x << "," << y;
+            ASSERT_EQ(px(tile, tw - 1 - x, y), d) << x << "," << y;
+            ASSERT_EQ(px(tile, x, th - 1 - y), d) << x << "," << y;
+            ASSERT_EQ(px(tile, tw - 1 - x, th - 1 - y), d) << x << "," << y;
+        }
+    // Wrapping: the last column meets the first, the last row the first, with equal pixels, so
+    // laid side by side or one under another the tiles show no seam.
+    for (int y = 0; y < th; ++y) EXPECT_EQ(px(tile, tw - 1, y), px(tile, 0, y)) << y;
+    for (int x = 0; x < tw; ++x) EXPECT_EQ(px(tile, x, th - 1), px(tile, x, 0)) << x;
+    // The design itself does not wrap: its opposite edges differ, which is why the mirrors are needed.
+    int differing = 0;
+    for (int y = 0; y < h; ++y) differing += px(design, w - 1, y) != px(design, 0, y);
+    EXPECT_GT(differing, 0);
+
+    // With --size and --dpi each quarter has the print size.
+    r = runMarbler({"render", genome, "-o", (dir / "print.png").string(), "--size", "2x1in", "--dpi", "50",
+                    "--repeat", "mirror"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    Image print = test::readImage8(dir / "print.png");
+    EXPECT_EQ(print.width, 200);
+    EXPECT_EQ(print.height, 100);
+
+    const std::string out = (dir / "bad" / "out.png").string();
+    std::filesystem::create_directories(dir / "bad");
+    expectFailure({"render", genome, "-o", out, "--repeat", "straight"}, 2, "--repeat", out);
+    expectFailure({"render", genome, "-o", out, "--repeat", "mirror", "--width", "40000", "--height", "40000"}, 2,
+                  "--repeat", out);
+}
+
 TEST(RenderCli, HelpDescribesEveryOption) {
     auto r = runMarbler({"render", "--help"});
     EXPECT_EQ(r.exitCode, 0);
     for (const char* option : {"-o", "--width", "--height", "--aa", "--region", "--slice", "--dpi", "--size", "--gpu",
-                               "--mesh", "--view", "--supersample", "--threads", "--quiet", "rooks8", "checker4"})
+                               "--mesh", "--view", "--supersample", "--threads", "--quiet", "rooks8", "checker4",
+                               "--repeat mirror"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 

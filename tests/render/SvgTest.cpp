@@ -1,0 +1,383 @@
+// Vector output (`marbler svg`, marbler/Vector.h): the SVG rasterised by librsvg against the
+// antialiased CPU render of the same genome, the tolerance read back from the path data, every
+// vertex mapped back onto the circle its ink was laid on, and the command's failures.
+
+#include "RenderTestUtil.h"
+#include "TestUtil.h"
+
+#include "marbler/CpuRenderer.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Params.h"
+#include "marbler/Tools.h"
+#include "marbler/Vector.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <set>
+
+namespace marbler {
+namespace {
+
+using test::runMarbler;
+
+/// The flat genomes the vector output is held to: the examples, the conformance genomes and the
+/// 2D render test designs. Together they use every 2D tool (checked below).
+struct NamedGenome {
+    std::string name;
+    Genome genome;
+    std::filesystem::path file; ///< a genome file the command line can read
+};
+
+std::vector<NamedGenome> flatGenomes(const std::filesystem::path& dir) {
+    std::vector<NamedGenome> genomes;
+    for (const char* name : {"five-stones", "flame-comb-vortex"}) {
+        auto file = test::dataDir() / "examples" / (std::string(name) + ".marble.json");
+        genomes.push_back({name, loadGenome(file), file});
+    }
+    for (const char* name : {"drops-combs-2d", "waves-swirls-2d"}) {
+        auto file = test::dataDir() / "render" / (std::string(name) + ".marble.json");
+        genomes.push_back({name, loadGenome(file), file});
+    }
+    for (const char* name : {"probes-0", "probes-1", "probes-2", "antialias"}) {
+        Genome genome = test::genomeOf(test::loadConformance(std::string(name) + ".json"), name);
+        auto file = dir / (std::string(name) + ".marble.json");
+        saveGenome(genome, file);
+        genomes.push_back({name, genome, file});
+    }
+    return genomes;
+}
+
+/// The polygons of an SVG written by toSvg: every number pair of each path's data (a regular
+/// expression would recurse once a character on libstdc++'s, too deep for megabytes of data).
+std::vector<std::vector<glm::dvec2>> parsePaths(const std::string& svg) {
+    std::vector<std::vector<glm::dvec2>> paths;
+    for (std::size_t at = svg.find("<path "); at != std::string::npos; at = svg.find("<path ", at + 1)) {
+        std::size_t begin = svg.find(" d=\"M", at), end = svg.find("Z\"", begin);
+        if (begin == std::string::npos || end == std::string::npos) {
+            ADD_FAILURE() << "a path without data M...Z";
+            break;
+        }
+        std::string data = svg.substr(begin + 5, end - begin - 5);
+        for (char& c : data)
+            if (c == 'L') c = ' ';
+        std::vector<double> numbers;
+        const char* p = data.c_str();
+        char* next = nullptr;
+        for (double v = std::strtod(p, &next); next != p; v = std::strtod(p, &next)) {
+            numbers.push_back(v);
+            p = next;
+        }
+        EXPECT_EQ(*p, '\0') << "unparsed path data";
+        EXPECT_EQ(numbers.size() % 2, 0u);
+        std::vector<glm::dvec2> points;
+        for (std::size_t k = 0; k + 1 < numbers.size(); k += 2) points.emplace_back(numbers[k], numbers[k + 1]);
+        paths.push_back(std::move(points));
+    }
+    return paths;
+}
+
+/// Runs librsvg's rsvg-convert; the test fails (never skips) when CMake did not find it, so a CI
+/// machine without librsvg2-bin reports the missing program.
+bool rasteriseSvg(const std::filesystem::path& svg, const std::filesystem::path& png, int width, int height) {
+    const std::string program = MARBLER_RSVG_CONVERT;
+    if (program.empty() || program.ends_with("NOTFOUND")) {
+        ADD_FAILURE() << "rsvg-convert was not found when the build was configured (install librsvg2-bin)";
+        return false;
+    }
+    std::string command = "'" + program + "' -w " + std::to_string(width) + " -h " + std::to_string(height) +
+                          " -o '" + png.string() + "' '" + svg.string() + "'";
+    int status = std::system(command.c_str());
+    EXPECT_EQ(status, 0) << command;
+    return status == 0 && std::filesystem::exists(png);
+}
+
+TEST(Svg, RasterisedSvgMatchesTheAntialiasedRender) {
+    const auto dir = test::outputDir("svg-raster");
+    std::set<std::string> seen;
+    for (const NamedGenome& g : flatGenomes(dir)) {
+        SCOPED_TRACE(g.name);
+        test::addToolsUsed(g.genome, seen);
+        const auto svg = dir / (g.name + ".svg");
+        auto r = runMarbler({"svg", g.file.string(), "-o", svg.string(), "--tolerance", "1"});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const int size = 256;
+        const auto png = dir / (g.name + "-svg.png");
+        ASSERT_TRUE(rasteriseSvg(svg, png, size, size));
+        Image vector = test::readImage8(png);
+
+        RenderSettings settings;
+        settings.width = settings.height = size;
+        settings.aa = "grid4";
+        Image raster = CpuRenderer(g.genome).render(settings);
+        ASSERT_EQ(vector.width, raster.width);
+        ASSERT_EQ(vector.height, raster.height);
+
+        // Inside the regions the colours are the same; along the edges librsvg's coverage
+        // (blended in sRGB) and the 4x4 samples (averaged in linear light) differ, by up to some
+        // 60 levels between dark and light inks, so the designs with many filaments a fraction
+        // of a pixel wide (flame-comb-vortex: 3.6 on average, 3.8 % of pixels beyond 40) differ
+        // most. A region drawn in the wrong colour shows as pixels off by more than 128: none
+        // of these designs has one.
+        double sum = 0.0;
+        std::size_t disagree = 0, wrong = 0, pixels = std::size_t(size) * size;
+        for (std::size_t p = 0; p < pixels; ++p) {
+            int worst = 0;
+            for (int c = 0; c < 3; ++c) {
+                int d = std::abs(int(vector.rgb[p * 3 + c]) - int(raster.rgb[p * 3 + c]));
+                sum += d;
+                worst = std::max(worst, d);
+            }
+            disagree += worst > 40;
+            wrong += worst > 128;
+        }
+        double mean = sum / double(pixels * 3), share = double(disagree) / double(pixels);
+        double wrongShare = double(wrong) / double(pixels);
+        EXPECT_LT(mean, 5.0) << "mean absolute difference";
+        EXPECT_LT(share, 0.05) << "share of pixels off by more than 40 levels";
+        EXPECT_LT(wrongShare, 0.0005) << "share of pixels off by more than 128 levels";
+        if (mean >= 5.0 || share >= 0.05 || wrongShare >= 0.0005) writeImage(raster, dir / (g.name + "-raster.png"));
+    }
+    // Every ink-laying and every moving 2D tool took part.
+    for (const ToolSpec& spec : allTools())
+        if (spec.in2D) {
+            EXPECT_TRUE(seen.count("2D " + std::string(spec.name))) << spec.name;
+        }
+}
+
+TEST(Svg, NeighbouringVerticesAreWithinTheTolerance) {
+    const auto dir = test::outputDir("svg-tolerance");
+    for (const NamedGenome& g : flatGenomes(dir)) {
+        for (double tolerance : {4.0, 1.0, 0.25}) {
+            // The finest tolerance on two small designs only (flame-comb-vortex makes 14 MB).
+            if (tolerance < 1.0 && g.name != "five-stones" && g.name != "drops-combs-2d") continue;
+            SCOPED_TRACE(g.name + " at " + std::to_string(tolerance));
+            const auto svg = dir / (g.name + ".svg");
+            auto r = runMarbler({"svg", g.file.string(), "-o", svg.string(), "--tolerance", std::to_string(tolerance)});
+            ASSERT_EQ(r.exitCode, 0) << r.err;
+            auto paths = parsePaths(test::readFile(svg));
+            VectorOptions options;
+            options.tolerance = tolerance;
+            VectorDesign design = traceDesign(g.genome, options);
+            ASSERT_EQ(paths.size(), design.outlines.size());
+            // Written coordinates are rounded to half a unit of the last digit each.
+            const double rounding = std::sqrt(2.0) * std::pow(10.0, -decimalsFor(tolerance));
+            std::size_t vertices = 0;
+            double longest = 0.0;
+            for (const auto& path : paths) {
+                vertices += path.size();
+                for (std::size_t k = 0; k < path.size(); ++k)
+                    longest = std::max(longest, glm::distance(path[k], path[(k + 1) % path.size()]));
+            }
+            EXPECT_EQ(vertices, design.vertexCount);
+            // Gaps at the depth cap straddle a tear the forward maps open at a later drop's centre;
+            // none of these designs has one.
+            EXPECT_EQ(design.gapsAtDepthCap, 0u);
+            EXPECT_LE(longest, tolerance + rounding);
+            // And the refinement is not wasteful: chords are not all far below the tolerance.
+            EXPECT_GT(longest, 0.5 * tolerance);
+        }
+    }
+}
+
+TEST(Svg, VerticesLieOnTheTrueBoundary) {
+    const auto dir = test::outputDir("svg-boundary");
+    for (const NamedGenome& g : flatGenomes(dir)) {
+        SCOPED_TRACE(g.name);
+        VectorOptions options;
+        options.tolerance = 2.0;
+        VectorDesign design = traceDesign(g.genome, options);
+        const std::vector<PreparedOp> ops = prepare(g.genome);
+        double worst = 0.0;
+        for (const InkOutline& outline : design.outlines) {
+            const PreparedOp& ink = ops[outline.step];
+            EXPECT_EQ(outline.color, ink.color);
+            for (std::size_t k = 0; k < outline.points.size(); k += 7) {
+                glm::dvec3 p(outline.points[k], 0.0);
+                for (std::size_t j = ops.size(); j-- > outline.step + 1;) p = inverseMap(ops[j], p);
+                worst = std::max(worst, std::abs(glm::distance(p, ink.c) - ink.r));
+            }
+        }
+        EXPECT_LT(worst, 1e-6);
+    }
+}
+
+TEST(Svg, LaterInksCoverEarlierOnesInStackingOrder) {
+    // A drop inside a drop makes a ring; a spray covers without moving; a comb drags them all.
+    const auto dir = test::outputDir("svg-stacking");
+    Genome genome = parseGenome(R"({"format": "marbler-genome", "version": 1, "dimension": 2, "size": [400, 200],
+        "background": "#ffffff", "palette": ["#ff0000", "#0000ff", "#00ff00"],
+        "initial": [{"tool": "drop", "center": [200, 100], "radius": 60, "color": 0},
+                    {"tool": "drop", "center": [200, 100], "radius": 30, "color": 1},
+                    {"tool": "spray", "center": [260, 100], "radius": 25, "color": 2}],
+        "operations": [{"tool": "line", "origin": [0, 100], "angle": 0, "alpha": 40, "lambda": 20}]})",
+                                "stack");
+    VectorDesign design = traceDesign(genome);
+    ASSERT_EQ(design.outlines.size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(design.outlines[k].step, k);
+    // The first drop's outline was pushed out to the area law's radius sqrt(60^2 + 30^2) before
+    // the line; the line moves points along x only, so its top and bottom keep their height.
+    double top = 1e9;
+    for (const glm::dvec2& p : design.outlines[0].points) top = std::min(top, p.y);
+    EXPECT_NEAR(top, 100.0 - std::sqrt(60.0 * 60.0 + 30.0 * 30.0), 0.05);
+    // The spray moved nothing: the blue drop's outline is a circle shifted by the line only.
+    auto file = dir / "stack.marble.json";
+    saveGenome(genome, file);
+    auto r = runMarbler({"svg", file.string(), "-o", (dir / "stack.svg").string(), "--tolerance", "0.5"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string svg = test::readFile(dir / "stack.svg");
+    EXPECT_NE(svg.find(R"(viewBox="0 0 400 200")"), std::string::npos);
+    EXPECT_NE(svg.find(R"(<rect x="0" y="0" width="400" height="200" fill="#ffffff"/>)"), std::string::npos);
+    std::size_t red = svg.find("#ff0000\" d="), blue = svg.find("#0000ff\" d="), green = svg.find("#00ff00\" d=");
+    ASSERT_NE(green, std::string::npos);
+    EXPECT_LT(red, blue);
+    EXPECT_LT(blue, green);
+    ASSERT_TRUE(rasteriseSvg(dir / "stack.svg", dir / "stack.png", 400, 200));
+    Image image = test::readImage8(dir / "stack.png");
+    auto at = [&](int x, int y) {
+        const std::uint8_t* px = image.row(y) + x * 3;
+        return std::array<int, 3>{px[0], px[1], px[2]};
+    };
+    // Along the line y = 100 everything moved by alpha: the ring's red, the blue core, the green
+    // spray over the ring's right side, the white bath.
+    CpuRenderer renderer(genome);
+    for (int x : {150, 200, 240, 290, 330, 380}) {
+        int k = renderer.colorIndexAt({x + 0.5, 100.5, 0.0});
+        std::array<int, 3> expected = k < 0 ? std::array<int, 3>{255, 255, 255}
+                                            : std::array<int, 3>{genome.palette[k].r, genome.palette[k].g,
+                                                                 genome.palette[k].b};
+        EXPECT_EQ(at(x, 100), expected) << "x = " << x << ", ink " << k;
+    }
+}
+
+TEST(Svg, NearlyStraightRunsLoseTheirInnerVertices) {
+    // A drop of radius 2 at tolerance 10: its 64 initial samples are 0.2 apart, and a run of
+    // them bends less than a tenth of a unit (T/100) from its chord for about 0.9 units.
+    Genome genome = parseGenome(R"({"format": "marbler-genome", "version": 1, "dimension": 2, "size": [100, 100],
+        "background": "#ffffff", "palette": ["#000000"], "initial": [{"tool": "drop", "center": [50, 50], "radius": 2, "color": 0}],
+        "operations": []})",
+                                "small");
+    VectorOptions options;
+    options.tolerance = 10.0;
+    VectorDesign simplified = traceDesign(genome, options);
+    options.straightness = 0.0;
+    VectorDesign plain = traceDesign(genome, options);
+    EXPECT_EQ(plain.droppedAsStraight, 0u);
+    EXPECT_EQ(plain.vertexCount, 64u);
+    EXPECT_GT(simplified.droppedAsStraight, 0u);
+    EXPECT_EQ(simplified.vertexCount + simplified.droppedAsStraight, 64u);
+    // What is kept still lies on the circle, and no kept chord bends off it by more than T/100.
+    const auto& kept = simplified.outlines.at(0).points;
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+        EXPECT_NEAR(glm::distance(kept[k], glm::dvec2(50, 50)), 2.0, 1e-12);
+        double chord = glm::distance(kept[k], kept[(k + 1) % kept.size()]);
+        EXPECT_LE(2.0 - std::sqrt(4.0 - chord * chord / 4.0), 0.1 + 1e-12);
+    }
+}
+
+TEST(Svg, SimplifyReplacesOnlyStraightRuns) {
+    // --simplify: chords up to 16 T where every replaced vertex is within T/100 of them. The
+    // kept vertices are a subsequence of the strict outline's, so each dropped one is checked
+    // against the chord that replaced it.
+    const auto dir = test::outputDir("svg-simplify");
+    for (const NamedGenome& g : flatGenomes(dir)) {
+        SCOPED_TRACE(g.name);
+        VectorOptions options;
+        options.tolerance = 1.0;
+        options.straightChord = 0.0; // nothing dropped
+        VectorDesign strict = traceDesign(g.genome, options);
+        EXPECT_EQ(strict.droppedAsStraight, 0u);
+        options.straightChord = 16.0;
+        VectorDesign loose = traceDesign(g.genome, options);
+        ASSERT_EQ(strict.outlines.size(), loose.outlines.size());
+        EXPECT_LT(loose.vertexCount * 4, strict.vertexCount * 3) << "at least a quarter fewer";
+        double worst = 0.0, longest = 0.0;
+        for (std::size_t o = 0; o < strict.outlines.size(); ++o) {
+            const auto& all = strict.outlines[o].points;
+            const auto& kept = loose.outlines[o].points;
+            std::size_t i = 0;
+            for (std::size_t k = 0; k < kept.size(); ++k) {
+                const glm::dvec2 a = kept[k], b = kept[(k + 1) % kept.size()];
+                ASSERT_LT(i, all.size());
+                ASSERT_EQ(all[i], a) << "kept vertices are the strict outline's";
+                longest = std::max(longest, glm::distance(a, b));
+                for (++i; i < all.size() && all[i] != b; ++i) {
+                    glm::dvec2 ab = b - a;
+                    double t = std::clamp(glm::dot(all[i] - a, ab) / glm::dot(ab, ab), 0.0, 1.0);
+                    worst = std::max(worst, glm::distance(all[i], a + t * ab));
+                }
+            }
+        }
+        EXPECT_LE(worst, 0.01 + 1e-9);
+        EXPECT_LE(longest, 16.0 + 1e-9);
+        EXPECT_GT(longest, 1.0); // it did join runs beyond T
+    }
+    // The command line's --simplify is this.
+    const auto svg = dir / "five-stones.svg";
+    auto r = runMarbler({"svg", (test::dataDir() / "examples" / "five-stones.marble.json").string(), "-o",
+                         svg.string(), "--simplify"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    VectorOptions options;
+    options.straightChord = 16.0;
+    std::size_t vertices = 0;
+    for (const auto& path : parsePaths(test::readFile(svg))) vertices += path.size();
+    EXPECT_EQ(vertices, traceDesign(loadGenome(test::dataDir() / "examples" / "five-stones.marble.json"), options)
+                            .vertexCount);
+}
+
+/// A failure: the exit status, one stderr line that mentions `mention`, and no output file.
+void expectFailure(const std::vector<std::string>& args, int exitCode, const std::string& mention,
+                   const std::filesystem::path& out) {
+    auto r = runMarbler(args);
+    EXPECT_EQ(r.exitCode, exitCode) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << out;
+    for (const auto& entry : std::filesystem::directory_iterator(out.parent_path()))
+        ADD_FAILURE() << "left behind: " << entry.path();
+}
+
+TEST(SvgCli, BadInputExitsTwoWithOneLineAndNoOutput) {
+    const auto dir = test::outputDir("svg-bad");
+    const std::string out = (dir / "out.svg").string();
+    const std::string good = (test::dataDir() / "examples" / "five-stones.marble.json").string();
+    expectFailure({"svg", (test::dataDir() / "examples" / "slate-block.marble.json").string(), "-o", out}, 2,
+                  "slate-block.marble.json: vector output needs a flat (2D) genome", out);
+    expectFailure({"svg", (test::dataDir() / "render" / "source-2d.marble.json").string(), "-o", out}, 2,
+                  "source-2d.marble.json: vector output cannot draw a source image", out);
+    expectFailure({"svg", good, "-o", out, "--tolerance", "0"}, 2, "--tolerance", out);
+    expectFailure({"svg", good, "-o", out, "--tolerance", "-1"}, 2, "--tolerance", out);
+    expectFailure({"svg", good, "-o", out, "--tolerance", "fine"}, 2, "--tolerance", out);
+    expectFailure({"svg", good, "-o", out, "--tolerance", "1e-9"}, 2, "larger tolerance", out);
+    expectFailure({"svg", good, "-o", out, "--frobnicate"}, 2, "--frobnicate", out);
+    expectFailure({"svg", good, "-o", (dir / "out.png").string()}, 2, "out.png", dir / "out.png");
+    expectFailure({"svg", good}, 2, "-o", out);
+    expectFailure({"svg", (dir.parent_path() / "absent.marble.json").string(), "-o", out}, 2, "absent.marble.json",
+                  out);
+}
+
+TEST(SvgCli, UnwritableFolderExitsOne) {
+    const auto dir = test::outputDir("svg-unwritable");
+    const auto out = dir / "no" / "such" / "folder" / "out.svg";
+    auto r = runMarbler(
+        {"svg", (test::dataDir() / "examples" / "five-stones.marble.json").string(), "-o", out.string()});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("out.svg"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(SvgCli, HelpDescribesEveryOption) {
+    auto r = runMarbler({"svg", "--help"});
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* option : {"-o", "--tolerance", "--simplify", "--stats", "source", "(3D)", "viewBox"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << option;
+    r = runMarbler({"--help"});
+    EXPECT_NE(r.out.find("svg GENOME"), std::string::npos);
+}
+
+} // namespace
+} // namespace marbler
