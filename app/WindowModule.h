@@ -2,8 +2,8 @@
 /// The boundary between the `marbler` executable and marbler-window.so, the module that holds
 /// everything that needs Qt: the workbench window and the OpenGL back end (with assimp for mesh
 /// files). The executable links neither, so the headless verbs start without loading them; the
-/// window, `render --gpu`, `render --mesh`, `bake --mesh FILE` and `doctor` load the module on first use
-/// (marbler/Modules.h).
+/// window, `render --gpu`, `render --mesh`, `bake --mesh FILE` and `doctor` load the module on
+/// first use (marbler/Modules.h).
 
 #include "marbler/Genome.h"
 #include "marbler/Mesh.h"
