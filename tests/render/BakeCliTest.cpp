@@ -92,6 +92,20 @@ TEST(BakeCli, SlicesAreTheCentresOfEqualLayers) {
     EXPECT_NE(slice.rgb, test::readImage8(dir / "stack" / "slice-0002.png").rgb);
 }
 
+TEST(BakeCli, BakingOntoABuiltInObjectLoadsNoModule) {
+    // The built-in objects and the writers are in the executable; only a mesh file needs assimp
+    // (the window module), so a bake onto the vase starts as fast as a render.
+    const auto dir = test::outputDir("bake-cli-modules");
+    auto r = runMarbler({"bake", example("slate-block.marble.json"), "--mesh", "cube", "-o", (dir / "c.glb").string(),
+                         "--texture", "64", "--quiet"},
+                        {{"LD_DEBUG", "files"}});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ASSERT_NE(r.err.find("libpng"), std::string::npos) << "LD_DEBUG should trace the loads";
+    EXPECT_EQ(r.err.find("marbler-window.so"), std::string::npos);
+    EXPECT_EQ(r.err.find("marbler-imageio.so"), std::string::npos);
+    EXPECT_EQ(r.err.find("assimp"), std::string::npos);
+}
+
 TEST(BakeCli, HelpDescribesEveryOption) {
     auto r = runMarbler({"bake", "--help"});
     EXPECT_EQ(r.exitCode, 0);
