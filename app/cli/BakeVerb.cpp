@@ -61,7 +61,9 @@ options:
 /// One progress line on stderr, rewritten in place.
 class Progress {
 public:
-    Progress(bool enabled, std::string what) : mEnabled(enabled), mWhat(std::move(what)) {}
+    Progress(bool enabled, std::string what)
+        : mEnabled(enabled)
+        , mWhat(std::move(what)) {}
     ~Progress() { finish(); }
     void update(double fraction) {
         if (!mEnabled) return;
@@ -96,13 +98,15 @@ MeshData meshOf(const std::string& nameOrFile) {
     if (isBuiltinMesh(nameOrFile)) return builtinMesh(nameOrFile);
     std::error_code ec;
     if (!fs::is_regular_file(nameOrFile, ec))
-        throw InputError("--mesh: '" + nameOrFile +
-                         "' is neither a built-in object (sphere, cube, torus, vase, teapot) nor a mesh file");
+        throw InputError(
+            "--mesh: '" + nameOrFile +
+            "' is neither a built-in object (sphere, cube, torus, vase, teapot) nor a mesh file");
 #ifdef MARBLER_HAVE_GUI
     return app::windowModule().loadMesh(nameOrFile);
 #else
-    throw RuntimeFailure("--mesh FILE needs assimp, which comes with the window module, and this build has none "
-                         "(built without MARBLER_BUILD_GUI); the built-in objects work");
+    throw RuntimeFailure(
+        "--mesh FILE needs assimp, which comes with the window module, and this build has none "
+        "(built without MARBLER_BUILD_GUI); the built-in objects work");
 #endif
 }
 
@@ -110,7 +114,8 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
     const std::string extension = lower(outFile.extension().string());
     const std::vector<std::string> known = texturedMeshExtensions();
     if (std::find(known.begin(), known.end(), extension) == known.end())
-        throw InputError("'" + outFile.string() + "': unknown mesh format '" + extension + "' (use .glb, .gltf or .obj)");
+        throw InputError("'" + outFile.string() + "': unknown mesh format '" + extension +
+                         "' (use .glb, .gltf or .obj)");
     BakeSettings settings;
     settings.textureSize = parseIntOption(args, "texture", 2048, 1, MaxBakeTexture);
     settings.aa = args.get("aa").value_or("rgss");
@@ -119,9 +124,11 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
 
     std::vector<std::string> warnings;
     const Genome genome = loadGenome(genomeName, &warnings);
-    for (const std::string& warning : warnings) std::cerr << "marbler bake: warning: " << warning << '\n';
+    for (const std::string& warning : warnings)
+        std::cerr << "marbler bake: warning: " << warning << '\n';
     if (genome.source)
-        throw InputError(genomeName + ": a design with a source image cannot be baked yet (only inks and the background)");
+        throw InputError(genomeName +
+                         ": a design with a source image cannot be baked yet (only inks and the background)");
 
     const std::string meshName = *args.get("mesh");
     MeshData mesh = meshOf(meshName);
@@ -142,9 +149,10 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
     control.progress = [&](double f) { progress.update(f); };
     const BakedTexture baked = bakeTexture(genome, mesh, settings, &control);
     progress.finish();
-    std::string name = genome.meta.is_object() && genome.meta.contains("name") && genome.meta["name"].is_string()
-                           ? genome.meta["name"].get<std::string>()
-                           : std::string("marbled");
+    std::string name =
+        genome.meta.is_object() && genome.meta.contains("name") && genome.meta["name"].is_string()
+            ? genome.meta["name"].get<std::string>()
+            : std::string("marbled");
     writeTexturedMesh(mesh, baked.image, outFile, name);
     return ExitOk;
 }
@@ -152,10 +160,14 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
 int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& outDir) {
     const std::string axisText = lower(*args.get("slices"));
     Slice slice;
-    if (axisText == "x") slice.axis = 0;
-    else if (axisText == "y") slice.axis = 1;
-    else if (axisText == "z") slice.axis = 2;
-    else throw InputError("--slices: '" + *args.get("slices") + "' is not an axis (x, y or z)");
+    if (axisText == "x")
+        slice.axis = 0;
+    else if (axisText == "y")
+        slice.axis = 1;
+    else if (axisText == "z")
+        slice.axis = 2;
+    else
+        throw InputError("--slices: '" + *args.get("slices") + "' is not an axis (x, y or z)");
     const int count = parseIntOption(args, "count", 64, 1, 10000);
     RenderSettings settings;
     settings.aa = args.get("aa").value_or("none");
@@ -167,7 +179,8 @@ int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& 
 
     std::vector<std::string> warnings;
     const Genome genome = loadGenome(genomeName, &warnings);
-    for (const std::string& warning : warnings) std::cerr << "marbler bake: warning: " << warning << '\n';
+    for (const std::string& warning : warnings)
+        std::cerr << "marbler bake: warning: " << warning << '\n';
     if (genome.dimension != 3)
         throw InputError(genomeName + ": --slices needs a solid (3D) genome; this one is flat (2D)");
 
@@ -177,8 +190,14 @@ int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& 
     const Region plane = effectiveRegion(genome, settings);
     const double aspect = (plane.x1 - plane.x0) / (plane.y1 - plane.y0);
     auto pixels = [](double value) { return std::clamp(int(std::lround(value)), 1, MaxImageSide); };
-    settings.width = hasW ? width : hasH ? pixels(height * aspect) : aspect >= 1.0 ? 1024 : pixels(1024 * aspect);
-    settings.height = hasH ? height : hasW ? pixels(width / aspect) : aspect >= 1.0 ? pixels(1024 / aspect) : 1024;
+    settings.width = hasW            ? width
+                     : hasH          ? pixels(height * aspect)
+                     : aspect >= 1.0 ? 1024
+                                     : pixels(1024 * aspect);
+    settings.height = hasH            ? height
+                      : hasW          ? pixels(width / aspect)
+                      : aspect >= 1.0 ? pixels(1024 / aspect)
+                                      : 1024;
     checkRenderSettings(genome, settings);
 
     std::error_code ec;
@@ -203,7 +222,8 @@ int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& 
             progress.update(double(k + 1) / count);
         }
     } catch (...) {
-        for (const fs::path& file : written) fs::remove(file, ec);
+        for (const fs::path& file : written)
+            fs::remove(file, ec);
         if (madeDir) fs::remove(outDir, ec);
         throw;
     }
@@ -211,8 +231,9 @@ int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& 
 }
 
 int bake(std::span<const std::string> words) {
-    const Args args = parseArgs(words, {"o", "output", "mesh", "texture", "aa", "slices", "count", "width", "height", "threads"},
-                                {"quiet", "progress", "help", "h"});
+    const Args args = parseArgs(
+        words, {"o", "output", "mesh", "texture", "aa", "slices", "count", "width", "height", "threads"},
+        {"quiet", "progress", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << Help;
         return ExitOk;
@@ -224,12 +245,16 @@ int bake(std::span<const std::string> words) {
     const std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
     if (!output || output->empty()) throw InputError("-o OUT is required (see marbler bake --help)");
     const bool slices = args.has("slices");
-    if (slices == args.has("mesh")) throw InputError("give either --mesh NAME|FILE or --slices AXIS (see marbler bake --help)");
+    if (slices == args.has("mesh"))
+        throw InputError("give either --mesh NAME|FILE or --slices AXIS (see marbler bake --help)");
     for (const char* meshOnly : {"texture"})
-        if (slices && args.has(meshOnly)) throw InputError(std::string("--") + meshOnly + " only applies with --mesh");
+        if (slices && args.has(meshOnly))
+            throw InputError(std::string("--") + meshOnly + " only applies with --mesh");
     for (const char* slicesOnly : {"count", "width", "height"})
-        if (!slices && args.has(slicesOnly)) throw InputError(std::string("--") + slicesOnly + " only applies with --slices");
-    return slices ? bakeSlices(args, args.positional[0], *output) : bakeMesh(args, args.positional[0], *output);
+        if (!slices && args.has(slicesOnly))
+            throw InputError(std::string("--") + slicesOnly + " only applies with --slices");
+    return slices ? bakeSlices(args, args.positional[0], *output)
+                  : bakeMesh(args, args.positional[0], *output);
 }
 
 } // namespace

@@ -25,31 +25,35 @@ class BakeJob : public QObject {
 public:
     BakeJob(QPushButton* button, Genome genome, QString mesh, QString file, int textureSize,
             std::function<void(const QString&)> written)
-        : QObject(button), mButton(button), mFile(file), mWritten(std::move(written)) {
+        : QObject(button)
+        , mButton(button)
+        , mFile(file)
+        , mWritten(std::move(written)) {
         auto cancel = mCancel;
         auto progress = mProgress;
         auto error = mError;
-        mThread = QThread::create([genome = std::move(genome), mesh, file, textureSize, cancel, progress, error] {
-            RenderControl control;
-            control.cancel = cancel.get();
-            control.progress = [progress](double p) { progress->store(p, std::memory_order_relaxed); };
-            try {
-                MeshData data = gl::meshByNameOrFile(mesh.toStdString());
-                if (!hasUsableUvs(data)) data = withGeneratedUvs(data, textureSize);
-                BakeSettings settings;
-                settings.textureSize = textureSize;
-                const BakedTexture baked = bakeTexture(genome, data, settings, &control);
-                const std::string name = genome.meta.contains("name") && genome.meta["name"].is_string()
-                                             ? genome.meta["name"].get<std::string>()
-                                             : std::string("marbled");
-                writeTexturedMesh(data, baked.image, file.toStdString(), name);
-            } catch (const Cancelled&) {
-            } catch (const std::exception& e) {
-                *error = QString::fromStdString(e.what());
-            }
-        });
-        mDialog = new QProgressDialog(QObject::tr("Baking %1…").arg(QFileInfo(file).fileName()), QObject::tr("Cancel"), 0,
-                                      1000, button->window());
+        mThread =
+            QThread::create([genome = std::move(genome), mesh, file, textureSize, cancel, progress, error] {
+                RenderControl control;
+                control.cancel = cancel.get();
+                control.progress = [progress](double p) { progress->store(p, std::memory_order_relaxed); };
+                try {
+                    MeshData data = gl::meshByNameOrFile(mesh.toStdString());
+                    if (!hasUsableUvs(data)) data = withGeneratedUvs(data, textureSize);
+                    BakeSettings settings;
+                    settings.textureSize = textureSize;
+                    const BakedTexture baked = bakeTexture(genome, data, settings, &control);
+                    const std::string name = genome.meta.contains("name") && genome.meta["name"].is_string()
+                                                 ? genome.meta["name"].get<std::string>()
+                                                 : std::string("marbled");
+                    writeTexturedMesh(data, baked.image, file.toStdString(), name);
+                } catch (const Cancelled&) {
+                } catch (const std::exception& e) {
+                    *error = QString::fromStdString(e.what());
+                }
+            });
+        mDialog = new QProgressDialog(QObject::tr("Baking %1…").arg(QFileInfo(file).fileName()),
+                                      QObject::tr("Cancel"), 0, 1000, button->window());
         mDialog->setObjectName(QStringLiteral("bakeProgress"));
         mDialog->setWindowModality(Qt::WindowModal);
         mDialog->setMinimumDuration(300);
@@ -109,21 +113,25 @@ QPushButton* makeBakeButton(QWidget* parent, std::function<Genome()> genome, QSt
                             std::function<void(const QString&)> written, int textureSize) {
     auto* button = new QPushButton(QObject::tr("&Bake onto object…"), parent);
     button->setObjectName(QStringLiteral("bakeObject"));
-    button->setToolTip(QObject::tr("Write the object with the design baked into its texture, for other 3D tools "
-                                   "(glTF .glb or .gltf, OBJ; a %1 × %1 texture)")
-                           .arg(textureSize));
+    button->setToolTip(
+        QObject::tr("Write the object with the design baked into its texture, for other 3D tools "
+                    "(glTF .glb or .gltf, OBJ; a %1 × %1 texture)")
+            .arg(textureSize));
     QObject::connect(button, &QPushButton::clicked, button, [button, genome, mesh, written, textureSize] {
         const Genome design = genome();
         QSettings settings;
-        QString file = askSaveFile(button->window(), QObject::tr("Bake onto object"),
-                                   suggestedFile(design, settings.value(QStringLiteral("files/bakeDir")).toString(),
-                                                 QStringLiteral(".glb")),
-                                   QObject::tr("3D objects (*.glb *.gltf *.obj)"));
+        QString file =
+            askSaveFile(button->window(), QObject::tr("Bake onto object"),
+                        suggestedFile(design, settings.value(QStringLiteral("files/bakeDir")).toString(),
+                                      QStringLiteral(".glb")),
+                        QObject::tr("3D objects (*.glb *.gltf *.obj)"));
         if (file.isEmpty()) return;
         // A name typed without a format gets glTF binary, one file that carries its texture.
         const QString suffix = QFileInfo(file).suffix().toLower();
-        if (suffix.isEmpty()) file += QStringLiteral(".glb");
-        else if (suffix != QStringLiteral("glb") && suffix != QStringLiteral("gltf") && suffix != QStringLiteral("obj")) {
+        if (suffix.isEmpty())
+            file += QStringLiteral(".glb");
+        else if (suffix != QStringLiteral("glb") && suffix != QStringLiteral("gltf") &&
+                 suffix != QStringLiteral("obj")) {
             reportError(button->window(), QObject::tr("Cannot bake onto the object"),
                         QObject::tr("%1: choose .glb, .gltf or .obj").arg(QFileInfo(file).fileName()));
             return;

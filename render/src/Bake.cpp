@@ -77,8 +77,9 @@ MeshData withGeneratedUvs(const MeshData& mesh, int textureSize) {
     const double gutter = 1.5, apart = std::sqrt(2.0) * gutter;
     const double leg = cell - 2.0 * gutter - apart;
     if (leg < 3.0)
-        throw InputError("the mesh's " + std::to_string(triangles) + " triangles are too many for generated texture " +
-                         "coordinates in a " + std::to_string(textureSize) + " texture (each would get under 3 " +
+        throw InputError("the mesh's " + std::to_string(triangles) +
+                         " triangles are too many for generated texture " + "coordinates in a " +
+                         std::to_string(textureSize) + " texture (each would get under 3 " +
                          "texels); give a larger --texture or a mesh with its own texture coordinates");
 
     MeshData out;
@@ -89,21 +90,25 @@ MeshData withGeneratedUvs(const MeshData& mesh, int textureSize) {
     for (std::size_t t = 0; t < triangles; ++t) {
         const std::size_t c = t / 2;
         const double x0 = double(c % side) * cell, y0 = double(c / side) * cell;
-        // Lower-left half of the cell for the first of a pair, upper-right for the second; the
-        // right angle goes to the vertex opposite the longest edge, the one nearest a right angle.
-        glm::dvec2 corner[3];
-        if (t % 2 == 0)
-            corner[0] = {x0 + gutter, y0 + gutter}, corner[1] = {x0 + gutter + leg, y0 + gutter},
-            corner[2] = {x0 + gutter, y0 + gutter + leg};
-        else
-            corner[0] = {x0 + cell - gutter, y0 + cell - gutter}, corner[1] = {x0 + cell - gutter - leg, y0 + cell - gutter},
-            corner[2] = {x0 + cell - gutter, y0 + cell - gutter - leg};
-        std::uint32_t v[3] = {mesh.indices[t * 3], mesh.indices[t * 3 + 1], mesh.indices[t * 3 + 2]};
+        // Lower-left half of the cell for the first of a pair, upper-right for the second, as
+        // a right isosceles triangle; the right angle goes to the vertex opposite the longest
+        // edge, the one nearest a right angle.
+        const bool firstOfPair = t % 2 == 0;
+        const glm::dvec2 rightAngle = firstOfPair ? glm::dvec2(x0 + gutter, y0 + gutter)
+                                                  : glm::dvec2(x0 + cell - gutter, y0 + cell - gutter);
+        const double along = firstOfPair ? leg : -leg;
+        const glm::dvec2 corner[3] = {rightAngle, rightAngle + glm::dvec2(along, 0.0),
+                                      rightAngle + glm::dvec2(0.0, along)};
+        const std::uint32_t v[3] = {mesh.indices[t * 3], mesh.indices[t * 3 + 1], mesh.indices[t * 3 + 2]};
         int right = 0;
         double longest = -1.0;
         for (int k = 0; k < 3; ++k) {
-            const double opposite = glm::length(glm::dvec3(mesh.positions[v[(k + 1) % 3]]) - glm::dvec3(mesh.positions[v[(k + 2) % 3]]));
-            if (opposite > longest) longest = opposite, right = k;
+            const double opposite = glm::length(glm::dvec3(mesh.positions[v[(k + 1) % 3]]) -
+                                                glm::dvec3(mesh.positions[v[(k + 2) % 3]]));
+            if (opposite > longest) {
+                longest = opposite;
+                right = k;
+            }
         }
         // The triangle keeps its vertex order (its facing); only the corners turn.
         for (int k = 0; k < 3; ++k) {
@@ -125,7 +130,8 @@ glm::dvec3 linearOf(Color c) {
 }
 
 /// Barycentric coordinates of q in the triangle (a, b, c); false for a degenerate triangle.
-bool barycentric(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, const glm::dvec2& q, glm::dvec3& w) {
+bool barycentric(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, const glm::dvec2& q,
+                 glm::dvec3& w) {
     const glm::dvec2 e1 = b - a, e2 = c - a, r = q - a;
     const double det = e1.x * e2.y - e1.y * e2.x;
     if (det == 0.0 || !std::isfinite(det)) return false;
@@ -145,7 +151,8 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                          std::to_string(n) + ")");
     if (genome.source)
         throw InputError("a design with a source image cannot be baked yet (only inks and the background)");
-    if (!hasUsableUvs(mesh)) throw InputError("the mesh has no texture coordinates within [0, 1] to bake into");
+    if (!hasUsableUvs(mesh))
+        throw InputError("the mesh has no texture coordinates within [0, 1] to bake into");
     const AaPattern pattern = aaPattern(settings.aa);
     const MeshPlacement placement = placeMesh(genome, mesh);
 
@@ -156,7 +163,8 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
     auto uvOf = [&](std::uint32_t v) { return glm::dvec2(mesh.uvs[v]) * double(n); };
     BakedTexture result;
     for (std::size_t t = 0; t < triangles; ++t) {
-        const glm::dvec2 a = uvOf(mesh.indices[t * 3]), b = uvOf(mesh.indices[t * 3 + 1]), c = uvOf(mesh.indices[t * 3 + 2]);
+        const glm::dvec2 a = uvOf(mesh.indices[t * 3]), b = uvOf(mesh.indices[t * 3 + 1]),
+                         c = uvOf(mesh.indices[t * 3 + 2]);
         glm::dvec3 probe;
         if (!barycentric(a, b, c, a, probe)) continue; // no area in UV space: no texel is its own
         const int i0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}) - 0.5)));
@@ -223,7 +231,8 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                             w = glm::max(w, glm::dvec3(0.0));
                             w /= w.x + w.y + w.z;
                         }
-                        const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) + w.y * glm::dvec3(mesh.positions[v[1]]) +
+                        const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) +
+                                             w.y * glm::dvec3(mesh.positions[v[1]]) +
                                              w.z * glm::dvec3(mesh.positions[v[2]]);
                         const glm::dvec3 q = placement.designPoint(p);
                         xs[count] = q.x;
@@ -238,8 +247,9 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                     glm::dvec3 sum(0.0);
                     for (std::size_t s = 0; s < perTexel; ++s, ++k) {
                         const int color = colors[k];
-                        sum += pattern.weights[s] *
-                               (color >= 0 && std::size_t(color) < palette.size() ? palette[std::size_t(color)] : background);
+                        sum += pattern.weights[s] * (color >= 0 && std::size_t(color) < palette.size()
+                                                         ? palette[std::size_t(color)]
+                                                         : background);
                     }
                     std::uint8_t* out = image.row(j) + std::size_t(i) * 3;
                     out[0] = encodeSrgb8(std::clamp(sum.x, 0.0, 1.0));
@@ -256,7 +266,8 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
             stop = true;
         }
     };
-    const int threads = std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, n);
+    const int threads =
+        std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, n);
     std::vector<std::thread> pool;
     for (int t = 1; t < threads; ++t)
         pool.emplace_back(worker);
@@ -283,7 +294,8 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                         if (x < 0 || y < 0 || x >= n || y >= n) continue;
                         const std::size_t from = std::size_t(y) * std::size_t(n) + std::size_t(x);
                         if (!filled[from]) continue;
-                        for (int ch = 0; ch < 3; ++ch) sum[ch] += image.rgb[from * 3 + std::size_t(ch)];
+                        for (int ch = 0; ch < 3; ++ch)
+                            sum[ch] += image.rgb[from * 3 + std::size_t(ch)];
                         ++count;
                     }
                 if (count == 0) continue;
@@ -303,13 +315,16 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
 
 // --- Writing ---------------------------------------------------------------------------------
 
-std::vector<std::string> texturedMeshExtensions() { return {".glb", ".gltf", ".obj"}; }
+std::vector<std::string> texturedMeshExtensions() {
+    return {".glb", ".gltf", ".obj"};
+}
 
 namespace {
 
 std::string lowerExtension(const fs::path& file) {
     std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return extension;
 }
 
@@ -329,8 +344,9 @@ public:
     /// A temporary name for `target` (which keeps its extension, so image writers know it).
     fs::path add(const fs::path& target) {
         static std::atomic<int> counter{0};
-        fs::path temp = target.parent_path() / ("." + target.stem().string() + ".part-" + std::to_string(::getpid()) +
-                                                "-" + std::to_string(counter++) + target.extension().string());
+        fs::path temp =
+            target.parent_path() / ("." + target.stem().string() + ".part-" + std::to_string(::getpid()) +
+                                    "-" + std::to_string(counter++) + target.extension().string());
         mFiles.emplace_back(target, temp);
         return temp;
     }
@@ -378,10 +394,10 @@ std::string pngBytes(const Image& texture, AtomicFileSet& files, const fs::path&
     return readBytes(temp);
 }
 
-template <typename T>
-void append(std::string& buffer, const std::vector<T>& values) {
+template <typename T> void append(std::string& buffer, const std::vector<T>& values) {
     buffer.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-    while (buffer.size() % 4 != 0) buffer.push_back('\0'); // glTF aligns every view to 4 bytes
+    while (buffer.size() % 4 != 0)
+        buffer.push_back('\0'); // glTF aligns every view to 4 bytes
 }
 
 glm::vec3 unitNormal(const MeshData& mesh, std::size_t v) {
@@ -393,7 +409,8 @@ glm::vec3 unitNormal(const MeshData& mesh, std::size_t v) {
 /// The glTF document and its binary buffer; `embeddedPng` is stored in the buffer (GLB) unless
 /// empty, else the image is `pngUri`.
 std::pair<nlohmann::ordered_json, std::string> gltfDocument(const MeshData& mesh, const std::string& name,
-                                                            const std::string& embeddedPng, const std::string& pngUri) {
+                                                            const std::string& embeddedPng,
+                                                            const std::string& pngUri) {
     using Json = nlohmann::ordered_json;
     std::vector<glm::vec3> normals(mesh.positions.size());
     for (std::size_t v = 0; v < normals.size(); ++v)
@@ -420,17 +437,25 @@ std::pair<nlohmann::ordered_json, std::string> gltfDocument(const MeshData& mesh
     const int indexView = view(mesh.indices, 34963); // ELEMENT_ARRAY_BUFFER
     const std::size_t vertices = mesh.positions.size();
     Json accessors = Json::array({
-        {{"bufferView", positionView}, {"componentType", 5126}, {"count", vertices}, {"type", "VEC3"},
-         {"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}},
+        {{"bufferView", positionView},
+         {"componentType", 5126},
+         {"count", vertices},
+         {"type", "VEC3"},
+         {"min", {lo.x, lo.y, lo.z}},
+         {"max", {hi.x, hi.y, hi.z}}},
         {{"bufferView", normalView}, {"componentType", 5126}, {"count", vertices}, {"type", "VEC3"}},
         {{"bufferView", uvView}, {"componentType", 5126}, {"count", vertices}, {"type", "VEC2"}},
-        {{"bufferView", indexView}, {"componentType", 5125}, {"count", mesh.indices.size()}, {"type", "SCALAR"}},
+        {{"bufferView", indexView},
+         {"componentType", 5125},
+         {"count", mesh.indices.size()},
+         {"type", "SCALAR"}},
     });
     Json image = {{"name", name}};
     if (!embeddedPng.empty()) {
         const std::size_t offset = buffer.size();
         buffer += embeddedPng;
-        while (buffer.size() % 4 != 0) buffer.push_back('\0');
+        while (buffer.size() % 4 != 0)
+            buffer.push_back('\0');
         views.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", embeddedPng.size()}});
         image["bufferView"] = int(views.size()) - 1;
         image["mimeType"] = "image/png";
@@ -442,16 +467,21 @@ std::pair<nlohmann::ordered_json, std::string> gltfDocument(const MeshData& mesh
         {"scene", 0},
         {"scenes", Json::array({{{"nodes", Json::array({0})}}})},
         {"nodes", Json::array({{{"mesh", 0}, {"name", name}}})},
-        {"meshes", Json::array({{{"name", name},
-                                 {"primitives", Json::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
-                                                              {"indices", 3},
-                                                              {"material", 0}}})}}})},
+        {"meshes",
+         Json::array({{{"name", name},
+                       {"primitives",
+                        Json::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}}},
+                                      {"indices", 3},
+                                      {"material", 0}}})}}})},
         // The marbling is the surface's colour; a stone-like, non-metallic finish.
         {"materials", Json::array({{{"name", name},
                                     {"pbrMetallicRoughness",
-                                     {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.5}}}}})},
+                                     {{"baseColorTexture", {{"index", 0}}},
+                                      {"metallicFactor", 0.0},
+                                      {"roughnessFactor", 0.5}}}}})},
         // Linear filtering with mipmaps, clamped: the dilated gutters are what the edges blend with.
-        {"samplers", Json::array({{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 33071}, {"wrapT", 33071}}})},
+        {"samplers",
+         Json::array({{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 33071}, {"wrapT", 33071}}})},
         {"textures", Json::array({{{"sampler", 0}, {"source", 0}}})},
         {"images", Json::array({image})},
         {"buffers", Json::array({{{"byteLength", buffer.size()}}})},
@@ -462,7 +492,8 @@ std::pair<nlohmann::ordered_json, std::string> gltfDocument(const MeshData& mesh
 }
 
 void putU32(std::string& out, std::uint32_t value) {
-    for (int k = 0; k < 4; ++k) out.push_back(char((value >> (8 * k)) & 0xff));
+    for (int k = 0; k < 4; ++k)
+        out.push_back(char((value >> (8 * k)) & 0xff));
 }
 
 /// A number for OBJ text: enough digits to give the float back exactly.
@@ -478,9 +509,11 @@ std::vector<fs::path> writeTexturedMesh(const MeshData& mesh, const Image& textu
                                         const std::string& name) {
     const std::string extension = lowerExtension(file);
     if (extension != ".glb" && extension != ".gltf" && extension != ".obj")
-        throw InputError("'" + file.string() + "': unknown mesh format '" + extension + "' (use .glb, .gltf or .obj)");
+        throw InputError("'" + file.string() + "': unknown mesh format '" + extension +
+                         "' (use .glb, .gltf or .obj)");
     if (!hasUsableUvs(mesh)) throw InputError("the mesh has no texture coordinates to write");
-    if (mesh.indices.size() % 3 != 0 || mesh.indices.empty()) throw InputError("the mesh has no triangles to write");
+    if (mesh.indices.size() % 3 != 0 || mesh.indices.empty())
+        throw InputError("the mesh has no triangles to write");
 
     std::error_code ec;
     const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
@@ -500,7 +533,8 @@ std::vector<fs::path> writeTexturedMesh(const MeshData& mesh, const Image& textu
         const std::string png = pngBytes(texture, files, pngFile);
         auto [doc, bin] = gltfDocument(mesh, name, png, "");
         std::string json = doc.dump();
-        while (json.size() % 4 != 0) json.push_back(' '); // the JSON chunk is padded with spaces
+        while (json.size() % 4 != 0)
+            json.push_back(' '); // the JSON chunk is padded with spaces
         std::string glb;
         putU32(glb, 0x46546C67); // "glTF"
         putU32(glb, 2);
@@ -534,7 +568,8 @@ std::vector<fs::path> writeTexturedMesh(const MeshData& mesh, const Image& textu
     writeImage(texture, files.add(pngFile));
     files.writeBytes(mtlFile, "# Marbler (marbler bake)\nnewmtl " + objName +
                                   "\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " + pngName + "\n");
-    std::string obj = "# Marbler (marbler bake)\nmtllib " + mtlFile.filename().string() + "\no " + objName + "\n";
+    std::string obj =
+        "# Marbler (marbler bake)\nmtllib " + mtlFile.filename().string() + "\no " + objName + "\n";
     obj.reserve(mesh.positions.size() * 120 + mesh.indices.size() * 12);
     for (const glm::vec3& p : mesh.positions)
         obj += "v " + number(p.x) + " " + number(p.y) + " " + number(p.z) + "\n";

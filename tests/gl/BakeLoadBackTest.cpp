@@ -17,7 +17,9 @@
 namespace marbler {
 namespace {
 
-Genome slateBlock() { return loadGenome(test::dataDir() / "examples" / "slate-block.marble.json"); }
+Genome slateBlock() {
+    return loadGenome(test::dataDir() / "examples" / "slate-block.marble.json");
+}
 
 struct Baked {
     MeshData mesh;
@@ -38,7 +40,8 @@ TEST(BakeLoadBack, AssimpReadsEveryFormatWithItsTexture) {
         SCOPED_TRACE(name);
         writeTexturedMesh(baked.mesh, baked.texture, dir / name, "Slate cube");
         Assimp::Importer importer;
-        const aiScene* scene = importer.ReadFile((dir / name).string(), aiProcess_Triangulate | aiProcess_ValidateDataStructure);
+        const aiScene* scene =
+            importer.ReadFile((dir / name).string(), aiProcess_Triangulate | aiProcess_ValidateDataStructure);
         ASSERT_TRUE(scene && !(scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) << importer.GetErrorString();
         ASSERT_GE(scene->mNumMeshes, 1u);
         const aiMesh* mesh = scene->mMeshes[0];

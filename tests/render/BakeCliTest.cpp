@@ -15,14 +15,21 @@ namespace {
 using test::runMarbler;
 namespace fs = std::filesystem;
 
-std::string example(const std::string& name) { return (test::dataDir() / "examples" / name).string(); }
-std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
-long entries(const fs::path& dir) { return std::distance(fs::directory_iterator(dir), {}); }
+std::string example(const std::string& name) {
+    return (test::dataDir() / "examples" / name).string();
+}
+std::size_t lines(const std::string& text) {
+    return std::count(text.begin(), text.end(), '\n');
+}
+long entries(const fs::path& dir) {
+    return std::distance(fs::directory_iterator(dir), {});
+}
 
 TEST(BakeCli, WritesEachFormatWithItsCompanions) {
     const auto dir = test::outputDir("bake-cli-formats");
     const std::string solid = example("slate-block.marble.json");
-    auto r = runMarbler({"bake", solid, "--mesh", "vase", "-o", (dir / "vase.glb").string(), "--texture", "1024", "--quiet"});
+    auto r = runMarbler(
+        {"bake", solid, "--mesh", "vase", "-o", (dir / "vase.glb").string(), "--texture", "1024", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(r.err.empty()) << r.err;
     EXPECT_EQ(test::readFile(dir / "vase.glb").substr(0, 4), "glTF");
@@ -35,15 +42,16 @@ TEST(BakeCli, WritesEachFormatWithItsCompanions) {
     EXPECT_EQ(fs::file_size(dir / "cube.bin"), doc["buffers"][0]["byteLength"].get<std::uintmax_t>());
 
     // A flat design is projected onto the object.
-    r = runMarbler({"bake", example("flame-comb-vortex.marble.json"), "--mesh", "cube", "-o", (dir / "flat.obj").string(),
-                    "--texture", "128"});
+    r = runMarbler({"bake", example("flame-comb-vortex.marble.json"), "--mesh", "cube", "-o",
+                    (dir / "flat.obj").string(), "--texture", "128"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(test::readFile(dir / "flat.mtl").find("map_Kd flat.png"), std::string::npos);
     EXPECT_EQ(test::readImage8(dir / "flat.png").height, 128);
     EXPECT_EQ(entries(dir), 7) << "vase.glb, cube.gltf/.bin/.png, flat.obj/.mtl/.png and nothing else";
 }
 
-void expectFailure(const std::vector<std::string>& args, int exitCode, const std::string& mention, const fs::path& dir) {
+void expectFailure(const std::vector<std::string>& args, int exitCode, const std::string& mention,
+                   const fs::path& dir) {
     auto r = runMarbler(args);
     EXPECT_EQ(r.exitCode, exitCode) << r.err;
     EXPECT_EQ(lines(r.err), 1u) << r.err;
@@ -65,22 +73,25 @@ TEST(BakeCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     expectFailure({"bake", solid, "--mesh", "vase", "-o", out, "--aa", "fxaa"}, 2, "fxaa", dir);
     expectFailure({"bake", solid, "-o", out}, 2, "--mesh", dir);
     expectFailure({"bake", solid, "--mesh", "vase"}, 2, "-o", dir);
-    expectFailure({"bake", (dir.parent_path() / "absent.marble.json").string(), "--mesh", "vase", "-o", out}, 2,
-                  "absent.marble.json", dir);
+    expectFailure({"bake", (dir.parent_path() / "absent.marble.json").string(), "--mesh", "vase", "-o", out},
+                  2, "absent.marble.json", dir);
     expectFailure({"bake", solid, "--mesh", "vase", "--slices", "z", "-o", out}, 2, "--slices", dir);
     expectFailure({"bake", solid, "--slices", "w", "-o", (dir / "s").string()}, 2, "'w'", dir);
-    expectFailure({"bake", solid, "--slices", "z", "--count", "0", "-o", (dir / "s").string()}, 2, "--count", dir);
-    expectFailure({"bake", example("five-stones.marble.json"), "--slices", "z", "-o", (dir / "s").string()}, 2,
-                  "five-stones", dir);
+    expectFailure({"bake", solid, "--slices", "z", "--count", "0", "-o", (dir / "s").string()}, 2, "--count",
+                  dir);
+    expectFailure({"bake", example("five-stones.marble.json"), "--slices", "z", "-o", (dir / "s").string()},
+                  2, "five-stones", dir);
     // Not the input's fault: exit 1, the file named.
-    expectFailure({"bake", solid, "--mesh", "cube", "-o", (dir / "no" / "cube.glb").string(), "--texture", "64"}, 1,
-                  "cube.glb", dir);
+    expectFailure(
+        {"bake", solid, "--mesh", "cube", "-o", (dir / "no" / "cube.glb").string(), "--texture", "64"}, 1,
+        "cube.glb", dir);
 }
 
 TEST(BakeCli, SlicesAreTheCentresOfEqualLayers) {
     const auto dir = test::outputDir("bake-cli-slices");
     const std::string solid = example("slate-block.marble.json");
-    auto r = runMarbler({"bake", solid, "--slices", "y", "--count", "5", "--width", "64", "-o", (dir / "stack").string()});
+    auto r = runMarbler(
+        {"bake", solid, "--slices", "y", "--count", "5", "--width", "64", "-o", (dir / "stack").string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(entries(dir / "stack"), 5);
     // Layer 3 of 5 across a 1000-unit box: its centre is y = 700.
@@ -96,8 +107,8 @@ TEST(BakeCli, BakingOntoABuiltInObjectLoadsNoModule) {
     // The built-in objects and the writers are in the executable; only a mesh file needs assimp
     // (the window module), so a bake onto the vase starts as fast as a render.
     const auto dir = test::outputDir("bake-cli-modules");
-    auto r = runMarbler({"bake", example("slate-block.marble.json"), "--mesh", "cube", "-o", (dir / "c.glb").string(),
-                         "--texture", "64", "--quiet"},
+    auto r = runMarbler({"bake", example("slate-block.marble.json"), "--mesh", "cube", "-o",
+                         (dir / "c.glb").string(), "--texture", "64", "--quiet"},
                         {{"LD_DEBUG", "files"}});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_NE(r.err.find("libpng"), std::string::npos) << "LD_DEBUG should trace the loads";
@@ -109,8 +120,8 @@ TEST(BakeCli, BakingOntoABuiltInObjectLoadsNoModule) {
 TEST(BakeCli, HelpDescribesEveryOption) {
     auto r = runMarbler({"bake", "--help"});
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* option : {"-o", "--mesh", "--texture", "--aa", "--slices", "--count", "--width", "--height",
-                               "--threads", "--quiet", ".glb", ".gltf", ".obj"})
+    for (const char* option : {"-o", "--mesh", "--texture", "--aa", "--slices", "--count", "--width",
+                               "--height", "--threads", "--quiet", ".glb", ".gltf", ".obj"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
     r = runMarbler({"--help"});
     EXPECT_NE(r.out.find("bake"), std::string::npos);

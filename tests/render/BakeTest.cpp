@@ -1,9 +1,9 @@
 // Baking: the texture holds the design at the surface points behind its texels, generated UVs
 // never overlap, the dilation covers the seams, and the glTF, GLB and OBJ files are well formed.
 
+#include "marbler/Bake.h"
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
-#include "marbler/Bake.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
@@ -21,9 +21,13 @@
 namespace marbler {
 namespace {
 
-Genome example(const std::string& name) { return loadGenome(test::dataDir() / "examples" / name); }
+Genome example(const std::string& name) {
+    return loadGenome(test::dataDir() / "examples" / name);
+}
 
-std::array<std::uint8_t, 3> bytesOf(Color c) { return {c.r, c.g, c.b}; }
+std::array<std::uint8_t, 3> bytesOf(Color c) {
+    return {c.r, c.g, c.b};
+}
 
 std::array<std::uint8_t, 3> texel(const Image& image, int i, int j) {
     const std::uint8_t* p = image.row(j) + std::size_t(i) * 3;
@@ -40,7 +44,8 @@ glm::dvec3 windowPlacement(const Genome& genome, const MeshData& mesh, const glm
         hi = glm::max(hi, glm::dvec3(v));
     }
     double scale = 1e300;
-    for (int k = 0; k < 3; ++k) scale = std::min(scale, genome.size[k] / (hi[k] - lo[k]));
+    for (int k = 0; k < 3; ++k)
+        scale = std::min(scale, genome.size[k] / (hi[k] - lo[k]));
     return 0.5 * genome.size + (p - 0.5 * (lo + hi)) * scale;
 }
 
@@ -73,16 +78,19 @@ TEST(Bake, TexelsHoldTheSolidAtTheirSurfacePoints) {
     for (int pick = 0; pick < 600; ++pick) {
         const std::size_t t = random() % triangles;
         const std::uint32_t* v = &mesh.indices[t * 3];
-        const glm::dvec2 a = glm::dvec2(mesh.uvs[v[0]]) * double(n), b = glm::dvec2(mesh.uvs[v[1]]) * double(n),
+        const glm::dvec2 a = glm::dvec2(mesh.uvs[v[0]]) * double(n),
+                         b = glm::dvec2(mesh.uvs[v[1]]) * double(n),
                          c = glm::dvec2(mesh.uvs[v[2]]) * double(n);
         for (int j = int(std::min({a.y, b.y, c.y})); j <= int(std::max({a.y, b.y, c.y})); ++j)
             for (int i = int(std::min({a.x, b.x, c.x})); i <= int(std::max({a.x, b.x, c.x})); ++i) {
                 const glm::dvec3 w = weights(a, b, c, {i + 0.5, j + 0.5});
                 if (!(w.x > 1e-6 && w.y > 1e-6 && w.z > 1e-6)) continue;
-                const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) + w.y * glm::dvec3(mesh.positions[v[1]]) +
+                const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) +
+                                     w.y * glm::dvec3(mesh.positions[v[1]]) +
                                      w.z * glm::dvec3(mesh.positions[v[2]]);
                 const int index = reference.colorIndexAt(windowPlacement(genome, mesh, p));
-                const auto expected = bytesOf(index >= 0 ? genome.palette[std::size_t(index)] : genome.background);
+                const auto expected =
+                    bytesOf(index >= 0 ? genome.palette[std::size_t(index)] : genome.background);
                 const auto got = texel(baked.image, i, j);
                 if (got != expected) ++differing;
                 if (checked == 0) first = got;
@@ -115,7 +123,8 @@ TEST(Bake, AntialiasedTexelsAgreeWithSingleSamples) {
             const auto centre = texel(single, i, j);
             bool same = centre != background;
             for (int dj = -1; dj <= 1 && same; ++dj)
-                for (int di = -1; di <= 1 && same; ++di) same = texel(single, i + di, j + dj) == centre;
+                for (int di = -1; di <= 1 && same; ++di)
+                    same = texel(single, i + di, j + dj) == centre;
             if (!same) continue;
             ++uniform;
             if (texel(smooth, i, j) == centre) ++uniformSame;
@@ -136,10 +145,14 @@ long overlaps(const MeshData& mesh, int n) {
         const glm::dvec2 a = glm::dvec2(mesh.uvs[mesh.indices[t * 3]]) * double(n);
         const glm::dvec2 b = glm::dvec2(mesh.uvs[mesh.indices[t * 3 + 1]]) * double(n);
         const glm::dvec2 c = glm::dvec2(mesh.uvs[mesh.indices[t * 3 + 2]]) * double(n);
-        for (int j = std::max(0, int(std::min({a.y, b.y, c.y})) - 1); j <= std::min(n - 1, int(std::max({a.y, b.y, c.y})) + 1); ++j)
-            for (int i = std::max(0, int(std::min({a.x, b.x, c.x})) - 1); i <= std::min(n - 1, int(std::max({a.x, b.x, c.x})) + 1); ++i) {
+        for (int j = std::max(0, int(std::min({a.y, b.y, c.y})) - 1);
+             j <= std::min(n - 1, int(std::max({a.y, b.y, c.y})) + 1); ++j)
+            for (int i = std::max(0, int(std::min({a.x, b.x, c.x})) - 1);
+                 i <= std::min(n - 1, int(std::max({a.x, b.x, c.x})) + 1); ++i) {
                 const glm::dvec3 w = weights(a, b, c, {i + 0.5, j + 0.5});
-                if (w.x > 0.0 && w.y > 0.0 && w.z > 0.0 && hits[std::size_t(j) * std::size_t(n) + std::size_t(i)]++) ++twice;
+                if (w.x > 0.0 && w.y > 0.0 && w.z > 0.0 &&
+                    hits[std::size_t(j) * std::size_t(n) + std::size_t(i)]++)
+                    ++twice;
             }
     }
     return twice;
@@ -158,7 +171,8 @@ TEST(Bake, GeneratedUvsAreDisjointAndInTheUnitSquare) {
         for (std::size_t t = 0; t < triangles; ++t) {
             // The same surface triangle, vertex order (facing) kept.
             for (int k = 0; k < 3; ++k)
-                ASSERT_EQ(mesh.positions[mesh.indices[t * 3 + std::size_t(k)]], original.positions[original.indices[t * 3 + std::size_t(k)]]);
+                ASSERT_EQ(mesh.positions[mesh.indices[t * 3 + std::size_t(k)]],
+                          original.positions[original.indices[t * 3 + std::size_t(k)]]);
             const glm::dvec2 a = mesh.uvs[mesh.indices[t * 3]], b = mesh.uvs[mesh.indices[t * 3 + 1]],
                              c = mesh.uvs[mesh.indices[t * 3 + 2]];
             const double doubled = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
@@ -206,7 +220,8 @@ TEST(Bake, DilationCoversTheGuttersWithTheSurfaceColour) {
             bool near = false;
             for (int dj = -2; dj <= 2 && !near; ++dj)
                 for (int di = -2; di <= 2 && !near; ++di)
-                    near = i + di >= 0 && j + dj >= 0 && i + di < n && j + dj < n && texel(bare, i + di, j + dj) == ink;
+                    near = i + di >= 0 && j + dj >= 0 && i + di < n && j + dj < n &&
+                           texel(bare, i + di, j + dj) == ink;
             if (!near) continue;
             ++reached;
             if (texel(baked.image, i, j) != ink) ++missed;
@@ -280,7 +295,8 @@ std::string checkGltf(const nlohmann::json& doc, const std::string& bin) {
     const std::vector<float> p = floats(position);
     for (int k = 0; k < 3; ++k) {
         float lo = std::numeric_limits<float>::max(), hi = -lo;
-        for (std::size_t v = 0; v < vertices; ++v) lo = std::min(lo, p[v * 3 + std::size_t(k)]), hi = std::max(hi, p[v * 3 + std::size_t(k)]);
+        for (std::size_t v = 0; v < vertices; ++v)
+            lo = std::min(lo, p[v * 3 + std::size_t(k)]), hi = std::max(hi, p[v * 3 + std::size_t(k)]);
         EXPECT_EQ(position["min"][std::size_t(k)].get<float>(), lo);
         EXPECT_EQ(position["max"][std::size_t(k)].get<float>(), hi);
     }

@@ -1,10 +1,10 @@
 // "Bake onto object…" in the large view: offered for solid designs only, it writes the object
 // the design is shown on as glTF binary with the baked texture, and reports a bad format.
 
+#include "ui/BakeObject.h"
 #include "TestUtil.h"
 #include "WaitFor.h"
 #include "marbler/GenomeIO.h"
-#include "ui/BakeObject.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
 #include "ui/RenderService.h"
@@ -23,7 +23,9 @@
 namespace marbler::ui {
 namespace {
 
-Genome example(const char* name) { return loadGenome(test::dataDir() / "examples" / name); }
+Genome example(const char* name) {
+    return loadGenome(test::dataDir() / "examples" / name);
+}
 
 class BakeObjectTest : public ::testing::Test {
 protected:
@@ -55,8 +57,9 @@ TEST_F(BakeObjectTest, WritesTheObjectAsGlbWithTheDesignsName) {
     });
     QWidget parent;
     QStringList written;
-    QPushButton* button = makeBakeButton(&parent, [] { return example("slate-block.marble.json"); }, QStringLiteral("cube"),
-                                         [&](const QString& file) { written << file; }, 256);
+    QPushButton* button = makeBakeButton(
+        &parent, [] { return example("slate-block.marble.json"); }, QStringLiteral("cube"),
+        [&](const QString& file) { written << file; }, 256);
     button->click();
     MARBLER_WAIT(!written.isEmpty() || !mErrors.isEmpty(), 120000);
     ASSERT_TRUE(mErrors.isEmpty()) << mErrors.join(QStringLiteral("; ")).toStdString();
@@ -67,7 +70,8 @@ TEST_F(BakeObjectTest, WritesTheObjectAsGlbWithTheDesignsName) {
     ASSERT_TRUE(glb.open(QIODevice::ReadOnly));
     EXPECT_EQ(glb.read(4), QByteArray("glTF"));
     EXPECT_TRUE(button->isEnabled()) << "the button comes back once the bake is done";
-    EXPECT_EQ(QDir(mFiles.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("slate cube.glb")});
+    EXPECT_EQ(QDir(mFiles.path()).entryList(QDir::Files | QDir::Hidden),
+              QStringList{QStringLiteral("slate cube.glb")});
 }
 
 TEST_F(BakeObjectTest, AnotherFormatIsReportedAndNothingWritten) {
@@ -76,8 +80,9 @@ TEST_F(BakeObjectTest, AnotherFormatIsReportedAndNothingWritten) {
     });
     QWidget parent;
     QStringList written;
-    QPushButton* button = makeBakeButton(&parent, [] { return example("slate-block.marble.json"); }, QStringLiteral("cube"),
-                                         [&](const QString& file) { written << file; }, 256);
+    QPushButton* button = makeBakeButton(
+        &parent, [] { return example("slate-block.marble.json"); }, QStringLiteral("cube"),
+        [&](const QString& file) { written << file; }, 256);
     button->click();
     ASSERT_EQ(mErrors.size(), 1);
     EXPECT_TRUE(mErrors.front().contains(QStringLiteral("cube.fbx")));
@@ -89,13 +94,14 @@ TEST_F(BakeObjectTest, AnotherFormatIsReportedAndNothingWritten) {
 } // namespace marbler::ui
 
 int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
-        && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     // Keep the user's settings out of the tests; each process has settings of its own.
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
+    QApplication::setOrganizationName(
+        QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
     QApplication::setApplicationName(QStringLiteral("MarblerBakeObjectTest"));
     ::testing::InitGoogleTest(&argc, argv);
     const int status = RUN_ALL_TESTS();
