@@ -30,10 +30,10 @@ Bakes a design onto an object for other 3D tools: every texel of an N x N textur
 colour of the design at the point of the object's surface that the texel covers, the object
 placed in the design's box as the window shows it (a flat design is projected onto it along z:
 upright seen from the front). The object keeps its own texture coordinates when it has them
-within [0, 1]; otherwise each triangle gets its own patch of the texture (no two overlap), so
-the texture is a mosaic of triangles, seamless on the object. The object is written in its own
-units with its normals: .glb (glTF 2.0 binary, the PNG texture inside), .gltf (with OUT.bin and
-OUT.png beside it) or .obj (with OUT.mtl and OUT.png).
+within [0, 1]; otherwise each triangle, or pair of triangles sharing an edge, gets a patch of
+its own (no two overlap), so the texture is a mosaic that the object's UVs put back together.
+The object is written in its own units with its normals: .glb (glTF 2.0 binary, the PNG
+texture inside), .gltf (with OUT.bin and OUT.png beside it) or .obj (with OUT.mtl and OUT.png).
 
 With --slices, writes a solid design as N cross-sections across AXIS (x, y or z), the centres
 of N equal layers of the design box: DIR/slice-0000.png, ... (each as `marbler render --slice`

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cctype>
 #include <cmath>
@@ -65,20 +66,56 @@ bool hasUsableUvs(const MeshData& mesh) {
     return true;
 }
 
+namespace {
+
+/// For the pair of triangles t and t + 1: whether they share an edge (two vertex indices), as
+/// the two halves of a quad do, and if so the vertices in the order the quad's cell takes them:
+/// t's own vertex, the shared edge's two ends, t + 1's own vertex.
+bool sharedEdge(const MeshData& mesh, std::size_t t, std::uint32_t quad[4]) {
+    const std::uint32_t* a = &mesh.indices[t * 3];
+    const std::uint32_t* b = &mesh.indices[t * 3 + 3];
+    for (int k = 0; k < 3; ++k) {
+        // a's edge from a[k + 1] to a[k + 2], opposite a[k]; b holds it as b[m + 1], b[m + 2] in
+        // either order when the two triangles meet along it.
+        const std::uint32_t p = a[(k + 1) % 3], q = a[(k + 2) % 3];
+        for (int m = 0; m < 3; ++m) {
+            const std::uint32_t r = b[(m + 1) % 3], u = b[(m + 2) % 3];
+            if (((r == p && u == q) || (r == q && u == p)) && b[m] != a[k] && p != q) {
+                quad[0] = a[k];
+                quad[1] = p;
+                quad[2] = q;
+                quad[3] = b[m];
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+} // namespace
+
 MeshData withGeneratedUvs(const MeshData& mesh, int textureSize) {
     const std::size_t triangles = mesh.indices.size() / 3;
     if (triangles == 0) throw InputError("the mesh has no triangles");
     const std::size_t cells = (triangles + 1) / 2;
     const auto side = std::size_t(std::ceil(std::sqrt(double(cells))));
     const double cell = double(textureSize) / double(side); // texels
-    // Each triangle keeps `gutter` texels from its cell's edges, and `apart` from the diagonal
-    // (sqrt 2 times as much, since the diagonal's distance is measured across it), so dilation
-    // has room on every side.
+    std::vector<std::uint8_t> isQuad(cells, 0);
+    std::vector<std::array<std::uint32_t, 4>> quads(cells);
+    bool anySplit = false;
+    for (std::size_t c = 0; c < cells; ++c) {
+        isQuad[c] = 2 * c + 1 < triangles && sharedEdge(mesh, 2 * c, quads[c].data());
+        anySplit = anySplit || !isQuad[c];
+    }
+    // Each patch keeps `gutter` texels from its cell's edges. Two triangles that share an edge
+    // (a quad) share the cell's diagonal, so the texture runs on across it as the surface does;
+    // two that do not are drawn `apart` from it (sqrt 2 times as much, since the distance is
+    // measured across the diagonal), so dilation has room on every side.
     const double gutter = 1.5, apart = std::sqrt(2.0) * gutter;
-    const double leg = cell - 2.0 * gutter - apart;
-    if (leg < 3.0)
+    const double quadLeg = cell - 2.0 * gutter, splitLeg = quadLeg - apart;
+    if ((anySplit ? splitLeg : quadLeg) < 3.0)
         throw InputError("the mesh's " + std::to_string(triangles) +
-                         " triangles are too many for generated texture " + "coordinates in a " +
+                         " triangles are too many for generated texture coordinates in a " +
                          std::to_string(textureSize) + " texture (each would get under 3 " +
                          "texels); give a larger --texture or a mesh with its own texture coordinates");
 
@@ -90,30 +127,45 @@ MeshData withGeneratedUvs(const MeshData& mesh, int textureSize) {
     for (std::size_t t = 0; t < triangles; ++t) {
         const std::size_t c = t / 2;
         const double x0 = double(c % side) * cell, y0 = double(c / side) * cell;
-        // Lower-left half of the cell for the first of a pair, upper-right for the second, as
-        // a right isosceles triangle; the right angle goes to the vertex opposite the longest
-        // edge, the one nearest a right angle.
-        const bool firstOfPair = t % 2 == 0;
-        const glm::dvec2 rightAngle = firstOfPair ? glm::dvec2(x0 + gutter, y0 + gutter)
-                                                  : glm::dvec2(x0 + cell - gutter, y0 + cell - gutter);
-        const double along = firstOfPair ? leg : -leg;
-        const glm::dvec2 corner[3] = {rightAngle, rightAngle + glm::dvec2(along, 0.0),
-                                      rightAngle + glm::dvec2(0.0, along)};
         const std::uint32_t v[3] = {mesh.indices[t * 3], mesh.indices[t * 3 + 1], mesh.indices[t * 3 + 2]};
-        int right = 0;
-        double longest = -1.0;
-        for (int k = 0; k < 3; ++k) {
-            const double opposite = glm::length(glm::dvec3(mesh.positions[v[(k + 1) % 3]]) -
-                                                glm::dvec3(mesh.positions[v[(k + 2) % 3]]));
-            if (opposite > longest) {
-                longest = opposite;
-                right = k;
+        glm::dvec2 uvOf[3];
+        if (isQuad[c]) {
+            // The quad's corners: t's own vertex at the top left, the shared edge along the
+            // diagonal, t + 1's own vertex at the bottom right.
+            const glm::dvec2 corner[4] = {{x0 + gutter, y0 + gutter},
+                                          {x0 + cell - gutter, y0 + gutter},
+                                          {x0 + gutter, y0 + cell - gutter},
+                                          {x0 + cell - gutter, y0 + cell - gutter}};
+            for (int k = 0; k < 3; ++k)
+                for (int q = 0; q < 4; ++q)
+                    if (quads[c][std::size_t(q)] == v[k] && (q != (t % 2 == 0 ? 3 : 0))) uvOf[k] = corner[q];
+        } else {
+            // Lower-left half of the cell for the first of a pair, upper-right for the second,
+            // as a right isosceles triangle; the right angle goes to the vertex opposite the
+            // longest edge, the one nearest a right angle.
+            const bool firstOfPair = t % 2 == 0;
+            const glm::dvec2 rightAngle = firstOfPair ? glm::dvec2(x0 + gutter, y0 + gutter)
+                                                      : glm::dvec2(x0 + cell - gutter, y0 + cell - gutter);
+            const double along = firstOfPair ? splitLeg : -splitLeg;
+            const glm::dvec2 corner[3] = {rightAngle, rightAngle + glm::dvec2(along, 0.0),
+                                          rightAngle + glm::dvec2(0.0, along)};
+            int right = 0;
+            double longest = -1.0;
+            for (int k = 0; k < 3; ++k) {
+                const double opposite = glm::length(glm::dvec3(mesh.positions[v[(k + 1) % 3]]) -
+                                                    glm::dvec3(mesh.positions[v[(k + 2) % 3]]));
+                if (opposite > longest) {
+                    longest = opposite;
+                    right = k;
+                }
             }
+            for (int k = 0; k < 3; ++k)
+                uvOf[k] = corner[(k - right + 3) % 3];
         }
-        // The triangle keeps its vertex order (its facing); only the corners turn.
+        // The triangle keeps its vertex order (its facing).
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t source = v[k];
-            const glm::dvec2 uv = corner[(k - right + 3) % 3] / double(textureSize);
+            const glm::dvec2 uv = uvOf[k] / double(textureSize);
             out.positions.push_back(mesh.positions[source]);
             out.normals.push_back(source < mesh.normals.size() ? mesh.normals[source] : glm::vec3(0.0f));
             out.uvs.emplace_back(float(uv.x), float(uv.y));

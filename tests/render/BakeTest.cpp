@@ -188,6 +188,30 @@ TEST(Bake, GeneratedUvsAreDisjointAndInTheUnitSquare) {
     EXPECT_THROW(withGeneratedUvs(builtinMesh("teapot"), 256), InputError);
 }
 
+TEST(Bake, GeneratedUvsKeepQuadsWhole) {
+    // Two consecutive triangles that share an edge (each face of the cube, each cell of the
+    // sphere's grid) share their cell's diagonal: the shared vertices get the same UVs in both,
+    // so the texture runs on across the edge as the surface does.
+    for (const char* name : {"cube", "sphere"}) {
+        SCOPED_TRACE(name);
+        const MeshData original = builtinMesh(name);
+        const MeshData mesh = withGeneratedUvs(original, 2048);
+        std::size_t quads = 0;
+        for (std::size_t t = 0; t + 1 < original.indices.size() / 3; t += 2) {
+            std::size_t shared = 0;
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    if (original.indices[t * 3 + std::size_t(i)] ==
+                        original.indices[t * 3 + 3 + std::size_t(j)]) {
+                        ++shared;
+                        EXPECT_EQ(mesh.uvs[t * 3 + std::size_t(i)], mesh.uvs[t * 3 + 3 + std::size_t(j)]);
+                    }
+            if (shared == 2) ++quads;
+        }
+        EXPECT_EQ(quads, original.indices.size() / 6) << "every pair of the grid is a quad";
+    }
+}
+
 TEST(Bake, OwnUvsAreKeptOnlyWithinTheUnitSquare) {
     MeshData mesh = builtinMesh("cube");
     EXPECT_FALSE(hasUsableUvs(mesh));

@@ -33,13 +33,14 @@ struct MeshPlacement {
 };
 MeshPlacement placeMesh(const Genome& genome, const MeshData& mesh);
 
-/// Texture coordinates in which no two triangles overlap, one texel-wide gutter or more round each
-/// triangle: the mesh with every triangle's vertices of its own (positions and normals copied),
-/// the triangles paired into the square cells of a grid, each pair the two halves of its cell
-/// cut along the diagonal and drawn apart from it. Honest and simple: no texel serves two points
-/// of the surface; the price is a seam along every edge and texels stretched where a triangle is
-/// far from a right isosceles one. Throws InputError when the triangles are too many for the
-/// texture (a cell under about 8 texels).
+/// Texture coordinates in which no two triangles overlap, with a gutter of 1.5 texels or more
+/// round each patch: the mesh with every triangle's vertices of its own (positions and normals
+/// copied), consecutive triangles paired into the square cells of a grid, each pair the two
+/// halves of its cell on either side of the diagonal. A pair that shares an edge (a quad) shares
+/// the diagonal, so the texture runs on across that edge; any other pair is drawn apart from it.
+/// Honest and simple: no texel serves two points of the surface; the price is a seam round
+/// every cell and texels stretched where a quad is far from a square. Throws InputError when
+/// the triangles are too many for the texture (a side under 3 texels).
 MeshData withGeneratedUvs(const MeshData& mesh, int textureSize);
 
 /// Whether the mesh has texture coordinates that can be baked into: one per vertex, all within
