@@ -36,17 +36,21 @@ std::array<std::uint8_t, 3> texel(const Image& image, int i, int j) {
 
 /// The design point of a mesh point as the window places the mesh (GlRenderer::drawGBuffer),
 /// worked out here independently of placeMesh: bounding-box centre to the design box centre,
-/// scaled by the largest factor that keeps the box inside.
+/// scaled by the largest factor that keeps the box inside. A flat design: the x-y bounds fitted
+/// to its rectangle, +y up (docs/cli.md).
 glm::dvec3 windowPlacement(const Genome& genome, const MeshData& mesh, const glm::dvec3& p) {
     glm::dvec3 lo(1e300), hi(-1e300);
     for (const glm::vec3& v : mesh.positions) {
         lo = glm::min(lo, glm::dvec3(v));
         hi = glm::max(hi, glm::dvec3(v));
     }
+    const int axes = genome.dimension == 3 ? 3 : 2;
     double scale = 1e300;
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < axes; ++k)
         scale = std::min(scale, genome.size[k] / (hi[k] - lo[k]));
-    return 0.5 * genome.size + (p - 0.5 * (lo + hi)) * scale;
+    const glm::dvec3 q = (p - 0.5 * (lo + hi)) * scale;
+    if (genome.dimension == 2) return {0.5 * genome.size.x + q.x, 0.5 * genome.size.y - q.y, 0.0};
+    return 0.5 * genome.size + q;
 }
 
 /// Barycentric weights of q in (a, b, c), solved as q = a + beta (b - a) + gamma (c - a).
@@ -57,10 +61,14 @@ glm::dvec3 weights(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 q) {
     return {1.0 - beta - gamma, beta, gamma};
 }
 
-TEST(Bake, TexelsHoldTheSolidAtTheirSurfacePoints) {
-    const Genome genome = example("slate-block.marble.json");
+/// Bakes `genome` onto `meshName` without antialiasing and checks texel centres strictly inside
+/// triangles picked at random: the 3D point from the triangle's UVs, its colour by the CPU
+/// renderer. Exact, but for centres that land on an ink boundary within rounding (none
+/// expected; a few in a thousand would still be tolerated).
+void expectTexelsHoldTheDesign(const Genome& genome, const std::string& meshName) {
+    SCOPED_TRACE(meshName);
     const int n = 1024;
-    const MeshData mesh = withGeneratedUvs(builtinMesh("sphere"), n);
+    const MeshData mesh = withGeneratedUvs(builtinMesh(meshName), n);
     BakeSettings settings;
     settings.textureSize = n;
     settings.aa = "none";
@@ -68,9 +76,6 @@ TEST(Bake, TexelsHoldTheSolidAtTheirSurfacePoints) {
     ASSERT_EQ(baked.image.width, n);
     const CpuRenderer reference(genome);
 
-    // Texel centres strictly inside triangles picked at random: the 3D point from the
-    // triangle's UVs, its colour by the CPU renderer. Exact, but for centres that land on an ink
-    // boundary within rounding (none expected; a few in a thousand would still be tolerated).
     std::mt19937 random(5);
     int checked = 0, differing = 0, distinct = 0;
     std::array<std::uint8_t, 3> first{};
@@ -101,6 +106,15 @@ TEST(Bake, TexelsHoldTheSolidAtTheirSurfacePoints) {
     ASSERT_GT(checked, 5000);
     EXPECT_GT(distinct, checked / 20) << "the texels checked should not all show one colour";
     EXPECT_LE(differing, checked / 1000) << differing << " of " << checked << " texels differ";
+}
+
+TEST(Bake, TexelsHoldTheSolidAtTheirSurfacePoints) {
+    expectTexelsHoldTheDesign(example("slate-block.marble.json"), "sphere");
+    expectTexelsHoldTheDesign(example("slate-block.marble.json"), "teapot");
+}
+
+TEST(Bake, TexelsHoldAFlatDesignProjectedAlongZ) {
+    expectTexelsHoldTheDesign(example("flame-comb-vortex.marble.json"), "vase");
 }
 
 TEST(Bake, AntialiasedTexelsAgreeWithSingleSamples) {
