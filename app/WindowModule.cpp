@@ -5,6 +5,7 @@
 #include "marbler/Error.h"
 #include "marbler/gl/Backend.h"
 #include "marbler/gl/GlRenderer.h"
+#include "marbler/gl/Meshes.h"
 #include "ui/Workbench.h"
 
 #include <QSettings>
@@ -28,6 +29,8 @@ public:
     Image renderMesh(const Genome& genome, const gl::MeshSettings& settings) override {
         return renderer().renderMesh(genome, settings);
     }
+
+    MeshData loadMesh(const std::string& file) override { return gl::loadMesh(file); }
 
     GlReport probeGl() override {
         GlReport report;

@@ -2,10 +2,11 @@
 /// The boundary between the `marbler` executable and marbler-window.so, the module that holds
 /// everything that needs Qt: the workbench window and the OpenGL back end (with assimp for mesh
 /// files). The executable links neither, so the headless verbs start without loading them; the
-/// window, `render --gpu`, `render --mesh` and `doctor` load the module on first use
-/// (marbler/Modules.h).
+/// window, `render --gpu`, `render --mesh`, `bake --mesh FILE` and `doctor` load the module on
+/// first use (marbler/Modules.h).
 
 #include "marbler/Genome.h"
+#include "marbler/Mesh.h"
 #include "marbler/Sampling.h"
 #include "marbler/gl/Backend.h"    // GlProbe only: a plain struct
 #include "marbler/gl/GlRenderer.h" // MeshSettings only: a plain struct, no GL code
@@ -30,6 +31,9 @@ public:
     /// settings, RuntimeFailure when there is no GL 4.3 context or the driver fails.
     virtual Image render(const Genome& genome, const RenderSettings& settings) = 0;
     virtual Image renderMesh(const Genome& genome, const gl::MeshSettings& settings) = 0;
+    /// Reads a mesh file with assimp (gl::loadMesh), for `bake`. Throws InputError when it
+    /// cannot be read.
+    virtual MeshData loadMesh(const std::string& file) = 0;
     /// Probes OpenGL (makes an offscreen context when it can) for `marbler doctor`.
     virtual GlReport probeGl() = 0;
     /// The Qt version the module runs with.

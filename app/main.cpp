@@ -25,6 +25,10 @@ verbs:
                           a random genome; the same seed gives the same file
   breed OPERATOR PARENT... --seed N -o DIR
                           offspring by alter, recombine, swap or reinit
+  bake GENOME --mesh NAME|FILE -o OUT.{glb,gltf,obj}
+                          a design baked into an object's texture, for other 3D tools
+  bake GENOME --slices AXIS --count N -o DIR
+                          a solid design as a stack of cross-section images
   doctor                  what this machine gives Marbler: versions, OpenGL, the window's
                           renderer and why, the CPU kernel in use
 
@@ -53,6 +57,7 @@ int main(int argc, char** argv) {
         if (verb == "breed") return marbler::cli::runBreed(rest);
         if (verb == "doctor") return marbler::cli::runDoctor(rest);
         if (verb == "svg") return marbler::cli::runSvg(rest);
+        if (verb == "bake") return marbler::cli::runBake(rest);
         if (verb == "--help" || verb == "-h" || verb == "help") {
             std::cout << Usage;
             return marbler::cli::ExitOk;

@@ -4,6 +4,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Sampling.h"
+#include "ui/BakeObject.h"
 #include "ui/ErrorReport.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
@@ -286,6 +287,9 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     buttons->addWidget(save);
     buttons->addWidget(exportButton);
     buttons->addWidget(editor);
+    if (solid)
+        buttons->addWidget(makeBakeButton(this, [this] { return mGenome; }, mMesh,
+                                          [this](const QString& file) { emit fileSaved(file); }));
     buttons->addStretch();
     buttons->addWidget(close);
     auto* layout = new QVBoxLayout(this);

@@ -5,205 +5,8 @@
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <glm/geometric.hpp>
-#include <glm/mat3x3.hpp>
-#include <glm/vec2.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <functional>
-#include <numbers>
 
 namespace marbler::gl {
-namespace {
-
-constexpr float Pi = std::numbers::pi_v<float>;
-
-/// A regular grid of (u, v) in [0,1]^2 mapped by `point` (position, normal), triangulated;
-/// u wraps round (the seam shares positions but gets its own column so normals stay smooth).
-void addGrid(MeshData& mesh, int uSteps, int vSteps,
-             const std::function<void(float, float, glm::vec3&, glm::vec3&)>& point) {
-    auto base = std::uint32_t(mesh.positions.size());
-    for (int j = 0; j <= vSteps; ++j) {
-        for (int i = 0; i <= uSteps; ++i) {
-            glm::vec3 p, n;
-            point(float(i) / float(uSteps), float(j) / float(vSteps), p, n);
-            mesh.positions.push_back(p);
-            mesh.normals.push_back(n);
-        }
-    }
-    auto at = [&](int i, int j) { return base + std::uint32_t(j * (uSteps + 1) + i); };
-    for (int j = 0; j < vSteps; ++j) {
-        for (int i = 0; i < uSteps; ++i) {
-            mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-        }
-    }
-}
-
-/// A solid of revolution about +y from a profile (radius, height) running from the bottom axis
-/// point to the top axis point; normals from the profile's tangent, so the surface is smooth.
-void addLathe(MeshData& mesh, const std::vector<glm::vec2>& profile, int around) {
-    int steps = int(profile.size()) - 1;
-    addGrid(mesh, around, steps, [&](float u, float v, glm::vec3& p, glm::vec3& n) {
-        int k = int(std::lround(v * float(steps)));
-        glm::vec2 prev = profile[std::size_t(std::max(k - 1, 0))];
-        glm::vec2 next = profile[std::size_t(std::min(k + 1, steps))];
-        glm::vec2 tangent = next - prev;
-        glm::vec2 outward = glm::normalize(glm::vec2(tangent.y, -tangent.x));
-        float phi = 2.0f * Pi * u;
-        // With v running up the profile, this turning sense makes addGrid's triangles
-        // counter-clockwise seen from outside (front faces outward, as the cut plane assumes).
-        float c = std::cos(phi), s = std::sin(phi);
-        p = {profile[std::size_t(k)].x * c, profile[std::size_t(k)].y, profile[std::size_t(k)].x * s};
-        n = glm::normalize(glm::vec3(outward.x * c, outward.y, outward.x * s));
-    });
-}
-
-/// A tube of varying radius along a path (for the spout and handle of the teapot), ends closed.
-void addTube(MeshData& mesh, const std::function<glm::vec3(float)>& path, const std::function<float(float)>& radius,
-             int along, int around) {
-    auto frame = [&](float t, glm::vec3& x, glm::vec3& y, glm::vec3& z) {
-        float h = 1e-3f;
-        z = glm::normalize(path(std::min(t + h, 1.0f)) - path(std::max(t - h, 0.0f)));
-        glm::vec3 helper = std::abs(z.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0);
-        x = glm::normalize(glm::cross(helper, z));
-        y = glm::cross(z, x);
-    };
-    addGrid(mesh, around, along, [&](float u, float v, glm::vec3& p, glm::vec3& n) {
-        glm::vec3 x, y, z;
-        frame(v, x, y, z);
-        float phi = 2.0f * Pi * u;
-        n = std::cos(phi) * x - std::sin(phi) * y; // this sense winds the faces outward
-        p = path(v) + radius(v) * n;
-    });
-    for (float t : {0.0f, 1.0f}) {
-        glm::vec3 x, y, z;
-        frame(t, x, y, z);
-        glm::vec3 outward = t == 0.0f ? -z : z;
-        auto centre = std::uint32_t(mesh.positions.size());
-        mesh.positions.push_back(path(t));
-        mesh.normals.push_back(outward);
-        for (int i = 0; i <= around; ++i) {
-            float phi = 2.0f * Pi * float(i) / float(around);
-            mesh.positions.push_back(path(t) + radius(t) * (std::cos(phi) * x + std::sin(phi) * y));
-            mesh.normals.push_back(outward);
-        }
-        for (int i = 0; i < around; ++i) {
-            std::uint32_t a = centre + 1 + std::uint32_t(i), b = a + 1;
-            if (t == 0.0f)
-                mesh.indices.insert(mesh.indices.end(), {centre, b, a});
-            else
-                mesh.indices.insert(mesh.indices.end(), {centre, a, b});
-        }
-    }
-}
-
-MeshData sphere() {
-    // Same orientation as a lathe: v from the bottom pole to the top one.
-    MeshData mesh;
-    addGrid(mesh, 96, 48, [](float u, float v, glm::vec3& p, glm::vec3& n) {
-        float theta = Pi * v, phi = 2.0f * Pi * u;
-        n = {std::sin(theta) * std::cos(phi), -std::cos(theta), std::sin(theta) * std::sin(phi)};
-        p = n;
-    });
-    return mesh;
-}
-
-MeshData cube() {
-    // Per-face vertices: each face its own flat normal, so the shading has crisp edges while the
-    // marbling (a function of position only) runs on across them.
-    MeshData mesh;
-    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (const glm::vec3& n : normals) {
-        glm::vec3 u = std::abs(n.y) > 0.5f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-        glm::vec3 v = glm::cross(n, u);
-        auto base = std::uint32_t(mesh.positions.size());
-        for (auto [a, b] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
-            mesh.positions.push_back(n + a * u + b * v);
-            mesh.normals.push_back(n);
-        }
-        // u x v = n, so (0,1,2) runs counter-clockwise seen from outside.
-        mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    }
-    return mesh;
-}
-
-MeshData torus() {
-    // A circle of radius `minor` turned about +y, traversed so its outward normal is (cos t, sin t).
-    MeshData mesh;
-    const float major = 1.0f, minor = 0.4f;
-    addGrid(mesh, 128, 64, [&](float u, float v, glm::vec3& p, glm::vec3& n) {
-        float phi = 2.0f * Pi * u, t = 2.0f * Pi * v - Pi;
-        float c = std::cos(phi), s = std::sin(phi);
-        n = {std::cos(t) * c, std::sin(t), std::cos(t) * s};
-        p = glm::vec3((major + minor * std::cos(t)) * c, minor * std::sin(t), (major + minor * std::cos(t)) * s);
-    });
-    return mesh;
-}
-
-std::vector<glm::vec2> smoothProfile(const std::vector<glm::vec2>& keys, int perSegment) {
-    // Catmull-Rom through the key points, so lathe normals vary smoothly.
-    std::vector<glm::vec2> out;
-    for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
-        glm::vec2 p0 = keys[k == 0 ? 0 : k - 1], p1 = keys[k], p2 = keys[k + 1];
-        glm::vec2 p3 = keys[std::min(k + 2, keys.size() - 1)];
-        for (int s = 0; s < perSegment; ++s) {
-            float t = float(s) / float(perSegment);
-            float t2 = t * t, t3 = t2 * t;
-            out.push_back(0.5f * ((2.0f * p1) + (-p0 + p2) * t + (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t2
-                                  + (-p0 + 3.0f * p1 - 3.0f * p2 + p3) * t3));
-        }
-    }
-    out.push_back(keys.back());
-    for (glm::vec2& p : out) p.x = std::max(p.x, 0.0f);
-    return out;
-}
-
-MeshData vase() {
-    MeshData mesh;
-    std::vector<glm::vec2> keys = {{0.0f, -1.0f}, {0.45f, -1.0f}, {0.5f, -0.95f}, {0.62f, -0.6f}, {0.7f, -0.1f},
-                                   {0.55f, 0.35f}, {0.3f, 0.7f}, {0.28f, 0.85f}, {0.38f, 0.98f}, {0.3f, 1.0f},
-                                   {0.0f, 1.0f}};
-    addLathe(mesh, smoothProfile(keys, 8), 96);
-    return mesh;
-}
-
-MeshData teapot() {
-    // A lathe-turned body and lid with a tube spout and handle: teapot-like, not Newell's patches.
-    MeshData mesh;
-    std::vector<glm::vec2> keys = {{0.0f, -0.75f}, {0.55f, -0.75f}, {0.85f, -0.45f}, {0.95f, -0.05f}, {0.8f, 0.35f},
-                                   {0.55f, 0.5f},  {0.5f, 0.55f},   {0.3f, 0.62f},   {0.1f, 0.7f},   {0.12f, 0.82f},
-                                   {0.0f, 0.9f}};
-    addLathe(mesh, smoothProfile(keys, 8), 96);
-    addTube(
-        mesh,
-        [](float t) {
-            return glm::vec3(0.7f + 0.75f * t, -0.2f + 0.75f * t * t + 0.1f * t, 0.0f);
-        },
-        [](float t) { return 0.2f - 0.11f * t; }, 24, 24);
-    addTube(
-        mesh,
-        [](float t) {
-            float a = Pi * (0.5f - t * 1.05f) * 0.95f;
-            return glm::vec3(-0.85f - 0.38f * std::cos(a), 0.1f + 0.4f * std::sin(a), 0.0f);
-        },
-        [](float) { return 0.075f; }, 32, 16);
-    return mesh;
-}
-
-} // namespace
-
-std::vector<std::string> builtinMeshNames() { return {"sphere", "cube", "torus", "vase", "teapot"}; }
-
-MeshData builtinMesh(const std::string& name) {
-    if (name == "sphere") return sphere();
-    if (name == "cube") return cube();
-    if (name == "torus") return torus();
-    if (name == "vase") return vase();
-    if (name == "teapot") return teapot();
-    throw InputError("unknown built-in mesh \"" + name + "\" (sphere, cube, torus, vase, teapot, or a mesh file)");
-}
 
 MeshData loadMesh(const std::string& file) {
     Assimp::Importer importer;
@@ -213,6 +16,11 @@ MeshData loadMesh(const std::string& file) {
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
         throw InputError(file + ": cannot load mesh: " + importer.GetErrorString());
     MeshData mesh;
+    // Texture coordinates only when every mesh has them: a mix would leave some faces without.
+    bool everyMeshHasUvs = true;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+        if ((scene->mMeshes[m]->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) && !scene->mMeshes[m]->HasTextureCoords(0))
+            everyMeshHasUvs = false;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh* in = scene->mMeshes[m];
         if (!(in->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
@@ -222,6 +30,11 @@ MeshData loadMesh(const std::string& file) {
             mesh.positions.emplace_back(p.x, p.y, p.z);
             aiVector3D n = in->mNormals ? in->mNormals[v] : aiVector3D(0, 1, 0);
             mesh.normals.emplace_back(n.x, n.y, n.z);
+            if (everyMeshHasUvs) {
+                // assimp counts v upwards (OpenGL); MeshData counts it down from the top row.
+                const aiVector3D& t = in->mTextureCoords[0][v];
+                mesh.uvs.emplace_back(t.x, 1.0f - t.y);
+            }
         }
         for (unsigned f = 0; f < in->mNumFaces; ++f) {
             const aiFace& face = in->mFaces[f];

@@ -1,0 +1,266 @@
+// `marbler bake`: a design baked into an object's texture for other 3D tools (glTF, OBJ), or a
+// solid design as a stack of cross-sections (spec/cli.md).
+
+#include "cli/Cli.h"
+#include "marbler/Bake.h"
+#include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Mesh.h"
+
+#include "WindowModule.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+
+#include <unistd.h>
+
+namespace marbler::cli {
+namespace {
+namespace fs = std::filesystem;
+
+constexpr const char* Help = R"(usage: marbler bake GENOME --mesh NAME|FILE -o OUT.{glb,gltf,obj} [options]
+       marbler bake GENOME --slices AXIS [--count N] -o DIR [options]
+
+Bakes a design onto an object for other 3D tools: every texel of an N x N texture gets the
+colour of the design at the point of the object's surface that the texel covers, the object
+placed in the design's box as the window shows it (a flat design is projected onto it along z:
+upright seen from the front). The object keeps its own texture coordinates when it has them
+within [0, 1]; otherwise each triangle, or pair of triangles sharing an edge, gets a patch of
+its own (no two overlap), so the texture is a mosaic that the object's UVs put back together.
+The object is written in its own units with its normals: .glb (glTF 2.0 binary, the PNG
+texture inside), .gltf (with OUT.bin and OUT.png beside it) or .obj (with OUT.mtl and OUT.png).
+
+With --slices, writes a solid design as N cross-sections across AXIS (x, y or z), the centres
+of N equal layers of the design box: DIR/slice-0000.png, ... (each as `marbler render --slice`
+renders it), for voxel tools and print.
+
+Nothing is left behind unless every file is written; exit status 0 success, 2 bad usage or
+bad input, 1 any other failure.
+
+options:
+  -o, --output OUT          the mesh file (.glb, .gltf, .obj), or the folder for --slices
+  --mesh NAME|FILE          sphere, cube, torus, vase, teapot, or a mesh file assimp reads
+                            (OBJ, STL, PLY, glTF, ...)
+  --texture N               the texture's side in texels (default 2048, at most 16384)
+  --aa MODE                 samples a texel or pixel: none, rgss (default for the texture;
+                            none for slices), quincunx, grid2..grid8, checker4, rooks8
+  --slices AXIS             a stack of cross-sections across x, y or z instead of a mesh
+  --count N                 how many cross-sections (default 64, at most 10000)
+  --width W, --height H     the size of each cross-section (default 1024 on the longer side)
+  --threads N               worker threads (default: every core)
+  --progress                show progress on stderr even when it is not a terminal
+  --quiet                   no progress line
+  -h, --help                this text
+)";
+
+/// One progress line on stderr, rewritten in place.
+class Progress {
+public:
+    Progress(bool enabled, std::string what)
+        : mEnabled(enabled)
+        , mWhat(std::move(what)) {}
+    ~Progress() { finish(); }
+    void update(double fraction) {
+        if (!mEnabled) return;
+        std::lock_guard lock(mMutex);
+        const int percent = static_cast<int>(fraction * 100.0);
+        if (percent == mLast) return;
+        mLast = percent;
+        std::cerr << "\r" << mWhat << " " << percent << "%" << std::flush;
+        mShown = true;
+    }
+    void finish() {
+        if (mShown) std::cerr << "\r" << std::string(mWhat.size() + 6, ' ') << "\r" << std::flush;
+        mShown = false;
+    }
+
+private:
+    bool mEnabled;
+    std::string mWhat;
+    bool mShown = false;
+    int mLast = -1;
+    std::mutex mMutex;
+};
+
+std::string lower(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return text;
+}
+
+/// A built-in object, or a mesh file read by assimp in the window module (the executable links
+/// no assimp, so only a bake from a file pays for loading it).
+MeshData meshOf(const std::string& nameOrFile) {
+    if (isBuiltinMesh(nameOrFile)) return builtinMesh(nameOrFile);
+    std::error_code ec;
+    if (!fs::is_regular_file(nameOrFile, ec))
+        throw InputError(
+            "--mesh: '" + nameOrFile +
+            "' is neither a built-in object (sphere, cube, torus, vase, teapot) nor a mesh file");
+#ifdef MARBLER_HAVE_GUI
+    return app::windowModule().loadMesh(nameOrFile);
+#else
+    throw RuntimeFailure(
+        "--mesh FILE needs assimp, which comes with the window module, and this build has none "
+        "(built without MARBLER_BUILD_GUI); the built-in objects work");
+#endif
+}
+
+int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& outFile) {
+    const std::string extension = lower(outFile.extension().string());
+    const std::vector<std::string> known = texturedMeshExtensions();
+    if (std::find(known.begin(), known.end(), extension) == known.end())
+        throw InputError("'" + outFile.string() + "': unknown mesh format '" + extension +
+                         "' (use .glb, .gltf or .obj)");
+    BakeSettings settings;
+    settings.textureSize = parseIntOption(args, "texture", 2048, 1, MaxBakeTexture);
+    settings.aa = args.get("aa").value_or("rgss");
+    aaPattern(settings.aa);
+    settings.threads = parseIntOption(args, "threads", 0, 0, 1024);
+
+    std::vector<std::string> warnings;
+    const Genome genome = loadGenome(genomeName, &warnings);
+    for (const std::string& warning : warnings)
+        std::cerr << "marbler bake: warning: " << warning << '\n';
+    if (genome.source)
+        throw InputError(genomeName +
+                         ": a design with a source image cannot be baked yet (only inks and the background)");
+
+    const std::string meshName = *args.get("mesh");
+    MeshData mesh = meshOf(meshName);
+    if (!hasUsableUvs(mesh)) {
+        if (!mesh.uvs.empty())
+            std::cerr << "marbler bake: warning: " << meshName
+                      << ": its texture coordinates leave [0, 1] (tiled or mirrored); baking into new ones\n";
+        try {
+            mesh = withGeneratedUvs(mesh, settings.textureSize);
+        } catch (const InputError& e) {
+            throw InputError("--mesh " + meshName + ": " + e.what());
+        }
+    }
+
+    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
+    Progress progress(showProgress, "baking");
+    RenderControl control;
+    control.progress = [&](double f) { progress.update(f); };
+    const BakedTexture baked = bakeTexture(genome, mesh, settings, &control);
+    progress.finish();
+    std::string name =
+        genome.meta.is_object() && genome.meta.contains("name") && genome.meta["name"].is_string()
+            ? genome.meta["name"].get<std::string>()
+            : std::string("marbled");
+    writeTexturedMesh(mesh, baked.image, outFile, name);
+    return ExitOk;
+}
+
+int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& outDir) {
+    const std::string axisText = lower(*args.get("slices"));
+    Slice slice;
+    if (axisText == "x")
+        slice.axis = 0;
+    else if (axisText == "y")
+        slice.axis = 1;
+    else if (axisText == "z")
+        slice.axis = 2;
+    else
+        throw InputError("--slices: '" + *args.get("slices") + "' is not an axis (x, y or z)");
+    const int count = parseIntOption(args, "count", 64, 1, 10000);
+    RenderSettings settings;
+    settings.aa = args.get("aa").value_or("none");
+    aaPattern(settings.aa);
+    settings.threads = parseIntOption(args, "threads", 0, 0, 1024);
+    const bool hasW = args.has("width"), hasH = args.has("height");
+    const int width = parseIntOption(args, "width", 0, 1, MaxImageSide);
+    const int height = parseIntOption(args, "height", 0, 1, MaxImageSide);
+
+    std::vector<std::string> warnings;
+    const Genome genome = loadGenome(genomeName, &warnings);
+    for (const std::string& warning : warnings)
+        std::cerr << "marbler bake: warning: " << warning << '\n';
+    if (genome.dimension != 3)
+        throw InputError(genomeName + ": --slices needs a solid (3D) genome; this one is flat (2D)");
+
+    // The size of each section as `render` picks it: the plane's aspect kept for a missing side.
+    slice.value = 0.5 * genome.size[slice.axis];
+    settings.slice = slice;
+    const Region plane = effectiveRegion(genome, settings);
+    const double aspect = (plane.x1 - plane.x0) / (plane.y1 - plane.y0);
+    auto pixels = [](double value) { return std::clamp(int(std::lround(value)), 1, MaxImageSide); };
+    settings.width = hasW            ? width
+                     : hasH          ? pixels(height * aspect)
+                     : aspect >= 1.0 ? 1024
+                                     : pixels(1024 * aspect);
+    settings.height = hasH            ? height
+                      : hasW          ? pixels(width / aspect)
+                      : aspect >= 1.0 ? pixels(1024 / aspect)
+                                      : 1024;
+    checkRenderSettings(genome, settings);
+
+    std::error_code ec;
+    if (fs::exists(outDir, ec) && !fs::is_directory(outDir, ec))
+        throw InputError("-o '" + outDir.string() + "': not a folder (--slices writes a folder of images)");
+    const bool madeDir = !fs::exists(outDir, ec);
+    fs::create_directories(outDir, ec);
+    if (ec) throw RuntimeFailure("cannot create the folder '" + outDir.string() + "': " + ec.message());
+
+    // Each image is written atomically; a failure part way removes the ones this run wrote.
+    std::vector<fs::path> written;
+    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
+    Progress progress(showProgress, "slicing");
+    try {
+        for (int k = 0; k < count; ++k) {
+            settings.slice->value = (k + 0.5) * genome.size[slice.axis] / count;
+            char name[32];
+            std::snprintf(name, sizeof name, "slice-%04d.png", k);
+            const fs::path file = outDir / name;
+            renderToFile(genome, settings, file);
+            written.push_back(file);
+            progress.update(double(k + 1) / count);
+        }
+    } catch (...) {
+        for (const fs::path& file : written)
+            fs::remove(file, ec);
+        if (madeDir) fs::remove(outDir, ec);
+        throw;
+    }
+    return ExitOk;
+}
+
+int bake(std::span<const std::string> words) {
+    const Args args = parseArgs(
+        words, {"o", "output", "mesh", "texture", "aa", "slices", "count", "width", "height", "threads"},
+        {"quiet", "progress", "help", "h"});
+    if (args.has("help") || args.has("h")) {
+        std::cout << Help;
+        return ExitOk;
+    }
+    if (args.positional.size() != 1)
+        throw InputError(args.positional.empty() ? "a genome file is required (see marbler bake --help)"
+                                                 : "exactly one genome file is expected (got " +
+                                                       std::to_string(args.positional.size()) + ")");
+    const std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
+    if (!output || output->empty()) throw InputError("-o OUT is required (see marbler bake --help)");
+    const bool slices = args.has("slices");
+    if (slices == args.has("mesh"))
+        throw InputError("give either --mesh NAME|FILE or --slices AXIS (see marbler bake --help)");
+    for (const char* meshOnly : {"texture"})
+        if (slices && args.has(meshOnly))
+            throw InputError(std::string("--") + meshOnly + " only applies with --mesh");
+    for (const char* slicesOnly : {"count", "width", "height"})
+        if (!slices && args.has(slicesOnly))
+            throw InputError(std::string("--") + slicesOnly + " only applies with --slices");
+    return slices ? bakeSlices(args, args.positional[0], *output)
+                  : bakeMesh(args, args.positional[0], *output);
+}
+
+} // namespace
+
+int runBake(std::span<const std::string> words) {
+    return guarded("bake", [&] { return bake(words); });
+}
+
+} // namespace marbler::cli

@@ -1,0 +1,34 @@
+#pragma once
+/// Triangle meshes to marble: the built-in objects, generated in code so that the headless verbs
+/// have them without assimp (mesh files are read by the GL back end, marbler/gl/Meshes.h).
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace marbler {
+
+/// An indexed triangle mesh with per-vertex normals and, optionally, texture coordinates.
+struct MeshData {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    /// One per vertex, or empty when the mesh has none. Image convention: (0, 0) is the top-left
+    /// corner of the texture and v grows downwards (as in glTF; OBJ and assimp count v upwards).
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint32_t> indices; ///< three per triangle
+};
+
+/// The built-in objects: sphere, cube, torus, vase, teapot.
+std::vector<std::string> builtinMeshNames();
+
+/// Whether `name` is one of builtinMeshNames().
+bool isBuiltinMesh(const std::string& name);
+
+/// A built-in object (+y up, about unit size, no texture coordinates). Throws InputError for an
+/// unknown name.
+MeshData builtinMesh(const std::string& name);
+
+} // namespace marbler

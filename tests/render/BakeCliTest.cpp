@@ -1,0 +1,131 @@
+// `marbler bake` through the executable: the files it writes, the stack of cross-sections, exit
+// codes, one-line errors and no partial output.
+
+#include "RenderTestUtil.h"
+#include "TestUtil.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+namespace marbler {
+namespace {
+
+using test::runMarbler;
+namespace fs = std::filesystem;
+
+std::string example(const std::string& name) {
+    return (test::dataDir() / "examples" / name).string();
+}
+std::size_t lines(const std::string& text) {
+    return std::count(text.begin(), text.end(), '\n');
+}
+long entries(const fs::path& dir) {
+    return std::distance(fs::directory_iterator(dir), {});
+}
+
+TEST(BakeCli, WritesEachFormatWithItsCompanions) {
+    const auto dir = test::outputDir("bake-cli-formats");
+    const std::string solid = example("slate-block.marble.json");
+    auto r = runMarbler(
+        {"bake", solid, "--mesh", "vase", "-o", (dir / "vase.glb").string(), "--texture", "1024", "--quiet"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+    EXPECT_EQ(test::readFile(dir / "vase.glb").substr(0, 4), "glTF");
+
+    r = runMarbler({"bake", solid, "--mesh", "cube", "-o", (dir / "cube.gltf").string(), "--texture", "256"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json doc = nlohmann::json::parse(test::readFile(dir / "cube.gltf"));
+    EXPECT_EQ(doc["asset"]["version"], "2.0");
+    EXPECT_EQ(test::readImage8(dir / "cube.png").width, 256);
+    EXPECT_EQ(fs::file_size(dir / "cube.bin"), doc["buffers"][0]["byteLength"].get<std::uintmax_t>());
+
+    // A flat design is projected onto the object.
+    r = runMarbler({"bake", example("flame-comb-vortex.marble.json"), "--mesh", "cube", "-o",
+                    (dir / "flat.obj").string(), "--texture", "128"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(test::readFile(dir / "flat.mtl").find("map_Kd flat.png"), std::string::npos);
+    EXPECT_EQ(test::readImage8(dir / "flat.png").height, 128);
+    EXPECT_EQ(entries(dir), 7) << "vase.glb, cube.gltf/.bin/.png, flat.obj/.mtl/.png and nothing else";
+}
+
+void expectFailure(const std::vector<std::string>& args, int exitCode, const std::string& mention,
+                   const fs::path& dir) {
+    auto r = runMarbler(args);
+    EXPECT_EQ(r.exitCode, exitCode) << r.err;
+    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
+    for (const auto& entry : fs::directory_iterator(dir))
+        ADD_FAILURE() << "left behind: " << entry.path();
+}
+
+TEST(BakeCli, BadInputExitsTwoWithOneLineAndNoOutput) {
+    const auto dir = test::outputDir("bake-cli-bad");
+    const std::string out = (dir / "out.glb").string();
+    const std::string solid = example("slate-block.marble.json");
+    expectFailure({"bake", solid, "--mesh", "dodecahedron", "-o", out}, 2, "dodecahedron", dir);
+    expectFailure({"bake", solid, "--mesh", "vase", "-o", (dir / "out.fbx").string()}, 2, "out.fbx", dir);
+    expectFailure({"bake", solid, "--mesh", "vase", "-o", out, "--texture", "16385"}, 2, "--texture", dir);
+    expectFailure({"bake", solid, "--mesh", "vase", "-o", out, "--texture", "0"}, 2, "--texture", dir);
+    expectFailure({"bake", solid, "--mesh", "vase", "-o", out, "--texture", "big"}, 2, "--texture", dir);
+    expectFailure({"bake", solid, "--mesh", "teapot", "-o", out, "--texture", "256"}, 2, "teapot", dir);
+    expectFailure({"bake", solid, "--mesh", "vase", "-o", out, "--aa", "fxaa"}, 2, "fxaa", dir);
+    expectFailure({"bake", solid, "-o", out}, 2, "--mesh", dir);
+    expectFailure({"bake", solid, "--mesh", "vase"}, 2, "-o", dir);
+    expectFailure({"bake", (dir.parent_path() / "absent.marble.json").string(), "--mesh", "vase", "-o", out},
+                  2, "absent.marble.json", dir);
+    expectFailure({"bake", solid, "--mesh", "vase", "--slices", "z", "-o", out}, 2, "--slices", dir);
+    expectFailure({"bake", solid, "--slices", "w", "-o", (dir / "s").string()}, 2, "'w'", dir);
+    expectFailure({"bake", solid, "--slices", "z", "--count", "0", "-o", (dir / "s").string()}, 2, "--count",
+                  dir);
+    expectFailure({"bake", example("five-stones.marble.json"), "--slices", "z", "-o", (dir / "s").string()},
+                  2, "five-stones", dir);
+    // Not the input's fault: exit 1, the file named.
+    expectFailure(
+        {"bake", solid, "--mesh", "cube", "-o", (dir / "no" / "cube.glb").string(), "--texture", "64"}, 1,
+        "cube.glb", dir);
+}
+
+TEST(BakeCli, SlicesAreTheCentresOfEqualLayers) {
+    const auto dir = test::outputDir("bake-cli-slices");
+    const std::string solid = example("slate-block.marble.json");
+    auto r = runMarbler(
+        {"bake", solid, "--slices", "y", "--count", "5", "--width", "64", "-o", (dir / "stack").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(entries(dir / "stack"), 5);
+    // Layer 3 of 5 across a 1000-unit box: its centre is y = 700.
+    r = runMarbler({"render", solid, "--slice", "y=700", "--width", "64", "-o", (dir / "y700.png").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Image slice = test::readImage8(dir / "stack" / "slice-0003.png");
+    EXPECT_EQ(slice.width, 64);
+    EXPECT_EQ(slice.rgb, test::readImage8(dir / "y700.png").rgb);
+    EXPECT_NE(slice.rgb, test::readImage8(dir / "stack" / "slice-0002.png").rgb);
+}
+
+TEST(BakeCli, BakingOntoABuiltInObjectLoadsNoModule) {
+    // The built-in objects and the writers are in the executable; only a mesh file needs assimp
+    // (the window module), so a bake onto the vase starts as fast as a render.
+    const auto dir = test::outputDir("bake-cli-modules");
+    auto r = runMarbler({"bake", example("slate-block.marble.json"), "--mesh", "cube", "-o",
+                         (dir / "c.glb").string(), "--texture", "64", "--quiet"},
+                        {{"LD_DEBUG", "files"}});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    ASSERT_NE(r.err.find("libpng"), std::string::npos) << "LD_DEBUG should trace the loads";
+    EXPECT_EQ(r.err.find("marbler-window.so"), std::string::npos);
+    EXPECT_EQ(r.err.find("marbler-imageio.so"), std::string::npos);
+    EXPECT_EQ(r.err.find("assimp"), std::string::npos);
+}
+
+TEST(BakeCli, HelpDescribesEveryOption) {
+    auto r = runMarbler({"bake", "--help"});
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char* option : {"-o", "--mesh", "--texture", "--aa", "--slices", "--count", "--width",
+                               "--height", "--threads", "--quiet", ".glb", ".gltf", ".obj"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << option;
+    r = runMarbler({"--help"});
+    EXPECT_NE(r.out.find("bake"), std::string::npos);
+}
+
+} // namespace
+} // namespace marbler
