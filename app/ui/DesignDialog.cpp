@@ -5,6 +5,7 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Sampling.h"
 #include "ui/ErrorReport.h"
+#include "ui/GenomeClipboard.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
@@ -272,6 +273,12 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     auto* exportButton = new QPushButton(tr("&Export image…"), this);
     exportButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     exportButton->setToolTip(tr("Render the design to PNG, TIFF, EXR or JPEG at any size (Ctrl+E)"));
+    auto* copy = new QPushButton(tr("&Copy genome"), this);
+    copy->setObjectName(QStringLiteral("copyGenome"));
+    copy->setShortcut(QKeySequence::Copy);
+    copy->setToolTip(tr("Put the design's genome on the clipboard as text, to paste into the workbench or "
+                        "anywhere else (%1)")
+                         .arg(QKeySequence(QKeySequence::Copy).toString(QKeySequence::NativeText)));
     auto* editor = new QPushButton(tr("Open in editor"), this);
     editor->setEnabled(false);
     editor->setToolTip(tr("The editor arrives in a later version"));
@@ -280,11 +287,13 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
         if (const QString file = saveGenomeWithDialog(this, mGenome); !file.isEmpty()) emit fileSaved(file);
     });
     connect(exportButton, &QPushButton::clicked, this, &DesignDialog::exportImage);
+    connect(copy, &QPushButton::clicked, this, &DesignDialog::copyGenome);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(save);
     buttons->addWidget(exportButton);
+    buttons->addWidget(copy);
     buttons->addWidget(editor);
     buttons->addStretch();
     buttons->addWidget(close);
@@ -475,6 +484,12 @@ void DesignDialog::exportImage() {
     settings.setValue(QStringLiteral("files/exportExtension"), QStringLiteral(".") + QFileInfo(file).suffix().toLower());
 
     exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi());
+}
+
+void DesignDialog::copyGenome() {
+    copyGenomeToClipboard(mGenome);
+    const LineageInfo info = lineageOf(mGenome);
+    emit genomeCopied(info.name.isEmpty() ? tr("the design") : info.name);
 }
 
 bool DesignDialog::saveTo(const QString& file) {
