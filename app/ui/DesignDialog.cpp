@@ -10,6 +10,7 @@
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -275,7 +276,6 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     exportButton->setToolTip(tr("Render the design to PNG, TIFF, EXR or JPEG at any size (Ctrl+E)"));
     auto* copy = new QPushButton(tr("&Copy genome"), this);
     copy->setObjectName(QStringLiteral("copyGenome"));
-    copy->setShortcut(QKeySequence::Copy);
     copy->setToolTip(tr("Put the design's genome on the clipboard as text, to paste into the workbench or "
                         "anywhere else (%1)")
                          .arg(QKeySequence(QKeySequence::Copy).toString(QKeySequence::NativeText)));
@@ -288,6 +288,12 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     });
     connect(exportButton, &QPushButton::clicked, this, &DesignDialog::exportImage);
     connect(copy, &QPushButton::clicked, this, &DesignDialog::copyGenome);
+    // Ctrl+C as an action of the dialog, whichever of its widgets has the focus.
+    auto* copyAction = new QAction(tr("Copy genome"), this);
+    copyAction->setObjectName(QStringLiteral("copyGenomeAction"));
+    copyAction->setShortcut(QKeySequence::Copy);
+    connect(copyAction, &QAction::triggered, this, &DesignDialog::copyGenome);
+    addAction(copyAction);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
     auto* buttons = new QHBoxLayout;
