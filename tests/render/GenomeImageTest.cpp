@@ -10,6 +10,7 @@
 #include "marbler/GenomeImage.h"
 
 #include <gtest/gtest.h>
+#include <tiffio.h>
 #include <zlib.h>
 
 #include <cstdint>
@@ -201,6 +202,31 @@ TEST(GenomeImage, XmpInTheFormsOtherToolsWrite) {
     EXPECT_FALSE(genomeFromXmp("<r xmlns:marbler=\"http://example.com/\"><marbler:genome>{}</marbler:genome></r>"));
     EXPECT_FALSE(genomeFromXmp(std::string("<r xmlns:m=\"") + XmpNamespace + "\"><m:genomes>{}</m:genomes></r>"));
     EXPECT_FALSE(genomeFromXmp(""));
+}
+
+TEST(GenomeImage, ATiffDescriptionHoldingAGenomeIsReadToo) {
+    // As a tool leaves it that keeps the description but not the XMP packet.
+    const fs::path dir = test::outputDir("genome-image-description");
+    auto writeTiff = [&](const fs::path& file, const char* description) {
+        TIFF* tiff = TIFFOpen(file.c_str(), "w");
+        ASSERT_NE(tiff, nullptr);
+        TIFFSetField(tiff, TIFFTAG_IMAGEWIDTH, 1u);
+        TIFFSetField(tiff, TIFFTAG_IMAGELENGTH, 1u);
+        TIFFSetField(tiff, TIFFTAG_SAMPLESPERPIXEL, 3);
+        TIFFSetField(tiff, TIFFTAG_BITSPERSAMPLE, 8);
+        TIFFSetField(tiff, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_RGB);
+        TIFFSetField(tiff, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+        TIFFSetField(tiff, TIFFTAG_IMAGEDESCRIPTION, description);
+        unsigned char pixel[3] = {1, 2, 3};
+        EXPECT_GE(TIFFWriteScanline(tiff, pixel, 0, 0), 0);
+        TIFFClose(tiff);
+    };
+    const std::string text = serializeGenome(example("five-stones.marble.json"));
+    writeTiff(dir / "described.tif", text.c_str());
+    EXPECT_EQ(loadDesign(dir / "described.tif"), example("five-stones.marble.json"));
+    // A description that is no genome is just a description.
+    writeTiff(dir / "scan.tif", "Scanned at 600 dpi");
+    EXPECT_THROW(loadDesign(dir / "scan.tif"), InputError);
 }
 
 TEST(GenomeImage, RelativeSourcesResolveAgainstTheImagesFolder) {
