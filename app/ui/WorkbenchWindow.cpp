@@ -1325,6 +1325,8 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
     menu.addAction(tr("Keep as favourite"), this, [this, index] { keepFavourite(index); })
         ->setShortcut(QKeySequence(Qt::Key_F));
     menu.addAction(tr("Save design…"), this, [this, index] { saveDesign(index); });
+    menu.addAction(tr("Copy design"), this, [this, index] { copyDesign(index); })
+        ->setShortcut(mCopyDesign->shortcut());
     menu.addSeparator();
     const Locks locks = locksOf(*g);
     const auto addLock = [&](const QString& text, const QString& tip, bool Locks::*field) {
