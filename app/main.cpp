@@ -32,7 +32,8 @@ verbs:
   doctor                  what this machine gives Marbler: versions, OpenGL, the window's
                           renderer and why, the CPU kernel in use
 
-'marbler VERB --help' describes each verb's options.
+GENOME is a genome file (.marble.json) or a PNG or TIFF image Marbler wrote: every PNG and TIFF
+it writes carries its genome. 'marbler VERB --help' describes each verb's options.
 exit status: 0 success, 2 bad usage or bad input, 1 any other failure.
 )";
 

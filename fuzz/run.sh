@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the genome loader: configures a clang build with libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer in build-fuzz, then runs fuzz_genome for the given seconds
-# (default 60) from the committed corpus. Exits non-zero on a finding; the crashing input is
+# (default 60) from the committed corpus, and fuzz_image (genomes inside PNG and TIFF images)
+# for half as long from fuzz/corpus-image. Exits non-zero on a finding; the crashing input is
 # left in build-fuzz/findings/.
 #   fuzz/run.sh [SECONDS]
 set -euo pipefail
@@ -13,12 +14,15 @@ cmake -S . -B "$BUILD" -G Ninja \
     -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DMARBLER_FUZZ=ON -DMARBLER_SANITIZE=ON \
     -DMARBLER_BUILD_TESTS=OFF -DMARBLER_BUILD_GUI=OFF -DMARBLER_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$BUILD" --target fuzz_genome -j "$(nproc)"
+cmake --build "$BUILD" --target fuzz_genome fuzz_image -j "$(nproc)"
 
 # New inputs go to a corpus under the build folder; the committed seeds are only read.
-mkdir -p "$BUILD/corpus" "$BUILD/findings"
+mkdir -p "$BUILD/corpus" "$BUILD/corpus-image" "$BUILD/findings"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 "$BUILD/fuzz/fuzz_genome" "$BUILD/corpus" fuzz/corpus \
     -max_total_time="$SECONDS_TO_RUN" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
     -dict=fuzz/genome.dict -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+"$BUILD/fuzz/fuzz_image" "$BUILD/corpus-image" fuzz/corpus-image \
+    -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=2048 -timeout=10 \
+    -artifact_prefix="$BUILD/findings/" -print_final_stats=1

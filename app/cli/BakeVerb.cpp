@@ -122,10 +122,7 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
     aaPattern(settings.aa);
     settings.threads = parseIntOption(args, "threads", 0, 0, 1024);
 
-    std::vector<std::string> warnings;
-    const Genome genome = loadGenome(genomeName, &warnings);
-    for (const std::string& warning : warnings)
-        std::cerr << "marbler bake: warning: " << warning << '\n';
+    const Genome genome = loadGenomeArgument("bake", genomeName);
     if (genome.source)
         throw InputError(genomeName +
                          ": a design with a source image cannot be baked yet (only inks and the background)");
@@ -177,10 +174,7 @@ int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& 
     const int width = parseIntOption(args, "width", 0, 1, MaxImageSide);
     const int height = parseIntOption(args, "height", 0, 1, MaxImageSide);
 
-    std::vector<std::string> warnings;
-    const Genome genome = loadGenome(genomeName, &warnings);
-    for (const std::string& warning : warnings)
-        std::cerr << "marbler bake: warning: " << warning << '\n';
+    const Genome genome = loadGenomeArgument("bake", genomeName);
     if (genome.dimension != 3)
         throw InputError(genomeName + ": --slices needs a solid (3D) genome; this one is flat (2D)");
 

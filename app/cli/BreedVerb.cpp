@@ -19,8 +19,9 @@ namespace fs = std::filesystem;
 
 constexpr const char* Help = R"(usage: marbler breed OPERATOR PARENT... --seed N [--count K] [--strength S] -o DIR
 
-Writes K children of the PARENT genome files, made by a genetic operator, as
-DIR/child-01.marble.json, DIR/child-02.marble.json, ... (DIR is created if missing).
+Writes K children of the PARENT genome files (or PNG or TIFF images that carry genomes), made
+by a genetic operator, as DIR/child-01.marble.json, DIR/child-02.marble.json, ... (DIR is
+created if missing).
 The same parents, operator, seed and options give the same children.
 
 operators:
@@ -99,7 +100,7 @@ int runBreed(std::span<const std::string> words) {
         std::error_code ec;
         if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError(dir.string() + ": exists and is not a folder");
 
-        for (std::size_t i = 1; i < args.positional.size(); ++i) request.parents.push_back(loadGenome(args.positional[i]));
+        for (std::size_t i = 1; i < args.positional.size(); ++i) request.parents.push_back(loadGenomeArgument("breed", args.positional[i]));
 
         // Everything is bred and serialised before the first byte is written, so bad input
         // never leaves a partial set of children.

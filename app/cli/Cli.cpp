@@ -1,6 +1,7 @@
 #include "cli/Cli.h"
 
 #include "marbler/Error.h"
+#include "marbler/GenomeImage.h"
 
 #include <charconv>
 #include <cmath>
@@ -86,6 +87,13 @@ std::uint64_t parseSeedOption(const Args& args, const std::string& name) {
     if (ec != std::errc() || end != text->data() + text->size())
         throw InputError("--" + name + ": not a non-negative integer: '" + *text + "'");
     return value;
+}
+
+Genome loadGenomeArgument(const char* verb, const std::string& file) {
+    std::vector<std::string> warnings;
+    Genome genome = loadDesign(file, &warnings);
+    for (const std::string& warning : warnings) std::cerr << "marbler " << verb << ": warning: " << warning << '\n';
+    return genome;
 }
 
 int guarded(const char* verb, const std::function<int()>& body) {

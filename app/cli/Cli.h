@@ -3,6 +3,8 @@
 /// the process exit status: 0 success, 2 bad usage or bad input (one line on stderr naming the
 /// file and what is wrong), 1 any other failure.
 
+#include "marbler/Genome.h"
+
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -37,6 +39,11 @@ Args parseArgs(std::span<const std::string> words, const std::vector<std::string
 int parseIntOption(const Args& args, const std::string& name, int fallback, int lo, int hi);
 double parseDoubleOption(const Args& args, const std::string& name, double fallback);
 std::uint64_t parseSeedOption(const Args& args, const std::string& name);
+
+/// Loads the GENOME argument of a verb: a genome file, or a PNG or TIFF image that carries one
+/// (marbler::loadDesign; the one place the verbs read genomes). Warnings go to stderr as
+/// "marbler VERB: warning: ...". Throws GenomeError or InputError naming the file.
+Genome loadGenomeArgument(const char* verb, const std::string& file);
 
 /// The verbs. `words` are the arguments after the verb.
 int runRender(std::span<const std::string> words);

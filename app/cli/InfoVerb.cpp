@@ -15,7 +15,8 @@ namespace {
 
 constexpr const char* InfoHelp = R"(usage: marbler info GENOME
 
-Checks a genome file against every rule of the format and prints a summary: dimension,
+Checks a genome file (or the genome inside a PNG or TIFF image Marbler wrote) against every
+rule of the format and prints a summary: dimension,
 size, palette, background, how many entries of each tool lie in `initial` and `operations`,
 the source image and the design's name, if any. Unknown keys are reported as warnings on
 stderr.
@@ -60,9 +61,7 @@ int runInfo(std::span<const std::string> words) {
         if (args.positional.size() != 1) throw InputError("expected one genome file (see marbler info --help)");
         const std::string& file = args.positional[0];
 
-        std::vector<std::string> warnings;
-        Genome genome = loadGenome(file, &warnings);
-        for (const std::string& warning : warnings) std::cerr << "marbler info: warning: " << warning << '\n';
+        Genome genome = loadGenomeArgument("info", file);
 
         std::ostringstream out;
         out << "file:       " << file << '\n';

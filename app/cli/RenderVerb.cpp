@@ -24,7 +24,8 @@ namespace {
 
 constexpr const char* Help = R"(usage: marbler render GENOME -o OUT [options]
 
-Renders a genome to a raster image. The format follows OUT's extension: .png, .tif/.tiff,
+Renders a genome to a raster image. GENOME is a genome file or a PNG or TIFF image Marbler
+wrote, which carries its genome; every PNG and TIFF written carries the genome too. The format follows OUT's extension: .png, .tif/.tiff,
 .jpg/.jpeg (8-bit sRGB) or .exr (linear half float). Nothing is written unless the whole image
 is; exit status 0 success, 2 bad usage or bad input, 1 any other failure.
 
@@ -201,9 +202,7 @@ int render(std::span<const std::string> words) {
     }
 
     const std::string genomeName = args.positional[0];
-    std::vector<std::string> warnings;
-    Genome genome = loadGenome(genomeName, &warnings);
-    for (const std::string& warning : warnings) std::cerr << "marbler render: warning: " << warning << '\n';
+    Genome genome = loadGenomeArgument("render", genomeName);
 
     try {
         return renderGenome(args, genomeName, genome, settings, exportOptions, printSize, outFile);
@@ -295,7 +294,10 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
         } else {
             image = app::windowModule().render(genome, settings);
         }
-        writeImage(repeat ? mirrorRepeat(image) : image, outFile, exportOptions);
+        // The image carries the design it shows, as renderToFile's do.
+        ExportOptions withGenome = exportOptions;
+        withGenome.genome = serializeGenome(genome);
+        writeImage(repeat ? mirrorRepeat(image) : image, outFile, withGenome);
         return ExitOk;
 #else
         throw RuntimeFailure(std::string(meshMode ? "--mesh" : "--gpu") +

@@ -66,9 +66,7 @@ int svg(std::span<const std::string> words) {
     if (args.has("simplify")) options.straightChord = 16.0;
 
     const std::string genomeName = args.positional[0];
-    std::vector<std::string> warnings;
-    Genome genome = loadGenome(genomeName, &warnings);
-    for (const std::string& warning : warnings) std::cerr << "marbler svg: warning: " << warning << '\n';
+    Genome genome = loadGenomeArgument("svg", genomeName);
 
     const auto start = std::chrono::steady_clock::now();
     VectorDesign design;

@@ -23,7 +23,7 @@ DesignCell::DesignCell(int index, QWidget* parent) : QWidget(parent), mIndex(ind
     setObjectName(QStringLiteral("cell%1").arg(index));
     setAccessibleName(tr("Design %1").arg(index + 1));
     setToolTip(tr("Click to choose as a parent, double-click to open large, right-click for locks and "
-                  "favourites. Drop a genome file here to load it."));
+                  "favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it."));
 }
 
 void DesignCell::setImage(const QImage& image) {

@@ -6,10 +6,12 @@
 #include "marbler/Sampling.h"
 #include "ui/BakeObject.h"
 #include "ui/ErrorReport.h"
+#include "ui/GenomeClipboard.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
 
+#include <QAction>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -273,6 +275,11 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     auto* exportButton = new QPushButton(tr("&Export image…"), this);
     exportButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     exportButton->setToolTip(tr("Render the design to PNG, TIFF, EXR or JPEG at any size (Ctrl+E)"));
+    auto* copy = new QPushButton(tr("&Copy genome"), this);
+    copy->setObjectName(QStringLiteral("copyGenome"));
+    copy->setToolTip(tr("Put the design's genome on the clipboard as text, to paste into the workbench or "
+                        "anywhere else (%1)")
+                         .arg(QKeySequence(QKeySequence::Copy).toString(QKeySequence::NativeText)));
     auto* editor = new QPushButton(tr("Open in editor"), this);
     editor->setEnabled(false);
     editor->setToolTip(tr("The editor arrives in a later version"));
@@ -281,11 +288,19 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
         if (const QString file = saveGenomeWithDialog(this, mGenome); !file.isEmpty()) emit fileSaved(file);
     });
     connect(exportButton, &QPushButton::clicked, this, &DesignDialog::exportImage);
+    connect(copy, &QPushButton::clicked, this, &DesignDialog::copyGenome);
+    // Ctrl+C as an action of the dialog, whichever of its widgets has the focus.
+    auto* copyAction = new QAction(tr("Copy genome"), this);
+    copyAction->setObjectName(QStringLiteral("copyGenomeAction"));
+    copyAction->setShortcut(QKeySequence::Copy);
+    connect(copyAction, &QAction::triggered, this, &DesignDialog::copyGenome);
+    addAction(copyAction);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(save);
     buttons->addWidget(exportButton);
+    buttons->addWidget(copy);
     buttons->addWidget(editor);
     if (solid)
         buttons->addWidget(makeBakeButton(this, [this] { return mGenome; }, mMesh,
@@ -479,6 +494,12 @@ void DesignDialog::exportImage() {
     settings.setValue(QStringLiteral("files/exportExtension"), QStringLiteral(".") + QFileInfo(file).suffix().toLower());
 
     exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi());
+}
+
+void DesignDialog::copyGenome() {
+    copyGenomeToClipboard(mGenome);
+    const LineageInfo info = lineageOf(mGenome);
+    emit genomeCopied(info.name.isEmpty() ? tr("the design") : info.name);
 }
 
 bool DesignDialog::saveTo(const QString& file) {

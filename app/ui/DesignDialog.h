@@ -43,6 +43,8 @@ public:
     /// see exportSizeProblem).
     bool exportTo(const QString& file, QSize pixels, const QString& aa = QStringLiteral("rgss"),
                   std::optional<double> dpi = std::nullopt);
+    /// Puts the genome on the clipboard as genome text (the Copy genome button, Ctrl+C).
+    void copyGenome();
     /// Stops a running export; no file is left behind.
     void cancelExport();
     bool isExporting() const { return bool(mExportCancel); }
@@ -84,6 +86,8 @@ signals:
     /// A file the user asked for was written: the genome saved or an image exported (the
     /// window's status bar says where, with "Show in folder").
     void fileSaved(const QString& file);
+    /// The genome was put on the clipboard; `name` is the design's (the window says so).
+    void genomeCopied(const QString& name);
     /// An export ended: written (the file is complete), or cancelled or failed (`error` says
     /// why for a failure; nothing is left behind either way).
     void exportFinished(const QString& file, bool written, const QString& error);

@@ -103,17 +103,23 @@ QString guideHtml(const WorkbenchWindow& window) {
         "<h3>The large view</h3>"
         "<p>Double-click a design, or press Enter on it, to see it large. Drag a solid design to turn its object. "
         "<i>Save genome…</i> (%1) writes the design's genome file; <i>Export image…</i> (%2) renders it to PNG, "
-        "TIFF, EXR or JPEG at any size. The status bar then says where the file went, with <i>Show in "
-        "folder</i>.</p>")
+        "TIFF, EXR or JPEG at any size; a PNG or TIFF carries the design's genome, so it opens again as a design. "
+        "<i>Copy genome</i> (%3) puts the genome on the clipboard as text. The status bar then says where the "
+        "file went, with <i>Show in folder</i>.</p>")
                 .arg(QKeySequence(QKeySequence::Save).toString(QKeySequence::NativeText),
-                     QKeySequence(Qt::CTRL | Qt::Key_E).toString(QKeySequence::NativeText));
+                     QKeySequence(Qt::CTRL | Qt::Key_E).toString(QKeySequence::NativeText),
+                     QKeySequence(QKeySequence::Copy).toString(QKeySequence::NativeText));
     html += WorkbenchWindow::tr(
         "<h3>Opening designs</h3>"
-        "<p>File ▸ Open designs, or drop genome files on the window: they go into the selected cells, then free "
-        "ones. When they would replace designs you are asked whether to replace the selected cells or add them as "
+        "<p>File ▸ Open designs, or drop genome files on the window (or PNG and TIFF images Marbler exported, "
+        "which carry their genomes; a plain image is refused): they go into the selected cells, then free "
+        "ones. <b>%1</b> (%2) copies the focused or selected design as genome text, and <b>%3</b> (%4) puts "
+        "a genome from the clipboard into the grid the same way. When they would replace designs you are asked whether to replace the selected cells or add them as "
         "a new generation that keeps the parents. Dropped on a cell, a file replaces that cell (a parent only "
         "after asking). A flat design opened among solid ones (or the reverse) starts a generation of its own "
-        "kind, since the two kinds cannot breed together; the grid it replaces is one generation back.</p>");
+        "kind, since the two kinds cannot breed together; the grid it replaces is one generation back.</p>")
+                .arg(actionText(window.copyDesignAction()), keyOf(window.copyDesignAction()),
+                     actionText(window.pasteDesignAction()), keyOf(window.pasteDesignAction()));
     html += WorkbenchWindow::tr("<h3>Keyboard</h3><p>On a design in the grid: the arrows move, Space picks or lets go, "
                                 "Enter opens it large, F keeps it as a favourite, the Menu key opens its menu.</p>");
     html += shortcutTableHtml(shortcutActions(&window));

@@ -2,10 +2,12 @@
 
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/GenomeImage.h"
 #include "marbler/ImageFormats.h"
 #include "ui/DesignCell.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
+#include "ui/GenomeClipboard.h"
 #include "ui/Help.h"
 #include "ui/OpenPlacement.h"
 #include "ui/RenderService.h"
@@ -16,6 +18,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QClipboard>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDialog>
@@ -73,6 +76,14 @@ protected:
         return mime;
     }
 };
+
+/// File ▸ Open's filter: genome files, and the PNG and TIFF images Marbler writes, which carry
+/// their genomes (marbler/GenomeImage.h).
+QString openFilter() {
+    return WorkbenchWindow::tr("Marbler designs (*.marble.json *.json *.png *.tif *.tiff);;"
+                               "Genome files (*.marble.json *.json);;"
+                               "Images with a genome (*.png *.tif *.tiff);;All files (*)");
+}
 
 
 } // namespace
@@ -225,7 +236,8 @@ void WorkbenchWindow::buildActions() {
 
     QAction* open = fileMenu->addAction(tr("&Open designs…"), this, &WorkbenchWindow::openFileDialog);
     open->setShortcut(QKeySequence::Open);
-    open->setStatusTip(tr("Load genome files into the selected cells, then free ones; asks before replacing designs"));
+    open->setStatusTip(tr("Load genome files, or PNG and TIFF images Marbler wrote, into the selected cells, then free "
+                          "ones; asks before replacing designs"));
     QAction* newRandom = fileMenu->addAction(tr("&New random population"), this, [this] {
         newRandomPopulation(mDimension->currentData().toInt());
     });
@@ -254,6 +266,16 @@ void WorkbenchWindow::buildActions() {
     mForward->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
     mForward->setIconText(tr("Forward ▶"));
     mForward->setToolTip(tr("Forward to the generation last visited or made from this one (Ctrl+Shift+Z)"));
+    editMenu->addSeparator();
+    // Designs travel as genome text: into a chat, an editor, another window, and back.
+    mCopyDesign = editMenu->addAction(tr("&Copy design"), this, [this] { copyDesign(); });
+    mCopyDesign->setObjectName(QStringLiteral("copyDesignAction"));
+    mCopyDesign->setShortcut(QKeySequence::Copy);
+    mCopyDesign->setStatusTip(tr("Copies the focused design (else the first selected one) as genome text"));
+    mPasteDesign = editMenu->addAction(tr("&Paste design"), this, [this] { pasteDesign(); });
+    mPasteDesign->setObjectName(QStringLiteral("pasteDesignAction"));
+    mPasteDesign->setShortcut(QKeySequence::Paste);
+    mPasteDesign->setStatusTip(tr("Puts the genome on the clipboard into the grid, as File ▸ Open does"));
     editMenu->addSeparator();
     QAction* clearSelection = editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection);
     clearSelection->setObjectName(QStringLiteral("clearSelectionAction"));
@@ -840,7 +862,8 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
     for (const QString& file : files) {
         try {
             std::vector<std::string> warnings;
-            designs.push_back(loadGenome(file.toStdString(), &warnings));
+            // A genome file or an image that carries one: the command line's loader.
+            designs.push_back(loadDesign(file.toStdString(), &warnings));
             names << QFileInfo(file).fileName();
             if (!warnings.empty())
                 statusBar()->showMessage(QString::fromStdString(warnings.front()), 8000);
@@ -962,11 +985,50 @@ void WorkbenchWindow::dropEvent(QDropEvent* event) {
 
 void WorkbenchWindow::openFileDialog() {
     const QString dir = QSettings().value(QStringLiteral("files/lastDir")).toString();
-    const QStringList files = QFileDialog::getOpenFileNames(this, tr("Open designs"), dir,
-                                                            tr("Marbler genomes (*.marble.json *.json);;All files (*)"));
+    const QStringList files = QFileDialog::getOpenFileNames(this, tr("Open designs"), dir, openFilter());
     if (files.isEmpty()) return;
     QSettings().setValue(QStringLiteral("files/lastDir"), QFileInfo(files.front()).absolutePath());
     openFiles(files);
+}
+
+int WorkbenchWindow::designToCopy() const {
+    for (int i = 0; i < CellCount; ++i)
+        if (mCells[std::size_t(i)]->hasFocus() && mModel->cell(i)) return i;
+    const std::vector<int> selected = mModel->selectedCells();
+    return selected.empty() ? -1 : selected.front();
+}
+
+bool WorkbenchWindow::copyDesign(int cell) {
+    if (cell < 0) cell = designToCopy();
+    const Genome* g = cell >= 0 && cell < CellCount ? mModel->cell(cell) : nullptr;
+    if (!g) {
+        statusBar()->showMessage(tr("Nothing copied: click or select a design first"), 5000);
+        return false;
+    }
+    copyGenomeToClipboard(*g);
+    const LineageInfo info = lineageOf(*g);
+    statusBar()->showMessage(tr("Copied %1 to the clipboard as genome text")
+                                 .arg(info.name.isEmpty() ? tr("design %1").arg(cell + 1) : info.name),
+                             5000);
+    return true;
+}
+
+bool WorkbenchWindow::pasteDesign() {
+    const ClipboardDesign pasted = clipboardDesign(QGuiApplication::clipboard()->mimeData());
+    if (!pasted.files.isEmpty()) return openFiles(pasted.files);
+    Genome genome;
+    try {
+        genome = parseClipboardGenome(pasted.genomeText);
+    } catch (const Error& e) {
+        // The clipboard is often something else entirely: a line, not a message box.
+        statusBar()->showMessage(tr("Nothing pasted: the clipboard holds no Marbler design (%1)")
+                                     .arg(QString::fromStdString(e.what())),
+                                 10000);
+        return false;
+    }
+    const LineageInfo info = lineageOf(genome);
+    const QString name = info.displayName();
+    return !placeOpened({genome}, {name}, -1, tr("Pasted %1").arg(name)).empty();
 }
 
 bool WorkbenchWindow::keepFavourite(int index) {
@@ -999,8 +1061,7 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
     QMenu menu(this);
     if (!g) {
         menu.addAction(tr("Open a design here…"), this, [this, index] {
-            const QString file = QFileDialog::getOpenFileName(this, tr("Open a design"), QString(),
-                                                              tr("Marbler genomes (*.marble.json *.json)"));
+            const QString file = QFileDialog::getOpenFileName(this, tr("Open a design"), QString(), openFilter());
             if (!file.isEmpty()) openFiles({file}, index);
         });
         menu.exec(globalPos);
@@ -1012,6 +1073,8 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
     menu.addAction(tr("Keep as favourite"), this, [this, index] { keepFavourite(index); })
         ->setShortcut(QKeySequence(Qt::Key_F));
     menu.addAction(tr("Save design…"), this, [this, index] { saveDesign(index); });
+    menu.addAction(tr("Copy design"), this, [this, index] { copyDesign(index); })
+        ->setShortcut(mCopyDesign->shortcut());
     menu.addSeparator();
     const Locks locks = locksOf(*g);
     const auto addLock = [&](const QString& text, const QString& tip, bool Locks::*field) {
@@ -1104,6 +1167,9 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
         if (shown && genomeId(*shown) == id) mModel->setCellView(index, angle);
     });
     connect(dialog, &DesignDialog::fileSaved, this, &WorkbenchWindow::noteSavedFile);
+    connect(dialog, &DesignDialog::genomeCopied, this, [this](const QString& name) {
+        statusBar()->showMessage(tr("Copied %1 to the clipboard as genome text").arg(name), 5000);
+    });
     dialog->show();
     emit designOpened(dialog);
     return dialog;

@@ -93,6 +93,17 @@ public:
     /// cells filled (none when cancelled).
     std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1,
                                  const QString& description = {});
+    /// Edit ▸ Copy design (Ctrl+C): puts a cell's genome on the clipboard as genome text; -1:
+    /// the focused cell when it holds a design, else the first selected one. Says so on the
+    /// status bar; false when there is no design to copy.
+    bool copyDesign(int cell = -1);
+    /// Edit ▸ Paste design (Ctrl+V): the genome on the clipboard goes into the grid as File ▸
+    /// Open puts an opened file (placeOpened, asking before it replaces designs); files copied
+    /// in a file manager open as files. Text that is no genome changes nothing and is said on
+    /// the status bar. Returns whether a design was placed.
+    bool pasteDesign();
+    QAction* copyDesignAction() const { return mCopyDesign; }
+    QAction* pasteDesignAction() const { return mPasteDesign; }
     /// Breeds the selected parents with an operator; errors are reported.
     bool applyOperator(GeneticOperator op);
     /// A fresh random population (2: flat, 3: solid); remembers the choice.
@@ -178,6 +189,9 @@ protected:
 
 private:
     void buildActions();
+    /// The cell Copy design copies: the focused one holding a design, else the first selected
+    /// (-1: none).
+    int designToCopy() const;
     void buildDocks();
     void readSettings();
     void updateCells();
@@ -275,6 +289,8 @@ private:
     QMenu* mRecentSessions = nullptr;
     QPointer<SessionsDialog> mSessionsDialog;
     QAction* mRestoreFavourite = nullptr;
+    QAction* mCopyDesign = nullptr;
+    QAction* mPasteDesign = nullptr;
     QPushButton* mUndoRemove = nullptr;
 };
 

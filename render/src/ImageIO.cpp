@@ -3,6 +3,7 @@
 
 #include "ImageSink.h"
 #include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
 #include "marbler/Modules.h"
 
 #include <algorithm>
@@ -227,7 +228,10 @@ void renderToFile(const Genome& genome, const RenderSettings& settings, const fs
     if (options.dpi && !(*options.dpi > 0.0 && std::isfinite(*options.dpi)))
         throw InputError("dpi must be a positive number");
     CpuRenderer renderer(genome);
-    AtomicImageFile out(file, settings.width, settings.height, options);
+    // The image carries the design it shows (GenomeImage.h).
+    ExportOptions withGenome = options;
+    if (withGenome.genome.empty()) withGenome.genome = serializeGenome(genome);
+    AtomicImageFile out(file, settings.width, settings.height, withGenome);
     const bool linear = out.linearFloat();
     const int rows = stripRows(settings.width, settings.height);
     const std::size_t stripValues = std::size_t(rows) * std::size_t(settings.width) * 3;

@@ -4,6 +4,7 @@
 
 #include "ImageSink.h"
 #include "marbler/Error.h"
+#include "marbler/GenomeImage.h"
 #include "marbler/ImageFormats.h"
 #include "marbler/Modules.h"
 
@@ -76,10 +77,20 @@ public:
         const int width = target.width, height = target.height;
         const std::optional<double> dpi = target.options.dpi;
         std::FILE* handle = mFile.handle;
-        png_text software{};
-        software.compression = PNG_TEXT_COMPRESSION_NONE;
-        software.key = const_cast<char*>("Software");
-        software.text = const_cast<char*>("Marbler");
+        png_text texts[2]{};
+        texts[0].compression = PNG_TEXT_COMPRESSION_NONE;
+        texts[0].key = const_cast<char*>("Software");
+        texts[0].text = const_cast<char*>("Marbler");
+        // The genome travels with the image (GenomeImage.h): UTF-8 in an iTXt chunk, before
+        // the image data so a reader finds it without decoding a pixel.
+        const std::string& genome = target.options.genome;
+        const int textCount = genome.empty() ? 1 : 2;
+        texts[1].compression =
+            genome.size() > PngCompressAbove ? PNG_ITXT_COMPRESSION_zTXt : PNG_ITXT_COMPRESSION_NONE;
+        texts[1].key = const_cast<char*>(PngGenomeKeyword);
+        texts[1].text = const_cast<char*>(genome.c_str());
+        texts[1].lang = const_cast<char*>("");
+        texts[1].lang_key = const_cast<char*>("");
         bool ok = pngCall(mState, [&] {
             png_init_io(mState.png, handle);
             // Marbled designs are large areas of flat colour: a fast deflate level with the
@@ -93,7 +104,7 @@ public:
                 auto perMetre = png_uint_32(std::lround(*dpi / 0.0254));
                 png_set_pHYs(mState.png, mState.info, perMetre, perMetre, PNG_RESOLUTION_METER);
             }
-            png_set_text(mState.png, mState.info, &software, 1);
+            png_set_text(mState.png, mState.info, texts, textCount);
             png_write_info(mState.png, mState.info);
         });
         if (!ok) failWrite(target, mState.message);
@@ -164,6 +175,11 @@ public:
         TIFFSetField(mTiff, TIFFTAG_ZIPQUALITY, 3);
         TIFFSetField(mTiff, TIFFTAG_ROWSPERSTRIP, std::uint32_t(RowsPerStrip));
         TIFFSetField(mTiff, TIFFTAG_SOFTWARE, "Marbler");
+        // The genome travels with the image, in the XMP packet (GenomeImage.h).
+        if (!target.options.genome.empty()) {
+            const std::string packet = genomeXmpPacket(target.options.genome);
+            TIFFSetField(mTiff, TIFFTAG_XMLPACKET, std::uint32_t(packet.size()), packet.data());
+        }
         if (target.options.dpi) {
             TIFFSetField(mTiff, TIFFTAG_XRESOLUTION, float(*target.options.dpi));
             TIFFSetField(mTiff, TIFFTAG_YRESOLUTION, float(*target.options.dpi));

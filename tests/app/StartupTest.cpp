@@ -56,6 +56,23 @@ TEST(Startup, PngAndTiffRendersLoadNoModule) {
     EXPECT_EQ(info.err.find("marbler-window.so"), std::string::npos);
 }
 
+TEST(Startup, GenomesInsideImagesAreReadWithoutAModule) {
+    const auto dir = test::outputDir("startup-genome-image");
+    for (const char* name : {"a.png", "a.tif"}) {
+        ASSERT_EQ(test::runMarbler({"render", Example, "-o", (dir / name).string(), "--width", "32"}).exitCode, 0);
+        // libpng and libtiff alone read the genome back: no OpenImageIO, no Qt.
+        for (const std::vector<std::string>& args :
+             {std::vector<std::string>{"info", (dir / name).string()},
+              std::vector<std::string>{"render", (dir / name).string(), "-o", (dir / "again.png").string(), "--width", "16"}}) {
+            test::RunResult r = runTracingLoads(args);
+            ASSERT_EQ(r.exitCode, 0) << r.err;
+            EXPECT_EQ(r.err.find("marbler-imageio.so"), std::string::npos) << args[0] << " " << name;
+            EXPECT_EQ(r.err.find("libOpenImageIO"), std::string::npos) << args[0] << " " << name;
+            EXPECT_EQ(r.err.find("marbler-window.so"), std::string::npos) << args[0] << " " << name;
+        }
+    }
+}
+
 TEST(Startup, OtherFormatsLoadTheImageModule) {
     const auto dir = test::outputDir("startup-module");
     test::RunResult r = runTracingLoads({"render", Example, "-o", (dir / "a.exr").string(), "--width", "32"});

@@ -3,6 +3,8 @@
 
 #include "GlTestUtil.h"
 #include "TestUtil.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/GenomeImage.h"
 
 #include <gtest/gtest.h>
 
@@ -23,6 +25,24 @@ TEST(GlCli, GpuRenderWritesNothingOnStderr) {
     EXPECT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.err, "");
     EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+TEST(GlCli, GpuAndMeshImagesCarryTheirGenome) {
+    MARBLER_REQUIRE_GL_OR_SKIP();
+    std::filesystem::path dir = test::outputDir("gl-cli-genome");
+    const std::string flat = (test::dataDir() / "examples" / "five-stones.marble.json").string();
+    test::RunResult run =
+        test::runMarbler({"render", flat, "--gpu", "--width", "48", "-o", (dir / "flat.png").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(serializeGenome(loadDesign(dir / "flat.png")), serializeGenome(loadGenome(flat)));
+    run = test::runMarbler({"render", solidGenome(), "--mesh", "sphere", "--view", "30,20", "--width", "48",
+                            "--supersample", "1", "-o", (dir / "solid.tif").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(serializeGenome(loadDesign(dir / "solid.tif")), serializeGenome(loadGenome(solidGenome())));
+    // And the image renders again as its genome does.
+    run = test::runMarbler({"render", (dir / "solid.tif").string(), "--mesh", "sphere", "--view", "30,20",
+                            "--width", "48", "--supersample", "1", "-o", (dir / "again.png").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
 }
 
 TEST(GlCli, CutRenderDiffersFromTheWholeObject) {

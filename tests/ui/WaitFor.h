@@ -16,7 +16,7 @@
 /// Waits up to `timeoutMs` for `actual == expected`, then asserts it (printing both values).
 #define MARBLER_WAIT_EQ(actual, expected, timeoutMs)                                               \
     do {                                                                                          \
-        QTest::qWaitFor([&]() -> bool { return (actual) == (expected); }, timeoutMs);             \
+        (void)QTest::qWaitFor([&]() -> bool { return (actual) == (expected); }, timeoutMs);       \
         ASSERT_EQ(actual, expected) << "after waiting " << (timeoutMs) << " ms";                  \
     } while (false)
 

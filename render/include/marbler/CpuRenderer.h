@@ -82,6 +82,10 @@ void setCpuKernelForTesting(const std::string& name);
 /// Output options of a render to a file.
 struct ExportOptions {
     std::optional<double> dpi; ///< written into the file's resolution when set
+    /// The genome the image shows, as canonical genome JSON (serializeGenome), carried in the
+    /// file's metadata by PNG and TIFF (marbler/GenomeImage.h says where); empty: none.
+    /// renderToFile fills it from the genome it renders when left empty.
+    std::string genome;
 };
 
 /// Renders in strips of rows and writes them progressively to `file` (format by extension:
@@ -91,8 +95,9 @@ struct ExportOptions {
 void renderToFile(const Genome& genome, const RenderSettings& settings, const std::filesystem::path& file,
                   const ExportOptions& options = {}, const RenderControl* control = nullptr);
 
-/// Writes an in-memory image atomically (format by extension). Throws InputError for an
-/// unknown extension, RuntimeFailure for I/O failures.
+/// Writes an in-memory image atomically (format by extension). The image knows no genome, so
+/// the caller puts the design's into `options.genome` for PNG and TIFF to carry it. Throws
+/// InputError for an unknown extension, RuntimeFailure for I/O failures.
 void writeImage(const Image& image, const std::filesystem::path& file, const ExportOptions& options = {});
 
 } // namespace marbler
