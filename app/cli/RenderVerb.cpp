@@ -47,6 +47,10 @@ options:
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
   --cut NX,NY,NZ,OFFSET     cut the --mesh object open: the part where NX*x + NY*y + NZ*z >
                             OFFSET (design coordinates) is removed, showing the marbled inside
+  --allow-external-source   read the genome's source image even where it lies outside the
+                            genome's folder (an absolute path, `..`, a link leading out); by
+                            default such a genome is refused, so a shared genome cannot read
+                            your other files
   --progress                show progress on stderr even when it is not a terminal
   --quiet                   no progress line
   -h, --help                this text
@@ -145,7 +149,7 @@ int render(std::span<const std::string> words) {
     Args args = parseArgs(words,
                           {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
                            "supersample", "cut", "threads"},
-                          {"gpu", "quiet", "progress", "help", "h"});
+                          {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << Help;
         return ExitOk;
@@ -194,6 +198,7 @@ int render(std::span<const std::string> words) {
     std::vector<std::string> warnings;
     Genome genome = loadGenome(genomeName, &warnings);
     for (const std::string& warning : warnings) std::cerr << "marbler render: warning: " << warning << '\n';
+    genome.allowExternalSource = args.has("allow-external-source");
 
     try {
         return renderGenome(args, genomeName, genome, settings, exportOptions, printSize, outFile);
