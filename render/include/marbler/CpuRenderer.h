@@ -82,6 +82,9 @@ void setCpuKernelForTesting(const std::string& name);
 /// Output options of a render to a file.
 struct ExportOptions {
     std::optional<double> dpi; ///< written into the file's resolution when set
+    /// Bits a sample of a TIFF: 8, or 16 (sRGB encoded from the linear average, for print work
+    /// that grades the image further). Other formats have a depth of their own (EXR: half float).
+    int bitsPerSample = 8;
 };
 
 /// Renders in strips of rows and writes them progressively to `file` (format by extension:
