@@ -87,13 +87,13 @@ TEST(SourcePath, TheRendererRefusesWhatLiesOutsideAndNamesTheGenome) {
         g.allowExternalSource = true;
         EXPECT_NO_THROW(CpuRenderer{g}) << image;
     }
-    for (const std::string image : std::vector<std::string>{"inside.png", "sub/below.png", "link-in.png"})
+    for (const std::string& image : std::vector<std::string>{"inside.png", "sub/below.png", "link-in.png"})
         EXPECT_NO_THROW(CpuRenderer{loadGenome(f.genome("in", image))}) << image;
 }
 
 TEST(SourcePath, AMissingFileIsAnErrorNamingIt) {
     SourceFolders f;
-    for (const std::string image : std::vector<std::string>{"nowhere.png", "sub/nowhere.png"}) {
+    for (const std::string& image : std::vector<std::string>{"nowhere.png", "sub/nowhere.png"}) {
         Genome g = loadGenome(f.genome("missing", image));
         try {
             CpuRenderer renderer(g);
