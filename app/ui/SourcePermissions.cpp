@@ -14,7 +14,9 @@ ExternalSourceAsker& asker() {
 }
 } // namespace
 
-void setExternalSourceAsker(ExternalSourceAsker a) { asker() = std::move(a); }
+void setExternalSourceAsker(ExternalSourceAsker a) {
+    asker() = std::move(a);
+}
 
 bool askExternalSource(QWidget* parent, const QString& design, const QString& image) {
     if (asker()) return asker()(parent, design, image);
@@ -22,9 +24,10 @@ bool askExternalSource(QWidget* parent, const QString& design, const QString& im
                     QObject::tr("This design reads an image outside its folder: %1. Read it?").arg(image),
                     QMessageBox::NoButton, parent);
     if (!design.isEmpty())
-        box.setInformativeText(QObject::tr("The design %1 names it. A design may read images only from its own "
-                                           "folder unless you allow it; the answer holds until Marbler closes.")
-                                   .arg(design));
+        box.setInformativeText(
+            QObject::tr("The design %1 names it. A design may read images only from its own "
+                        "folder unless you allow it; the answer holds until Marbler closes.")
+                .arg(design));
     QPushButton* allow = box.addButton(QObject::tr("Allow"), QMessageBox::AcceptRole);
     QPushButton* refuse = box.addButton(QObject::tr("Don't allow"), QMessageBox::RejectRole);
     // Refusing is the safe answer, so it is what Enter and Escape give.
@@ -51,9 +54,13 @@ std::optional<bool> SourcePermissions::answer(const QString& image) const {
     return it->second;
 }
 
-void SourcePermissions::setAnswer(const QString& image, bool allowed) { mAnswers[image] = allowed; }
+void SourcePermissions::setAnswer(const QString& image, bool allowed) {
+    mAnswers[image] = allowed;
+}
 
-void SourcePermissions::clear() { mAnswers.clear(); }
+void SourcePermissions::clear() {
+    mAnswers.clear();
+}
 
 bool SourcePermissions::apply(Genome& genome) const {
     const QString image = externalImage(genome);
@@ -63,7 +70,8 @@ bool SourcePermissions::apply(Genome& genome) const {
 }
 
 QString refusedSourceMessage(const QString& image) {
-    return QObject::tr("this design reads an image outside its folder (%1), which you chose not to read").arg(image);
+    return QObject::tr("this design reads an image outside its folder (%1), which you chose not to read")
+        .arg(image);
 }
 
 } // namespace marbler::ui

@@ -14,7 +14,8 @@ namespace {
 /// reached through a link, and the file is compared in the same resolved form.
 fs::path resolvedFolder(const Genome& genome) {
     std::error_code ec;
-    fs::path folder = fs::absolute(genome.baseDirectory.empty() ? fs::path(".") : fs::path(genome.baseDirectory), ec);
+    fs::path folder =
+        fs::absolute(genome.baseDirectory.empty() ? fs::path(".") : fs::path(genome.baseDirectory), ec);
     fs::path resolved = fs::weakly_canonical(folder, ec);
     return ec ? folder.lexically_normal() : resolved;
 }
@@ -31,9 +32,13 @@ bool within(const fs::path& folder, const fs::path& file) {
 
 } // namespace
 
-bool isDataUri(const std::string& image) { return image.rfind("data:", 0) == 0; }
+bool isDataUri(const std::string& image) {
+    return image.rfind("data:", 0) == 0;
+}
 
-std::string genomeName(const Genome& genome) { return genome.fileName.empty() ? std::string("the design") : genome.fileName; }
+std::string genomeName(const Genome& genome) {
+    return genome.fileName.empty() ? std::string("the design") : genome.fileName;
+}
 
 SourceLocation locateSource(const Genome& genome) {
     SourceLocation location;
@@ -53,7 +58,7 @@ SourceLocation locateSource(const Genome& genome) {
     if (ec) file = joined.lexically_normal();
     location.file = file;
     location.kind = !named.is_absolute() && within(folder, file) ? SourceLocation::Kind::Inside
-                                                                  : SourceLocation::Kind::Outside;
+                                                                 : SourceLocation::Kind::Outside;
     return location;
 }
 
@@ -62,14 +67,16 @@ fs::path sourceFileToRead(const Genome& genome) {
     const std::string name = genomeName(genome);
     const std::string image = genome.source ? genome.source->image : std::string();
     if (location.kind == SourceLocation::Kind::Outside && !genome.allowExternalSource)
-        throw GenomeError(name, "source.image",
-                          "'" + image + "' (" + location.file.string() +
-                              ") lies outside the genome's folder; a design may read images only from its own "
-                              "folder or below it, or from a data: URI (--allow-external-source reads it anyway)");
+        throw GenomeError(
+            name, "source.image",
+            "'" + image + "' (" + location.file.string() +
+                ") lies outside the genome's folder; a design may read images only from its own "
+                "folder or below it, or from a data: URI (--allow-external-source reads it anyway)");
     std::error_code ec;
     if (location.kind == SourceLocation::Kind::Inside || location.kind == SourceLocation::Kind::Outside) {
         if (!fs::is_regular_file(location.file, ec))
-            throw GenomeError(name, "source.image", "'" + image + "': no such image file (" + location.file.string() + ")");
+            throw GenomeError(name, "source.image",
+                              "'" + image + "': no such image file (" + location.file.string() + ")");
     }
     return location.file;
 }

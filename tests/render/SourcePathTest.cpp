@@ -3,12 +3,12 @@
 // one line naming the genome and `source.image`) unless --allow-external-source is given. On
 // the code before the rule, the refused cases rendered the outside file.
 
+#include "marbler/SourcePath.h"
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
-#include "marbler/SourcePath.h"
 
 #include <gtest/gtest.h>
 
@@ -48,11 +48,15 @@ struct SourceFolders {
     }
 };
 
-std::size_t lines(const std::string& text) { return std::size_t(std::count(text.begin(), text.end(), '\n')); }
+std::size_t lines(const std::string& text) {
+    return std::size_t(std::count(text.begin(), text.end(), '\n'));
+}
 
 TEST(SourcePath, LocatesEveryKindOfSource) {
     SourceFolders f;
-    auto kindOf = [&](const std::string& image) { return locateSource(loadGenome(f.genome("g", image))).kind; };
+    auto kindOf = [&](const std::string& image) {
+        return locateSource(loadGenome(f.genome("g", image))).kind;
+    };
     using Kind = SourceLocation::Kind;
     EXPECT_EQ(kindOf("inside.png"), Kind::Inside);
     EXPECT_EQ(kindOf("sub/below.png"), Kind::Inside);
@@ -73,7 +77,8 @@ TEST(SourcePath, LocatesEveryKindOfSource) {
 
 TEST(SourcePath, TheRendererRefusesWhatLiesOutsideAndNamesTheGenome) {
     SourceFolders f;
-    for (const std::string& image : std::vector<std::string>{"../private/secret.png", "link-out.png", (f.outside / "secret.png").string()}) {
+    for (const std::string& image : std::vector<std::string>{"../private/secret.png", "link-out.png",
+                                                             (f.outside / "secret.png").string()}) {
         const fs::path file = f.genome("out", image);
         Genome g = loadGenome(file);
         try {
@@ -82,7 +87,8 @@ TEST(SourcePath, TheRendererRefusesWhatLiesOutsideAndNamesTheGenome) {
         } catch (const GenomeError& e) {
             EXPECT_EQ(e.file(), file.string());
             EXPECT_EQ(e.location(), "source.image");
-            EXPECT_NE(std::string(e.what()).find("outside the genome's folder"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("outside the genome's folder"), std::string::npos)
+                << e.what();
         }
         g.allowExternalSource = true;
         EXPECT_NO_THROW(CpuRenderer{g}) << image;
@@ -112,7 +118,8 @@ TEST(SourcePath, AMissingFileIsAnErrorNamingIt) {
 TEST(SourcePathCli, RenderRefusesOutsideSourcesUnlessAllowed) {
     SourceFolders f;
     const fs::path out = f.root / "out.png";
-    for (const std::string& image : std::vector<std::string>{"../private/secret.png", "link-out.png", (f.outside / "secret.png").string()}) {
+    for (const std::string& image : std::vector<std::string>{"../private/secret.png", "link-out.png",
+                                                             (f.outside / "secret.png").string()}) {
         const fs::path file = f.genome("shared", image);
         auto r = runMarbler({"render", file.string(), "-o", out.string(), "--width", "40"});
         EXPECT_EQ(r.exitCode, 2) << image << ": " << r.err;
@@ -121,7 +128,8 @@ TEST(SourcePathCli, RenderRefusesOutsideSourcesUnlessAllowed) {
         EXPECT_NE(r.err.find("outside the genome's folder"), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(out)) << image;
 
-        r = runMarbler({"render", file.string(), "-o", out.string(), "--width", "40", "--allow-external-source"});
+        r = runMarbler(
+            {"render", file.string(), "-o", out.string(), "--width", "40", "--allow-external-source"});
         EXPECT_EQ(r.exitCode, 0) << image << ": " << r.err;
         EXPECT_TRUE(fs::exists(out)) << image;
         fs::remove(out);

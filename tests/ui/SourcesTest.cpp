@@ -101,9 +101,11 @@ TEST(SourcePermissionsTest, AskedOncePerImageAndRefusalFailsWithAMessage) {
     EXPECT_FALSE(service.idle()) << "waiting for the answer is work outstanding";
     MARBLER_WAIT(service.idle(), 10000);
     ASSERT_EQ(asker.asked.size(), 1);
-    EXPECT_EQ(asker.asked.front(), QString::fromStdString(fs::canonical(folders.outside / "secret.png").string()));
+    EXPECT_EQ(asker.asked.front(),
+              QString::fromStdString(fs::canonical(folders.outside / "secret.png").string()));
     ASSERT_EQ(failed.size(), 2);
-    EXPECT_TRUE(failed.at(0).at(1).toString().contains(QStringLiteral("outside its folder"))) << failed.at(0).at(1).toString().toStdString();
+    EXPECT_TRUE(failed.at(0).at(1).toString().contains(QStringLiteral("outside its folder")))
+        << failed.at(0).at(1).toString().toStdString();
     EXPECT_EQ(rendered.size(), 0);
 
     // Remembered: the same image through a link is not asked about again.
@@ -155,14 +157,16 @@ TEST(SourcePermissionsTest, ARefusedDesignShowsWhyInItsCell) {
     Asker asker;
     QTemporaryDir favourites;
     qputenv("MARBLER_FAVOURITES_DIR", favourites.path().toLocal8Bit());
-    setOpenChooser([](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
+    setOpenChooser(
+        [](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
     {
         RenderService service(RenderService::Backend::Cpu);
         WorkbenchWindow window(&service);
         window.model()->setSessionSeed(42);
         window.newRandomPopulation(2);
         folders.genome("shared", "../private/secret.png");
-        ASSERT_TRUE(window.openFiles({QString::fromStdString((folders.design / "shared.marble.json").string())}, 0));
+        ASSERT_TRUE(
+            window.openFiles({QString::fromStdString((folders.design / "shared.marble.json").string())}, 0));
         MARBLER_WAIT(!window.cell(0)->error().isEmpty(), 20000);
         EXPECT_TRUE(window.cell(0)->error().contains(QStringLiteral("outside its folder")));
         EXPECT_EQ(asker.asked.size(), 1);
@@ -187,10 +191,11 @@ struct ExportFixture : ::testing::Test {
         qunsetenv("MARBLER_FAVOURITES_DIR");
     }
     /// Exports and waits; returns the error, empty on success.
-    QString exportAndWait(DesignDialog& dialog, const QString& file, QSize size, std::optional<SolidExport> solid = {},
-                          int bits = 8) {
+    QString exportAndWait(DesignDialog& dialog, const QString& file, QSize size,
+                          std::optional<SolidExport> solid = {}, int bits = 8) {
         QSignalSpy finished(&dialog, &DesignDialog::exportFinished);
-        if (!dialog.exportTo(file, size, QStringLiteral("none"), std::nullopt, solid, bits)) return QStringLiteral("refused");
+        if (!dialog.exportTo(file, size, QStringLiteral("none"), std::nullopt, solid, bits))
+            return QStringLiteral("refused");
         if (!QTest::qWaitFor([&] { return finished.size() == 1; }, 60000)) return QStringLiteral("timed out");
         return finished.front().at(2).toString();
     }
@@ -222,9 +227,11 @@ TEST_F(ExportFixture, SixteenBitTiffAndExrAreOffered) {
     auto* format = settings.findChild<QComboBox*>(QStringLiteral("exportFormat"));
     ASSERT_NE(format, nullptr);
     QStringList offered;
-    for (int i = 0; i < format->count(); ++i) offered << format->itemText(i);
+    for (int i = 0; i < format->count(); ++i)
+        offered << format->itemText(i);
     for (const char* name : {"PNG", "JPEG", "TIFF (16-bit", "OpenEXR"})
-        EXPECT_FALSE(offered.filter(QString::fromLatin1(name)).isEmpty()) << name << " in " << offered.join(',').toStdString();
+        EXPECT_FALSE(offered.filter(QString::fromLatin1(name)).isEmpty())
+            << name << " in " << offered.join(',').toStdString();
     settings.setFormat(QStringLiteral(".tif"), 16);
     EXPECT_EQ(settings.extension(), QStringLiteral(".tif"));
     EXPECT_EQ(settings.bitsPerSample(), 16);
@@ -301,10 +308,12 @@ TEST_F(ExportFixture, ASolidExportsItsObjectViewOrAnyCrossSection) {
     mesh.mesh = "sphere";
     mesh.yaw = dialog.viewAngle().yaw;
     mesh.pitch = dialog.viewAngle().pitch;
-    const Image cell = service->usesGl() ? renderer.renderMesh(genome, mesh) : gl::renderMeshHybrid(renderer, genome, mesh);
+    const Image cell =
+        service->usesGl() ? renderer.renderMesh(genome, mesh) : gl::renderMeshHybrid(renderer, genome, mesh);
     ASSERT_EQ(cell.rgb.size(), shown.image.rgb.size());
     std::size_t off = 0;
-    for (std::size_t k = 0; k < cell.rgb.size(); ++k) off += std::abs(int(cell.rgb[k]) - int(shown.image.rgb[k])) > 2;
+    for (std::size_t k = 0; k < cell.rgb.size(); ++k)
+        off += std::abs(int(cell.rgb[k]) - int(shown.image.rgb[k])) > 2;
     EXPECT_LE(off, cell.rgb.size() / 200) << "the export is the object the view shows";
 }
 
@@ -312,13 +321,14 @@ TEST_F(ExportFixture, ASolidExportsItsObjectViewOrAnyCrossSection) {
 
 int main(int argc, char** argv) {
     // Headless by default: with no display, Qt's offscreen platform (the CPU fallback renders).
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
-        && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     // Keep the user's settings and data out of the tests; each process has settings of its own.
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
+    QApplication::setOrganizationName(
+        QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
     QApplication::setApplicationName(QStringLiteral("MarblerSourcesTest"));
     ::testing::InitGoogleTest(&argc, argv);
     const int status = RUN_ALL_TESTS();
