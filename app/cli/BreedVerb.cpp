@@ -5,6 +5,15 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Operators.h"
+#include "marbler/SourcePath.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <optional>
 
 #include <cstdio>
 #include <filesystem>
@@ -39,6 +48,8 @@ repeat one is drawn again, or becomes a gentle variation of itself, which its
 meta.lineage.variation records (the id it varies and the strength).
 Parts locked in a parent's meta.locks (palette, initial, operations) are never changed.
 Each child records meta.lineage (parents' ids, operator, seed, generation) and meta.id.
+A parent's source image is named from DIR; one outside DIR (which a genome may not read,
+see marbler render --help) is embedded in the child as a data: URI instead.
 
 options:
   --seed N          the seed, a non-negative 64-bit integer (required)
@@ -54,14 +65,60 @@ std::string childName(int index) {
     return name;
 }
 
-/// A relative `source` image was relative to its parent's folder; the child lives in DIR.
+/// Base64 (RFC 4648, padded), for an embedded source image.
+std::string encodeBase64(const std::string& bytes) {
+    static constexpr char Digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        std::uint32_t v = std::uint32_t(static_cast<unsigned char>(bytes[i])) << 16;
+        if (i + 1 < bytes.size()) v |= std::uint32_t(static_cast<unsigned char>(bytes[i + 1])) << 8;
+        if (i + 2 < bytes.size()) v |= std::uint32_t(static_cast<unsigned char>(bytes[i + 2]));
+        out += Digits[(v >> 18) & 63];
+        out += Digits[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? Digits[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? Digits[v & 63] : '=';
+    }
+    return out;
+}
+
+/// The image as a data: URI, when its format is one a data URI may carry and it is small
+/// enough to leave the genome within its size limit; nullopt otherwise.
+std::optional<std::string> dataUriOf(const fs::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::map<std::string, std::string> types{{".png", "image/png"},   {".jpg", "image/jpeg"},
+                                                   {".jpeg", "image/jpeg"}, {".tif", "image/tiff"},
+                                                   {".tiff", "image/tiff"}, {".bmp", "image/bmp"},
+                                                   {".exr", "image/x-exr"}};
+    auto type = types.find(extension);
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (type == types.end() || ec || size > MaxFileBytes / 2) return std::nullopt;
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in && !in.eof()) return std::nullopt;
+    return "data:" + type->second + ";base64," + encodeBase64(bytes);
+}
+
+/// A relative `source` image was relative to its parent's folder; the child lives in DIR. Where
+/// the image lies outside DIR, the path from DIR would lead out of the child's folder, which
+/// the source rule (SourcePath.h) refuses: an image the parent could read (in its own folder)
+/// is embedded into the child instead, so the child renders and can be shared as it is. An
+/// image the parent itself could not read without --allow-external-source is left as a path,
+/// and refused alike.
 void rebaseSource(Genome& child, const fs::path& dir) {
-    if (!child.source || child.source->image.starts_with("data:")) return;
+    if (!child.source || isDataUri(child.source->image)) return;
+    const SourceLocation parent = locateSource(child);
     fs::path image(child.source->image);
     if (image.is_absolute()) return;
     fs::path base = child.baseDirectory.empty() ? fs::path(".") : fs::path(child.baseDirectory);
     fs::path target = fs::absolute(base / image).lexically_normal();
-    child.source->image = target.lexically_proximate(fs::absolute(dir).lexically_normal()).generic_string();
+    const fs::path rebased = target.lexically_proximate(fs::absolute(dir).lexically_normal());
+    child.source->image = rebased.generic_string();
+    if (parent.kind != SourceLocation::Kind::Inside || (!rebased.empty() && *rebased.begin() != ".."))
+        return;
+    if (std::optional<std::string> embedded = dataUriOf(parent.file)) child.source->image = *embedded;
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
+#include "marbler/SourcePath.h"
 
 #include <array>
 #include <iostream>
@@ -18,8 +19,9 @@ constexpr const char* InfoHelp = R"(usage: marbler info GENOME
 Checks a genome file (or the genome inside a PNG or TIFF image Marbler wrote) against every
 rule of the format and prints a summary: dimension,
 size, palette, background, how many entries of each tool lie in `initial` and `operations`,
-the source image and the design's name, if any. Unknown keys are reported as warnings on
-stderr.
+the source image and the design's name, if any. Unknown keys, and a source image that lies
+outside the genome's folder (which `render` reads only with --allow-external-source), are
+reported as warnings on stderr; the image itself is not read.
 
 exit status: 0 when the genome is valid, 2 when it is not (one line on stderr naming the
 file and the JSON location of the first problem).
@@ -62,6 +64,10 @@ int runInfo(std::span<const std::string> words) {
         const std::string& file = args.positional[0];
 
         Genome genome = loadGenomeArgument("info", file);
+        if (const SourceLocation where = locateSource(genome); where.kind == SourceLocation::Kind::Outside)
+            std::cerr << "marbler info: warning: " << file << ": source.image: '" << genome.source->image << "' ("
+                      << where.file.string()
+                      << ") lies outside the genome's folder; render reads it only with --allow-external-source\n";
 
         std::ostringstream out;
         out << "file:       " << file << '\n';

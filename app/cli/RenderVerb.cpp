@@ -49,6 +49,10 @@ options:
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
   --cut NX,NY,NZ,OFFSET     cut the --mesh object open: the part where NX*x + NY*y + NZ*z >
                             OFFSET (design coordinates) is removed, showing the marbled inside
+  --allow-external-source   read the genome's source image even where it lies outside the
+                            genome's folder (an absolute path, `..`, a link leading out); by
+                            default such a genome is refused, so a shared genome cannot read
+                            your other files
   --repeat mirror           a seamless repeat tile for print and textiles: the render and its
                             mirror images 2 x 2 (twice the width and height: the design at
                             the top left, its horizontal mirror at the top right, the vertical
@@ -153,7 +157,7 @@ int render(std::span<const std::string> words) {
     Args args = parseArgs(words,
                           {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
                            "supersample", "cut", "threads", "repeat"},
-                          {"gpu", "quiet", "progress", "help", "h"});
+                          {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << Help;
         return ExitOk;
@@ -203,6 +207,7 @@ int render(std::span<const std::string> words) {
 
     const std::string genomeName = args.positional[0];
     Genome genome = loadGenomeArgument("render", genomeName);
+    genome.allowExternalSource = args.has("allow-external-source");
 
     try {
         return renderGenome(args, genomeName, genome, settings, exportOptions, printSize, outFile);

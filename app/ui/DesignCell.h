@@ -39,6 +39,8 @@ public:
     QRect lockMarkerRect() const;
     /// A line drawn when rendering failed.
     void setError(const QString& message);
+    /// That line (empty while the design renders or rendered).
+    const QString& error() const { return mError; }
 
     QSize sizeHint() const override { return {240, 240}; }
     QSize minimumSizeHint() const override { return {96, 96}; }

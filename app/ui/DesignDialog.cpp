@@ -10,6 +10,9 @@
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
+#include "ui/SourcePermissions.h"
+#include "marbler/gl/GlRenderer.h"
+#include "marbler/gl/HybridMesh.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -66,9 +69,25 @@ QString exportSizeProblem(QSize pixels) {
 }
 
 ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent)
-    : QDialog(parent), mAspect(genome.size.y / genome.size.x) {
+    : QDialog(parent), mGenome(genome) {
     setWindowTitle(tr("Export image"));
     auto* form = new QFormLayout;
+    // The CLI's writers: PNG and TIFF built in, JPEG and EXR through the image module.
+    mFormat = new QComboBox(this);
+    mFormat->setObjectName(QStringLiteral("exportFormat"));
+    mFormat->addItem(tr("PNG (8-bit sRGB)"), QStringLiteral(".png"));
+    mFormat->addItem(tr("JPEG (8-bit sRGB)"), QStringLiteral(".jpg"));
+    mFormat->addItem(tr("TIFF (8-bit sRGB)"), QStringLiteral(".tif"));
+    mFormat->addItem(tr("TIFF (16-bit sRGB, for print)"), QStringLiteral(".tif/16"));
+    mFormat->addItem(tr("OpenEXR (linear half float)"), QStringLiteral(".exr"));
+    mFormat->setToolTip(tr("The file format; a 16-bit TIFF keeps the smooth gradients of an antialiased "
+                           "render for further grading, EXR keeps linear light"));
+    {
+        const QSettings settings;
+        setFormat(settings.value(QStringLiteral("files/exportExtension"), QStringLiteral(".png")).toString(),
+                  settings.value(QStringLiteral("files/exportBits"), 8).toInt());
+    }
+    form->addRow(tr("&Format"), mFormat);
     mWidth = new QDoubleSpinBox(this);
     mWidth->setObjectName(QStringLiteral("exportWidth"));
     // Wide enough for any unit at any dpi; the size check says what is too large.
@@ -101,8 +120,48 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     form->addRow(tr("&Resolution (dpi)"), mDpi);
     form->addRow(tr("&Antialiasing"), mAa);
     form->addRow(tr("Image"), mPixels);
-    if (genome.dimension == 3)
-        form->addRow(new QLabel(tr("A solid design exports its middle cross-section (z = depth / 2)."), this));
+    if (genome.dimension == 3) {
+        mSolidView = new QComboBox(this);
+        mSolidView->setObjectName(QStringLiteral("exportSolidView"));
+        mSolidView->addItem(tr("Object view (as shown)"));
+        mSolidView->addItem(tr("Cross-section"));
+        mSolidView->setToolTip(tr("The design on its object, as the view shows it, or a flat cut through the block"));
+        mAxis = new QComboBox(this);
+        mAxis->setObjectName(QStringLiteral("exportAxis"));
+        mAxis->addItem(tr("x (a y-z plane)"));
+        mAxis->addItem(tr("y (an x-z plane)"));
+        mAxis->addItem(tr("z (an x-y plane)"));
+        mAxis->setCurrentIndex(2);
+        mAxis->setToolTip(tr("The axis the cross-section is taken across"));
+        mPosition = new QDoubleSpinBox(this);
+        mPosition->setObjectName(QStringLiteral("exportPosition"));
+        mPosition->setDecimals(2);
+        mPosition->setToolTip(tr("Where on its axis the cross-section lies, in design units"));
+        auto showAxis = [this] {
+            const int axis = mAxis->currentIndex();
+            const double side = mGenome.size[axis];
+            // The middle of the new axis: its old position may not lie inside it.
+            mPosition->setRange(0.0, side);
+            mPosition->setValue(side / 2.0);
+        };
+        showAxis();
+        auto enable = [this] {
+            const bool slice = mSolidView->currentIndex() == 1;
+            mAxis->setEnabled(slice);
+            mPosition->setEnabled(slice);
+            updateSummary();
+        };
+        connect(mAxis, &QComboBox::currentIndexChanged, this, [this, showAxis] {
+            showAxis();
+            updateSummary();
+        });
+        connect(mSolidView, &QComboBox::currentIndexChanged, this, enable);
+        form->addRow(tr("&Show"), mSolidView);
+        form->addRow(tr("A&xis"), mAxis);
+        form->addRow(tr("&Position"), mPosition);
+        mAxis->setEnabled(false);
+        mPosition->setEnabled(false);
+    }
     mButtons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(mButtons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(mButtons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -110,10 +169,18 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     layout->addLayout(form);
     layout->addWidget(mButtons);
     // Every field in reading order, then the buttons.
+    setTabOrder(mFormat, mWidth);
     setTabOrder(mWidth, mUnit);
     setTabOrder(mUnit, mDpi);
     setTabOrder(mDpi, mAa);
-    setTabOrder(mAa, mButtons->button(QDialogButtonBox::Ok));
+    QWidget* last = mAa;
+    if (mSolidView) {
+        setTabOrder(mAa, mSolidView);
+        setTabOrder(mSolidView, mAxis);
+        setTabOrder(mAxis, mPosition);
+        last = mPosition;
+    }
+    setTabOrder(last, mButtons->button(QDialogButtonBox::Ok));
     setTabOrder(mButtons->button(QDialogButtonBox::Ok), mButtons->button(QDialogButtonBox::Cancel));
 
     connect(mUnit, &QComboBox::currentIndexChanged, this, [this] { showWidth(); });
@@ -167,9 +234,49 @@ double ExportSettingsDialog::widthValue() const { return mWidth->value(); }
 void ExportSettingsDialog::setWidthValue(double value) { mWidth->setValue(value); }
 void ExportSettingsDialog::setDpi(int dpi) { mDpi->setValue(dpi); }
 
+double ExportSettingsDialog::aspect() const {
+    const glm::dvec3& size = mGenome.size;
+    if (mGenome.dimension != 3) return size.y / size.x;
+    if (mSolidView->currentIndex() == 0) return 1.0;
+    // A slice's plane in its own axes: y-z across x, x-z across y, x-y across z.
+    switch (mAxis->currentIndex()) {
+    case 0: return size.z / size.y;
+    case 1: return size.z / size.x;
+    default: return size.y / size.x;
+    }
+}
+
+QString ExportSettingsDialog::extension() const { return mFormat->currentData().toString().section('/', 0, 0); }
+
+int ExportSettingsDialog::bitsPerSample() const { return mFormat->currentData().toString().endsWith("/16") ? 16 : 8; }
+
+void ExportSettingsDialog::setFormat(const QString& extension, int bitsPerSample) {
+    QString wanted = extension.toLower();
+    if (wanted == ".tiff") wanted = ".tif";
+    if (wanted == ".jpeg") wanted = ".jpg";
+    if (wanted == ".tif" && bitsPerSample == 16) wanted += "/16";
+    const int index = mFormat->findData(wanted);
+    mFormat->setCurrentIndex(index >= 0 ? index : 0);
+}
+
+std::optional<SolidExport> ExportSettingsDialog::solidExport() const {
+    if (mGenome.dimension != 3) return std::nullopt;
+    SolidExport solid;
+    solid.objectView = mSolidView->currentIndex() == 0;
+    solid.slice = Slice{mAxis->currentIndex(), mPosition->value()};
+    return solid;
+}
+
+void ExportSettingsDialog::setSolidExport(const SolidExport& solid) {
+    if (mGenome.dimension != 3) return;
+    mSolidView->setCurrentIndex(solid.objectView ? 0 : 1);
+    mAxis->setCurrentIndex(std::clamp(solid.slice.axis, 0, 2));
+    mPosition->setValue(solid.slice.value);
+}
+
 QSize ExportSettingsDialog::pixels() const {
     const double w = std::round(mPixelWidth);
-    const double h = std::round(w * mAspect);
+    const double h = std::round(w * aspect());
     // Clamped only so the numbers fit an int; the size check refuses what is too large.
     const auto fit = [](double v) { return int(std::clamp(v, 0.0, 2e9)); };
     return {std::max(1, fit(w)), std::max(1, fit(h))};
@@ -483,17 +590,20 @@ QString DesignDialog::suggestedExportFile() const {
 void DesignDialog::exportImage() {
     ExportSettingsDialog settingsDialog(mGenome, this);
     if (settingsDialog.exec() != QDialog::Accepted) return;
-    QString file = askSaveFile(this, tr("Export image"), suggestedExportFile(),
-                               tr("Images (*.png *.tif *.tiff *.exr *.jpg *.jpeg)"));
-    if (file.isEmpty()) return;
     QSettings settings;
-    // A name typed without a format gets the one offered.
-    if (QFileInfo(file).suffix().isEmpty())
-        file += settings.value(QStringLiteral("files/exportExtension"), QStringLiteral(".png")).toString();
+    const QString extension = settingsDialog.extension();
+    settings.setValue(QStringLiteral("files/exportExtension"), extension);
+    settings.setValue(QStringLiteral("files/exportBits"), settingsDialog.bitsPerSample());
+    QString file = askSaveFile(this, tr("Export image"), suggestedExportFile(),
+                               tr("Images (*%1);;All images (*.png *.tif *.tiff *.exr *.jpg *.jpeg)").arg(extension));
+    if (file.isEmpty()) return;
+    // A name typed without a format gets the one chosen.
+    if (QFileInfo(file).suffix().isEmpty()) file += extension;
     settings.setValue(QStringLiteral("files/exportDir"), QFileInfo(file).absolutePath());
     settings.setValue(QStringLiteral("files/exportExtension"), QStringLiteral(".") + QFileInfo(file).suffix().toLower());
 
-    exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi());
+    exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi(),
+             settingsDialog.solidExport(), settingsDialog.bitsPerSample());
 }
 
 void DesignDialog::copyGenome() {
@@ -508,7 +618,8 @@ bool DesignDialog::saveTo(const QString& file) {
     return true;
 }
 
-bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi) {
+bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi,
+                            std::optional<SolidExport> solid, int bitsPerSample) {
     if (mExportCancel) return false;
     if (const QString problem = exportSizeProblem(pixels); !problem.isEmpty()) {
         reportError(this, tr("Cannot export the image"), problem);
@@ -518,9 +629,26 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     render.width = std::max(1, pixels.width());
     render.height = std::max(1, pixels.height());
     render.aa = aa.toStdString();
-    if (mGenome.dimension == 3) render.slice = Slice{2, mGenome.size.z / 2.0};
+    if (mGenome.dimension == 3) render.slice = solid ? solid->slice : Slice{2, mGenome.size.z / 2.0};
     ExportOptions options;
     options.dpi = dpi;
+    options.bitsPerSample = bitsPerSample;
+    // The object as the view shows it: the same mesh, angle and zoom, framed at the export's size.
+    std::optional<gl::MeshSettings> object;
+    if (mGenome.dimension == 3 && solid && solid->objectView) {
+        gl::MeshSettings mesh;
+        mesh.width = render.width;
+        mesh.height = render.height;
+        mesh.mesh = mMesh.toStdString();
+        mesh.yaw = mAngle.yaw;
+        mesh.pitch = mAngle.pitch;
+        mesh.zoom = mObjectZoom;
+        object = mesh;
+    }
+    const bool objectOnGl = mRenderer->usesGl();
+    // A source outside the design's folder is read only when the user allowed it for the view.
+    Genome genome = mGenome;
+    SourcePermissions::session().apply(genome);
 
     // The export runs on its own thread; the dialog polls its progress so the worker never
     // touches a widget.
@@ -528,12 +656,23 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     mExportCancel = cancel;
     auto progress = std::make_shared<std::atomic<double>>(0.0);
     auto error = std::make_shared<QString>();
-    QThread* thread = QThread::create([genome = mGenome, render, file, options, cancel, progress, error] {
+    QThread* thread = QThread::create([genome, render, object, objectOnGl, file, options, cancel, progress, error] {
         RenderControl control;
         control.cancel = cancel.get();
         control.progress = [progress](double p) { progress->store(p, std::memory_order_relaxed); };
         try {
-            renderToFile(genome, render, file.toStdString(), options, &control);
+            if (object) {
+                // A context of this thread's own: a GL renderer stays on the thread that made it.
+                // The window's back end decides as for the cells: the GPU shades, or GL only
+                // rasterises and the CPU kernel colours.
+                gl::GlRenderer renderer;
+                const Image image = objectOnGl ? renderer.renderMesh(genome, *object)
+                                               : gl::renderMeshHybrid(renderer, genome, *object, &control);
+                if (control.cancelled()) throw Cancelled();
+                writeImage(image, file.toStdString(), options);
+            } else {
+                renderToFile(genome, render, file.toStdString(), options, &control);
+            }
         } catch (const Cancelled&) {
         } catch (const std::exception& e) {
             *error = QString::fromStdString(e.what());

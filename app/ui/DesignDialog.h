@@ -4,6 +4,7 @@
 /// (later) open it in the editor.
 
 #include "marbler/Genome.h"
+#include "marbler/Sampling.h"
 #include "ui/ViewController.h"
 
 #include <QDialog>
@@ -24,6 +25,13 @@ class QThread;
 
 namespace marbler::ui {
 
+/// What the export of a solid design shows: its object as the large view shows it (mesh, angle,
+/// zoom), or a cross-section at any axis and position.
+struct SolidExport {
+    bool objectView = false;
+    Slice slice{2, 0.0}; ///< the cross-section, when not the object view
+};
+
 class DesignCanvas;
 class RenderService;
 
@@ -40,9 +48,11 @@ public:
     /// Starts rendering the design to an image file (format by extension) at a pixel size on a
     /// thread of its own, written atomically; exportFinished follows. Returns false when an
     /// export is already running, or when the size is beyond the renderer's limits (reported,
-    /// see exportSizeProblem).
+    /// see exportSizeProblem). `bitsPerSample` 16 makes a 16-bit TIFF. A solid shows `solid`
+    /// (its middle z cross-section when unset).
     bool exportTo(const QString& file, QSize pixels, const QString& aa = QStringLiteral("rgss"),
-                  std::optional<double> dpi = std::nullopt);
+                  std::optional<double> dpi = std::nullopt, std::optional<SolidExport> solid = std::nullopt,
+                  int bitsPerSample = 8);
     /// Puts the genome on the clipboard as genome text (the Copy genome button, Ctrl+C).
     void copyGenome();
     /// Stops a running export; no file is left behind.
@@ -137,8 +147,8 @@ private:
 /// limits MaxImageSide and MaxImagePixels (marbler/Sampling.h), said in pixels and megapixels.
 QString exportSizeProblem(QSize pixels);
 
-/// The size and antialiasing of an exported image, in pixels or as a print size (cm, mm,
-/// inches) at a dpi. Changing the unit converts the width at the dpi, so the image keeps its
+/// The format, size and antialiasing of an exported image, in pixels or as a print size (cm, mm,
+/// inches) at a dpi; for a solid design, whether it shows the object or a cross-section. Changing the unit converts the width at the dpi, so the image keeps its
 /// pixels; changing the dpi of a print size keeps the print size. Sizes beyond the renderer's
 /// limits are refused with the reason, before any work starts.
 class ExportSettingsDialog : public QDialog {
@@ -157,21 +167,36 @@ public:
     QSize pixels() const;
     std::optional<double> dpi() const;
     std::string aa() const;
+    /// The format: its extension (".png", ".jpg", ".tif", ".exr") and a TIFF's bits a sample.
+    QString extension() const;
+    int bitsPerSample() const;
+    /// Chooses a format by extension and depth (".tif", 16: the 16-bit TIFF).
+    void setFormat(const QString& extension, int bitsPerSample = 8);
+    /// A solid design's view (unset for a flat design).
+    std::optional<SolidExport> solidExport() const;
+    void setSolidExport(const SolidExport& solid);
 
     void accept() override;
 
 private:
     double perInch() const;
+    /// The image's height over its width: the design's, a cross-section's plane's, or 1 for
+    /// the object view (framed whatever the proportions; square like the grid's cells).
+    double aspect() const;
     void showWidth();
     void updateSummary();
 
-    double mAspect;
+    Genome mGenome;
     double mPixelWidth = 2048.0; ///< the chosen width in pixels, exact whatever unit shows it
     bool mShowing = false;       ///< the width field is being set from mPixelWidth
     QComboBox* mUnit = nullptr;
     QDoubleSpinBox* mWidth = nullptr;
     QSpinBox* mDpi = nullptr;
     QComboBox* mAa = nullptr;
+    QComboBox* mFormat = nullptr;
+    QComboBox* mSolidView = nullptr;   ///< solids: object view or cross-section
+    QComboBox* mAxis = nullptr;        ///< solids: the cross-section's axis
+    QDoubleSpinBox* mPosition = nullptr; ///< solids: the cross-section's position on its axis
     QLabel* mPixels = nullptr;
     QDialogButtonBox* mButtons = nullptr;
 };

@@ -4,6 +4,10 @@
 #include "marbler/Error.h"
 #include "marbler/gl/GlRenderer.h"
 #include "marbler/gl/HybridMesh.h"
+#include "ui/SourcePermissions.h"
+
+#include <QApplication>
+#include <QTimer>
 
 #include <QMetaObject>
 #include <QSettings>
@@ -255,22 +259,85 @@ RenderService::~RenderService() {
 
 std::uint64_t RenderService::request(std::uint64_t key, RenderRequest request) {
     const std::uint64_t ticket = mNextTicket++;
+    mHeld.remove(key);
+    mOutstanding[key] = ticket;
+    if (!request.genome.allowExternalSource) {
+        if (const QString image = SourcePermissions::externalImage(request.genome); !image.isEmpty()) {
+            const std::optional<bool> answer = SourcePermissions::session().answer(image);
+            if (!answer) {
+                // Asked from the event loop, not from inside this call: the caller may be in the
+                // middle of laying out a generation, and the question's own event loop would
+                // run into it.
+                dropJob(key);
+                mHeld.insert(key, Held{ticket, std::move(request), image});
+                if (!mAsking.contains(image)) {
+                    mAsking.insert(image);
+                    QTimer::singleShot(0, this, [this, image] { askAbout(image); });
+                }
+                return ticket;
+            }
+            if (!*answer) {
+                dropJob(key);
+                QMetaObject::invokeMethod(
+                    this, [this, key, ticket, image] { onResult(key, ticket, QImage(), true, refusedSourceMessage(image)); },
+                    Qt::QueuedConnection);
+                return ticket;
+            }
+            request.genome.allowExternalSource = true;
+        }
+    }
+    enqueue(key, ticket, std::move(request));
+    return ticket;
+}
+
+void RenderService::enqueue(std::uint64_t key, std::uint64_t ticket, RenderRequest request) {
     {
         std::lock_guard lock(mQueue->mutex);
         mQueue->jobs[key] = RenderQueue::Job{ticket, std::move(request), false, nullptr};
         mQueue->abortIfInFlight(key);
     }
-    mOutstanding[key] = ticket;
     QMetaObject::invokeMethod(mWorker, &RenderWorker::work, Qt::QueuedConnection);
-    return ticket;
+}
+
+void RenderService::dropJob(std::uint64_t key) {
+    std::lock_guard lock(mQueue->mutex);
+    mQueue->jobs.erase(key);
+    mQueue->abortIfInFlight(key);
+}
+
+void RenderService::askAbout(const QString& image) {
+    QString design;
+    for (const Held& held : std::as_const(mHeld))
+        if (held.image == image) {
+            design = QString::fromStdString(held.request.genome.fileName);
+            break;
+        }
+    const bool allowed = askExternalSource(QApplication::activeWindow(), design, image);
+    SourcePermissions::session().setAnswer(image, allowed);
+    mAsking.remove(image);
+    // Taken out first: a result's receiver may request again, which changes mHeld.
+    std::vector<std::pair<std::uint64_t, Held>> waiting;
+    for (auto it = mHeld.begin(); it != mHeld.end();) {
+        if (it->image != image) {
+            ++it;
+            continue;
+        }
+        waiting.emplace_back(it.key(), std::move(it.value()));
+        it = mHeld.erase(it);
+    }
+    for (auto& [key, held] : waiting) {
+        if (allowed) {
+            held.request.genome.allowExternalSource = true;
+            enqueue(key, held.ticket, std::move(held.request));
+        } else {
+            onResult(key, held.ticket, QImage(), true, refusedSourceMessage(image));
+        }
+    }
 }
 
 void RenderService::cancel(std::uint64_t key) {
-    {
-        std::lock_guard lock(mQueue->mutex);
-        mQueue->jobs.erase(key);
-        mQueue->abortIfInFlight(key);
-    }
+    mHeld.remove(key);
+    dropJob(key);
     if (mOutstanding.remove(key) && mOutstanding.isEmpty()) emit becameIdle();
 }
 

@@ -10,6 +10,9 @@
 /// one that has not finished, and only the newest result of a key is delivered. Each request is
 /// rendered twice: a fast preview, then the antialiased final image; the previews of all waiting
 /// requests come before any final pass.
+/// A design whose source image lies outside its folder is rendered only once the user allowed
+/// it (SourcePermissions.h): its request waits for the question, asked once per image; a
+/// refused one fails with a message saying so.
 
 #include "marbler/Genome.h"
 #include "marbler/Sampling.h"
@@ -18,6 +21,7 @@
 #include <QHash>
 #include <QImage>
 #include <QObject>
+#include <QSet>
 #include <QSize>
 #include <QString>
 #include <QThread>
@@ -101,6 +105,22 @@ signals:
 private:
     void start(Backend backend, gl::BackendPreference preference);
     void onResult(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final, const QString& error);
+    /// Hands a request to the worker.
+    void enqueue(std::uint64_t key, std::uint64_t ticket, RenderRequest request);
+    /// Drops the worker's job of a key (not the outstanding ticket).
+    void dropJob(std::uint64_t key);
+    /// Asks about an outside image and releases (or fails) the requests waiting on it.
+    void askAbout(const QString& image);
+
+    /// A request waiting for the answer about the outside image it reads.
+    struct Held {
+        std::uint64_t ticket = 0;
+        RenderRequest request;
+        QString image;
+    };
+    QHash<std::uint64_t, Held> mHeld;
+    /// Images whose question is asked or about to be.
+    QSet<QString> mAsking;
 
     QThread mThread;
     RenderWorker* mWorker = nullptr; ///< owned by mThread's lifetime (deleteLater on finish)

@@ -498,6 +498,7 @@ Genome loadGenome(const std::filesystem::path& file, std::vector<std::string>* w
     Genome genome = parseGenome(text, name, warnings);
     std::filesystem::path folder = file.parent_path();
     genome.baseDirectory = folder.empty() ? std::string(".") : folder.string();
+    genome.fileName = name;
     return genome;
 }
 

@@ -235,7 +235,7 @@ CpuRenderer::CpuRenderer(const Genome& genome) : mImpl(std::make_unique<Impl>())
     for (const glm::dvec3& v : mImpl->paletteLinear) mImpl->paletteSrgb8.push_back(encode(v));
     mImpl->backgroundSrgb8 = encode(mImpl->backgroundLinear);
     if (genome.source && genome.dimension == 2)
-        mImpl->source = detail::loadSourceImage(*genome.source, genome.baseDirectory);
+        mImpl->source = decodeSourceImage(genome);
 }
 
 CpuRenderer::~CpuRenderer() = default;

@@ -543,6 +543,7 @@ Genome loadDesign(const std::filesystem::path& file, std::vector<std::string>* w
     // The same rule as for a genome file: a relative source lies beside the image.
     std::filesystem::path folder = file.parent_path();
     genome.baseDirectory = folder.empty() ? std::string(".") : folder.string();
+    genome.fileName = name; // errors about its source name the image
     return genome;
 }
 

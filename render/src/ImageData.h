@@ -1,23 +1,18 @@
 #pragma once
-/// Internal to render/: the decoded source image of a genome, which only ImageIO.cpp (the one
-/// file that sees OpenImageIO) can load.
+/// Internal to render/: what the decoding of source images needs (decodeSourceImage, in
+/// ImageIO.cpp, is the public entry).
 
 #include "marbler/Genome.h"
+#include "marbler/SourceDecoder.h"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace marbler::detail {
 
-/// An RGB raster in linear light, rows top to bottom.
-struct LinearRaster {
-    int width = 0, height = 0;
-    std::vector<float> rgb;
-};
-
-/// Loads a genome's `source` image: a path relative to `baseDirectory`, or a
-/// `data:image/...;base64,` URL. Throws InputError naming the file when it cannot be loaded.
-LinearRaster loadSourceImage(const SourceImage& source, const std::string& baseDirectory);
+/// The public raster (SourceDecoder.h), by the name the image module's interface uses.
+using LinearRaster = marbler::LinearRaster;
 
 /// Decodes base64 (RFC 4648, padding optional, whitespace skipped). Throws InputError when the
 /// text holds anything else.

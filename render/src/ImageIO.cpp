@@ -5,6 +5,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Modules.h"
+#include "marbler/SourcePath.h"
 
 #include <algorithm>
 #include <atomic>
@@ -64,38 +65,50 @@ ImageIoModule& imageIoModule() {
     return *module;
 }
 
-LinearRaster loadSourceImage(const SourceImage& source, const std::string& baseDirectory) {
-    const std::string& text = source.image;
-    if (text.rfind("data:", 0) == 0) {
-        const std::string name = "(data URL)";
-        std::size_t comma = text.find(',');
-        if (comma == std::string::npos) throw InputError("source image " + name + ": no ',' in the data URL");
-        std::string header = text.substr(5, comma - 5);
-        if (header.size() < 7 || header.substr(header.size() - 7) != ";base64")
-            throw InputError("source image " + name + ": only base64 data URLs are supported");
-        std::string mime = header.substr(0, header.size() - 7);
-        std::string extension = "png";
-        if (mime == "image/jpeg" || mime == "image/jpg") extension = "jpg";
-        else if (mime == "image/tiff") extension = "tif";
-        else if (mime == "image/bmp") extension = "bmp";
-        else if (mime == "image/x-exr") extension = "exr";
-        std::vector<unsigned char> bytes;
-        try {
-            bytes = decodeBase64(std::string_view(text).substr(comma + 1));
-        } catch (const InputError& e) {
-            throw InputError("source image " + name + ": " + e.what());
-        }
-        return imageIoModule().readMemory(bytes.data(), bytes.size(), extension, name);
+/// Decodes a `data:image/...;base64,` URI. Throws InputError.
+LinearRaster decodeDataUri(const std::string& text) {
+    const std::string name = "(data URL)";
+    std::size_t comma = text.find(',');
+    if (comma == std::string::npos) throw InputError("source image " + name + ": no ',' in the data URL");
+    std::string header = text.substr(5, comma - 5);
+    if (header.size() < 7 || header.substr(header.size() - 7) != ";base64")
+        throw InputError("source image " + name + ": only base64 data URLs are supported");
+    std::string mime = header.substr(0, header.size() - 7);
+    std::string extension = "png";
+    if (mime == "image/jpeg" || mime == "image/jpg") extension = "jpg";
+    else if (mime == "image/tiff") extension = "tif";
+    else if (mime == "image/bmp") extension = "bmp";
+    else if (mime == "image/x-exr") extension = "exr";
+    std::vector<unsigned char> bytes;
+    try {
+        bytes = decodeBase64(std::string_view(text).substr(comma + 1));
+    } catch (const InputError& e) {
+        throw InputError("source image " + name + ": " + e.what());
     }
-    fs::path file(text);
-    if (file.is_relative() && !baseDirectory.empty()) file = fs::path(baseDirectory) / file;
-    const std::string name = "'" + file.string() + "'";
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) throw InputError("source image " + name + ": no such file");
-    return imageIoModule().readFile(file.string(), name);
+    return imageIoModule().readMemory(bytes.data(), bytes.size(), extension, name);
 }
 
 } // namespace detail
+
+LinearRaster decodeSourceImage(const Genome& genome) {
+    const std::string& text = genome.source->image;
+    if (!isDataUri(text)) {
+        // The rule of SourcePath.h comes first: a refused file is never opened.
+        const fs::path file = sourceFileToRead(genome);
+        try {
+            return detail::imageIoModule().readFile(file.string(), "'" + file.string() + "'");
+        } catch (const GenomeError&) {
+            throw;
+        } catch (const InputError& e) {
+            throw GenomeError(genomeName(genome), "source.image", e.what());
+        }
+    }
+    try {
+        return detail::decodeDataUri(text);
+    } catch (const InputError& e) {
+        throw GenomeError(genomeName(genome), "source.image", e.what());
+    }
+}
 
 namespace {
 

@@ -7,11 +7,14 @@
 #include "marbler/GenomeImage.h"
 #include "marbler/ImageFormats.h"
 #include "marbler/Modules.h"
+#include "marbler/Sampling.h"
 
 #include <png.h>
 #include <tiffio.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cmath>
 #include <csetjmp>
 #include <cstdarg>
@@ -153,7 +156,10 @@ void tiffError(const char* module, const char* format, va_list args) {
 
 class TiffSink final : public ImageSink {
 public:
-    explicit TiffSink(const SinkTarget& target) : mTarget(target) {
+    explicit TiffSink(const SinkTarget& target) : mTarget(target), mDeep(target.options.bitsPerSample == 16) {
+        if (target.options.bitsPerSample != 8 && target.options.bitsPerSample != 16)
+            throw InputError("'" + target.displayName + "': a TIFF holds 8 or 16 bits a sample (got " +
+                             std::to_string(target.options.bitsPerSample) + ")");
         static std::once_flag handlers;
         std::call_once(handlers, [] {
             TIFFSetErrorHandler(tiffError);
@@ -165,7 +171,7 @@ public:
         TIFFSetField(mTiff, TIFFTAG_IMAGEWIDTH, std::uint32_t(target.width));
         TIFFSetField(mTiff, TIFFTAG_IMAGELENGTH, std::uint32_t(target.height));
         TIFFSetField(mTiff, TIFFTAG_SAMPLESPERPIXEL, 3);
-        TIFFSetField(mTiff, TIFFTAG_BITSPERSAMPLE, 8);
+        TIFFSetField(mTiff, TIFFTAG_BITSPERSAMPLE, mDeep ? 16 : 8);
         TIFFSetField(mTiff, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_RGB);
         TIFFSetField(mTiff, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
         TIFFSetField(mTiff, TIFFTAG_ORIENTATION, ORIENTATION_TOPLEFT);
@@ -185,19 +191,29 @@ public:
             TIFFSetField(mTiff, TIFFTAG_YRESOLUTION, float(*target.options.dpi));
             TIFFSetField(mTiff, TIFFTAG_RESOLUTIONUNIT, RESUNIT_INCH);
         }
-        mPending.reserve(std::size_t(RowsPerStrip) * std::size_t(target.width) * 3);
+        mPending.reserve(std::size_t(RowsPerStrip) * std::size_t(target.width) * 3 * (mDeep ? 2 : 1));
     }
 
     ~TiffSink() override {
         if (mTiff) TIFFClose(mTiff);
     }
 
-    bool linearFloat() const override { return false; }
+    /// A 16-bit file takes the linear average itself, so its extra bits are real, not an
+    /// 8-bit value scaled up.
+    bool linearFloat() const override { return mDeep; }
 
     /// Rows are gathered into whole strips, each encoded with one call.
     void writeRows(int y0, int y1, const void* rows) override {
-        const auto* bytes = static_cast<const unsigned char*>(rows);
-        const std::size_t stride = std::size_t(mTarget.width) * 3;
+        const std::size_t stride = std::size_t(mTarget.width) * 3 * (mDeep ? 2 : 1);
+        std::vector<std::uint16_t> deep;
+        const unsigned char* bytes = static_cast<const unsigned char*>(rows);
+        if (mDeep) {
+            const auto* linear = static_cast<const float*>(rows);
+            deep.resize(std::size_t(y1 - y0) * std::size_t(mTarget.width) * 3);
+            for (std::size_t k = 0; k < deep.size(); ++k)
+                deep[k] = std::uint16_t(std::lround(linearToSrgb(std::clamp(double(linear[k]), 0.0, 1.0)) * 65535.0));
+            bytes = reinterpret_cast<const unsigned char*>(deep.data());
+        }
         for (int y = y0; y < y1; ++y) {
             mPending.insert(mPending.end(), bytes + std::size_t(y - y0) * stride,
                             bytes + std::size_t(y - y0 + 1) * stride);
@@ -227,6 +243,7 @@ private:
     }
 
     SinkTarget mTarget;
+    bool mDeep = false; ///< 16 bits a sample
     TIFF* mTiff = nullptr;
     std::uint32_t mStrip = 0;
     std::vector<unsigned char> mPending;

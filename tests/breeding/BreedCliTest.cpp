@@ -116,6 +116,33 @@ TEST(BreedVerb, WritesReproducibleChildren) {
     EXPECT_NE(test::readFile(other / "child-01.marble.json"), test::readFile(out1 / "child-01.marble.json"));
 }
 
+TEST(BreedVerb, ChildrenElsewhereEmbedTheirParentsSourceImage) {
+    // A child written into another folder would name its parent's image with `..`, which the
+    // source rule refuses; it carries the image instead, and renders.
+    const fs::path root = test::outputDir("breed-source");
+    fs::remove_all(root);
+    fs::create_directories(root / "parent");
+    fs::copy_file(test::dataDir() / "render" / "source-4x2.png", root / "parent" / "paper.png");
+    Genome parent = loadGenome(test::dataDir() / "render" / "source-2d.marble.json");
+    parent.source = SourceImage{"paper.png"};
+    saveGenome(parent, root / "parent" / "p.marble.json");
+    for (const fs::path& dir : {root / "kids", root / "parent" / "beside"}) {
+        auto r = runMarbler({"breed", "alter", (root / "parent" / "p.marble.json").string(), "--seed", "3", "--count",
+                             "2", "-o", dir.string()});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const Genome child = loadGenome(dir / "child-01.marble.json");
+        ASSERT_TRUE(child.source);
+        EXPECT_TRUE(child.source->image.starts_with("data:image/png;base64,")) << child.source->image.substr(0, 40);
+        r = runMarbler({"render", (dir / "child-01.marble.json").string(), "-o", (dir / "c.png").string(), "--width", "16"});
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+    }
+    // Beside the parent the path still holds.
+    auto r = runMarbler({"breed", "alter", (root / "parent" / "p.marble.json").string(), "--seed", "3", "--count", "1",
+                         "-o", (root / "parent").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(loadGenome(root / "parent" / "child-01.marble.json").source->image, "paper.png");
+}
+
 TEST(BreedVerb, EveryOperatorWithCountAndStrength) {
     Parents parents("breed-operators");
     struct Case {

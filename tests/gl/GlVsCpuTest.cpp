@@ -11,6 +11,7 @@
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -202,6 +203,77 @@ TEST_F(GlVsCpu, TenThousandEntriesRender) {
     settings.width = 40;
     settings.height = 40;
     expectMatchesCpu(genome, settings, "10000 entries");
+}
+
+/// Writes a `width` x `height` RGB image whose channels run through fine steps (so an 8-bit
+/// copy would lose them): a 16-bit TIFF in sRGB, or a half-float EXR in linear light with
+/// values up to 1.5.
+void writeGradient(const std::filesystem::path& file, int width, int height) {
+    const bool exr = file.extension() == ".exr";
+    OIIO::ImageSpec spec(width, height, 3, exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT16);
+    spec.attribute("oiio:ColorSpace", exr ? "Linear" : "sRGB");
+    std::vector<float> pixels(std::size_t(width) * std::size_t(height) * 3);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const float t = (float(x) + float(y) * float(width) + float(c) * 0.37f) / float(width * height);
+                pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(c)] =
+                    exr ? 0.003f + 1.5f * t * t : 0.1f + 0.8f * t;
+            }
+    auto out = OIIO::ImageOutput::create(file.string());
+    ASSERT_TRUE(out && out->open(file.string(), spec)) << OIIO::geterror();
+    ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+    out->close();
+}
+
+TEST_F(GlVsCpu, SourceImagesOfEveryDepthShowTheSameColours) {
+    // Both back ends take their pixels from one decoder: a 16-bit image keeps its fine steps
+    // and a linear (EXR) one its light, on the GPU as on the CPU.
+    const std::filesystem::path dir = test::outputDir("gl-sources");
+    Genome genome = loadGenome(test::dataDir() / "render" / "source-2d.marble.json");
+    genome.baseDirectory = dir.string();
+    for (const char* name : {"deep.tif", "linear.exr"}) {
+        writeGradient(dir / name, 37, 19);
+        genome.source = SourceImage{name};
+        for (const char* aa : {"none", "rgss"}) {
+            RenderSettings settings;
+            settings.width = 150;
+            settings.height = 75;
+            settings.aa = aa;
+            expectMatchesCpu(genome, settings, std::string(name) + " " + aa);
+            // Zoomed in between pixel centres, where the bilinear blend of the two decoders shows.
+            settings.region = Region{10, 300, 90, 340};
+            expectMatchesCpu(genome, settings, std::string(name) + " zoomed " + aa);
+        }
+    }
+}
+
+TEST_F(GlVsCpu, BadSourcesAreRefusedAlike) {
+    // The GL back end once decoded with QImage, which skipped base64 it could not read and
+    // showed what was left; now it refuses what the CPU refuses, with the same message.
+    Genome genome = loadGenome(test::dataDir() / "render" / "source-2d.marble.json");
+    RenderSettings settings;
+    settings.width = 16;
+    settings.height = 8;
+    for (const std::string& image :
+         {std::string("data:image/png;base64,iVBORw0KGgo!!AAAA"), std::string("data:image/png,plain"),
+          std::string("data:image/png;base64,AAAA"), std::string("no-such.png"), std::string("../escape.png")}) {
+        genome.source = SourceImage{image};
+        std::string cpuError, glError;
+        try {
+            CpuRenderer cpu(genome);
+        } catch (const GenomeError& e) {
+            cpuError = e.what();
+        }
+        try {
+            test::glRenderer()->render(genome, settings);
+        } catch (const GenomeError& e) {
+            glError = e.what();
+        }
+        EXPECT_FALSE(cpuError.empty()) << image;
+        EXPECT_EQ(glError, cpuError) << image;
+        EXPECT_NE(cpuError.find("source.image"), std::string::npos) << cpuError;
+    }
 }
 
 TEST_F(GlVsCpu, BadSettingsAreInputErrors) {

@@ -92,23 +92,3 @@ TEST_F(BakeObjectTest, AnotherFormatIsReportedAndNothingWritten) {
 
 } // namespace
 } // namespace marbler::ui
-
-int main(int argc, char** argv) {
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
-        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-        qputenv("QT_QPA_PLATFORM", "offscreen");
-    // Keep the user's settings out of the tests; each process has settings of its own.
-    QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName(
-        QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
-    QApplication::setApplicationName(QStringLiteral("MarblerBakeObjectTest"));
-    ::testing::InitGoogleTest(&argc, argv);
-    const int status = RUN_ALL_TESTS();
-    QSettings settings;
-    settings.clear();
-    settings.sync();
-    QFile::remove(settings.fileName());
-    QDir().rmdir(QFileInfo(settings.fileName()).absolutePath());
-    return status;
-}

@@ -72,6 +72,13 @@ struct Genome {
     /// The folder relative paths of `source` are resolved against (the genome file's folder);
     /// not part of the design and not saved.
     std::string baseDirectory;
+    /// The file the genome was read from, as given (for messages); empty when made in memory.
+    /// Not part of the design and not saved.
+    std::string fileName;
+    /// Whether `source` may name an image outside baseDirectory (SourcePath.h): set only by
+    /// whoever asked the user (`--allow-external-source`, the window's question). Not part of
+    /// the design and not saved.
+    bool allowExternalSource = false;
 
     friend bool operator==(const Genome& a, const Genome& b) {
         return a.dimension == b.dimension && a.size == b.size && a.background == b.background

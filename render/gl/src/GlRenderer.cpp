@@ -3,14 +3,13 @@
 #include "GlProgram.h"
 #include "OpPacking.h"
 #include "marbler/Error.h"
+#include "marbler/SourceDecoder.h"
 #include "marbler/Tools.h"
 #include "marbler/gl/Backend.h"
 #include "marbler/gl/Meshes.h"
 #include "marbler/gl/ShaderSource.h"
 
-#include <QByteArray>
 #include <QGuiApplication>
-#include <QImage>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -206,25 +205,6 @@ GlProbe probeOnce() {
 glm::vec3 linearColor(Color c) {
     return {float(srgbToLinear(c.r / 255.0)), float(srgbToLinear(c.g / 255.0)), float(srgbToLinear(c.b / 255.0))};
 }
-
-QImage loadSourceImage(const Genome& genome) {
-    const std::string& image = genome.source->image;
-    QImage result;
-    if (image.rfind("data:", 0) == 0) {
-        std::size_t comma = image.find(',');
-        if (comma == std::string::npos || image.find(";base64") > comma)
-            throw InputError("source image: the data URL is not base64 encoded");
-        QByteArray bytes = QByteArray::fromBase64(QByteArray::fromStdString(image.substr(comma + 1)));
-        if (!result.loadFromData(bytes)) throw InputError("source image: the data URL holds no readable image");
-    } else {
-        std::filesystem::path file(image);
-        if (file.is_relative() && !genome.baseDirectory.empty()) file = std::filesystem::path(genome.baseDirectory) / file;
-        if (!result.load(QString::fromStdString(file.string())))
-            throw InputError(file.string() + ": the source image cannot be read");
-    }
-    return result.convertToFormat(QImage::Format_RGBA8888);
-}
-
 
 /// The checks of a mesh render's settings; returns the unit cutting-plane normal and offset.
 void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal, double& cutOffset) {
@@ -559,16 +539,18 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
     // Unit 2: units 0 and 1 get rebound by the targets and the mesh G-buffer.
     gl->glUniform1i(raster.uniform("uSource"), 2);
     if (hasSource) {
-        QImage image = loadSourceImage(genome);
+        // The CPU renderer's own decoder: the same pixels in linear light, the same refusals.
+        const LinearRaster image = decodeSourceImage(genome);
         if (!d.sourceTexture) gl->glGenTextures(1, &d.sourceTexture);
         gl->glActiveTexture(GL_TEXTURE2);
         gl->glBindTexture(GL_TEXTURE_2D, d.sourceTexture);
         gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, GLint(image.bytesPerLine() / 4));
-        // An sRGB texture is decoded before filtering: bilinear in linear light, as the spec asks;
-        // clamping to the edge texels is the spec's rule within the design space.
-        gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image.width(), image.height(), 0, GL_RGBA,
-                         GL_UNSIGNED_BYTE, image.constBits());
+        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        // Linear floats, filtered as they are: bilinear in linear light, as the spec asks (and
+        // values beyond 1 from a linear image are kept, as the CPU keeps them); clamping to the
+        // edge texels is the spec's rule within the design space.
+        gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image.width, image.height, 0, GL_RGB, GL_FLOAT,
+                         image.rgb.data());
         gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

@@ -86,6 +86,9 @@ struct ExportOptions {
     /// file's metadata by PNG and TIFF (marbler/GenomeImage.h says where); empty: none.
     /// renderToFile fills it from the genome it renders when left empty.
     std::string genome;
+    /// Bits a sample of a TIFF: 8, or 16 (sRGB encoded from the linear average, for print work
+    /// that grades the image further). Other formats have a depth of their own (EXR: half float).
+    int bitsPerSample = 8;
 };
 
 /// Renders in strips of rows and writes them progressively to `file` (format by extension:
