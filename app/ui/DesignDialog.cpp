@@ -377,10 +377,8 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     zoomBar->addStretch();
 
     auto* save = new QPushButton(tr("&Save genome…"), this);
-    save->setShortcut(QKeySequence::Save);
     save->setToolTip(tr("Save the design as a genome file (Ctrl+S)"));
     auto* exportButton = new QPushButton(tr("&Export image…"), this);
-    exportButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     exportButton->setToolTip(tr("Render the design to PNG, TIFF, EXR or JPEG at any size (Ctrl+E)"));
     auto* copy = new QPushButton(tr("&Copy genome"), this);
     copy->setObjectName(QStringLiteral("copyGenome"));
@@ -396,12 +394,18 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     });
     connect(exportButton, &QPushButton::clicked, this, &DesignDialog::exportImage);
     connect(copy, &QPushButton::clicked, this, &DesignDialog::copyGenome);
-    // Ctrl+C as an action of the dialog, whichever of its widgets has the focus.
-    auto* copyAction = new QAction(tr("Copy genome"), this);
-    copyAction->setObjectName(QStringLiteral("copyGenomeAction"));
-    copyAction->setShortcut(QKeySequence::Copy);
-    connect(copyAction, &QAction::triggered, this, &DesignDialog::copyGenome);
-    addAction(copyAction);
+    // The keys are actions of the dialog, whichever of its widgets has the focus: a button's
+    // own shortcut did not fire from the keyboard here (the canvas takes the focus).
+    const auto addKey = [this](const QString& name, const QKeySequence& keys, QPushButton* button) {
+        auto* action = new QAction(button->text().remove(QLatin1Char('&')), this);
+        action->setObjectName(name);
+        action->setShortcut(keys);
+        connect(action, &QAction::triggered, button, &QPushButton::click);
+        addAction(action);
+    };
+    addKey(QStringLiteral("saveGenomeAction"), QKeySequence::Save, save);
+    addKey(QStringLiteral("exportImageAction"), QKeySequence(Qt::CTRL | Qt::Key_E), exportButton);
+    addKey(QStringLiteral("copyGenomeAction"), QKeySequence::Copy, copy);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
     auto* buttons = new QHBoxLayout;

@@ -569,3 +569,25 @@ TEST_F(HelpTest, DisabledOperatorsSayWhy) {
 }
 
 } // namespace
+
+namespace {
+
+// The large view's keys fire from the keyboard while it is the active window, whichever of its
+// widgets has the focus (as buttons' own shortcuts, they did not): Ctrl+S saves the genome.
+TEST_F(HelpTest, LargeViewSavesWithCtrlS) {
+    DesignDialog* dialog = mWindow->openDesign(0);
+    ASSERT_NE(dialog, nullptr);
+    dialog->show();
+    dialog->activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(dialog));
+    int asked = 0;
+    setSaveFileAsker([&](QWidget*, const QString&, const QString&, const QString&) {
+        ++asked;
+        return QString(); // cancelled: nothing written
+    });
+    QTest::keyClick(dialog, Qt::Key_S, Qt::ControlModifier);
+    EXPECT_EQ(asked, 1);
+    dialog->close();
+}
+
+} // namespace
