@@ -3,7 +3,9 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Repeat.h"
 #include "marbler/Sampling.h"
+#include "marbler/Vector.h"
 #include "ui/BakeObject.h"
 #include "ui/ErrorReport.h"
 #include "ui/GenomeClipboard.h"
@@ -15,6 +17,7 @@
 #include "marbler/gl/HybridMesh.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -52,6 +55,19 @@ std::uint64_t nextDialogKey() {
     return next++;
 }
 
+/// The mirror repeat of an image as mirrorRepeat (marbler/Repeat.h) lays it out: the image at
+/// the top left, its horizontal mirror at the top right, the vertical mirrors of both below.
+QImage mirrorTiled(const QImage& image) {
+    const QImage source = image.convertToFormat(QImage::Format_RGB32);
+    QImage tiled(source.width() * 2, source.height() * 2, QImage::Format_RGB32);
+    QPainter p(&tiled);
+    p.drawImage(0, 0, source);
+    p.drawImage(source.width(), 0, source.mirrored(true, false));
+    p.drawImage(0, source.height(), source.mirrored(false, true));
+    p.drawImage(source.width(), source.height(), source.mirrored(true, true));
+    return tiled;
+}
+
 } // namespace
 
 QString exportSizeProblem(QSize pixels) {
@@ -80,6 +96,9 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     mFormat->addItem(tr("TIFF (8-bit sRGB)"), QStringLiteral(".tif"));
     mFormat->addItem(tr("TIFF (16-bit sRGB, for print)"), QStringLiteral(".tif/16"));
     mFormat->addItem(tr("OpenEXR (linear half float)"), QStringLiteral(".exr"));
+    // Outlines exist for flat designs only (marbler/Vector.h); a source image is refused when
+    // tracing, with the library's reason.
+    if (genome.dimension != 3) mFormat->addItem(tr("SVG (vector)"), QStringLiteral(".svg"));
     mFormat->setToolTip(tr("The file format; a 16-bit TIFF keeps the smooth gradients of an antialiased "
                            "render for further grading, EXR keeps linear light"));
     {
@@ -119,6 +138,22 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     form->addRow(tr("&Unit"), mUnit);
     form->addRow(tr("&Resolution (dpi)"), mDpi);
     form->addRow(tr("&Antialiasing"), mAa);
+    if (genome.dimension != 3) {
+        mRepeat = new QCheckBox(tr("Mirror repeat tile (2 × 2): twice the width and height"), this);
+        mRepeat->setObjectName(QStringLiteral("exportRepeat"));
+        mRepeat->setToolTip(tr("A seamless tile for print and textiles: the design and its mirror images 2 × 2, so "
+                               "every edge meets its own mirror image (marbler render --repeat mirror)"));
+        form->addRow(tr("&Repeat"), mRepeat);
+        mTolerance = new QDoubleSpinBox(this);
+        mTolerance->setObjectName(QStringLiteral("exportTolerance"));
+        mTolerance->setDecimals(3);
+        mTolerance->setRange(0.001, 1000.0);
+        mTolerance->setValue(1.0);
+        mTolerance->setToolTip(tr("SVG: the largest distance between neighbouring vertices of an outline, in design "
+                                  "units; larger gives smaller files (marbler svg --tolerance)"));
+        form->addRow(tr("&Tolerance"), mTolerance);
+        connect(mRepeat, &QCheckBox::toggled, this, [this] { updateSummary(); });
+    }
     form->addRow(tr("Image"), mPixels);
     if (genome.dimension == 3) {
         mSolidView = new QComboBox(this);
@@ -174,6 +209,11 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     setTabOrder(mUnit, mDpi);
     setTabOrder(mDpi, mAa);
     QWidget* last = mAa;
+    if (mRepeat) {
+        setTabOrder(mAa, mRepeat);
+        setTabOrder(mRepeat, mTolerance);
+        last = mTolerance;
+    }
     if (mSolidView) {
         setTabOrder(mAa, mSolidView);
         setTabOrder(mSolidView, mAxis);
@@ -184,6 +224,7 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     setTabOrder(mButtons->button(QDialogButtonBox::Ok), mButtons->button(QDialogButtonBox::Cancel));
 
     connect(mUnit, &QComboBox::currentIndexChanged, this, [this] { showWidth(); });
+    connect(mFormat, &QComboBox::currentIndexChanged, this, [this] { updateSummary(); });
     connect(mWidth, &QDoubleSpinBox::valueChanged, this, [this](double value) {
         if (mShowing) return;
         // What the user typed, in pixels; the unit and dpi only change how it is shown.
@@ -210,10 +251,29 @@ void ExportSettingsDialog::showWidth() {
     updateSummary();
 }
 
+bool ExportSettingsDialog::isSvg() const { return extension() == QStringLiteral(".svg"); }
+
 void ExportSettingsDialog::updateSummary() {
-    const QSize s = pixels();
+    // An SVG has no pixels: the raster's fields are greyed out, the tolerance is its size.
+    const bool svg = isSvg();
+    for (QWidget* w : {static_cast<QWidget*>(mWidth), static_cast<QWidget*>(mUnit), static_cast<QWidget*>(mDpi),
+                       static_cast<QWidget*>(mAa)})
+        w->setEnabled(!svg);
+    if (mRepeat) {
+        mRepeat->setEnabled(!svg);
+        mTolerance->setEnabled(svg);
+    }
+    if (svg) {
+        mPixels->setText(tr("Vector outlines in design units (%L1 × %L2)").arg(mGenome.size.x).arg(mGenome.size.y));
+        mPixels->setStyleSheet(QString());
+        mButtons->button(QDialogButtonBox::Ok)->setEnabled(true);
+        return;
+    }
+    const bool tile = mirrorRepeatTile();
+    const QSize s = tile ? pixels() * 2 : pixels();
     const QString problem = exportSizeProblem(s);
     QString text = tr("%L1 × %L2 pixels").arg(s.width()).arg(s.height());
+    if (tile) text += tr(", the tile of a %L1 × %L2 render").arg(pixels().width()).arg(pixels().height());
     if (perInch() <= 0.0)
         text += tr(" (%1 × %2 in at %3 dpi)")
                     .arg(s.width() / double(mDpi->value()), 0, 'f', 2)
@@ -259,6 +319,15 @@ void ExportSettingsDialog::setFormat(const QString& extension, int bitsPerSample
     mFormat->setCurrentIndex(index >= 0 ? index : 0);
 }
 
+double ExportSettingsDialog::tolerance() const { return mTolerance ? mTolerance->value() : 1.0; }
+void ExportSettingsDialog::setTolerance(double tolerance) {
+    if (mTolerance) mTolerance->setValue(tolerance);
+}
+bool ExportSettingsDialog::mirrorRepeatTile() const { return mRepeat && mRepeat->isChecked() && !isSvg(); }
+void ExportSettingsDialog::setMirrorRepeatTile(bool on) {
+    if (mRepeat) mRepeat->setChecked(on);
+}
+
 std::optional<SolidExport> ExportSettingsDialog::solidExport() const {
     if (mGenome.dimension != 3) return std::nullopt;
     SolidExport solid;
@@ -286,7 +355,8 @@ std::optional<double> ExportSettingsDialog::dpi() const { return double(mDpi->va
 std::string ExportSettingsDialog::aa() const { return mAa->currentText().toStdString(); }
 
 void ExportSettingsDialog::accept() {
-    if (const QString problem = exportSizeProblem(pixels()); !problem.isEmpty()) {
+    if (const QString problem = isSvg() ? QString() : exportSizeProblem(mirrorRepeatTile() ? pixels() * 2 : pixels());
+        !problem.isEmpty()) {
         reportError(this, tr("The image is too large"), problem);
         return;
     }
@@ -375,11 +445,19 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     zoomBar->addWidget(oneButton);
     zoomBar->addWidget(mZoomLabel);
     zoomBar->addStretch();
+    mSwatchButton = tool(QStringLiteral("repeatSwatch"), tr("Repeat swatch"),
+                         solid ? tr("Flat designs only: a solid has no repeat tile")
+                               : tr("Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat "
+                                    "(R)"));
+    mSwatchButton->setCheckable(true);
+    mSwatchButton->setEnabled(!solid);
+    connect(mSwatchButton, &QToolButton::toggled, this, &DesignDialog::setRepeatSwatch);
+    zoomBar->addWidget(mSwatchButton);
 
     auto* save = new QPushButton(tr("&Save genome…"), this);
     save->setToolTip(tr("Save the design as a genome file (Ctrl+S)"));
     auto* exportButton = new QPushButton(tr("&Export image…"), this);
-    exportButton->setToolTip(tr("Render the design to PNG, TIFF, EXR or JPEG at any size (Ctrl+E)"));
+    exportButton->setToolTip(tr("Render the design to PNG, TIFF, EXR or JPEG at any size, or a flat one to SVG (Ctrl+E)"));
     auto* copy = new QPushButton(tr("&Copy genome"), this);
     copy->setObjectName(QStringLiteral("copyGenome"));
     copy->setToolTip(tr("Put the design's genome on the clipboard as text, to paste into the workbench or "
@@ -396,16 +474,18 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     connect(copy, &QPushButton::clicked, this, &DesignDialog::copyGenome);
     // The keys are actions of the dialog, whichever of its widgets has the focus: a button's
     // own shortcut did not fire from the keyboard here (the canvas takes the focus).
-    const auto addKey = [this](const QString& name, const QKeySequence& keys, QPushButton* button) {
+    const auto addKey = [this](const QString& name, const QKeySequence& keys, QAbstractButton* button) {
         auto* action = new QAction(button->text().remove(QLatin1Char('&')), this);
         action->setObjectName(name);
         action->setShortcut(keys);
-        connect(action, &QAction::triggered, button, &QPushButton::click);
+        // A disabled button ignores click(): the key does nothing where the button cannot.
+        connect(action, &QAction::triggered, button, &QAbstractButton::click);
         addAction(action);
     };
     addKey(QStringLiteral("saveGenomeAction"), QKeySequence::Save, save);
     addKey(QStringLiteral("exportImageAction"), QKeySequence(Qt::CTRL | Qt::Key_E), exportButton);
     addKey(QStringLiteral("copyGenomeAction"), QKeySequence::Copy, copy);
+    addKey(QStringLiteral("repeatSwatchAction"), QKeySequence(Qt::Key_R), mSwatchButton);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
     auto* buttons = new QHBoxLayout;
@@ -424,11 +504,19 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     layout->addLayout(buttons);
     resize(720, 800);
     mZoomLabel->setText(zoomText());
+    if (!solid && QSettings().value(QStringLiteral("view/repeatSwatch"), false).toBool()) {
+        // Before the first render request (the canvas's first resize): no wasted render.
+        mSwatch = true;
+        const QSignalBlocker block(mSwatchButton);
+        mSwatchButton->setChecked(true);
+    }
 
     connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool final) {
         if (key != mKey) return;
         // The service delivers only the newest request's results: they show its view.
-        mImage = image;
+        mImageSwatch = mRequestSwatch;
+        // Tiled once here, not at each paint (the tile is fitted to half the canvas).
+        mImage = mImageSwatch ? mirrorTiled(image) : image;
         mImageFinal = final;
         if (mRequestRegion) mImageRegion = *mRequestRegion;
         mImageZoom = mRequestZoom;
@@ -502,6 +590,12 @@ void DesignDialog::viewChanged(bool previewOnly) {
 
 QRectF DesignDialog::imageTarget() const {
     const double ratio = mCanvas->devicePixelRatioF();
+    if (mImageSwatch) {
+        // Rendered at its size on the canvas: centred, never scaled.
+        QRectF target(QPointF(0, 0), QSizeF(mImage.size()) / ratio);
+        target.moveCenter(QRectF(mCanvas->rect()).center());
+        return target;
+    }
     if (mGenome.dimension != 3) {
         const QRectF r = mViewController.toViewport(mImageRegion);
         return QRectF(r.topLeft() / ratio, r.size() / ratio);
@@ -524,8 +618,15 @@ void DesignDialog::requestRender(bool previewOnly) {
     request.zoom = mObjectZoom;
     request.previewOnly = previewOnly;
     const QSize viewport = (mCanvas->size() * mCanvas->devicePixelRatioF()).expandedTo(QSize(32, 32));
+    mRequestSwatch = mSwatch && mGenome.dimension != 3;
     if (mGenome.dimension == 3) {
         request.size = viewport;
+    } else if (mRequestSwatch) {
+        // The whole design, whatever the zoom (the swatch judges the repeat, not a detail),
+        // fitted into half the canvas: tiled 2 x 2 it fills the canvas. The service fits the
+        // design's proportions into this size.
+        request.size = (viewport / 2).expandedTo(QSize(16, 16));
+        request.region.reset();
     } else {
         // Only the part of the design in view, at the view's scale: exact at any zoom.
         const auto window = mViewController.visibleWindow();
@@ -542,6 +643,18 @@ void DesignDialog::requestRender(bool previewOnly) {
     mRequestZoom = mObjectZoom;
     mImageFinal = false; // what is shown now stands in for the view until its render comes
     mRenderer->request(mKey, std::move(request));
+}
+
+void DesignDialog::setRepeatSwatch(bool on) {
+    if (mGenome.dimension == 3) on = false;
+    if (mSwatchButton->isChecked() != on) {
+        const QSignalBlocker block(mSwatchButton);
+        mSwatchButton->setChecked(on);
+    }
+    QSettings().setValue(QStringLiteral("view/repeatSwatch"), on);
+    if (on == mSwatch) return;
+    mSwatch = on;
+    viewChanged();
 }
 
 void DesignDialog::keyPressEvent(QKeyEvent* event) {
@@ -598,16 +711,22 @@ void DesignDialog::exportImage() {
     const QString extension = settingsDialog.extension();
     settings.setValue(QStringLiteral("files/exportExtension"), extension);
     settings.setValue(QStringLiteral("files/exportBits"), settingsDialog.bitsPerSample());
+    const bool svg = extension == QStringLiteral(".svg");
     QString file = askSaveFile(this, tr("Export image"), suggestedExportFile(),
-                               tr("Images (*%1);;All images (*.png *.tif *.tiff *.exr *.jpg *.jpeg)").arg(extension));
+                               svg ? tr("SVG drawings (*.svg)")
+                                   : tr("Images (*%1);;All images (*.png *.tif *.tiff *.exr *.jpg *.jpeg)").arg(extension));
     if (file.isEmpty()) return;
     // A name typed without a format gets the one chosen.
     if (QFileInfo(file).suffix().isEmpty()) file += extension;
     settings.setValue(QStringLiteral("files/exportDir"), QFileInfo(file).absolutePath());
     settings.setValue(QStringLiteral("files/exportExtension"), QStringLiteral(".") + QFileInfo(file).suffix().toLower());
 
+    if (QFileInfo(file).suffix().toLower() == QStringLiteral("svg")) {
+        exportSvgTo(file, settingsDialog.tolerance());
+        return;
+    }
     exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi(),
-             settingsDialog.solidExport(), settingsDialog.bitsPerSample());
+             settingsDialog.solidExport(), settingsDialog.bitsPerSample(), settingsDialog.mirrorRepeatTile());
 }
 
 void DesignDialog::copyGenome() {
@@ -623,9 +742,10 @@ bool DesignDialog::saveTo(const QString& file) {
 }
 
 bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi,
-                            std::optional<SolidExport> solid, int bitsPerSample) {
+                            std::optional<SolidExport> solid, int bitsPerSample, bool mirrorRepeatTile) {
     if (mExportCancel) return false;
-    if (const QString problem = exportSizeProblem(pixels); !problem.isEmpty()) {
+    const bool tile = mirrorRepeatTile && mGenome.dimension != 3;
+    if (const QString problem = exportSizeProblem(tile ? pixels * 2 : pixels); !problem.isEmpty()) {
         reportError(this, tr("Cannot export the image"), problem);
         return false;
     }
@@ -654,29 +774,59 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     Genome genome = mGenome;
     SourcePermissions::session().apply(genome);
 
+    return startExport(file, [genome, render, object, objectOnGl, file, options, tile](RenderControl& control) {
+        if (tile) {
+            // As marbler render --repeat mirror: the tile is made in memory from the whole render.
+            ExportOptions withGenome = options;
+            withGenome.genome = serializeGenome(genome);
+            const Image image = CpuRenderer(genome).render(render, &control);
+            if (control.cancelled()) throw Cancelled();
+            writeImage(mirrorRepeat(image), file.toStdString(), withGenome);
+        } else if (object) {
+            // A context of this thread's own: a GL renderer stays on the thread that made it.
+            // The window's back end decides as for the cells: the GPU shades, or GL only
+            // rasterises and the CPU kernel colours.
+            gl::GlRenderer renderer;
+            const Image image = objectOnGl ? renderer.renderMesh(genome, *object)
+                                           : gl::renderMeshHybrid(renderer, genome, *object, &control);
+            if (control.cancelled()) throw Cancelled();
+            writeImage(image, file.toStdString(), options);
+        } else {
+            renderToFile(genome, render, file.toStdString(), options, &control);
+        }
+    });
+}
+
+bool DesignDialog::exportSvgTo(const QString& file, double tolerance) {
+    if (mExportCancel) return false;
+    VectorOptions options;
+    options.tolerance = tolerance;
+    return startExport(
+        file,
+        [genome = mGenome, options, file](RenderControl& control) {
+            // The same steps as marbler svg, so the files are byte for byte the same. Tracing
+            // cannot be interrupted; a cancel during it leaves no file.
+            const VectorDesign design = traceDesign(genome, options);
+            if (control.cancelled()) throw Cancelled();
+            writeSvg(design, file.toStdString(), decimalsFor(options.tolerance));
+        },
+        true);
+}
+
+bool DesignDialog::startExport(const QString& file, std::function<void(RenderControl&)> job, bool busy) {
+    if (mExportCancel) return false;
     // The export runs on its own thread; the dialog polls its progress so the worker never
     // touches a widget.
     auto cancel = std::make_shared<std::atomic<bool>>(false);
     mExportCancel = cancel;
     auto progress = std::make_shared<std::atomic<double>>(0.0);
     auto error = std::make_shared<QString>();
-    QThread* thread = QThread::create([genome, render, object, objectOnGl, file, options, cancel, progress, error] {
+    QThread* thread = QThread::create([job = std::move(job), cancel, progress, error] {
         RenderControl control;
         control.cancel = cancel.get();
         control.progress = [progress](double p) { progress->store(p, std::memory_order_relaxed); };
         try {
-            if (object) {
-                // A context of this thread's own: a GL renderer stays on the thread that made it.
-                // The window's back end decides as for the cells: the GPU shades, or GL only
-                // rasterises and the CPU kernel colours.
-                gl::GlRenderer renderer;
-                const Image image = objectOnGl ? renderer.renderMesh(genome, *object)
-                                               : gl::renderMeshHybrid(renderer, genome, *object, &control);
-                if (control.cancelled()) throw Cancelled();
-                writeImage(image, file.toStdString(), options);
-            } else {
-                renderToFile(genome, render, file.toStdString(), options, &control);
-            }
+            job(control);
         } catch (const Cancelled&) {
         } catch (const std::exception& e) {
             *error = QString::fromStdString(e.what());
@@ -684,14 +834,18 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     });
     thread->setParent(this);
     mExportThread = thread;
-    auto* dialog = new QProgressDialog(tr("Exporting %1…").arg(QFileInfo(file).fileName()), tr("Cancel"), 0, 1000, this);
+    auto* dialog = new QProgressDialog(tr("Exporting %1…").arg(QFileInfo(file).fileName()), tr("Cancel"), 0,
+                                       busy ? 0 : 1000, this);
     dialog->setObjectName(QStringLiteral("exportProgress"));
     dialog->setWindowModality(Qt::WindowModal);
     dialog->setMinimumDuration(300);
     dialog->setAutoReset(false);
     dialog->setAutoClose(false);
     auto* poll = new QTimer(dialog);
-    connect(poll, &QTimer::timeout, dialog, [dialog, progress] { dialog->setValue(int(progress->load() * 999)); });
+    connect(poll, &QTimer::timeout, dialog, [dialog, progress, busy] {
+        // A busy box (range 0 to 0) still needs setValue to show itself past its minimum duration.
+        dialog->setValue(busy ? 0 : int(progress->load() * 999));
+    });
     connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
     connect(thread, &QThread::finished, this, [this, thread, dialog, poll, cancel, error, file] {
         // The progress box goes before any message: a stale one must never cover an error,

@@ -12,16 +12,23 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
+class QCheckBox;
 class QComboBox;
 class QDialogButtonBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSpinBox;
 class QThread;
+class QToolButton;
+
+namespace marbler {
+struct RenderControl;
+}
 
 namespace marbler::ui {
 
@@ -49,10 +56,17 @@ public:
     /// thread of its own, written atomically; exportFinished follows. Returns false when an
     /// export is already running, or when the size is beyond the renderer's limits (reported,
     /// see exportSizeProblem). `bitsPerSample` 16 makes a 16-bit TIFF. A solid shows `solid`
-    /// (its middle z cross-section when unset).
+    /// (its middle z cross-section when unset). `mirrorRepeatTile` (flat designs) writes the
+    /// mirror repeat of the render instead, twice `pixels` each way, as `marbler render --repeat
+    /// mirror` does (marbler/Repeat.h).
     bool exportTo(const QString& file, QSize pixels, const QString& aa = QStringLiteral("rgss"),
                   std::optional<double> dpi = std::nullopt, std::optional<SolidExport> solid = std::nullopt,
-                  int bitsPerSample = 8);
+                  int bitsPerSample = 8, bool mirrorRepeatTile = false);
+    /// Starts writing the design as SVG, as `marbler svg --tolerance` does (traceDesign and
+    /// toSvg, written atomically), on the export thread with the same progress box and
+    /// exportFinished. A solid or a design with a source image fails with the library's reason.
+    /// Returns false when an export is already running.
+    bool exportSvgTo(const QString& file, double tolerance = 1.0);
     /// Puts the genome on the clipboard as genome text (the Copy genome button, Ctrl+C).
     void copyGenome();
     /// Stops a running export; no file is left behind.
@@ -89,6 +103,11 @@ public:
     void showOneToOne();
     /// Moves a flat design by a drag of `delta` canvas pixels.
     void panBy(QPointF delta);
+    /// The repeat swatch (flat designs; the R key, remembered as QSettings view/repeatSwatch):
+    /// the whole design and its mirror images 2 x 2, as the mirror repeat tile prints, fitted
+    /// to the canvas whatever the zoom, to judge the repeat. image() is then the tiled image.
+    void setRepeatSwatch(bool on);
+    bool repeatSwatch() const { return mSwatch; }
 
 signals:
     /// The user turned the solid object; the angle is already in genome()'s meta.view.
@@ -118,6 +137,9 @@ private:
     void viewChanged(bool previewOnly = false);
     void requestRender(bool previewOnly = false);
     void exportImage();
+    /// Runs `job` on the export thread with the progress box and its Cancel; exportFinished and
+    /// fileSaved follow. `busy`: the job reports no progress (the box shows activity instead).
+    bool startExport(const QString& file, std::function<void(RenderControl&)> job, bool busy = false);
 
     Genome mGenome;
     RenderService* mRenderer;
@@ -139,6 +161,10 @@ private:
     double mRequestZoom = 1.0;
     QPointF mLastPos;
     bool mDragging = false;
+    bool mSwatch = false;        ///< the repeat swatch is on
+    bool mRequestSwatch = false; ///< the newest request is for the swatch
+    bool mImageSwatch = false;   ///< mImage is the swatch (tiled), centred on the canvas
+    QToolButton* mSwatchButton = nullptr;
     std::shared_ptr<std::atomic<bool>> mExportCancel; ///< set while an export runs
     QThread* mExportThread = nullptr;
 };
@@ -172,6 +198,12 @@ public:
     int bitsPerSample() const;
     /// Chooses a format by extension and depth (".tif", 16: the 16-bit TIFF).
     void setFormat(const QString& extension, int bitsPerSample = 8);
+    /// The SVG's tolerance in design units (the format ".svg"; `marbler svg --tolerance`).
+    double tolerance() const;
+    void setTolerance(double tolerance);
+    /// Whether a raster is exported as its mirror repeat tile (flat designs; twice the size).
+    bool mirrorRepeatTile() const;
+    void setMirrorRepeatTile(bool on);
     /// A solid design's view (unset for a flat design).
     std::optional<SolidExport> solidExport() const;
     void setSolidExport(const SolidExport& solid);
@@ -185,6 +217,7 @@ private:
     double aspect() const;
     void showWidth();
     void updateSummary();
+    bool isSvg() const;
 
     Genome mGenome;
     double mPixelWidth = 2048.0; ///< the chosen width in pixels, exact whatever unit shows it
@@ -198,6 +231,8 @@ private:
     QComboBox* mAxis = nullptr;        ///< solids: the cross-section's axis
     QDoubleSpinBox* mPosition = nullptr; ///< solids: the cross-section's position on its axis
     QLabel* mPixels = nullptr;
+    QDoubleSpinBox* mTolerance = nullptr; ///< flat designs: the SVG's tolerance
+    QCheckBox* mRepeat = nullptr;         ///< flat designs: the mirror repeat tile
     QDialogButtonBox* mButtons = nullptr;
 };
 

@@ -573,8 +573,9 @@ TEST_F(HelpTest, DisabledOperatorsSayWhy) {
 namespace {
 
 // The large view's keys fire from the keyboard while it is the active window, whichever of its
-// widgets has the focus (as buttons' own shortcuts, they did not): Ctrl+S saves the genome.
-TEST_F(HelpTest, LargeViewSavesWithCtrlS) {
+// widgets has the focus (as buttons' own shortcuts, they did not): Ctrl+S saves the genome, R
+// shows the repeat swatch.
+TEST_F(HelpTest, LargeViewKeysSaveAndShowTheSwatch) {
     DesignDialog* dialog = mWindow->openDesign(0);
     ASSERT_NE(dialog, nullptr);
     dialog->show();
@@ -587,6 +588,14 @@ TEST_F(HelpTest, LargeViewSavesWithCtrlS) {
     });
     QTest::keyClick(dialog, Qt::Key_S, Qt::ControlModifier);
     EXPECT_EQ(asked, 1);
+    // R turns the repeat swatch on and off.
+    auto* swatch = dialog->findChild<QToolButton*>(QStringLiteral("repeatSwatch"));
+    ASSERT_NE(swatch, nullptr);
+    const bool before = swatch->isChecked();
+    QTest::keyClick(dialog, Qt::Key_R);
+    EXPECT_EQ(swatch->isChecked(), !before);
+    QTest::keyClick(dialog, Qt::Key_R);
+    EXPECT_EQ(swatch->isChecked(), before);
     dialog->close();
 }
 
