@@ -49,6 +49,9 @@ SourceLocation locateSource(const Genome& genome) {
     }
     const fs::path folder = resolvedFolder(genome);
     const fs::path named(genome.source->image);
+    // A design that came from no file (pasted or dropped as text) has no folder of its own: it
+    // must not read the files round wherever Marbler runs, so every file it names is outside.
+    const bool noFolder = genome.baseDirectory.empty();
     // weakly_canonical resolves every link of the part that exists (a link inside the folder
     // that points out of it is seen for where it points) and `..` in the rest, so a missing
     // file is still placed correctly.
@@ -57,8 +60,8 @@ SourceLocation locateSource(const Genome& genome) {
     fs::path file = fs::weakly_canonical(joined, ec);
     if (ec) file = joined.lexically_normal();
     location.file = file;
-    location.kind = !named.is_absolute() && within(folder, file) ? SourceLocation::Kind::Inside
-                                                                 : SourceLocation::Kind::Outside;
+    location.kind = !noFolder && !named.is_absolute() && within(folder, file) ? SourceLocation::Kind::Inside
+                                                                              : SourceLocation::Kind::Outside;
     return location;
 }
 

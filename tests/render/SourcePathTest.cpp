@@ -70,6 +70,13 @@ TEST(SourcePath, LocatesEveryKindOfSource) {
     // file may name, not where the receiver happens to keep it.
     EXPECT_EQ(kindOf(fs::absolute(f.design / "inside.png").string()), Kind::Outside);
     EXPECT_EQ(kindOf("../design-sibling/x.png"), Kind::Outside);
+    // A design from no file (pasted as text) has no folder: whatever file it names is outside,
+    // even one that happens to lie in the folder Marbler runs in.
+    Genome pasted = loadGenome(f.genome("g", "inside.png"));
+    pasted.baseDirectory.clear();
+    EXPECT_EQ(locateSource(pasted).kind, Kind::Outside);
+    pasted.source = SourceImage{"data:image/png;base64,AAAA"};
+    EXPECT_EQ(locateSource(pasted).kind, Kind::DataUri);
     // The link is seen for where it points.
     EXPECT_EQ(locateSource(loadGenome(f.genome("g", "link-out.png"))).file,
               fs::canonical(f.outside / "secret.png"));

@@ -27,8 +27,10 @@ struct SourceLocation {
     std::filesystem::path file;
 };
 
-/// Finds where the genome's source image lies, relative to Genome::baseDirectory (the current
-/// folder when empty). Reads no image and never throws for a missing file.
+/// Finds where the genome's source image lies, relative to Genome::baseDirectory. A genome with
+/// no folder (empty baseDirectory: pasted or dropped as text, made in memory) has every file
+/// outside, resolved against the current folder. Reads no image and never throws for a missing
+/// file.
 SourceLocation locateSource(const Genome& genome);
 
 /// The file a genome's source image is to be read from (its canonical path), after the rule
