@@ -25,7 +25,9 @@ using test::runMarbler;
 struct SourceFolders {
     fs::path root, design, outside;
     SourceFolders() {
-        root = test::outputDir("source-paths");
+        // A folder of each test's own: ctest runs the cases of this file side by side.
+        root = test::outputDir(std::string("source-paths-") +
+                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(root);
         design = root / "design";
         outside = root / "private";
