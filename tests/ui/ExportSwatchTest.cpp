@@ -25,7 +25,6 @@
 
 #include <gtest/gtest.h>
 
-#include <regex>
 #include <sstream>
 
 using namespace marbler;
@@ -57,9 +56,14 @@ Genome example(const char* name) {
 /// The vertices of every path in an SVG written by toSvg ("M x yLx y x y …Z").
 std::size_t pathVertices(const std::string& svg) {
     std::size_t count = 0;
-    const std::regex path(R"re(<path [^>]*d="([^"]*)")re");
-    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it) {
-        std::string d = (*it)[1];
+    // Found by hand, not std::regex: libstdc++'s regex recurses per character and overflows the
+    // stack on paths this long (seen under AddressSanitizer).
+    for (std::size_t at = svg.find("<path "); at != std::string::npos; at = svg.find("<path ", at + 1)) {
+        const std::size_t end = svg.find('>', at);
+        const std::size_t attribute = svg.find(" d=\"", at);
+        if (attribute == std::string::npos || attribute > end) continue;
+        const std::size_t begin = attribute + 4;
+        std::string d = svg.substr(begin, svg.find('"', begin) - begin);
         for (char& c : d)
             if (c == 'M' || c == 'L' || c == 'Z') c = ' ';
         std::istringstream in(d);
