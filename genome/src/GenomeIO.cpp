@@ -135,6 +135,21 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
             if (index >= spec.choices.size()) throw GenomeError(name, key, spec.describeChoices());
             continue;
         }
+        if (spec.kind == ParamKind::Teeth) {
+            if (op.teeth.size() < 2 || op.teeth.size() > MaxTeeth)
+                throw GenomeError(name, key, "must hold 2 to " + std::to_string(MaxTeeth) + " numbers (got " +
+                                                 std::to_string(op.teeth.size()) + ")");
+            for (std::size_t i = 0; i < op.teeth.size(); ++i) {
+                double value = op.teeth[i];
+                if (!std::isfinite(value))
+                    throw GenomeError(name, indexed(key, i), "must be finite (got " + formatNumber(value) + ")");
+                if (i > 0 && !(value > op.teeth[i - 1]))
+                    throw GenomeError(name, indexed(key, i), "must be greater than the tooth before it (" +
+                                                                 formatNumber(op.teeth[i - 1]) + "; got " +
+                                                                 formatNumber(value) + ")");
+            }
+            continue;
+        }
         if (spec.kind == ParamKind::Color) {
             if (op.color < 0 || op.color >= paletteSize)
                 throw GenomeError(name, key,
@@ -144,7 +159,7 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
         }
         int count = componentCount(spec, op, dimension);
         bool many = spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction
-                 || (spec.pair && count == 2);
+                 || spec.kind == ParamKind::Extent || (spec.pair && count == 2);
         for (int i = 0; i < count; ++i) {
             double value = getComponent(spec, op, i);
             std::string at = many ? indexed(key, static_cast<std::size_t>(i)) : key;
@@ -160,6 +175,15 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
     if (dimension == 3 && findParam(params, ParamField::Direction) && findParam(params, ParamField::Normal)
         && parallel(op.direction, op.normal))
         throw GenomeError(name, member(where, "normal"), "must not be parallel to direction");
+    if (findParam(params, ParamField::Steps) && op.steps < minimumFlowSteps(op)) {
+        int needed = minimumFlowSteps(op);
+        throw GenomeError(name, member(where, "steps"),
+                          needed > MaxFlowSteps
+                              ? "cannot be enough: this speed, time and size need more than " +
+                                    std::to_string(MaxFlowSteps) + " steps (got " + std::to_string(op.steps) + ")"
+                              : "must be at least 32 |speed| time max(size) / min(size)^2 = " +
+                                    std::to_string(needed) + " (got " + std::to_string(op.steps) + ")");
+    }
 }
 
 /// Normalises `direction`, `axis` and `normal` (the latter made orthogonal to `direction`),
@@ -209,12 +233,16 @@ public:
                 readOperation(operations[i], indexed("operations", i), genome.dimension, genome.palette.size(), false));
 
         if (auto it = root.find("source"); it != root.end()) genome.source = readSource(*it, genome.dimension);
+        if (auto it = root.find("bleed"); it != root.end()) {
+            needVersion2("bleed");
+            genome.bleed = readNumber(*it, "bleed");
+        }
         if (auto it = root.find("meta"); it != root.end()) {
             if (!it->is_object()) fail("meta", "must be an object (got " + describe(*it) + ")");
             genome.meta = *it;
         }
-        static constexpr std::array Known{"format", "version", "dimension", "size", "background",
-                                          "palette", "initial", "operations", "source", "meta"};
+        static constexpr std::array Known{"format", "version", "dimension", "size", "background", "palette",
+                                          "initial", "operations", "source", "bleed", "meta"};
         for (auto it = root.begin(); it != root.end(); ++it)
             if (std::find(Known.begin(), Known.end(), it.key()) == Known.end()) warnUnknown("", it.key());
         return genome;
@@ -223,6 +251,14 @@ public:
 private:
     [[noreturn]] void fail(const std::string& where, const std::string& what) const {
         throw GenomeError(mName, where, what);
+    }
+
+    /// A version-2 feature in a file that says version 1 is refused, so that an older reader
+    /// (which would ignore it) and a newer one never disagree about one file.
+    void needVersion2(const std::string& where, const std::string& what = "") const {
+        if (mVersion >= 2) return;
+        fail(where, (what.empty() ? std::string() : what + " ") + "needs format version 2 (the file says version " +
+                        std::to_string(mVersion) + ")");
     }
 
     void warnUnknown(const std::string& where, const std::string& key) {
@@ -261,7 +297,8 @@ private:
         if (v > FormatVersion)
             fail("version", "made by a newer version of Marbler (format version " + describe(version) +
                                 "; this one reads version " + std::to_string(FormatVersion) + ")");
-        if (v < FormatVersion) fail("version", "must be " + std::to_string(FormatVersion) + " (got " + describe(version) + ")");
+        if (v < 1) fail("version", "must be 1 or " + std::to_string(FormatVersion) + " (got " + describe(version) + ")");
+        mVersion = static_cast<int>(v);
 
         const Json& dimension = require(root, "", "dimension");
         if (!integral(dimension) || (dimension.get<double>() != 2.0 && dimension.get<double>() != 3.0))
@@ -318,6 +355,7 @@ private:
             fail(member(where, "tool"),
                  describe(toolName) + " is not allowed in initial (only " + initialToolsText() + ")");
 
+        if (tool->version >= 2) needVersion2(member(where, "tool"), describe(toolName));
         Operation op;
         op.tool = tool->tool;
         std::span<const ParamSpec> params = tool->params(dimension);
@@ -333,9 +371,27 @@ private:
         for (const ParamSpec& spec : params) {
             if (spec.kind == ParamKind::Choice) continue;
             std::string at = member(where, spec.key);
+            if (spec.optional && !entry.contains(spec.key)) continue; // keeps its default
+            if (spec.version >= 2) needVersion2(at);
             const Json& value = require(entry, where, spec.key);
             int count = componentCount(spec, op, dimension);
             switch (spec.kind) {
+            case ParamKind::Teeth: {
+                if (!value.is_array() || value.size() < 2 || value.size() > MaxTeeth)
+                    fail(at, "must be an array of 2 to " + std::to_string(MaxTeeth) + " numbers (got " + describe(value) +
+                                 ")");
+                for (std::size_t i = 0; i < value.size(); ++i)
+                    setComponent(spec, op, static_cast<int>(i), readNumber(value[i], indexed(at, i)));
+                break;
+            }
+            case ParamKind::Count: {
+                if (!integral(value)) fail(at, "must be an integer (got " + describe(value) + ")");
+                double n = value.get<double>();
+                if (!spec.range.contains(n)) fail(at, spec.range.describe() + " (got " + describe(value) + ")");
+                setComponent(spec, op, 0, n);
+                break;
+            }
+            case ParamKind::Extent: readComponents(value, at, spec, op, count, true); break;
             case ParamKind::Position:
             case ParamKind::Direction: readComponents(value, at, spec, op, count, true); break;
             case ParamKind::Color: {
@@ -372,6 +428,7 @@ private:
 
     std::string mName;
     std::vector<std::string>* mWarnings;
+    int mVersion = FormatVersion; ///< the version the file says
 };
 
 /// "line L, column C" of a byte offset (0-based) of the text.
@@ -431,7 +488,12 @@ Json operationJson(const Operation& op, int dimension) {
             entry[key] = std::string(spec.choices[static_cast<std::size_t>(getComponent(spec, op, 0))]);
         } else if (spec.kind == ParamKind::Color) {
             entry[key] = op.color;
-        } else if (spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction || (spec.pair && count == 2)) {
+        } else if (spec.optional && !usesVersion2(spec, op)) {
+            continue; // at its default: left out, so the file stays the lowest version
+        } else if (spec.kind == ParamKind::Count) {
+            entry[key] = op.steps;
+        } else if (spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction || spec.kind == ParamKind::Extent
+                   || spec.kind == ParamKind::Teeth || (spec.pair && count == 2)) {
             Json values = Json::array();
             for (int i = 0; i < count; ++i) values.push_back(number(getComponent(spec, op, i)));
             entry[key] = std::move(values);
@@ -527,6 +589,8 @@ void validateGenome(const Genome& genome, const std::string& name) {
         if (genome.dimension != 2) throw GenomeError(name, "source", "only allowed in 2D designs");
         if (genome.source->image.empty()) throw GenomeError(name, "source.image", "must be a file name or a data URL");
     }
+    if (!std::isfinite(genome.bleed)) throw GenomeError(name, "bleed", "must be finite (got " + formatNumber(genome.bleed) + ")");
+    if (!(genome.bleed >= 0.0)) throw GenomeError(name, "bleed", "must be >= 0 (got " + formatNumber(genome.bleed) + ")");
     if (!genome.meta.is_object()) throw GenomeError(name, "meta", "must be an object");
     checkFreeForm(genome.meta, "meta", name, 1);
 }
@@ -534,7 +598,7 @@ void validateGenome(const Genome& genome, const std::string& name) {
 Json toJson(const Genome& genome) {
     Json root = Json::object();
     root["format"] = "marbler-genome";
-    root["version"] = FormatVersion;
+    root["version"] = requiredVersion(genome);
     root["dimension"] = genome.dimension;
     Json size = Json::array();
     for (int i = 0; i < (genome.dimension == 3 ? 3 : 2); ++i) size.push_back(number(genome.size[i]));
@@ -550,6 +614,7 @@ Json toJson(const Genome& genome) {
     for (const Operation& op : genome.operations) operations.push_back(operationJson(op, genome.dimension));
     root["operations"] = std::move(operations);
     if (genome.source) root["source"] = Json{{"image", genome.source->image}};
+    if (genome.bleed != 0.0) root["bleed"] = number(genome.bleed);
     if (genome.meta.is_object() && !genome.meta.empty()) root["meta"] = genome.meta;
     return root;
 }

@@ -72,6 +72,7 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
     const double floorLength = 1e-3 * side; // lengths stay clearly > 0
     constexpr double AngleMargin = 1e-3;    // degrees, for an angle whose range is open
     const glm::dvec3 before = op.direction, beforeNormal = op.normal;
+    const Operation original = op;
     bool hasFrame = false;
     for (const ParamSpec& spec : toolSpec(op.tool).params(g.dimension)) {
         const int n = componentCount(spec, op, g.dimension);
@@ -108,15 +109,42 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
             break;
         case ParamKind::Length:
         case ParamKind::Shift:
+        case ParamKind::Extent:
             for (int i = 0; i < n; ++i) {
                 double v = getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side;
                 // Lengths that must be > 0 stay clearly so.
                 setComponent(spec, op, i, keepInRange(spec.range, v, floorLength));
             }
             break;
+        case ParamKind::Number:
+            for (int i = 0; i < n; ++i) {
+                double v = getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength;
+                setComponent(spec, op, i, keepInRange(spec.range, v, 0.05 * spec.mutationScale));
+            }
+            break;
+        case ParamKind::Teeth: {
+            // Each tooth moves; then they are put back in order, at least a hair apart.
+            for (int i = 0; i < n; ++i)
+                setComponent(spec, op, i, getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side);
+            std::sort(op.teeth.begin(), op.teeth.end());
+            for (std::size_t i = 1; i < op.teeth.size(); ++i)
+                op.teeth[i] = std::max(op.teeth[i], op.teeth[i - 1] + floorLength);
+            break;
+        }
+        case ParamKind::Count: // a flow's steps follow its speed, time and size, below
         case ParamKind::Color:
         case ParamKind::Choice: break;
         }
+    }
+    if (op.tool == Tool::Flow) {
+        // Enough steps for the new speed, time and size; a draw that would need more than the
+        // format allows keeps the old ones.
+        if (minimumFlowSteps(op) > MaxFlowSteps) {
+            op.speed = original.speed;
+            op.time = original.time;
+            op.extent = original.extent;
+        }
+        op.steps = std::max(op.steps, minimumFlowSteps(op));
     }
     if (hasFrame) {
         // Keep direction and normal a valid frame: the normal loses its part along the

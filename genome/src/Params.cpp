@@ -4,6 +4,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <numbers>
 
 namespace marbler {
 namespace {
@@ -35,6 +36,20 @@ constexpr ParamSpec AmplitudePair{"amplitude", F::Amplitude, K::Shift, "design u
 constexpr ParamSpec WavelengthPair{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05, true};
 constexpr ParamSpec PhasePair{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0, true};
 
+// Version 2.
+constexpr ParamSpec Core{"core", F::Core, K::Length, "design units", "finite centre: 0 winds without end, larger keeps the swirl's eye clean", NonNegativeNumber, 0.0, 0.01, false, {}, 2, true};
+constexpr ParamSpec Teeth{"teeth", F::Teeth, K::Teeth, "design units", "tooth positions along the normal, from the origin, increasing", AnyNumber, 0.0, 0.01, false, {}, 2};
+constexpr ParamSpec ShiftRow{"shift", F::Shift, K::Shift, "design units", "largest shift, midway between two teeth; its sign is the direction", AnyNumber, 40.0, 0.03, false, {}, 2};
+constexpr ParamSpec Power{"power", F::Power, K::Number, "", "tooth profile |sin|^p: small is blunt, large is pointed", PositiveNumber, 0.5, 0.15, false, {}, 2};
+// In the order of FlowField.
+constexpr std::array<std::string_view, 2> FlowFields{"cells", "cavity"};
+static_assert(FlowFields.size() == static_cast<std::size_t>(FlowField::Cavity) + 1);
+constexpr ParamSpec FieldRow{"field", F::Field, K::Choice, "", "the velocity field: a lattice of cells or one cavity", AnyNumber, 0.0, 0.0, false, FlowFields, 2};
+constexpr ParamSpec SizeRow{"size", F::Size, K::Extent, "design units", "size of a cell (cells) or of the box (cavity)", PositiveNumber, 250.0, 0.05, false, {}, 2};
+constexpr ParamSpec Speed{"speed", F::Speed, K::Number, "design units per time", "speed of the flow; its sign is the sense of turning", AnyNumber, 40.0, 10.0, false, {}, 2};
+constexpr ParamSpec Time{"time", F::Time, K::Number, "time", "how long the flow runs", PositiveNumber, 2.0, 0.3, false, {}, 2};
+constexpr ParamSpec Steps{"steps", F::Steps, K::Count, "", "implicit midpoint steps (at least 32 |speed| time max(size) / min(size)^2)", ParamRange{1.0, double(MaxFlowSteps)}, 32.0, 0.0, false, {}, 2};
+
 constexpr std::array Ink{Center, Radius, ColorRow};
 constexpr std::array Cylinder3{Center, Axis, Radius, ColorRow};
 constexpr std::array Line2{Origin, Angle, Alpha, Lambda};
@@ -43,10 +58,12 @@ constexpr std::array Comb2{Origin, Angle, Alpha, Lambda, Spacing};
 constexpr std::array Comb3{Origin, Direction, Normal, Alpha, Lambda, Spacing};
 constexpr std::array Wave2{Origin, Angle, Amplitude, Wavelength, Phase};
 constexpr std::array Wave3{Origin, Direction, Normal, Shape, AmplitudePair, WavelengthPair, PhasePair};
-constexpr std::array Circle2{Center, Radius, Alpha, Lambda};
-constexpr std::array Circle3{Center, Axis, Radius, Alpha, Lambda};
-constexpr std::array Vortex2{Center, Alpha, Lambda};
-constexpr std::array Vortex3{Center, Axis, Alpha, Lambda};
+constexpr std::array Circle2{Center, Radius, Alpha, Lambda, Core};
+constexpr std::array Circle3{Center, Axis, Radius, Alpha, Lambda, Core};
+constexpr std::array Vortex2{Center, Alpha, Lambda, Core};
+constexpr std::array Vortex3{Center, Axis, Alpha, Lambda, Core};
+constexpr std::array Stretch2{Origin, Angle, Teeth, ShiftRow, Power};
+constexpr std::array Flow2{FieldRow, Origin, Angle, SizeRow, Speed, Time, Steps};
 
 using SF = ShaderForm;
 
@@ -62,6 +79,8 @@ constexpr std::array<ToolSpec, ToolCount> Tools{{
     {Tool::Circle, "circle", true, true, false, true, SF::Turn, SF::Turn, Circle2, Circle3},
     {Tool::Sphere, "sphere", false, true, false, true, SF::Turn, SF::Turn, {}, Circle3},
     {Tool::Vortex, "vortex", true, true, false, true, SF::Turn, SF::Turn, Vortex2, Vortex3},
+    {Tool::Stretch, "stretch", true, false, false, true, SF::Stretch, SF::Stretch, Stretch2, {}, 2},
+    {Tool::Flow, "flow", true, false, false, true, SF::Flow, SF::Flow, Flow2, {}, 2},
 }};
 
 constexpr bool inEnumOrder() {
@@ -80,6 +99,17 @@ constexpr bool choicesWhereChosen() {
     return true;
 }
 static_assert(choicesWhereChosen(), "a Choice parameter lists its choices, no other parameter has any");
+
+/// Exactly the parameters newer than their tool are optional: a file of the tool's own version
+/// says all of the tool's parameters, a newer parameter may be left out of an older tool.
+constexpr bool versionsConsistent() {
+    for (const ToolSpec& tool : Tools)
+        for (std::span<const ParamSpec> params : {tool.params2D, tool.params3D})
+            for (const ParamSpec& spec : params)
+                if (spec.optional != (spec.version > tool.version)) return false;
+    return true;
+}
+static_assert(versionsConsistent(), "optional parameters are exactly those newer than their tool");
 
 glm::dvec3* vectorField(const ParamSpec& spec, Operation& op) {
     switch (spec.field) {
@@ -102,6 +132,11 @@ glm::dvec2* pairField(const ParamSpec& spec, Operation& op) {
 
 double* scalarField(const ParamSpec& spec, Operation& op) {
     switch (spec.field) {
+    case F::Core: return &op.core;
+    case F::Shift: return &op.shift;
+    case F::Power: return &op.power;
+    case F::Speed: return &op.speed;
+    case F::Time: return &op.time;
     case F::Angle: return &op.angle;
     case F::Radius: return &op.radius;
     case F::Alpha: return &op.alpha;
@@ -175,6 +210,8 @@ std::string ParamSpec::describeChoices() const {
 
 int componentCount(const ParamSpec& spec, const Operation& op, int dimension) {
     if (spec.kind == K::Position || spec.kind == K::Direction) return dimension;
+    if (spec.kind == K::Extent) return 2;
+    if (spec.kind == K::Teeth) return static_cast<int>(op.teeth.size());
     if (spec.pair) return op.shape == WaveShape::Eggcrate ? 2 : 1;
     return 1;
 }
@@ -184,7 +221,10 @@ double getComponent(const ParamSpec& spec, const Operation& op, int index) {
     if (glm::dvec3* v = vectorField(spec, mutableOp)) return (*v)[index];
     if (spec.pair) return (*pairField(spec, mutableOp))[index];
     if (spec.kind == K::Color) return op.color;
-    if (spec.kind == K::Choice) return static_cast<double>(op.shape);
+    if (spec.kind == K::Choice) return spec.field == F::Field ? static_cast<double>(op.field) : static_cast<double>(op.shape);
+    if (spec.kind == K::Extent) return op.extent[index];
+    if (spec.kind == K::Teeth) return op.teeth[static_cast<std::size_t>(index)];
+    if (spec.kind == K::Count) return op.steps;
     return *scalarField(spec, mutableOp);
 }
 
@@ -198,7 +238,18 @@ void setComponent(const ParamSpec& spec, Operation& op, int index, double value)
     } else if (spec.kind == K::Choice) {
         // The nearest choice: an index within the table's list.
         double last = static_cast<double>(spec.choices.size()) - 1.0;
-        op.shape = static_cast<WaveShape>(static_cast<int>(std::clamp(std::round(value), 0.0, std::max(0.0, last))));
+        int index = static_cast<int>(std::clamp(std::round(value), 0.0, std::max(0.0, last)));
+        if (spec.field == F::Field) op.field = static_cast<FlowField>(index);
+        else op.shape = static_cast<WaveShape>(index);
+    } else if (spec.kind == K::Extent) {
+        op.extent[index] = value;
+    } else if (spec.kind == K::Teeth) {
+        auto at = static_cast<std::size_t>(index);
+        if (at >= op.teeth.size()) op.teeth.resize(at + 1, value);
+        op.teeth[at] = value;
+    } else if (spec.kind == K::Count) {
+        // Clamped before the cast so that no value can overflow an int.
+        op.steps = static_cast<int>(std::clamp(std::round(value), spec.range.min, spec.range.max));
     } else {
         *scalarField(spec, op) = value;
     }
@@ -209,10 +260,47 @@ Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center) {
     op.tool = tool;
     op.center = dimension == 3 ? center : glm::dvec3(center.x, center.y, 0.0);
     for (const ParamSpec& spec : toolSpec(tool).params(dimension)) {
-        if (spec.kind == K::Position || spec.kind == K::Direction || spec.kind == K::Choice) continue;
+        if (spec.kind == K::Position || spec.kind == K::Direction || spec.kind == K::Choice || spec.kind == K::Teeth)
+            continue;
         for (int i = 0; i < componentCount(spec, op, dimension); ++i) setComponent(spec, op, i, spec.defaultValue);
     }
+    if (tool == Tool::Stretch) {
+        // Ten equal intervals across a square of twice the larger half-side about the centre,
+        // so the teeth cover the design at any angle.
+        double half = std::max({std::abs(center.x), std::abs(center.y), 1.0}) * std::numbers::sqrt2;
+        for (int i = 0; i <= 10; ++i) op.teeth.push_back(-half + 2.0 * half * i / 10.0);
+    }
+    if (tool == Tool::Flow) {
+        // The cells' lattice starts at the design's corner, so the default flow is symmetric.
+        op.center = {0.0, 0.0, 0.0};
+        op.steps = std::max(op.steps, minimumFlowSteps(op));
+    }
     return op;
+}
+
+int minimumFlowSteps(const Operation& op) {
+    double smaller = std::min(op.extent.x, op.extent.y), larger = std::max(op.extent.x, op.extent.y);
+    double needed = 32.0 * std::abs(op.speed) * op.time * larger / (smaller * smaller);
+    if (!std::isfinite(needed) || needed > double(MaxFlowSteps)) return MaxFlowSteps + 1;
+    return std::max(1, static_cast<int>(std::ceil(needed)));
+}
+
+bool usesVersion2(const ParamSpec& spec, const Operation& op) {
+    if (spec.version < 2) return false;
+    if (!spec.optional) return true;
+    return getComponent(spec, op, 0) != spec.defaultValue;
+}
+
+int requiredVersion(const Genome& genome) {
+    if (genome.bleed != 0.0) return 2;
+    for (const std::vector<Operation>* list : {&genome.initial, &genome.operations})
+        for (const Operation& op : *list) {
+            const ToolSpec& tool = toolSpec(op.tool);
+            if (tool.version >= 2) return 2;
+            for (const ParamSpec& spec : tool.params(genome.dimension))
+                if (usesVersion2(spec, op)) return 2;
+        }
+    return 1;
 }
 
 } // namespace marbler

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -57,7 +58,9 @@ glm::dvec3 swirl(const PreparedOp& op, const glm::dvec3& p, double sign, Swirl k
     }
     if (!(rho > 0.0)) return p; // the centre (or axis) stays where it is
     double d = kind == Swirl::Vortex ? rho : std::abs(rho - op.r);
-    double theta = sign * shiftFor(op, d) / rho;
+    // Version 2's core: theta = l / sqrt(rho^2 + c^2); c = 0 keeps version 1's l / rho exactly.
+    double across = op.core2 > 0.0 ? std::sqrt(rho * rho + op.core2) : rho;
+    double theta = sign * shiftFor(op, d) / across;
     if (op.dimension == 2) {
         double c = std::cos(theta), s = std::sin(theta);
         return op.c + glm::dvec3(c * rel.x - s * rel.y, s * rel.x + c * rel.y, 0.0);
@@ -92,7 +95,67 @@ bool inDisc(const PreparedOp& op, const glm::dvec3& p, bool acrossAxis) {
     return glm::dot(rel, rel) < op.r * op.r;
 }
 
+/// Stretch: the shift along M of a point whose distance along N from the origin is u:
+/// s sin(pi tau)^p between two teeth, 0 outside them.
+double stretchShift(const PreparedOp& op, double u) {
+    const std::vector<double>& t = op.teeth;
+    if (t.size() < 2 || !(u >= t.front()) || !(u < t.back())) return 0.0;
+    // The interval t_i <= u < t_{i+1}: the first tooth above u ends it.
+    auto above = std::upper_bound(t.begin(), t.end(), u);
+    double lo = *(above - 1), hi = *above;
+    double tau = (u - lo) / (hi - lo);
+    return op.shift * std::pow(std::sin(std::numbers::pi * tau), op.power);
+}
+
+glm::dvec3 stretch(const PreparedOp& op, const glm::dvec3& p, double sign) {
+    return p + sign * stretchShift(op, glm::dot(p - op.c, op.n)) * op.m;
+}
+
+/// Flow: n implicit midpoint steps of size sign * h in local coordinates.
+glm::dvec3 flow(const PreparedOp& op, const glm::dvec3& p, double sign) {
+    glm::dvec3 rel = p - op.c;
+    glm::dvec2 x(glm::dot(rel, op.m), glm::dot(rel, op.n));
+    const double h = sign * op.step;
+    for (int k = 0; k < op.steps; ++k) {
+        glm::dvec2 next = x + h * flowVelocity(op, x.x, x.y);
+        for (int iteration = 0; iteration < 100; ++iteration) {
+            glm::dvec2 again = x + h * flowVelocity(op, 0.5 * (x.x + next.x), 0.5 * (x.y + next.y));
+            bool settled = glm::length(again - next) < op.tolerance;
+            next = again;
+            if (settled) break;
+        }
+        x = next;
+    }
+    return op.c + x.x * op.m + x.y * op.n;
+}
+
 } // namespace
+
+glm::dvec2 flowVelocity(const PreparedOp& op, double x, double y) {
+    const double lx = op.size[0], ly = op.size[1], u = op.speed;
+    double dpsiDx = 0.0, dpsiDy = 0.0;
+    switch (op.field) {
+    case FlowField::Cells: {
+        // psi = U (Ly / pi) sin(pi x / Lx) sin(pi y / Ly)
+        double ax = std::numbers::pi * x / lx, ay = std::numbers::pi * y / ly;
+        dpsiDy = u * std::sin(ax) * std::cos(ay);
+        dpsiDx = u * (ly / lx) * std::cos(ax) * std::sin(ay);
+        break;
+    }
+    case FlowField::Cavity: {
+        // psi = U Ly F(x / Lx) G(y / Ly) in the box, 0 outside
+        double s = x / lx, t = y / ly;
+        if (!(s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0)) return {0.0, 0.0};
+        double f = 16.0 * s * s * (1.0 - s) * (1.0 - s), df = 32.0 * s * (1.0 - s) * (1.0 - 2.0 * s);
+        double g = 7.5 * t * t * (1.0 - t) * (1.0 - t) * (1.0 - t), dg = 7.5 * t * (1.0 - t) * (1.0 - t) * (2.0 - 5.0 * t);
+        dpsiDy = u * f * dg;
+        dpsiDx = u * (ly / lx) * df * g;
+        break;
+    }
+    }
+    // v = (dpsi/dy) M - (dpsi/dx) N
+    return {dpsiDy, -dpsiDx};
+}
 
 PreparedOp prepare(const Operation& op, int dimension) {
     PreparedOp p;
@@ -127,6 +190,17 @@ PreparedOp prepare(const Operation& op, int dimension) {
         p.freq[i] = 2.0 * std::numbers::pi / op.wavelength[i];
         p.phase[i] = op.phase[i] * DegToRad;
     }
+    p.core2 = op.core * op.core;
+    p.shift = op.shift;
+    p.power = op.power;
+    if (op.tool == Tool::Stretch) p.teeth = op.teeth;
+    p.field = op.field;
+    p.size[0] = op.extent.x;
+    p.size[1] = op.extent.y;
+    p.speed = op.speed;
+    p.steps = op.tool == Tool::Flow ? op.steps : 0;
+    p.step = op.steps > 0 ? op.time / op.steps : 0.0;
+    p.tolerance = 1e-12 * (op.extent.x + op.extent.y);
     return p;
 }
 
@@ -149,6 +223,8 @@ glm::dvec3 forwardMap(const PreparedOp& op, const glm::dvec3& p) {
     case Tool::Circle: return swirl(op, p, +1.0, circleSwirl(op));
     case Tool::Sphere: return swirl(op, p, +1.0, Swirl::AboutTheCentre);
     case Tool::Vortex: return swirl(op, p, +1.0, Swirl::Vortex);
+    case Tool::Stretch: return stretch(op, p, +1.0);
+    case Tool::Flow: return flow(op, p, +1.0);
     }
     return p;
 }
@@ -164,6 +240,8 @@ glm::dvec3 inverseMap(const PreparedOp& op, const glm::dvec3& q) {
     case Tool::Circle: return swirl(op, q, -1.0, circleSwirl(op));
     case Tool::Sphere: return swirl(op, q, -1.0, Swirl::AboutTheCentre);
     case Tool::Vortex: return swirl(op, q, -1.0, Swirl::Vortex);
+    case Tool::Stretch: return stretch(op, q, -1.0);
+    case Tool::Flow: return flow(op, q, -1.0);
     }
     return q;
 }
@@ -178,8 +256,38 @@ bool insideInk(const PreparedOp& op, const glm::dvec3& p) {
     case Tool::Wave:
     case Tool::Circle:
     case Tool::Sphere:
-    case Tool::Vortex: return false;
+    case Tool::Vortex:
+    case Tool::Stretch:
+    case Tool::Flow: return false;
     }
+    return false;
+}
+
+double inkEdgeDistance(const PreparedOp& op, const glm::dvec3& p) {
+    glm::dvec3 rel = p - op.c;
+    if (op.tool == Tool::Cylinder) rel -= glm::dot(rel, op.a) * op.a;
+    return glm::length(rel) - op.r;
+}
+
+double bleedCoverage(double e, double bleed) {
+    if (!(bleed > 0.0)) return e < 0.0 ? 1.0 : 0.0;
+    return std::clamp(0.5 - e / bleed, 0.0, 1.0);
+}
+
+bool traceCovers(const std::vector<PreparedOp>& ops, double bleed, glm::dvec3 p, std::vector<InkCover>& covers,
+                 glm::dvec3* where) {
+    covers.clear();
+    for (auto it = ops.rbegin(); it != ops.rend(); ++it) {
+        if (it->color >= 0) {
+            double c = bleed > 0.0 ? bleedCoverage(inkEdgeDistance(*it, p), bleed) : (insideInk(*it, p) ? 1.0 : 0.0);
+            if (c > 0.0) {
+                covers.push_back({it->color, c});
+                if (c >= 1.0) return true;
+            }
+        }
+        p = inverseMap(*it, p);
+    }
+    if (where) *where = p;
     return false;
 }
 

@@ -458,13 +458,16 @@ MARBLER_IVDEP
     double* __restrict theta = t.t0;
     double* __restrict sn = t.t1;
     double* __restrict cs = t.t2;
-    const double cx = op.c.x, cy = op.c.y, r = op.r, al = op.alphaLambda, lambda = op.lambda;
+    const double cx = op.c.x, cy = op.c.y, r = op.r, al = op.alphaLambda, lambda = op.lambda, core2 = op.core2;
+    const bool cored = core2 > 0.0;
 MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy;
         double rho = std::sqrt(dx * dx + dy * dy);
         double d = vortex ? rho : std::abs(rho - r);
-        theta[i] = -(al / (d + lambda)) / rho;
+        // Version 2's core: l / sqrt(rho^2 + c^2) (Tools.cpp swirl).
+        double across = cored ? std::sqrt(rho * rho + core2) : rho;
+        theta[i] = -(al / (d + lambda)) / across;
     }
     sinCosArray(theta, sn, cs, n);
 MARBLER_IVDEP
@@ -615,7 +618,8 @@ MARBLER_IVDEP
     double* __restrict sn = t.t1;
     double* __restrict cs = t.t2;
     const double cx = op.c.x, cy = op.c.y, cz = op.c.z, ax = op.a.x, ay = op.a.y, az = op.a.z;
-    const double r = op.r, al = op.alphaLambda, lambda = op.lambda;
+    const double r = op.r, al = op.alphaLambda, lambda = op.lambda, core2 = op.core2;
+    const bool cored = core2 > 0.0;
     std::int64_t* __restrict moves = t.flag;
 MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
@@ -629,7 +633,8 @@ MARBLER_IVDEP
             rho = std::sqrt(dx * dx + dy * dy + dz * dz);
         }
         double d = vortex ? rho : std::abs(rho - r);
-        double th = -(al / (d + lambda)) / rho;
+        double across = cored ? std::sqrt(rho * rho + core2) : rho;
+        double th = -(al / (d + lambda)) / across;
         // The centre (or axis) stays where it is; 0 keeps the sine pass off a NaN.
         theta[i] = rho > 0.0 ? th : 0.0;
         moves[i] = rho > 0.0;
@@ -678,6 +683,15 @@ template <Variant V, int Dim>
     return inside != 0 ? compact(tile, n, Dim, op.color, colors) : n;
 }
 
+/// Stretch and flow, one point at a time through the scalar reference (Tools.cpp).
+inline void scalarInverse2(const PreparedOp& op, Tile& t, int n) {
+    for (int i = 0; i < n; ++i) {
+        glm::dvec3 q = inverseMap(op, glm::dvec3(t.x[i], t.y[i], 0.0));
+        t.x[i] = q.x;
+        t.y[i] = q.y;
+    }
+}
+
 /// The body of every variant: V says which, so only the AVX-512 variant calls the
 /// hand-written drops (which need AVX-512 to run, whatever the variant is compiled for). One
 /// switch per dimension over every tool, with no default: a tool added to the registry
@@ -702,6 +716,8 @@ template <Variant V>
             case Tool::Wave: wave2(op, tile, n); break;
             case Tool::Circle: swirl2(op, tile, n, false); break;
             case Tool::Vortex: swirl2(op, tile, n, true); break;
+            case Tool::Stretch:
+            case Tool::Flow: scalarInverse2(op, tile, n); break;
             case Tool::Cylinder:
             case Tool::Sphere: break; // not in 2D genomes (the loader refuses them)
             }
@@ -720,6 +736,8 @@ template <Variant V>
             case Tool::Circle: swirl3(op, tile, n, true, false); break;
             case Tool::Sphere: swirl3(op, tile, n, false, false); break;
             case Tool::Vortex: swirl3(op, tile, n, false, true); break;
+            case Tool::Stretch:
+            case Tool::Flow: break; // 2D only (the loader refuses them in 3D)
             }
         }
     }

@@ -156,11 +156,20 @@ Operation randomOperation(Pcg32& rng, Tool tool, int dimension) {
             case ParamField::Amplitude: value = rng.uniform(-40, 40); break;
             case ParamField::Wavelength: value = rng.uniform(100, 500); break;
             case ParamField::Phase: value = rng.uniform(0, 360); break;
-            default: continue; // directions, shape, colour: below or as defaulted
+            case ParamField::Core: value = rng.chance(0.5) ? 0.0 : rng.uniform(1, 80); break;
+            case ParamField::Teeth: value = -600.0 + 1800.0 * (i + rng.uniform(0.1, 0.9)) / componentCount(spec, op, dimension); break;
+            case ParamField::Shift: value = rng.uniform(-100, 100); break;
+            case ParamField::Power: value = rng.uniform(0.25, 2.5); break;
+            case ParamField::Size: value = rng.uniform(150, 600); break;
+            case ParamField::Speed: value = rng.uniform(-60, 60); break;
+            case ParamField::Time: value = rng.uniform(0.5, 5); break;
+            default: continue; // directions, shape, colour, steps: below or as defaulted
             }
             setComponent(spec, op, i, value);
         }
     }
+    op.field = rng.chance(0.5) ? FlowField::Cells : FlowField::Cavity;
+    op.steps = minimumFlowSteps(op) + static_cast<int>(rng.uniform(0, 20));
     op.axis = randomUnit(rng) * rng.uniform(0.5, 3.0);
     op.direction = randomUnit(rng) * rng.uniform(0.5, 3.0);
     do {
@@ -195,6 +204,14 @@ bool smoothAt(const PreparedOp& op, const glm::dvec3& p) {
     }
     case Tool::Sphere: return glm::length(rel) > 20.0 && std::abs(glm::length(rel) - op.r) > Margin;
     case Tool::Vortex: return glm::length(rel) > 20.0;
+    case Tool::Stretch: {
+        // Away from the teeth, where |sin|^p with p < 1 has no derivative.
+        double u = glm::dot(rel, op.n);
+        for (double t : op.teeth)
+            if (std::abs(u - t) < 1.0) return false;
+        return true;
+    }
+    case Tool::Flow: return true; // smooth (the cavity's edges are C1)
     case Tool::Spray:
     case Tool::Wave: return true; // smooth everywhere
     }

@@ -105,7 +105,9 @@ bool exactTool(Tool tool, int dimension) {
     case Tool::Wave:
     case Tool::Circle:
     case Tool::Sphere:
-    case Tool::Vortex: return false;
+    case Tool::Vortex:
+    case Tool::Stretch:
+    case Tool::Flow: return false;
     }
     return false;
 }

@@ -1,5 +1,5 @@
 #pragma once
-/// The genome: the whole recipe of one marbling design (genome-format.md, version 1).
+/// The genome: the whole recipe of one marbling design (genome-format.md, versions 1 and 2).
 ///
 /// A genome is plain data. Its tools are kept with the parameters exactly as the file gives them
 /// (angles in degrees, vectors as written but normalised by the loader); `Tools.h` turns them into
@@ -18,11 +18,14 @@
 namespace marbler {
 
 /// Every tool of the format, in the order of the registry (Params.h), which a static_assert holds.
-enum class Tool : std::uint8_t { Drop, Spray, Cylinder, Line, Comb, Wave, Circle, Sphere, Vortex };
-inline constexpr int ToolCount = 9;
+enum class Tool : std::uint8_t { Drop, Spray, Cylinder, Line, Comb, Wave, Circle, Sphere, Vortex, Stretch, Flow };
+inline constexpr int ToolCount = 11;
 
 /// The two shapes of a 3D wave.
 enum class WaveShape : std::uint8_t { Eggcrate, Ripple };
+
+/// The two velocity fields of `flow` (version 2).
+enum class FlowField : std::uint8_t { Cells, Cavity };
 
 /// An sRGB colour, 8 bits a channel, as written `#rrggbb`.
 struct Color {
@@ -48,6 +51,16 @@ struct Operation {
     glm::dvec2 phase{0.0};              ///< degrees
     WaveShape shape = WaveShape::Eggcrate;
     int color = 0;                      ///< palette index of an ink-laying tool
+    // Version 2.
+    double core = 0.0;                  ///< circle, sphere, vortex: finite centre c >= 0
+    std::vector<double> teeth;          ///< stretch: tooth positions along N, increasing
+    double shift = 0.0;                 ///< stretch: largest shift (its sign the direction)
+    double power = 1.0;                 ///< stretch: tooth profile |sin|^p
+    FlowField field = FlowField::Cells; ///< flow: which velocity field
+    glm::dvec2 extent{1.0, 1.0};        ///< flow: `size` [Lx, Ly] of a cell or the cavity
+    double speed = 0.0;                 ///< flow: U
+    double time = 1.0;                  ///< flow: T > 0
+    int steps = 1;                      ///< flow: implicit midpoint steps n
 
     friend bool operator==(const Operation&, const Operation&) = default;
 };
@@ -67,6 +80,7 @@ struct Genome {
     std::vector<Operation> initial;    ///< drops, sprays and (3D) cylinders, applied first
     std::vector<Operation> operations; ///< strokes applied after `initial`
     std::optional<SourceImage> source;
+    double bleed = 0.0;                ///< version 2: soft ink edges, width in design units
     nlohmann::ordered_json meta = nlohmann::ordered_json::object();
 
     /// The folder relative paths of `source` are resolved against (the genome file's folder);
@@ -83,7 +97,7 @@ struct Genome {
     friend bool operator==(const Genome& a, const Genome& b) {
         return a.dimension == b.dimension && a.size == b.size && a.background == b.background
             && a.palette == b.palette && a.initial == b.initial && a.operations == b.operations
-            && a.source == b.source && a.meta == b.meta;
+            && a.source == b.source && a.bleed == b.bleed && a.meta == b.meta;
     }
 };
 
@@ -91,7 +105,11 @@ struct Genome {
 inline constexpr std::size_t MaxEntries = 10000;
 inline constexpr std::size_t MaxFileBytes = 16u * 1024u * 1024u;
 inline constexpr std::size_t MaxPaletteSize = 16;
-inline constexpr int FormatVersion = 1;
+/// The newest format version this Marbler reads and writes.
+inline constexpr int FormatVersion = 2;
+/// The largest number of teeth of a `stretch` and of steps of a `flow` (genome-format.md, version 2).
+inline constexpr std::size_t MaxTeeth = 1000;
+inline constexpr int MaxFlowSteps = 10000;
 
 /// `#rrggbb`, lower case.
 std::string toHex(Color c);

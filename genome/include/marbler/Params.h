@@ -24,13 +24,18 @@ enum class ParamKind : std::uint8_t {
     Shift,     ///< signed design units (alpha, amplitude)
     Phase,     ///< degrees, any value
     Color,     ///< integer index into the palette
-    Choice,    ///< one of the spec's `choices` (a 3D wave's shape), held as its index
+    Choice,    ///< one of the spec's `choices` (a 3D wave's shape, a flow's field), held as its index
+    Extent,    ///< two lengths [x, y] (a flow's `size`), each in `range`
+    Teeth,     ///< 2 to MaxTeeth strictly increasing positions (a stretch's `teeth`)
+    Count,     ///< an integer in `range` (a flow's `steps`)
+    Number,    ///< a plain number in its own unit (power, speed, time); mutated by absolute steps
 };
 
 /// Which field of Operation a parameter lives in.
 enum class ParamField : std::uint8_t {
     Center, Axis, Direction, Normal, Angle, Radius, Alpha, Lambda, Spacing,
     Amplitude, Wavelength, Phase, Shape, Color,
+    Core, Teeth, Shift, Power, Field, Size, Speed, Time, Steps, // version 2
 };
 
 /// The values a parameter may take: [min, max], or (min, max] where `minOpen`.
@@ -48,6 +53,8 @@ struct ParamRange {
 inline constexpr ParamRange AnyNumber{};
 /// Strictly positive numbers (radius, lambda, spacing, wavelength).
 inline constexpr ParamRange PositiveNumber{0.0, std::numeric_limits<double>::infinity(), true};
+/// Numbers >= 0 (a swirl's core, the bleed).
+inline constexpr ParamRange NonNegativeNumber{0.0, std::numeric_limits<double>::infinity(), false};
 
 /// One row of a tool's parameter table.
 struct ParamSpec {
@@ -66,6 +73,10 @@ struct ParamSpec {
     bool pair = false;
     /// A Choice's JSON values, in the order of the enum they stand for.
     std::span<const std::string_view> choices = {};
+    /// The format version that introduced the parameter (a file of an older version may not use it).
+    int version = 1;
+    /// May be left out of a file (then it has `defaultValue`); written only when it differs.
+    bool optional = false;
 
     /// The index of `value` among the choices; -1 when it is none of them.
     int choiceIndex(std::string_view value) const;
@@ -81,6 +92,8 @@ enum class ShaderForm : std::uint8_t {
     Shift = 2,      ///< translation by the distance-dependent shift (line, comb)
     WaveShift = 3,  ///< translation by a wave's shift
     Turn = 4,       ///< turn about a centre or an axis (circle, sphere, vortex)
+    Stretch = 5,    ///< translation by a |sin|^p profile between teeth (stretch)
+    Flow = 6,       ///< implicit midpoint steps through a stream function's velocity (flow)
 };
 
 /// One entry of the registry.
@@ -95,6 +108,8 @@ struct ToolSpec {
     ShaderForm form2D, form3D;
     std::span<const ParamSpec> params2D;
     std::span<const ParamSpec> params3D;
+    /// The format version that introduced the tool.
+    int version = 1;
 
     std::span<const ParamSpec> params(int dimension) const { return dimension == 3 ? params3D : params2D; }
     bool available(int dimension) const { return dimension == 3 ? in3D : in2D; }
@@ -113,12 +128,26 @@ bool allowedInInitial(Tool tool, int dimension);
 std::string initialToolsText();
 
 /// Read or write the scalar components of a parameter. A Position/Direction has `dimension`
-/// components, a pair 2 (egg-crate) or 1, everything else 1.
+/// components, a pair 2 (egg-crate) or 1, an Extent 2, Teeth as many as the stretch has,
+/// everything else 1. Setting tooth `index` past the end grows the list.
 int componentCount(const ParamSpec& spec, const Operation& op, int dimension);
 double getComponent(const ParamSpec& spec, const Operation& op, int index);
 void setComponent(const ParamSpec& spec, Operation& op, int index, double value);
 
-/// An operation of the given tool with every parameter at its default, placed at `center`.
+/// An operation of the given tool with every parameter at its default, placed at `center`
+/// (a design's centre: a stretch's teeth then span the design whatever its angle).
 Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center);
+
+/// The fewest steps a flow may take: ceil(32 |U| T max(Lx, Ly) / min(Lx, Ly)^2), at least 1
+/// (genome-format.md, flow), so that each step's fixed-point iteration contracts.
+int minimumFlowSteps(const Operation& op);
+
+/// Whether a parameter holds a value a file of `version` 1 could not say: a version-2
+/// parameter away from its default.
+bool usesVersion2(const ParamSpec& spec, const Operation& op);
+
+/// The lowest format version that holds the design: 2 when it uses a version-2 tool, parameter
+/// or `bleed`, else 1. Writers write this version.
+int requiredVersion(const Genome& genome);
 
 } // namespace marbler

