@@ -28,7 +28,7 @@ public:
 bool isVideoFile(const std::filesystem::path& path);
 
 /// Opens a writer of `width` x `height` frames at `fps` frames a second (loads the video module
-/// on first use). Throws UsageError for an extension it does not write, RuntimeFailure when the
+/// on first use). Throws InputError for an extension it does not write, RuntimeFailure when the
 /// module or an encoder is missing or the file cannot be opened.
 std::unique_ptr<VideoWriter> openVideoWriter(const std::filesystem::path& path, int width, int height, double fps);
 
