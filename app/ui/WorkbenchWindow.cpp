@@ -244,6 +244,10 @@ void WorkbenchWindow::buildActions() {
     newRandom->setShortcut(QKeySequence::New);
     newRandom->setIconText(tr("New random"));
     newRandom->setToolTip(tr("Nine new random designs of the kind chosen beside (Ctrl+N)"));
+    QAction* picture = fileMenu->addAction(tr("&Marble a picture…"), this, &WorkbenchWindow::marblePictureDialog);
+    picture->setObjectName(QStringLiteral("marblePictureAction"));
+    picture->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+    picture->setStatusTip(tr("Nine flat designs whose bath is a picture you pick: flows and strokes carry its colours"));
     fileMenu->addSeparator();
     mSessionsAction = fileMenu->addAction(tr("&Sessions…"), this, [this] { openSessionsDialog(); });
     mSessionsAction->setStatusTip(tr("Every breeding session is kept: resume, rename or delete one"));

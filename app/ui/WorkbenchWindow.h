@@ -91,6 +91,10 @@ public:
     /// generation of their own kind; a mixed set opens the first file's kind and reports the
     /// rest. `description` names the new generation ("Opened NAMES" when empty). Returns the
     /// cells filled (none when cancelled).
+    /// Nine designs whose bath is the picture `file` (ImageDesign.h: a flow and strokes over it,
+    /// no ink), placed as opened designs are (placeOpened). Reports a picture that cannot be
+    /// read and returns no cells.
+    std::vector<int> marblePicture(const QString& file);
     std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1,
                                  const QString& description = {});
     /// Edit ▸ Copy design (Ctrl+C): puts a cell's genome on the clipboard as genome text; -1:
@@ -226,6 +230,7 @@ private:
     void showCellMenu(int index, const QPoint& globalPos);
     void showFavouriteMenu(const QPoint& pos);
     void openFileDialog();
+    void marblePictureDialog();
     void fillRecentSessions();
     void saveDesign(int index);
     QString renderCacheKey(int cell) const;

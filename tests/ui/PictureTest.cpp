@@ -1,0 +1,108 @@
+// File ▸ Marble a picture…: nine flat designs whose bath is the picture, read from its own
+// folder without asking, rendered from it, and a picture that cannot be read reported.
+
+#include "TestUtil.h"
+#include "UiTestSupport.h"
+#include "WaitFor.h"
+#include "ui/DesignCell.h"
+#include "ui/SourcePermissions.h"
+
+#include <QAction>
+#include <QColor>
+#include <QImage>
+#include <QSignalSpy>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace marbler;
+using namespace marbler::ui;
+namespace fs = std::filesystem;
+
+namespace {
+
+class PictureTest : public test::WindowTest {
+protected:
+    PictureTest() : test::WindowTest(false) {}
+
+    /// A 64 x 32 picture of four coloured bands in a folder of this test's own.
+    QString picture() {
+        const fs::path folder = test::outputDir(std::string("ui-picture-") +
+                                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(folder);
+        fs::create_directories(folder);
+        QImage image(64, 32, QImage::Format_RGB32);
+        const QColor bands[] = {QColor(200, 30, 40), QColor(30, 160, 60), QColor(40, 60, 200), QColor(230, 200, 40)};
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) image.setPixelColor(x, y, bands[x / 16]);
+        const QString file = QString::fromStdString((folder / "bands.png").string());
+        EXPECT_TRUE(image.save(file));
+        return file;
+    }
+};
+
+} // namespace
+
+TEST_F(PictureTest, NineDesignsMarbleThePictureFromItsOwnFolder) {
+    int asked = 0;
+    setExternalSourceAsker([&](QWidget*, const QString&, const QString&) {
+        ++asked;
+        return false;
+    });
+    const QString file = picture();
+    mWindow->resize(600, 500);
+    mWindow->show();
+    QSignalSpy finished(mWindow.get(), &WorkbenchWindow::renderingFinished);
+    const std::vector<int> cells = mWindow->marblePicture(file);
+    ASSERT_EQ(cells.size(), std::size_t(CellCount));
+    for (int c : cells) {
+        const Genome* design = model().cell(c);
+        ASSERT_NE(design, nullptr);
+        ASSERT_TRUE(design->source.has_value());
+        EXPECT_EQ(design->source->image, "bands.png");
+        EXPECT_EQ(fs::path(design->baseDirectory), fs::path(file.toStdString()).parent_path());
+        EXPECT_DOUBLE_EQ(design->size.y, 500.0) << "the picture's 2:1 shape";
+        EXPECT_TRUE(std::any_of(design->operations.begin(), design->operations.end(),
+                                [](const Operation& op) { return op.tool == Tool::Flow; }));
+    }
+    EXPECT_NE(*model().cell(0), *model().cell(1)) << "nine different designs";
+    while (!mWindow->renderingDone() || finished.isEmpty()) ASSERT_TRUE(finished.wait(120000));
+    EXPECT_EQ(asked, 0) << "a picture in the design's own folder needs no permission";
+    // The cells show the picture carried by the flow: its saturated bands, not the pale bath.
+    const QImage plain = mWindow->cell(0)->image();
+    ASSERT_FALSE(plain.isNull());
+    int bandColoured = 0;
+    for (int y = 0; y < plain.height(); y += 4)
+        for (int x = 0; x < plain.width(); x += 4) {
+            const QColor c = plain.pixelColor(x, y);
+            if (std::max({c.red(), c.green(), c.blue()}) - std::min({c.red(), c.green(), c.blue()}) > 100) ++bandColoured;
+        }
+    EXPECT_GT(bandColoured, (plain.width() / 4) * (plain.height() / 4) / 2) << "the picture's colours fill the bath";
+    setExternalSourceAsker({});
+}
+
+TEST_F(PictureTest, APictureThatCannotBeReadIsReportedAndChangesNothing) {
+    test::ErrorCapture errors;
+    const fs::path folder = test::outputDir("ui-picture-broken");
+    fs::create_directories(folder);
+    const fs::path broken = folder / "broken.png";
+    {
+        std::FILE* f = std::fopen(broken.c_str(), "wb");
+        std::fputs("not a picture", f);
+        std::fclose(f);
+    }
+    EXPECT_TRUE(mWindow->marblePicture(QString::fromStdString(broken.string())).empty());
+    EXPECT_TRUE(mWindow->marblePicture(QString::fromStdString((folder / "missing.png").string())).empty());
+    ASSERT_EQ(errors.messages.size(), 2);
+    EXPECT_TRUE(errors.messages[0].contains(QStringLiteral("broken.png"))) << errors.messages[0].toStdString();
+    EXPECT_TRUE(errors.messages[1].contains(QStringLiteral("no such file"))) << errors.messages[1].toStdString();
+    for (int c = 0; c < CellCount; ++c) EXPECT_EQ(model().cell(c), nullptr);
+}
+
+TEST_F(PictureTest, TheFileMenuOffersIt) {
+    auto* action = mWindow->findChild<QAction*>(QStringLiteral("marblePictureAction"));
+    ASSERT_NE(action, nullptr);
+    EXPECT_FALSE(action->shortcut().isEmpty());
+    EXPECT_FALSE(action->statusTip().isEmpty());
+}
