@@ -1,0 +1,496 @@
+#include "marbler/Families.h"
+
+#include "marbler/Generator.h"
+#include "marbler/Params.h"
+#include "marbler/Random.h"
+#include "marbler/Tools.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+namespace marbler {
+namespace {
+
+// Streams of their own, apart from randomGenome's.
+constexpr std::uint64_t PaletteStream = 0x66616d70616c3031ULL;
+constexpr std::uint64_t GroundStream = 0x66616d67726e3031ULL;
+constexpr std::uint64_t StrokeStream = 0x66616d7374723031ULL;
+
+/// Rounds to a tenth so files stay readable; only basic operations, so it is exact everywhere.
+double tenth(double x) { return std::round(x * 10.0) / 10.0; }
+
+// ---------------------------------------------------------------------------------------
+// Palettes of the tradition
+
+constexpr std::array<Color, 7> EarthInks{{
+    {0x2e, 0x3a, 0x6e}, // indigo
+    {0xa0, 0x46, 0x2d}, // red ochre
+    {0xc9, 0x9a, 0x3b}, // yellow ochre
+    {0x5b, 0x3a, 0x29}, // burnt umber
+    {0xb5, 0x73, 0x3a}, // raw sienna
+    {0x4f, 0x8a, 0x7b}, // verdigris
+    {0x1f, 0x1d, 0x1b}, // lamp black
+}};
+constexpr std::array<Color, 8> EbruInks{{
+    {0x1f, 0x4e, 0x9c}, // lapis
+    {0xb3, 0x20, 0x2c}, // crimson
+    {0xe6, 0xa9, 0x1a}, // saffron
+    {0x1e, 0x9a, 0xa0}, // turquoise
+    {0x2f, 0x6b, 0x3a}, // leaf green
+    {0x1d, 0x1b, 0x1a}, // black
+    {0xd6, 0x6a, 0x86}, // rose
+    {0xf0, 0xe6, 0xd2}, // white
+}};
+constexpr std::array<Color, 7> VictorianInks{{
+    {0x1c, 0x3f, 0x5e}, // Prussian blue
+    {0x8e, 0x2a, 0x3a}, // madder lake
+    {0xd9, 0xa0, 0x2a}, // gamboge
+    {0x22, 0x22, 0x22}, // ivory black
+    {0x6b, 0x7b, 0x86}, // slate
+    {0x8a, 0x9a, 0x6b}, // sage
+    {0xa3, 0x4a, 0x32}, // brick
+}};
+constexpr std::array<Color, 5> IndigoInks{{
+    {0x1b, 0x24, 0x4f}, {0x2e, 0x3f, 0x7f}, {0x4b, 0x63, 0xa6}, {0x85, 0x9b, 0xcc}, {0xc4, 0xcf, 0xe6},
+}};
+
+constexpr std::array<TraditionalPalette, 4> Traditions{{
+    {"earth pigments and indigo on cream", {0xef, 0xe6, 0xcf}, EarthInks},
+    {"Turkish ebru", {0xf4, 0xef, 0xe2}, EbruInks},
+    {"Victorian end-paper", {0xe9, 0xdf, 0xc8}, VictorianInks},
+    {"indigo shades on white", {0xf7, 0xf5, 0xf0}, IndigoInks},
+}};
+
+/// The redmean distance of Generator.cpp: good enough to keep inks apart.
+double distance2(Color a, Color b) {
+    double rm = (a.r + b.r) / 2.0;
+    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+    return (2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - rm) / 256.0) * db * db;
+}
+
+/// Inks far enough apart to read against each other: a squared redmean distance of 90^2 is a
+/// clear step between neighbours (indigo against umber, ochre against sienna).
+constexpr double MinContrast2 = 90.0 * 90.0;
+
+/// `count` inks and the paper: from a palette of the tradition (three times in four) or the
+/// harmony rules, ordered so that each ink stands apart from the one before it and from the
+/// paper (a stone's later colours are dropped on its earlier ones).
+std::vector<Color> familyPalette(Pcg32& rng, int count, Color& paper) {
+    std::vector<Color> pool;
+    if (rng.chance(0.75)) {
+        const TraditionalPalette& t = Traditions[rng.below(static_cast<std::uint32_t>(Traditions.size()))];
+        paper = t.paper;
+        for (Color c : t.inks)
+            if (distance2(c, paper) >= MinContrast2) pool.push_back(c);
+    } else {
+        pool = randomPalette(rng, &paper);
+    }
+    // A seeded shuffle, then the order that keeps neighbours apart where the pool allows.
+    for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[rng.below(static_cast<std::uint32_t>(i))]);
+    std::vector<Color> inks;
+    while (!pool.empty() && static_cast<int>(inks.size()) < count) {
+        auto next = pool.begin();
+        if (!inks.empty()) {
+            next = std::find_if(pool.begin(), pool.end(), [&](Color c) { return distance2(c, inks.back()) >= MinContrast2; });
+            if (next == pool.end()) next = pool.begin();
+        }
+        inks.push_back(*next);
+        pool.erase(next);
+    }
+    return inks;
+}
+
+// ---------------------------------------------------------------------------------------
+// The marbler's moves
+
+/// A family's design being made: the ground (initial) and the strokes (operations), every
+/// length in design units of a 1000-unit bath.
+struct Bath {
+    Pcg32& ground;
+    Pcg32& rng;
+    Genome& g;
+
+    double pick(double lo, double hi) { return tenth(rng.uniform(lo, hi)); }
+    int inks() const { return static_cast<int>(g.palette.size()); }
+    glm::dvec3 anywhere(double margin = 0.05) {
+        glm::dvec3 p;
+        for (int i = 0; i < g.dimension; ++i) p[i] = tenth(ground.uniform(-margin, 1.0 + margin) * g.size[i]);
+        if (g.dimension == 2) p.z = 0.0;
+        return p;
+    }
+
+    void drop(const glm::dvec3& at, double radius, int color, Tool tool = Tool::Drop) {
+        Operation op = defaultOperation(tool, g.dimension, at);
+        op.radius = tenth(std::max(1.0, radius));
+        op.color = color;
+        g.initial.push_back(op);
+    }
+
+    /// The stone (battal) ground: each colour in turn, the first in big drops covering the
+    /// bath, every later colour in fewer-or-more but smaller drops (radii `shrink` times the
+    /// colour before), pushing the earlier ones into veined stones.
+    void stone(double firstRadius, double shrink, int firstCount, double growCount = 1.3) {
+        double radius = firstRadius;
+        double count = firstCount;
+        for (int k = 0; k < inks(); ++k) {
+            for (int i = 0; i < static_cast<int>(count); ++i)
+                drop(anywhere(), radius * ground.uniform(0.7, 1.25), k);
+            radius *= shrink;
+            count *= growCount;
+        }
+    }
+
+    /// A bull's-eye: `count` drops one in another at one place, the colours alternating, each
+    /// ring `width` wide. A drop of radius r moves a ring at rho to sqrt(rho^2 + r^2), so for
+    /// rings j w (j = 1..count) the drop that ends up j-th from the centre has radius
+    /// w sqrt(2j - 1): the widest first, the last (innermost) of radius w.
+    void rings(const glm::dvec3& at, int count, double width, int a, int b) {
+        for (int j = count; j >= 1; --j) drop(at, width * std::sqrt(2.0 * j - 1.0), (j % 2) ? a : b);
+    }
+
+    /// A comb drawn across the bath at `angle` (2D), tines `spacing` apart; `offset` shifts the
+    /// tines by that fraction of the spacing.
+    void comb(double angle, double spacing, double alpha, double lambda, double offset = 0.0) {
+        Operation op = defaultOperation(Tool::Comb, 2, 0.5 * g.size);
+        op.angle = angle;
+        op.spacing = tenth(spacing);
+        op.alpha = tenth(alpha);
+        op.lambda = tenth(lambda);
+        // N = (-sin a, cos a): for the four directions of the craft, exact.
+        const glm::dvec3 n = normalOf(angle);
+        op.center = {tenth(op.center.x + n.x * spacing * offset), tenth(op.center.y + n.y * spacing * offset), 0.0};
+        g.operations.push_back(op);
+    }
+
+    /// Gel-git ("come and go"): a comb drawn one way and back the other, the return's tines
+    /// between the first's.
+    void gelGit(double angle, double spacing, double alpha, double lambda) {
+        comb(angle, spacing, alpha, lambda);
+        comb(angle + 180.0, spacing, alpha, lambda, 0.5);
+    }
+
+    void wave(double angle, double amplitude, double wavelength) {
+        Operation op = defaultOperation(Tool::Wave, 2, 0.5 * g.size);
+        op.angle = angle;
+        op.amplitude = {tenth(amplitude), 0.0};
+        op.wavelength = {tenth(wavelength), 1.0};
+        op.phase = {std::round(rng.uniform(0.0, 360.0)), 0.0};
+        g.operations.push_back(op);
+    }
+
+    void vortex(const glm::dvec3& at, double alpha, double lambda, double core) {
+        Operation op = defaultOperation(Tool::Vortex, g.dimension, at);
+        op.alpha = tenth(alpha);
+        op.lambda = tenth(lambda);
+        op.core = tenth(core);
+        g.operations.push_back(op);
+    }
+
+    /// A stretch pass (version 2) across the whole bath at one of the four directions, teeth
+    /// every `spacing` (a little uneven, as a hand-made comb is).
+    void stretch(double angle, double spacing, double shift, double power) {
+        Operation op = defaultOperation(Tool::Stretch, 2, 0.5 * g.size);
+        op.angle = angle;
+        op.shift = tenth(shift);
+        op.power = std::round(power * 100.0) / 100.0;
+        // Origin at the centre, teeth from one edge to the other along N whatever the angle.
+        op.teeth.clear();
+        const double reach = 0.75 * std::max(g.size.x, g.size.y);
+        for (double t = -reach; t <= reach; t += spacing * rng.uniform(0.85, 1.15)) op.teeth.push_back(tenth(t));
+        g.operations.push_back(op);
+    }
+
+    static glm::dvec3 normalOf(double angle) {
+        // The four directions of the craft, without sines (exact and the same everywhere).
+        const int quarter = static_cast<int>(std::round(angle / 90.0)) & 3;
+        switch (quarter) {
+        case 0: return {0.0, 1.0, 0.0};
+        case 1: return {-1.0, 0.0, 0.0};
+        case 2: return {0.0, -1.0, 0.0};
+        default: return {1.0, 0.0, 0.0};
+        }
+    }
+
+    /// One of the bath's two axes, as a marbler turns the tray: 0 (along x) or 90 (along y).
+    double axis() { return rng.chance(0.5) ? 0.0 : 90.0; }
+
+    // 3D
+    void comb3(const glm::dvec3& direction, const glm::dvec3& normal, double spacing, double alpha, double lambda) {
+        Operation op = defaultOperation(Tool::Comb, 3, 0.5 * g.size);
+        op.direction = direction;
+        op.normal = normal;
+        op.spacing = tenth(spacing);
+        op.alpha = tenth(alpha);
+        op.lambda = tenth(lambda);
+        g.operations.push_back(op);
+    }
+    void column(const glm::dvec3& at, const glm::dvec3& axisVector, double radius, int color) {
+        Operation op = defaultOperation(Tool::Cylinder, 3, at);
+        op.axis = axisVector;
+        op.radius = tenth(radius);
+        op.color = color;
+        g.initial.push_back(op);
+    }
+    void wave3(WaveShape shape, double amplitude, double wavelength) {
+        Operation op = defaultOperation(Tool::Wave, 3, 0.5 * g.size);
+        op.shape = shape;
+        op.direction = {1.0, 0.0, 0.0};
+        op.normal = {0.0, rng.chance(0.5) ? 1.0 : 0.0, 0.0};
+        if (op.normal.y == 0.0) op.normal = {0.0, 0.0, 1.0};
+        op.amplitude = {tenth(amplitude), tenth(amplitude * rng.uniform(0.5, 1.0))};
+        op.wavelength = {tenth(wavelength), tenth(wavelength * rng.uniform(0.7, 1.4))};
+        op.phase = {std::round(rng.uniform(0.0, 360.0)), std::round(rng.uniform(0.0, 360.0))};
+        if (shape == WaveShape::Ripple) {
+            // A ripple has one number of each (as a file holds it): the second ones at rest.
+            op.amplitude[1] = 0.0;
+            op.wavelength[1] = 1.0;
+            op.phase[1] = 0.0;
+        }
+        g.operations.push_back(op);
+    }
+};
+
+/// A unit vector along one of the box's axes.
+glm::dvec3 boxAxis(int index) {
+    glm::dvec3 v(0.0);
+    v[index % 3] = 1.0;
+    return v;
+}
+
+// ---------------------------------------------------------------------------------------
+// The recipes (docs/families.md says them in the craft's words)
+
+void stone(Bath& b) { b.stone(b.pick(90, 130), b.rng.uniform(0.6, 0.8), b.ground.between(22, 32)); }
+
+void gelGit(Bath& b) {
+    stone(b);
+    b.gelGit(b.axis(), b.pick(60, 120), b.pick(60, 120), b.pick(10, 25));
+}
+
+void chevron(Bath& b) {
+    stone(b);
+    double along = b.axis();
+    b.gelGit(along, b.pick(45, 80), b.pick(50, 90), b.pick(8, 18));
+    // One wide pass across bends every line of the gel-git into a row of chevrons.
+    b.comb(along + 90.0, b.pick(140, 260), b.pick(120, 220), b.pick(20, 45));
+}
+
+/// The nonpareil: a gel-git, then a fine comb drawn across it. Returns the fine comb's angle.
+double nonpareil(Bath& b) {
+    stone(b);
+    double along = b.axis();
+    b.gelGit(along, b.pick(45, 90), b.pick(50, 90), b.pick(8, 18));
+    double across = along + 90.0;
+    b.comb(across, b.pick(10, 22), b.pick(25, 50), b.pick(4, 9));
+    return across;
+}
+
+void nonpareilOnly(Bath& b) { nonpareil(b); }
+
+void bouquet(Bath& b) {
+    double across = nonpareil(b);
+    // The fine comb's lines drawn into a serpentine: the bouquet's sprays.
+    b.wave(across, b.pick(20, 50), b.pick(90, 220));
+}
+
+void peacock(Bath& b) {
+    double across = nonpareil(b);
+    // A second comb back the other way, wider and between the first's teeth: the eyes.
+    b.comb(across + 180.0, b.pick(40, 80), b.pick(35, 70), b.pick(6, 14), 0.5);
+    if (b.rng.chance(0.5)) b.wave(across, b.pick(10, 30), b.pick(120, 260));
+}
+
+void frenchCurl(Bath& b) {
+    if (b.rng.chance(0.5)) nonpareil(b);
+    else gelGit(b);
+    // Curls on a grid, each turned the other way from its neighbours, with a clean eye.
+    const int n = b.rng.between(3, 5);
+    const double step = 1000.0 / n;
+    const double alpha = b.pick(250, 500), lambda = b.pick(20, 40), core = b.pick(5, 12);
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            double sign = ((i + j) % 2) ? 1.0 : -1.0;
+            b.vortex({tenth((i + 0.5) * step), tenth((j + 0.5) * step), 0.0}, sign * alpha, lambda, core);
+        }
+}
+
+void spanishWave(Bath& b) {
+    stone(b);
+    // The paper rocked as it is laid: bands of ink pushed along, most between the "teeth".
+    double along = b.axis();
+    b.stretch(along, b.pick(35, 70), b.pick(15, 35) * (b.rng.chance(0.5) ? 1 : -1), b.rng.uniform(0.3, 0.6));
+    if (b.rng.chance(0.5)) b.wave(along, b.pick(8, 20), b.pick(200, 400));
+}
+
+void birdsNest(Bath& b) {
+    // A stone ground, then nests: a few drops one in another (two inks alternating), and in
+    // each nest a small curl with a clean eye.
+    b.stone(b.pick(100, 130), b.rng.uniform(0.7, 0.85), b.ground.between(26, 34), 1.0);
+    const int inks = b.inks();
+    const int nests = b.ground.between(8, 14);
+    std::vector<std::pair<glm::dvec3, std::size_t>> centres; // where, and the drops laid after
+    for (int n = 0; n < nests; ++n) {
+        const glm::dvec3 at = b.anywhere(-0.05);
+        const int a = static_cast<int>(b.ground.below(static_cast<std::uint32_t>(inks)));
+        const int c = (a + 1 + static_cast<int>(b.ground.below(static_cast<std::uint32_t>(std::max(1, inks - 1))))) % inks;
+        b.rings(at, b.ground.between(3, 5), b.pick(10, 16), a, c);
+        centres.emplace_back(at, b.g.initial.size());
+    }
+    // Later nests push earlier ones aside: each curl goes where its nest's centre was carried.
+    const std::vector<PreparedOp> ground = prepare(b.g);
+    for (auto [at, after] : centres) {
+        glm::dvec3 p = at;
+        for (std::size_t k = after; k < ground.size(); ++k) p = forwardMap(ground[k], p);
+        b.vortex({tenth(p.x), tenth(p.y), 0.0}, (b.rng.chance(0.5) ? 1.0 : -1.0) * b.pick(150, 350), b.pick(15, 25),
+                 b.pick(2, 5));
+    }
+}
+
+void shawl(Bath& b) {
+    stone(b);
+    double along = b.axis();
+    b.gelGit(along, b.pick(50, 90), b.pick(50, 90), b.pick(8, 16));
+    // The şal's wide comb drawn in long waves across.
+    b.comb(along + 90.0, b.pick(60, 110), b.pick(60, 110), b.pick(10, 20));
+    b.wave(along + 90.0, b.pick(40, 90), b.pick(180, 320));
+}
+
+void tigerEye(Bath& b) {
+    stone(b);
+    // Sprinkled drops that push nothing: the tiger-eye's small bright spots.
+    const int spots = b.ground.between(60, 140);
+    const int ink = b.inks() - 1;
+    for (int i = 0; i < spots; ++i) b.drop(b.anywhere(0.0), b.ground.uniform(3.0, 11.0), ink, Tool::Spray);
+}
+
+void zebra(Bath& b) {
+    // The tray covered with bull's-eyes of a dark and a light ink, ring in ring, then drawn
+    // into stripes by a wide gel-git and a wave.
+    const int dark = 0, light = b.inks() > 1 ? 1 : 0;
+    const int eyes = b.ground.between(4, 6);
+    for (int e = 0; e < eyes; ++e) b.rings(b.anywhere(0.0), b.ground.between(12, 18), b.pick(18, 28), dark, light);
+    double along = b.axis();
+    b.gelGit(along, b.pick(120, 220), b.pick(80, 160), b.pick(20, 40));
+    b.wave(along, b.pick(30, 70), b.pick(200, 400));
+}
+
+void firstPaper(Bath& b) {
+    // The making shown in the first mathematical marbling paper (Lu et al. 2012, fig. 1).
+    stone(b);
+    double s = b.pick(70, 110), alpha = b.pick(50, 90), lambda = b.pick(8, 16);
+    b.comb(180.0, s, alpha, lambda);      // right to left
+    b.comb(0.0, s, alpha, lambda, 0.5);   // and back, the teeth in between
+    b.comb(270.0, s, alpha, lambda);      // the same vertically
+    b.comb(90.0, s, alpha, lambda, 0.5);
+    double fine = b.pick(25, 45);
+    b.comb(180.0, fine, 0.6 * alpha, 0.6 * lambda); // two horizontal passes
+    b.comb(0.0, fine, 0.6 * alpha, 0.6 * lambda, 0.5);
+    b.wave(90.0, b.pick(20, 50), b.pick(150, 350)); // then a wave
+}
+
+// Solid families.
+
+void veined(Bath& b) {
+    // Spheres of ink, big first, then thin 3D combs drawing them into veins.
+    b.stone(b.pick(170, 230), 0.7, b.ground.between(12, 18), 1.2);
+    int a = static_cast<int>(b.rng.below(3));
+    b.comb3(boxAxis(a), boxAxis(a + 1), b.pick(150, 260), b.pick(100, 200), b.pick(5, 15));
+    b.comb3(boxAxis(a + 1), boxAxis(a + 2), b.pick(200, 320), b.pick(60, 140), b.pick(5, 15));
+    b.wave3(WaveShape::Eggcrate, b.pick(30, 70), b.pick(300, 600));
+}
+
+void agate(Bath& b) {
+    // Columns one in another, the colours alternating: the bands of agate, then waved.
+    b.column(0.5 * b.g.size, boxAxis(2), 720.0, 0); // the ground, to the box's corners
+    const int centres = b.ground.between(1, 3);
+    for (int c = 0; c < centres; ++c) {
+        glm::dvec3 at = b.anywhere(-0.15);
+        glm::dvec3 axisVector = boxAxis(static_cast<int>(b.ground.below(3)));
+        const int bands = b.ground.between(6, 12);
+        const double width = b.pick(12, 28);
+        // As Bath::rings: the widest column first, so the bands come out equally wide.
+        for (int k = bands; k >= 1; --k)
+            b.column(at, axisVector, width * std::sqrt(2.0 * k - 1.0), 1 + (k % std::max(1, b.inks() - 1)));
+    }
+    b.wave3(b.rng.chance(0.5) ? WaveShape::Ripple : WaveShape::Eggcrate, b.pick(20, 60), b.pick(200, 450));
+}
+
+void granite(Bath& b) {
+    // A ground of big spheres, then speckles that push nothing, in every ink.
+    b.stone(b.pick(200, 260), 1.0, b.ground.between(10, 14), 1.0);
+    const int specks = b.ground.between(250, 450);
+    for (int i = 0; i < specks; ++i)
+        b.drop(b.anywhere(0.0), b.ground.uniform(8.0, 22.0), static_cast<int>(b.ground.below(static_cast<std::uint32_t>(b.inks()))), Tool::Spray);
+    if (b.rng.chance(0.5)) b.wave3(WaveShape::Eggcrate, b.pick(10, 30), b.pick(300, 600));
+}
+
+struct Recipe {
+    Family family;
+    int inksLo, inksHi;
+    void (*make)(Bath&);
+};
+
+constexpr std::array<Recipe, 16> Recipes{{
+    {{"stone", 2, "battal: drops only, big first, later colours smaller"}, 3, 5, stone},
+    {{"gel-git", 2, "stone combed one way and back (come and go)"}, 3, 4, gelGit},
+    {{"chevron", 2, "gel-git, then one wide comb across: rows of chevrons"}, 3, 4, chevron},
+    {{"nonpareil", 2, "gel-git, then a fine comb across"}, 3, 5, nonpareilOnly},
+    {{"bouquet", 2, "nonpareil drawn into a serpentine wave"}, 3, 5, bouquet},
+    {{"peacock", 2, "nonpareil, then a wider comb back between its teeth"}, 3, 5, peacock},
+    {{"french-curl", 2, "curls on a grid over a nonpareil or gel-git"}, 3, 4, frenchCurl},
+    {{"spanish-wave", 2, "stone rocked into bands (a stretch pass)"}, 3, 4, spanishWave},
+    {{"birds-nest", 2, "bülbül yuvası: a small curl in each drop"}, 2, 4, birdsNest},
+    {{"shawl", 2, "şal: gel-git, then a wide comb in long waves"}, 3, 4, shawl},
+    {{"tiger-eye", 2, "stone sprinkled with small bright spots"}, 3, 4, tigerEye},
+    {{"zebra", 2, "bull's-eyes of two inks combed into stripes"}, 2, 3, zebra},
+    {{"first-paper", 2, "stone, combs both ways across and down, a wave (Lu et al. 2012)"}, 3, 5, firstPaper},
+    {{"veined", 3, "solid: spheres of ink drawn into veins by combs"}, 2, 4, veined},
+    {{"agate", 3, "solid: columns of banded ink, waved"}, 3, 5, agate},
+    {{"granite", 3, "solid: speckles over a ground of spheres"}, 3, 5, granite},
+}};
+
+constexpr std::array<Family, Recipes.size()> familiesOf() {
+    std::array<Family, Recipes.size()> out{};
+    for (std::size_t i = 0; i < Recipes.size(); ++i) out[i] = Recipes[i].family;
+    return out;
+}
+constexpr std::array<Family, Recipes.size()> Families = familiesOf();
+
+} // namespace
+
+std::span<const Family> allFamilies() { return Families; }
+
+const Family* findFamily(std::string_view name) {
+    for (const Family& f : Families)
+        if (f.name == name) return &f;
+    return nullptr;
+}
+
+std::span<const TraditionalPalette> traditionalPalettes() { return Traditions; }
+
+Genome familyGenome(const Family& family, std::uint64_t seed) {
+    const Recipe* recipe = nullptr;
+    for (const Recipe& r : Recipes)
+        if (r.family.name == family.name) recipe = &r;
+    if (!recipe) recipe = &Recipes.front();
+    Genome g;
+    g.dimension = recipe->family.dimension;
+    g.size = {1000.0, 1000.0, 1000.0};
+    Pcg32 paletteRng(seed, PaletteStream);
+    g.palette = familyPalette(paletteRng, paletteRng.between(recipe->inksLo, recipe->inksHi), g.background);
+    Pcg32 ground(seed, GroundStream), strokes(seed, StrokeStream);
+    Bath bath{ground, strokes, g};
+    recipe->make(bath);
+    // Stay within the format's limits whatever the draw.
+    if (g.initial.size() + g.operations.size() > MaxEntries) g.initial.resize(MaxEntries - g.operations.size());
+    g.meta = nlohmann::ordered_json::object();
+    g.meta["name"] = randomName(seed, g);
+    g.meta["seed"] = seed;
+    g.meta["generator"] = FamiliesVersion;
+    g.meta["family"] = std::string(recipe->family.name);
+    return g;
+}
+
+} // namespace marbler
