@@ -1,6 +1,7 @@
 #include "ui/PopulationModel.h"
 
 #include "marbler/Error.h"
+#include "marbler/Families.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "ui/Session.h"
@@ -136,13 +137,30 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     pushGeneration(std::move(next));
 }
 
-void PopulationModel::newRandomPopulation(int dimension) {
+void PopulationModel::newRandomPopulation(int dimension, const std::string& family) {
     Generation next;
-    next.description = dimension == 3 ? tr("New random solid population") : tr("New random population");
+    const Family* only = findFamily(family);
+    if (only && only->dimension != dimension) only = nullptr;
+    if (only)
+        next.description = tr("New %1 population").arg(QString::fromUtf8(only->name.data(), qsizetype(only->name.size())));
+    else
+        next.description = dimension == 3 ? tr("New random solid population") : tr("New random population");
     // Seeded by the index the new generation gets, which the placeholder does not take: the
     // first population and every later one draw from different seeds.
     const std::size_t number = mEmptyStart ? 0 : mHistory.size();
     const std::uint64_t base = mixSeed(mSessionSeed, std::uint64_t(number) * 1000003ULL);
+    // What each cell is drawn from: the family asked for, or the dimension's families and the
+    // free generator (nullptr) in a seeded order, so a mixed grid shows the craft's range.
+    std::vector<const Family*> sources;
+    if (only) {
+        sources.push_back(only);
+    } else {
+        for (const Family& f : allFamilies())
+            if (f.dimension == dimension) sources.push_back(&f);
+        sources.push_back(nullptr);
+        Pcg32 order(base, 0x6d6978666d6c7931ULL);
+        for (std::size_t i = sources.size(); i > 1; --i) std::swap(sources[i - 1], sources[order.below(std::uint32_t(i))]);
+    }
     // A new population is new: no design repeats one of the grid it replaces, or another.
     std::set<std::string> taken;
     for (const auto& c : current().cells)
@@ -151,7 +169,8 @@ void PopulationModel::newRandomPopulation(int dimension) {
     for (int i = 0; i < CellCount; ++i) {
         for (;;) {
             const std::uint64_t seed = mixSeed(base, draw++) & 0xffffffffULL;
-            Genome g = randomGenome(seed, dimension);
+            const Family* source = sources[std::size_t(i) % sources.size()];
+            Genome g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
             if (!taken.insert(genomeId(g)).second && draw < 1000) continue;
             if (!g.meta.contains("seed")) g.meta["seed"] = seed;
             next.cells[std::size_t(i)] = std::move(g);
@@ -479,6 +498,8 @@ LineageInfo lineageOf(const Genome& genome) {
     else
         info.id = QString::fromStdString(genomeId(genome));
     if (meta.contains("name") && meta["name"].is_string()) info.name = QString::fromStdString(meta["name"].get<std::string>());
+    if (meta.contains("family") && meta["family"].is_string())
+        info.family = QString::fromStdString(meta["family"].get<std::string>());
     if (meta.contains("lineage") && meta["lineage"].is_object()) {
         const auto& lineage = meta["lineage"];
         if (lineage.contains("operator") && lineage["operator"].is_string())

@@ -104,8 +104,11 @@ public:
     /// The seed apply() would use for the next generation.
     std::uint64_t nextBreedSeed() const;
 
-    /// Replaces the grid with nine random designs of the dimension (2 or 3).
-    void newRandomPopulation(int dimension);
+    /// Replaces the grid with nine random designs of the dimension (2 or 3): of one pattern
+    /// family (Families.h) when `family` names one of that dimension, else a mix of the
+    /// dimension's families and the free random generator, every cell a different one where
+    /// there are enough.
+    void newRandomPopulation(int dimension, const std::string& family = {});
     /// Where placeDesigns() puts designs.
     enum class Placement {
         /// Into the selected cells first, then empty ones, then over the rest in grid order.
@@ -259,6 +262,7 @@ struct LineageInfo {
     QStringList parents;   ///< parent ids
     int generation = 0;
     QString name;          ///< meta.name when set
+    QString family;        ///< meta.family: the pattern family it was drawn from (Families.h), kept by breeding
     bool varied = false;   ///< a gentle variation of a result already in its generation
 
     /// The name the UI shows: meta.name, else the first 8 characters of the id.

@@ -130,7 +130,7 @@ void WorkbenchWindow::addLineageDesign(QTreeWidgetItem* parent, int generation, 
     auto* item = new QTreeWidgetItem(parent, {tr("Design %1: %2").arg(cell + 1).arg(info.displayName()),
                                               info.madeBy(), parents.join(QStringLiteral(", ")),
                                               info.op.isEmpty() ? QString() : QString::number(info.generation)});
-    item->setToolTip(0, info.id);
+    item->setToolTip(0, info.family.isEmpty() ? info.id : tr("%1\nFamily: %2").arg(info.id, info.family));
     item->setToolTip(2, info.parents.join(QLatin1Char('\n')));
     item->setData(0, LineageGenerationRole, generation);
     item->setData(0, LineageCellRole, cell);

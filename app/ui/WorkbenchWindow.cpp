@@ -1,6 +1,7 @@
 #include "ui/WorkbenchWindow.h"
 
 #include "marbler/Error.h"
+#include "marbler/Families.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/ImageFormats.h"
@@ -39,6 +40,7 @@
 #include <QRandomGenerator>
 #include <QScrollBar>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSlider>
 #include <QStatusBar>
 #include <QTextBrowser>
@@ -345,6 +347,12 @@ void WorkbenchWindow::buildActions() {
     mDimension->addItem(tr("Solid designs"), 3);
     mDimension->setToolTip(tr("What a new random population holds: flat marbling or solid (volume) marbling"));
     bar->addWidget(mDimension);
+    mFamily = new QComboBox(bar);
+    mFamily->setObjectName(QStringLiteral("familyCombo"));
+    mFamily->setToolTip(tr("The pattern family of a new random population, or a mix of the craft's families"));
+    bar->addWidget(mFamily);
+    fillFamilies();
+    connect(mDimension, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::fillFamilies);
     bar->addAction(newRandom);
 
     mMesh = new QComboBox(bar);
@@ -620,6 +628,7 @@ void WorkbenchWindow::readSettings() {
     }
     const int dimension = settings.value(QStringLiteral("population/dimension"), 2).toInt();
     mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
+    setPopulationFamily(settings.value(QStringLiteral("population/family")).toString());
     mStrength->setValue(settings.value(QStringLiteral("breed/strength"), 50).toInt());
     const QString mesh = settings.value(QStringLiteral("view/mesh"), QStringLiteral("vase")).toString();
     if (mMesh->findText(mesh) >= 0) mMesh->setCurrentText(mesh);
@@ -849,11 +858,37 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
     return true;
 }
 
+void WorkbenchWindow::fillFamilies() {
+    const int dimension = mDimension->currentData().toInt();
+    const QString chosen = mFamily->currentData().toString();
+    const QSignalBlocker quiet(mFamily);
+    mFamily->clear();
+    mFamily->addItem(tr("Mixed families"), QString());
+    mFamily->setItemData(0, tr("Every cell a different family of the craft (and some free designs)"), Qt::ToolTipRole);
+    for (const Family& f : allFamilies()) {
+        if (f.dimension != dimension) continue;
+        QString label = QString::fromUtf8(f.name.data(), qsizetype(f.name.size()));
+        label.replace(QLatin1Char('-'), QLatin1Char(' '));
+        label[0] = label[0].toUpper();
+        mFamily->addItem(label, QString::fromUtf8(f.name.data(), qsizetype(f.name.size())));
+        mFamily->setItemData(mFamily->count() - 1, QString::fromUtf8(f.summary.data(), qsizetype(f.summary.size())),
+                             Qt::ToolTipRole);
+    }
+    mFamily->setCurrentIndex(std::max(0, mFamily->findData(chosen)));
+}
+
+void WorkbenchWindow::setPopulationFamily(const QString& family) {
+    mFamily->setCurrentIndex(std::max(0, mFamily->findData(family)));
+}
+
+QString WorkbenchWindow::populationFamily() const { return mFamily->currentData().toString(); }
+
 void WorkbenchWindow::newRandomPopulation(int dimension) {
     QSettings().setValue(QStringLiteral("population/dimension"), dimension);
     mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
+    QSettings().setValue(QStringLiteral("population/family"), populationFamily());
     try {
-        mModel->newRandomPopulation(dimension);
+        mModel->newRandomPopulation(dimension, populationFamily().toStdString());
     } catch (const Error& e) {
         reportError(this, tr("Cannot make a random population"), QString::fromStdString(e.what()));
     }

@@ -110,8 +110,13 @@ public:
     QAction* pasteDesignAction() const { return mPasteDesign; }
     /// Breeds the selected parents with an operator; errors are reported.
     bool applyOperator(GeneticOperator op);
-    /// A fresh random population (2: flat, 3: solid); remembers the choice.
+    /// A fresh random population (2: flat, 3: solid) of the family chosen in the tool bar (or
+    /// mixed families); remembers the choices.
     void newRandomPopulation(int dimension);
+    /// Chooses the family of new populations: a family's name (Families.h), or empty for mixed
+    /// families. A name of the other kind than the kind box's, or no family, chooses the mix.
+    void setPopulationFamily(const QString& family);
+    QString populationFamily() const;
     /// Brings back a saved session: its generations, the current one, the seed, the kind box
     /// and the object.
     void resumeSession(SavedSession session);
@@ -197,6 +202,7 @@ private:
     /// (-1: none).
     int designToCopy() const;
     void buildDocks();
+    void fillFamilies();
     void readSettings();
     void updateCells();
     void updateActions();
@@ -255,6 +261,7 @@ private:
     QAction* mForward = nullptr;
     QSlider* mStrength = nullptr;
     QComboBox* mDimension = nullptr;
+    QComboBox* mFamily = nullptr; ///< the family of new populations, "" for mixed (fillFamilies)
     QComboBox* mMesh = nullptr;
     QListWidget* mFavouritesList = nullptr;
     QTreeWidget* mLineageTree = nullptr;
