@@ -24,12 +24,14 @@
 //   o3 = (U: the distance axis (line, comb, stretch, flow: N; wave: its first axis), 1 for a
 //        radial wave)
 //   o4 = (V: the wave's second axis; flow: (1 / Lx, 1 / Ly, Ly / Lx); else 0,
-//        radius of the circle or sphere (0 for a vortex); flow: 1 for the cavity, 0 for cells)
+//        radius of the circle or sphere (0 for a vortex) or of the ink (drop, spray, cylinder);
+//        flow: 1 for the cavity, 0 for cells)
 //   o5 = push: (r^2 or r^3, -, -, -); line, comb, turn: (alpha lambda, lambda, comb spacing or 0, -);
 //        wave: (amplitude 1, amplitude 2 (0 for one term), 1 / wavelength 1, 1 / wavelength 2);
 //        stretch: (shift, power, first tooth in uTeeth, tooth count);
 //        flow: (step h, steps, speed U, tolerance of the fixed-point iteration)
-//   o6 = (wave phase 1, wave phase 2 (radians), turn: core^2, -)
+//   o6 = (wave phase 1, wave phase 2 (radians), turn: core^2, the nearest stretch or flow at or
+//        before this record (itself for one), -1 if none)
 //
 // Version 2's forms (stretch, flow, a turn's finite core) are compiled in only where a design
 // has them (MARBLER_VERSION2), and the bleed rule only where a design bleeds (MARBLER_BLEED):
@@ -130,89 +132,129 @@ vec3 flowBack(vec3 rel, vec3 m, vec3 n, vec4 k, vec4 q) {
 }
 #endif
 
+// One version-1 form (classes 0 to 4) of the colour rule, operation k: stops the search (true,
+// `color` set) where its ink holds the point, else pulls p back through it. With bleed, an ink
+// that covers the point partly (0 < c < 1) does not stop the search: `blend` gathers c ink and
+// `rest` keeps the share left for what lies beneath (the scalar rule is traceCovers in
+// genome/src/Tools.cpp).
+bool pullBack(int k, inout vec3 p, inout int color, inout vec3 blend, inout float rest) {
+    int b = k * OpVec4s;
+    vec4 o0 = texelFetch(uOps, b);
+    vec4 o1 = texelFetch(uOps, b + 1);
+    vec4 o2 = texelFetch(uOps, b + 2);
+    vec4 o3 = texelFetch(uOps, b + 3);
+    vec4 o4 = texelFetch(uOps, b + 4);
+    vec4 o5 = texelFetch(uOps, b + 5);
+    vec4 o6 = texelFetch(uOps, b + 6);
+    int kind = int(o2.w);
+
+    vec3 rel = p - o0.xyz;
+    vec3 across = rel - dot(rel, o1.xyz) * o1.xyz; // rel itself where nothing is projected out
+    float len2 = dot(across, across);
+#if MARBLER_BLEED
+    // c = clamp(0.5 - e / b) at the edge distance e = rho - r; no ink: 0 (o1.w is -1).
+    float cover = o1.w >= 0.0 ? clamp(0.5 - (sqrt(len2) - o4.w) / uBleed, 0.0, 1.0) : 0.0;
+    if (cover >= 1.0) {
+        color = int(o1.w);
+        return true;
+    }
+    blend += (rest * cover) * uInk[max(int(o1.w), 0)];
+    rest *= 1.0 - cover;
+#else
+    // Open boundary: a point on the rim is outside (o0.w is -1 where the tool lays no ink).
+    if (len2 < o0.w) {
+        color = int(o1.w);
+        return true;
+    }
+#endif
+    float rho = sqrt(len2);
+
+    // Translations and turns: the distance d, the shift alpha lambda / (d + lambda).
+    float t = dot(rel, o3.xyz);
+    float d = kind == 4 ? abs(rho - o4.w) : (o5.z > 0.0 ? combDistance(t, o5.z) : abs(t));
+    float shift = o5.x / (d + o5.y);
+#if MARBLER_VERSION2
+    // theta = l / sqrt(rho^2 + c^2): sqrt(len2 + 0) is rho itself, the version-1 turn.
+    float theta = -shift / sqrt(len2 + o6.z);
+#else
+    float theta = -shift / rho;
+#endif
+    // The two sines: the wave's terms, or the turn's sine and cosine.
+    float y = dot(rel, o4.xyz);
+    float x = o3.w > 0.0 ? sqrt(t * t + y * y) : t;
+    vec2 args = kind == 3 ? vec2(TwoPi * fract(x * o5.z) + o6.x, TwoPi * fract(y * o5.w) + o6.y)
+                          : vec2(theta, theta + HalfPi);
+    vec2 sines = sin(args);
+
+    vec3 moved;
+    if (kind <= 1) {
+        // Drop (area or volume law) and cylinder: the radial push. factor - 1 is computed
+        // without the cancellation of sqrt(1 + s) - 1, which in float would cost most of the
+        // digits far from a drop.
+#if MARBLER_DIMENSION == 3
+        float s = max(-1.0, -o5.x / (kind == 1 ? len2 * rho : len2));
+        float f = kind == 1 ? pow(1.0 + s, 1.0 / 3.0) : sqrt(1.0 + s);
+        float grow = s / (kind == 1 ? f * f + f + 1.0 : f + 1.0);
+#else
+        float s = max(-1.0, -o5.x / len2);
+        float grow = s / (sqrt(1.0 + s) + 1.0);
+#endif
+        moved = len2 > 0.0 ? p + across * grow : p;
+    } else if (kind <= 3) {
+        moved = p - (kind == 3 ? o5.x * sines.x + o5.y * sines.y : shift) * o2.xyz;
+    } else {
+        // Turn about the axis (2D: z) through the centre.
+        vec3 side = rel - dot(rel, o2.xyz) * o2.xyz;
+        vec3 turned = o0.xyz + (rel - side) + side * sines.y + cross(o2.xyz, side) * sines.x;
+        moved = rho > 0.0 ? turned : p;
+    }
+    p = moved;
+    return false;
+}
+
+#if MARBLER_VERSION2
+// A version-2 form (stretch, flow) of operation k: pulls p back through it (these lay no ink).
+vec3 pullBackVersion2(int k, vec3 p) {
+    int b = k * OpVec4s;
+    vec4 o0 = texelFetch(uOps, b);
+    vec4 o2 = texelFetch(uOps, b + 2);
+    vec4 o3 = texelFetch(uOps, b + 3);
+    vec4 o4 = texelFetch(uOps, b + 4);
+    vec4 o5 = texelFetch(uOps, b + 5);
+    vec3 rel = p - o0.xyz;
+    return int(o2.w) == 5 ? p - stretchShift(dot(rel, o3.xyz), o5) * o2.xyz
+                          : o0.xyz + flowBack(rel, o2.xyz, o3.xyz, o4, o5);
+}
+#endif
+
 // The colour rule: back through time until an ink is hit. Returns the palette index or -1; p is
-// left where the point came from (for the source image). With bleed, an ink that covers the
-// point partly (0 < c < 1) does not stop the search: `blend` gathers c ink and `rest` keeps the
-// share left for what lies beneath (the scalar rule is traceCovers in genome/src/Tools.cpp).
+// left where the point came from (for the source image).
 int traceColor(inout vec3 p, inout vec3 blend, inout float rest) {
     int color = -1;
-    for (int k = uOpCount - 1; k >= 0; --k) {
-        int b = k * OpVec4s;
-        vec4 o0 = texelFetch(uOps, b);
-        vec4 o1 = texelFetch(uOps, b + 1);
-        vec4 o2 = texelFetch(uOps, b + 2);
-        vec4 o3 = texelFetch(uOps, b + 3);
-        vec4 o4 = texelFetch(uOps, b + 4);
-        vec4 o5 = texelFetch(uOps, b + 5);
-        vec4 o6 = texelFetch(uOps, b + 6);
-        int kind = int(o2.w);
-
-        vec3 rel = p - o0.xyz;
-        vec3 across = rel - dot(rel, o1.xyz) * o1.xyz; // rel itself where nothing is projected out
-        float len2 = dot(across, across);
-#if MARBLER_BLEED
-        // c = clamp(0.5 - e / b) at the edge distance e = rho - r; no ink: 0 (o1.w is -1).
-        float cover = o1.w >= 0.0 ? clamp(0.5 - (sqrt(len2) - sqrt(max(o0.w, 0.0))) / uBleed, 0.0, 1.0) : 0.0;
-        if (cover >= 1.0) {
-            color = int(o1.w);
-            break;
-        }
-        blend += (rest * cover) * uInk[max(int(o1.w), 0)];
-        rest *= 1.0 - cover;
-#else
-        // Open boundary: a point on the rim is outside (o0.w is -1 where the tool lays no ink).
-        if (len2 < o0.w) {
-            color = int(o1.w);
-            break;
-        }
-#endif
-        float rho = sqrt(len2);
-
-        // Translations and turns: the distance d, the shift alpha lambda / (d + lambda).
-        float t = dot(rel, o3.xyz);
-        float d = kind == 4 ? abs(rho - o4.w) : (o5.z > 0.0 ? combDistance(t, o5.z) : abs(t));
-        float shift = o5.x / (d + o5.y);
 #if MARBLER_VERSION2
-        // theta = l / sqrt(rho^2 + c^2): sqrt(len2 + 0) is rho itself, the version-1 turn.
-        float theta = -shift / sqrt(len2 + o6.z);
-#else
-        float theta = -shift / rho;
-#endif
-        // The two sines: the wave's terms, or the turn's sine and cosine.
-        float y = dot(rel, o4.xyz);
-        float x = o3.w > 0.0 ? sqrt(t * t + y * y) : t;
-        vec2 args = kind == 3 ? vec2(TwoPi * fract(x * o5.z) + o6.x, TwoPi * fract(y * o5.w) + o6.y)
-                              : vec2(theta, theta + HalfPi);
-        vec2 sines = sin(args);
-
-        vec3 moved;
-        if (kind <= 1) {
-            // Drop (area or volume law) and cylinder: the radial push. factor - 1 is computed
-            // without the cancellation of sqrt(1 + s) - 1, which in float would cost most of the
-            // digits far from a drop.
-#if MARBLER_DIMENSION == 3
-            float s = max(-1.0, -o5.x / (kind == 1 ? len2 * rho : len2));
-            float f = kind == 1 ? pow(1.0 + s, 1.0 / 3.0) : sqrt(1.0 + s);
-            float grow = s / (kind == 1 ? f * f + f + 1.0 : f + 1.0);
-#else
-            float s = max(-1.0, -o5.x / len2);
-            float grow = s / (sqrt(1.0 + s) + 1.0);
-#endif
-            moved = len2 > 0.0 ? p + across * grow : p;
-        } else if (kind <= 3) {
-            moved = p - (kind == 3 ? o5.x * sines.x + o5.y * sines.y : shift) * o2.xyz;
-        } else {
-            // Turn about the axis (2D: z) through the centre.
-            vec3 side = rel - dot(rel, o2.xyz) * o2.xyz;
-            vec3 turned = o0.xyz + (rel - side) + side * sines.y + cross(o2.xyz, side) * sines.x;
-            moved = rho > 0.0 ? turned : p;
+    // The stretches and flows cost far more than a version-1 form, and every lane would pay for
+    // them at every operation if one body held them (see "Speed" above). So the version-1 forms
+    // run in runs between them: o6.w of each record is the nearest stretch or flow at or before
+    // it (-1: none), where the run stops and the version-2 body runs once.
+    bool found = false;
+    int k = uOpCount - 1;
+    while (k >= 0 && !found) {
+        int stop = int(texelFetch(uOps, k * OpVec4s + 6).w);
+        for (; k > stop; --k) {
+            if (pullBack(k, p, color, blend, rest)) {
+                found = true;
+                break;
+            }
         }
-#if MARBLER_VERSION2
-        if (kind == 5) moved = p - stretchShift(t, o5) * o2.xyz;
-        if (kind == 6) moved = o0.xyz + flowBack(rel, o2.xyz, o3.xyz, o4, o5);
-#endif
-        p = moved;
+        if (!found && k >= 0) {
+            p = pullBackVersion2(k, p);
+            --k;
+        }
     }
+#else
+    for (int k = uOpCount - 1; k >= 0; --k)
+        if (pullBack(k, p, color, blend, rest)) break;
+#endif
     return color;
 }
 

@@ -137,6 +137,59 @@ TEST_F(GlBleed, SolidSliceMatchesTheScalarRule) {
     }
 }
 
+TEST_F(GlBleed, MeshShadingMatchesTheScalarRule) {
+    // The mesh's shading pass runs the same colour rule at the G-buffer's positions: unlit, one
+    // sample a pixel, each pixel is the scalar rule at its position (cored swirl included).
+    Genome genome;
+    genome.dimension = 3;
+    genome.size = {800, 800, 800};
+    genome.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}};
+    genome.bleed = 40;
+    genome.initial = {drop({300, 420, 500}, 260, 0), drop({520, 380, 560}, 200, 1), drop({430, 520, 620}, 110, 2)};
+    Operation vortex;
+    vortex.tool = Tool::Vortex;
+    vortex.center = {400, 400, 400};
+    vortex.axis = {0, 1, 0};
+    vortex.alpha = 500;
+    vortex.lambda = 60;
+    vortex.core = 50;
+    genome.operations.push_back(vortex);
+    gl::MeshSettings settings;
+    settings.width = 64;
+    settings.height = 64;
+    settings.mesh = "sphere";
+    settings.lighting = false;
+    settings.supersample = 1;
+    const Image actual = test::glRenderer()->renderMesh(genome, settings);
+    const gl::MeshGBuffer buffer = test::glRenderer()->renderMeshGBuffer(genome, settings);
+    const std::vector<PreparedOp> ops = prepare(genome);
+    int off = 0, covered = 0;
+    double partial = 0.0;
+    for (int y = 0; y < settings.height; ++y) {
+        for (int x = 0; x < settings.width; ++x) {
+            // The G-buffer's rows run bottom to top.
+            const float* position = buffer.positions.data() + (std::size_t(settings.height - 1 - y) * settings.width + x) * 4;
+            glm::dvec3 colour = linear(settings.clearColor);
+            if (position[3] > 0.0f) {
+                ++covered;
+                double partlyCovered = 0.0;
+                colour = bleedColour(genome, ops, buffer.reference + glm::dvec3(position[0], position[1], position[2]),
+                                     &partlyCovered);
+                partial += partlyCovered > 0.0 ? 1.0 : 0.0;
+            }
+            const std::uint8_t* got = actual.row(y) + std::size_t(x) * 3;
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(int(got[c]) - int(encodeSrgb8(colour[c]))) > 2) {
+                    ++off;
+                    break;
+                }
+        }
+    }
+    EXPECT_EQ(off, 0) << off << " pixels differ by more than 2 levels";
+    EXPECT_GT(covered, 64 * 64 / 3);
+    EXPECT_GT(partial, 0.05 * covered) << "too few soft-edged pixels to test the rule";
+}
+
 TEST_F(GlBleed, NoBleedIsTheHardRule) {
     // bleed 0 is version 1's hard edge: the same pixels as the scalar rule's single full cover.
     Genome genome;

@@ -16,7 +16,7 @@ static_assert(static_cast<int>(ShaderForm::PushArea) == 0 && static_cast<int>(Sh
 struct Coefficients {
     glm::dvec3 projected{0.0}, direction{0.0}, u{0.0}, v{0.0};
     double radial = 0.0, radius = 0.0;
-    double p5[4] = {0, 0, 0, 0}, p6[4] = {0, 0, 0, 0};
+    double p5[4] = {0, 0, 0, 0}, p6[3] = {0, 0, 0};
 };
 
 /// Line and comb: the shift along M by the distance along N (to the nearest tine of a comb).
@@ -72,7 +72,12 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
     };
     // freq = 2 pi / wavelength; the shader wants cycles per unit to reduce the argument.
     const double cycles = 0.5 / std::numbers::pi;
-    for (const PreparedOp& op : ops) {
+    // The nearest stretch or flow at or before each record: where the shader's run of
+    // version-1 forms stops (tools.glsl, traceColor).
+    int lastVersion2 = -1;
+    for (std::size_t index = 0; index < ops.size(); ++index) {
+        const PreparedOp& op = ops[index];
+        if (op.form == ShaderForm::Stretch || op.form == ShaderForm::Flow) lastVersion2 = int(index);
         const bool flat = op.dimension == 2;
         glm::dvec3 c = op.c - reference;
         if (flat) c.z = 0.0; // 2D points live at z = 0 whatever the reference
@@ -81,10 +86,14 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
         // Every tool, no default: a tool added to the registry without its packing fails the
         // build (-Werror=switch).
         switch (op.tool) {
-        case Tool::Drop: k.p5[0] = op.r2; break;
-        case Tool::Spray: break; // a push of strength 0: moves nothing
+        case Tool::Drop:
+            k.radius = op.r;
+            k.p5[0] = op.r2;
+            break;
+        case Tool::Spray: k.radius = op.r; break; // a push of strength 0: moves nothing
         case Tool::Cylinder:
             k.projected = op.a;
+            k.radius = op.r;
             k.p5[0] = op.r2;
             break;
         case Tool::Line: shiftCoefficients(op, 0.0, k); break;
@@ -128,7 +137,7 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
         put(k.u, k.radial);
         put(k.v, k.radius);
         out.insert(out.end(), {float(k.p5[0]), float(k.p5[1]), float(k.p5[2]), float(k.p5[3])});
-        out.insert(out.end(), {float(k.p6[0]), float(k.p6[1]), float(k.p6[2]), float(k.p6[3])});
+        out.insert(out.end(), {float(k.p6[0]), float(k.p6[1]), float(k.p6[2]), float(lastVersion2)});
     }
     return packed;
 }
