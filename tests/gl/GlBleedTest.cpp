@@ -3,6 +3,8 @@
 // encode, pixel by pixel. Soft edges have no jumps, so every pixel is held to 2 levels.
 
 #include "GlTestUtil.h"
+#include "TestUtil.h"
+#include "marbler/GenomeIO.h"
 #include "marbler/Tools.h"
 
 #include <glm/geometric.hpp>
@@ -126,6 +128,7 @@ TEST_F(GlBleed, SolidSliceMatchesTheScalarRule) {
     sphere.radius = 200;
     sphere.alpha = 90;
     sphere.lambda = 30;
+    sphere.core = 25;
     genome.operations.push_back(sphere);
     RenderSettings settings;
     settings.width = 80;
@@ -188,6 +191,26 @@ TEST_F(GlBleed, MeshShadingMatchesTheScalarRule) {
     EXPECT_EQ(off, 0) << off << " pixels differ by more than 2 levels";
     EXPECT_GT(covered, 64 * 64 / 3);
     EXPECT_GT(partial, 0.05 * covered) << "too few soft-edged pixels to test the rule";
+}
+
+TEST_F(GlBleed, SourceDesignsTakeEveryVariant) {
+    // A source image under the version-2 body and the bleed rule: a stretch that moves nothing
+    // and a bleed far below a pixel change no pixel but those an ink edge passes through.
+    Genome genome = loadGenome(test::dataDir() / "render" / "source-2d.marble.json");
+    RenderSettings settings;
+    settings.width = 120;
+    settings.height = 60;
+    const Image hard = test::glRenderer()->render(genome, settings);
+    Operation still;
+    still.tool = Tool::Stretch;
+    still.teeth = {-5000, 5000};
+    genome.operations.push_back(still);
+    genome.bleed = 1e-6;
+    const Image soft = test::glRenderer()->render(genome, settings);
+    ASSERT_EQ(soft.rgb.size(), hard.rgb.size());
+    std::size_t off = 0;
+    for (std::size_t i = 0; i < hard.rgb.size(); ++i) off += std::abs(int(hard.rgb[i]) - int(soft.rgb[i])) > 2;
+    EXPECT_LE(off, hard.rgb.size() / 500) << off << " channels differ";
 }
 
 TEST_F(GlBleed, NoBleedIsTheHardRule) {
