@@ -12,9 +12,11 @@
 #include "marbler/Tools.h"
 
 #include <OpenImageIO/imageio.h>
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <set>
 
@@ -26,8 +28,109 @@ struct NamedGenome {
     Genome genome;
 };
 
-std::vector<NamedGenome> sampleGenomes() {
+/// A 2D genome of four drops on a 1200 x 800 bath, the start of the version-2 samples.
+Genome dropsOnABath() {
+    Genome genome;
+    genome.dimension = 2;
+    genome.size = {1200, 800, 1000};
+    genome.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}, {0x2e, 0x6e, 0x5e}};
+    const double drops[4][3] = {{300, 400, 180}, {800, 350, 160}, {600, 600, 120}, {620, 210, 100}};
+    for (int k = 0; k < 4; ++k) {
+        Operation drop;
+        drop.tool = Tool::Drop;
+        drop.center = {drops[k][0], drops[k][1], 0.0};
+        drop.radius = drops[k][2];
+        drop.color = k;
+        genome.initial.push_back(drop);
+    }
+    return genome;
+}
+
+Operation swirl(Tool tool, glm::dvec3 centre, double radius, double alpha, double lambda, double core) {
+    Operation op;
+    op.tool = tool;
+    op.center = centre;
+    op.radius = radius;
+    op.alpha = alpha;
+    op.lambda = lambda;
+    op.core = core;
+    return op;
+}
+
+Operation stretch(glm::dvec2 origin, double angle, std::vector<double> teeth, double shift, double power) {
+    Operation op;
+    op.tool = Tool::Stretch;
+    op.center = {origin, 0.0};
+    op.angle = angle;
+    op.teeth = std::move(teeth);
+    op.shift = shift;
+    op.power = power;
+    return op;
+}
+
+Operation flow(FlowField field, glm::dvec2 origin, double angle, glm::dvec2 size, double speed, double time) {
+    Operation op;
+    op.tool = Tool::Flow;
+    op.field = field;
+    op.center = {origin, 0.0};
+    op.angle = angle;
+    op.extent = size;
+    op.speed = speed;
+    op.time = time;
+    op.steps = 1;
+    op.steps = minimumFlowSteps(op) + 3;
+    return op;
+}
+
+/// The version-2 samples: stretch (a few teeth, and hundreds for the shader's search), flow
+/// through cells and a cavity, swirls with finite cores (and one without, which must keep the
+/// version-1 turn where the version-2 forms are compiled in), 2D and 3D.
+std::vector<NamedGenome> version2Genomes() {
     std::vector<NamedGenome> out;
+    Genome stretched = dropsOnABath();
+    stretched.operations.push_back(stretch({0, 800}, 180, {0, 90, 250, 400, 530, 700, 800}, 70, 2.0));
+    std::vector<double> many;
+    for (int k = 0; k <= 300; ++k) many.push_back(-50.0 + 4.3 * k + 1.1 * std::sin(k));
+    stretched.operations.push_back(stretch({1200, 0}, 90, many, -9, 0.5));
+    stretched.operations.push_back(swirl(Tool::Vortex, {420, 380, 0}, 0, 400, 50, 0));
+    out.push_back({"v2-stretch-2d", stretched});
+
+    Genome cells = dropsOnABath();
+    cells.operations.push_back(flow(FlowField::Cells, {40, -30}, 20, {300, 250}, 40, 3));
+    cells.operations.push_back(swirl(Tool::Circle, {600, 400, 0}, 250, 150, 30, 40));
+    out.push_back({"v2-flow-cells-2d", cells});
+
+    Genome cavity = dropsOnABath();
+    cavity.operations.push_back(flow(FlowField::Cavity, {200, 150}, -10, {700, 500}, -100, 4));
+    cavity.operations.push_back(swirl(Tool::Vortex, {350, 420, 0}, 0, 500, 60, 25));
+    out.push_back({"v2-flow-cavity-2d", cavity});
+
+    Genome solid;
+    solid.dimension = 3;
+    solid.size = {800, 800, 800};
+    solid.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}};
+    const double drops[4][4] = {{330, 400, 400, 250}, {480, 380, 420, 170}, {420, 470, 380, 110}, {400, 300, 400, 80}};
+    for (int k = 0; k < 4; ++k) {
+        Operation drop;
+        drop.tool = Tool::Drop;
+        drop.center = {drops[k][0], drops[k][1], drops[k][2]};
+        drop.radius = drops[k][3];
+        drop.color = k % 3;
+        solid.initial.push_back(drop);
+    }
+    Operation tilted = swirl(Tool::Circle, {400, 400, 400}, 150, 200, 40, 60);
+    tilted.axis = glm::normalize(glm::dvec3(1, 2, 2));
+    solid.operations.push_back(tilted);
+    solid.operations.push_back(swirl(Tool::Sphere, {420, 380, 400}, 150, 150, 30, 50));
+    Operation vortex = swirl(Tool::Vortex, {380, 420, 410}, 0, 900, 50, 70);
+    vortex.axis = {0, 1, 0};
+    solid.operations.push_back(vortex);
+    out.push_back({"v2-cored-3d", solid});
+    return out;
+}
+
+std::vector<NamedGenome> sampleGenomes() {
+    std::vector<NamedGenome> out = version2Genomes();
     for (const auto& entry : std::filesystem::directory_iterator(test::dataDir() / "examples"))
         if (entry.path().string().ends_with(".marble.json"))
             out.push_back({entry.path().filename().string(), loadGenome(entry.path())});
@@ -137,6 +240,24 @@ TEST_F(GlVsCpu, EverySampleGenomeWithAndWithoutAntialiasing) {
             }
         }
     }
+}
+
+TEST_F(GlVsCpu, VersionTwoFormsKeepTheVersionOneResult) {
+    // A stretch that moves nothing compiles the version-2 forms in (tools.glsl): the circle and
+    // vortex with core 0 must then turn exactly as the version-1 body turns them.
+    Genome genome = loadGenome(test::dataDir() / "render" / "waves-swirls-2d.marble.json");
+    RenderSettings settings;
+    settings.width = 120;
+    settings.height = 80;
+    settings.aa = "rgss";
+    const Image version1 = test::glRenderer()->render(genome, settings);
+    Operation still;
+    still.tool = Tool::Stretch;
+    still.teeth = {-1000, 1000};
+    still.shift = 0.0;
+    genome.operations.push_back(still);
+    const Image version2 = test::glRenderer()->render(genome, settings);
+    EXPECT_TRUE(version1.rgb == version2.rgb);
 }
 
 TEST_F(GlVsCpu, EveryAntialiasingPattern) {

@@ -245,6 +245,17 @@ struct GBufferTargets {
     }
 };
 
+/// The version-2 switches of a shader variant (tools.glsl): the forms of stretch, flow and a
+/// finite core, and the bleed rule. A design without them runs the version-1 code.
+struct Features {
+    bool version2 = false, bleed = false;
+    int index() const { return (version2 ? 1 : 0) + (bleed ? 2 : 0); }
+};
+
+Features featuresOf(const Genome& genome, const std::vector<PreparedOp>& ops) {
+    return {needsVersion2Forms(ops), genome.bleed > 0.0};
+}
+
 /// Where the camera and the key light are, relative to the design box centre.
 struct MeshView {
     glm::dvec3 reference{0.0}, eye{0.0}, light{0.0};
@@ -255,12 +266,14 @@ struct MeshView {
 struct GlRenderer::Impl {
     ContextParts parts;
     QOpenGLFunctions_4_3_Core* gl = nullptr;
-    GlProgram raster[4]; // by dimension and source image (buildRaster)
+    GlProgram raster[16]; // by dimension, source image and features (buildRaster)
     GlProgram gbuffer;
-    GlProgram mesh;
+    GlProgram mesh[4]; // by features (buildShading)
     GLuint emptyVao = 0;
     GLuint opBuffer = 0;
     GLuint opTexture = 0; // the buffer texture over opBuffer
+    GLuint teethBuffer = 0;
+    GLuint teethTexture = 0; // the buffer texture over teethBuffer
     GLuint sourceTexture = 0;
 
     // The last mesh, kept on the GPU: re-rendering from another angle uploads nothing.
@@ -283,20 +296,23 @@ struct GlRenderer::Impl {
     }
 
     /// The shared shader source with the variant's switches after its #version line: the
-    /// dimension (a flat design never pays for the volume law's cube root) and whether a source
-    /// image is sampled. Four raster variants at most, so compiling them costs nothing per genome.
-    static std::string withDefines(std::string source, int dimension, bool hasSource) {
+    /// dimension (a flat design never pays for the volume law's cube root), whether a source
+    /// image is sampled and the version-2 features. Sixteen raster variants at most, each
+    /// compiled on first use, so compiling costs nothing per genome.
+    static std::string withDefines(std::string source, int dimension, bool hasSource, Features features) {
         std::string defines = "#define MARBLER_DIMENSION " + std::to_string(dimension) + "\n#define MARBLER_HAS_SOURCE "
-            + (hasSource ? "1" : "0") + "\n";
+            + (hasSource ? "1" : "0") + "\n#define MARBLER_VERSION2 " + (features.version2 ? "1" : "0")
+            + "\n#define MARBLER_BLEED " + (features.bleed ? "1" : "0") + "\n";
         source.insert(source.find('\n') + 1, defines);
         return source;
     }
 
-    GlProgram& buildRaster(int dimension, bool hasSource) {
-        GlProgram& program = raster[(dimension == 3 ? 2 : 0) + (hasSource ? 1 : 0)];
+    GlProgram& buildRaster(int dimension, bool hasSource, Features features) {
+        GlProgram& program = raster[(dimension == 3 ? 2 : 0) + (hasSource ? 1 : 0) + 4 * features.index()];
         if (!program.id())
-            program = GlProgram(*gl, "raster", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
-                                                {GL_FRAGMENT_SHADER, withDefines(assembledShader("raster.frag"), dimension, hasSource)}});
+            program = GlProgram(*gl, "raster",
+                                {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
+                                 {GL_FRAGMENT_SHADER, withDefines(assembledShader("raster.frag"), dimension, hasSource, features)}});
         return program;
     }
 
@@ -304,29 +320,46 @@ struct GlRenderer::Impl {
         if (!gbuffer.id())
             gbuffer = GlProgram(*gl, "gbuffer", {{GL_VERTEX_SHADER, assembledShader("gbuffer.vert")},
                                                  {GL_FRAGMENT_SHADER, assembledShader("gbuffer.frag")}});
-        if (!mesh.id())
-            mesh = GlProgram(*gl, "mesh", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
-                                           {GL_FRAGMENT_SHADER, withDefines(assembledShader("mesh.frag"), 3, false)}});
+    }
+
+    /// Pass 2 of a mesh render, the colour rule per sample.
+    GlProgram& buildShading(Features features) {
+        GlProgram& program = mesh[features.index()];
+        if (!program.id())
+            program = GlProgram(*gl, "mesh", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
+                                              {GL_FRAGMENT_SHADER, withDefines(assembledShader("mesh.frag"), 3, false, features)}});
+        return program;
     }
 
     /// The genome's operations relative to `reference` into the storage buffer, and the inks,
     /// into the uniforms of `program` (current).
     void uploadGenome(const GlProgram& program, const std::vector<PreparedOp>& ops, const Genome& genome,
                       const glm::dvec3& reference) {
-        std::vector<float> packed = packOps(ops, reference);
+        PackedOps packedOps = packOps(ops, reference);
+        std::vector<float>& packed = packedOps.records;
+        std::vector<float>& teeth = packedOps.teeth;
         if (packed.empty()) packed.assign(PackedOpFloats, 0.0f); // a bound buffer may not be empty
-        if (packed.size() / 4 > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE)))
+        if (teeth.empty()) teeth.assign(1, 0.0f);
+        if (packed.size() / 4 > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE))
+            || teeth.size() > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE)))
             throw RuntimeFailure("GL: " + std::to_string(ops.size()) + " operations exceed this driver's buffer texture limit");
-        gl->glBindBuffer(GL_TEXTURE_BUFFER, opBuffer);
-        gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(packed.size() * sizeof(float)), packed.data(), GL_STREAM_DRAW);
-        gl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
-        // Unit 3: 0 and 1 hold the mesh G-buffer, 2 the source image.
-        gl->glActiveTexture(GL_TEXTURE3);
-        gl->glBindTexture(GL_TEXTURE_BUFFER, opTexture);
-        gl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, opBuffer);
+        // Unit 3 holds the records and unit 4 the teeth: 0 and 1 hold the mesh G-buffer, 2 the
+        // source image.
+        auto bindBuffer = [this](GLuint buffer, GLuint texture, GLenum unit, GLenum format, const std::vector<float>& data) {
+            gl->glBindBuffer(GL_TEXTURE_BUFFER, buffer);
+            gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STREAM_DRAW);
+            gl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
+            gl->glActiveTexture(unit);
+            gl->glBindTexture(GL_TEXTURE_BUFFER, texture);
+            gl->glTexBuffer(GL_TEXTURE_BUFFER, format, buffer);
+        };
+        bindBuffer(opBuffer, opTexture, GL_TEXTURE3, GL_RGBA32F, packed);
+        bindBuffer(teethBuffer, teethTexture, GL_TEXTURE4, GL_R32F, teeth);
         gl->glActiveTexture(GL_TEXTURE0);
         gl->glUniform1i(program.uniform("uOps"), 3);
+        gl->glUniform1i(program.uniform("uTeeth"), 4);
         gl->glUniform1i(program.uniform("uOpCount"), GLint(ops.size()));
+        gl->glUniform1f(program.uniform("uBleed"), float(genome.bleed));
         std::vector<float> inks(17 * 3, 0.0f);
         for (std::size_t k = 0; k < genome.palette.size() && k < 16; ++k) {
             glm::vec3 c = linearColor(genome.palette[k]);
@@ -435,8 +468,10 @@ struct GlRenderer::Impl {
     void release() {
         for (GlProgram& program : raster) program.release();
         if (opTexture) gl->glDeleteTextures(1, &opTexture);
+        if (teethTexture) gl->glDeleteTextures(1, &teethTexture);
+        if (teethBuffer) gl->glDeleteBuffers(1, &teethBuffer);
         gbuffer.release();
-        mesh.release();
+        for (GlProgram& program : mesh) program.release();
         if (emptyVao) gl->glDeleteVertexArrays(1, &emptyVao);
         if (opBuffer) gl->glDeleteBuffers(1, &opBuffer);
         if (sourceTexture) gl->glDeleteTextures(1, &sourceTexture);
@@ -469,6 +504,8 @@ GlRenderer::GlRenderer()
     mImpl->gl->glGenVertexArrays(1, &mImpl->emptyVao);
     mImpl->gl->glGenBuffers(1, &mImpl->opBuffer);
     mImpl->gl->glGenTextures(1, &mImpl->opTexture);
+    mImpl->gl->glGenBuffers(1, &mImpl->teethBuffer);
+    mImpl->gl->glGenTextures(1, &mImpl->teethTexture);
     registerExitHandler();
     LiveRenderers& live = liveRenderers();
     std::lock_guard lock(live.mutex);
@@ -523,7 +560,7 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
     d.makeCurrent();
     auto* gl = d.gl;
     bool hasSource = genome.dimension == 2 && genome.source.has_value();
-    GlProgram& raster = d.buildRaster(genome.dimension, hasSource);
+    GlProgram& raster = d.buildRaster(genome.dimension, hasSource, featuresOf(genome, ops));
     gl->glUseProgram(raster.id());
 
     std::vector<float> offsets, weights;
@@ -644,24 +681,25 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
         // Pass 2: the colour rule per sample, lit and averaged.
         d.makeTarget(settings.width, settings.height, outputFbo, outputTexture);
         gl->glViewport(0, 0, settings.width, settings.height);
-        gl->glUseProgram(d.mesh.id());
         std::vector<PreparedOp> ops = prepare(genome);
-        d.uploadGenome(d.mesh, ops, genome, view.reference);
+        GlProgram& mesh = d.buildShading(featuresOf(genome, ops));
+        gl->glUseProgram(mesh.id());
+        d.uploadGenome(mesh, ops, genome, view.reference);
         gl->glActiveTexture(GL_TEXTURE0);
         gl->glBindTexture(GL_TEXTURE_2D, targets.textures[0]);
         gl->glActiveTexture(GL_TEXTURE1);
         gl->glBindTexture(GL_TEXTURE_2D, targets.textures[1]);
         gl->glActiveTexture(GL_TEXTURE0);
-        gl->glUniform1i(d.mesh.uniform("uPositions"), 0);
-        gl->glUniform1i(d.mesh.uniform("uNormals"), 1);
-        gl->glUniform1i(d.mesh.uniform("uSource"), 2);
-        gl->glUniform1i(d.mesh.uniform("uSupersample"), n);
+        gl->glUniform1i(mesh.uniform("uPositions"), 0);
+        gl->glUniform1i(mesh.uniform("uNormals"), 1);
+        gl->glUniform1i(mesh.uniform("uSource"), 2);
+        gl->glUniform1i(mesh.uniform("uSupersample"), n);
         glm::vec3 eyeF(view.eye), light(view.light);
-        gl->glUniform3fv(d.mesh.uniform("uEye"), 1, &eyeF.x);
-        gl->glUniform3fv(d.mesh.uniform("uLight"), 1, &light.x);
-        gl->glUniform1i(d.mesh.uniform("uLighting"), settings.lighting ? 1 : 0);
+        gl->glUniform3fv(mesh.uniform("uEye"), 1, &eyeF.x);
+        gl->glUniform3fv(mesh.uniform("uLight"), 1, &light.x);
+        gl->glUniform1i(mesh.uniform("uLighting"), settings.lighting ? 1 : 0);
         glm::vec3 clear = linearColor(settings.clearColor);
-        gl->glUniform3fv(d.mesh.uniform("uClear"), 1, &clear.x);
+        gl->glUniform3fv(mesh.uniform("uClear"), 1, &clear.x);
         gl->glBindVertexArray(d.emptyVao);
         gl->glDrawArrays(GL_TRIANGLES, 0, 3);
 

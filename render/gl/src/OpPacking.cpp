@@ -1,5 +1,6 @@
 #include "OpPacking.h"
 
+#include <algorithm>
 #include <numbers>
 
 namespace marbler::gl {
@@ -8,13 +9,14 @@ namespace {
 // The registry's shader forms are the classes of tools.glsl (its "Record layout").
 static_assert(static_cast<int>(ShaderForm::PushArea) == 0 && static_cast<int>(ShaderForm::PushVolume) == 1
               && static_cast<int>(ShaderForm::Shift) == 2 && static_cast<int>(ShaderForm::WaveShift) == 3
-              && static_cast<int>(ShaderForm::Turn) == 4);
+              && static_cast<int>(ShaderForm::Turn) == 4 && static_cast<int>(ShaderForm::Stretch) == 5
+              && static_cast<int>(ShaderForm::Flow) == 6);
 
 /// One record's coefficients besides its centre, ink and form (see tools.glsl).
 struct Coefficients {
     glm::dvec3 projected{0.0}, direction{0.0}, u{0.0}, v{0.0};
     double radial = 0.0, radius = 0.0;
-    double p5[4] = {0, 0, 0, 0}, p6[2] = {0, 0};
+    double p5[4] = {0, 0, 0, 0}, p6[3] = {0, 0, 0};
 };
 
 /// Line and comb: the shift along M by the distance along N (to the nearest tine of a comb).
@@ -34,12 +36,33 @@ void turnCoefficients(const PreparedOp& op, const glm::dvec3& projected, double 
     k.radius = radius;
     k.p5[0] = op.alphaLambda;
     k.p5[1] = op.lambda;
+    k.p6[2] = op.core2;
+}
+
+/// Flow: the field's axes, reciprocal sizes and kind, the step h (forward; the shader goes
+/// back with -h), the number of steps, the speed and the fixed-point tolerance.
+void flowCoefficients(const PreparedOp& op, Coefficients& k) {
+    k.direction = op.m;
+    k.u = op.n;
+    k.v = glm::dvec3(1.0 / op.size[0], 1.0 / op.size[1], op.size[1] / op.size[0]);
+    k.radius = op.field == FlowField::Cavity ? 1.0 : 0.0;
+    k.p5[0] = op.step;
+    k.p5[1] = op.steps;
+    k.p5[2] = op.speed;
+    k.p5[3] = FlowToleranceShare * (op.size[0] + op.size[1]);
 }
 
 } // namespace
 
-std::vector<float> packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& reference) {
-    std::vector<float> out;
+bool needsVersion2Forms(const std::vector<PreparedOp>& ops) {
+    return std::any_of(ops.begin(), ops.end(), [](const PreparedOp& op) {
+        return op.core2 > 0.0 || op.form == ShaderForm::Stretch || op.form == ShaderForm::Flow;
+    });
+}
+
+PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& reference) {
+    PackedOps packed;
+    std::vector<float>& out = packed.records;
     out.reserve(ops.size() * PackedOpFloats);
     auto put = [&out](const glm::dvec3& v, double w) {
         out.push_back(float(v.x));
@@ -49,7 +72,12 @@ std::vector<float> packOps(const std::vector<PreparedOp>& ops, const glm::dvec3&
     };
     // freq = 2 pi / wavelength; the shader wants cycles per unit to reduce the argument.
     const double cycles = 0.5 / std::numbers::pi;
-    for (const PreparedOp& op : ops) {
+    // The nearest stretch or flow at or before each record: where the shader's run of
+    // version-1 forms stops (tools.glsl, traceColor).
+    int lastVersion2 = -1;
+    for (std::size_t index = 0; index < ops.size(); ++index) {
+        const PreparedOp& op = ops[index];
+        if (op.form == ShaderForm::Stretch || op.form == ShaderForm::Flow) lastVersion2 = int(index);
         const bool flat = op.dimension == 2;
         glm::dvec3 c = op.c - reference;
         if (flat) c.z = 0.0; // 2D points live at z = 0 whatever the reference
@@ -58,10 +86,14 @@ std::vector<float> packOps(const std::vector<PreparedOp>& ops, const glm::dvec3&
         // Every tool, no default: a tool added to the registry without its packing fails the
         // build (-Werror=switch).
         switch (op.tool) {
-        case Tool::Drop: k.p5[0] = op.r2; break;
-        case Tool::Spray: break; // a push of strength 0: moves nothing
+        case Tool::Drop:
+            k.radius = op.r;
+            k.p5[0] = op.r2;
+            break;
+        case Tool::Spray: k.radius = op.r; break; // a push of strength 0: moves nothing
         case Tool::Cylinder:
             k.projected = op.a;
+            k.radius = op.r;
             k.p5[0] = op.r2;
             break;
         case Tool::Line: shiftCoefficients(op, 0.0, k); break;
@@ -87,7 +119,17 @@ std::vector<float> packOps(const std::vector<PreparedOp>& ops, const glm::dvec3&
         case Tool::Sphere: turnCoefficients(op, glm::dvec3(0.0), op.r, k); break;
         case Tool::Vortex: turnCoefficients(op, glm::dvec3(0.0), 0.0, k); break; // d = rho
         case Tool::Stretch:
-        case Tool::Flow: break; // TODO(v2 GL): packed by the GL back end's version-2 forms
+            // Teeth are distances along N from the origin, which the shader measures from the
+            // origin too: they need no reference.
+            k.direction = op.m;
+            k.u = op.n;
+            k.p5[0] = op.shift;
+            k.p5[1] = op.power;
+            k.p5[2] = double(packed.teeth.size());
+            k.p5[3] = double(op.teeth.size());
+            for (double t : op.teeth) packed.teeth.push_back(float(t));
+            break;
+        case Tool::Flow: flowCoefficients(op, k); break;
         }
         put(c, inks ? op.r * op.r : -1.0);
         put(k.projected, inks ? op.color : -1);
@@ -95,9 +137,9 @@ std::vector<float> packOps(const std::vector<PreparedOp>& ops, const glm::dvec3&
         put(k.u, k.radial);
         put(k.v, k.radius);
         out.insert(out.end(), {float(k.p5[0]), float(k.p5[1]), float(k.p5[2]), float(k.p5[3])});
-        out.insert(out.end(), {float(k.p6[0]), float(k.p6[1]), 0.0f, 0.0f});
+        out.insert(out.end(), {float(k.p6[0]), float(k.p6[1]), float(k.p6[2]), float(lastVersion2)});
     }
-    return out;
+    return packed;
 }
 
 } // namespace marbler::gl

@@ -1,6 +1,7 @@
 #pragma once
 /// The genome as shader data: PreparedOp records packed as 7 vec4 (a buffer texture of RGBA32F)
-/// per tool, in the layout tools.glsl documents.
+/// per tool, in the layout tools.glsl documents, and the teeth of every stretch in a second
+/// buffer (R32F), which the records index.
 
 #include "marbler/Tools.h"
 
@@ -13,8 +14,27 @@ namespace marbler::gl {
 /// Floats per packed record.
 inline constexpr int PackedOpFloats = 28;
 
+/// A flow's fixed-point iteration stops when an iterate moves less than this share of Lx + Ly
+/// (or than a few float steps of the point, if more), where the CPU's double iteration stops at
+/// 1e-12 (Lx + Ly) (genome-format.md, flow). 1e-6 is about ten float steps of a point within
+/// one field size of the origin: tighter, float rounding alone would keep the iteration going.
+/// The shader caps the iteration at FlowIterations (tools.glsl): with the format's step bound
+/// each iteration shrinks the error twenty-fold or more, so the cap is met only where rounding,
+/// not the iteration, sets the error.
+inline constexpr double FlowToleranceShare = 1e-6;
+
+/// A packed genome.
+struct PackedOps {
+    std::vector<float> records; ///< PackedOpFloats per operation
+    std::vector<float> teeth;   ///< the teeth of every stretch, one after another
+};
+
 /// Packs `ops` (time order) with every position taken relative to `reference` (in double, before
 /// the cast to float), so the shader keeps float precision near the reference.
-std::vector<float> packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& reference);
+PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& reference);
+
+/// Whether `ops` need the shaders' version-2 forms (MARBLER_VERSION2): a stretch, a flow or a
+/// swirl with a finite core. Designs without them run the version-1 body, which pays for none.
+bool needsVersion2Forms(const std::vector<PreparedOp>& ops);
 
 } // namespace marbler::gl

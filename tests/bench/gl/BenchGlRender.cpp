@@ -1,9 +1,11 @@
 // Frames per second of the GL back end: a 1024x1024 design and a 3x3 grid of 256x256
 // thumbnails (the workbench's breeding view) at 10, 100 and 1000 entries, without and with
-// antialiasing (rgss), and a 512x512 marbled mesh. Every frame ends in glFinish and the
+// antialiasing (rgss), a 1024x1024 design of format version 2 (stretches, a flow, finite cores;
+// with and without bleed), and a 512x512 marbled mesh. Every frame ends in glFinish and the
 // read-back, so a frame is a finished image in memory.
 
 #include "marbler/Genome.h"
+#include "marbler/Params.h"
 #include "marbler/Random.h"
 #include "marbler/gl/GlRenderer.h"
 
@@ -66,6 +68,56 @@ gl::GlRenderer* renderer(benchmark::State& state) {
     return instance.get();
 }
 
+/// makeGenome's design with version 2's tools: every tenth stroke a stretch of 12 teeth, one
+/// stroke a flow through cells (at its fewest steps), every swirl with a finite core.
+Genome makeVersion2Genome(int entries, double bleed) {
+    Genome genome = makeGenome(entries, 2);
+    genome.bleed = bleed;
+    Pcg32 rng(7);
+    for (std::size_t k = 0; k < genome.operations.size(); ++k) {
+        Operation& op = genome.operations[k];
+        if (op.tool == Tool::Vortex || op.tool == Tool::Circle) op.core = rng.uniform(10, 60);
+        if (k % 10 == 3) {
+            op.tool = Tool::Stretch;
+            op.teeth.clear();
+            for (int t = 0; t < 12; ++t) op.teeth.push_back(-800.0 + t * 130.0 + rng.uniform(0, 40));
+            op.shift = rng.uniform(-60, 60);
+            op.power = rng.uniform(0.5, 3.0);
+        }
+    }
+    Operation& flow = genome.operations[genome.operations.size() / 2];
+    flow.tool = Tool::Flow;
+    flow.field = FlowField::Cells;
+    flow.extent = {260, 220};
+    flow.speed = 30;
+    flow.time = 3;
+    flow.steps = minimumFlowSteps(flow);
+    return genome;
+}
+
+void BM_Version2Design1024(benchmark::State& state) {
+    gl::GlRenderer* gl = renderer(state);
+    if (!gl) return;
+    Genome genome = makeVersion2Genome(int(state.range(0)), double(state.range(2)));
+    if (!state.range(1)) {
+        // The version-1 design under the version-2 body: one stretch that moves nothing.
+        genome = makeGenome(int(state.range(0)), 2);
+        genome.bleed = double(state.range(2));
+        Operation still;
+        still.tool = Tool::Stretch;
+        still.teeth = {0.0, 1.0};
+        genome.operations.push_back(still);
+    }
+    RenderSettings settings;
+    settings.width = settings.height = 1024;
+    for (auto _ : state) {
+        Image image = gl->render(genome, settings);
+        gl->finish();
+        benchmark::DoNotOptimize(image.rgb.data());
+    }
+    state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
 const char* aaName(int64_t index) { return index ? "rgss" : "none"; }
 
 void BM_Design1024(benchmark::State& state) {
@@ -117,6 +169,7 @@ void BM_Mesh512(benchmark::State& state) {
 
 BENCHMARK(BM_Design1024)->ArgsProduct({{10, 100, 1000}, {0, 1}})->ArgNames({"ops", "rgss"})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Thumbnails3x3)->ArgsProduct({{10, 100, 1000}, {0, 1}})->ArgNames({"ops", "rgss"})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Version2Design1024)->ArgsProduct({{100}, {0, 1}, {0, 10}})->ArgNames({"ops", "v2tools", "bleed"})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Mesh512)->Arg(100)->ArgName("ops")->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
