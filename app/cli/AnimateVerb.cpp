@@ -5,6 +5,7 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/Growth.h"
+#include "marbler/Video.h"
 
 #include <algorithm>
 #include <atomic>
@@ -80,12 +81,6 @@ private:
     void (*mInt)(int);
     void (*mTerm)(int);
 };
-
-bool isVideoName(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".gif" || ext == ".webp" || ext == ".mp4" || ext == ".webm";
-}
 
 Slice parseSliceOption(const std::string& text) {
     const std::size_t eq = text.find('=');
@@ -183,7 +178,7 @@ int animate(std::span<const std::string> words) {
     std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
     if (!output || output->empty()) throw InputError("-o OUT is required (see marbler animate --help)");
     const std::filesystem::path out(*output);
-    const bool video = isVideoName(out);
+    const bool video = isVideoFile(out);
 
     // Everything the command line can check is checked before the genome is read.
     const double fps = parseDoubleOption(args, "fps", 25.0);
@@ -197,12 +192,11 @@ int animate(std::span<const std::string> words) {
     const bool hasW = args.has("width"), hasH = args.has("height");
     int width = hasW ? parseIntOption(args, "width", 0, 1, MaxImageSide) : 0;
     int height = hasH ? parseIntOption(args, "height", 0, 1, MaxImageSide) : 0;
-    if (video)
-        throw InputError(out.string() + ": video output (.gif, .webp, .mp4, .webm) is not in this build yet; give a "
-                                        "folder for PNG frames");
+    // A video replaces a file at OUT, as `render` does; frames go only into a new or empty folder.
     std::error_code ec;
     if (std::filesystem::exists(out, ec)) {
-        if (!std::filesystem::is_directory(out, ec) || !std::filesystem::is_empty(out, ec))
+        if (video ? std::filesystem::is_directory(out, ec)
+                  : !std::filesystem::is_directory(out, ec) || !std::filesystem::is_empty(out, ec))
             throw InputError(out.string() + ": already exists; OUT must be a new or empty folder, or a .gif, .webp, "
                                             ".mp4 or .webm file");
     }
@@ -237,14 +231,31 @@ int animate(std::span<const std::string> words) {
     FrameProgress progress(showProgress, frames);
     InterruptGuard interrupts;
     const std::size_t steps = stepCount(genome);
-    TemporaryFolder folder(out);
-    for (int frame = 0; frame < frames; ++frame) {
-        const Genome design = designAtGrowth(genome, frameGrowth(steps, frame, frames));
+    auto designOf = [&](int frame) { return designAtGrowth(genome, frameGrowth(steps, frame, frames)); };
+    auto controlOf = [&](int frame) {
         RenderControl control;
         control.cancel = &gInterrupted;
-        control.progress = [&](double f) { progress.update(frame, f); };
+        control.progress = [&progress, frame](double f) { progress.update(frame, f); };
+        return control;
+    };
+    if (video) {
+        // The writer renames its temporary over OUT on finish; destroyed unfinished, it leaves nothing.
+        std::unique_ptr<VideoWriter> writer = openVideoWriter(out, width, height, fps);
+        for (int frame = 0; frame < frames; ++frame) {
+            const RenderControl control = controlOf(frame);
+            const Image image = CpuRenderer(designOf(frame)).render(settings, &control);
+            if (gInterrupted.load()) throw Cancelled();
+            writer->addFrame(image.rgb.data(), std::size_t(width) * 3);
+        }
+        progress.finish();
+        writer->finish();
+        return ExitOk;
+    }
+    TemporaryFolder folder(out);
+    for (int frame = 0; frame < frames; ++frame) {
+        const RenderControl control = controlOf(frame);
         // renderToFile puts the frame's own design into the PNG.
-        renderToFile(design, settings, folder.path() / frameName(frame), {}, &control);
+        renderToFile(designOf(frame), settings, folder.path() / frameName(frame), {}, &control);
         if (gInterrupted.load()) throw Cancelled();
     }
     progress.finish();
