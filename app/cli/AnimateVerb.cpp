@@ -164,6 +164,9 @@ std::string frameName(int frame) {
     return name;
 }
 
+int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
+                  const std::filesystem::path& out, bool video, double fps, int frames, int width, int height);
+
 int animate(std::span<const std::string> words) {
     Args args = parseArgs(words, {"o", "output", "frames", "fps", "width", "height", "aa", "slice", "threads"},
                           {"quiet", "progress", "allow-external-source", "help", "h"});
@@ -177,7 +180,8 @@ int animate(std::span<const std::string> words) {
                                                        std::to_string(args.positional.size()) + ")");
     std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
     if (!output || output->empty()) throw InputError("-o OUT is required (see marbler animate --help)");
-    const std::filesystem::path out(*output);
+    std::filesystem::path out(*output);
+    if (!out.has_filename() && out.has_parent_path()) out = out.parent_path(); // "frames/" is the folder "frames"
     const bool video = isVideoFile(out);
 
     // Everything the command line can check is checked before the genome is read.
@@ -204,6 +208,22 @@ int animate(std::span<const std::string> words) {
     const std::string genomeName = args.positional[0];
     Genome genome = loadGenomeArgument("animate", genomeName);
     genome.allowExternalSource = args.has("allow-external-source");
+    try {
+        return animateGenome(args, genomeName, genome, std::move(settings), out, video, fps, frames, width, height);
+    } catch (const InputError& e) {
+        // One line that names the file: the genome, unless the message names one already.
+        std::string message = e.what();
+        if (message.find('\'') != std::string::npos || message.starts_with(genomeName) ||
+            message.starts_with(out.string()))
+            throw;
+        throw InputError(genomeName + ": " + message);
+    }
+}
+
+int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
+                  const std::filesystem::path& out, bool video, double fps, int frames, int width, int height) {
+    const bool hasW = args.has("width"), hasH = args.has("height");
+    std::error_code ec;
     auto withGenome = [&](const std::string& message) { return InputError(genomeName + ": " + message); };
     if (genome.dimension == 3 && !settings.slice)
         throw withGenome("a solid (3D) genome needs --slice AXIS=VALUE (e.g. z=" +
