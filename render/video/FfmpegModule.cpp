@@ -247,6 +247,13 @@ public:
             if (code != AVERROR_EOF) fail("the palette filter failed: " + errorText(code));
         }
         encode(nullptr);
+        // The GIF muxer times a frame by the next one's stamp and, without this, repeats the
+        // last delay but one for the last frame.
+        if (mGif && mNext > 0)
+            av_opt_set_int(mFormat->priv_data, "final_delay",
+                           av_rescale_q(mNext, mTimeBase, mStream->time_base) -
+                               av_rescale_q(mNext - 1, mTimeBase, mStream->time_base),
+                           0);
         int code = av_write_trailer(mFormat.get());
         if (code < 0) fail(errorText(code));
         code = avio_closep(&mFormat->pb);
@@ -301,7 +308,14 @@ private:
             code = avcodec_receive_packet(mCodec.get(), mPacket.get());
             if (code == AVERROR(EAGAIN) || code == AVERROR_EOF) return;
             if (code < 0) fail("cannot encode a frame: " + errorText(code));
+            // Each frame lasts one tick of 1/fps: its duration in the stream's time base is the
+            // distance to the next frame's stamp there, so a format of coarser ticks (GIF's
+            // hundredths) keeps the rate on average (12 fps: 8, 9, 8, 8, 9, ... hundredths).
+            const std::int64_t pts = mPacket->pts;
             av_packet_rescale_ts(mPacket.get(), mTimeBase, mStream->time_base);
+            if (pts != AV_NOPTS_VALUE)
+                mPacket->duration = av_rescale_q(pts + 1, mTimeBase, mStream->time_base) -
+                                    av_rescale_q(pts, mTimeBase, mStream->time_base);
             mPacket->stream_index = mStream->index;
             code = av_interleaved_write_frame(mFormat.get(), mPacket.get());
             if (code < 0) fail(errorText(code));

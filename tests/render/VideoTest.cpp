@@ -151,6 +151,31 @@ TEST(Video, FrameRateIsKeptExactly) {
     }
 }
 
+/// The delays of a GIF's frames in hundredths of a second, from its graphic control extensions
+/// (0x21 0xf9 0x04, flags, the delay in two bytes little-endian).
+std::vector<int> gifDelays(const std::string& bytes) {
+    std::vector<int> delays;
+    for (std::size_t at = bytes.find("\x21\xf9\x04", 0, 3); at != std::string::npos && at + 6 <= bytes.size();
+         at = bytes.find("\x21\xf9\x04", at + 3, 3))
+        delays.push_back(std::uint8_t(bytes[at + 4]) | std::uint8_t(bytes[at + 5]) << 8);
+    return delays;
+}
+
+TEST(Video, GifKeepsACoarseRateOnAverage) {
+    // GIF counts hundredths of a second: 12 frames a second is 8 1/3 hundredths a frame, written
+    // 8, 9, 8, 8, 9, 8 (50 hundredths for 6 frames, half a second), not 8 each (12.5 a second).
+    const fs::path file = test::outputDir("video-rate-gif") / "twelve.gif";
+    writeFrames(file, 12.0);
+    const std::vector<int> delays = gifDelays(test::readFile(file));
+    ASSERT_EQ(delays.size(), std::size_t(Frames));
+    int total = 0;
+    for (int delay : delays) {
+        EXPECT_TRUE(delay == 8 || delay == 9) << delay;
+        total += delay;
+    }
+    EXPECT_EQ(total, 50);
+}
+
 TEST(Video, OddSizesAreWritten) {
     // H.264 needs even sides in 4:2:0: an odd side is one pixel larger, its last row repeated.
     const fs::path dir = test::outputDir("video-odd");
