@@ -281,7 +281,9 @@ TEST_P(AnimateVideo, HoldsEveryFrameAtTheRateFromBathToDesign) {
         const double own = meanDifference(frames[f], want[f]);
         EXPECT_LT(own, f == 0 ? std::min(bound, 2.0) : bound) << "frame " << f;
         for (std::size_t other = 0; other < 6; ++other)
-            if (other != f) EXPECT_LT(own, meanDifference(frames[f], want[other])) << "frame " << f << " vs " << other;
+            if (other != f) {
+                EXPECT_LT(own, meanDifference(frames[f], want[other])) << "frame " << f << " vs " << other;
+            }
     }
 }
 
