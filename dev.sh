@@ -19,6 +19,9 @@ PACKAGES=(
     libglm-dev nlohmann-json3-dev
     libopenimageio-dev                           # EXR, JPEG and other formats; source images
     libpng-dev libtiff-dev                       # PNG and TIFF, written directly (fast start)
+    libavcodec-dev libavformat-dev libavutil-dev  # videos and animated images (marbler-video.so)
+    libswscale-dev libavfilter-dev               # pixel conversion; the GIF palette filters
+    libwebp-dev                                  # the tests read animated WebP back with libwebpdemux
     libassimp-dev zlib1g-dev                     # mesh files; zlib for assimp's CMake target
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth                                   # a virtual display for the GL and window tests

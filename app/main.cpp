@@ -29,6 +29,8 @@ verbs:
                           a design baked into an object's texture, for other 3D tools
   bake GENOME --slices AXIS --count N -o DIR
                           a solid design as a stack of cross-section images
+  animate GENOME -o OUT   the making of a design: PNG frames, or .gif, .webp, .mp4, .webm
+  video GENOME IN -o OUT  every frame of the video IN marbled, as PNG frames or a video
   doctor                  what this machine gives Marbler: versions, OpenGL, the window's
                           renderer and why, the CPU kernel in use
 
@@ -59,6 +61,8 @@ int main(int argc, char** argv) {
         if (verb == "doctor") return marbler::cli::runDoctor(rest);
         if (verb == "svg") return marbler::cli::runSvg(rest);
         if (verb == "bake") return marbler::cli::runBake(rest);
+        if (verb == "animate") return marbler::cli::runAnimate(rest);
+        if (verb == "video") return marbler::cli::runVideo(rest);
         if (verb == "--help" || verb == "-h" || verb == "help") {
             std::cout << Usage;
             return marbler::cli::ExitOk;

@@ -53,6 +53,8 @@ int runBreed(std::span<const std::string> words);
 int runDoctor(std::span<const std::string> words);
 int runSvg(std::span<const std::string> words);
 int runBake(std::span<const std::string> words);
+int runAnimate(std::span<const std::string> words);
+int runVideo(std::span<const std::string> words);
 
 /// Runs `body`, turning a marbler::InputError into one stderr line and exit 2, and any other
 /// exception into one line and exit 1.

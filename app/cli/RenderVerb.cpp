@@ -5,6 +5,7 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Growth.h"
 #include "marbler/Repeat.h"
 
 #include "WindowModule.h"
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <mutex>
 #include <sstream>
 
@@ -39,6 +41,9 @@ options:
   --region X0,Y0,X1,Y1      the part of the design space to render (default: all of it; for a
                             slice, in the slice's own axes: x-y for z=, x-z for y=, y-z for x=)
   --slice AXIS=VALUE        a cross-section of a solid (3D) genome, e.g. z=500; required in 3D
+  --steps K                 the design after its first K steps (the entries of "initial",
+                            then of "operations"; 0 is the bare bath), from 0 to the number of
+                            steps; the image carries that partial design
   --dpi N                   print resolution written into the file
   --size WxH{cm,mm,in}      print size, e.g. 42x59.4cm; with --dpi it sets the pixel size
   --threads N               worker threads (default: every core)
@@ -156,7 +161,7 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
 int render(std::span<const std::string> words) {
     Args args = parseArgs(words,
                           {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
-                           "supersample", "cut", "threads", "repeat"},
+                           "supersample", "cut", "threads", "repeat", "steps"},
                           {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << Help;
@@ -205,9 +210,17 @@ int render(std::span<const std::string> words) {
             throw InputError("--cut: the plane's normal NX,NY,NZ must not be zero (got '" + *cut + "')");
     }
 
+    const int steps = parseIntOption(args, "steps", -1, 0, std::numeric_limits<int>::max());
+
     const std::string genomeName = args.positional[0];
     Genome genome = loadGenomeArgument("render", genomeName);
     genome.allowExternalSource = args.has("allow-external-source");
+    if (steps >= 0) {
+        if (static_cast<std::size_t>(steps) > stepCount(genome))
+            throw InputError(genomeName + ": --steps: must be between 0 and the design's " +
+                             std::to_string(stepCount(genome)) + " steps (got " + std::to_string(steps) + ")");
+        genome = designAfterSteps(genome, static_cast<std::size_t>(steps));
+    }
 
     try {
         return renderGenome(args, genomeName, genome, settings, exportOptions, printSize, outFile);

@@ -238,6 +238,23 @@ CpuRenderer::CpuRenderer(const Genome& genome) : mImpl(std::make_unique<Impl>())
         mImpl->source = decodeSourceImage(genome);
 }
 
+namespace {
+
+Genome withoutSource(Genome genome) {
+    genome.source.reset();
+    return genome;
+}
+
+} // namespace
+
+CpuRenderer::CpuRenderer(const Genome& genome, LinearRaster source) : CpuRenderer(withoutSource(genome)) {
+    if (source.width < 1 || source.height < 1 ||
+        source.rgb.size() != std::size_t(source.width) * std::size_t(source.height) * 3)
+        throw InputError("a source image of " + std::to_string(source.width) + " x " + std::to_string(source.height) +
+                         " pixels with " + std::to_string(source.rgb.size()) + " values");
+    if (genome.dimension == 2) mImpl->source = std::move(source);
+}
+
 CpuRenderer::~CpuRenderer() = default;
 CpuRenderer::CpuRenderer(CpuRenderer&&) noexcept = default;
 CpuRenderer& CpuRenderer::operator=(CpuRenderer&&) noexcept = default;

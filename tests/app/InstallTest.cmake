@@ -25,7 +25,8 @@ set(desktop "${PREFIX}/share/applications/marbler.desktop")
 set(mime "${PREFIX}/share/mime/packages/marbler.xml")
 set(icon "${PREFIX}/share/icons/hicolor/scalable/apps/marbler.svg")
 foreach(file "${PREFIX}/bin/marbler" "${PREFIX}/lib/marbler/marbler-window.so"
-             "${PREFIX}/lib/marbler/marbler-imageio.so" "${desktop}" "${mime}" "${icon}")
+             "${PREFIX}/lib/marbler/marbler-imageio.so"
+             "${PREFIX}/lib/marbler/marbler-video.so" "${desktop}" "${mime}" "${icon}")
   if(NOT EXISTS "${file}")
     message(FATAL_ERROR "cmake --install did not install ${file}")
   endif()

@@ -32,11 +32,11 @@ test::RunResult runTracingLoads(const std::vector<std::string>& args) {
     return test::runMarbler(args, {{"LD_DEBUG", "files"}});
 }
 
-TEST(Startup, ExecutableLinksNeitherOpenImageIONorQtNorAssimp) {
+TEST(Startup, ExecutableLinksNeitherOpenImageIONorQtNorAssimpNorFFmpeg) {
     const std::string needed = neededLibraries();
     ASSERT_NE(needed.find("(NEEDED)"), std::string::npos) << needed;
     EXPECT_NE(needed.find("libpng16"), std::string::npos) << needed;
-    for (const char* heavy : {"OpenImageIO", "Qt6", "assimp", "libGL"})
+    for (const char* heavy : {"OpenImageIO", "Qt6", "assimp", "libGL", "libavcodec", "libavformat", "libswscale"})
         EXPECT_EQ(needed.find(heavy), std::string::npos) << heavy << " is linked into marbler:\n" << needed;
 }
 
@@ -48,6 +48,7 @@ TEST(Startup, PngAndTiffRendersLoadNoModule) {
         EXPECT_EQ(r.err.find("marbler-imageio.so"), std::string::npos) << name;
         EXPECT_EQ(r.err.find("libOpenImageIO"), std::string::npos) << name;
         EXPECT_EQ(r.err.find("marbler-window.so"), std::string::npos) << name;
+        EXPECT_EQ(r.err.find("marbler-video.so"), std::string::npos) << name;
         EXPECT_TRUE(std::filesystem::exists(dir / name));
     }
     test::RunResult info = runTracingLoads({"info", Example});

@@ -4,6 +4,7 @@
 
 #include "marbler/Genome.h"
 #include "marbler/Sampling.h"
+#include "marbler/SourceDecoder.h"
 
 #include <atomic>
 #include <cstdint>
@@ -30,6 +31,10 @@ class CpuRenderer {
 public:
     /// Throws InputError when the genome's source image cannot be loaded.
     explicit CpuRenderer(const Genome& genome);
+    /// Renders a 2D genome with `source` as its source image instead of the one its `source`
+    /// names (which is not read): a frame of a video, decoded in memory. Throws InputError
+    /// when the raster is empty or its pixels do not match its size.
+    CpuRenderer(const Genome& genome, LinearRaster source);
     ~CpuRenderer();
     CpuRenderer(CpuRenderer&&) noexcept;
     CpuRenderer& operator=(CpuRenderer&&) noexcept;

@@ -7,6 +7,8 @@
 
 #include "marbler/Genome.h"
 
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace marbler {
@@ -22,5 +24,10 @@ struct LinearRaster {
 /// (bad base64 included), too large or cannot be decoded; RuntimeFailure when the image
 /// module cannot be loaded.
 LinearRaster decodeSourceImage(const Genome& genome);
+
+/// An 8-bit sRGB RGB raster (rows top first, `stride` bytes apart) in linear light, exactly as
+/// decodeSourceImage decodes a PNG of the same pixels: for a source that is not a file, such as
+/// a video frame (CpuRenderer's second constructor).
+LinearRaster linearRasterOfSrgb8(const std::uint8_t* rgb, int width, int height, std::size_t stride);
 
 } // namespace marbler

@@ -1,0 +1,300 @@
+// `marbler animate`: the making of a design (genome-format.md, "The making of a design") as a
+// folder of PNG frames or a video (spec/cli.md).
+
+#include "cli/Cli.h"
+#include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
+#include "marbler/Growth.h"
+#include "marbler/Video.h"
+
+#include <algorithm>
+#include <atomic>
+#include <charconv>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace marbler::cli {
+namespace {
+
+constexpr const char* Help = R"(usage: marbler animate GENOME -o OUT [options]
+
+Renders the making of a design: its steps (the entries of "initial", then of "operations") one
+after another, each growing in (an ink's area, a stroke's shift). Frame f of N shows the first
+k f / (N - 1) steps of the design's k, the last one in part: frame 0 is the bare bath, the last
+frame the whole design, equal to `marbler render` at the same size. GENOME is a genome file or a
+PNG or TIFF image Marbler wrote. Nothing is left at OUT unless every frame is written; exit
+status 0 success, 2 bad usage or bad input, 1 any other failure.
+
+OUT is a folder of PNG frames, frame-0000.png, frame-0001.png, ... (made; it may exist only as an
+empty folder), or a video or animated image by its extension: .gif, .webp, .mp4 or .webm. Each
+PNG frame carries the partial design it shows (not the whole one), so opening or rendering a
+frame gives that frame exactly; the last frame carries the whole design.
+
+options:
+  -o, --output OUT          the folder or video file to write (required)
+  --frames N                number of frames, at least 2 (default: 4 seconds at the frame rate)
+  --fps F                   frames a second of a video (default 25)
+  --width W                 width in pixels; alone, the height keeps the design's aspect
+  --height H                height in pixels; alone, the width keeps the design's aspect
+                            (default: 512 pixels on the longer side)
+  --aa MODE                 antialiasing: none (default), rgss, quincunx, grid2..grid8,
+                            checker4, rooks8
+  --slice AXIS=VALUE        the cross-section of a solid (3D) genome to show, e.g. z=500;
+                            required in 3D
+  --threads N               worker threads (default: every core)
+  --allow-external-source   read the genome's source image even where it lies outside the
+                            genome's folder
+  --progress                show progress on stderr even when it is not a terminal
+  --quiet                   no progress line
+  -h, --help                this text
+)";
+
+/// Set by SIGINT and SIGTERM while frames are rendered; the render stops and OUT stays untouched.
+std::atomic<bool> gInterrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void onInterrupt(int) { gInterrupted.store(true); }
+
+/// Catches Ctrl-C (and SIGTERM) for its lifetime, so that the temporary output is removed.
+class InterruptGuard {
+public:
+    InterruptGuard() {
+        gInterrupted.store(false);
+        mInt = std::signal(SIGINT, onInterrupt);
+        mTerm = std::signal(SIGTERM, onInterrupt);
+    }
+    ~InterruptGuard() {
+        std::signal(SIGINT, mInt);
+        std::signal(SIGTERM, mTerm);
+    }
+    InterruptGuard(const InterruptGuard&) = delete;
+    InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+private:
+    void (*mInt)(int);
+    void (*mTerm)(int);
+};
+
+Slice parseSliceOption(const std::string& text) {
+    const std::size_t eq = text.find('=');
+    const std::string axis = eq == std::string::npos ? "" : text.substr(0, eq);
+    Slice slice;
+    if (axis == "x" || axis == "X") slice.axis = 0;
+    else if (axis == "y" || axis == "Y") slice.axis = 1;
+    else if (axis == "z" || axis == "Z") slice.axis = 2;
+    else throw InputError("--slice: '" + text + "' is not AXIS=VALUE with AXIS x, y or z (e.g. z=500)");
+    const std::string number = text.substr(eq + 1);
+    auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), slice.value);
+    if (number.empty() || ec != std::errc() || end != number.data() + number.size() || !std::isfinite(slice.value))
+        throw InputError("--slice: '" + text + "' is not AXIS=VALUE with a number VALUE (e.g. z=500)");
+    return slice;
+}
+
+/// Frame progress on stderr, rewritten in place.
+class FrameProgress {
+public:
+    FrameProgress(bool enabled, int frames) : mEnabled(enabled), mFrames(frames) {}
+    ~FrameProgress() { finish(); }
+    void update(int frame, double within) {
+        if (!mEnabled) return;
+        std::lock_guard lock(mMutex);
+        const int percent = static_cast<int>((frame + within) / mFrames * 100.0);
+        if (frame == mLastFrame && percent == mLastPercent) return;
+        mLastFrame = frame;
+        mLastPercent = percent;
+        std::cerr << "\rframe " << frame + 1 << "/" << mFrames << " (" << percent << "%)   " << std::flush;
+        mShown = true;
+    }
+    void finish() {
+        if (mShown) std::cerr << "\r                              \r" << std::flush;
+        mShown = false;
+    }
+
+private:
+    bool mEnabled;
+    int mFrames;
+    bool mShown = false;
+    int mLastFrame = -1, mLastPercent = -1;
+    std::mutex mMutex;
+};
+
+/// A temporary folder beside OUT, removed unless committed (renamed to OUT).
+class TemporaryFolder {
+public:
+    explicit TemporaryFolder(const std::filesystem::path& out) : mOut(out) {
+        std::filesystem::path parent = out.parent_path();
+        if (parent.empty()) parent = ".";
+        mPath = parent / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
+        std::error_code ec;
+        std::filesystem::remove_all(mPath, ec);
+        if (!std::filesystem::create_directory(mPath, ec) || ec)
+            throw RuntimeFailure("cannot make the folder " + mPath.string() + ": " + ec.message());
+    }
+    ~TemporaryFolder() {
+        if (mCommitted) return;
+        std::error_code ec;
+        std::filesystem::remove_all(mPath, ec);
+    }
+    TemporaryFolder(const TemporaryFolder&) = delete;
+    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+
+    const std::filesystem::path& path() const { return mPath; }
+    void commit() {
+        std::error_code ec;
+        std::filesystem::rename(mPath, mOut, ec); // replaces an empty folder at OUT
+        if (ec) throw RuntimeFailure("cannot rename " + mPath.string() + " to " + mOut.string() + ": " + ec.message());
+        mCommitted = true;
+    }
+
+private:
+    std::filesystem::path mOut, mPath;
+    bool mCommitted = false;
+};
+
+std::string frameName(int frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%04d.png", frame);
+    return name;
+}
+
+int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
+                  const std::filesystem::path& out, bool video, double fps, int frames, int width, int height);
+
+int animate(std::span<const std::string> words) {
+    Args args = parseArgs(words, {"o", "output", "frames", "fps", "width", "height", "aa", "slice", "threads"},
+                          {"quiet", "progress", "allow-external-source", "help", "h"});
+    if (args.has("help") || args.has("h")) {
+        std::cout << Help;
+        return ExitOk;
+    }
+    if (args.positional.size() != 1)
+        throw InputError(args.positional.empty() ? "a genome file is required (see marbler animate --help)"
+                                                 : "exactly one genome file is expected (got " +
+                                                       std::to_string(args.positional.size()) + ")");
+    std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
+    if (!output || output->empty()) throw InputError("-o OUT is required (see marbler animate --help)");
+    std::filesystem::path out(*output);
+    if (!out.has_filename() && out.has_parent_path()) out = out.parent_path(); // "frames/" is the folder "frames"
+    const bool video = isVideoFile(out);
+
+    // Everything the command line can check is checked before the genome is read.
+    const double fps = parseDoubleOption(args, "fps", 25.0);
+    if (!(fps > 0.0) || fps > 1000.0) throw InputError("--fps: must be a number above 0, at most 1000 (got " + *args.get("fps") + ")");
+    const int frames = parseIntOption(args, "frames", std::max(2, static_cast<int>(std::lround(4.0 * fps))), 2, 100000);
+    RenderSettings settings;
+    settings.aa = args.get("aa").value_or("none");
+    aaPattern(settings.aa);
+    settings.threads = parseIntOption(args, "threads", 0, 0, 1024);
+    if (auto slice = args.get("slice")) settings.slice = parseSliceOption(*slice);
+    const bool hasW = args.has("width"), hasH = args.has("height");
+    int width = hasW ? parseIntOption(args, "width", 0, 1, MaxImageSide) : 0;
+    int height = hasH ? parseIntOption(args, "height", 0, 1, MaxImageSide) : 0;
+    // A video replaces a file at OUT, as `render` does; frames go only into a new or empty folder.
+    std::error_code ec;
+    if (std::filesystem::exists(out, ec)) {
+        if (video ? std::filesystem::is_directory(out, ec)
+                  : !std::filesystem::is_directory(out, ec) || !std::filesystem::is_empty(out, ec))
+            throw InputError(out.string() + ": already exists; OUT must be a new or empty folder, or a .gif, .webp, "
+                                            ".mp4 or .webm file");
+    }
+
+    const std::string genomeName = args.positional[0];
+    Genome genome = loadGenomeArgument("animate", genomeName);
+    genome.allowExternalSource = args.has("allow-external-source");
+    try {
+        return animateGenome(args, genomeName, genome, std::move(settings), out, video, fps, frames, width, height);
+    } catch (const InputError& e) {
+        // One line that names the file: the genome, unless the message names one already.
+        std::string message = e.what();
+        if (message.find('\'') != std::string::npos || message.starts_with(genomeName) ||
+            message.starts_with(out.string()))
+            throw;
+        throw InputError(genomeName + ": " + message);
+    }
+}
+
+int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
+                  const std::filesystem::path& out, bool video, double fps, int frames, int width, int height) {
+    const bool hasW = args.has("width"), hasH = args.has("height");
+    std::error_code ec;
+    auto withGenome = [&](const std::string& message) { return InputError(genomeName + ": " + message); };
+    if (genome.dimension == 3 && !settings.slice)
+        throw withGenome("a solid (3D) genome needs --slice AXIS=VALUE (e.g. z=" +
+                         std::to_string(static_cast<int>(genome.size.z / 2)) + ")");
+    if (genome.dimension == 2 && settings.slice) throw withGenome("--slice needs a solid (3D) genome; this one is flat (2D)");
+
+    // Pixel size: as `render`, with 512 pixels on the longer side by default.
+    RenderSettings probe = settings;
+    probe.width = probe.height = 1;
+    checkRenderSettings(genome, probe);
+    const Region region = effectiveRegion(genome, settings);
+    const double aspect = (region.x1 - region.x0) / (region.y1 - region.y0);
+    auto pixels = [](double value) { return static_cast<int>(std::clamp(std::round(value), 1.0, double(MaxImageSide))); };
+    if (hasW && !hasH) height = pixels(width / aspect);
+    if (hasH && !hasW) width = pixels(height * aspect);
+    if (!hasW && !hasH) {
+        width = aspect >= 1.0 ? 512 : pixels(512 * aspect);
+        height = aspect >= 1.0 ? pixels(512 / aspect) : 512;
+    }
+    settings.width = width;
+    settings.height = height;
+    checkRenderSettings(genome, settings);
+
+    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
+    FrameProgress progress(showProgress, frames);
+    InterruptGuard interrupts;
+    const std::size_t steps = stepCount(genome);
+    auto designOf = [&](int frame) { return designAtGrowth(genome, frameGrowth(steps, frame, frames)); };
+    auto controlOf = [&](int frame) {
+        RenderControl control;
+        control.cancel = &gInterrupted;
+        control.progress = [&progress, frame](double f) { progress.update(frame, f); };
+        return control;
+    };
+    if (video) {
+        // The writer renames its temporary over OUT on finish; destroyed unfinished, it leaves nothing.
+        std::unique_ptr<VideoWriter> writer = openVideoWriter(out, width, height, fps);
+        for (int frame = 0; frame < frames; ++frame) {
+            const RenderControl control = controlOf(frame);
+            const Image image = CpuRenderer(designOf(frame)).render(settings, &control);
+            if (gInterrupted.load()) throw Cancelled();
+            writer->addFrame(image.rgb.data(), std::size_t(width) * 3);
+        }
+        progress.finish();
+        writer->finish();
+        return ExitOk;
+    }
+    TemporaryFolder folder(out);
+    for (int frame = 0; frame < frames; ++frame) {
+        const RenderControl control = controlOf(frame);
+        // renderToFile puts the frame's own design into the PNG.
+        renderToFile(designOf(frame), settings, folder.path() / frameName(frame), {}, &control);
+        if (gInterrupted.load()) throw Cancelled();
+    }
+    progress.finish();
+    if (std::filesystem::exists(out, ec)) std::filesystem::remove(out, ec); // an empty folder, checked above
+    folder.commit();
+    return ExitOk;
+}
+
+} // namespace
+
+int runAnimate(std::span<const std::string> words) {
+    return guarded("animate", [&] {
+        try {
+            return animate(words);
+        } catch (const Cancelled&) {
+            std::cerr << "marbler animate: interrupted; nothing written\n";
+            return 130;
+        }
+    });
+}
+
+} // namespace marbler::cli

@@ -1,0 +1,93 @@
+#include "marbler/Growth.h"
+
+#include "marbler/Error.h"
+#include "marbler/Params.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace marbler {
+namespace {
+
+/// How a step grows: the parameter scaled with progress, and whether it is an ink's radius
+/// (scaled so the ink's area or volume grows evenly) or scaled in proportion.
+struct GrowthRule {
+    ParamField field;
+    bool inkRadius;
+};
+
+/// Every tool says how it grows (no default: a new tool fails the build until it does).
+GrowthRule growthRule(Tool tool) {
+    switch (tool) {
+    case Tool::Drop:
+    case Tool::Spray:
+    case Tool::Cylinder: return {ParamField::Radius, true};
+    case Tool::Line:
+    case Tool::Comb:
+    case Tool::Circle:
+    case Tool::Sphere:
+    case Tool::Vortex: return {ParamField::Alpha, false};
+    case Tool::Wave: return {ParamField::Amplitude, false};
+    case Tool::Stretch: return {ParamField::Shift, false};
+    case Tool::Flow: return {ParamField::Time, false};
+    }
+    throw std::logic_error("growthRule: unknown tool");
+}
+
+} // namespace
+
+std::size_t stepCount(const Genome& genome) { return genome.initial.size() + genome.operations.size(); }
+
+Genome designAfterSteps(const Genome& genome, std::size_t steps) {
+    const std::size_t count = stepCount(genome);
+    if (steps > count)
+        throw InputError("the design has " + std::to_string(count) + " steps, so it has no design after " +
+                         std::to_string(steps));
+    Genome design = genome;
+    if (steps <= genome.initial.size()) {
+        design.initial.resize(steps);
+        design.operations.clear();
+    } else {
+        design.operations.resize(steps - genome.initial.size());
+    }
+    return design;
+}
+
+std::optional<Operation> grownOperation(const Operation& op, int dimension, double s) {
+    if (!(s > 0.0)) return std::nullopt;
+    if (s >= 1.0) return op;
+    const GrowthRule rule = growthRule(op.tool);
+    const double factor = !rule.inkRadius ? s : dimension == 3 ? std::cbrt(s) : std::sqrt(s);
+    Operation grown = op;
+    // The registry's row of the parameter knows its components (both amplitudes of an egg-crate).
+    for (const ParamSpec& spec : toolSpec(op.tool).params(dimension)) {
+        if (spec.field != rule.field) continue;
+        for (int i = 0; i < componentCount(spec, grown, dimension); ++i)
+            setComponent(spec, grown, i, getComponent(spec, grown, i) * factor);
+    }
+    return grown;
+}
+
+Genome designAtGrowth(const Genome& genome, double g) {
+    const std::size_t count = stepCount(genome);
+    if (!(g >= 0.0 && g <= static_cast<double>(count)))
+        throw InputError("growth " + std::to_string(g) + " is outside 0 to the design's " + std::to_string(count) +
+                         " steps");
+    const double whole = std::floor(g);
+    const auto steps = static_cast<std::size_t>(whole);
+    Genome design = designAfterSteps(genome, steps);
+    if (steps == count) return design;
+    const bool inInitial = steps < genome.initial.size();
+    const Operation& step = inInitial ? genome.initial[steps] : genome.operations[steps - genome.initial.size()];
+    if (std::optional<Operation> grown = grownOperation(step, genome.dimension, g - whole))
+        (inInitial ? design.initial : design.operations).push_back(*grown);
+    return design;
+}
+
+double frameGrowth(std::size_t steps, int frame, int frames) {
+    if (frames <= 1) return static_cast<double>(steps);
+    return static_cast<double>(steps) * frame / (frames - 1);
+}
+
+} // namespace marbler

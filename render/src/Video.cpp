@@ -1,0 +1,140 @@
+// Video and animated-image files (marbler/Video.h): the formats by extension, the temporary file
+// renamed on finish; FFmpeg itself is in the module marbler-video.so, loaded on first use.
+
+#include "VideoModule.h"
+#include "marbler/Error.h"
+#include "marbler/Modules.h"
+#include "marbler/Sampling.h"
+#include "marbler/SourceDecoder.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <system_error>
+
+#include <unistd.h>
+
+namespace marbler {
+namespace fs = std::filesystem;
+
+namespace detail {
+
+VideoModule& videoModule() {
+    static VideoModule* module = [] {
+        auto entry = reinterpret_cast<VideoModule* (*)()>(moduleEntry(VideoModuleFile, VideoModuleEntry));
+        return entry();
+    }();
+    return *module;
+}
+
+} // namespace detail
+
+namespace {
+
+/// The largest side and the most frames a second a writer accepts.
+constexpr int MaxVideoSide = 16384;
+constexpr double MaxVideoFps = 1000.0;
+
+std::string lowerExtension(const fs::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    return extension;
+}
+
+/// The module's writer on a temporary name beside the target, renamed over the target by
+/// finish(); destroyed unfinished, it leaves nothing behind.
+class AtomicVideoWriter final : public VideoWriter {
+public:
+    AtomicVideoWriter(const fs::path& file, int width, int height, double fps) : mFile(file) {
+        static std::atomic<int> counter{0};
+        mTemp = file.parent_path() / ("." + file.stem().string() + ".part-" + std::to_string(::getpid()) + "-" +
+                                      std::to_string(counter++) + file.extension().string());
+        detail::VideoTarget target{mTemp.string(), lowerExtension(file), file.string(), width, height, fps};
+        try {
+            mWriter = detail::videoModule().openWriter(target);
+        } catch (...) {
+            removeTemp();
+            throw;
+        }
+    }
+
+    ~AtomicVideoWriter() override {
+        mWriter.reset(); // closes the file first
+        if (!mFinished) removeTemp();
+    }
+
+    void addFrame(const std::uint8_t* rgb, std::size_t stride) override {
+        if (!mWriter) throw RuntimeFailure("'" + mFile.string() + "': a frame added after finish()");
+        mWriter->addFrame(rgb, stride);
+    }
+
+    void finish() override {
+        if (!mWriter) throw RuntimeFailure("'" + mFile.string() + "': finished twice");
+        mWriter->finish();
+        mWriter.reset();
+        std::error_code ec;
+        fs::rename(mTemp, mFile, ec);
+        if (ec) throw RuntimeFailure("cannot write '" + mFile.string() + "': " + ec.message());
+        mFinished = true;
+    }
+
+private:
+    void removeTemp() {
+        std::error_code ec;
+        fs::remove(mTemp, ec);
+    }
+
+    fs::path mFile, mTemp;
+    std::unique_ptr<VideoWriter> mWriter;
+    bool mFinished = false;
+};
+
+} // namespace
+
+LinearRaster linearRasterOfSrgb8(const std::uint8_t* rgb, int width, int height, std::size_t stride) {
+    // As the image module decodes an 8-bit file: OpenImageIO converts a byte v to the float
+    // v * (1.0f / 255), which is then sRGB-decoded in double precision.
+    static const std::vector<float> table = [] {
+        std::vector<float> t(256);
+        for (int v = 0; v < 256; ++v)
+            t[std::size_t(v)] = static_cast<float>(srgbToLinear(std::clamp(double(float(v) * (1.0f / 255.0f)), 0.0, 1.0)));
+        return t;
+    }();
+    LinearRaster raster;
+    raster.width = width;
+    raster.height = height;
+    raster.rgb.resize(std::size_t(width) * std::size_t(height) * 3);
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t* row = rgb + std::size_t(y) * stride;
+        float* out = raster.rgb.data() + std::size_t(y) * std::size_t(width) * 3;
+        for (std::size_t i = 0; i < std::size_t(width) * 3; ++i) out[i] = table[row[i]];
+    }
+    return raster;
+}
+
+bool isVideoFile(const fs::path& path) {
+    const std::string extension = lowerExtension(path);
+    return extension == ".gif" || extension == ".webp" || extension == ".mp4" || extension == ".webm";
+}
+
+std::unique_ptr<VideoWriter> openVideoWriter(const fs::path& path, int width, int height, double fps) {
+    if (!isVideoFile(path))
+        throw InputError("'" + path.string() + "': not a video format Marbler writes (use .gif, .webp, .mp4 or .webm)");
+    if (width < 1 || height < 1 || width > MaxVideoSide || height > MaxVideoSide)
+        throw InputError("'" + path.string() + "': a video of " + std::to_string(width) + " x " +
+                         std::to_string(height) + " pixels (each side from 1 to " + std::to_string(MaxVideoSide) + ")");
+    if (!(fps > 0.0) || !(fps <= MaxVideoFps))
+        throw InputError("'" + path.string() + "': a frame rate of " + std::to_string(fps) +
+                         " (it must be above 0 and at most " + std::to_string(static_cast<int>(MaxVideoFps)) + ")");
+    return std::make_unique<AtomicVideoWriter>(path, width, height, fps);
+}
+
+std::unique_ptr<VideoReader> openVideoReader(const fs::path& path) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) throw InputError("'" + path.string() + "': no such file");
+    return detail::videoModule().openReader(path.string(), "'" + path.string() + "'");
+}
+
+} // namespace marbler
