@@ -12,7 +12,11 @@
 namespace marbler {
 
 /// Writes frames to a video or animated image, the format chosen by the file's extension:
-/// `.gif`, `.webp`, `.mp4` or `.webm`.
+/// `.gif` (one 256-colour palette made from every frame, ordered dithering; the frames are held
+/// until finish() makes it), `.webp` (animated, lossy at quality 90), `.mp4` (H.264, 4:2:0: an
+/// odd width or height is encoded one pixel larger, the last column or row repeated) or `.webm`
+/// (VP9). Frame k is shown at k / fps seconds exactly (GIF, which counts hundredths, keeps the
+/// rate on average).
 class VideoWriter {
 public:
     virtual ~VideoWriter() = default;
