@@ -29,6 +29,7 @@ verbs:
                           a design baked into an object's texture, for other 3D tools
   bake GENOME --slices AXIS --count N -o DIR
                           a solid design as a stack of cross-section images
+  paper --seed N -o OUT   a marbled paper in one command, its genome beside it
   doctor                  what this machine gives Marbler: versions, OpenGL, the window's
                           renderer and why, the CPU kernel in use
 
@@ -59,6 +60,7 @@ int main(int argc, char** argv) {
         if (verb == "doctor") return marbler::cli::runDoctor(rest);
         if (verb == "svg") return marbler::cli::runSvg(rest);
         if (verb == "bake") return marbler::cli::runBake(rest);
+        if (verb == "paper") return marbler::cli::runPaper(rest);
         if (verb == "--help" || verb == "-h" || verb == "help") {
             std::cout << Usage;
             return marbler::cli::ExitOk;
