@@ -4,6 +4,7 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/ImageFormats.h"
+#include "marbler/Paper.h"
 #include "ui/DesignCell.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
@@ -244,6 +245,11 @@ void WorkbenchWindow::buildActions() {
     newRandom->setShortcut(QKeySequence::New);
     newRandom->setIconText(tr("New random"));
     newRandom->setToolTip(tr("Nine new random designs of the kind chosen beside (Ctrl+N)"));
+    QAction* newPaperAction = fileMenu->addAction(tr("New marbled &paper"), this, [this] {
+        newPaper(QRandomGenerator::global()->generate64());
+    });
+    newPaperAction->setObjectName(QStringLiteral("newPaperAction"));
+    newPaperAction->setStatusTip(tr("A procedural marbled paper (as marbler paper makes) into the grid, to breed from"));
     fileMenu->addSeparator();
     mSessionsAction = fileMenu->addAction(tr("&Sessions…"), this, [this] { openSessionsDialog(); });
     mSessionsAction->setStatusTip(tr("Every breeding session is kept: resume, rename or delete one"));
@@ -1011,6 +1017,12 @@ bool WorkbenchWindow::copyDesign(int cell) {
                                  .arg(info.name.isEmpty() ? tr("design %1").arg(cell + 1) : info.name),
                              5000);
     return true;
+}
+
+std::vector<int> WorkbenchWindow::newPaper(std::uint64_t seed) {
+    const Genome paper = paperGenome(seed, PaperOptions{});
+    const QString name = QString::fromStdString(paper.meta.value("name", std::string()));
+    return placeOpened({paper}, {name}, -1, tr("Marbled paper %1 (seed %2)").arg(name).arg(seed));
 }
 
 bool WorkbenchWindow::pasteDesign() {
