@@ -3,6 +3,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Paper.h"
+#include "marbler/Tools.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -123,6 +124,30 @@ TEST(PaperGenome, PassesGoBothWaysAlongBothAxes) {
     EXPECT_GT(alongY, 10);
     EXPECT_GT(positive, 10);
     EXPECT_GT(negative, 10);
+}
+
+TEST(PaperGenome, EveryPassCombsTheWholeSheet) {
+    // The sign of the stretch's normal decides which side of the origin its teeth lie on: a
+    // pass from the wrong edge would move nothing on the sheet. Through the reference map,
+    // every point of the sheet off a tooth moves, along the pass's axis only.
+    const double w = 148, h = 210;
+    for (std::uint64_t seed = 0; seed < 6; ++seed) {
+        Genome g = paperGenome(seed, sheet(w, h, 3, 4));
+        for (const Operation& op : g.operations) {
+            PreparedOp prepared = prepare(op, 2);
+            int moved = 0, total = 0;
+            for (double x = 0.5; x < w; x += 3.0)
+                for (double y = 0.5; y < h; y += 3.0) {
+                    glm::dvec3 p(x, y, 0.0);
+                    glm::dvec3 q = forwardMap(prepared, p);
+                    ++total;
+                    if (glm::length(q - p) > 1e-6) ++moved;
+                    // Along x the shift is horizontal, along y vertical.
+                    EXPECT_NEAR(op.angle == 0.0 ? q.y : q.x, op.angle == 0.0 ? y : x, 1e-9);
+                }
+            EXPECT_GE(moved, total - total / 50) << "seed " << seed << ", angle " << op.angle;
+        }
+    }
 }
 
 TEST(PaperGenome, DropCentresOfOneColourKeepThePoissonDiskDistance) {
