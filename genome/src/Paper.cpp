@@ -55,8 +55,8 @@ double paperSpacing(double width, double height, int colors) {
     // distance) nor the same number (a distance proportional to the sheet).
     double area = width * height;
     double spacing = A4Spacing * std::sqrt(std::sqrt(area / A4Area));
-    // A Poisson-disk sample holds at most about 0.7 points per d^2; keep every colour's
-    // layer well within its share of the format's entries.
+    // A Poisson-disk sample holds about 0.7 points per d^2; at 0.4 per d^2 of the sheet a
+    // colour's layer, margin included, stays well within its share of the format's entries.
     double perColour = static_cast<double>(MaxEntries - MaxPaperPasses) / std::max(colors, 1);
     return std::max(spacing, std::sqrt(area / (0.4 * perColour)));
 }
