@@ -31,6 +31,7 @@ verbs:
                           a solid design as a stack of cross-section images
   animate GENOME -o OUT   the making of a design: PNG frames, or .gif, .webp, .mp4, .webm
   video GENOME IN -o OUT  every frame of the video IN marbled, as PNG frames or a video
+  paper --seed N -o OUT   a marbled paper in one command, its genome beside it
   doctor                  what this machine gives Marbler: versions, OpenGL, the window's
                           renderer and why, the CPU kernel in use
 
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
         if (verb == "bake") return marbler::cli::runBake(rest);
         if (verb == "animate") return marbler::cli::runAnimate(rest);
         if (verb == "video") return marbler::cli::runVideo(rest);
+        if (verb == "paper") return marbler::cli::runPaper(rest);
         if (verb == "--help" || verb == "-h" || verb == "help") {
             std::cout << Usage;
             return marbler::cli::ExitOk;

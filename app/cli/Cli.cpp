@@ -2,7 +2,9 @@
 
 #include "marbler/Error.h"
 #include "marbler/GenomeImage.h"
+#include "marbler/Sampling.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -87,6 +89,58 @@ std::uint64_t parseSeedOption(const Args& args, const std::string& name) {
     if (ec != std::errc() || end != text->data() + text->size())
         throw InputError("--" + name + ": not a non-negative integer: '" + *text + "'");
     return value;
+}
+
+double parseDpiOption(const Args& args, double fallback) {
+    if (!args.has("dpi")) return fallback;
+    double dpi = parseDoubleOption(args, "dpi", 0.0);
+    if (!(dpi > 0.0) || dpi > 1e6) throw InputError("--dpi: must be a positive number (got " + *args.get("dpi") + ")");
+    return dpi;
+}
+
+std::vector<double> parseNumberList(const std::string& option, const std::string& text, std::size_t count) {
+    std::vector<double> values;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t comma = text.find(',', start);
+        std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        double value = 0;
+        auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+        if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value))
+            throw InputError("--" + option + ": '" + text + "' is not " + std::to_string(count) +
+                             " numbers separated by commas");
+        values.push_back(value);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    if (values.size() != count)
+        throw InputError("--" + option + ": '" + text + "' is not " + std::to_string(count) +
+                         " numbers separated by commas");
+    return values;
+}
+
+std::pair<double, double> parsePrintSize(const std::string& text) {
+    auto bad = [&] { return InputError("--size: '" + text + "' is not WIDTHxHEIGHT with a unit cm, mm or in (e.g. 42x59.4cm)"); };
+    if (text.size() < 3) throw bad();
+    std::string unit = text.substr(text.size() - 2);
+    double perInch = unit == "cm" ? 2.54 : unit == "mm" ? 25.4 : unit == "in" ? 1.0 : 0.0;
+    if (perInch == 0.0) throw bad();
+    std::string numbers = text.substr(0, text.size() - 2);
+    std::size_t x = numbers.find_first_of("xX");
+    if (x == std::string::npos) throw bad();
+    std::vector<double> w = parseNumberList("size", numbers.substr(0, x), 1);
+    std::vector<double> h = parseNumberList("size", numbers.substr(x + 1), 1);
+    if (!(w[0] > 0.0) || !(h[0] > 0.0)) throw InputError("--size: width and height must be > 0 (got '" + text + "')");
+    return {w[0] / perInch, h[0] / perInch};
+}
+
+int pixelsOf(double value, const std::string& what) {
+    double rounded = std::round(value);
+    if (!(rounded >= 1.0)) throw InputError(what + " comes to less than one pixel");
+    if (rounded > MaxImageSide)
+        throw InputError(what + " comes to " + std::to_string(static_cast<long long>(std::min(rounded, 1e18))) +
+                         " pixels, more than the largest side of " + std::to_string(MaxImageSide));
+    return static_cast<int>(rounded);
 }
 
 Genome loadGenomeArgument(const char* verb, const std::string& file) {

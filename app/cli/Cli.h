@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace marbler::cli {
@@ -39,6 +40,15 @@ Args parseArgs(std::span<const std::string> words, const std::vector<std::string
 int parseIntOption(const Args& args, const std::string& name, int fallback, int lo, int hi);
 double parseDoubleOption(const Args& args, const std::string& name, double fallback);
 std::uint64_t parseSeedOption(const Args& args, const std::string& name);
+/// `--dpi`: a positive number up to 1e6, or `fallback` when the option is absent.
+double parseDpiOption(const Args& args, double fallback);
+/// `count` numbers separated by commas, the value of `--option`.
+std::vector<double> parseNumberList(const std::string& option, const std::string& text, std::size_t count);
+/// A print size `--size WIDTHxHEIGHT{cm,mm,in}`, in inches.
+std::pair<double, double> parsePrintSize(const std::string& text);
+/// Pixels from a length in pixels, refusing what cannot be an image before any allocation;
+/// `what` names the length in the message.
+int pixelsOf(double value, const std::string& what);
 
 /// Loads the GENOME argument of a verb: a genome file, or a PNG or TIFF image that carries one
 /// (marbler::loadDesign; the one place the verbs read genomes). Warnings go to stderr as
@@ -55,6 +65,7 @@ int runSvg(std::span<const std::string> words);
 int runBake(std::span<const std::string> words);
 int runAnimate(std::span<const std::string> words);
 int runVideo(std::span<const std::string> words);
+int runPaper(std::span<const std::string> words);
 
 /// Runs `body`, turning a marbler::InputError into one stderr line and exit 2, and any other
 /// exception into one line and exit 1.

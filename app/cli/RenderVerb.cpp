@@ -69,27 +69,6 @@ options:
   -h, --help                this text
 )";
 
-std::vector<double> parseNumberList(const std::string& option, const std::string& text, std::size_t count) {
-    std::vector<double> values;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t comma = text.find(',', start);
-        std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        double value = 0;
-        auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
-        if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value))
-            throw InputError("--" + option + ": '" + text + "' is not " + std::to_string(count) +
-                             " numbers separated by commas");
-        values.push_back(value);
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
-    if (values.size() != count)
-        throw InputError("--" + option + ": '" + text + "' is not " + std::to_string(count) +
-                         " numbers separated by commas");
-    return values;
-}
-
 Slice parseSlice(const std::string& text) {
     std::size_t eq = text.find('=');
     std::string axis = eq == std::string::npos ? "" : text.substr(0, eq);
@@ -100,32 +79,6 @@ Slice parseSlice(const std::string& text) {
     else throw InputError("--slice: '" + text + "' is not AXIS=VALUE with AXIS x, y or z (e.g. z=500)");
     slice.value = parseNumberList("slice", text.substr(eq + 1), 1)[0];
     return slice;
-}
-
-/// A print size in inches: "WxH" followed by cm, mm or in.
-std::pair<double, double> parsePrintSize(const std::string& text) {
-    auto bad = [&] { return InputError("--size: '" + text + "' is not WIDTHxHEIGHT with a unit cm, mm or in (e.g. 42x59.4cm)"); };
-    if (text.size() < 3) throw bad();
-    std::string unit = text.substr(text.size() - 2);
-    double perInch = unit == "cm" ? 2.54 : unit == "mm" ? 25.4 : unit == "in" ? 1.0 : 0.0;
-    if (perInch == 0.0) throw bad();
-    std::string numbers = text.substr(0, text.size() - 2);
-    std::size_t x = numbers.find_first_of("xX");
-    if (x == std::string::npos) throw bad();
-    std::vector<double> w = parseNumberList("size", numbers.substr(0, x), 1);
-    std::vector<double> h = parseNumberList("size", numbers.substr(x + 1), 1);
-    if (!(w[0] > 0.0) || !(h[0] > 0.0)) throw InputError("--size: width and height must be > 0 (got '" + text + "')");
-    return {w[0] / perInch, h[0] / perInch};
-}
-
-/// Pixels from a length and a ratio, refusing what cannot be an image before any allocation.
-int pixelsOf(double value, const std::string& what) {
-    double rounded = std::round(value);
-    if (!(rounded >= 1.0)) throw InputError(what + " comes to less than one pixel");
-    if (rounded > MaxImageSide)
-        throw InputError(what + " comes to " + std::to_string(static_cast<long long>(std::min(rounded, 1e18))) +
-                         " pixels, more than the largest side of " + std::to_string(MaxImageSide));
-    return static_cast<int>(rounded);
 }
 
 /// One progress line on stderr, rewritten in place.
@@ -186,11 +139,7 @@ int render(std::span<const std::string> words) {
     }
     if (auto slice = args.get("slice")) settings.slice = parseSlice(*slice);
     ExportOptions exportOptions;
-    if (args.has("dpi")) {
-        double dpi = parseDoubleOption(args, "dpi", 0.0);
-        if (!(dpi > 0.0) || dpi > 1e6) throw InputError("--dpi: must be a positive number (got " + *args.get("dpi") + ")");
-        exportOptions.dpi = dpi;
-    }
+    if (args.has("dpi")) exportOptions.dpi = parseDpiOption(args, 0.0);
     std::optional<std::pair<double, double>> printSize;
     if (auto size = args.get("size")) {
         printSize = parsePrintSize(*size);

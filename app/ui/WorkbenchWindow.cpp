@@ -5,6 +5,7 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/ImageFormats.h"
+#include "marbler/Paper.h"
 #include "ui/DesignCell.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
@@ -250,6 +251,11 @@ void WorkbenchWindow::buildActions() {
     picture->setObjectName(QStringLiteral("marblePictureAction"));
     picture->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
     picture->setStatusTip(tr("Nine flat designs whose bath is a picture you pick: flows and strokes carry its colours"));
+    QAction* newPaperAction = fileMenu->addAction(tr("New marbled &paper"), this, [this] {
+        newPaper(QRandomGenerator::global()->generate64());
+    });
+    newPaperAction->setObjectName(QStringLiteral("newPaperAction"));
+    newPaperAction->setStatusTip(tr("A procedural marbled paper (as marbler paper makes) into the grid, to breed from"));
     fileMenu->addSeparator();
     mSessionsAction = fileMenu->addAction(tr("&Sessions…"), this, [this] { openSessionsDialog(); });
     mSessionsAction->setStatusTip(tr("Every breeding session is kept: resume, rename or delete one"));
@@ -1050,6 +1056,12 @@ bool WorkbenchWindow::copyDesign(int cell) {
                                  .arg(info.name.isEmpty() ? tr("design %1").arg(cell + 1) : info.name),
                              5000);
     return true;
+}
+
+std::vector<int> WorkbenchWindow::newPaper(std::uint64_t seed) {
+    const Genome paper = paperGenome(seed, PaperOptions{});
+    const QString name = QString::fromStdString(paper.meta.value("name", std::string()));
+    return placeOpened({paper}, {name}, -1, tr("Marbled paper %1 (seed %2)").arg(name).arg(seed));
 }
 
 bool WorkbenchWindow::pasteDesign() {

@@ -97,6 +97,10 @@ public:
     std::vector<int> marblePicture(const QString& file);
     std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1,
                                  const QString& description = {});
+    /// File ▸ New marbled paper: the A4 paper `marbler paper --seed SEED` makes (Paper.h) goes
+    /// into the grid as an opened design does (placeOpened), a starting point to breed from.
+    /// Returns the cells filled. The menu's action (object name "newPaperAction") draws a seed.
+    std::vector<int> newPaper(std::uint64_t seed);
     /// Edit ▸ Copy design (Ctrl+C): puts a cell's genome on the clipboard as genome text; -1:
     /// the focused cell when it holds a design, else the first selected one. Says so on the
     /// status bar; false when there is no design to copy.

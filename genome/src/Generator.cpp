@@ -603,4 +603,6 @@ Genome randomGenome(std::uint64_t seed, int dimension) {
     return g;
 }
 
+Color colorFromHsl(double hue, double saturation, double lightness) { return toColor({hue, saturation, lightness}); }
+
 } // namespace marbler

@@ -1,0 +1,96 @@
+// `marbler paper`: a procedural marbled paper in one command (spec/cli.md, marbler/Paper.h).
+
+#include "cli/Cli.h"
+
+#include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Paper.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <system_error>
+
+namespace marbler::cli {
+namespace {
+
+constexpr const char* Help = R"(usage: marbler paper [options] --seed N -o OUT
+
+Makes a marbled paper: layers of ink drops at Poisson-disk spaced points, one colour each and
+smaller for each later colour, combed by a few stretch passes along the sheet, each weaker
+than the one before, with a slight bleed. Writes the image OUT (its format by extension, the
+print resolution in the file, the genome inside PNG and TIFF) and the genome beside it as
+OUT's name with .marble.json. The same options and seed give the same files.
+
+options:
+  --size WxH{cm,mm,in}  the sheet, e.g. 21x29.7cm (default: A4, 21x29.7cm); the design is
+                        measured in millimetres of it
+  --dpi N               print resolution: the image is the size times N pixels (default 300)
+  --colors K            inks, 1 to 16 (default 5)
+  --passes P            stretch passes, 0 to 10 (default 3)
+  --pastel              pale, soft inks on a white bath (default: random inks on cream)
+  --seed N              the seed, a non-negative 64-bit integer (required)
+  -o, --output OUT      the image to write (required): .png, .tif/.tiff, .jpg/.jpeg, .exr
+  --threads N           worker threads (default: every core)
+  -h, --help            this text
+)";
+
+/// The genome beside an image: "sheet.png" gives "sheet.marble.json".
+std::filesystem::path genomeBeside(const std::filesystem::path& image) {
+    std::filesystem::path file = image;
+    return file.replace_extension(".marble.json");
+}
+
+int paper(std::span<const std::string> words) {
+    Args args = parseArgs(words, {"size", "dpi", "colors", "passes", "seed", "o", "output", "threads"},
+                          {"pastel", "h", "help"});
+    if (args.has("h") || args.has("help")) {
+        std::cout << Help;
+        return ExitOk;
+    }
+    if (!args.positional.empty()) throw InputError("unexpected argument '" + args.positional[0] + "' (see marbler paper --help)");
+
+    // Every option is checked before anything is made or written.
+    std::pair<double, double> inches = parsePrintSize(args.get("size").value_or("21x29.7cm"));
+    const double dpi = parseDpiOption(args, 300.0);
+    PaperOptions options;
+    // Millimetres, to the micrometre: "21x29.7cm" is 210 x 297, not 210.00000000000003.
+    options.width = std::round(inches.first * 25.4 * 1000.0) / 1000.0;
+    options.height = std::round(inches.second * 25.4 * 1000.0) / 1000.0;
+    options.colors = parseIntOption(args, "colors", options.colors, 1, MaxPaperColors);
+    options.passes = parseIntOption(args, "passes", options.passes, 0, MaxPaperPasses);
+    options.pastel = args.has("pastel");
+    const std::uint64_t seed = parseSeedOption(args, "seed");
+    std::optional<std::string> out = args.has("o") ? args.get("o") : args.get("output");
+    if (!out || out->empty()) throw InputError("-o OUT is required (see marbler paper --help)");
+    const std::filesystem::path image(*out);
+    const std::filesystem::path genomeFile = genomeBeside(image);
+
+    RenderSettings settings;
+    settings.width = pixelsOf(inches.first * dpi, "--size at --dpi (width)");
+    settings.height = pixelsOf(inches.second * dpi, "--size at --dpi (height)");
+    settings.threads = parseIntOption(args, "threads", 0, 0, 1024);
+    const Genome genome = paperGenome(seed, options);
+
+    ExportOptions exportOptions;
+    exportOptions.dpi = dpi;
+    renderToFile(genome, settings, image, exportOptions);
+    try {
+        saveGenome(genome, genomeFile);
+    } catch (...) {
+        // Both files or neither.
+        std::error_code ignored;
+        std::filesystem::remove(image, ignored);
+        throw;
+    }
+    return ExitOk;
+}
+
+} // namespace
+
+int runPaper(std::span<const std::string> words) {
+    return guarded("paper", [&] { return paper(words); });
+}
+
+} // namespace marbler::cli
