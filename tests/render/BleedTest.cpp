@@ -3,11 +3,13 @@
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
 #include "marbler/CpuRenderer.h"
+#include "marbler/Params.h"
 #include "marbler/Tools.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <set>
 
 namespace marbler {
 namespace {
@@ -160,13 +162,52 @@ TEST(Bleed, ColoursAtPointsCompositeLikeTheRender) {
         }
     std::vector<double> rgb(xs.size() * 3);
     renderer.linearColorsAt(xs.data(), ys.data(), zs.data(), xs.size(), rgb.data());
-    int blended = 0;
+    std::set<int> reds;
     for (std::size_t k = 0; k < xs.size(); ++k)
         for (int c = 0; c < 3; ++c) {
             EXPECT_EQ(encodeSrgb8(rgb[3 * k + std::size_t(c)]), image.rgb[3 * k + std::size_t(c)]) << k;
-            blended += c == 0 && encodeSrgb8(rgb[3 * k]) != image.rgb[0];
+            reds.insert(encodeSrgb8(rgb[3 * k]));
         }
-    EXPECT_GT(blended, 0);
+    // More shades than the three inks and the background: soft edges were composited.
+    EXPECT_GT(reds.size(), 4u);
+}
+
+TEST(Bleed, ASoftEdgeBlendsOverTheSourceImage) {
+    // One drop over a source image of one colour: a pixel at edge distance e shows
+    // c ink + (1 - c) source, c = clamp(0.5 - e / b, 0, 1), in linear light.
+    const auto dir = test::outputDir("bleed-source");
+    Image plain;
+    plain.width = plain.height = 2;
+    plain.rgb = {200, 120, 40, 200, 120, 40, 200, 120, 40, 200, 120, 40};
+    writeImage(plain, dir / "plain.png");
+    Genome genome;
+    genome.size = {1000.0, 1000.0, 1000.0};
+    genome.palette = {{20, 60, 180}};
+    genome.background = {0, 0, 0};
+    genome.source = SourceImage{"plain.png"};
+    genome.baseDirectory = dir.string();
+    genome.bleed = 40.0;
+    Operation drop = defaultOperation(Tool::Drop, 2, {500.0, 500.0, 0.0});
+    drop.radius = 200.0;
+    drop.color = 0;
+    genome.initial.push_back(drop);
+    CpuRenderer renderer(genome);
+    const glm::dvec3 ink = linearOf(genome.palette[0]), source = linearOf({200, 120, 40});
+    int blended = 0;
+    for (double e = -30.0; e <= 30.0; e += 2.5) {
+        const glm::dvec3 p(500.0 + 200.0 + e, 500.0, 0.0);
+        const double c = bleedCoverage(e, genome.bleed);
+        blended += c > 0.0 && c < 1.0;
+        const glm::dvec3 want = c * ink + (1.0 - c) * source;
+        RenderSettings settings;
+        settings.width = settings.height = 1;
+        settings.region = Region{p.x - 0.01, p.y - 0.01, p.x + 0.01, p.y + 0.01};
+        const Image image = renderer.render(settings);
+        EXPECT_EQ(int(image.rgb[0]), int(encodeSrgb8(want.x))) << "e " << e;
+        EXPECT_EQ(int(image.rgb[1]), int(encodeSrgb8(want.y))) << "e " << e;
+        EXPECT_EQ(int(image.rgb[2]), int(encodeSrgb8(want.z))) << "e " << e;
+    }
+    EXPECT_GT(blended, 10);
 }
 
 TEST(Bleed, ReferenceMatchesTheConformanceRenders) {
