@@ -726,10 +726,14 @@ MARBLER_IVDEP
         double u = along[i];
         double lo = teeth[below[i]], hi = teeth[below[i] + 1];
         double tau = (u - lo) / (hi - lo);
-        bool in = u >= first && u < last;
-        arg[i] = in ? std::numbers::pi * tau : 0.0;
-        inside[i] = in ? 1.0 : 0.0;
+        bool in = (u >= first) & (u < last);
+        arg[i] = std::numbers::pi * tau;
+        inside[i] = double(in);
     }
+    // Outside the teeth tau means nothing: 0 keeps the sines off a NaN or a huge angle (a pass
+    // of its own: GCC 12 vectorises neither loop with the select folded into the first).
+MARBLER_IVDEP
+    for (int i = 0; i < n; ++i) arg[i] = inside[i] != 0.0 ? arg[i] : 0.0;
     sinArray(arg, sn, t.t2, n);
     if (power == 1.0) {
     } else if (power == 2.0) {
@@ -952,14 +956,15 @@ template <int Dim>
 /// The body of every variant: V says which, so only the AVX-512 variant calls the
 /// hand-written drops (which need AVX-512 to run, whatever the variant is compiled for). One
 /// switch per dimension over every tool, with no default: a tool added to the registry
-/// (Params.h) without its kernel fails the build (-Werror=switch).
-template <Variant V>
+/// (Params.h) without its kernel fails the build (-Werror=switch). Soft: under bleed (then
+/// `bleed` is given); the hard body has none of its code.
+template <Variant V, bool Soft>
 [[gnu::always_inline]] inline std::uint64_t traceTileBody(const PreparedOp* ops, std::size_t count, int dimension,
                                                           Tile& tile, int n, int* colors, double* whereX,
                                                           double* whereY, const Bleed* bleed) {
     lastVariantRun = V;
     std::uint64_t traversed = 0;
-    if (bleed)
+    if constexpr (Soft)
         for (int i = 0; i < n; ++i) {
             tile.w[i] = 1.0;
             tile.r[i] = tile.g[i] = tile.b[i] = 0.0;
@@ -968,10 +973,11 @@ template <Variant V>
         const PreparedOp& op = ops[k];
         traversed += static_cast<std::uint64_t>(n);
         if (dimension == 2) {
-            if (bleed && op.color >= 0) {
-                n = inkUnderBleed<2>(op, tile, n, colors, *bleed);
-                continue;
-            }
+            if constexpr (Soft)
+                if (op.color >= 0) {
+                    n = inkUnderBleed<2>(op, tile, n, colors, *bleed);
+                    continue;
+                }
             switch (op.tool) {
             case Tool::Drop: n = drop<V, 2>(op, tile, n, colors); break;
             case Tool::Spray:
@@ -991,10 +997,11 @@ template <Variant V>
             case Tool::Sphere: break; // not in 2D genomes (the loader refuses them)
             }
         } else {
-            if (bleed && op.color >= 0) {
-                n = inkUnderBleed<3>(op, tile, n, colors, *bleed);
-                continue;
-            }
+            if constexpr (Soft)
+                if (op.color >= 0) {
+                    n = inkUnderBleed<3>(op, tile, n, colors, *bleed);
+                    continue;
+                }
             switch (op.tool) {
             case Tool::Drop: n = drop<V, 3>(op, tile, n, colors); break;
             case Tool::Spray:
@@ -1014,7 +1021,7 @@ template <Variant V>
             }
         }
     }
-    if (bleed)
+    if constexpr (Soft)
         for (int i = 0; i < n; ++i) {
             const int id = tile.id[i];
             bleed->weight[id] = tile.w[i];
@@ -1041,20 +1048,23 @@ using TraceFn = std::uint64_t (*)(const PreparedOp*, std::size_t, int, Tile&, in
 __attribute__((target("arch=x86-64-v4"))) std::uint64_t traceTileAvx512(
     const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors, double* whereX,
     double* whereY, const Bleed* bleed) {
-    return traceTileBody<Variant::Avx512>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed);
+    return bleed ? traceTileBody<Variant::Avx512, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
+                 : traceTileBody<Variant::Avx512, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
 }
 
 __attribute__((target("arch=x86-64-v3"))) std::uint64_t traceTileAvx2(const PreparedOp* ops, std::size_t count,
                                                                      int dimension, Tile& tile, int n, int* colors,
                                                                      double* whereX, double* whereY,
                                                                      const Bleed* bleed) {
-    return traceTileBody<Variant::Avx2>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed);
+    return bleed ? traceTileBody<Variant::Avx2, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
+                 : traceTileBody<Variant::Avx2, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
 }
 #endif
 
 std::uint64_t traceTileBaseline(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n,
                                 int* colors, double* whereX, double* whereY, const Bleed* bleed) {
-    return traceTileBody<Variant::Baseline>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed);
+    return bleed ? traceTileBody<Variant::Baseline, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
+                 : traceTileBody<Variant::Baseline, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
 }
 
 TraceFn functionOf(Variant v) {
