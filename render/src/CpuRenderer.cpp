@@ -25,6 +25,7 @@ struct CpuRenderer::Impl {
     std::vector<std::array<std::uint8_t, 3>> paletteSrgb8;
     std::array<std::uint8_t, 3> backgroundSrgb8{};
     std::optional<detail::LinearRaster> source;
+    double bleed = 0.0; ///< the genome's soft ink edges (0: hard)
     /// The genome's dimension and size only: what the sampling functions read.
     Genome shape;
 
@@ -54,13 +55,30 @@ struct CpuRenderer::Impl {
         const int* colors;
         const double* whereX;
         const double* whereY;
+        /// Under bleed (else null): per sample the weight of what lies beneath its inks, and
+        /// the linear colour they add (kernel::Bleed).
+        const double* weight = nullptr;
+        const double* rgb = nullptr;
     };
 
     /// The linear colour a traced sample shows: its ink, else the source image where it mapped
-    /// back to, else the background.
+    /// back to, else the background; under bleed, the inks it met over that.
     glm::dvec3 linearAt(const Traced& t, int k) const {
         const int c = t.colors[k];
+        if (t.weight) {
+            const double* inks = t.rgb + 3 * std::size_t(k);
+            glm::dvec3 sum(inks[0], inks[1], inks[2]);
+            const double w = t.weight[k];
+            if (w > 0.0) sum += w * (source ? sourceAt(t.whereX[k], t.whereY[k]) : backgroundLinear);
+            return sum;
+        }
         return c >= 0 ? paletteLinear[std::size_t(c)] : source ? sourceAt(t.whereX[k], t.whereY[k]) : backgroundLinear;
+    }
+
+    /// The kernel's bleed record for a tile's outputs, or null when the genome has no bleed.
+    std::optional<kernel::Bleed> bleedFor(double* weight, double* rgb) const {
+        if (!(bleed > 0.0)) return std::nullopt;
+        return kernel::Bleed{bleed, paletteLinear.data(), weight, rgb};
     }
 
     /// Traces rows [y0, y1) on every requested core, one tile at a time: a run of pixels of one
@@ -139,7 +157,10 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
             auto tile = std::make_unique<kernel::Tile>();
             std::vector<int> colors(kernel::TileSize);
             std::vector<double> whereX(kernel::TileSize), whereY(kernel::TileSize);
-            const Traced traced{colors.data(), whereX.data(), whereY.data()};
+            std::vector<double> weight(bleed > 0.0 ? kernel::TileSize : 0), rgb(weight.size() * 3);
+            const std::optional<kernel::Bleed> layers = bleedFor(weight.data(), rgb.data());
+            const Traced traced{colors.data(), whereX.data(), whereY.data(), layers ? weight.data() : nullptr,
+                                layers ? rgb.data() : nullptr};
             std::vector<glm::dvec3> rowPart(static_cast<std::size_t>(samples));
             auto shade = makeShader();
             for (;;) {
@@ -173,7 +194,7 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
                     const int n = pixels * samples;
                     for (int k = 0; k < n; ++k) tile->id[k] = k;
                     kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
-                                      source ? whereX.data() : nullptr, whereY.data());
+                                      source ? whereX.data() : nullptr, whereY.data(), layers ? &*layers : nullptr);
                     shade(j, i0, pixels, traced);
                 }
                 progress.rowDone();
@@ -236,6 +257,7 @@ CpuRenderer::CpuRenderer(const Genome& genome) : mImpl(std::make_unique<Impl>())
     mImpl->backgroundSrgb8 = encode(mImpl->backgroundLinear);
     if (genome.source && genome.dimension == 2)
         mImpl->source = decodeSourceImage(genome);
+    mImpl->bleed = genome.bleed;
 }
 
 namespace {
@@ -275,10 +297,10 @@ void CpuRenderer::renderRows(const RenderSettings& settings, int y0, int y1, std
     checkRows(settings, y0, y1);
     const std::size_t stride = std::size_t(settings.width) * 3;
     const AaPattern pattern = aaPattern(settings.aa);
-    if (pattern.offsets.size() == 1 && pattern.weights[0] == 1.0) {
+    if (pattern.offsets.size() == 1 && pattern.weights[0] == 1.0 && !(mImpl->bleed > 0.0)) {
         // One sample of weight 1 is its own average (0 + 1 x is x, bit for bit), so an ink's or
         // the background's 8-bit code comes from a table made once instead of being averaged
-        // and encoded per pixel.
+        // and encoded per pixel (not under bleed, whose samples blend inks).
         const Impl& impl = *mImpl;
         impl.traceRows(settings, y0, y1, control, [&] {
             return [&](int j, int i0, int pixels, const Impl::Traced& traced) {
@@ -379,6 +401,37 @@ void CpuRenderer::colorIndicesAt(const double* x, const double* y, const double*
         }
         kernel::traceTile(mImpl->reversed.data(), mImpl->reversed.size(), mImpl->dimension, *tile, n,
                           colors + first, nullptr, nullptr);
+    }
+}
+
+void CpuRenderer::linearColorsAt(const double* x, const double* y, const double* z, std::size_t count,
+                                 double* rgb) const {
+    const Impl& impl = *mImpl;
+    auto tile = std::make_unique<kernel::Tile>();
+    const bool solid = impl.dimension == 3;
+    std::vector<int> colors(kernel::TileSize);
+    std::vector<double> whereX(kernel::TileSize), whereY(kernel::TileSize);
+    std::vector<double> weight(kernel::TileSize), inks(std::size_t(kernel::TileSize) * 3);
+    const std::optional<kernel::Bleed> layers = impl.bleedFor(weight.data(), inks.data());
+    const Impl::Traced traced{colors.data(), whereX.data(), whereY.data(), layers ? weight.data() : nullptr,
+                              layers ? inks.data() : nullptr};
+    for (std::size_t first = 0; first < count; first += kernel::TileSize) {
+        const int n = static_cast<int>(std::min<std::size_t>(kernel::TileSize, count - first));
+        for (int k = 0; k < n; ++k) {
+            tile->x[k] = x[first + std::size_t(k)];
+            tile->y[k] = y[first + std::size_t(k)];
+            tile->z[k] = solid ? z[first + std::size_t(k)] : 0.0;
+            tile->id[k] = k;
+        }
+        kernel::traceTile(impl.reversed.data(), impl.reversed.size(), impl.dimension, *tile, n, colors.data(),
+                          impl.source ? whereX.data() : nullptr, whereY.data(), layers ? &*layers : nullptr);
+        for (int k = 0; k < n; ++k) {
+            const glm::dvec3 c = impl.linearAt(traced, k);
+            double* out = rgb + 3 * (first + std::size_t(k));
+            out[0] = c.x;
+            out[1] = c.y;
+            out[2] = c.z;
+        }
     }
 }
 

@@ -24,6 +24,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
+#include <numbers>
+#include <utility>
+#include <vector>
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
@@ -683,29 +686,298 @@ template <Variant V, int Dim>
     return inside != 0 ? compact(tile, n, Dim, op.color, colors) : n;
 }
 
-/// Stretch and flow, one point at a time through the scalar reference (Tools.cpp).
-inline void scalarInverse2(const PreparedOp& op, Tile& t, int n) {
+// ---- Version 2: stretch, flow (2D) ---------------------------------------------------------
+
+/// Stretch (Tools.cpp stretchShift): u along N, the tooth interval t_i <= u < t_(i+1) by a
+/// binary search of a fixed number of halvings (the same for every point, so the loop stays
+/// branch-free), then x -= s sin(pi tau)^p M. sin^p: p = 1, 2 and 1/2 exactly as pow rounds
+/// them (to the nearest double), any other p through std::pow, a point at a time.
+[[gnu::always_inline]] inline void stretch2(const PreparedOp& op, Tile& t, int n) {
+    double* __restrict x = t.x;
+    double* __restrict y = t.y;
+    double* __restrict arg = t.t0;
+    double* __restrict sn = t.t1;
+    double* __restrict inside = t.t3;
+    double* __restrict along = t.t2; // u, until the sines use it as scratch
+    std::int64_t* __restrict below = t.flag;
+    const double* __restrict teeth = op.teeth.data();
+    const int count = static_cast<int>(op.teeth.size());
+    if (count < 2) return;
+    const int intervals = count - 1;
+    const int top = static_cast<int>(std::bit_floor(static_cast<unsigned>(intervals)));
+    const double cx = op.c.x, cy = op.c.y, nx = op.n.x, ny = op.n.y, mx = op.m.x, my = op.m.y;
+    const double first = teeth[0], last = teeth[count - 1], shift = op.shift, power = op.power;
+MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
-        glm::dvec3 q = inverseMap(op, glm::dvec3(t.x[i], t.y[i], 0.0));
-        t.x[i] = q.x;
-        t.y[i] = q.y;
+        along[i] = (x[i] - cx) * nx + (y[i] - cy) * ny;
+        below[i] = 0;
     }
+    // The last tooth at or below u: the largest k < intervals with teeth[k] <= u, a halving
+    // at a time over the whole tile (a gather per point and halving).
+    for (int step = top; step > 0; step >>= 1) {
+MARBLER_IVDEP
+        for (int i = 0; i < n; ++i) {
+            std::int64_t probe = std::min<std::int64_t>(below[i] + step, intervals - 1);
+            below[i] = teeth[probe] <= along[i] ? probe : below[i];
+        }
+    }
+MARBLER_IVDEP
+    for (int i = 0; i < n; ++i) {
+        double u = along[i];
+        double lo = teeth[below[i]], hi = teeth[below[i] + 1];
+        double tau = (u - lo) / (hi - lo);
+        bool in = (u >= first) & (u < last);
+        arg[i] = std::numbers::pi * tau;
+        inside[i] = double(in);
+    }
+    // Outside the teeth tau means nothing: 0 keeps the sines off a NaN or a huge angle (a pass
+    // of its own: GCC 12 vectorises neither loop with the select folded into the first).
+MARBLER_IVDEP
+    for (int i = 0; i < n; ++i) arg[i] = inside[i] != 0.0 ? arg[i] : 0.0;
+    sinArray(arg, sn, t.t2, n);
+    if (power == 1.0) {
+    } else if (power == 2.0) {
+MARBLER_IVDEP
+        for (int i = 0; i < n; ++i) sn[i] = sn[i] * sn[i];
+    } else if (power == 0.5) {
+MARBLER_IVDEP
+        for (int i = 0; i < n; ++i) sn[i] = std::sqrt(sn[i]);
+    } else {
+        for (int i = 0; i < n; ++i) sn[i] = inside[i] != 0.0 ? std::pow(sn[i], power) : 0.0;
+    }
+MARBLER_IVDEP
+    for (int i = 0; i < n; ++i) {
+        double f = inside[i] != 0.0 ? shift * sn[i] : 0.0;
+        x[i] = x[i] - f * mx;
+        y[i] = y[i] - f * my;
+    }
+}
+
+/// A flow's velocity at local (px, py) (Tools.cpp flowVelocity, in its order of operations).
+template <bool Cavity>
+[[gnu::always_inline]] inline void flowVelocity2(double px, double py, double lx, double ly, double u, double piOverLx,
+                                                 double piOverLy, double& vx, double& vy) {
+    (void)piOverLx;
+    (void)piOverLy;
+    if constexpr (Cavity) {
+        double s = px / lx, t = py / ly;
+        bool in = s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0;
+        double f = 16.0 * s * s * (1.0 - s) * (1.0 - s), df = 32.0 * s * (1.0 - s) * (1.0 - 2.0 * s);
+        double g = 7.5 * t * t * (1.0 - t) * (1.0 - t) * (1.0 - t), dg = 7.5 * t * (1.0 - t) * (1.0 - t) * (2.0 - 5.0 * t);
+        double dpsiDy = u * f * dg;
+        double dpsiDx = u * (ly / lx) * df * g;
+        vx = in ? dpsiDy : 0.0;
+        vy = in ? -dpsiDx : 0.0;
+    } else {
+        double ax = std::numbers::pi * px / lx, ay = std::numbers::pi * py / ly;
+        double sx, cxv, sy, cyv;
+        sinCos(ax, sx, cxv);
+        sinCos(ay, sy, cyv);
+        double dpsiDy = u * sx * cyv;
+        double dpsiDx = u * (ly / lx) * cxv * sy;
+        vx = dpsiDy;
+        vy = -dpsiDx;
+    }
+}
+
+/// Flow (Tools.cpp flow) backward: in local coordinates, n implicit midpoint steps of -h, each
+/// solved by fixed-point iteration for the whole tile at once; a point that has settled (its
+/// last iterate moved less than the tolerance, or 100 iterations) keeps its value while the
+/// others go on, so every point takes exactly the iterations the reference takes. The kernel's
+/// sine and cosine are good to an ulp only for |angle| <= SinCosLimit: points that could get
+/// further (a design point some 1e5 cells from the field's origin) go through the reference.
+template <bool Cavity>
+[[gnu::always_inline]] inline void flow2(const PreparedOp& op, Tile& t, int n) {
+    double* __restrict x = t.x;
+    double* __restrict y = t.y;
+    double* __restrict nextX = t.t0;
+    double* __restrict nextY = t.t1;
+    std::int64_t* __restrict active = t.flag;
+    const double cx = op.c.x, cy = op.c.y, mx = op.m.x, my = op.m.y, nx = op.n.x, ny = op.n.y;
+    const double lx = op.size[0], ly = op.size[1], u = op.speed, h = -op.step, tolerance = op.tolerance;
+    const double piOverLx = std::numbers::pi / lx, piOverLy = std::numbers::pi / ly;
+    // How far a point can travel in the flow's time, and where the fast sine stops.
+    const double travel = std::abs(u) * std::abs(op.step) * op.steps * (1.0 + ly / lx + lx / ly);
+    const double farX = 1e5 * lx - travel, farY = 1e5 * ly - travel;
+    std::vector<std::pair<int, glm::dvec3>> far;
+    for (int i = 0; i < n; ++i) {
+        // Local coordinates (Tools.cpp: glm::dot(rel, m) with rel.z = 0).
+        double rx = x[i] - cx, ry = y[i] - cy;
+        double px = rx * mx + ry * my, py = rx * nx + ry * ny;
+        if (!Cavity && !(std::abs(px) < farX && std::abs(py) < farY)) [[unlikely]]
+            far.emplace_back(i, glm::dvec3(x[i], y[i], 0.0));
+        x[i] = px;
+        y[i] = py;
+    }
+    for (int k = 0; k < op.steps; ++k) {
+MARBLER_IVDEP
+        for (int i = 0; i < n; ++i) {
+            double vx, vy;
+            flowVelocity2<Cavity>(x[i], y[i], lx, ly, u, piOverLx, piOverLy, vx, vy);
+            nextX[i] = x[i] + h * vx;
+            nextY[i] = y[i] + h * vy;
+            active[i] = 1;
+        }
+        std::int64_t left = n;
+        for (int iteration = 0; iteration < 100 && left != 0; ++iteration) {
+            left = 0;
+MARBLER_IVDEP
+            for (int i = 0; i < n; ++i) {
+                double vx, vy;
+                flowVelocity2<Cavity>(0.5 * (x[i] + nextX[i]), 0.5 * (y[i] + nextY[i]), lx, ly, u, piOverLx,
+                                      piOverLy, vx, vy);
+                double againX = x[i] + h * vx, againY = y[i] + h * vy;
+                double dx = againX - nextX[i], dy = againY - nextY[i];
+                bool settled = std::sqrt(dx * dx + dy * dy) < tolerance;
+                bool moving = active[i] != 0;
+                nextX[i] = moving ? againX : nextX[i];
+                nextY[i] = moving ? againY : nextY[i];
+                std::int64_t still = moving && !settled;
+                active[i] = still;
+                left += still;
+            }
+        }
+MARBLER_IVDEP
+        for (int i = 0; i < n; ++i) {
+            x[i] = nextX[i];
+            y[i] = nextY[i];
+        }
+    }
+MARBLER_IVDEP
+    for (int i = 0; i < n; ++i) {
+        double px = x[i], py = y[i];
+        x[i] = (cx + px * mx) + py * nx;
+        y[i] = (cy + px * my) + py * ny;
+    }
+    for (const auto& [i, p] : far) {
+        glm::dvec3 q = inverseMap(op, p);
+        x[i] = q.x;
+        y[i] = q.y;
+    }
+}
+
+// ---- Bleed ----------------------------------------------------------------------------------
+
+/// An ink-laying tool under bleed (genome-format.md, `bleed`; Tools.cpp traceCovers): the
+/// coverage c = clamp(0.5 - e / b, 0, 1) of the edge distance e adds w c ink to the point's
+/// colour and leaves w (1 - c) for what lies beneath; a point of coverage 1 is flagged (it
+/// stops there). Then the tool's inverse push (drop, cylinder), as in ink2 and ink3, which
+/// sends a point inside the ink to the centre (the reference's clamp, which the conformance
+/// renders follow). Returns the number of flagged points.
+template <int Dim>
+[[gnu::always_inline]] inline std::int64_t bleedInk(const PreparedOp& op, Tile& t, int n, double width,
+                                                    const glm::dvec3& ink) {
+    double* __restrict x = t.x;
+    double* __restrict y = t.y;
+    double* __restrict z = t.z;
+    double* __restrict w = t.w;
+    double* __restrict cr = t.r;
+    double* __restrict cg = t.g;
+    double* __restrict cb = t.b;
+    std::int64_t* __restrict flag = t.flag;
+    const double cx = op.c.x, cy = op.c.y, cz = op.c.z, r = op.r, r2 = op.r2;
+    const double ax = op.a.x, ay = op.a.y, az = op.a.z;
+    const double inkR = ink.x, inkG = ink.y, inkB = ink.z;
+    const bool column = op.tool == Tool::Cylinder, volume = Dim == 3 && op.tool == Tool::Drop;
+    const bool pushes = op.tool != Tool::Spray;
+    std::int64_t stopped = 0;
+MARBLER_IVDEP
+    for (int i = 0; i < n; ++i) {
+        double dx = x[i] - cx, dy = y[i] - cy, dz = Dim == 3 ? z[i] - cz : 0.0;
+        if (column) {
+            double along = dx * ax + dy * ay + dz * az;
+            dx = dx - along * ax;
+            dy = dy - along * ay;
+            dz = dz - along * az;
+        }
+        double len2 = Dim == 3 ? dx * dx + dy * dy + dz * dz : dx * dx + dy * dy;
+        double e = std::sqrt(len2) - r;
+        double c = std::clamp(0.5 - e / width, 0.0, 1.0);
+        double wc = w[i] * c;
+        cr[i] = cr[i] + wc * inkR;
+        cg[i] = cg[i] + wc * inkG;
+        cb[i] = cb[i] + wc * inkB;
+        w[i] = w[i] - wc;
+        std::int64_t full = c >= 1.0;
+        flag[i] = full;
+        stopped += full;
+        if (pushes) {
+            double factor;
+            if (volume) {
+                double len3 = len2 * std::sqrt(len2);
+                factor = cbrtUnit(std::max(0.0, 1.0 - r2 / len3));
+            } else {
+                factor = std::sqrt(std::max(0.0, 1.0 - r2 / len2));
+            }
+            bool moves = len2 > 0.0;
+            x[i] = moves ? x[i] + dx * (factor - 1.0) : x[i];
+            y[i] = moves ? y[i] + dy * (factor - 1.0) : y[i];
+            if (Dim == 3) z[i] = moves ? z[i] + dz * (factor - 1.0) : z[i];
+        }
+    }
+    return stopped;
+}
+
+/// compact for a traced tile under bleed: the flagged points leave with their colour (the ink
+/// they stopped on, weight 0, the inks' sum), the others slide down with their layers.
+inline int compactBleed(Tile& t, int n, int dimension, int color, int* colors, const Bleed& bleed) {
+    int j = 0;
+    for (int i = 0; i < n; ++i) {
+        if (t.flag[i]) {
+            const int id = t.id[i];
+            colors[id] = color;
+            bleed.weight[id] = 0.0;
+            bleed.rgb[3 * id] = t.r[i];
+            bleed.rgb[3 * id + 1] = t.g[i];
+            bleed.rgb[3 * id + 2] = t.b[i];
+            continue;
+        }
+        t.x[j] = t.x[i];
+        t.y[j] = t.y[i];
+        if (dimension == 3) t.z[j] = t.z[i];
+        t.id[j] = t.id[i];
+        t.w[j] = t.w[i];
+        t.r[j] = t.r[i];
+        t.g[j] = t.g[i];
+        t.b[j] = t.b[i];
+        ++j;
+    }
+    return j;
+}
+
+/// An ink-laying tool under bleed in `Dim` dimensions. Returns the number of points left.
+template <int Dim>
+[[gnu::always_inline]] inline int inkUnderBleed(const PreparedOp& op, Tile& tile, int n, int* colors,
+                                                const Bleed& bleed) {
+    if (bleedInk<Dim>(op, tile, n, bleed.width, bleed.palette[op.color]) == 0) return n;
+    return compactBleed(tile, n, Dim, op.color, colors, bleed);
 }
 
 /// The body of every variant: V says which, so only the AVX-512 variant calls the
 /// hand-written drops (which need AVX-512 to run, whatever the variant is compiled for). One
 /// switch per dimension over every tool, with no default: a tool added to the registry
-/// (Params.h) without its kernel fails the build (-Werror=switch).
-template <Variant V>
+/// (Params.h) without its kernel fails the build (-Werror=switch). Soft: under bleed (then
+/// `bleed` is given); the hard body has none of its code.
+template <Variant V, bool Soft>
 [[gnu::always_inline]] inline std::uint64_t traceTileBody(const PreparedOp* ops, std::size_t count, int dimension,
                                                           Tile& tile, int n, int* colors, double* whereX,
-                                                          double* whereY) {
+                                                          double* whereY, const Bleed* bleed) {
     lastVariantRun = V;
     std::uint64_t traversed = 0;
+    if constexpr (Soft)
+        for (int i = 0; i < n; ++i) {
+            tile.w[i] = 1.0;
+            tile.r[i] = tile.g[i] = tile.b[i] = 0.0;
+        }
     for (std::size_t k = 0; k < count && n > 0; ++k) {
         const PreparedOp& op = ops[k];
         traversed += static_cast<std::uint64_t>(n);
         if (dimension == 2) {
+            if constexpr (Soft)
+                if (op.color >= 0) {
+                    n = inkUnderBleed<2>(op, tile, n, colors, *bleed);
+                    continue;
+                }
             switch (op.tool) {
             case Tool::Drop: n = drop<V, 2>(op, tile, n, colors); break;
             case Tool::Spray:
@@ -716,12 +988,20 @@ template <Variant V>
             case Tool::Wave: wave2(op, tile, n); break;
             case Tool::Circle: swirl2(op, tile, n, false); break;
             case Tool::Vortex: swirl2(op, tile, n, true); break;
-            case Tool::Stretch:
-            case Tool::Flow: scalarInverse2(op, tile, n); break;
+            case Tool::Stretch: stretch2(op, tile, n); break;
+            case Tool::Flow:
+                if (op.field == FlowField::Cavity) flow2<true>(op, tile, n);
+                else flow2<false>(op, tile, n);
+                break;
             case Tool::Cylinder:
             case Tool::Sphere: break; // not in 2D genomes (the loader refuses them)
             }
         } else {
+            if constexpr (Soft)
+                if (op.color >= 0) {
+                    n = inkUnderBleed<3>(op, tile, n, colors, *bleed);
+                    continue;
+                }
             switch (op.tool) {
             case Tool::Drop: n = drop<V, 3>(op, tile, n, colors); break;
             case Tool::Spray:
@@ -741,6 +1021,14 @@ template <Variant V>
             }
         }
     }
+    if constexpr (Soft)
+        for (int i = 0; i < n; ++i) {
+            const int id = tile.id[i];
+            bleed->weight[id] = tile.w[i];
+            bleed->rgb[3 * id] = tile.r[i];
+            bleed->rgb[3 * id + 1] = tile.g[i];
+            bleed->rgb[3 * id + 2] = tile.b[i];
+        }
     for (int i = 0; i < n; ++i) {
         colors[tile.id[i]] = -1;
         if (whereX) {
@@ -751,27 +1039,32 @@ template <Variant V>
     return traversed;
 }
 
-using TraceFn = std::uint64_t (*)(const PreparedOp*, std::size_t, int, Tile&, int, int*, double*, double*);
+using TraceFn = std::uint64_t (*)(const PreparedOp*, std::size_t, int, Tile&, int, int*, double*, double*,
+                                  const Bleed*);
 
 // The variants. Each is the same body compiled for its instruction set; the always-inline
 // helpers above are compiled into each with that variant's vectors.
 #ifdef MARBLER_X86_VARIANTS
 __attribute__((target("arch=x86-64-v4"))) std::uint64_t traceTileAvx512(
     const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors, double* whereX,
-    double* whereY) {
-    return traceTileBody<Variant::Avx512>(ops, count, dimension, tile, n, colors, whereX, whereY);
+    double* whereY, const Bleed* bleed) {
+    return bleed ? traceTileBody<Variant::Avx512, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
+                 : traceTileBody<Variant::Avx512, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
 }
 
 __attribute__((target("arch=x86-64-v3"))) std::uint64_t traceTileAvx2(const PreparedOp* ops, std::size_t count,
                                                                      int dimension, Tile& tile, int n, int* colors,
-                                                                     double* whereX, double* whereY) {
-    return traceTileBody<Variant::Avx2>(ops, count, dimension, tile, n, colors, whereX, whereY);
+                                                                     double* whereX, double* whereY,
+                                                                     const Bleed* bleed) {
+    return bleed ? traceTileBody<Variant::Avx2, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
+                 : traceTileBody<Variant::Avx2, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
 }
 #endif
 
 std::uint64_t traceTileBaseline(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n,
-                                int* colors, double* whereX, double* whereY) {
-    return traceTileBody<Variant::Baseline>(ops, count, dimension, tile, n, colors, whereX, whereY);
+                                int* colors, double* whereX, double* whereY, const Bleed* bleed) {
+    return bleed ? traceTileBody<Variant::Baseline, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
+                 : traceTileBody<Variant::Baseline, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
 }
 
 TraceFn functionOf(Variant v) {
@@ -893,8 +1186,9 @@ void setActiveChoice(const Choice& choice) {
 }
 
 std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
-                        double* whereX, double* whereY) {
-    return active().trace.load(std::memory_order_relaxed)(ops, count, dimension, tile, n, colors, whereX, whereY);
+                        double* whereX, double* whereY, const Bleed* bleed) {
+    return active().trace.load(std::memory_order_relaxed)(ops, count, dimension, tile, n, colors, whereX, whereY,
+                                                          bleed);
 }
 
 Variant lastVariantRunForTest() { return lastVariantRun; }

@@ -31,6 +31,24 @@ struct alignas(64) Tile {
     double t3[TileSize];
     std::int64_t flag[TileSize];
     int id[TileSize];
+    // Bleed only (traceTile with a Bleed): the weight left for what lies beneath each point,
+    // and the linear colour of the inks met so far, each already weighted.
+    double w[TileSize];
+    double r[TileSize];
+    double g[TileSize];
+    double b[TileSize];
+};
+
+/// Version 2's soft ink edges (genome-format.md, `bleed`): what traceTile needs to composite
+/// the inks it meets, and where it leaves the result.
+struct Bleed {
+    double width = 0.0;                  ///< the genome's bleed b > 0
+    const glm::dvec3* palette = nullptr; ///< the inks' linear colours
+    /// Per caller index: the weight of what lies beneath the inks met (0 where the search
+    /// stopped on an ink of coverage 1; then colors[] holds that ink), and the linear colour
+    /// those inks add (3 doubles: sum of weight * coverage * ink).
+    double* weight = nullptr;
+    double* rgb = nullptr;
 };
 
 /// Traces the first `n` points of `tile` through `ops`, which hold a genome's prepared
@@ -38,9 +56,12 @@ struct alignas(64) Tile {
 /// index seen by point k (-1: none) to colors[tile.id[k]]; for points that find no ink, when
 /// `whereX` is given, writes where they map back to into whereX/whereY[tile.id[k]]. Returns the
 /// number of sample-operations traversed. The tile's arrays are clobbered. Runs the active
-/// variant (activeChoice).
+/// variant (activeChoice). With `bleed`, an ink of coverage 0 < c < 1 does not stop a point
+/// (Tools.h traceCovers): colors[] receives the ink a point stopped on (coverage 1) or -1,
+/// and bleed->weight and bleed->rgb what the inks met add up to; whereX/whereY are written
+/// for the points that reach the bath (weight > 0).
 std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
-                        double* whereX, double* whereY);
+                        double* whereX, double* whereY, const Bleed* bleed = nullptr);
 
 /// The compiled variants of traceTile, best first. Avx512 (x86-64-v4) also replaces the
 /// divides and roots of drops, lines and combs by refined hardware estimates (a few ulps from

@@ -171,6 +171,7 @@ VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
     design.height = genome.size.y;
     design.background = genome.background;
     design.palette = genome.palette;
+    design.bleed = genome.bleed;
     const std::vector<PreparedOp> ops = prepare(genome);
     std::vector<std::size_t> inks;
     for (std::size_t i = 0; i < ops.size(); ++i)

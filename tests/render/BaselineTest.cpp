@@ -44,6 +44,10 @@ std::vector<BaselineCase> cases() {
         {"solid-swirls-z-none", "solid-swirls", "none", Slice{2, 400.0}, 128, 128, {}},
         {"solid-swirls-y-checker4", "solid-swirls", "checker4", Slice{1, 420.0}, 128, 128, {}},
         {"solid-swirls-x-rooks8", "solid-swirls", "rooks8", Slice{0, 380.0}, 128, 128, {}},
+        {"stretch-flow-grid3", "stretch-flow-2d", "grid3", {}, 125, 100, {}},
+        {"stretch-flow-none-region", "stretch-flow-2d", "none", {}, 96, 96, Region{250, 150, 650, 550}},
+        {"bleed-rgss", "bleed-2d", "rgss", {}, 125, 100, {}},
+        {"bleed-none-region", "bleed-2d", "none", {}, 80, 80, Region{300, 200, 500, 400}},
     };
 }
 

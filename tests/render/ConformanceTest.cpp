@@ -13,10 +13,10 @@
 namespace marbler {
 namespace {
 
-class ProbeFile : public ::testing::TestWithParam<int> {};
+class ProbeFile : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ProbeFile, EveryProbeMatchesInTheKernelTheReferenceAndARender) {
-    const std::string name = "probes-" + std::to_string(GetParam()) + ".json";
+    const std::string name = GetParam() + ".json";
     nlohmann::json file = test::loadConformance(name);
     Genome genome = test::genomeOf(file, name);
     CpuRenderer renderer(genome);
@@ -43,7 +43,15 @@ TEST_P(ProbeFile, EveryProbeMatchesInTheKernelTheReferenceAndARender) {
     EXPECT_GT(checked, 100);
 }
 
-INSTANTIATE_TEST_SUITE_P(Conformance, ProbeFile, ::testing::Values(0, 1, 2, 3, 4));
+INSTANTIATE_TEST_SUITE_P(Conformance, ProbeFile,
+                         ::testing::Values("probes-0", "probes-1", "probes-2", "probes-3", "probes-4", "probes-v2-stretch",
+                                           "probes-v2-core", "probes-v2-flow"),
+                         [](const auto& info) {
+                             std::string name = info.param;
+                             for (char& c : name)
+                                 if (c == '-') c = '_';
+                             return name;
+                         });
 
 TEST(Conformance, AntialiasedRendersMatchWithinTwoLevels) {
     nlohmann::json file = test::loadConformance("antialias.json");

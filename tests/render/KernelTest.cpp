@@ -83,6 +83,25 @@ Operation randomOperation(Pcg32& rng, Tool tool, int dimension) {
     n -= (n.x * op.direction.x + n.y * op.direction.y + n.z * op.direction.z) * op.direction;
     op.normal = n / std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
     op.color = static_cast<int>(rng.below(4));
+    // Version 2: a core on half the swirls; a stretch's teeth, shift and power (the three
+    // powers the kernel takes exactly and one it takes through pow); a flow of either field,
+    // with at least the steps that make its iteration contract.
+    op.core = rng.chance(0.5) ? rng.uniform(1, 60) : 0.0;
+    if (tool == Tool::Stretch) {
+        op.teeth = {rng.uniform(-300, 300)};
+        const int teeth = 2 + static_cast<int>(rng.below(12));
+        while (int(op.teeth.size()) < teeth) op.teeth.push_back(op.teeth.back() + rng.uniform(20, 200));
+        op.shift = rng.uniform(-80, 80);
+        const double powers[] = {1.0, 2.0, 0.5, rng.uniform(0.2, 3.0)};
+        op.power = powers[rng.below(4)];
+    }
+    if (tool == Tool::Flow) {
+        op.field = rng.chance(0.5) ? FlowField::Cells : FlowField::Cavity;
+        op.extent = {rng.uniform(150, 600), rng.uniform(150, 600)};
+        op.speed = rng.uniform(-120, 120);
+        op.time = rng.uniform(0.3, 2.0);
+        op.steps = std::max(minimumFlowSteps(op), 1 + static_cast<int>(rng.below(4)));
+    }
     return op;
 }
 

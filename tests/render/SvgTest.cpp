@@ -38,7 +38,7 @@ std::vector<NamedGenome> flatGenomes(const std::filesystem::path& dir) {
         auto file = test::dataDir() / "examples" / (std::string(name) + ".marble.json");
         genomes.push_back({name, loadGenome(file), file});
     }
-    for (const char* name : {"drops-combs-2d", "waves-swirls-2d"}) {
+    for (const char* name : {"drops-combs-2d", "waves-swirls-2d", "stretch-flow-2d", "bleed-2d"}) {
         auto file = test::dataDir() / "render" / (std::string(name) + ".marble.json");
         genomes.push_back({name, loadGenome(file), file});
     }
@@ -146,6 +146,20 @@ TEST(Svg, RasterisedSvgMatchesTheAntialiasedRender) {
         if (spec.in2D) {
             EXPECT_TRUE(seen.count("2D " + std::string(spec.name))) << spec.name;
         }
+}
+
+TEST(Svg, BleedIsDrawnAsTheHardEdges) {
+    // A soft edge's coverage is 1/2 on the hard boundary: the outlines are the hard design's.
+    Genome soft = loadGenome(test::dataDir() / "render" / "bleed-2d.marble.json");
+    ASSERT_GT(soft.bleed, 0.0);
+    Genome hard = soft;
+    hard.bleed = 0.0;
+    VectorOptions options;
+    options.tolerance = 2.0;
+    const VectorDesign a = traceDesign(soft, options), b = traceDesign(hard, options);
+    EXPECT_EQ(a.bleed, soft.bleed);
+    EXPECT_EQ(b.bleed, 0.0);
+    EXPECT_EQ(toSvg(a, 2), toSvg(b, 2));
 }
 
 TEST(Svg, NeighbouringVerticesAreWithinTheTolerance) {

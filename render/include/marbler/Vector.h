@@ -12,6 +12,15 @@
 /// the colour rule: a pixel shows the newest ink whose mapped disc holds it. A drop laid inside
 /// an older ink pushes that ink into a ring; its hole is exactly the newer drop's region, which
 /// is painted over it, so filling the older outline whole is right.
+///
+/// Version 2's stretch and flow are homeomorphisms too and are traced forward like the others
+/// (a flow costs its steps' fixed-point iterations per vertex: a few seconds for a design of
+/// two flows at the default tolerance). A genome's `bleed` is drawn as hard edges: a soft edge
+/// has no exact outline, and its coverage is 1/2 exactly on the hard boundary (e = 0), so the
+/// hard outline is the middle of the soft edge and the limit of the design as the bleed goes
+/// to 0. Filled paths with blurred edges would be an approximation of a different kind
+/// (SVG filters blur in screen space, not along the deformed design), so they are not drawn;
+/// VectorDesign::bleed says a design had one, so a caller can tell the user.
 
 #include "marbler/Genome.h"
 
@@ -63,6 +72,7 @@ struct VectorDesign {
     std::size_t droppedAsStraight = 0; ///< vertices removed by simplification
     std::size_t outlinesOutside = 0;  ///< inks pushed wholly out of the design space, left out
     std::size_t gapsAtDepthCap = 0;   ///< gaps wider than the tolerance at VectorOptions::maxDepth
+    double bleed = 0.0; ///< the genome's soft edges, drawn as their hard middles (see above)
 };
 
 /// Traces every ink of a flat genome, on every core. Throws InputError for a solid (3D) genome, for a genome

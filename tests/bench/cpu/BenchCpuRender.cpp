@@ -307,6 +307,85 @@ void scalarBaseline(benchmark::State& state, const Case& c) {
 void BM_Flame2D_ScalarReference(benchmark::State& state) { scalarBaseline(state, flameCase()); }
 void BM_SlateSlice3D_ScalarReference(benchmark::State& state) { scalarBaseline(state, slateSliceCase()); }
 
+/// One flow (version 2) alone, on one thread: the cost of one implicit midpoint step per sample
+/// (its fixed-point iterations included), for the tile kernel and for the scalar reference, on
+/// a tile of points across the first cell (the cavity's box).
+PreparedOp benchFlow(FlowField field) {
+    Operation op;
+    op.tool = Tool::Flow;
+    op.field = field;
+    op.center = {100.0, 80.0, 0.0};
+    op.angle = 12.0;
+    op.extent = {260.0, 210.0};
+    op.speed = 80.0;
+    op.time = 2.0;
+    op.steps = 64; // at least minimumFlowSteps (32 U T Lmax / Lmin^2 = 38)
+    return prepare(op, 2);
+}
+
+void flowKernel(benchmark::State& state, FlowField field) {
+    const PreparedOp op = benchFlow(field);
+    auto tile = std::make_unique<kernel::Tile>();
+    std::vector<int> colors(kernel::TileSize);
+    std::int64_t samples = 0;
+    for (auto _ : state) {
+        for (int k = 0; k < kernel::TileSize; ++k) {
+            tile->x[k] = 110.0 + 0.45 * k;
+            tile->y[k] = 90.0 + 0.35 * k;
+            tile->id[k] = k;
+        }
+        kernel::traceTile(&op, 1, 2, *tile, kernel::TileSize, colors.data(), nullptr, nullptr);
+        benchmark::DoNotOptimize(tile->x);
+        samples += kernel::TileSize;
+    }
+    state.counters["sample_steps_per_s"] = benchmark::Counter(double(samples) * op.steps, benchmark::Counter::kIsRate);
+    state.counters["ns_per_sample_step"] = benchmark::Counter(
+        double(samples) * op.steps, benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
+        benchmark::Counter::OneK::kIs1000);
+    state.SetLabel(cpuKernel().name);
+}
+
+void flowReference(benchmark::State& state, FlowField field) {
+    const PreparedOp op = benchFlow(field);
+    std::int64_t samples = 0;
+    for (auto _ : state) {
+        for (int k = 0; k < kernel::TileSize; ++k) {
+            glm::dvec3 q = inverseMap(op, glm::dvec3(110.0 + 0.45 * k, 90.0 + 0.35 * k, 0.0));
+            benchmark::DoNotOptimize(q);
+        }
+        samples += kernel::TileSize;
+    }
+    state.counters["sample_steps_per_s"] = benchmark::Counter(double(samples) * op.steps, benchmark::Counter::kIsRate);
+    state.counters["ns_per_sample_step"] = benchmark::Counter(
+        double(samples) * op.steps, benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
+        benchmark::Counter::OneK::kIs1000);
+}
+void BM_FlowCells_Kernel(benchmark::State& state) { flowKernel(state, FlowField::Cells); }
+void BM_FlowCells_ScalarReference(benchmark::State& state) { flowReference(state, FlowField::Cells); }
+void BM_FlowCavity_Kernel(benchmark::State& state) { flowKernel(state, FlowField::Cavity); }
+void BM_FlowCavity_ScalarReference(benchmark::State& state) { flowReference(state, FlowField::Cavity); }
+
+/// The bleed test design (tests/data/render/bleed-2d) rendered on one thread at 512 x 410 with
+/// its bleed and with bleed 0: what soft edges cost (every ink met is composited, and a point
+/// stops only where an ink covers it wholly).
+const Case& bleedCase(bool soft) {
+    static const Case hard = [] {
+        Case c = makeCase("/render/bleed-2d.marble.json", 512);
+        c.settings.height = 410;
+        c.genome.bleed = 0.0;
+        c.sampleOps = countSampleOps(c.genome, c.settings);
+        return c;
+    }();
+    static const Case bled = [] {
+        Case c = hard;
+        c.genome.bleed = loadGenome(std::string(MARBLER_TEST_DATA) + "/render/bleed-2d.marble.json").bleed;
+        return c;
+    }();
+    return soft ? bled : hard;
+}
+void BM_Bleed2D_Hard_OneThread(benchmark::State& state) { runRenderer(state, bleedCase(false), 1); }
+void BM_Bleed2D_Soft_OneThread(benchmark::State& state) { runRenderer(state, bleedCase(true), 1); }
+
 // Real time: the renderer's own threads do the work, so the calling thread's CPU time would
 // overstate the rate.
 BENCHMARK(BM_Flame2D_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -326,6 +405,14 @@ BENCHMARK(BM_SlateSlice3D_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime
 BENCHMARK(BM_SlateSlice3D_AllThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SlateSlice3D_KernelOnly)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SlateSlice3D_ScalarReference)->Unit(benchmark::kMillisecond)->UseRealTime();
+// Version 2: a flow step per sample; soft edges against hard ones (sample_ops_per_s of both
+// counts the hard rule's traversal, so the ratio of the times is the cost of bleed).
+BENCHMARK(BM_FlowCells_Kernel)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FlowCells_ScalarReference)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FlowCavity_Kernel)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FlowCavity_ScalarReference)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Bleed2D_Hard_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Bleed2D_Soft_OneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
 
