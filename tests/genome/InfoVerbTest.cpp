@@ -45,6 +45,12 @@ TEST(InfoVerb, SummarisesAVersionTwoGenome) {
     EXPECT_NE(run.out.find("operations: 8 (line 1, comb 1, wave 1, circle 1, vortex 1, stretch 1, flow 2)\n"),
               std::string::npos)
         << run.out;
+    const std::string paper = (test::dataDir() / "examples" / "marbled-paper.marble.json").string();
+    run = test::runMarbler({"info", paper});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("version:    2\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("bleed:      1.2 design units\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("operations: 5 (vortex 1, stretch 3, flow 1)\n"), std::string::npos) << run.out;
     run = test::runMarbler({"info", genomeFile("valid", "base-3d-v2")});
     EXPECT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.out.find("version:    2\n"), std::string::npos) << run.out;
