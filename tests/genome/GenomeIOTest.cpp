@@ -210,6 +210,21 @@ TEST(GenomeIO, UnknownKeysWarnAndLoad) {
     EXPECT_EQ(text.find("comment"), std::string::npos);
 }
 
+TEST(GenomeIO, UnknownKeysOfVersionTwoStrokesWarn) {
+    // A key of another tool is unknown here: a flow has no radius, a stretch no core; both are
+    // warned about with their place and ignored, and the file loads.
+    nlohmann::ordered_json json =
+        nlohmann::ordered_json::parse(test::readFile(genomeData() / "valid" / "base-2d-v2.marble.json"));
+    json["operations"][5]["core"] = 5;
+    json["operations"][6]["radius"] = 10;
+    std::vector<std::string> warnings;
+    Genome g = parseGenome(json.dump(), "v2", &warnings);
+    EXPECT_EQ(warnings, (std::vector<std::string>{"v2: operations[5]: unknown key \"core\" ignored",
+                                                  "v2: operations[6]: unknown key \"radius\" ignored"}));
+    EXPECT_EQ(g.operations[5].core, 0.0);
+    EXPECT_EQ(serializeGenome(g).find("\"radius\": 10"), std::string::npos);
+}
+
 TEST(GenomeIO, ParsedValuesAndNormalisation) {
     Genome g = loadGenome(genomeData() / "valid" / "edge-3d.marble.json");
     EXPECT_EQ(g.dimension, 3);
