@@ -17,9 +17,10 @@ namespace {
 constexpr const char* InfoHelp = R"(usage: marbler info GENOME
 
 Checks a genome file (or the genome inside a PNG or TIFF image Marbler wrote) against every
-rule of the format and prints a summary: dimension,
-size, palette, background, how many entries of each tool lie in `initial` and `operations`,
-the source image and the design's name, if any. Unknown keys, and a source image that lies
+rule of the format and prints a summary: the format version the design needs (1, or 2 when it
+uses a version-2 tool, core or bleed; what Marbler writes it as), dimension, size, palette,
+background, the bleed when set, how many entries of each tool lie in `initial` and
+`operations`, the source image and the design's name, if any. Unknown keys, and a source image that lies
 outside the genome's folder (which `render` reads only with --allow-external-source), are
 reported as warnings on stderr; the image itself is not read.
 
@@ -71,6 +72,9 @@ int runInfo(std::span<const std::string> words) {
 
         std::ostringstream out;
         out << "file:       " << file << '\n';
+        // The version the design needs, which need not be the one its file says (a version-2
+        // file that uses nothing new is saved back as version 1).
+        out << "version:    " << requiredVersion(genome) << '\n';
         out << "dimension:  " << genome.dimension << '\n';
         out << "size:       " << number(genome.size.x) << " x " << number(genome.size.y);
         if (genome.dimension == 3) out << " x " << number(genome.size.z);
@@ -79,6 +83,7 @@ int runInfo(std::span<const std::string> words) {
         for (const Color& color : genome.palette) out << ' ' << toHex(color);
         out << '\n';
         out << "background: " << toHex(genome.background) << '\n';
+        if (genome.bleed > 0.0) out << "bleed:      " << number(genome.bleed) << " design units\n";
         out << "initial:    " << countsByTool(genome.initial) << '\n';
         out << "operations: " << countsByTool(genome.operations) << '\n';
         if (genome.source) {

@@ -19,6 +19,7 @@ constexpr std::uint64_t PaletteStream = 0x70616c6574746531ULL;
 constexpr std::uint64_t InitialStream = 0x696e697469616c31ULL;
 constexpr std::uint64_t StrokeStream = 0x7374726f6b657331ULL;
 constexpr std::uint64_t NameStream = 0x6e616d6573313131ULL;
+constexpr std::uint64_t Version2Stream = 0x76657273696f6e32ULL;
 
 constexpr double Pi = 3.141592653589793;
 constexpr double SqrtHalf = 0.7071067811865476;
@@ -346,6 +347,86 @@ constexpr std::array<const char*, 32> Nouns{
     "Veil", "Spiral", "Lattice", "Estuary", "Garden", "Mosaic", "Cloud", "Wake",
 };
 
+/// The stretch passes of a procedural marbled paper: one to three passes across the whole
+/// design, each at a right angle to the one before, with teeth a jittered spacing apart from
+/// the edge the pass's normal points away from to the far edge, so that every point lies
+/// between two teeth.
+void stretchPasses(StrokeMaker& make, std::vector<Operation>& out) {
+    Pcg32& rng = make.rng;
+    const int passes = rng.chance(0.2) ? 1 : rng.chance(0.7) ? 2 : 3;
+    int compass = 2 * static_cast<int>(rng.below(4)); // along a side of the bath
+    for (int pass = 0; pass < passes; ++pass) {
+        const Compass& c = Compass8[static_cast<std::size_t>(compass)];
+        // N = (-sin a, cos a): down at 0, left at 90, up at 180, right at 270.
+        const double nx = -c.my, ny = c.mx;
+        const double w = make.size.x, h = make.size.y;
+        Operation op = defaultOperation(Tool::Stretch, 2, {nx < 0.0 ? w : 0.0, ny < 0.0 ? h : 0.0, 0.0});
+        op.angle = c.angle;
+        const double across = nx != 0.0 ? w : h;
+        const double spacing = make.len(40, 160);
+        op.teeth = {0.0};
+        while (op.teeth.back() < across) op.teeth.push_back(tenth(op.teeth.back() + spacing * rng.uniform(0.7, 1.3)));
+        op.shift = make.signedLen(20, 90);
+        op.power = tenth(rng.uniform(0.3, 2.0));
+        out.push_back(op);
+        compass = (compass + (rng.chance(0.5) ? 2 : 6)) % 8; // turn a quarter, either way
+    }
+}
+
+/// A steady flow over the design: a lattice of cells, or one cavity swirl in a box inside it.
+/// Its displacement (speed times time) is a fraction of the cell or box, and it takes the
+/// fewest steps the format allows, at most about fifty, so it stays quick to render.
+Operation randomFlow(StrokeMaker& make) {
+    Pcg32& rng = make.rng;
+    const bool cells = rng.chance(0.6);
+    Operation op = defaultOperation(Tool::Flow, 2, {0.0, 0.0, 0.0});
+    op.field = cells ? FlowField::Cells : FlowField::Cavity;
+    double lx = cells ? make.len(150, 450) : make.len(350, 650);
+    double ly = tenth(lx * rng.uniform(0.7, 1.4));
+    op.extent = {lx, ly};
+    if (cells) {
+        op.center = tidy(uniformPoint(rng, make.size, 2), 2);
+        op.angle = Compass8[static_cast<std::size_t>(compassIndex(rng))].angle;
+    } else {
+        // The box inside the design, upright (its lid on top or bottom).
+        glm::dvec3 room(std::max(0.0, make.size.x - lx), std::max(0.0, make.size.y - ly), 0.0);
+        op.angle = 0.0;
+        op.center = tidy(uniformPoint(rng, room, 2), 2);
+    }
+    op.time = tenth(rng.uniform(1.0, 3.0));
+    const double displacement = std::min(lx, ly) * (cells ? rng.uniform(0.2, 0.7) : rng.uniform(0.3, 0.9));
+    op.speed = (rng.chance(0.5) ? 1.0 : -1.0) * std::max(0.1, tenth(displacement / op.time));
+    op.steps = minimumFlowSteps(op);
+    return op;
+}
+
+/// Version 2's touches on a 2D design, drawn from their own stream so that the stone pattern
+/// and the strokes of a seed stay those version 1 drew: now and then stretch passes first
+/// (the marbled-paper look; alone, or followed by the seed's strokes), a finite core in its
+/// swirls, a flow, and a slight bleed. A design without any is still version 1.
+void addVersion2Touches(Pcg32& rng, Genome& g) {
+    StrokeMaker make{rng, 2, g.size, std::max(g.size.x, g.size.y), {}};
+    if (rng.chance(0.25)) {
+        std::vector<Operation> passes;
+        stretchPasses(make, passes);
+        if (rng.chance(0.4)) g.operations.clear(); // a plain marbled paper
+        g.operations.insert(g.operations.begin(), passes.begin(), passes.end());
+    }
+    if (rng.chance(0.35))
+        for (Operation& op : g.operations)
+            if (op.tool == Tool::Circle || op.tool == Tool::Vortex) op.core = make.len(8, 60);
+    if (rng.chance(0.12)) {
+        Operation flow = randomFlow(make);
+        // Most often last, as a finishing stir; sometimes before the last stroke, unless that
+        // is a stretch pass (they come first, together).
+        auto at = g.operations.end();
+        const bool beforeLast = rng.chance(0.3);
+        if (beforeLast && !g.operations.empty() && g.operations.back().tool != Tool::Stretch) --at;
+        g.operations.insert(at, flow);
+    }
+    if (rng.chance(0.3)) g.bleed = tenth(rng.uniform(0.5, 3.0));
+}
+
 } // namespace
 
 std::string colorWord(Color color) {
@@ -596,6 +677,10 @@ Genome randomGenome(std::uint64_t seed, int dimension) {
     g.initial = randomInitial(initialRng, dimension, g.size, static_cast<int>(g.palette.size()));
     Pcg32 strokeRng(seed, StrokeStream);
     g.operations = randomStrokes(strokeRng, dimension, g.size);
+    if (dimension == 2) {
+        Pcg32 version2Rng(seed, Version2Stream);
+        addVersion2Touches(version2Rng, g);
+    }
     g.meta = nlohmann::ordered_json::object();
     g.meta["name"] = randomName(seed, g);
     g.meta["seed"] = seed;

@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 
 namespace marbler {
@@ -65,8 +66,10 @@ double keepInRange(const ParamRange& range, double v, double margin) {
 }
 
 /// Perturbs every numeric parameter of one entry by its table's mutation scale. The tool,
-/// the 3D wave's shape and ink colours stay: they are the "sequence of tools", not its
-/// parameters.
+/// the 3D wave's shape, a flow's field and ink colours stay: they are the "sequence of tools",
+/// not its parameters. An optional version-2 parameter at its default (a swirl's core of 0)
+/// stays there too: alteration varies a design and adds no feature to it, so a version-1
+/// design's children stay version 1 (and draw exactly what they drew before version 2).
 void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
     const double side = largestSide(g);
     const double floorLength = 1e-3 * side; // lengths stay clearly > 0
@@ -75,6 +78,7 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
     const Operation original = op;
     bool hasFrame = false;
     for (const ParamSpec& spec : toolSpec(op.tool).params(g.dimension)) {
+        if (spec.optional && !usesVersion2(spec, op)) continue;
         const int n = componentCount(spec, op, g.dimension);
         switch (spec.kind) {
         case ParamKind::Position:
@@ -123,12 +127,16 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
             }
             break;
         case ParamKind::Teeth: {
-            // Each tooth moves; then they are put back in order, at least a hair apart.
+            // Each tooth moves; then they are put back in order, at least a hair apart (and at
+            // least one representable step where a hair is lost in rounding, far out).
             for (int i = 0; i < n; ++i)
                 setComponent(spec, op, i, getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side);
             std::sort(op.teeth.begin(), op.teeth.end());
-            for (std::size_t i = 1; i < op.teeth.size(); ++i)
-                op.teeth[i] = std::max(op.teeth[i], op.teeth[i - 1] + floorLength);
+            for (std::size_t i = 1; i < op.teeth.size(); ++i) {
+                const double before = op.teeth[i - 1];
+                op.teeth[i] = std::max({op.teeth[i], before + floorLength,
+                                        std::nextafter(before, std::numeric_limits<double>::infinity())});
+            }
             break;
         }
         case ParamKind::Count: // a flow's steps follow its speed, time and size, below

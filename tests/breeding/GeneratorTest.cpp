@@ -55,14 +55,23 @@ TEST(Generator, SameSeedGivesIdenticalText) {
         }
 }
 
-// Committed outputs of seed 7 pin the generator across compilers, libraries and machines (and
-// catch an unintended change: a deliberate one regenerates them and bumps GeneratorVersion).
-TEST(Generator, MatchesTheCommittedDesignsOfSeedSeven) {
-    for (int dimension : {2, 3}) {
-        std::filesystem::path file =
-            test::dataDir() / "breeding" / ("random-" + std::to_string(dimension) + "d-seed-7.marble.json");
+// Committed outputs pin the generator across compilers, libraries and machines (and catch an
+// unintended change: a deliberate one regenerates them and bumps GeneratorVersion): seed 7 in
+// both dimensions, and flat seeds with version 2's touches (12: stretch passes and cored
+// swirls; 38: stretch passes and bleed; 55: a flow).
+TEST(Generator, MatchesTheCommittedDesigns) {
+    struct Pinned {
+        int dimension;
+        std::uint64_t seed;
+        int version;
+    };
+    for (const Pinned& pinned : {Pinned{2, 7, 1}, Pinned{3, 7, 1}, Pinned{2, 12, 2}, Pinned{2, 38, 2}, Pinned{2, 55, 2}}) {
+        std::filesystem::path file = test::dataDir() / "breeding" /
+                                     ("random-" + std::to_string(pinned.dimension) + "d-seed-" +
+                                      std::to_string(pinned.seed) + ".marble.json");
         Genome expected = loadGenome(file);
-        EXPECT_EQ(serializeGenome(randomGenome(7, dimension)), serializeGenome(expected)) << file;
+        EXPECT_EQ(serializeGenome(randomGenome(pinned.seed, pinned.dimension)), serializeGenome(expected)) << file;
+        EXPECT_EQ(requiredVersion(expected), pinned.version) << file;
     }
 }
 
@@ -194,6 +203,9 @@ TEST(Generator, StrokeFamiliesAllAppear) {
         EXPECT_TRUE(seen.count(Tool::Line));
         if (dimension == 3) {
             EXPECT_TRUE(seen.count(Tool::Sphere));
+        } else {
+            EXPECT_TRUE(seen.count(Tool::Stretch));
+            EXPECT_TRUE(seen.count(Tool::Flow));
         }
     }
     // Both 3D wave shapes, and now and then a spatter of sprayed ink.
@@ -207,6 +219,75 @@ TEST(Generator, StrokeFamiliesAllAppear) {
     EXPECT_EQ(shapes.size(), 2u);
     EXPECT_GT(sprayed, 20);
     EXPECT_LT(sprayed, 120);
+}
+
+TEST(Generator, FlatDesignsSometimesHaveVersionTwosTouches) {
+    // Out of 400 flat seeds: stretch passes in about a quarter (alone in some, before the
+    // seed's strokes in others), cores in about a third of the designs that swirl, a flow of
+    // either field in about one in eight, a slight bleed in about three in ten; the rest stay
+    // version 1. Solid designs have none of it.
+    const int seeds = 400;
+    int stretched = 0, stretchedOnly = 0, swirling = 0, cored = 0, flowing = 0, bled = 0, version1 = 0;
+    std::set<FlowField> fields;
+    std::set<std::vector<double>> teeth;
+    for (int s = 0; s < seeds; ++s) {
+        const Genome g = randomGenome(static_cast<std::uint64_t>(s), 2);
+        SCOPED_TRACE("seed " + std::to_string(s));
+        ASSERT_NO_THROW(validateGenome(g, "random"));
+        version1 += requiredVersion(g) == 1 ? 1 : 0;
+        const int stretches = countTool(g.operations, Tool::Stretch);
+        if (stretches > 0) {
+            ++stretched;
+            stretchedOnly += stretches == static_cast<int>(g.operations.size()) ? 1 : 0;
+            EXPECT_LE(stretches, 3);
+        }
+        for (std::size_t k = 0; k < g.operations.size(); ++k) {
+            const Operation& op = g.operations[k];
+            if (op.tool == Tool::Stretch) {
+                // The passes come first and every point of the design lies between two teeth.
+                EXPECT_LT(k, static_cast<std::size_t>(stretches));
+                const double across = op.angle == 0.0 || op.angle == 180.0 ? g.size.y : g.size.x;
+                EXPECT_EQ(op.teeth.front(), 0.0);
+                EXPECT_GE(op.teeth.back(), across);
+                EXPECT_GT(std::abs(op.shift), 0.0);
+                teeth.insert(op.teeth);
+            }
+            if (op.tool == Tool::Flow) {
+                fields.insert(op.field);
+                // The fewest steps the format allows, and few enough to render quickly.
+                EXPECT_EQ(op.steps, minimumFlowSteps(op));
+                EXPECT_LE(op.steps, 50);
+            }
+        }
+        flowing += countTool(g.operations, Tool::Flow) > 0 ? 1 : 0;
+        bool swirls = false, cores = false;
+        for (const Operation& op : g.operations)
+            if (op.tool == Tool::Circle || op.tool == Tool::Vortex) {
+                swirls = true;
+                cores = cores || op.core > 0.0;
+            }
+        swirling += swirls ? 1 : 0;
+        cored += cores ? 1 : 0;
+        if (g.bleed > 0.0) {
+            ++bled;
+            EXPECT_LE(g.bleed, 3.0);
+        }
+    }
+    auto between = [&](int count, double lo, double hi, const char* what) {
+        EXPECT_GE(count, lo * seeds) << what;
+        EXPECT_LE(count, hi * seeds) << what;
+    };
+    between(stretched, 0.17, 0.33, "stretch passes");
+    between(flowing, 0.07, 0.18, "flows");
+    between(bled, 0.22, 0.38, "bleeds");
+    between(version1, 0.3, 0.6, "version-1 designs");
+    EXPECT_GT(stretchedOnly, 0.2 * stretched);
+    EXPECT_LT(stretchedOnly, 0.6 * stretched);
+    EXPECT_GT(cored, 0.2 * swirling);
+    EXPECT_LT(cored, 0.5 * swirling);
+    EXPECT_EQ(fields.size(), 2u);
+    EXPECT_GT(teeth.size(), 0.9 * 2 * stretched) << "the passes' teeth differ from design to design";
+    for (std::uint64_t seed = 0; seed < 60; ++seed) EXPECT_EQ(requiredVersion(randomGenome(seed, 3)), 1) << seed;
 }
 
 TEST(Generator, RejectsOtherDimensions) {

@@ -220,6 +220,9 @@ TEST_P(Operators, AlterKeepsEveryParameterOfEveryToolInItsTablesRange) {
                 else if (std::isfinite(param.range.max)) setComponent(param, op, i, param.range.max);
             }
         }
+        // A flow's steps have a bound of their own, which depends on the other numbers: at its
+        // edge too, the fewest steps they allow.
+        if (spec.tool == Tool::Flow) op.steps = minimumFlowSteps(op);
         g.operations.push_back(op);
     }
     ASSERT_NO_THROW(validateGenome(g, "start"));
@@ -243,6 +246,127 @@ TEST_P(Operators, AlterKeepsEveryParameterOfEveryToolInItsTablesRange) {
         }
         ASSERT_NO_THROW(validateGenome(g, "child")) << "generation " << generation;
     }
+    // The version-2 numbers moved (none is stuck at its start), and a core at its edge stays a
+    // core: alteration never switches a feature on or off.
+    for (const Operation& op : g.operations) {
+        if (op.tool == Tool::Stretch) {
+            EXPECT_EQ(op.teeth.size(), 11u);
+        }
+        if (op.tool == Tool::Flow) {
+            EXPECT_GE(op.steps, minimumFlowSteps(op));
+            EXPECT_NE(op.time, 2.0);
+            EXPECT_NE(op.time, 1e-3);
+        }
+    }
+}
+
+/// A 2D design that uses every version-2 feature: a stretch, a flow of each field, a cored
+/// vortex and a bleed.
+Genome versionTwoDesign(std::uint64_t seed) {
+    Genome g = randomGenome(seed, 2);
+    Operation stretch = defaultOperation(Tool::Stretch, 2, {500, 500, 0});
+    stretch.shift = -35.0;
+    stretch.power = 1.5;
+    Operation cells = defaultOperation(Tool::Flow, 2, {500, 500, 0});
+    Operation cavity = defaultOperation(Tool::Flow, 2, {500, 500, 0});
+    cavity.field = FlowField::Cavity;
+    cavity.center = {150, 200, 0};
+    cavity.extent = {600, 450};
+    cavity.speed = -50.0;
+    cavity.steps = minimumFlowSteps(cavity);
+    Operation vortex = defaultOperation(Tool::Vortex, 2, {400, 600, 0});
+    vortex.core = 25.0;
+    g.operations.insert(g.operations.begin(), {stretch, cells, cavity, vortex});
+    g.bleed = 1.5;
+    return g;
+}
+
+/// The same design with no version-2 feature.
+Genome versionOneDesign(std::uint64_t seed) {
+    Genome g = randomGenome(seed, 2);
+    std::erase_if(g.operations, [](const Operation& op) { return toolSpec(op.tool).version > 1; });
+    for (Operation& op : g.operations) op.core = 0.0;
+    g.operations.push_back(defaultOperation(Tool::Vortex, 2, {400, 600, 0}));
+    g.bleed = 0.0;
+    return g;
+}
+
+TEST(OperatorsVersionTwo, AlteredDesignsStayValidVersionTwoAndReproducible) {
+    for (std::uint64_t seed = 0; seed < 10; ++seed) {
+        const Genome p = versionTwoDesign(seed);
+        ASSERT_NO_THROW(validateGenome(p, "parent"));
+        for (double strength : {0.1, 0.5, 1.0}) {
+            const std::vector<Genome> children = breed(request(GeneticOperator::Alter, {p}, seed, 6, strength));
+            const std::vector<Genome> again = breed(request(GeneticOperator::Alter, {p}, seed, 6, strength));
+            const std::vector<Genome> other = breed(request(GeneticOperator::Alter, {p}, seed + 100, 6, strength));
+            for (std::size_t i = 0; i < children.size(); ++i) {
+                const Genome& child = children[i];
+                SCOPED_TRACE("seed " + std::to_string(seed) + " strength " + std::to_string(strength) + " child " +
+                             std::to_string(i));
+                ASSERT_NO_THROW(validateGenome(child, "child"));
+                EXPECT_EQ(requiredVersion(child), 2);
+                EXPECT_EQ(child.bleed, p.bleed);
+                EXPECT_EQ(toolsOf(child.operations), toolsOf(p.operations));
+                const Operation& stretch = child.operations[0];
+                EXPECT_EQ(stretch.teeth.size(), p.operations[0].teeth.size());
+                EXPECT_NE(stretch.teeth, p.operations[0].teeth);
+                EXPECT_NE(stretch.shift, p.operations[0].shift);
+                for (std::size_t k : {1u, 2u}) {
+                    const Operation& flow = child.operations[k];
+                    EXPECT_EQ(flow.field, p.operations[k].field);
+                    EXPECT_GE(flow.steps, minimumFlowSteps(flow));
+                    EXPECT_GE(flow.steps, p.operations[k].steps);
+                }
+                EXPECT_GT(child.operations[3].core, 0.0);
+                // Saved and loaded, the child is the same design.
+                EXPECT_EQ(parseGenome(serializeGenome(child), "child"), child);
+                // The same seed gives the same child; another seed another one.
+                EXPECT_EQ(serializeGenome(again[i]), serializeGenome(child));
+                EXPECT_NE(genomeId(other[i]), genomeId(child));
+            }
+        }
+    }
+}
+
+TEST(OperatorsVersionTwo, AlteredVersionOneDesignsStayVersionOne) {
+    for (std::uint64_t seed = 0; seed < 10; ++seed) {
+        const Genome p = versionOneDesign(seed);
+        ASSERT_EQ(requiredVersion(p), 1);
+        for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, seed, 6, 1.0))) {
+            EXPECT_EQ(requiredVersion(child), 1) << "seed " << seed;
+            EXPECT_EQ(child.bleed, 0.0);
+            for (const Operation& op : child.operations) EXPECT_EQ(op.core, 0.0);
+        }
+    }
+    // A solid design too: its cores stay 0.
+    const Genome solid = randomGenome(3, 3);
+    ASSERT_EQ(requiredVersion(solid), 1);
+    for (const Genome& child : breed(request(GeneticOperator::Alter, {solid}, 3, 4, 1.0))) EXPECT_EQ(requiredVersion(child), 1);
+}
+
+TEST(OperatorsVersionTwo, RecombineAndSwapCarryWholeStrokes) {
+    const Genome a = versionTwoDesign(20), b = versionOneDesign(21);
+    for (const Genome& child : breed(request(GeneticOperator::Swap, {a, b}, 5, 2))) {
+        ASSERT_NO_THROW(validateGenome(child, "child"));
+        const bool homeIsA = child.initial == a.initial;
+        EXPECT_EQ(child.operations, homeIsA ? b.operations : a.operations);
+        EXPECT_EQ(child.bleed, homeIsA ? a.bleed : b.bleed);
+        EXPECT_EQ(requiredVersion(child), 2) << "a's bleed or a's strokes";
+    }
+    int withFlow = 0;
+    for (const Genome& child : breed(request(GeneticOperator::Recombine, {a, b}, 7, 16))) {
+        ASSERT_NO_THROW(validateGenome(child, "child"));
+        for (const Operation& op : child.operations) {
+            // Every stroke is one of a parent's, whole: a flow keeps its steps, a stretch its teeth.
+            bool found = false;
+            for (const Genome* parent : {&a, &b})
+                for (const Operation& q : parent->operations) found = found || q == op;
+            EXPECT_TRUE(found);
+            withFlow += op.tool == Tool::Flow ? 1 : 0;
+        }
+        EXPECT_EQ(parseGenome(serializeGenome(child), "child"), child);
+    }
+    EXPECT_GT(withFlow, 0);
 }
 
 TEST_P(Operators, AlterKeepsPositiveParametersPositiveEvenWhenTheyAreTiny) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -33,7 +34,7 @@ const InvalidCase InvalidCases[] = {
     {"not-an-object", ": must be a JSON object (got an array of 3)"},
     {"format-wrong", "format: must be \"marbler-genome\" (got \"marbler-genom\")"},
     {"format-missing", "format: missing"},
-    {"version-newer", "version: made by a newer version"},
+    {"version-newer", "version: made by a newer version of Marbler (format version 3; this one reads version 2)"},
     {"version-fraction", "version: must be an integer (got 1.5)"},
     {"dimension-four", "dimension: must be 2 or 3 (got 4)"},
     {"size-negative", "size[1]: must be > 0 (got -800)"},
@@ -75,6 +76,41 @@ const InvalidCase InvalidCases[] = {
     {"vector-2d-in-3d", "operations[3].center: must be an array of 3 numbers"},
     {"nested-too-deep", "nested deeper than 64 levels"},
     {"number-overflow", "line 43, column 13: JSON number overflow parsing '1e999'"},
+    // Version 2.
+    {"teeth-one", "operations[5].teeth: must be an array of 2 to 1000 numbers (got an array of 1)"},
+    {"teeth-too-many", "operations[5].teeth: must be an array of 2 to 1000 numbers (got an array of 1001)"},
+    {"teeth-not-array", "operations[5].teeth: must be an array of 2 to 1000 numbers (got 100)"},
+    {"teeth-not-number", "operations[5].teeth[1]: must be a number (got \"100\")"},
+    {"teeth-not-increasing", "operations[5].teeth[2]: must be greater than the tooth before it (100; got 100)"},
+    {"teeth-decreasing", "operations[5].teeth[5]: must be greater than the tooth before it (600; got -800)"},
+    {"shift-missing", "operations[5].shift: missing"},
+    {"shift-as-string", "operations[5].shift: must be a number (got \"40\")"},
+    {"power-zero", "operations[5].power: must be > 0 (got 0)"},
+    {"power-negative", "operations[5].power: must be > 0 (got -1)"},
+    {"field-unknown", "operations[6].field: must be \"cells\" or \"cavity\" (got \"vortex\")"},
+    {"field-missing", "operations[7].field: missing"},
+    {"flow-size-count", "operations[6].size: must be an array of 2 numbers (got an array of 1)"},
+    {"flow-size-zero", "operations[6].size[1]: must be > 0 (got 0)"},
+    {"speed-null", "operations[6].speed: must be a number (got null)"},
+    {"time-zero", "operations[6].time: must be > 0 (got 0)"},
+    {"time-negative", "operations[7].time: must be > 0 (got -1.5)"},
+    {"steps-fraction", "operations[6].steps: must be an integer (got 64.5)"},
+    {"steps-zero", "operations[6].steps: must be in [1, 10000] (got 0)"},
+    {"steps-too-many", "operations[6].steps: must be in [1, 10000] (got 10001)"},
+    {"steps-too-few", "operations[6].steps: must be at least 32 |speed| time max(size) / min(size)^2 = 16 (got 15)"},
+    {"steps-impossible", "operations[6].steps: cannot be enough: this speed, time and size need more than 10000 steps"},
+    {"core-negative", "operations[4].core: must be >= 0 (got -1)"},
+    {"core-as-string", "operations[3].core: must be a number (got \"25\")"},
+    {"bleed-negative", "bleed: must be >= 0 (got -0.5)"},
+    {"bleed-as-string", "bleed: must be a number (got \"1\")"},
+    {"stretch-in-3d", "operations[7].tool: \"stretch\" is not available in 3D (2D only)"},
+    {"flow-in-initial", "initial[2].tool: \"flow\" is not allowed in initial"},
+    {"v1-stretch", "operations[5].tool: \"stretch\" needs format version 2 (the file says version 1)"},
+    {"v1-flow", "operations[5].tool: \"flow\" needs format version 2 (the file says version 1)"},
+    {"v1-core", "operations[4].core: needs format version 2 (the file says version 1)"},
+    {"v1-core-zero", "operations[3].core: needs format version 2 (the file says version 1)"},
+    {"v1-core-3d", "operations[3].core: needs format version 2 (the file says version 1)"},
+    {"v1-bleed", "bleed: needs format version 2 (the file says version 1)"},
 };
 
 std::string loadError(const fs::path& file) {
@@ -147,7 +183,7 @@ TEST(GenomeIO, ErrorCarriesFileAndLocation) {
 }
 
 TEST(GenomeIO, ValidFilesLoad) {
-    for (const char* name : {"base-2d", "base-3d", "edge-3d"}) {
+    for (const char* name : {"base-2d", "base-3d", "edge-3d", "base-2d-v2", "base-3d-v2"}) {
         std::vector<std::string> warnings;
         fs::path file = genomeData() / "valid" / (std::string(name) + ".marble.json");
         Genome g = loadGenome(file, &warnings);
@@ -172,6 +208,21 @@ TEST(GenomeIO, UnknownKeysWarnAndLoad) {
     std::string text = serializeGenome(g);
     EXPECT_EQ(text.find("speed"), std::string::npos);
     EXPECT_EQ(text.find("comment"), std::string::npos);
+}
+
+TEST(GenomeIO, UnknownKeysOfVersionTwoStrokesWarn) {
+    // A key of another tool is unknown here: a flow has no radius, a stretch no core; both are
+    // warned about with their place and ignored, and the file loads.
+    nlohmann::ordered_json json =
+        nlohmann::ordered_json::parse(test::readFile(genomeData() / "valid" / "base-2d-v2.marble.json"));
+    json["operations"][5]["core"] = 5;
+    json["operations"][6]["radius"] = 10;
+    std::vector<std::string> warnings;
+    Genome g = parseGenome(json.dump(), "v2", &warnings);
+    EXPECT_EQ(warnings, (std::vector<std::string>{"v2: operations[5]: unknown key \"core\" ignored",
+                                                  "v2: operations[6]: unknown key \"radius\" ignored"}));
+    EXPECT_EQ(g.operations[5].core, 0.0);
+    EXPECT_EQ(serializeGenome(g).find("\"radius\": 10"), std::string::npos);
 }
 
 TEST(GenomeIO, ParsedValuesAndNormalisation) {
@@ -217,13 +268,17 @@ TEST(GenomeIO, RoundTripsExactly) {
     for (const auto& entry : fs::directory_iterator(genomeData() / "valid")) files.push_back(entry.path());
     std::vector<Genome> genomes;
     for (const fs::path& file : files) genomes.push_back(loadGenome(file));
-    for (int i = 0; i < 5; ++i) {
-        nlohmann::ordered_json probes = nlohmann::ordered_json::parse(
-            test::readFile(test::dataDir() / "conformance" / ("probes-" + std::to_string(i) + ".json")));
-        genomes.push_back(parseGenome(probes["genome"].dump(), "probes-" + std::to_string(i)));
+    // The examples hold a version-2 design (marbled-paper), so the tests that iterate them
+    // meet stretch, flow, a core and a bleed.
+    EXPECT_TRUE(std::any_of(genomes.begin(), genomes.end(), [](const Genome& g) { return requiredVersion(g) == 2; }));
+    for (const char* name : {"probes-0", "probes-1", "probes-2", "probes-3", "probes-4", "probes-v2-stretch",
+                             "probes-v2-core", "probes-v2-flow"}) {
+        nlohmann::ordered_json probes =
+            nlohmann::ordered_json::parse(test::readFile(test::dataDir() / "conformance" / (std::string(name) + ".json")));
+        genomes.push_back(parseGenome(probes["genome"].dump(), name));
     }
     genomes.push_back(smallGenome());
-    ASSERT_GE(genomes.size(), 12u);
+    ASSERT_GE(genomes.size(), 20u);
     for (const Genome& g : genomes) {
         std::string text = serializeGenome(g);
         Genome again = parseGenome(text, "saved");
@@ -309,6 +364,161 @@ TEST(GenomeIO, ValidateGenomeChecksInMemory) {
     bad = solid;
     bad.source = SourceImage{"a.png"};
     expectError(bad, "mem: source: only allowed in 2D designs");
+}
+
+TEST(GenomeIO, ValidateGenomeChecksVersionTwoInMemory) {
+    Genome g = loadGenome(genomeData() / "valid" / "base-2d-v2.marble.json");
+    ASSERT_EQ(g.operations[5].tool, Tool::Stretch);
+    ASSERT_EQ(g.operations[6].tool, Tool::Flow);
+    EXPECT_NO_THROW(validateGenome(g, "mem"));
+    const double inf = std::numeric_limits<double>::infinity();
+
+    auto expectError = [](const Genome& bad, const std::string& expected) {
+        try {
+            validateGenome(bad, "mem");
+            ADD_FAILURE() << "accepted; expected " << expected;
+        } catch (const GenomeError& e) {
+            EXPECT_EQ(std::string(e.what()), expected);
+        }
+    };
+    Genome bad = g;
+    bad.operations[5].teeth = {0.0};
+    expectError(bad, "mem: operations[5].teeth: must hold 2 to 1000 numbers (got 1)");
+    bad = g;
+    bad.operations[5].teeth.assign(1001, 0.0);
+    for (std::size_t i = 0; i < bad.operations[5].teeth.size(); ++i) bad.operations[5].teeth[i] = double(i);
+    expectError(bad, "mem: operations[5].teeth: must hold 2 to 1000 numbers (got 1001)");
+    bad.operations[5].teeth.pop_back();
+    EXPECT_NO_THROW(validateGenome(bad, "mem")) << "1,000 teeth are allowed";
+    bad = g;
+    bad.operations[5].teeth[3] = std::nan("");
+    expectError(bad, "mem: operations[5].teeth[3]: must be finite (got nan)");
+    bad = g;
+    bad.operations[5].teeth[1] = 0.0;
+    expectError(bad, "mem: operations[5].teeth[1]: must be greater than the tooth before it (0; got 0)");
+    bad = g;
+    bad.operations[5].shift = -inf;
+    expectError(bad, "mem: operations[5].shift: must be finite (got -inf)");
+    bad = g;
+    bad.operations[5].power = 0.0;
+    expectError(bad, "mem: operations[5].power: must be > 0 (got 0)");
+    bad = g;
+    bad.operations[6].extent.x = -250.0;
+    expectError(bad, "mem: operations[6].size[0]: must be > 0 (got -250)");
+    bad = g;
+    bad.operations[6].speed = inf;
+    expectError(bad, "mem: operations[6].speed: must be finite (got inf)");
+    bad = g;
+    bad.operations[6].time = 0.0;
+    expectError(bad, "mem: operations[6].time: must be > 0 (got 0)");
+    bad = g;
+    bad.operations[6].steps = 15;
+    expectError(bad, "mem: operations[6].steps: must be at least 32 |speed| time max(size) / min(size)^2 = 16 (got 15)");
+    bad.operations[6].steps = 16;
+    EXPECT_NO_THROW(validateGenome(bad, "mem")) << "exactly the fewest steps are enough";
+    bad = g;
+    bad.operations[6].steps = 0;
+    expectError(bad, "mem: operations[6].steps: must be in [1, 10000] (got 0)");
+    bad = g;
+    bad.operations[6].field = static_cast<FlowField>(7);
+    expectError(bad, "mem: operations[6].field: must be \"cells\" or \"cavity\"");
+    bad = g;
+    bad.operations[4].core = -0.5;
+    expectError(bad, "mem: operations[4].core: must be >= 0 (got -0.5)");
+    bad = g;
+    bad.bleed = std::nan("");
+    expectError(bad, "mem: bleed: must be finite (got nan)");
+    bad.bleed = inf;
+    expectError(bad, "mem: bleed: must be finite (got inf)");
+    bad.bleed = -1.0;
+    expectError(bad, "mem: bleed: must be >= 0 (got -1)");
+}
+
+TEST(GenomeIO, WriterWritesTheLowestVersion) {
+    // A design with no version-2 feature is written as version 1, byte for byte as before
+    // version 2 existed (written-v1 was saved by that writer), its cores of 0 and bleed of 0
+    // left out.
+    const fs::path old = genomeData() / "valid" / "written-v1.marble.json";
+    const std::string oldText = test::readFile(old);
+    Genome g = loadGenome(old);
+    EXPECT_EQ(requiredVersion(g), 1);
+    EXPECT_EQ(serializeGenome(g), oldText);
+    bool swirls = false;
+    for (Operation& op : g.operations)
+        if (op.tool == Tool::Circle || op.tool == Tool::Vortex) {
+            op.core = -0.0; // still the default: no turn changes
+            swirls = true;
+        }
+    ASSERT_TRUE(swirls) << "written-v1 should hold a circle or vortex";
+    g.bleed = 0.0;
+    EXPECT_EQ(serializeGenome(g), oldText);
+    for (const char* name : {"base-2d", "base-3d", "edge-3d"}) {
+        std::string text = serializeGenome(loadGenome(genomeData() / "valid" / (std::string(name) + ".marble.json")));
+        EXPECT_NE(text.find("\n  \"version\": 1,\n"), std::string::npos) << name;
+        EXPECT_EQ(text.find("core"), std::string::npos) << name;
+        EXPECT_EQ(text.find("bleed"), std::string::npos) << name;
+    }
+
+    // Each version-2 feature on its own makes it version 2, and only while it is there.
+    auto versionOf = [](const Genome& genome) {
+        return nlohmann::ordered_json::parse(serializeGenome(genome))["version"].get<int>();
+    };
+    Genome base = smallGenome();
+    ASSERT_EQ(versionOf(base), 1);
+    Genome cored = base;
+    cored.operations.push_back(defaultOperation(Tool::Vortex, 2, {400, 300, 0}));
+    EXPECT_EQ(versionOf(cored), 1);
+    cored.operations.back().core = 12.5;
+    EXPECT_EQ(versionOf(cored), 2);
+    EXPECT_NE(serializeGenome(cored).find("\"core\": 12.5\n"), std::string::npos) << serializeGenome(cored);
+    cored.operations.back().core = 0.0;
+    EXPECT_EQ(versionOf(cored), 1);
+    Genome bled = base;
+    bled.bleed = 0.25;
+    EXPECT_EQ(versionOf(bled), 2);
+    for (Tool tool : {Tool::Stretch, Tool::Flow}) {
+        Genome withTool = base;
+        withTool.operations.push_back(defaultOperation(tool, 2, {400, 300, 0}));
+        EXPECT_EQ(versionOf(withTool), 2) << toolSpec(tool).name;
+    }
+    // `bleed` sits between `source` and `meta`.
+    bled.source = SourceImage{"paper.png"};
+    std::string text = serializeGenome(bled);
+    EXPECT_LT(text.find("\"source\""), text.find("\"bleed\": 0.25,"));
+    EXPECT_LT(text.find("\"bleed\""), text.find("\"meta\""));
+}
+
+TEST(GenomeIO, VersionTwoRoundTripsExactly) {
+    for (const char* name : {"base-2d-v2", "base-3d-v2"}) {
+        const fs::path file = genomeData() / "valid" / (std::string(name) + ".marble.json");
+        Genome g = loadGenome(file);
+        EXPECT_EQ(requiredVersion(g), 2) << name;
+        std::string text = serializeGenome(g);
+        EXPECT_NE(text.find("\n  \"version\": 2,\n"), std::string::npos) << name;
+        Genome again = parseGenome(text, "saved");
+        EXPECT_EQ(again, g) << name;
+        EXPECT_EQ(serializeGenome(again), text) << name;
+        if (g.dimension == 3) continue; // its vectors are normalised on loading
+        // What the file says survives: the same JSON, key for key, as the file (whose numbers
+        // are all written in their shortest form), meta aside.
+        nlohmann::ordered_json written = nlohmann::ordered_json::parse(text), original =
+            nlohmann::ordered_json::parse(test::readFile(file));
+        EXPECT_EQ(written["operations"], original["operations"]) << name;
+        EXPECT_EQ(written["bleed"], original["bleed"]) << name;
+    }
+    // Awkward values keep every bit: shortest doubles in teeth, a tiny core, a negative shift.
+    Genome g = loadGenome(genomeData() / "valid" / "base-2d-v2.marble.json");
+    g.operations[5].teeth = {-0.1, 1e-300, 0.30000000000000004, 7.5e15, 1e300};
+    g.operations[5].shift = -1e-7;
+    g.operations[5].power = 3.0000000000000004;
+    g.operations[4].core = 5e-324;
+    g.operations[6].extent = {0.1, 1e-3};
+    g.operations[6].speed = -0.0;
+    g.operations[6].steps = minimumFlowSteps(g.operations[6]);
+    g.bleed = 0.1;
+    Genome again = parseGenome(serializeGenome(g), "saved");
+    EXPECT_EQ(again, g);
+    EXPECT_EQ(serializeGenome(again), serializeGenome(g));
 }
 
 TEST(GenomeIO, EntryLimit) {

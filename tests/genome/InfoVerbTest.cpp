@@ -32,6 +32,29 @@ TEST(InfoVerb, SummarisesAValidGenome) {
     EXPECT_NE(run.out.find("initial:    5 (drop 5)\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("operations: 4 (comb 2, wave 1, vortex 1)\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("name:       Five stones, combed and swirled\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("version:    1\n"), std::string::npos) << run.out;
+    EXPECT_EQ(run.out.find("bleed:"), std::string::npos) << "no bleed, no line: " << run.out;
+}
+
+TEST(InfoVerb, SummarisesAVersionTwoGenome) {
+    test::RunResult run = test::runMarbler({"info", genomeFile("valid", "base-2d-v2")});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.err, "");
+    EXPECT_NE(run.out.find("version:    2\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("bleed:      1.5 design units\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("operations: 8 (line 1, comb 1, wave 1, circle 1, vortex 1, stretch 1, flow 2)\n"),
+              std::string::npos)
+        << run.out;
+    const std::string paper = (test::dataDir() / "examples" / "marbled-paper.marble.json").string();
+    run = test::runMarbler({"info", paper});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("version:    2\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("bleed:      1.2 design units\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("operations: 5 (vortex 1, stretch 3, flow 1)\n"), std::string::npos) << run.out;
+    run = test::runMarbler({"info", genomeFile("valid", "base-3d-v2")});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("version:    2\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("bleed:      0.5 design units\n"), std::string::npos) << run.out;
 }
 
 TEST(InfoVerb, SummarisesASolidGenome) {
@@ -55,7 +78,8 @@ TEST(InfoVerb, WarnsAboutUnknownKeysButSucceeds) {
 }
 
 TEST(InfoVerb, BadGenomeGivesOneLineAndExit2) {
-    for (const char* name : {"radius-negative", "syntax-error", "nested-too-deep", "version-newer", "normal-parallel"}) {
+    for (const char* name : {"radius-negative", "syntax-error", "nested-too-deep", "version-newer", "normal-parallel",
+                             "v1-stretch", "v1-bleed", "steps-too-few", "teeth-not-increasing"}) {
         std::string file = genomeFile("invalid", name);
         test::RunResult run = test::runMarbler({"info", file});
         EXPECT_EQ(run.exitCode, 2) << name;

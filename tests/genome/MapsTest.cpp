@@ -1,8 +1,10 @@
-// The tool maps against the conformance data (maps.json, probes-*.json), and their two laws
-// on random tools and points: F^-1(F(P)) = P, and det(dF/dP) = 1 (area and volume kept).
+// The tool maps against the conformance data (maps.json, maps-v2.json, probes-*.json,
+// probes-v2-*.json), and their two laws on random tools and points: F^-1(F(P)) = P, and
+// det(dF/dP) = 1 (area and volume kept).
 
 #include "TestUtil.h"
 
+#include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
 #include "marbler/Random.h"
@@ -14,6 +16,7 @@
 #include <glm/matrix.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 using namespace marbler;
@@ -31,10 +34,21 @@ glm::dvec3 point(const Json& values) {
     return p;
 }
 
+/// The map conformance files: version 1's, then version 2's (core, stretch, flow).
+struct MapsFile {
+    const char* name;
+    int version; ///< the format version its cases are read as
+};
+constexpr MapsFile MapsFiles[] = {{"maps.json", 1}, {"maps-v2.json", 2}};
+
+/// The colour probe files of both versions.
+constexpr const char* ProbeFiles[] = {"probes-0.json", "probes-1.json", "probes-2.json", "probes-3.json", "probes-4.json",
+                                      "probes-v2-stretch.json", "probes-v2-core.json", "probes-v2-flow.json"};
+
 /// A genome of the given dimension that holds one operation, as the loader would see it. The
 /// palette is as large as the format allows so that any colour index of the data is valid.
-Json wrap(const Json& op, int dimension) {
-    Json genome = {{"format", "marbler-genome"}, {"version", 1}, {"dimension", dimension}};
+Json wrap(const Json& op, int dimension, int version) {
+    Json genome = {{"format", "marbler-genome"}, {"version", version}, {"dimension", dimension}};
     genome["size"] = dimension == 3 ? Json::array({1000, 1000, 1000}) : Json::array({1000, 1000});
     genome["background"] = "#000000";
     genome["palette"] = Json::array();
@@ -46,8 +60,8 @@ Json wrap(const Json& op, int dimension) {
     return genome;
 }
 
-PreparedOp loadOp(const Json& op, int dimension) {
-    Genome g = parseGenome(wrap(op, dimension).dump(), "maps.json");
+PreparedOp loadOp(const Json& op, int dimension, int version) {
+    Genome g = parseGenome(wrap(op, dimension, version).dump(), "maps.json");
     std::vector<PreparedOp> ops = prepare(g);
     EXPECT_EQ(ops.size(), 1u);
     return ops.at(0);
@@ -56,36 +70,55 @@ PreparedOp loadOp(const Json& op, int dimension) {
 } // namespace
 
 TEST(Maps, ConformanceCases) {
-    Json maps = readJson("maps.json");
-    const Json& cases = maps["cases"];
-    ASSERT_GE(cases.size(), 60u);
-    std::size_t checked = 0;
-    for (std::size_t c = 0; c < cases.size(); ++c) {
-        const Json& entry = cases[c];
-        int dimension = entry["dimension"].get<int>();
-        PreparedOp op = loadOp(entry["op"], dimension);
-        const Json& points = entry["points"];
-        ASSERT_EQ(points.size(), entry["forward"].size());
-        ASSERT_EQ(points.size(), entry["inverse"].size());
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            glm::dvec3 p = point(points[i]);
-            glm::dvec3 f = forwardMap(op, p), expectedF = point(entry["forward"][i]);
-            glm::dvec3 b = inverseMap(op, p), expectedB = point(entry["inverse"][i]);
-            for (int k = 0; k < dimension; ++k) {
-                EXPECT_NEAR(f[k], expectedF[k], 1e-6) << "case " << c << " (" << entry["op"].dump() << ") point " << i;
-                EXPECT_NEAR(b[k], expectedB[k], 1e-6) << "case " << c << " (" << entry["op"].dump() << ") point " << i;
+    for (const MapsFile& file : MapsFiles) {
+        Json maps = readJson(file.name);
+        const Json& cases = maps["cases"];
+        ASSERT_GE(cases.size(), file.version == 1 ? 60u : 14u) << file.name;
+        std::size_t checked = 0;
+        for (std::size_t c = 0; c < cases.size(); ++c) {
+            const Json& entry = cases[c];
+            int dimension = entry["dimension"].get<int>();
+            PreparedOp op = loadOp(entry["op"], dimension, file.version);
+            const Json& points = entry["points"];
+            ASSERT_EQ(points.size(), entry["forward"].size());
+            ASSERT_EQ(points.size(), entry["inverse"].size());
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                glm::dvec3 p = point(points[i]);
+                glm::dvec3 f = forwardMap(op, p), expectedF = point(entry["forward"][i]);
+                glm::dvec3 b = inverseMap(op, p), expectedB = point(entry["inverse"][i]);
+                for (int k = 0; k < dimension; ++k) {
+                    EXPECT_NEAR(f[k], expectedF[k], 1e-6)
+                        << file.name << " case " << c << " (" << entry["op"].dump() << ") point " << i;
+                    EXPECT_NEAR(b[k], expectedB[k], 1e-6)
+                        << file.name << " case " << c << " (" << entry["op"].dump() << ") point " << i;
+                }
+                ++checked;
             }
-            ++checked;
         }
+        EXPECT_GT(checked, file.version == 1 ? 1000u : 300u) << file.name;
     }
-    EXPECT_GT(checked, 1000u);
+}
+
+TEST(Maps, VersionTwoCasesNeedVersionTwo) {
+    // Each case of maps-v2.json uses a version-2 tool or parameter, so a version-1 file that
+    // holds it is refused: the cases test what they say they test.
+    Json maps = readJson("maps-v2.json");
+    for (const Json& entry : maps["cases"]) {
+        int dimension = entry["dimension"].get<int>();
+        EXPECT_THROW(parseGenome(wrap(entry["op"], dimension, 1).dump(), "maps-v2.json"), GenomeError) << entry["op"].dump();
+    }
 }
 
 TEST(Maps, ConformanceCasesCoverEveryToolOfTheRegistry) {
     // A tool without conformance cases fails here rather than going unchecked: every tool in
-    // every dimension it exists in, and every choice of its choice parameters (a wave's shapes).
-    const Json maps = readJson("maps.json");
-    const Json& cases = maps["cases"];
+    // every dimension it exists in, every choice of its choice parameters (a wave's shapes, a
+    // flow's fields), and every optional version-2 parameter (a swirl's core) away from its
+    // default, in maps.json and maps-v2.json together.
+    Json cases = Json::array();
+    for (const MapsFile& file : MapsFiles) {
+        const Json maps = readJson(file.name);
+        for (const Json& entry : maps["cases"]) cases.push_back(entry);
+    }
     for (int dimension : {2, 3}) {
         for (const ToolSpec& spec : allTools()) {
             if (!spec.available(dimension)) continue;
@@ -93,24 +126,32 @@ TEST(Maps, ConformanceCasesCoverEveryToolOfTheRegistry) {
             int count = 0;
             for (const Json& entry : cases)
                 if (entry["dimension"] == dimension && entry["op"]["tool"] == name) ++count;
-            EXPECT_GE(count, 2) << "maps.json has no conformance cases for " << spec.name << " in " << dimension << "D";
+            EXPECT_GE(count, 2) << "the maps files have no conformance cases for " << spec.name << " in " << dimension << "D";
             for (const ParamSpec& param : spec.params(dimension)) {
+                const std::string key(param.key);
                 for (std::string_view choice : param.choices) {
                     bool seen = false;
                     for (const Json& entry : cases)
                         seen = seen || (entry["dimension"] == dimension && entry["op"]["tool"] == name
-                                        && entry["op"].value(std::string(param.key), std::string()) == choice);
-                    EXPECT_TRUE(seen) << "maps.json has no " << spec.name << " with " << param.key << " \"" << choice
+                                        && entry["op"].value(key, std::string()) == choice);
+                    EXPECT_TRUE(seen) << "the maps files have no " << spec.name << " with " << param.key << " \"" << choice
                                       << "\" in " << dimension << "D";
                 }
+                if (!param.optional) continue;
+                bool seen = false;
+                for (const Json& entry : cases)
+                    seen = seen || (entry["dimension"] == dimension && entry["op"]["tool"] == name
+                                    && entry["op"].contains(key) && entry["op"][key].is_number()
+                                    && entry["op"][key].get<double>() != param.defaultValue);
+                EXPECT_TRUE(seen) << "the maps files have no " << spec.name << " with a " << param.key << " in " << dimension
+                                  << "D";
             }
         }
     }
 }
 
 TEST(Maps, ConformanceProbes) {
-    for (int i = 0; i < 5; ++i) {
-        std::string name = "probes-" + std::to_string(i) + ".json";
+    for (const std::string name : ProbeFiles) {
         Json data = readJson(name);
         Genome genome = parseGenome(data["genome"].dump(), name);
         std::vector<PreparedOp> ops = prepare(genome);
@@ -211,14 +252,36 @@ bool smoothAt(const PreparedOp& op, const glm::dvec3& p) {
             if (std::abs(u - t) < 1.0) return false;
         return true;
     }
-    case Tool::Flow: return true; // smooth (the cavity's edges are C1)
+    case Tool::Flow: {
+        // The cells' field is smooth everywhere; the cavity's velocity is continuous but its
+        // gradient jumps on the box's edges (the field stops there), so stay a unit off them.
+        if (op.field == FlowField::Cells) return true;
+        double x = glm::dot(rel, op.m), y = glm::dot(rel, op.n);
+        return std::min({std::abs(x), std::abs(x - op.size[0]), std::abs(y), std::abs(y - op.size[1])}) > 1.0;
+    }
     case Tool::Spray:
     case Tool::Wave: return true; // smooth everywhere
     }
     return true;
 }
 
+/// How far F^-1(F(P)) may lie from P. The closed-form maps undo themselves to rounding:
+/// 1e-9 of |P|. A flow undoes itself only to its solver's tolerance: each of its n forward and
+/// n backward implicit midpoint steps stops its fixed-point iteration when an iterate moves
+/// less than tol = 1e-12 (Lx + Ly), and the iteration contracts by at least half (the steps
+/// rule), so each step lands within tol of its exact solution; later steps carry that error
+/// on, stretched by at most the flow's shear, for which a factor 10 is allowed: 2 n tol 10.
+double roundTripTolerance(const PreparedOp& op, const glm::dvec3& p) {
+    double rounding = 1e-9 * std::max(1.0, glm::length(p));
+    return op.tool == Tool::Flow ? rounding + 20.0 * op.steps * op.tolerance : rounding;
+}
+
 double jacobianDeterminant(const PreparedOp& op, const glm::dvec3& p, int dimension) {
+    // A flow's map is its solver's iterate, a smooth function of P as long as the number of
+    // fixed-point iterations stays the same; where it changes, the iterate jumps by less than
+    // half the tolerance (about 1e-9 units), which this step turns into less than 1e-6 of
+    // the determinant. A larger step would not help: a strong flow's truncation error is
+    // already 1e-6 at a step of 1e-2.
     constexpr double H = 1e-4;
     glm::dmat3 j(1.0);
     for (int k = 0; k < dimension; ++k) {
@@ -234,30 +297,46 @@ double jacobianDeterminant(const PreparedOp& op, const glm::dvec3& p, int dimens
 
 TEST(Maps, InverseUndoesForwardAndKeepsMeasure) {
     Pcg32 rng(20240601);
+    // Points the version-2 maps really moved, by kind: a swirl with a core, a stretch, a flow
+    // of cells and a flow in a cavity (most points outside a cavity's box stay where they are).
+    int moved[4] = {0, 0, 0, 0};
+    const char* movedWhat[4] = {"swirls with a core", "stretches", "flows of cells", "flows in a cavity"};
+    double worstFlow = 0.0; // the largest flow round trip error, in units of its tolerance
     for (int dimension : {2, 3}) {
         for (const ToolSpec& spec : allTools()) {
             if (!spec.available(dimension)) continue;
             int checked = 0;
             for (int trial = 0; trial < 40; ++trial) {
                 PreparedOp op = prepare(randomOperation(rng, spec.tool, dimension), dimension);
+                int kind = op.core2 > 0.0 ? 0
+                         : op.tool == Tool::Stretch ? 1
+                         : op.tool == Tool::Flow    ? (op.field == FlowField::Cells ? 2 : 3)
+                                                    : -1;
                 for (int i = 0; i < 50; ++i) {
                     glm::dvec3 p(rng.uniform(-200, 1200), rng.uniform(-200, 1200),
                                  dimension == 3 ? rng.uniform(-200, 1200) : 0.0);
+                    // Half the points of a cavity in its box, where the flow moves anything.
+                    if (kind == 3 && rng.chance(0.5))
+                        p = op.c + rng.uniform(0, op.size[0]) * op.m + rng.uniform(0, op.size[1]) * op.n;
                     if (!smoothAt(op, p)) continue;
                     glm::dvec3 q = forwardMap(op, p);
                     glm::dvec3 back = inverseMap(op, q);
-                    double scale = std::max(1.0, glm::length(p));
-                    ASSERT_LE(glm::length(back - p) / scale, 1e-9)
+                    double tolerance = roundTripTolerance(op, p);
+                    ASSERT_LE(glm::length(back - p), tolerance)
                         << spec.name << " " << dimension << "D at (" << p.x << ", " << p.y << ", " << p.z << ")";
+                    if (op.tool == Tool::Flow) worstFlow = std::max(worstFlow, glm::length(back - p) / tolerance);
                     double det = jacobianDeterminant(op, p, dimension);
                     ASSERT_NEAR(det, 1.0, 1e-6)
                         << spec.name << " " << dimension << "D at (" << p.x << ", " << p.y << ", " << p.z << ")";
                     ++checked;
+                    if (kind >= 0 && glm::length(q - p) > 1e-3) ++moved[kind];
                 }
             }
             EXPECT_GT(checked, 1000) << spec.name << " " << dimension << "D";
         }
     }
+    for (int kind = 0; kind < 4; ++kind) EXPECT_GT(moved[kind], 300) << movedWhat[kind];
+    std::printf("flow round trips: worst error %.3g of the tolerance\n", worstFlow);
 }
 
 TEST(Maps, ForwardPushesOutOfTheInk) {

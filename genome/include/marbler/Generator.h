@@ -2,7 +2,9 @@
 /// The seeded random genome generator: designs people would keep. A bath covered with drops
 /// the way marblers lay a stone pattern (a harmonious palette, some drops inside others), then
 /// a few strokes of the traditional families (combed, chevron/nonpareil, waved, swirled,
-/// vortices). The same seed gives the same genome on every machine.
+/// vortices). A flat design now and then has version 2's touches: stretch passes (the
+/// marbled-paper look), swirls with a finite core, a flow, a slight bleed; a solid one none.
+/// The same seed gives the same genome on every machine.
 ///
 /// Determinism: every draw comes from Pcg32 and the generator itself uses only IEEE basic
 /// operations and square roots (correctly rounded everywhere): directions are drawn by
@@ -20,7 +22,7 @@ namespace marbler {
 
 /// What `meta.generator` says of a genome made by randomGenome; bump it when the same seed
 /// starts giving a different design.
-inline constexpr const char* GeneratorVersion = "marbler-random-2";
+inline constexpr const char* GeneratorVersion = "marbler-random-3";
 
 /// A complete random genome of dimension 2 or 3 (1000 units a side), with
 /// meta {"name", "seed", "generator"}. Throws InputError for another dimension.

@@ -15,6 +15,13 @@
 /// | recombine | crossover of the parents' strokes       | the home parent's strokes, unchanged   |
 /// | swap      | the other parent's strokes              | the home parent's strokes, unchanged   |
 ///
+/// Alteration keeps every parameter valid: lengths stay > 0, a stretch's teeth in strictly
+/// increasing order, a flow's steps at least the fewest its new speed, time and size need (a
+/// draw that would need more than the format allows keeps the old speed, time and size); a
+/// core of 0 stays 0, so a version-1 design's children are version 1. Strokes travel whole
+/// (recombine, swap: a flow with its steps), and a child has its home parent's `bleed`, which
+/// belongs with the inks like the palette.
+///
 /// reinit draws a new initial drop pattern (randomInitial) unless the initial state is locked;
 /// then it draws a new palette instead, unless that too is locked. No operator touches a locked
 /// part; with everything locked a child has the home parent's content.

@@ -53,7 +53,7 @@ case("syntax-error", base2, None, '{\n  "format": "marbler-genome",\n  "version"
 case("not-an-object", base2, None, '[1, 2, 3]\n')
 case("format-wrong", base2, setk(["format"], "marbler-genom"))
 case("format-missing", base2, delk(["format"]))
-case("version-newer", base2, setk(["version"], 2))
+case("version-newer", base2, setk(["version"], 3))
 case("version-fraction", base2, setk(["version"], 1.5))
 case("dimension-four", base2, setk(["dimension"], 4))
 case("size-negative", base2, setk(["size", 1], -800))
@@ -95,10 +95,66 @@ case("shape-unknown", base3, setk(["operations", 1, "shape"], "egg"))
 case("vector-2d-in-3d", base3, setk(["operations", 3, "center"], [500, 500]))
 case("nested-too-deep", base2, None, json.dumps(base2)[:-1] + ', "meta": ' + '[' * 100 + ']' * 100 + '}\n')
 case("number-overflow", base2, None, json.dumps(base2, indent=1).replace('"alpha": 60', '"alpha": 1e999', 1))
+# Version 2: a 2D design with every version-2 feature (cored swirls, stretch, both flows,
+# bleed) and a solid one with cored swirls and bleed.
+base2v2 = copy.deepcopy(base2)
+base2v2["version"] = 2
+base2v2["operations"][3]["core"] = 25
+base2v2["operations"][4]["core"] = 40
+base2v2["operations"] += [
+  {"tool": "stretch", "origin": [0, 0], "angle": 0, "teeth": [0, 100, 250, 400, 600, 800], "shift": 40, "power": 0.5},
+  {"tool": "flow", "field": "cells", "origin": [0, 0], "angle": 0, "size": [250, 200], "speed": 40, "time": 2, "steps": 64},
+  {"tool": "flow", "field": "cavity", "origin": [100, 100], "angle": 10, "size": [600, 500], "speed": -30, "time": 1.5, "steps": 8}]
+base2v2["bleed"] = 1.5
+base2v2["meta"] = {"name": "base 2D, version 2"}
+base3v2 = copy.deepcopy(base3)
+base3v2["version"] = 2
+base3v2["operations"][3]["core"] = 30
+base3v2["operations"][4]["core"] = 12.5
+base3v2["operations"][5]["core"] = 60
+base3v2["bleed"] = 0.5
+stretch = {"tool": "stretch", "origin": [0, 0], "angle": 0, "teeth": [0, 500], "shift": 40, "power": 1}
+flow = {"tool": "flow", "field": "cells", "origin": [0, 0], "angle": 0, "size": [250, 250], "speed": 10, "time": 1, "steps": 10}
+case("teeth-one", base2v2, setk(["operations", 5, "teeth"], [0]))
+case("teeth-too-many", base2v2, setk(["operations", 5, "teeth"], list(range(1001))))
+case("teeth-not-array", base2v2, setk(["operations", 5, "teeth"], 100))
+case("teeth-not-number", base2v2, setk(["operations", 5, "teeth", 1], "100"))
+case("teeth-not-increasing", base2v2, setk(["operations", 5, "teeth", 2], 100))
+case("teeth-decreasing", base2v2, setk(["operations", 5, "teeth", 5], -800))
+case("shift-missing", base2v2, delk(["operations", 5, "shift"]))
+case("shift-as-string", base2v2, setk(["operations", 5, "shift"], "40"))
+case("power-zero", base2v2, setk(["operations", 5, "power"], 0))
+case("power-negative", base2v2, setk(["operations", 5, "power"], -1))
+case("field-unknown", base2v2, setk(["operations", 6, "field"], "vortex"))
+case("field-missing", base2v2, delk(["operations", 7, "field"]))
+case("flow-size-count", base2v2, setk(["operations", 6, "size"], [250]))
+case("flow-size-zero", base2v2, setk(["operations", 6, "size", 1], 0))
+case("speed-null", base2v2, setk(["operations", 6, "speed"], None))
+case("time-zero", base2v2, setk(["operations", 6, "time"], 0))
+case("time-negative", base2v2, setk(["operations", 7, "time"], -1.5))
+case("steps-fraction", base2v2, setk(["operations", 6, "steps"], 64.5))
+case("steps-zero", base2v2, setk(["operations", 6, "steps"], 0))
+case("steps-too-many", base2v2, setk(["operations", 6, "steps"], 10001))
+case("steps-too-few", base2v2, setk(["operations", 6, "steps"], 15))
+case("steps-impossible", base2v2, setk(["operations", 6, "speed"], 40000))
+case("core-negative", base2v2, setk(["operations", 4, "core"], -1))
+case("core-as-string", base2v2, setk(["operations", 3, "core"], "25"))
+case("bleed-negative", base2v2, setk(["bleed"], -0.5))
+case("bleed-as-string", base2v2, setk(["bleed"], "1"))
+case("stretch-in-3d", base3v2, lambda g: g["operations"].append(dict(stretch, origin=[0, 0, 0])))
+case("flow-in-initial", base2v2, lambda g: g["initial"].append(flow))
+case("v1-stretch", base2, lambda g: g["operations"].append(stretch))
+case("v1-flow", base2, lambda g: g["operations"].append(flow))
+case("v1-core", base2, setk(["operations", 4, "core"], 10))
+case("v1-core-zero", base2, setk(["operations", 3, "core"], 0))
+case("v1-core-3d", base3, setk(["operations", 3, "core"], 30))
+case("v1-bleed", base2, setk(["bleed"], 1))
 for name, text in cases.items():
     open(f"invalid/{name}.marble.json", "w").write(text if text.endswith("\n") else text + "\n")
 open("valid/base-2d.marble.json", "w").write(json.dumps(base2, indent=1) + "\n")
 open("valid/base-3d.marble.json", "w").write(json.dumps(base3, indent=1) + "\n")
+open("valid/base-2d-v2.marble.json", "w").write(json.dumps(base2v2, indent=1) + "\n")
+open("valid/base-3d-v2.marble.json", "w").write(json.dumps(base3v2, indent=1) + "\n")
 # unknown keys: warned, loaded
 g = copy.deepcopy(base2); g["comment"] = "hi"; g["operations"][0]["speed"] = 3; g["source"] = {"image": "paper.png", "fit": "stretch"}
 open("valid/unknown-keys.marble.json", "w").write(json.dumps(g, indent=1) + "\n")
