@@ -241,6 +241,7 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
         palette.push_back(linearOf(c));
     const glm::dvec3 background = linearOf(genome.background);
     const CpuRenderer marbling(genome);
+    const bool soften = genome.bleed > 0.0;
     Image& image = result.image;
     image.width = image.height = n;
     image.rgb.resize(texels * 3);
@@ -257,6 +258,8 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
         try {
             std::vector<double> xs(std::size_t(n) * perTexel), ys(xs.size()), zs(xs.size());
             std::vector<int> colors(xs.size());
+            // With bleed, soft edges: the kernel's composited linear colours instead of indices.
+            std::vector<double> soft(soften ? xs.size() * 3 : 0);
             std::vector<int> columns;
             for (;;) {
                 if (stop.load(std::memory_order_relaxed)) return;
@@ -293,15 +296,20 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                         ++count;
                     }
                 }
-                marbling.colorIndicesAt(xs.data(), ys.data(), zs.data(), count, colors.data());
+                if (soften)
+                    marbling.linearColorsAt(xs.data(), ys.data(), zs.data(), count, soft.data());
+                else
+                    marbling.colorIndicesAt(xs.data(), ys.data(), zs.data(), count, colors.data());
                 std::size_t k = 0;
                 for (int i : columns) {
                     glm::dvec3 sum(0.0);
                     for (std::size_t s = 0; s < perTexel; ++s, ++k) {
                         const int color = colors[k];
-                        sum += pattern.weights[s] * (color >= 0 && std::size_t(color) < palette.size()
-                                                         ? palette[std::size_t(color)]
-                                                         : background);
+                        const glm::dvec3 seen = soften ? glm::dvec3(soft[k * 3], soft[k * 3 + 1], soft[k * 3 + 2])
+                                              : color >= 0 && std::size_t(color) < palette.size()
+                                                  ? palette[std::size_t(color)]
+                                                  : background;
+                        sum += pattern.weights[s] * seen;
                     }
                     std::uint8_t* out = image.row(j) + std::size_t(i) * 3;
                     out[0] = encodeSrgb8(std::clamp(sum.x, 0.0, 1.0));

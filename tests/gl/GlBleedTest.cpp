@@ -5,6 +5,7 @@
 #include "GlTestUtil.h"
 #include "TestUtil.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/gl/HybridMesh.h"
 #include "marbler/Tools.h"
 
 #include <glm/geometric.hpp>
@@ -191,6 +192,17 @@ TEST_F(GlBleed, MeshShadingMatchesTheScalarRule) {
     EXPECT_EQ(off, 0) << off << " pixels differ by more than 2 levels";
     EXPECT_GT(covered, 64 * 64 / 3);
     EXPECT_GT(partial, 0.05 * covered) << "too few soft-edged pixels to test the rule";
+    // The CPU back end's meshes (GL rasterises, the kernel marbles) draw the same soft edges.
+    const Image hybrid = gl::renderMeshHybrid(*test::glRenderer(), genome, settings);
+    int hybridOff = 0;
+    for (int y = 0; y < settings.height; ++y)
+        for (int x = 0; x < settings.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(int(hybrid.row(y)[x * 3 + c]) - int(actual.row(y)[x * 3 + c])) > 2) {
+                    ++hybridOff;
+                    break;
+                }
+    EXPECT_EQ(hybridOff, 0) << hybridOff << " pixels of the CPU back end's mesh differ by more than 2 levels";
 }
 
 TEST_F(GlBleed, SourceDesignsTakeEveryVariant) {

@@ -8,6 +8,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Mesh.h"
+#include "marbler/Sampling.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -93,11 +94,23 @@ void expectTexelsHoldTheDesign(const Genome& genome, const std::string& meshName
                 const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) +
                                      w.y * glm::dvec3(mesh.positions[v[1]]) +
                                      w.z * glm::dvec3(mesh.positions[v[2]]);
-                const int index = reference.colorIndexAt(windowPlacement(genome, mesh, p));
-                const auto expected =
-                    bytesOf(index >= 0 ? genome.palette[std::size_t(index)] : genome.background);
+                const glm::dvec3 q = windowPlacement(genome, mesh, p);
+                std::array<std::uint8_t, 3> expected;
+                bool same;
                 const auto got = texel(baked.image, i, j);
-                if (got != expected) ++differing;
+                if (genome.bleed > 0.0) {
+                    // Soft edges: the composited colour (rounded to 8 bits once, in either order).
+                    double rgb[3];
+                    reference.linearColorsAt(&q.x, &q.y, &q.z, 1, rgb);
+                    for (int k = 0; k < 3; ++k) expected[std::size_t(k)] = encodeSrgb8(std::clamp(rgb[k], 0.0, 1.0));
+                    same = true;
+                    for (int k = 0; k < 3; ++k) same = same && std::abs(int(got[std::size_t(k)]) - int(expected[std::size_t(k)])) <= 1;
+                } else {
+                    const int index = reference.colorIndexAt(q);
+                    expected = bytesOf(index >= 0 ? genome.palette[std::size_t(index)] : genome.background);
+                    same = got == expected;
+                }
+                if (!same) ++differing;
                 if (checked == 0) first = got;
                 if (got != first) ++distinct;
                 ++checked;
@@ -106,6 +119,13 @@ void expectTexelsHoldTheDesign(const Genome& genome, const std::string& meshName
     ASSERT_GT(checked, 5000);
     EXPECT_GT(distinct, checked / 20) << "the texels checked should not all show one colour";
     EXPECT_LE(differing, checked / 1000) << differing << " of " << checked << " texels differ";
+}
+
+TEST(Bake, TexelsHoldTheSoftEdgesOfABleed) {
+    // Format version 2's bleed: a texel shows the inks composited as a render does.
+    Genome genome = example("slate-block.marble.json");
+    genome.bleed = 30.0;
+    expectTexelsHoldTheDesign(genome, "sphere");
 }
 
 TEST(Bake, TexelsHoldTheSolidAtTheirSurfacePoints) {

@@ -54,6 +54,7 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
     const glm::dvec3 background = linearOf(genome.background);
     const glm::dvec3 clear = linearOf(settings.clearColor);
     const CpuRenderer marbling(genome);
+    const bool soften = genome.bleed > 0.0;
 
     Image image;
     image.width = g.width;
@@ -72,6 +73,8 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
             std::vector<double> xs(std::size_t(g.width) * std::size_t(n * n));
             std::vector<double> ys(xs.size()), zs(xs.size());
             std::vector<int> colors(std::size_t(g.width) * std::size_t(n * n), -1);
+            // With bleed, soft edges: the kernel's composited linear colours instead of indices.
+            std::vector<double> soft(soften ? colors.size() * 3 : 0);
             std::vector<std::size_t> sampleOf(colors.size());
             std::vector<glm::dvec3> sum(std::size_t(g.width));
             std::vector<int> coveredIn(std::size_t(g.width));
@@ -99,13 +102,18 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
                     ys[std::size_t(k)] = g.reference.y + double(p[1]);
                     zs[std::size_t(k)] = g.reference.z + double(p[2]);
                 }
-                marbling.colorIndicesAt(xs.data(), ys.data(), zs.data(), std::size_t(covered), colors.data());
+                if (soften)
+                    marbling.linearColorsAt(xs.data(), ys.data(), zs.data(), std::size_t(covered), soft.data());
+                else
+                    marbling.colorIndicesAt(xs.data(), ys.data(), zs.data(), std::size_t(covered), colors.data());
                 std::fill(sum.begin(), sum.end(), glm::dvec3(0.0));
                 std::fill(coveredIn.begin(), coveredIn.end(), 0);
                 for (int k = 0; k < covered; ++k) {
                     const std::size_t s = sampleOf[std::size_t(k)];
                     const int c = colors[std::size_t(k)];
-                    const glm::dvec3 albedo = c >= 0 ? palette[std::size_t(c)] : background;
+                    const glm::dvec3 albedo =
+                        soften ? glm::dvec3(soft[std::size_t(k) * 3], soft[std::size_t(k) * 3 + 1], soft[std::size_t(k) * 3 + 2])
+                               : c >= 0 ? palette[std::size_t(c)] : background;
                     const float* p = &g.positions[s * 4];
                     const float* nv = &g.normals[s * 4];
                     const auto x = std::size_t((s % std::size_t(gw)) / std::size_t(n));
