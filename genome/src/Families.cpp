@@ -418,11 +418,11 @@ void agate(Bath& b) {
 }
 
 void granite(Bath& b) {
-    // A ground of big spheres, then speckles that push nothing, in every ink.
-    b.stone(b.pick(200, 260), 1.0, b.ground.between(10, 14), 1.0);
-    const int specks = b.ground.between(250, 450);
+    // Close-packed grains of every ink, then speckles that push nothing.
+    b.stone(b.pick(80, 110), 0.9, b.ground.between(220, 280), 1.0);
+    const int specks = b.ground.between(1200, 1800);
     for (int i = 0; i < specks; ++i)
-        b.drop(b.anywhere(0.0), b.ground.uniform(8.0, 22.0), static_cast<int>(b.ground.below(static_cast<std::uint32_t>(b.inks()))), Tool::Spray);
+        b.drop(b.anywhere(0.0), b.ground.uniform(10.0, 25.0), static_cast<int>(b.ground.below(static_cast<std::uint32_t>(b.inks()))), Tool::Spray);
     if (b.rng.chance(0.5)) b.wave3(WaveShape::Eggcrate, b.pick(10, 30), b.pick(300, 600));
 }
 
@@ -448,7 +448,7 @@ constexpr std::array<Recipe, 16> Recipes{{
     {{"first-paper", 2, "stone, combs both ways across and down, a wave (Lu et al. 2012)"}, 3, 5, firstPaper},
     {{"veined", 3, "solid: spheres of ink drawn into veins by combs"}, 2, 4, veined},
     {{"agate", 3, "solid: columns of banded ink, waved"}, 3, 5, agate},
-    {{"granite", 3, "solid: speckles over a ground of spheres"}, 3, 5, granite},
+    {{"granite", 3, "solid: speckles over close-packed grains"}, 3, 5, granite},
 }};
 
 constexpr std::array<Family, Recipes.size()> familiesOf() {

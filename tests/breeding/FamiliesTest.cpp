@@ -206,7 +206,7 @@ TEST(Families, SolidFamilies) {
         const Genome granite = make("granite", seed);
         EXPECT_GE(std::count_if(granite.initial.begin(), granite.initial.end(),
                                 [](const Operation& op) { return op.tool == Tool::Spray; }),
-                  250);
+                  1200);
     }
 }
 
