@@ -174,12 +174,8 @@ int animate(std::span<const std::string> words) {
         std::cout << Help;
         return ExitOk;
     }
-    if (args.positional.size() != 1)
-        throw InputError(args.positional.empty() ? "a genome file is required (see marbler animate --help)"
-                                                 : "exactly one genome file is expected (got " +
-                                                       std::to_string(args.positional.size()) + ")");
-    std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
-    if (!output || output->empty()) throw InputError("-o OUT is required (see marbler animate --help)");
+    oneGenomeArgument(args, "animate");
+    const std::optional<std::string> output = requiredOutput(args, "animate", "OUT");
     std::filesystem::path out(*output);
     if (!out.has_filename() && out.has_parent_path()) out = out.parent_path(); // "frames/" is the folder "frames"
     const bool video = isVideoFile(out);

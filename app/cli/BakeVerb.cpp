@@ -232,12 +232,8 @@ int bake(std::span<const std::string> words) {
         std::cout << Help;
         return ExitOk;
     }
-    if (args.positional.size() != 1)
-        throw InputError(args.positional.empty() ? "a genome file is required (see marbler bake --help)"
-                                                 : "exactly one genome file is expected (got " +
-                                                       std::to_string(args.positional.size()) + ")");
-    const std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
-    if (!output || output->empty()) throw InputError("-o OUT is required (see marbler bake --help)");
+    oneGenomeArgument(args, "bake");
+    const std::optional<std::string> output = requiredOutput(args, "bake", "OUT");
     const bool slices = args.has("slices");
     if (slices == args.has("mesh"))
         throw InputError("give either --mesh NAME|FILE or --slices AXIS (see marbler bake --help)");

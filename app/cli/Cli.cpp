@@ -81,6 +81,20 @@ double parseDoubleOption(const Args& args, const std::string& name, double fallb
     return value;
 }
 
+const std::string& oneGenomeArgument(const Args& args, const std::string& verb) {
+    if (args.positional.size() != 1)
+        throw InputError(args.positional.empty() ? "a genome file is required (see marbler " + verb + " --help)"
+                                                 : "exactly one genome file is expected (got " +
+                                                       std::to_string(args.positional.size()) + ")");
+    return args.positional.front();
+}
+
+std::string requiredOutput(const Args& args, const std::string& verb, const std::string& what) {
+    const std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
+    if (!output || output->empty()) throw InputError("-o " + what + " is required (see marbler " + verb + " --help)");
+    return *output;
+}
+
 std::uint64_t parseSeedOption(const Args& args, const std::string& name) {
     std::optional<std::string> text = args.get(name);
     if (!text) throw InputError("--" + name + " is required");

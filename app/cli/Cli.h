@@ -36,6 +36,12 @@ struct Args {
 Args parseArgs(std::span<const std::string> words, const std::vector<std::string>& valued,
                const std::vector<std::string>& flags);
 
+/// The one GENOME argument of `marbler VERB GENOME ...`; InputError when there is none or more.
+const std::string& oneGenomeArgument(const Args& args, const std::string& verb);
+/// The value of `-o`/`--output`; InputError "-o WHAT is required (see marbler VERB --help)" when
+/// it is absent or empty.
+std::string requiredOutput(const Args& args, const std::string& verb, const std::string& what = "OUT");
+
 /// Number parsing for options; throw InputError naming the option.
 int parseIntOption(const Args& args, const std::string& name, int fallback, int lo, int hi);
 double parseDoubleOption(const Args& args, const std::string& name, double fallback);

@@ -62,8 +62,7 @@ int paper(std::span<const std::string> words) {
     options.passes = parseIntOption(args, "passes", options.passes, 0, MaxPaperPasses);
     options.pastel = args.has("pastel");
     const std::uint64_t seed = parseSeedOption(args, "seed");
-    std::optional<std::string> out = args.has("o") ? args.get("o") : args.get("output");
-    if (!out || out->empty()) throw InputError("-o OUT is required (see marbler paper --help)");
+    const std::optional<std::string> out = requiredOutput(args, "paper");
     const std::filesystem::path image(*out);
     const std::filesystem::path genomeFile = genomeBeside(image);
 

@@ -120,12 +120,8 @@ int render(std::span<const std::string> words) {
         std::cout << Help;
         return ExitOk;
     }
-    if (args.positional.size() != 1)
-        throw InputError(args.positional.empty() ? "a genome file is required (see marbler render --help)"
-                                                 : "exactly one genome file is expected (got " +
-                                                       std::to_string(args.positional.size()) + ")");
-    std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
-    if (!output || output->empty()) throw InputError("-o OUT is required (see marbler render --help)");
+    oneGenomeArgument(args, "render");
+    const std::optional<std::string> output = requiredOutput(args, "render", "OUT");
     const std::filesystem::path outFile(*output);
 
     // Everything the command line can check is checked before the genome is read.

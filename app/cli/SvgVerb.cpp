@@ -47,12 +47,8 @@ int svg(std::span<const std::string> words) {
         std::cout << Help;
         return ExitOk;
     }
-    if (args.positional.size() != 1)
-        throw InputError(args.positional.empty() ? "a genome file is required (see marbler svg --help)"
-                                                 : "exactly one genome file is expected (got " +
-                                                       std::to_string(args.positional.size()) + ")");
-    std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
-    if (!output || output->empty()) throw InputError("-o OUT.svg is required (see marbler svg --help)");
+    oneGenomeArgument(args, "svg");
+    const std::optional<std::string> output = requiredOutput(args, "svg", "OUT.svg");
     const std::filesystem::path outFile(*output);
     std::string extension = outFile.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),

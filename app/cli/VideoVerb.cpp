@@ -111,8 +111,7 @@ int video(std::span<const std::string> words) {
     if (args.positional.size() != 2)
         throw InputError("a genome and a video are expected (got " + std::to_string(args.positional.size()) +
                          " arguments; see marbler video --help)");
-    std::optional<std::string> outArg = args.has("o") ? args.get("o") : args.get("output");
-    if (!outArg || outArg->empty()) throw InputError("-o OUT is required (see marbler video --help)");
+    const std::optional<std::string> outArg = requiredOutput(args, "video");
     const fs::path out(*outArg);
     if (!out.extension().empty() && !isVideoFile(out) && !fs::is_directory(out))
         throw InputError("'" + out.string() + "': OUT is a folder or a .gif, .webp, .mp4 or .webm file");
