@@ -4,6 +4,7 @@
 
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ImageFormats.h"
 #include "marbler/Operators.h"
 #include "marbler/SourcePath.h"
 
@@ -85,8 +86,7 @@ std::string encodeBase64(const std::string& bytes) {
 /// The image as a data: URI, when its format is one a data URI may carry and it is small
 /// enough to leave the genome within its size limit; nullopt otherwise.
 std::optional<std::string> dataUriOf(const fs::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::string extension = lowerExtension(file);
     const std::map<std::string, std::string> types{{".png", "image/png"},   {".jpg", "image/jpeg"},
                                                    {".jpeg", "image/jpeg"}, {".tif", "image/tiff"},
                                                    {".tiff", "image/tiff"}, {".bmp", "image/bmp"},

@@ -4,6 +4,7 @@
 #include "cli/Cli.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ImageFormats.h"
 #include "marbler/Vector.h"
 
 #include <algorithm>
@@ -50,10 +51,7 @@ int svg(std::span<const std::string> words) {
     oneGenomeArgument(args, "svg");
     const std::optional<std::string> output = requiredOutput(args, "svg", "OUT.svg");
     const std::filesystem::path outFile(*output);
-    std::string extension = outFile.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension != ".svg") throw InputError(*output + ": the output of marbler svg must end in .svg");
+    if (lowerExtension(outFile) != ".svg") throw InputError(*output + ": the output of marbler svg must end in .svg");
     VectorOptions options;
     options.tolerance = parseDoubleOption(args, "tolerance", 1.0);
     if (!(options.tolerance > 0.0))

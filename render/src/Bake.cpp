@@ -8,6 +8,8 @@
 #include "marbler/Bake.h"
 
 #include "marbler/Error.h"
+#include "marbler/ImageFormats.h"
+#include "marbler/Threads.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -251,90 +253,76 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
     // samples go through the kernel together.
     std::atomic<int> nextRow{0}, rowsDone{0};
     std::atomic<bool> stop{false};
-    std::exception_ptr failure;
-    std::mutex failureMutex;
     const std::size_t perTexel = pattern.offsets.size();
     const auto worker = [&] {
-        try {
-            std::vector<double> xs(std::size_t(n) * perTexel), ys(xs.size()), zs(xs.size());
-            std::vector<int> colors(xs.size());
-            // With bleed, soft edges: the kernel's composited linear colours instead of indices.
-            std::vector<double> soft(soften ? xs.size() * 3 : 0);
-            std::vector<int> columns;
-            for (;;) {
-                if (stop.load(std::memory_order_relaxed)) return;
-                if (control && control->cancelled()) {
-                    stop = true;
-                    return;
-                }
-                const int j = nextRow.fetch_add(1);
-                if (j >= n) return;
-                columns.clear();
-                std::size_t count = 0;
-                for (int i = 0; i < n; ++i) {
-                    const std::int32_t t = owner[std::size_t(j) * std::size_t(n) + std::size_t(i)];
-                    if (t < 0) continue;
-                    columns.push_back(i);
-                    const std::uint32_t* v = &mesh.indices[std::size_t(t) * 3];
-                    const glm::dvec2 a = uvOf(v[0]), b = uvOf(v[1]), c = uvOf(v[2]);
-                    for (const glm::dvec2& offset : pattern.offsets) {
-                        glm::dvec3 w;
-                        barycentric(a, b, c, {i + 0.5 + offset.x, j + 0.5 + offset.y}, w);
-                        // A sample past the triangle's edge is pulled back onto it, so every
-                        // sample is a point of the surface (the centre's weights stay exact).
-                        if (w.x < 0.0 || w.y < 0.0 || w.z < 0.0) {
-                            w = glm::max(w, glm::dvec3(0.0));
-                            w /= w.x + w.y + w.z;
-                        }
-                        const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) +
-                                             w.y * glm::dvec3(mesh.positions[v[1]]) +
-                                             w.z * glm::dvec3(mesh.positions[v[2]]);
-                        const glm::dvec3 q = placement.designPoint(p);
-                        xs[count] = q.x;
-                        ys[count] = q.y;
-                        zs[count] = q.z;
-                        ++count;
-                    }
-                }
-                if (soften)
-                    marbling.linearColorsAt(xs.data(), ys.data(), zs.data(), count, soft.data());
-                else
-                    marbling.colorIndicesAt(xs.data(), ys.data(), zs.data(), count, colors.data());
-                std::size_t k = 0;
-                for (int i : columns) {
-                    glm::dvec3 sum(0.0);
-                    for (std::size_t s = 0; s < perTexel; ++s, ++k) {
-                        const int color = colors[k];
-                        const glm::dvec3 seen = soften ? glm::dvec3(soft[k * 3], soft[k * 3 + 1], soft[k * 3 + 2])
-                                              : color >= 0 && std::size_t(color) < palette.size()
-                                                  ? palette[std::size_t(color)]
-                                                  : background;
-                        sum += pattern.weights[s] * seen;
-                    }
-                    std::uint8_t* out = image.row(j) + std::size_t(i) * 3;
-                    out[0] = encodeSrgb8(std::clamp(sum.x, 0.0, 1.0));
-                    out[1] = encodeSrgb8(std::clamp(sum.y, 0.0, 1.0));
-                    out[2] = encodeSrgb8(std::clamp(sum.z, 0.0, 1.0));
-                    filled[std::size_t(j) * std::size_t(n) + std::size_t(i)] = 1;
-                }
-                const int done = rowsDone.fetch_add(1) + 1;
-                if (control && control->progress) control->progress(double(done) / double(n));
+        std::vector<double> xs(std::size_t(n) * perTexel), ys(xs.size()), zs(xs.size());
+        std::vector<int> colors(xs.size());
+        // With bleed, soft edges: the kernel's composited linear colours instead of indices.
+        std::vector<double> soft(soften ? xs.size() * 3 : 0);
+        std::vector<int> columns;
+        for (;;) {
+            if (stop.load(std::memory_order_relaxed)) return;
+            if (control && control->cancelled()) {
+                stop = true;
+                return;
             }
-        } catch (...) {
-            std::lock_guard lock(failureMutex);
-            if (!failure) failure = std::current_exception();
-            stop = true;
+            const int j = nextRow.fetch_add(1);
+            if (j >= n) return;
+            columns.clear();
+            std::size_t count = 0;
+            for (int i = 0; i < n; ++i) {
+                const std::int32_t t = owner[std::size_t(j) * std::size_t(n) + std::size_t(i)];
+                if (t < 0) continue;
+                columns.push_back(i);
+                const std::uint32_t* v = &mesh.indices[std::size_t(t) * 3];
+                const glm::dvec2 a = uvOf(v[0]), b = uvOf(v[1]), c = uvOf(v[2]);
+                for (const glm::dvec2& offset : pattern.offsets) {
+                    glm::dvec3 w;
+                    barycentric(a, b, c, {i + 0.5 + offset.x, j + 0.5 + offset.y}, w);
+                    // A sample past the triangle's edge is pulled back onto it, so every
+                    // sample is a point of the surface (the centre's weights stay exact).
+                    if (w.x < 0.0 || w.y < 0.0 || w.z < 0.0) {
+                        w = glm::max(w, glm::dvec3(0.0));
+                        w /= w.x + w.y + w.z;
+                    }
+                    const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) +
+                                         w.y * glm::dvec3(mesh.positions[v[1]]) +
+                                         w.z * glm::dvec3(mesh.positions[v[2]]);
+                    const glm::dvec3 q = placement.designPoint(p);
+                    xs[count] = q.x;
+                    ys[count] = q.y;
+                    zs[count] = q.z;
+                    ++count;
+                }
+            }
+            if (soften)
+                marbling.linearColorsAt(xs.data(), ys.data(), zs.data(), count, soft.data());
+            else
+                marbling.colorIndicesAt(xs.data(), ys.data(), zs.data(), count, colors.data());
+            std::size_t k = 0;
+            for (int i : columns) {
+                glm::dvec3 sum(0.0);
+                for (std::size_t s = 0; s < perTexel; ++s, ++k) {
+                    const int color = colors[k];
+                    const glm::dvec3 seen = soften ? glm::dvec3(soft[k * 3], soft[k * 3 + 1], soft[k * 3 + 2])
+                                          : color >= 0 && std::size_t(color) < palette.size()
+                                              ? palette[std::size_t(color)]
+                                              : background;
+                    sum += pattern.weights[s] * seen;
+                }
+                std::uint8_t* out = image.row(j) + std::size_t(i) * 3;
+                out[0] = encodeSrgb8(std::clamp(sum.x, 0.0, 1.0));
+                out[1] = encodeSrgb8(std::clamp(sum.y, 0.0, 1.0));
+                out[2] = encodeSrgb8(std::clamp(sum.z, 0.0, 1.0));
+                filled[std::size_t(j) * std::size_t(n) + std::size_t(i)] = 1;
+            }
+            const int done = rowsDone.fetch_add(1) + 1;
+            if (control && control->progress) control->progress(double(done) / double(n));
         }
     };
     const int threads =
         std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, n);
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-        pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool)
-        t.join();
-    if (failure) std::rethrow_exception(failure);
+    runOnThreads(threads, stop, worker);
     if (control && control->cancelled()) throw Cancelled();
 
     // Dilation: each pass gives every empty texel beside a filled one (of 8) their mean, so a
@@ -380,13 +368,6 @@ std::vector<std::string> texturedMeshExtensions() {
 }
 
 namespace {
-
-std::string lowerExtension(const fs::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    return extension;
-}
 
 /// Files written under temporary names beside their targets and renamed together by commit();
 /// destroyed uncommitted, it removes every file it wrote, renamed or not.

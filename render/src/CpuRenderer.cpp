@@ -3,6 +3,7 @@
 #include "ImageData.h"
 #include "Kernel.h"
 #include "marbler/Error.h"
+#include "marbler/Threads.h"
 #include "marbler/Tools.h"
 
 #include <algorithm>
@@ -148,69 +149,57 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
 
     std::atomic<int> nextRow{y0};
     std::atomic<bool> stop{false};
-    std::exception_ptr failure;
-    std::mutex failureMutex;
     ProgressReporter progress(control, rows);
 
     auto worker = [&] {
-        try {
-            auto tile = std::make_unique<kernel::Tile>();
-            std::vector<int> colors(kernel::TileSize);
-            std::vector<double> whereX(kernel::TileSize), whereY(kernel::TileSize);
-            std::vector<double> weight(bleed > 0.0 ? kernel::TileSize : 0), rgb(weight.size() * 3);
-            const std::optional<kernel::Bleed> layers = bleedFor(weight.data(), rgb.data());
-            const Traced traced{colors.data(), whereX.data(), whereY.data(), layers ? weight.data() : nullptr,
-                                layers ? rgb.data() : nullptr};
-            std::vector<glm::dvec3> rowPart(static_cast<std::size_t>(samples));
-            auto shade = makeShader();
-            for (;;) {
-                if (stop.load(std::memory_order_relaxed)) return;
-                if (control && control->cancelled()) {
-                    stop = true;
-                    return;
-                }
-                int j = nextRow.fetch_add(1);
-                if (j >= y1) return;
-                // frame.at(i, j, ox, oy) component by component, in the same order of
-                // operations (so the same bits), with the row's part computed once per sample.
-                for (int s = 0; s < samples; ++s) {
-                    const double b = (double(j) + 0.5) + pattern.offsets[s].y;
-                    rowPart[s] = b * frame.dv;
-                }
-                for (int i0 = 0; i0 < width; i0 += pixelsPerTile) {
-                    const int pixels = std::min(pixelsPerTile, width - i0);
-                    for (int s = 0; s < samples; ++s) {
-                        // One sample of every pixel at a time: a plain strided loop.
-                        const double ox = pattern.offsets[s].x;
-                        const glm::dvec3 rp = rowPart[s];
-                        for (int p = 0, n = s; p < pixels; ++p, n += samples) {
-                            const double a = (double(i0 + p) + 0.5) + ox;
-                            tile->x[n] = (frame.origin.x + a * frame.du.x) + rp.x;
-                            tile->y[n] = (frame.origin.y + a * frame.du.y) + rp.y;
-                            // 2D kernels never read z.
-                            if (dimension == 3) tile->z[n] = (frame.origin.z + a * frame.du.z) + rp.z;
-                        }
-                    }
-                    const int n = pixels * samples;
-                    for (int k = 0; k < n; ++k) tile->id[k] = k;
-                    kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
-                                      source ? whereX.data() : nullptr, whereY.data(), layers ? &*layers : nullptr);
-                    shade(j, i0, pixels, traced);
-                }
-                progress.rowDone();
+        auto tile = std::make_unique<kernel::Tile>();
+        std::vector<int> colors(kernel::TileSize);
+        std::vector<double> whereX(kernel::TileSize), whereY(kernel::TileSize);
+        std::vector<double> weight(bleed > 0.0 ? kernel::TileSize : 0), rgb(weight.size() * 3);
+        const std::optional<kernel::Bleed> layers = bleedFor(weight.data(), rgb.data());
+        const Traced traced{colors.data(), whereX.data(), whereY.data(), layers ? weight.data() : nullptr,
+                            layers ? rgb.data() : nullptr};
+        std::vector<glm::dvec3> rowPart(static_cast<std::size_t>(samples));
+        auto shade = makeShader();
+        for (;;) {
+            if (stop.load(std::memory_order_relaxed)) return;
+            if (control && control->cancelled()) {
+                stop = true;
+                return;
             }
-        } catch (...) {
-            std::lock_guard lock(failureMutex);
-            if (!failure) failure = std::current_exception();
-            stop = true;
+            int j = nextRow.fetch_add(1);
+            if (j >= y1) return;
+            // frame.at(i, j, ox, oy) component by component, in the same order of
+            // operations (so the same bits), with the row's part computed once per sample.
+            for (int s = 0; s < samples; ++s) {
+                const double b = (double(j) + 0.5) + pattern.offsets[s].y;
+                rowPart[s] = b * frame.dv;
+            }
+            for (int i0 = 0; i0 < width; i0 += pixelsPerTile) {
+                const int pixels = std::min(pixelsPerTile, width - i0);
+                for (int s = 0; s < samples; ++s) {
+                    // One sample of every pixel at a time: a plain strided loop.
+                    const double ox = pattern.offsets[s].x;
+                    const glm::dvec3 rp = rowPart[s];
+                    for (int p = 0, n = s; p < pixels; ++p, n += samples) {
+                        const double a = (double(i0 + p) + 0.5) + ox;
+                        tile->x[n] = (frame.origin.x + a * frame.du.x) + rp.x;
+                        tile->y[n] = (frame.origin.y + a * frame.du.y) + rp.y;
+                        // 2D kernels never read z.
+                        if (dimension == 3) tile->z[n] = (frame.origin.z + a * frame.du.z) + rp.z;
+                    }
+                }
+                const int n = pixels * samples;
+                for (int k = 0; k < n; ++k) tile->id[k] = k;
+                kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
+                                  source ? whereX.data() : nullptr, whereY.data(), layers ? &*layers : nullptr);
+                shade(j, i0, pixels, traced);
+            }
+            progress.rowDone();
         }
     };
 
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    runOnThreads(threads, stop, worker);
     if (control && control->cancelled()) throw Cancelled();
 }
 

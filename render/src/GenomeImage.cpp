@@ -7,6 +7,7 @@
 
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ImageFormats.h"
 
 #include <png.h>
 #include <tiffio.h>
@@ -523,8 +524,7 @@ Genome loadDesign(const std::filesystem::path& file, std::vector<std::string>* w
     }
     const ImageKind kind = imageKindOf(std::span<const unsigned char>(head, got));
     if (kind == ImageKind::NotAnImage) {
-        std::string extension = file.extension().string();
-        for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+        const std::string extension = lowerExtension(file);
         const bool namedAsImage = extension == ".png" || extension == ".tif" || extension == ".tiff";
         try {
             return loadGenome(file, warnings);

@@ -4,6 +4,7 @@
 #include "ImageSink.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ImageFormats.h"
 #include "marbler/Modules.h"
 #include "marbler/SourcePath.h"
 
@@ -122,13 +123,6 @@ using detail::openBuiltinSink;
 int stripRows(int width, int height) {
     const int most = std::max(16, (1 << 21) / std::max(1, width));
     return std::clamp((height + 7) / 8, 16, most);
-}
-
-std::string lowerExtension(const fs::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    return extension;
 }
 
 /// An image file written in strips to a temporary name beside the target, renamed over the

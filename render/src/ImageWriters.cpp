@@ -294,6 +294,13 @@ std::unique_ptr<ImageSink> openBuiltinSink(const SinkTarget& target) {
 
 namespace marbler {
 
+std::string lowerExtension(const std::filesystem::path& file) {
+    std::string extension = file.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
 std::string builtinImageFormats() {
     // TIFFGetVersion() is a paragraph ("LIBTIFF, Version 4.5.0\nCopyright ..."): keep the number.
     std::string tiff = TIFFGetVersion();

@@ -3,6 +3,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
+#include "marbler/Threads.h"
 #include "marbler/Tools.h"
 
 #include <glm/geometric.hpp>
@@ -182,40 +183,29 @@ VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
     std::atomic<std::size_t> traced{0}, gaps{0}, next{0};
     std::vector<std::optional<InkOutline>> outlines(inks.size());
     std::vector<std::size_t> dropped(inks.size(), 0);
-    std::exception_ptr failure;
-    std::mutex failureMutex;
+    std::atomic<bool> stop{false}; // a failed outline stops the others after their current one
     auto worker = [&] {
-        try {
-            for (std::size_t k = next.fetch_add(1); k < inks.size(); k = next.fetch_add(1)) {
-                OutlineTracer tracer(ops, inks[k], options, traced, gaps);
-                InkOutline outline;
-                outline.step = inks[k];
-                outline.color = ops[inks[k]].color;
-                outline.points = tracer.trace();
-                // An outline whose bounding box misses the design space cannot colour any of it
-                // (its region lies inside that box).
-                glm::dvec2 lo(INFINITY), hi(-INFINITY);
-                for (const glm::dvec2& p : outline.points) {
-                    lo = glm::min(lo, p);
-                    hi = glm::max(hi, p);
-                }
-                if (hi.x <= 0.0 || hi.y <= 0.0 || lo.x >= design.width || lo.y >= design.height) continue;
-                dropped[k] = simplify(outline.points, options);
-                outlines[k] = std::move(outline);
+        for (std::size_t k = next.fetch_add(1); k < inks.size() && !stop; k = next.fetch_add(1)) {
+            OutlineTracer tracer(ops, inks[k], options, traced, gaps);
+            InkOutline outline;
+            outline.step = inks[k];
+            outline.color = ops[inks[k]].color;
+            outline.points = tracer.trace();
+            // An outline whose bounding box misses the design space cannot colour any of it
+            // (its region lies inside that box).
+            glm::dvec2 lo(INFINITY), hi(-INFINITY);
+            for (const glm::dvec2& p : outline.points) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
             }
-        } catch (...) {
-            std::lock_guard lock(failureMutex);
-            if (!failure) failure = std::current_exception();
-            next.store(inks.size()); // the others stop after their current outline
+            if (hi.x <= 0.0 || hi.y <= 0.0 || lo.x >= design.width || lo.y >= design.height) continue;
+            dropped[k] = simplify(outline.points, options);
+            outlines[k] = std::move(outline);
         }
     };
     int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1,
                              static_cast<int>(std::max<std::size_t>(inks.size(), 1)));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-    worker();
-    for (std::thread& thread : pool) thread.join();
-    if (failure) std::rethrow_exception(failure);
+    runOnThreads(threads, stop, worker);
 
     design.gapsAtDepthCap = gaps.load();
     for (std::size_t k = 0; k < inks.size(); ++k) {

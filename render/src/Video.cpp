@@ -3,6 +3,7 @@
 
 #include "VideoModule.h"
 #include "marbler/Error.h"
+#include "marbler/ImageFormats.h"
 #include "marbler/Modules.h"
 #include "marbler/Sampling.h"
 #include "marbler/SourceDecoder.h"
@@ -35,13 +36,6 @@ namespace {
 /// The largest side and the most frames a second a writer accepts.
 constexpr int MaxVideoSide = 16384;
 constexpr double MaxVideoFps = 1000.0;
-
-std::string lowerExtension(const fs::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    return extension;
-}
 
 /// The module's writer on a temporary name beside the target, renamed over the target by
 /// finish(); destroyed unfinished, it leaves nothing behind.

@@ -1,6 +1,7 @@
 #include "marbler/gl/HybridMesh.h"
 
 #include "marbler/Error.h"
+#include "marbler/Threads.h"
 #include "marbler/Tools.h"
 
 #include <glm/geometric.hpp>
@@ -66,87 +67,73 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
     // uncovered ones (most of the frame around an object) cost nothing.
     std::atomic<int> nextRow{0};
     std::atomic<bool> stop{false};
-    std::exception_ptr failure;
-    std::mutex failureMutex;
     const auto worker = [&] {
-        try {
-            std::vector<double> xs(std::size_t(g.width) * std::size_t(n * n));
-            std::vector<double> ys(xs.size()), zs(xs.size());
-            std::vector<int> colors(std::size_t(g.width) * std::size_t(n * n), -1);
-            // With bleed, soft edges: the kernel's composited linear colours instead of indices.
-            std::vector<double> soft(soften ? colors.size() * 3 : 0);
-            std::vector<std::size_t> sampleOf(colors.size());
-            std::vector<glm::dvec3> sum(std::size_t(g.width));
-            std::vector<int> coveredIn(std::size_t(g.width));
-            for (;;) {
-                if (stop.load(std::memory_order_relaxed)) return;
-                if (control && control->cancelled()) {
-                    stop = true;
-                    return;
-                }
-                const int y = nextRow.fetch_add(1);
-                if (y >= g.height) return;
-                // GL's first row is the bottom of the view.
-                const int glRow = g.height - 1 - y;
-                int covered = 0;
-                for (int x = 0; x < g.width; ++x)
-                    for (int j = 0; j < n; ++j)
-                        for (int i = 0; i < n; ++i) {
-                            const std::size_t s =
-                                std::size_t(glRow * n + j) * std::size_t(gw) + std::size_t(x * n + i);
-                            if (g.positions[s * 4 + 3] > 0.0f) sampleOf[std::size_t(covered++)] = s;
-                        }
-                for (int k = 0; k < covered; ++k) {
-                    const float* p = &g.positions[sampleOf[std::size_t(k)] * 4];
-                    xs[std::size_t(k)] = g.reference.x + double(p[0]);
-                    ys[std::size_t(k)] = g.reference.y + double(p[1]);
-                    zs[std::size_t(k)] = g.reference.z + double(p[2]);
-                }
-                if (soften)
-                    marbling.linearColorsAt(xs.data(), ys.data(), zs.data(), std::size_t(covered), soft.data());
-                else
-                    marbling.colorIndicesAt(xs.data(), ys.data(), zs.data(), std::size_t(covered), colors.data());
-                std::fill(sum.begin(), sum.end(), glm::dvec3(0.0));
-                std::fill(coveredIn.begin(), coveredIn.end(), 0);
-                for (int k = 0; k < covered; ++k) {
-                    const std::size_t s = sampleOf[std::size_t(k)];
-                    const int c = colors[std::size_t(k)];
-                    const glm::dvec3 albedo =
-                        soften ? glm::dvec3(soft[std::size_t(k) * 3], soft[std::size_t(k) * 3 + 1], soft[std::size_t(k) * 3 + 2])
-                               : c >= 0 ? palette[std::size_t(c)] : background;
-                    const float* p = &g.positions[s * 4];
-                    const float* nv = &g.normals[s * 4];
-                    const auto x = std::size_t((s % std::size_t(gw)) / std::size_t(n));
-                    sum[x] += settings.lighting ? shade(albedo, glm::dvec3(p[0], p[1], p[2]),
-                                                        glm::dvec3(nv[0], nv[1], nv[2]), g)
-                                                : albedo;
-                    ++coveredIn[x];
-                }
-                // The samples the object does not cover show the clear colour.
-                std::uint8_t* out = image.row(y);
-                const double weight = 1.0 / double(n * n);
-                for (int x = 0; x < g.width; ++x) {
-                    const glm::dvec3 linear =
-                        (sum[std::size_t(x)] + double(n * n - coveredIn[std::size_t(x)]) * clear) * weight;
-                    out[x * 3 + 0] = encodeSrgb8(std::clamp(linear.x, 0.0, 1.0));
-                    out[x * 3 + 1] = encodeSrgb8(std::clamp(linear.y, 0.0, 1.0));
-                    out[x * 3 + 2] = encodeSrgb8(std::clamp(linear.z, 0.0, 1.0));
-                }
+        std::vector<double> xs(std::size_t(g.width) * std::size_t(n * n));
+        std::vector<double> ys(xs.size()), zs(xs.size());
+        std::vector<int> colors(std::size_t(g.width) * std::size_t(n * n), -1);
+        // With bleed, soft edges: the kernel's composited linear colours instead of indices.
+        std::vector<double> soft(soften ? colors.size() * 3 : 0);
+        std::vector<std::size_t> sampleOf(colors.size());
+        std::vector<glm::dvec3> sum(std::size_t(g.width));
+        std::vector<int> coveredIn(std::size_t(g.width));
+        for (;;) {
+            if (stop.load(std::memory_order_relaxed)) return;
+            if (control && control->cancelled()) {
+                stop = true;
+                return;
             }
-        } catch (...) {
-            std::lock_guard lock(failureMutex);
-            if (!failure) failure = std::current_exception();
-            stop = true;
+            const int y = nextRow.fetch_add(1);
+            if (y >= g.height) return;
+            // GL's first row is the bottom of the view.
+            const int glRow = g.height - 1 - y;
+            int covered = 0;
+            for (int x = 0; x < g.width; ++x)
+                for (int j = 0; j < n; ++j)
+                    for (int i = 0; i < n; ++i) {
+                        const std::size_t s =
+                            std::size_t(glRow * n + j) * std::size_t(gw) + std::size_t(x * n + i);
+                        if (g.positions[s * 4 + 3] > 0.0f) sampleOf[std::size_t(covered++)] = s;
+                    }
+            for (int k = 0; k < covered; ++k) {
+                const float* p = &g.positions[sampleOf[std::size_t(k)] * 4];
+                xs[std::size_t(k)] = g.reference.x + double(p[0]);
+                ys[std::size_t(k)] = g.reference.y + double(p[1]);
+                zs[std::size_t(k)] = g.reference.z + double(p[2]);
+            }
+            if (soften)
+                marbling.linearColorsAt(xs.data(), ys.data(), zs.data(), std::size_t(covered), soft.data());
+            else
+                marbling.colorIndicesAt(xs.data(), ys.data(), zs.data(), std::size_t(covered), colors.data());
+            std::fill(sum.begin(), sum.end(), glm::dvec3(0.0));
+            std::fill(coveredIn.begin(), coveredIn.end(), 0);
+            for (int k = 0; k < covered; ++k) {
+                const std::size_t s = sampleOf[std::size_t(k)];
+                const int c = colors[std::size_t(k)];
+                const glm::dvec3 albedo =
+                    soften ? glm::dvec3(soft[std::size_t(k) * 3], soft[std::size_t(k) * 3 + 1], soft[std::size_t(k) * 3 + 2])
+                           : c >= 0 ? palette[std::size_t(c)] : background;
+                const float* p = &g.positions[s * 4];
+                const float* nv = &g.normals[s * 4];
+                const auto x = std::size_t((s % std::size_t(gw)) / std::size_t(n));
+                sum[x] += settings.lighting ? shade(albedo, glm::dvec3(p[0], p[1], p[2]),
+                                                    glm::dvec3(nv[0], nv[1], nv[2]), g)
+                                            : albedo;
+                ++coveredIn[x];
+            }
+            // The samples the object does not cover show the clear colour.
+            std::uint8_t* out = image.row(y);
+            const double weight = 1.0 / double(n * n);
+            for (int x = 0; x < g.width; ++x) {
+                const glm::dvec3 linear =
+                    (sum[std::size_t(x)] + double(n * n - coveredIn[std::size_t(x)]) * clear) * weight;
+                out[x * 3 + 0] = encodeSrgb8(std::clamp(linear.x, 0.0, 1.0));
+                out[x * 3 + 1] = encodeSrgb8(std::clamp(linear.y, 0.0, 1.0));
+                out[x * 3 + 2] = encodeSrgb8(std::clamp(linear.z, 0.0, 1.0));
+            }
         }
     };
     const int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, std::max(1, g.height));
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-        pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool)
-        t.join();
-    if (failure) std::rethrow_exception(failure);
+    runOnThreads(threads, stop, worker);
     if (control && control->cancelled()) throw Cancelled();
     return image;
 }

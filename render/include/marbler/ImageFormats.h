@@ -1,10 +1,16 @@
 #pragma once
-/// Where Marbler's image formats come from, for `marbler doctor`.
+/// Image formats: how a file names its format, and where Marbler's formats come from (for
+/// `marbler doctor`).
 
+#include <filesystem>
 #include <optional>
 #include <string>
 
 namespace marbler {
+
+/// A file's extension in lower case with its dot (".png"), which is how every writer and
+/// reader picks a format; "" when there is none.
+std::string lowerExtension(const std::filesystem::path& file);
 
 /// The formats written without OpenImageIO, with their libraries' versions, e.g.
 /// "PNG (libpng 1.6.39), TIFF (libtiff 4.5.0), PPM".
