@@ -66,9 +66,14 @@ std::vector<double> components(const ParamSpec& spec, const Operation& op, int d
     return values;
 }
 
-double largestDifference(const std::vector<double>& a, const std::vector<double>& b) {
+/// The largest difference of the components; angles the short way round (315° → 0° is 45°).
+double largestDifference(const std::vector<double>& a, const std::vector<double>& b, bool degrees = false) {
     double d = 0.0;
-    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+    for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+        double di = std::abs(a[i] - b[i]);
+        if (degrees) di = std::abs(std::fmod(di + 180.0, 360.0) - 180.0);
+        d = std::max(d, di);
+    }
     return d;
 }
 
@@ -103,7 +108,7 @@ void describeParameter(const ParamSpec& spec, const Operation& a, const Operatio
     }
     case ParamKind::Angle:
     case ParamKind::Phase:
-        out.push_back({label, key + " " + fromTo(from, to, 0, "°"), largestDifference(from, to) / scale});
+        out.push_back({label, key + " " + fromTo(from, to, 0, "°"), largestDifference(from, to, true) / scale});
         return;
     case ParamKind::Length:
     case ParamKind::Shift:
@@ -163,6 +168,11 @@ std::string withArticle(std::string_view name) {
     return (vowel ? "an " : "a ") + std::string(name);
 }
 
+/// "combs", "stretches".
+std::string plural(std::string_view name) {
+    return std::string(name) + (name.ends_with("ch") || name.ends_with("sh") || name.ends_with('s') ? "es" : "s");
+}
+
 /// The pairs of steps matched by the longest common run of their tools; nothing when
 /// the lists are too long to align cheaply.
 std::optional<std::vector<std::pair<std::size_t, std::size_t>>> alignSteps(const std::vector<Operation>& a,
@@ -194,12 +204,25 @@ std::optional<std::vector<std::pair<std::size_t, std::size_t>>> alignSteps(const
     return pairs;
 }
 
-/// The changes of a list of steps (`initial` or `operations`).
-void describeSteps(const std::vector<Operation>& a, const std::vector<Operation>& b, int dimension, double side,
-                   std::vector<Change>& out) {
+/// The parents a child may have taken strokes from besides its home parent, numbered from 1.
+struct Donor {
+    const Genome* genome;
+    std::size_t number;
+};
+
+/// The stroke changes: matched strokes parameter by parameter, the strokes removed, and the
+/// strokes added (counted by tool, and by the parent that holds them when one does).
+void describeStrokes(const std::vector<Operation>& a, const std::vector<Operation>& b, int dimension, double side,
+                     const std::vector<Donor>& donors, std::vector<Change>& out) {
+    if (a == b) return;
+    for (const Donor& d : donors)
+        if (!b.empty() && d.genome->operations == b) {
+            out.push_back({"", "the strokes of parent " + std::to_string(d.number), 50.0});
+            return;
+        }
     const auto pairs = alignSteps(a, b);
     if (!pairs) {
-        out.push_back({"", "steps: " + std::to_string(a.size()) + " → " + std::to_string(b.size()), 10.0});
+        out.push_back({"", "strokes: " + std::to_string(a.size()) + " → " + std::to_string(b.size()), 10.0});
         return;
     }
     const std::vector<std::string> oldLabels = stepLabels(a), newLabels = stepLabels(b);
@@ -208,11 +231,30 @@ void describeSteps(const std::vector<Operation>& a, const std::vector<Operation>
         keptOld[i] = keptNew[j] = true;
         describeStep(a[i], b[j], dimension, side, newLabels[j], out);
     }
-    // Added and removed steps reshape the design more than any nudge.
+    // Added and removed strokes reshape the design more than any nudge.
     for (std::size_t i = 0; i < a.size(); ++i)
         if (!keptOld[i]) out.push_back({"", "removed " + oldLabels[i], 5.0});
-    for (std::size_t j = 0; j < b.size(); ++j)
-        if (!keptNew[j]) out.push_back({"", "added " + withArticle(toolSpec(b[j].tool).name), 5.0});
+    // (tool, donor number or 0) -> how many were added, in the order first added.
+    std::vector<std::pair<std::pair<Tool, std::size_t>, int>> added;
+    for (std::size_t j = 0; j < b.size(); ++j) {
+        if (keptNew[j]) continue;
+        std::size_t from = 0;
+        for (const Donor& d : donors)
+            if (std::find(d.genome->operations.begin(), d.genome->operations.end(), b[j]) != d.genome->operations.end()) {
+                from = d.number;
+                break;
+            }
+        const std::pair key{b[j].tool, from};
+        auto it = std::find_if(added.begin(), added.end(), [&](const auto& e) { return e.first == key; });
+        if (it == added.end()) added.push_back({key, 1});
+        else ++it->second;
+    }
+    for (const auto& [key, count] : added) {
+        const std::string_view name = toolSpec(key.first).name;
+        std::string text = "added " + (count == 1 ? withArticle(name) : std::to_string(count) + " " + plural(name));
+        if (key.second) text += " from parent " + std::to_string(key.second);
+        out.push_back({"", text, 5.0 * count});
+    }
 }
 
 /// "14 drops", "12 drops and 2 sprays".
@@ -224,7 +266,7 @@ std::string countSteps(const std::vector<Operation>& steps) {
         const int c = count[static_cast<std::size_t>(tool.tool)];
         if (c == 0) continue;
         if (!text.empty()) text += " and ";
-        text += std::to_string(c) + " " + std::string(tool.name) + (c == 1 ? "" : "s");
+        text += std::to_string(c) + " " + (c == 1 ? std::string(tool.name) : plural(tool.name));
     }
     return text.empty() ? "empty" : text;
 }
@@ -333,7 +375,13 @@ void describePalette(const Genome& parent, const Genome& child, std::vector<Chan
 
 } // namespace
 
-std::string describeChange(const Genome& parent, const Genome& child) {
+std::string describeChange(const Genome& parent, const Genome& child) { return describeChange({parent}, 0, child); }
+
+std::string describeChange(const std::vector<Genome>& parents, std::size_t home, const Genome& child) {
+    const Genome& parent = parents.at(home);
+    std::vector<Donor> donors;
+    for (std::size_t k = 0; k < parents.size(); ++k)
+        if (k != home && parents[k].dimension == child.dimension) donors.push_back({&parents[k], k + 1});
     std::vector<Change> changes;
     const double side = std::max({child.size.x, child.size.y, child.dimension == 3 ? child.size.z : 0.0, 1.0});
     if (parent.dimension != child.dimension) {
@@ -348,7 +396,7 @@ std::string describeChange(const Genome& parent, const Genome& child) {
             changes.push_back({"", "size " + fromTo(extent(parent), extent(child), 0), 10.0});
         }
         describeInitial(parent, child, side, changes);
-        describeSteps(parent.operations, child.operations, child.dimension, side, changes);
+        describeStrokes(parent.operations, child.operations, child.dimension, side, donors, changes);
     }
     if (parent.source != child.source)
         changes.push_back({"", child.source ? (parent.source ? "new source image" : "added a source image") : "removed the source image", 20.0});

@@ -463,7 +463,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
         meta["lineage"] = lineage;
         child.meta = meta;
         child.meta["id"] = genomeId(child);
-        child.meta["lineage"]["change"] = describeChange(homeParent, child);
+        child.meta["lineage"]["change"] = describeChange(request.parents, home, child);
 
         try {
             validateGenome(child, "child " + std::to_string(i + 1));

@@ -53,6 +53,13 @@ TEST(ChangeSummary, ChangedCombSpacing) {
     b.operations[0].lambda = 4.26;
     a.operations[0].lambda = 3.5;
     EXPECT_EQ(describeChange(a, b), "wave 1: angle 0° → 42°; comb 1: lambda 3.5 → 4.3");
+    // An angle turns the short way round: 350° → 10° is 20° (0.8 of its scale), less than the
+    // spacing's 20 units (one scale).
+    a = b = base();
+    a.operations[1].angle = 350.0;
+    b.operations[1].angle = 10.0;
+    b.operations[0].spacing = 38.0;
+    EXPECT_EQ(describeChange(a, b), "comb 1: spacing 18 → 38; wave 1: angle 350° → 10°");
 }
 
 TEST(ChangeSummary, MovedDrop) {
@@ -67,6 +74,9 @@ TEST(ChangeSummary, AddedAndRemovedSteps) {
     Genome a = base(), b = base();
     b.operations.push_back(stroke(Tool::Wave));
     EXPECT_EQ(describeChange(a, b), "added a wave");
+    b.operations.push_back(stroke(Tool::Stretch));
+    b.operations.push_back(stroke(Tool::Stretch));
+    EXPECT_EQ(describeChange(a, b), "added 2 stretches; added a wave");
     // The removed comb is the one that is gone, not the first of its kind.
     b = base();
     b.operations.erase(b.operations.begin());
@@ -139,12 +149,30 @@ TEST(ChangeSummary, BredChildrenRecordTheirChange) {
         EXPECT_EQ(change, describeChange(parent, child));
         EXPECT_NE(change, "no visible change");
     }
-    // Swap and recombine describe against the home parent.
+    // Swap and recombine describe against the home parent and name the other parent a part
+    // came from.
     r.op = GeneticOperator::Swap;
     r.parents = {parent, randomGenome(38, 2)};
     const std::vector<Genome> swapped = breed(r);
-    for (std::size_t i = 0; i < swapped.size(); ++i)
-        EXPECT_EQ(swapped[i].meta["lineage"]["change"], describeChange(r.parents[i % 2], swapped[i])) << i;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const std::string change = swapped[i].meta["lineage"]["change"].get<std::string>();
+        EXPECT_EQ(change, describeChange(r.parents, i, swapped[i])) << i;
+        EXPECT_EQ(change.rfind("the strokes of parent " + std::to_string(2 - i), 0), 0u) << change;
+    }
+}
+
+TEST(ChangeSummary, PartsFromAnotherParent) {
+    Genome a = base(), b = base(), c = base();
+    b.operations = {stroke(Tool::Wave), stroke(Tool::Circle)};
+    b.operations[0].amplitude.x = 70.0;
+    c.operations.push_back(b.operations[0]);
+    c.operations.push_back(stroke(Tool::Line));
+    c.operations.push_back(stroke(Tool::Line));
+    EXPECT_EQ(describeChange({a, b}, 0, c), "added 2 lines; added a wave from parent 2");
+    EXPECT_EQ(describeChange(a, c), "added 2 lines; added a wave");
+    c = b;
+    c.palette = a.palette;
+    EXPECT_EQ(describeChange({b, a}, 1, c), "the strokes of parent 1");
 }
 
 } // namespace

@@ -17,7 +17,9 @@
 
 #include "marbler/Genome.h"
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace marbler {
 
@@ -26,5 +28,9 @@ inline constexpr int ChangeSummaryLimit = 4;
 
 /// What differs from `parent` to `child`, in one line.
 std::string describeChange(const Genome& parent, const Genome& child);
+/// What differs from a child's home parent `parents[home]`, naming the other parent a part
+/// came from where the child holds it unchanged: "the strokes of parent 2" (swap), "added a
+/// wave from parent 3" (recombine). Parents are numbered from 1, in the order given.
+std::string describeChange(const std::vector<Genome>& parents, std::size_t home, const Genome& child);
 
 } // namespace marbler
