@@ -22,8 +22,13 @@ DesignCell::DesignCell(int index, QWidget* parent) : QWidget(parent), mIndex(ind
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     setObjectName(QStringLiteral("cell%1").arg(index));
     setAccessibleName(tr("Design %1").arg(index + 1));
-    setToolTip(tr("Click to choose as a parent, double-click to open large, right-click for locks and "
-                  "favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it."));
+    setChange({});
+}
+
+void DesignCell::setChange(const QString& change) {
+    const QString help = tr("Click to choose as a parent, double-click to open large, right-click for locks and "
+                            "favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.");
+    setToolTip(change.isEmpty() ? help : tr("Changed: %1\n\n%2").arg(change, help));
 }
 
 void DesignCell::setImage(const QImage& image) {

@@ -31,6 +31,9 @@ public:
     /// A short caption drawn under the image (e.g. the operator that made the design).
     void setCaption(const QString& caption);
     const QString& caption() const { return mCaption; }
+    /// What the design changed from its parent in words (meta.lineage.change), said first in the
+    /// cell's tooltip; empty for a design that was not bred.
+    void setChange(const QString& change);
     /// Whether the design has a lock: a padlock drawn at the caption's end (drawn, not a
     /// character, so it shows without an emoji font).
     void setLocked(bool locked);

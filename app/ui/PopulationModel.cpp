@@ -510,6 +510,8 @@ LineageInfo lineageOf(const Genome& genome) {
         if (lineage.contains("generation") && lineage["generation"].is_number_integer())
             info.generation = lineage["generation"].get<int>();
         info.varied = lineage.contains("variation") && lineage["variation"].is_object();
+        if (lineage.contains("change") && lineage["change"].is_string())
+            info.change = QString::fromStdString(lineage["change"].get<std::string>());
     }
     return info;
 }

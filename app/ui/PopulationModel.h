@@ -264,6 +264,7 @@ struct LineageInfo {
     QString name;          ///< meta.name when set
     QString family;        ///< meta.family: the pattern family it was drawn from (Families.h), kept by breeding
     bool varied = false;   ///< a gentle variation of a result already in its generation
+    QString change;        ///< what it changed from its home parent, in words (describeChange)
 
     /// The name the UI shows: meta.name, else the first 8 characters of the id.
     QString displayName() const { return name.isEmpty() ? id.left(8) : name; }

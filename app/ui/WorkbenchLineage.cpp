@@ -131,6 +131,7 @@ void WorkbenchWindow::addLineageDesign(QTreeWidgetItem* parent, int generation, 
                                               info.madeBy(), parents.join(QStringLiteral(", ")),
                                               info.op.isEmpty() ? QString() : QString::number(info.generation)});
     item->setToolTip(0, info.family.isEmpty() ? info.id : tr("%1\nFamily: %2").arg(info.id, info.family));
+    item->setToolTip(1, info.change.isEmpty() ? QString() : tr("Changed: %1").arg(info.change));
     item->setToolTip(2, info.parents.join(QLatin1Char('\n')));
     item->setData(0, LineageGenerationRole, generation);
     item->setData(0, LineageCellRole, cell);

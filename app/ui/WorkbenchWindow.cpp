@@ -670,9 +670,11 @@ void WorkbenchWindow::updateCells() {
         c->setOrbitEnabled(g && g->dimension == 3);
         if (!g) {
             c->setCaption({});
+            c->setChange({});
             continue;
         }
         c->setCaption(designCaption(*g));
+        c->setChange(lineageOf(*g).change);
         const Locks locks = locksOf(*g);
         c->setLocked(locks.palette || locks.initial || locks.operations);
     }

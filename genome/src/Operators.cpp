@@ -1,5 +1,6 @@
 #include "marbler/Operators.h"
 
+#include "marbler/ChangeSummary.h"
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
@@ -462,6 +463,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
         meta["lineage"] = lineage;
         child.meta = meta;
         child.meta["id"] = genomeId(child);
+        child.meta["lineage"]["change"] = describeChange(request.parents, home, child);
 
         try {
             validateGenome(child, "child " + std::to_string(i + 1));

@@ -102,7 +102,8 @@ inline constexpr double VariationStrength = 0.12;
 inline constexpr int MaxChildren = 1000;
 
 /// The children of a request. Each child's `meta.lineage` holds {parents: [ids], operator,
-/// seed, child (1-based index), generation (1 + the parents' largest)} (alter adds strength; a
+/// seed, child (1-based index), generation (1 + the parents' largest), change (what differs
+/// from its home parent, in words: describeChange(parents, home, child), ChangeSummary.h)} (alter adds strength; a
 /// varied child adds variation: {of: the id of the repeated design, strength}) and `meta.id`
 /// its own id. Child i draws from a Pcg32 stream derived from (seed, i) alone (and is checked
 /// against the children before it), so the same request gives the same children and asking

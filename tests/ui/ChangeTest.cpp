@@ -1,0 +1,43 @@
+// What a bred design changed from its parent, in words (ChangeSummary.h): said in its cell's
+// tooltip and in the lineage.
+
+#include "UiTestSupport.h"
+#include "marbler/ChangeSummary.h"
+#include "ui/DesignCell.h"
+
+#include <QTreeWidget>
+
+#include <gtest/gtest.h>
+
+using namespace marbler;
+using namespace marbler::ui;
+
+namespace {
+
+class ChangeTest : public test::WindowTest {};
+
+} // namespace
+
+TEST_F(ChangeTest, BredCellsAndTheLineageSayWhatChanged) {
+    const Genome parent = *model().cell(4);
+    EXPECT_TRUE(lineageOf(parent).change.isEmpty()) << "a random design was not bred";
+    EXPECT_FALSE(mWindow->cell(4)->toolTip().contains(QStringLiteral("Changed:")));
+    model().setSelected(4, true);
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Alter));
+    QTreeWidgetItem* designs = mWindow->lineageTree()->topLevelItem(0);
+    int bred = 0;
+    for (int i = 0; i < CellCount; ++i) {
+        SCOPED_TRACE("design " + std::to_string(i + 1));
+        const Genome* g = model().cell(i);
+        ASSERT_NE(g, nullptr);
+        if (lineageOf(*g).op.isEmpty()) continue; // the parent
+        ++bred;
+        const QString change = QString::fromStdString(describeChange(parent, *g));
+        EXPECT_EQ(lineageOf(*g).change, change);
+        EXPECT_NE(change, QStringLiteral("no visible change"));
+        EXPECT_TRUE(mWindow->cell(i)->toolTip().startsWith(QStringLiteral("Changed: ") + change))
+            << mWindow->cell(i)->toolTip().toStdString();
+        EXPECT_EQ(designs->child(i)->toolTip(1), QStringLiteral("Changed: ") + change);
+    }
+    EXPECT_EQ(bred, CellCount - 1);
+}
