@@ -171,6 +171,8 @@ bool WorkbenchWindow::exportColourwaySheet(const QString& chosen) {
     mSheetRunning = true;
     updateActions();
     connect(thread, &QThread::finished, thread, &QObject::deleteLater);
+    // A window closed meanwhile stops the render (the thread then ends by itself).
+    connect(this, &QObject::destroyed, thread, [cancel] { cancel->store(true); });
     connect(thread, &QThread::finished, this, [this, file, failure, guard] {
         mSheetRunning = false;
         // Closing the dialog says "canceled": what happened is read from the thread first.

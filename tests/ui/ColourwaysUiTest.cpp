@@ -11,7 +11,11 @@
 #include "ui/Session.h"
 
 #include <QAction>
+#include <QDir>
+#include <QFileInfo>
 #include <QImage>
+#include <QProgressDialog>
+#include <QPushButton>
 #include <QTemporaryDir>
 
 #include <cstring>
@@ -136,6 +140,27 @@ TEST_F(ColourwaysUiTest, ExportsTheSheetThroughTheFileQuestion) {
     // Cancelled by the question: nothing is started.
     setSaveFileAsker([](QWidget*, const QString&, const QString&, const QString&) { return QString(); });
     EXPECT_FALSE(mWindow->exportColourwaySheet());
+}
+
+TEST_F(ColourwaysUiTest, CancellingTheSheetLeavesNoFile) {
+    test::ErrorCapture errors;
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("big"));
+    mWindow->setSheetCellWidth(2000); // long enough to cancel while it renders
+    ASSERT_TRUE(mWindow->exportColourwaySheet(file));
+    EXPECT_TRUE(mWindow->sheetExportRunning());
+    EXPECT_FALSE(mWindow->exportSheetAction()->isEnabled());
+    auto* progress = mWindow->findChild<QProgressDialog*>();
+    ASSERT_NE(progress, nullptr);
+    // The dialog's Cancel button.
+    auto* button = progress->findChild<QPushButton*>();
+    ASSERT_NE(button, nullptr);
+    button->click();
+    MARBLER_WAIT(!mWindow->sheetExportRunning(), 60000);
+    EXPECT_TRUE(errors.messages.isEmpty()) << errors.messages.join(QStringLiteral("; ")).toStdString();
+    EXPECT_FALSE(QFileInfo::exists(file + QStringLiteral(".png")));
+    EXPECT_TRUE(QDir(dir.path()).isEmpty());
+    EXPECT_TRUE(mWindow->exportSheetAction()->isEnabled());
 }
 
 } // namespace
