@@ -1,5 +1,6 @@
 #include "ui/PopulationModel.h"
 
+#include "marbler/Colourways.h"
 #include "marbler/Error.h"
 #include "marbler/Families.h"
 #include "marbler/Generator.h"
@@ -134,6 +135,40 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
             next.cells[std::size_t(i)] = children[child++];
         }
     }
+    pushGeneration(std::move(next));
+}
+
+QString PopulationModel::whyNoColourways(bool mix) const {
+    if (QString why = whyNot(mix ? GeneticOperator::Recombine : GeneticOperator::Alter); !why.isEmpty()) return why;
+    for (int i : selectedCells())
+        if (locksOf(*cell(i)).palette)
+            return tr("Design %1's palette is locked, and colourways change only the palette: unlock it first").arg(i + 1);
+    return {};
+}
+
+void PopulationModel::applyColourways(bool mix, double strength, const QString& description) {
+    const auto selected = selectedCells();
+    ColourwayRequest request;
+    request.mix = mix;
+    request.strength = std::clamp(strength, 0.0, 1.0);
+    request.seed = nextBreedSeed();
+    for (int i : selected) request.parents.push_back(*cell(i));
+    request.count = CellCount - int(selected.size());
+    if (request.count <= 0) throw InputError("every cell is a parent: deselect one to make room for colourways");
+    request.generation = current().number + 1;
+    for (int i = 0; i < CellCount; ++i)
+        if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
+    std::vector<Genome> children = colourways(request);
+
+    Generation next;
+    next.selected = current().selected;
+    next.parentCells = selected;
+    next.description = !description.isEmpty() ? description
+                       : selected.size() == 1 ? tr("Colourways of 1 parent")
+                                              : tr("Colourways mixed from %1 parents").arg(selected.size());
+    std::size_t child = 0;
+    for (int i = 0; i < CellCount; ++i)
+        next.cells[std::size_t(i)] = current().selected[std::size_t(i)] ? current().cells[std::size_t(i)] : children[child++];
     pushGeneration(std::move(next));
 }
 
@@ -465,6 +500,7 @@ QString operatorLabel(GeneticOperator op) {
 
 QString operatorLabel(const QString& name) {
     const std::optional<GeneticOperator> op = parseOperator(name.toStdString());
+    if (!op && name == QLatin1String(ColourwayOperator)) return PopulationModel::tr("Colourway");
     return op ? operatorLabel(*op) : name;
 }
 

@@ -103,6 +103,14 @@ public:
     void apply(GeneticOperator op, double strength);
     /// The seed apply() would use for the next generation.
     std::uint64_t nextBreedSeed() const;
+    /// Colourways (Colourways.h): keeps the selected parents and fills every other cell with
+    /// colourways of them, seeded as apply() is: palette variations of the one parent (`mix`
+    /// false, at `strength`) or palettes mixed from the parents (`mix` true). An ordinary
+    /// generation, saved with the session like any other; `description` names it (default
+    /// "Colourways of 1 parent"). Throws marbler::Error as apply() does.
+    void applyColourways(bool mix, double strength, const QString& description = {});
+    /// Why applyColourways cannot run with the current selection (empty when it can).
+    QString whyNoColourways(bool mix) const;
 
     /// Replaces the grid with nine random designs of the dimension (2 or 3): of one pattern
     /// family (Families.h) when `family` names one of that dimension, else a mix of the

@@ -326,6 +326,7 @@ void WorkbenchWindow::buildActions() {
     bar->addAction(mForward);
     bar->addSeparator();
     for (QAction* a : {mAlter, mRecombine, mSwap, mReinit}) bar->addAction(a);
+    buildColourwayActions(breedMenu, bar);
 
     mStrength = new QSlider(Qt::Horizontal, bar);
     mStrength->setObjectName(QStringLiteral("strengthSlider"));
@@ -690,6 +691,7 @@ void WorkbenchWindow::updateActions() {
         action->setEnabled(why.isEmpty());
         action->setToolTip(why.isEmpty() ? action->property("readyTip").toString() : why);
     }
+    updateColourwayActions();
     mBack->setEnabled(mModel->canGoBack());
     mForward->setEnabled(mModel->canGoForward());
     const auto& gen = mModel->current();
@@ -852,6 +854,7 @@ void WorkbenchWindow::onOrbit(int index, QPoint delta, bool finished) {
 }
 
 bool WorkbenchWindow::applyOperator(GeneticOperator op) {
+    if (colourwaysMode()) return applyColourwayOperator(op);
     if (const QString why = mModel->whyNot(op); !why.isEmpty()) {
         statusBar()->showMessage(why, 5000);
         return false;

@@ -29,6 +29,7 @@ class QMenu;
 class QPushButton;
 class QSlider;
 class QTreeWidget;
+class QToolBar;
 class QTreeWidgetItem;
 
 namespace marbler::ui {
@@ -188,6 +189,24 @@ public:
     void noteSavedFile(const QString& file);
     SavedFileNotice* savedFileNotice() const { return mSavedNotice; }
 
+    /// Colourways (WorkbenchColourways.cpp), Breed ▸ Colourways: while on, the grid breeds only
+    /// palettes (Colourways.h): Alter varies the parent's palette (the slider sets how much),
+    /// Recombine mixes the parents' palettes, Swap and Change initial state are off (their
+    /// tooltips say why). Turning it on with one design selected fills a new generation with
+    /// that design and eight colourways of it; turning it off returns to ordinary breeding.
+    QAction* colourwaysAction() const { return mColourways; }
+    bool colourwaysMode() const;
+    void setColourwaysMode(bool on);
+    /// Breed ▸ Export colourway sheet…: the grid's designs as one image (Sheet.h), PNG or TIFF,
+    /// rendered off the GUI thread with a progress dialog; `file` empty asks for one
+    /// (askSaveFile). The status bar notes the file when written. Returns whether it started.
+    bool exportColourwaySheet(const QString& file = {});
+    QAction* exportSheetAction() const { return mExportSheet; }
+    /// Whether a sheet is being written.
+    bool sheetExportRunning() const { return mSheetRunning; }
+    /// The width of a sheet's cells in pixels (default 600; the height follows the design).
+    void setSheetCellWidth(int width) { mSheetCellWidth = width; }
+
 signals:
     /// Every visible design has its final image.
     void renderingFinished();
@@ -202,6 +221,11 @@ protected:
 
 private:
     void buildActions();
+    void buildColourwayActions(QMenu* breedMenu, QToolBar* bar);
+    void onColourwaysToggled(bool on);
+    /// In Colourways mode: the operators' states and tooltips for palette-only breeding.
+    void updateColourwayActions();
+    bool applyColourwayOperator(GeneticOperator op);
     /// The cell Copy design copies: the focused one holding a design, else the first selected
     /// (-1: none).
     int designToCopy() const;
@@ -308,6 +332,10 @@ private:
     QAction* mCopyDesign = nullptr;
     QAction* mPasteDesign = nullptr;
     QPushButton* mUndoRemove = nullptr;
+    QAction* mColourways = nullptr;
+    QAction* mExportSheet = nullptr;
+    int mSheetCellWidth = 600;
+    bool mSheetRunning = false;
 };
 
 /// Reports a session file that does not load (once), moving it aside as `.bad` first.

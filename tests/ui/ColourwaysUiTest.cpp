@@ -1,0 +1,166 @@
+// The window's Colourways mode (Breed ▸ Colourways): entering it with one design picked, breeding
+// only palettes while it is on, the operators it turns off, the session keeping its
+// generations, and Breed ▸ Export colourway sheet… through the injectable file question.
+
+#include "UiTestSupport.h"
+#include "WaitFor.h"
+
+#include "marbler/Colourways.h"
+#include "marbler/Sheet.h"
+#include "ui/SavedFiles.h"
+#include "ui/Session.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileInfo>
+#include <QImage>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QTemporaryDir>
+
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+using namespace marbler;
+using namespace marbler::ui;
+
+namespace {
+
+class ColourwaysUiTest : public test::WindowTest {
+protected:
+    void TearDown() override {
+        setSaveFileAsker({});
+        test::WindowTest::TearDown();
+    }
+};
+
+TEST_F(ColourwaysUiTest, EnteringWithOneDesignFillsItsColourways) {
+    model().setSelected(4, true);
+    const Genome design = *model().cell(4);
+    const int before = model().currentIndex();
+    QAction* mode = mWindow->colourwaysAction();
+    ASSERT_NE(mode, nullptr);
+    EXPECT_TRUE(mode->isCheckable());
+    mode->trigger();
+    ASSERT_TRUE(mWindow->colourwaysMode());
+    EXPECT_NE(model().currentIndex(), before);
+    EXPECT_TRUE(model().current().description.startsWith(QStringLiteral("Colourways of")));
+    EXPECT_EQ(*model().cell(4), design);
+    for (int c = 0; c < CellCount; ++c) {
+        if (c == 4) continue;
+        ASSERT_NE(model().cell(c), nullptr);
+        EXPECT_TRUE(sameStructure(*model().cell(c), design)) << "cell " << c;
+        EXPECT_NE(model().cell(c)->palette, design.palette) << "cell " << c;
+        EXPECT_TRUE(paletteHasContrast(model().cell(c)->palette, model().cell(c)->background));
+        EXPECT_EQ(lineageOf(*model().cell(c)).madeBy(), QStringLiteral("Colourway"));
+    }
+}
+
+TEST_F(ColourwaysUiTest, BreedingInTheModeKeepsTheStructure) {
+    model().setSelected(0, true);
+    const Genome design = *model().cell(0);
+    mWindow->setColourwaysMode(true);
+    // Swap and Change initial state are off, and say why.
+    for (GeneticOperator op : {GeneticOperator::Swap, GeneticOperator::Reinit}) {
+        EXPECT_FALSE(mWindow->operatorAction(op)->isEnabled());
+        EXPECT_TRUE(mWindow->operatorAction(op)->toolTip().contains(QStringLiteral("Colourways")));
+    }
+    model().clearSelection();
+    model().setSelected(3, true);
+    ASSERT_TRUE(mWindow->operatorAction(GeneticOperator::Alter)->isEnabled());
+    mWindow->operatorAction(GeneticOperator::Alter)->trigger();
+    for (int c = 0; c < CellCount; ++c) EXPECT_TRUE(sameStructure(*model().cell(c), design)) << "alter, cell " << c;
+    model().setSelected(5, true);
+    EXPECT_FALSE(mWindow->operatorAction(GeneticOperator::Swap)->isEnabled());
+    ASSERT_TRUE(mWindow->operatorAction(GeneticOperator::Recombine)->isEnabled());
+    EXPECT_TRUE(mWindow->applyOperator(GeneticOperator::Recombine));
+    EXPECT_FALSE(mWindow->applyOperator(GeneticOperator::Swap));
+    for (int c = 0; c < CellCount; ++c) EXPECT_TRUE(sameStructure(*model().cell(c), design)) << "recombine, cell " << c;
+
+    // Leaving the mode: ordinary breeding, which moves the strokes.
+    mWindow->setColourwaysMode(false);
+    EXPECT_TRUE(mWindow->operatorAction(GeneticOperator::Swap)->isEnabled());
+    model().clearSelection();
+    model().setSelected(0, true);
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Alter));
+    int moved = 0;
+    for (int c = 1; c < CellCount; ++c) moved += model().cell(c)->operations != design.operations;
+    EXPECT_GT(moved, 0);
+}
+
+TEST_F(ColourwaysUiTest, TheSessionKeepsAColourwayGeneration) {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("session.json"));
+    model().setSessionFile(file);
+    model().setSelected(2, true);
+    mWindow->setColourwaysMode(true);
+    ASSERT_TRUE(model().saveSession());
+    const SavedSession saved = loadSession(file);
+    ASSERT_EQ(saved.history.size(), model().history().size());
+    const Generation& back = saved.history[std::size_t(saved.current)];
+    for (int c = 0; c < CellCount; ++c) EXPECT_EQ(*back.cells[std::size_t(c)], *model().cell(c)) << "cell " << c;
+}
+
+TEST_F(ColourwaysUiTest, ExportsTheSheetThroughTheFileQuestion) {
+    test::ErrorCapture errors;
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("sheet.png"));
+    QString offered;
+    setSaveFileAsker([&](QWidget*, const QString&, const QString& suggested, const QString& filter) {
+        offered = suggested;
+        EXPECT_TRUE(filter.contains(QStringLiteral("*.tif")));
+        return file;
+    });
+    model().setSelected(1, true);
+    mWindow->setColourwaysMode(true);
+    mWindow->setSheetCellWidth(40);
+    ASSERT_TRUE(mWindow->exportSheetAction()->isEnabled());
+    mWindow->exportSheetAction()->trigger();
+    EXPECT_TRUE(offered.endsWith(QStringLiteral("colourways.png"))) << offered.toStdString();
+    MARBLER_WAIT(!mWindow->sheetExportRunning(), 60000);
+    EXPECT_TRUE(errors.messages.isEmpty()) << errors.messages.join(QStringLiteral("; ")).toStdString();
+    EXPECT_EQ(mWindow->savedFileNotice()->file(), file);
+
+    std::vector<Genome> designs;
+    for (int c = 0; c < CellCount; ++c) designs.push_back(*model().cell(c));
+    SheetSettings settings;
+    settings.cellWidth = 40;
+    settings.gap = 4;
+    settings.aa = "rgss";
+    const Image expected = renderSheet(designs, settings);
+    QImage image(file);
+    ASSERT_FALSE(image.isNull());
+    image = image.convertToFormat(QImage::Format_RGB888);
+    ASSERT_EQ(image.width(), expected.width);
+    ASSERT_EQ(image.height(), expected.height);
+    for (int y = 0; y < image.height(); ++y)
+        ASSERT_EQ(std::memcmp(image.constScanLine(y), expected.row(y), std::size_t(expected.width) * 3), 0) << "row " << y;
+
+    // Cancelled by the question: nothing is started.
+    setSaveFileAsker([](QWidget*, const QString&, const QString&, const QString&) { return QString(); });
+    EXPECT_FALSE(mWindow->exportColourwaySheet());
+}
+
+TEST_F(ColourwaysUiTest, CancellingTheSheetLeavesNoFile) {
+    test::ErrorCapture errors;
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("big"));
+    mWindow->setSheetCellWidth(2000); // long enough to cancel while it renders
+    ASSERT_TRUE(mWindow->exportColourwaySheet(file));
+    EXPECT_TRUE(mWindow->sheetExportRunning());
+    EXPECT_FALSE(mWindow->exportSheetAction()->isEnabled());
+    auto* progress = mWindow->findChild<QProgressDialog*>();
+    ASSERT_NE(progress, nullptr);
+    // The dialog's Cancel button.
+    auto* button = progress->findChild<QPushButton*>();
+    ASSERT_NE(button, nullptr);
+    button->click();
+    MARBLER_WAIT(!mWindow->sheetExportRunning(), 60000);
+    EXPECT_TRUE(errors.messages.isEmpty()) << errors.messages.join(QStringLiteral("; ")).toStdString();
+    EXPECT_FALSE(QFileInfo::exists(file + QStringLiteral(".png")));
+    EXPECT_TRUE(QDir(dir.path()).isEmpty());
+    EXPECT_TRUE(mWindow->exportSheetAction()->isEnabled());
+}
+
+} // namespace
