@@ -127,6 +127,7 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     next.description = selected.size() == 1
         ? tr("%1 of 1 parent").arg(operatorLabel(op))
         : tr("%1 of %2 parents").arg(operatorLabel(op)).arg(selected.size());
+    if (mWildcard && children.size() > 1) children.back() = wildcard(request, children.back());
     std::size_t child = 0;
     for (int i = 0; i < CellCount; ++i) {
         if (current().selected[std::size_t(i)]) {
@@ -170,6 +171,41 @@ void PopulationModel::applyColourways(bool mix, double strength, const QString& 
     for (int i = 0; i < CellCount; ++i)
         next.cells[std::size_t(i)] = current().selected[std::size_t(i)] ? current().cells[std::size_t(i)] : children[child++];
     pushGeneration(std::move(next));
+}
+
+Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& replaced) const {
+    // Of the parents' family when they have one (the first parent that does), else free.
+    const Family* family = nullptr;
+    for (const Genome& parent : request.parents)
+        if (!family && parent.meta.is_object() && parent.meta.contains("family") && parent.meta["family"].is_string())
+            family = findFamily(parent.meta["family"].get<std::string>());
+    const int dimension = request.parents.front().dimension;
+    if (family && family->dimension != dimension) family = nullptr;
+    std::set<std::string> taken;
+    for (const Genome& parent : request.parents) taken.insert(genomeId(parent));
+    Genome g;
+    std::uint64_t seed = 0;
+    for (std::uint64_t draw = 0; draw < 16; ++draw) {
+        seed = mixSeed(request.seed, 0x77696c64ULL + draw) & 0xffffffffULL;
+        g = family ? familyGenome(*family, seed) : randomGenome(seed, dimension);
+        if (!taken.count(genomeId(g))) break;
+    }
+    // The wildcard takes the cell's place in the lineage: its name, generation and number, and
+    // an operator of its own so the tree and tooltips can say what it is.
+    nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
+    lineage["operator"] = "wildcard";
+    lineage["seed"] = seed;
+    if (replaced.meta.contains("lineage") && replaced.meta["lineage"].is_object()) {
+        const auto& was = replaced.meta["lineage"];
+        if (was.contains("child")) lineage["child"] = was["child"];
+        if (was.contains("generation")) lineage["generation"] = was["generation"];
+    }
+    g.meta["lineage"] = lineage;
+    if (lineage.contains("generation") && lineage.contains("child") && g.meta.contains("name") && g.meta["name"].is_string())
+        g.meta["name"] = g.meta["name"].get<std::string>() + " (g" + lineage["generation"].dump() + " #" +
+                         std::to_string(request.childNumbers.empty() ? lineage["child"].get<int>() : request.childNumbers.back()) + ")";
+    g.meta["id"] = genomeId(g);
+    return g;
 }
 
 void PopulationModel::newRandomPopulation(int dimension, const std::string& family) {
@@ -499,6 +535,7 @@ QString operatorLabel(GeneticOperator op) {
 }
 
 QString operatorLabel(const QString& name) {
+    if (name == QLatin1String("wildcard")) return PopulationModel::tr("Wildcard");
     const std::optional<GeneticOperator> op = parseOperator(name.toStdString());
     if (!op && name == QLatin1String(ColourwayOperator)) return PopulationModel::tr("Colourway");
     return op ? operatorLabel(*op) : name;

@@ -101,6 +101,12 @@ public:
     /// breeding again from a generation one went back to draws anew). Throws marbler::Error
     /// (InputError for a wrong parent count or mixed dimensions).
     void apply(GeneticOperator op, double strength);
+    /// Whether apply() makes its last offspring cell a wildcard (on by default): a fresh design
+    /// of the parents' family (familyGenome), or a free random one without a family, seeded
+    /// from the generation's seed, against breeding fatigue. Its meta.lineage.operator is
+    /// "wildcard".
+    bool wildcardCell() const { return mWildcard; }
+    void setWildcardCell(bool on) { mWildcard = on; }
     /// The seed apply() would use for the next generation.
     std::uint64_t nextBreedSeed() const;
     /// Colourways (Colourways.h): keeps the selected parents and fills every other cell with
@@ -228,6 +234,8 @@ private:
     /// Adds a generation as a child of the current one (a root when it replaces the empty
     /// placeholder) and makes it current.
     void pushGeneration(Generation generation);
+    /// The wildcard that takes the place of `replaced`, the last offspring of `request`.
+    Genome wildcard(const BreedRequest& request, const Genome& replaced) const;
     /// The generation goForward() goes to, -1 when the current one has no child.
     int forwardTarget() const;
     /// Makes a generation current and remembers the way to it for Forward.
@@ -245,6 +253,7 @@ private:
     /// resume the way to the current generation is remembered again.
     std::vector<int> mForwardChild;
     bool mEmptyStart = true;
+    bool mWildcard = true;
     QString mFavouritesFolder;
     std::vector<Favourite> mFavourites;
     QString mSessionFile;

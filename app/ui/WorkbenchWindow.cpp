@@ -322,6 +322,19 @@ void WorkbenchWindow::buildActions() {
                            tr("Offspring with new initial drops under the same strokes"),
                            QKeySequence(Qt::CTRL | Qt::Key_4));
 
+    // One offspring cell a fresh design of the parents' family, against breeding fatigue.
+    breedMenu->addSeparator();
+    QAction* wildcard = breedMenu->addAction(tr("&Wildcard cell"));
+    wildcard->setObjectName(QStringLiteral("wildcardAction"));
+    wildcard->setCheckable(true);
+    wildcard->setChecked(QSettings().value(QStringLiteral("breed/wildcard"), true).toBool());
+    wildcard->setStatusTip(tr("The last offspring cell of each generation is a fresh design of the parents' family"));
+    mModel->setWildcardCell(wildcard->isChecked());
+    connect(wildcard, &QAction::toggled, this, [this](bool on) {
+        mModel->setWildcardCell(on);
+        QSettings().setValue(QStringLiteral("breed/wildcard"), on);
+    });
+
     bar->addAction(mBack);
     bar->addAction(mForward);
     bar->addSeparator();

@@ -5,6 +5,7 @@
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
+#include "marbler/Tools.h"
 
 #include <glm/geometric.hpp>
 
@@ -71,8 +72,12 @@ double keepInRange(const ParamRange& range, double v, double margin) {
 /// not its parameters. An optional version-2 parameter at its default (a swirl's core of 0)
 /// stays there too: alteration varies a design and adds no feature to it, so a version-1
 /// design's children stay version 1 (and draw exactly what they drew before version 2).
-void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
+///
+/// `relative` (a family's design altered gently): lengths, shifts and sizes move by a factor
+/// of their own value, teeth by a share of their mean gap, so a fine comb stays fine.
+void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool relative = false) {
     const double side = largestSide(g);
+    const auto factor = [&] { return 1.0 + std::clamp(rng.normal() * FamilyRelativeScale * strength, -0.5, 1.0); };
     const double floorLength = 1e-3 * side; // lengths stay clearly > 0
     constexpr double AngleMargin = 1e-3;    // degrees, for an angle whose range is open
     const glm::dvec3 before = op.direction, beforeNormal = op.normal;
@@ -116,7 +121,8 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
         case ParamKind::Shift:
         case ParamKind::Extent:
             for (int i = 0; i < n; ++i) {
-                double v = getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side;
+                double v = relative ? getComponent(spec, op, i) * factor()
+                                    : getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side;
                 // Lengths that must be > 0 stay clearly so.
                 setComponent(spec, op, i, keepInRange(spec.range, v, floorLength));
             }
@@ -130,8 +136,10 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng) {
         case ParamKind::Teeth: {
             // Each tooth moves; then they are put back in order, at least a hair apart (and at
             // least one representable step where a hair is lost in rounding, far out).
-            for (int i = 0; i < n; ++i)
-                setComponent(spec, op, i, getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side);
+            double scale = spec.mutationScale * strength * side;
+            if (relative && op.teeth.size() > 1)
+                scale = FamilyRelativeScale * strength * (op.teeth.back() - op.teeth.front()) / static_cast<double>(op.teeth.size() - 1);
+            for (int i = 0; i < n; ++i) setComponent(spec, op, i, getComponent(spec, op, i) + rng.normal() * scale);
             std::sort(op.teeth.begin(), op.teeth.end());
             for (std::size_t i = 1; i < op.teeth.size(); ++i) {
                 const double before = op.teeth[i - 1];
@@ -212,7 +220,81 @@ std::string rootName(const Genome& g) {
     return name;
 }
 
+
+/// The n-th root of x >= 0 by bisection: basic operations only, so the same on every machine.
+double rootOf(double x, int n) {
+    double lo = 0.0, hi = std::max(1.0, x);
+    for (int k = 0; k < 64; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        double p = 1.0;
+        for (int j = 0; j < n; ++j) p *= mid;
+        (p < x ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+/// sRGB to CIE L*a*b* under D65.
+std::array<double, 3> labOf(Color c) {
+    const auto linear = [](std::uint8_t v) {
+        const double x = v / 255.0;
+        if (x <= 0.04045) return x / 12.92;
+        const double t = (x + 0.055) / 1.055, t2 = t * t, t4 = t2 * t2, t12 = t4 * t4 * t4;
+        return rootOf(t12, 5); // t^2.4
+    };
+    const double r = linear(c.r), g = linear(c.g), b = linear(c.b);
+    const double x = (0.4124564 * r + 0.3575761 * g + 0.1804375 * b) / 0.95047;
+    const double y = 0.2126729 * r + 0.7151522 * g + 0.0721750 * b;
+    const double z = (0.0193339 * r + 0.1191920 * g + 0.9503041 * b) / 1.08883;
+    constexpr double Delta = 6.0 / 29.0;
+    const auto f = [](double t) { return t > Delta * Delta * Delta ? rootOf(t, 3) : t / (3.0 * Delta * Delta) + 4.0 / 29.0; };
+    const double fx = f(x), fy = f(y), fz = f(z);
+    return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
+}
+
+/// How a candidate child fares in the filter: acceptable, or how good a second best.
+struct Verdict {
+    bool dull = false;
+    double nearest = std::numeric_limits<double>::infinity(); ///< smallest mean ΔE to the others
+    bool passes() const { return !dull && nearest >= NearDuplicateDeltaE; }
+    bool betterThan(const Verdict& o) const { return dull != o.dull ? !dull : nearest > o.nearest; }
+};
+
 } // namespace
+
+Glimpse glimpseOf(const Genome& genome) {
+    std::vector<std::array<double, 3>> inks;
+    inks.reserve(genome.palette.size() + 1);
+    inks.push_back(labOf(genome.background)); // index 0: no ink (the ground, or the source)
+    for (Color c : genome.palette) inks.push_back(labOf(c));
+    const std::vector<PreparedOp> ops = prepare(genome);
+    constexpr int Cells = GlimpseSide * GlimpseSide;
+    std::vector<int> counts(inks.size(), 0);
+    Glimpse glimpse;
+    glimpse.lab.reserve(3 * Cells);
+    const double z = genome.dimension == 3 ? 0.5 * genome.size.z : 0.0;
+    for (int j = 0; j < GlimpseSide; ++j)
+        for (int i = 0; i < GlimpseSide; ++i) {
+            const glm::dvec3 p{(i + 0.5) / GlimpseSide * genome.size.x, (j + 0.5) / GlimpseSide * genome.size.y, z};
+            const int color = traceColor(ops, p);
+            const auto index = static_cast<std::size_t>(color >= 0 && color < static_cast<int>(genome.palette.size()) ? color + 1 : 0);
+            ++counts[index];
+            glimpse.lab.insert(glimpse.lab.end(), inks[index].begin(), inks[index].end());
+        }
+    glimpse.dominantShare = static_cast<double>(*std::max_element(counts.begin(), counts.end())) / Cells;
+    return glimpse;
+}
+
+double meanDeltaE(const Glimpse& a, const Glimpse& b) {
+    const std::size_t n = std::min(a.lab.size(), b.lab.size()) / 3;
+    if (n == 0) return 0.0;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double dl = a.lab[3 * k] - b.lab[3 * k], da = a.lab[3 * k + 1] - b.lab[3 * k + 1],
+                     db = a.lab[3 * k + 2] - b.lab[3 * k + 2];
+        sum += std::sqrt(dl * dl + da * da + db * db);
+    }
+    return sum / static_cast<double>(n);
+}
 
 std::string_view operatorName(GeneticOperator op) { return OperatorNames[static_cast<std::size_t>(op)]; }
 
@@ -280,14 +362,15 @@ Genome alterGenome(const Genome& parent, double strength, Pcg32& rng) {
     Genome child = parent;
     if (strength == 0.0) return child; // exactly the parent, not a renormalised copy
     Locks locks = locksOf(parent);
+    const bool relative = strength < FamilyKeepStrength && child.meta.is_object() && child.meta.contains("family");
     if (!locks.operations) {
-        for (Operation& op : child.operations) perturb(op, child, strength, rng);
+        for (Operation& op : child.operations) perturb(op, child, strength, rng, relative);
         return child;
     }
     // The strokes are locked: vary what is free instead, more gently, so the operator still
     // offers a choice.
     if (!locks.initial)
-        for (Operation& op : child.initial) perturb(op, child, 0.5 * strength, rng);
+        for (Operation& op : child.initial) perturb(op, child, 0.5 * strength, rng, relative);
     if (!locks.palette) {
         for (Color& c : child.palette) c = nudgeColor(c, 24.0 * strength, rng);
         child.background = nudgeColor(child.background, 8.0 * strength, rng);
@@ -403,6 +486,17 @@ std::vector<Genome> breed(const BreedRequest& request) {
     }
     generation = request.generation.value_or(generation + 1);
 
+    // The glimpses the filter compares a child with: the parents', then each child's in turn.
+    const bool filtered = op == GeneticOperator::Recombine || op == GeneticOperator::Reinit ||
+                          (op == GeneticOperator::Alter && request.strength > 0.0);
+    std::vector<Glimpse> looks;
+    double parentShare = 0.0;
+    if (filtered)
+        for (const Genome& parent : request.parents) {
+            looks.push_back(glimpseOf(parent));
+            parentShare = std::max(parentShare, looks.back().dominantShare);
+        }
+
     std::vector<Genome> children;
     children.reserve(static_cast<std::size_t>(request.count));
     for (int i = 0; i < request.count; ++i) {
@@ -421,27 +515,59 @@ std::vector<Genome> breed(const BreedRequest& request) {
             }
             return request.parents[0];
         };
-        Genome child = draw();
         // Swap has exactly two results and alter at strength 0 one: drawing again cannot help.
         const bool random = op == GeneticOperator::Recombine || op == GeneticOperator::Reinit ||
                             (op == GeneticOperator::Alter && request.strength > 0.0);
-        for (int attempt = 0; random && taken.count(genomeId(child)) && attempt < 16; ++attempt) child = draw();
+        // One draw, and what the operator does when it repeats a design already in the generation.
+        const auto candidate = [&](std::optional<nlohmann::ordered_json>& variation) {
+            Genome child = draw();
+            for (int attempt = 0; random && taken.count(genomeId(child)) && attempt < 16; ++attempt) child = draw();
+            if (taken.count(genomeId(child))) {
+                // A repeat wastes a cell: vary it gently instead (more on a further repeat). alterGenome
+                // honours the home parent's locks, which the child carries in its meta.
+                const Genome repeated = child;
+                double strength = VariationStrength;
+                for (int attempt = 0; attempt < 8; ++attempt) {
+                    if (attempt > 0) strength = std::min(1.0, strength * 1.5);
+                    child = alterGenome(repeated, strength, rng);
+                    if (!taken.count(genomeId(child))) break;
+                }
+                if (genomeId(child) != genomeId(repeated)) {
+                    variation = nlohmann::ordered_json::object();
+                    (*variation)["of"] = genomeId(repeated);
+                    (*variation)["strength"] = strength;
+                }
+            }
+            return child;
+        };
         std::optional<nlohmann::ordered_json> variation;
-        if (taken.count(genomeId(child))) {
-            // A repeat wastes a cell: vary it gently instead (more on a further repeat). alterGenome
-            // honours the home parent's locks, which the child carries in its meta.
-            const Genome repeated = child;
-            double strength = VariationStrength;
-            for (int attempt = 0; attempt < 8; ++attempt) {
-                if (attempt > 0) strength = std::min(1.0, strength * 1.5);
-                child = alterGenome(repeated, strength, rng);
-                if (!taken.count(genomeId(child))) break;
+        Genome child = candidate(variation);
+        int redraws = 0;
+        if (filtered) {
+            // The filter: a dull child or a near-duplicate of a parent or an earlier sibling is
+            // drawn again (a fixed number of times; the best draw stays).
+            const auto judge = [&](const Glimpse& look) {
+                Verdict verdict;
+                verdict.dull = look.dominantShare > DullShare && look.dominantShare > parentShare;
+                for (const Glimpse& other : looks) verdict.nearest = std::min(verdict.nearest, meanDeltaE(look, other));
+                return verdict;
+            };
+            Glimpse look = glimpseOf(child);
+            Verdict verdict = judge(look);
+            for (int attempt = 1; attempt <= ChildRedraws && !verdict.passes(); ++attempt) {
+                std::optional<nlohmann::ordered_json> againVariation;
+                Genome again = candidate(againVariation);
+                Glimpse againLook = glimpseOf(again);
+                Verdict againVerdict = judge(againLook);
+                redraws = attempt;
+                if (againVerdict.betterThan(verdict)) {
+                    child = std::move(again);
+                    variation = std::move(againVariation);
+                    look = std::move(againLook);
+                    verdict = againVerdict;
+                }
             }
-            if (genomeId(child) != genomeId(repeated)) {
-                variation = nlohmann::ordered_json::object();
-                (*variation)["of"] = genomeId(repeated);
-                (*variation)["strength"] = strength;
-            }
+            looks.push_back(std::move(look));
         }
         taken.insert(genomeId(child));
 
@@ -459,6 +585,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
         lineage["child"] = i + 1;
         if (op == GeneticOperator::Alter) lineage["strength"] = request.strength;
         if (variation) lineage["variation"] = *variation;
+        if (redraws > 0) lineage["redraws"] = redraws;
         lineage["generation"] = generation;
         meta["lineage"] = lineage;
         child.meta = meta;

@@ -34,6 +34,20 @@
 /// `meta.lineage.variation`. So swap gives the two swaps, then variations of them in turn.
 /// Only a home parent with everything locked can still give copies: nothing may change.
 ///
+/// Children worth looking at: a random operator's child (alter above strength 0, recombine,
+/// reinit) that is dull (one colour covers more than DullShare of its glimpse, and more than of
+/// its parents') or a near-duplicate (mean CIE76 colour difference below NearDuplicateDeltaE
+/// against a parent or an earlier sibling) is drawn again, as the best fractal breeders do: at
+/// most ChildRedraws times, from the child's own stream, so it is reproducible and costs no
+/// more on a slow machine; if every draw fails the best one is kept (not dull first, then the
+/// farthest from the others). `meta.lineage.redraws` records how many redraws a child took
+/// (absent when none). Swap's two results are not filtered: drawing again cannot change them.
+///
+/// A family's character stays (a nonpareil's fine comb stays fine): for a design with
+/// `meta.family`, alteration below FamilyKeepStrength moves lengths, shifts, sizes and a
+/// stretch's teeth relative to their own size (a factor within [1/2, 2]) rather than by a
+/// fraction of the design; at FamilyKeepStrength and above it alters as any design.
+///
 /// Colour indices that another palette does not have (swap, recombine) are clamped to its last
 /// ink. Children keep the home parent's free-form `meta` (name with a generation suffix,
 /// locks, author...) except `seed`, `generator`, `id` and `lineage`, which they set anew.
@@ -98,13 +112,48 @@ struct BreedRequest {
 /// generation (see above): gentle, so it stays recognisably that result.
 inline constexpr double VariationStrength = 0.12;
 
+/// The child filter (see above). A glimpse is GlimpseSide x GlimpseSide cell centres of the
+/// design (for a solid, the slice halfway up z) coloured by the hard colour rule traceColor:
+/// enough to see a comb's lines or a dominant ink, about a millisecond a design.
+inline constexpr int GlimpseSide = 32;
+/// The most draws a child gets beyond its first; a fixed count, not a time, so children never
+/// depend on the machine.
+inline constexpr int ChildRedraws = 8;
+/// A child is dull when one colour (an ink or the ground) covers more than this share of its
+/// glimpse, and more than it covers of every parent's: a plain sheet of ink, or a sheet of bare
+/// ground, has nothing to choose between (what the parents already had is no fault of the child).
+inline constexpr double DullShare = 0.97;
+/// A child is a near-duplicate when its glimpse's mean CIE76 ΔE against a parent's or an earlier
+/// sibling's is below this: about one just-noticeable difference (ΔE 2.3) spread over the whole
+/// image, or 3 % of the cells changed between two distinct inks (ΔE ~50), which at a glance
+/// reads as the same design.
+inline constexpr double NearDuplicateDeltaE = 1.5;
+/// Alteration below this strength keeps a family's character (relative length changes).
+inline constexpr double FamilyKeepStrength = 0.7;
+/// The relative spread of a family design's lengths at strength 1 (a factor 1 + N(0, 1) times
+/// this times the strength, held within [1/2, 2]).
+inline constexpr double FamilyRelativeScale = 0.25;
+
+/// A small look at a design: per cell its colour in CIE L*a*b* (D65), and the largest share any
+/// one colour covers. A source image cannot be read in genome/, so where the source shows the
+/// glimpse sees the background colour; bleed is ignored (the hard rule). Only IEEE basic
+/// operations (roots by bisection), so the same on every machine.
+struct Glimpse {
+    std::vector<double> lab; ///< L, a, b per cell, row by row
+    double dominantShare = 0.0;
+};
+Glimpse glimpseOf(const Genome& genome);
+/// The mean CIE76 ΔE between two glimpses (of the same size).
+double meanDeltaE(const Glimpse& a, const Glimpse& b);
+
 /// The most children one request may ask for.
 inline constexpr int MaxChildren = 1000;
 
 /// The children of a request. Each child's `meta.lineage` holds {parents: [ids], operator,
 /// seed, child (1-based index), generation (1 + the parents' largest), change (what differs
 /// from its home parent, in words: describeChange(parents, home, child), ChangeSummary.h)} (alter adds strength; a
-/// varied child adds variation: {of: the id of the repeated design, strength}) and `meta.id`
+/// varied child adds variation: {of: the id of the repeated design, strength}; a redrawn one
+/// redraws: the number of redraws) and `meta.id`
 /// its own id. Child i draws from a Pcg32 stream derived from (seed, i) alone (and is checked
 /// against the children before it), so the same request gives the same children and asking
 /// for more children keeps the first ones. Every child passes validateGenome. Throws
