@@ -124,8 +124,11 @@ TEST(ChildFilter, NearDuplicatesAreDrawnAgainReproducibly) {
             for (const Glimpse& other : looks) nearest = std::min(nearest, meanDeltaE(look, other));
             // Either the child stands apart from its parent and earlier siblings, or the whole
             // budget was spent looking for one that does.
-            if (nearest < NearDuplicateDeltaE) EXPECT_EQ(redraws, ChildRedraws);
-            else if (redraws > 0) EXPECT_GE(nearest, NearDuplicateDeltaE);
+            if (nearest < NearDuplicateDeltaE) {
+                EXPECT_EQ(redraws, ChildRedraws);
+            } else if (redraws > 0) {
+                EXPECT_GE(nearest, NearDuplicateDeltaE);
+            }
             looks.push_back(look);
         }
         EXPECT_GT(redrawn, 0);
