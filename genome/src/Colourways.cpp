@@ -1,5 +1,6 @@
 #include "marbler/Colourways.h"
 
+#include "marbler/ChangeSummary.h"
 #include "marbler/Error.h"
 #include "marbler/Families.h"
 #include "marbler/Generator.h"
@@ -255,6 +256,8 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
         lineage["generation"] = generation;
         meta["lineage"] = lineage;
         child.meta = meta;
+        // What changed, in words, as every bred child says (ChangeSummary.h): inks and ground only.
+        child.meta["lineage"]["change"] = describeChange(homeParent, child);
         child.meta["id"] = genomeId(child);
         try {
             validateGenome(child, "colourway " + std::to_string(i + 1));

@@ -1,6 +1,7 @@
 // Colourways (marbler/Colourways.h): a design's structure kept exactly and only its palette
 // and background changed, reproducibly from the seed, varied, and every palette readable.
 
+#include "marbler/ChangeSummary.h"
 #include "marbler/Colourways.h"
 #include "marbler/Error.h"
 #include "marbler/Families.h"
@@ -48,6 +49,12 @@ TEST(Colourways, KeepTheStructureExactlyAndChangeThePalette) {
                 EXPECT_NE(palettes(c), palettes(design));
                 EXPECT_NO_THROW(validateGenome(c, "colourway"));
                 EXPECT_EQ(c.meta["lineage"]["operator"], ColourwayOperator);
+                // It says what changed, and that is only colour.
+                const std::string change = c.meta["lineage"].value("change", "");
+                EXPECT_EQ(change, describeChange(design, c));
+                EXPECT_NE(change, "no visible change");
+                for (const char* stroke : {"drop", "comb", "wave", "vortex", "initial state", "added", "removed"})
+                    EXPECT_EQ(change.find(stroke), std::string::npos) << change;
             }
         }
     }
