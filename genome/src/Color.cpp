@@ -27,4 +27,10 @@ std::optional<Color> parseHexColor(const std::string& text) {
     return Color{channels[0], channels[1], channels[2]};
 }
 
+double colorDistance2(Color a, Color b) {
+    double rm = (a.r + b.r) / 2.0;
+    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+    return (2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - rm) / 256.0) * db * db;
+}
+
 } // namespace marbler

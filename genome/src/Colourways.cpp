@@ -54,13 +54,13 @@ double wrapHue(double h) {
 /// `count` inks from a pool, each apart from the background (inks too close to it are left
 /// out) and from the one before it, after a seeded shuffle; fewer when the pool runs out.
 std::vector<Color> orderInks(std::vector<Color> pool, int count, Color background, Pcg32& rng) {
-    std::erase_if(pool, [&](Color c) { return colourDistance2(c, background) < MinInkContrast2; });
+    std::erase_if(pool, [&](Color c) { return colorDistance2(c, background) < MinInkContrast2; });
     for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[rng.below(static_cast<std::uint32_t>(i))]);
     std::vector<Color> inks;
     while (!pool.empty() && static_cast<int>(inks.size()) < count) {
         auto next = pool.begin();
         if (!inks.empty()) {
-            next = std::find_if(pool.begin(), pool.end(), [&](Color c) { return colourDistance2(c, inks.back()) >= MinInkContrast2; });
+            next = std::find_if(pool.begin(), pool.end(), [&](Color c) { return colorDistance2(c, inks.back()) >= MinInkContrast2; });
             if (next == pool.end()) break;
         }
         inks.push_back(*next);
@@ -136,37 +136,12 @@ void givePalette(Genome& g, int count, Draw draw) {
     g.palette = plainPalette(count, g.background);
 }
 
-std::string rootName(const Genome& g) {
-    std::string name = "Untitled";
-    if (g.meta.is_object()) {
-        auto it = g.meta.find("name");
-        if (it != g.meta.end() && it->is_string() && !it->get<std::string>().empty()) name = it->get<std::string>();
-    }
-    if (auto pos = name.rfind(" (g"); pos != std::string::npos && name.back() == ')') name.erase(pos);
-    return name;
-}
-
-int generationOf(const Genome& g) {
-    if (!g.meta.is_object()) return 0;
-    auto lineage = g.meta.find("lineage");
-    if (lineage == g.meta.end() || !lineage->is_object()) return 0;
-    auto gen = lineage->find("generation");
-    if (gen == lineage->end() || !gen->is_number_integer()) return 0;
-    return std::max(0, gen->get<int>());
-}
-
 } // namespace
-
-double colourDistance2(Color a, Color b) {
-    double rm = (a.r + b.r) / 2.0;
-    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-    return (2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - rm) / 256.0) * db * db;
-}
 
 bool paletteHasContrast(const std::vector<Color>& palette, Color background) {
     for (std::size_t i = 0; i < palette.size(); ++i) {
-        if (colourDistance2(palette[i], background) < MinInkContrast2) return false;
-        if (i > 0 && colourDistance2(palette[i], palette[i - 1]) < MinInkContrast2) return false;
+        if (colorDistance2(palette[i], background) < MinInkContrast2) return false;
+        if (i > 0 && colorDistance2(palette[i], palette[i - 1]) < MinInkContrast2) return false;
     }
     return true;
 }
@@ -197,7 +172,7 @@ Genome mixedColourway(const std::vector<Genome>& parents, std::size_t home, Pcg3
     givePalette(g, count, [&](Color& background) {
         background = parents[rng.below(static_cast<std::uint32_t>(parents.size()))].background;
         std::vector<Color> wider = pool;
-        std::erase_if(wider, [&](Color c) { return colourDistance2(c, background) < MinInkContrast2; });
+        std::erase_if(wider, [&](Color c) { return colorDistance2(c, background) < MinInkContrast2; });
         if (wider.size() < static_cast<std::size_t>(count) + 2) widenPool(wider, static_cast<std::size_t>(count), rng);
         return orderInks(std::move(wider), count, background, rng);
     });
@@ -222,7 +197,7 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
             throw InputError("parent " + std::to_string(p + 1) + ": its palette is locked; unlock it to make colourways");
         parentIds.push_back(genomeId(parent));
         taken.insert(genomeId(parent));
-        generation = std::max(generation, generationOf(parent));
+        generation = std::max(generation, lineageGeneration(parent));
     }
     generation = request.generation.value_or(generation + 1);
 
@@ -241,12 +216,7 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
         taken.insert(genomeId(child));
 
         const Genome& homeParent = request.parents[home];
-        nlohmann::ordered_json meta = nlohmann::ordered_json::object();
         const int number = request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
-        meta["name"] = rootName(homeParent) + " (g" + std::to_string(generation) + " #" + std::to_string(number) + ")";
-        if (homeParent.meta.is_object())
-            for (const auto& [key, value] : homeParent.meta.items())
-                if (key != "name" && key != "seed" && key != "generator" && key != "id" && key != "lineage") meta[key] = value;
         nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
         lineage["parents"] = parentIds;
         lineage["operator"] = ColourwayOperator;
@@ -254,7 +224,7 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
         lineage["child"] = i + 1;
         if (!request.mix) lineage["strength"] = request.strength;
         lineage["generation"] = generation;
-        meta["lineage"] = lineage;
+        const nlohmann::ordered_json meta = childMeta(homeParent, generation, number, std::move(lineage));
         child.meta = meta;
         // What changed, in words, as every bred child says (ChangeSummary.h): inks and ground only.
         child.meta["lineage"]["change"] = describeChange(homeParent, child);

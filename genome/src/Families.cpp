@@ -63,13 +63,6 @@ constexpr std::array<TraditionalPalette, 4> Traditions{{
     {"indigo shades on white", {0xf7, 0xf5, 0xf0}, IndigoInks},
 }};
 
-/// The redmean distance of Generator.cpp: good enough to keep inks apart.
-double distance2(Color a, Color b) {
-    double rm = (a.r + b.r) / 2.0;
-    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-    return (2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - rm) / 256.0) * db * db;
-}
-
 /// Inks far enough apart to read against each other: a squared redmean distance of 90^2 is a
 /// clear step between neighbours (indigo against umber, ochre against sienna).
 constexpr double MinContrast2 = 90.0 * 90.0;
@@ -83,7 +76,7 @@ std::vector<Color> familyPalette(Pcg32& rng, int count, Color& paper) {
         const TraditionalPalette& t = Traditions[rng.below(static_cast<std::uint32_t>(Traditions.size()))];
         paper = t.paper;
         for (Color c : t.inks)
-            if (distance2(c, paper) >= MinContrast2) pool.push_back(c);
+            if (colorDistance2(c, paper) >= MinContrast2) pool.push_back(c);
     } else {
         pool = randomPalette(rng, &paper);
     }
@@ -93,7 +86,7 @@ std::vector<Color> familyPalette(Pcg32& rng, int count, Color& paper) {
     while (!pool.empty() && static_cast<int>(inks.size()) < count) {
         auto next = pool.begin();
         if (!inks.empty()) {
-            next = std::find_if(pool.begin(), pool.end(), [&](Color c) { return distance2(c, inks.back()) >= MinContrast2; });
+            next = std::find_if(pool.begin(), pool.end(), [&](Color c) { return colorDistance2(c, inks.back()) >= MinContrast2; });
             if (next == pool.end()) next = pool.begin();
         }
         inks.push_back(*next);

@@ -332,14 +332,6 @@ constexpr std::array<ColorWord, 36> ColorWords{{
     {"Chartreuse", {150, 215, 40}}, {"Prussian", {0, 49, 83}},    {"Spruce", {35, 88, 82}},
 }};
 
-/// A perceptual distance good enough to name colours ("redmean": RGB weighted by how red the
-/// pair is, after Riemersma); only basic operations, so the same on every machine.
-double colorDistance2(Color a, Color b) {
-    double rm = (a.r + b.r) / 2.0;
-    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-    return (2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - rm) / 256.0) * db * db;
-}
-
 constexpr std::array<const char*, 32> Nouns{
     "Tide", "Stone", "Quarry", "Feather", "Peacock", "Bouquet", "Nonpareil", "Chevron",
     "Lagoon", "Ember", "Tapestry", "Current", "Agate", "Marble", "Ripple", "Whorl",

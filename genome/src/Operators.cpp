@@ -344,6 +344,18 @@ void setLocks(Genome& genome, const Locks& locks) {
     genome.meta["locks"] = value;
 }
 
+int lineageGeneration(const Genome& genome) { return generationOf(genome); }
+
+nlohmann::ordered_json childMeta(const Genome& home, int generation, int number, nlohmann::ordered_json lineage) {
+    nlohmann::ordered_json meta = nlohmann::ordered_json::object();
+    meta["name"] = rootName(home) + " (g" + std::to_string(generation) + " #" + std::to_string(number) + ")";
+    if (home.meta.is_object())
+        for (const auto& [key, value] : home.meta.items())
+            if (key != "name" && key != "seed" && key != "generator" && key != "id" && key != "lineage") meta[key] = value;
+    meta["lineage"] = std::move(lineage);
+    return meta;
+}
+
 std::string genomeId(const Genome& genome) {
     nlohmann::ordered_json json = toJson(genome);
     json.erase("meta");
@@ -572,12 +584,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
         taken.insert(genomeId(child));
 
         const Genome& homeParent = request.parents[home];
-        nlohmann::ordered_json meta = nlohmann::ordered_json::object();
         const int number = request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
-        meta["name"] = rootName(homeParent) + " (g" + std::to_string(generation) + " #" + std::to_string(number) + ")";
-        if (homeParent.meta.is_object())
-            for (const auto& [key, value] : homeParent.meta.items())
-                if (key != "name" && key != "seed" && key != "generator" && key != "id" && key != "lineage") meta[key] = value;
         nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
         lineage["parents"] = parentIds;
         lineage["operator"] = name;
@@ -587,7 +594,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
         if (variation) lineage["variation"] = *variation;
         if (redraws > 0) lineage["redraws"] = redraws;
         lineage["generation"] = generation;
-        meta["lineage"] = lineage;
+        const nlohmann::ordered_json meta = childMeta(homeParent, generation, number, std::move(lineage));
         child.meta = meta;
         child.meta["id"] = genomeId(child);
         child.meta["lineage"]["change"] = describeChange(request.parents, home, child);

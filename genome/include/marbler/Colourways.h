@@ -25,8 +25,6 @@ namespace marbler {
 /// What `meta.lineage.operator` says of a colourway.
 inline constexpr const char* ColourwayOperator = "colourway";
 
-/// The squared redmean distance between two colours (Families.cpp's rule).
-double colourDistance2(Color a, Color b);
 /// Inks this far apart (squared) read against each other: 90^2.
 inline constexpr double MinInkContrast2 = 90.0 * 90.0;
 /// Whether every ink of a palette stands apart from the background and from the ink before it.

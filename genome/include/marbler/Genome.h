@@ -115,5 +115,8 @@ inline constexpr int MaxFlowSteps = 10000;
 std::string toHex(Color c);
 /// Parses `#rrggbb` (either case); nullopt when malformed.
 std::optional<Color> parseHexColor(const std::string& text);
+/// How far apart two colours look, squared: the "redmean" distance (RGB weighted by how red the
+/// pair is, after Riemersma). Only basic operations, so the same on every machine.
+double colorDistance2(Color a, Color b);
 
 } // namespace marbler

@@ -94,6 +94,13 @@ void setLocks(Genome& genome, const Locks& locks);
 /// (toJson) without `meta`, as 16 lower-case hex digits. Used for lineage.
 std::string genomeId(const Genome& genome);
 
+/// The generation a bred design records (`meta.lineage.generation`); 0 for one not bred.
+int lineageGeneration(const Genome& genome);
+/// The meta of a child, as breed() and colourways() write it: the home parent's meta without its
+/// name, seed, generator, id and lineage; the name "ROOT (gG #N)" from the home parent's name
+/// without an earlier "(g.. #..)"; and `lineage`, which the caller fills.
+nlohmann::ordered_json childMeta(const Genome& home, int generation, int number, nlohmann::ordered_json lineage);
+
 struct BreedRequest {
     GeneticOperator op = GeneticOperator::Alter;
     std::vector<Genome> parents;
