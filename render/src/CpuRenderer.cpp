@@ -376,18 +376,27 @@ int CpuRenderer::colorIndexAt(const glm::dvec3& p) const {
     return color;
 }
 
+namespace {
+
+/// The first `n` points of a tile from caller's arrays; `z` null for 2D (the kernel reads none).
+void loadTile(kernel::Tile& tile, const double* x, const double* y, const double* z, int n) {
+    for (int k = 0; k < n; ++k) {
+        tile.x[k] = x[k];
+        tile.y[k] = y[k];
+        tile.z[k] = z ? z[k] : 0.0;
+        tile.id[k] = k;
+    }
+}
+
+} // namespace
+
 void CpuRenderer::colorIndicesAt(const double* x, const double* y, const double* z, std::size_t count,
                                  int* colors) const {
     auto tile = std::make_unique<kernel::Tile>();
     const bool solid = mImpl->dimension == 3;
     for (std::size_t first = 0; first < count; first += kernel::TileSize) {
         const int n = static_cast<int>(std::min<std::size_t>(kernel::TileSize, count - first));
-        for (int k = 0; k < n; ++k) {
-            tile->x[k] = x[first + std::size_t(k)];
-            tile->y[k] = y[first + std::size_t(k)];
-            tile->z[k] = solid ? z[first + std::size_t(k)] : 0.0;
-            tile->id[k] = k;
-        }
+        loadTile(*tile, x + first, y + first, solid ? z + first : nullptr, n);
         kernel::traceTile(mImpl->reversed.data(), mImpl->reversed.size(), mImpl->dimension, *tile, n,
                           colors + first, nullptr, nullptr);
     }
@@ -406,12 +415,7 @@ void CpuRenderer::linearColorsAt(const double* x, const double* y, const double*
                               layers ? inks.data() : nullptr};
     for (std::size_t first = 0; first < count; first += kernel::TileSize) {
         const int n = static_cast<int>(std::min<std::size_t>(kernel::TileSize, count - first));
-        for (int k = 0; k < n; ++k) {
-            tile->x[k] = x[first + std::size_t(k)];
-            tile->y[k] = y[first + std::size_t(k)];
-            tile->z[k] = solid ? z[first + std::size_t(k)] : 0.0;
-            tile->id[k] = k;
-        }
+        loadTile(*tile, x + first, y + first, solid ? z + first : nullptr, n);
         kernel::traceTile(impl.reversed.data(), impl.reversed.size(), impl.dimension, *tile, n, colors.data(),
                           impl.source ? whereX.data() : nullptr, whereY.data(), layers ? &*layers : nullptr);
         for (int k = 0; k < n; ++k) {
