@@ -38,6 +38,8 @@ std::vector<const Operation*> opsOf(const Genome& g, Tool tool) {
         if (op.tool == tool) out.push_back(&op);
     return out;
 }
+// The pointers point into the genome, so it must outlive them.
+std::vector<const Operation*> opsOf(Genome&&, Tool) = delete;
 
 /// Whether two 2D angles point opposite ways (a pass and its return).
 bool opposite(double a, double b) { return std::abs(std::fmod(std::abs(a - b), 360.0) - 180.0) < 1e-9; }
@@ -165,9 +167,11 @@ TEST(Families, CurlsNestsBandsSpotsAndStripes) {
         EXPECT_LT(curls[0]->alpha * curls[1]->alpha, 0.0);
         EXPECT_EQ(requiredVersion(curl), 2);
         // Bird's nest: a cored curl per nest.
-        EXPECT_GE(opsOf(make("birds-nest", seed), Tool::Vortex).size(), 8u);
+        const Genome nest = make("birds-nest", seed);
+        EXPECT_GE(opsOf(nest, Tool::Vortex).size(), 8u);
         // Spanish wave: a stretch pass with a tooth profile in the generator's range.
-        const auto bands = opsOf(make("spanish-wave", seed), Tool::Stretch);
+        const Genome wave = make("spanish-wave", seed);
+        const auto bands = opsOf(wave, Tool::Stretch);
         ASSERT_EQ(bands.size(), 1u);
         EXPECT_GE(bands[0]->teeth.size(), 10u);
         // Tiger-eye: many small sprays over the stone.

@@ -1,0 +1,104 @@
+#pragma once
+/// The design open in the editor, and every edit of it as an undoable command. No widgets: the
+/// editor window shows it and tests drive it headless.
+///
+/// Steps are numbered as Growth.h numbers them: the entries of `initial`, then those of
+/// `operations`. Any step may be edited, moved, muted or deleted, however far back; the design
+/// after it re-forms, since a render is a pure function of the genome.
+///
+/// A muted step stays in the editor's list but is left out of what is drawn (renderedDesign) and
+/// of the genome written to a file, which keeps it aside in `meta.editor.muted` (meta is
+/// free-form and kept on save, genome-format.md) so that the editor can put it back on open:
+/// every other reader renders exactly what the editor showed.
+
+#include "marbler/Genome.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <cstddef>
+#include <vector>
+
+namespace marbler::ui {
+
+class EditorDocument : public QObject {
+    Q_OBJECT
+public:
+    /// Takes a design as read from a file or handed over by the workbench: steps kept aside in
+    /// meta.editor.muted go back into the list, muted. The undo stack starts empty and clean.
+    explicit EditorDocument(Genome design, QObject* parent = nullptr);
+    ~EditorDocument() override;
+
+    /// Every step, muted ones included (meta without "editor").
+    const Genome& design() const { return mDesign; }
+    /// What is drawn: the design without its muted steps.
+    Genome renderedDesign() const;
+    /// What a file holds: renderedDesign with the muted steps in meta.editor.muted.
+    Genome fileGenome() const;
+
+    QUndoStack* undoStack() { return &mUndo; }
+
+    std::size_t stepCount() const;
+    const Operation& step(std::size_t i) const;
+    /// Whether step i belongs to `initial`.
+    bool isInitial(std::size_t i) const { return i < mDesign.initial.size(); }
+    bool isMuted(std::size_t i) const;
+    /// "comb 3", "drop 1": the tool's name and the step's number from 1.
+    QString stepName(std::size_t i) const;
+
+    // Edits. Each is one undo command named by what changed ("comb 3: spacing 18 → 23").
+    // `mergeId` >= 0 merges consecutive commands with the same id into one undo step (a drag of
+    // a slider or a handle passes the same id from press to release); -1 never merges.
+
+    /// Adds a step at the end of its part: ink-laying tools allowed in `initial` go to the end
+    /// of `initial`, other tools to the end of `operations`. Returns its step index.
+    std::size_t addStep(const Operation& op);
+    /// Adds several steps as one undo step (a drop pattern, a spray's drops).
+    void addSteps(const std::vector<Operation>& ops, const QString& text);
+    /// Replaces step i (its tool stays a valid one for its part).
+    void setStep(std::size_t i, const Operation& op, int mergeId = -1);
+    void removeStep(std::size_t i);
+    /// Inserts a copy right after step i; returns the copy's index.
+    std::size_t duplicateStep(std::size_t i);
+    /// Moves step `from` to index `to` within its own part (initial or operations); a move
+    /// across parts is refused (returns false) when the tool is not allowed there.
+    bool moveStep(std::size_t from, std::size_t to);
+    void setMuted(std::size_t i, bool muted);
+    void setPaletteColor(int index, Color color, int mergeId = -1);
+    /// Adds an ink to the palette (at most MaxPaletteSize); returns its index or -1.
+    int addPaletteColor(Color color);
+    void setBackground(Color color, int mergeId = -1);
+    void setBleed(double bleed, int mergeId = -1);
+    /// Replaces the whole design (a raster source chosen, a design dropped in), one undo step.
+    void replaceDesign(const Genome& design, const QString& text);
+
+    /// The file the design was opened from or saved to (empty: never saved).
+    QString fileName() const { return mFileName; }
+    void setFileName(const QString& file);
+    /// Unsaved changes (the undo stack is not at its clean index).
+    bool isModified() const { return !mUndo.isClean(); }
+    /// Writes fileGenome() atomically (a temporary renamed over the file) and marks the stack
+    /// clean; on failure returns false with the reason in `error` and changes nothing.
+    bool saveAs(const QString& file, QString* error);
+
+signals:
+    /// The design changed (any edit, undo or redo).
+    void changed();
+    /// Steps were added, removed, moved or muted (the list must be rebuilt), after changed().
+    void stepsChanged();
+    void modifiedChanged(bool modified);
+    void fileNameChanged(const QString& file);
+
+private:
+    friend class EditorCommand;
+    /// Applies a new state (design and muted flags); used by the commands' undo and redo.
+    void restore(const Genome& design, const std::vector<bool>& muted);
+
+    Genome mDesign;
+    std::vector<bool> mMuted; ///< one flag a step
+    QUndoStack mUndo;
+    QString mFileName;
+};
+
+} // namespace marbler::ui
