@@ -1,0 +1,2 @@
+// Placeholder until the editor-doc branch lands its implementation.
+#include "editor/EditorDocument.h"
