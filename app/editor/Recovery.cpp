@@ -81,6 +81,7 @@ EditorAutosave::EditorAutosave(EditorDocument* doc, QString folder, QObject* par
     mTimer.setInterval(2000);
     connect(&mTimer, &QTimer::timeout, this, &EditorAutosave::flush);
     if (!doc) return;
+    connect(doc, &QObject::destroyed, &mTimer, &QTimer::stop);
     connect(doc, &EditorDocument::changed, this, [this] { mTimer.start(); });
     connect(doc, &EditorDocument::modifiedChanged, this, [this](bool modified) {
         // Saved clean (or undone back to the saved state): nothing left to recover.
@@ -92,7 +93,9 @@ EditorAutosave::~EditorAutosave() = default;
 
 void EditorAutosave::flush() {
     mTimer.stop();
-    if (!mDoc || !mDoc->isModified()) {
+    // The document gone first (its editor closing): the file is left as the editor leaves it.
+    if (!mDoc) return;
+    if (!mDoc->isModified()) {
         if (QFile::exists(mFile) && !QFile::remove(mFile)) qWarning("cannot remove %s", qPrintable(mFile));
         return;
     }

@@ -9,6 +9,7 @@
 #include "marbler/Params.h"
 #include "WaitFor.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -18,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <memory>
@@ -381,10 +383,29 @@ TEST(EditorRecovery, TheRecoveredDesignIsTheOneBeingEdited) {
     MARBLER_WAIT(QFileInfo::exists(autosave->file()), 5000);
     EXPECT_TRUE(pendingRecoveries(folder).empty()) << "an editor still open is not offered";
 
-    // A crash: the autosave goes without a word.
+    // A crash: the autosave goes without a word, and its lock stays, naming a process that is
+    // gone. The same lock naming a running process keeps the file from being offered.
     const QString file = autosave->file();
+    QFile lockFile(file + QStringLiteral(".lock"));
+    ASSERT_TRUE(lockFile.open(QIODevice::ReadOnly));
+    const QByteArray lock = lockFile.readAll();
+    lockFile.close();
+    const QByteArray ownPid = QByteArray::number(QCoreApplication::applicationPid());
+    ASSERT_TRUE(lock.startsWith(ownPid + '\n')) << lock.toStdString();
     autosave.reset();
     ASSERT_TRUE(QFileInfo::exists(file));
+    const auto writeLock = [&](const QByteArray& contents) {
+        QFile f(file + QStringLiteral(".lock"));
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(contents);
+    };
+    writeLock(lock);
+    EXPECT_TRUE(pendingRecoveries(folder).empty()) << "locked by a running process";
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) ::_exit(0);
+    ASSERT_EQ(::waitpid(child, nullptr, 0), child);
+    writeLock(QByteArray::number(child) + lock.mid(ownPid.size()));
     QStringList warnings;
     const auto found = pendingRecoveries(folder, &warnings);
     EXPECT_TRUE(warnings.isEmpty()) << text(warnings.join('\n'));
@@ -400,6 +421,7 @@ TEST(EditorRecovery, TheRecoveredDesignIsTheOneBeingEdited) {
     recovered.markModified();
     EXPECT_TRUE(recovered.isModified()) << "its changes never reached the file";
 
+    EXPECT_FALSE(QFileInfo::exists(file + QStringLiteral(".lock"))) << "the stale lock is gone";
     EXPECT_TRUE(discardRecovery(found[0].recoveryFile));
     EXPECT_TRUE(pendingRecoveries(folder).empty());
 }
