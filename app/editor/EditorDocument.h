@@ -27,6 +27,9 @@ class EditorDocument : public QObject {
 public:
     /// Takes a design as read from a file or handed over by the workbench: steps kept aside in
     /// meta.editor.muted go back into the list, muted. The undo stack starts empty and clean.
+    /// The design (and every step an edit brings) is held as a save and a reload give it
+    /// (vectors normalised, fields a tool lacks at their defaults), so that a saved or recovered
+    /// design equals the one edited, exactly; a design the format refuses is held as it is.
     explicit EditorDocument(Genome design, QObject* parent = nullptr);
     ~EditorDocument() override;
 
