@@ -1,2 +1,456 @@
-// Placeholder until the editor-doc branch lands its implementation.
 #include "editor/EditorDocument.h"
+
+#include "marbler/ChangeSummary.h"
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Params.h"
+
+#include <QFile>
+#include <QUndoCommand>
+#include <QtGlobal>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <utility>
+
+namespace marbler::ui {
+
+namespace {
+
+/// What one edit changes, whole: the design and the muted flags (a genome is a few kilobytes,
+/// so whole snapshots are simpler and safer than diffs).
+struct EditorState {
+    Genome design;
+    std::vector<bool> muted;
+
+    bool operator==(const EditorState& o) const { return design == o.design && muted == o.muted; }
+};
+
+/// How a merged command names the change from its first state to its last.
+using Describe = std::function<QString(const EditorState& before, const EditorState& after)>;
+
+QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+QString hexName(Color c) { return QString::fromStdString(toHex(c)); }
+/// A number as the history shows it: up to four significant figures, no locale.
+QString number(double v) { return QString::number(v, 'g', 4); }
+
+const Operation& stepOf(const Genome& g, std::size_t i) {
+    return i < g.initial.size() ? g.initial.at(i) : g.operations.at(i - g.initial.size());
+}
+
+QString stepLabel(const Genome& g, std::size_t i) {
+    return QStringLiteral("%1 %2").arg(fromView(toolSpec(stepOf(g, i).tool).name)).arg(i + 1);
+}
+
+/// A genome holding only `op`, in `initial` or `operations`, with the dimension, size and palette
+/// of `design`: the form in which the file's serializer and parser see one step.
+Genome holder(const Genome& design, const std::optional<Operation>& op, bool initial) {
+    Genome h;
+    h.dimension = design.dimension;
+    h.size = design.size;
+    h.background = design.background;
+    h.palette = design.palette;
+    if (op) (initial ? h.initial : h.operations).push_back(*op);
+    return h;
+}
+
+/// One step as its file form writes it.
+nlohmann::ordered_json stepJson(const Genome& design, const Operation& op, bool initial) {
+    return toJson(holder(design, op, initial)).at(initial ? "initial" : "operations").at(0);
+}
+
+/// The step a file form gives, read by the genome parser (every rule checked). Throws Error.
+Operation parseStep(const Genome& design, const nlohmann::ordered_json& json, bool initial, const std::string& name) {
+    nlohmann::ordered_json j = toJson(holder(design, std::nullopt, initial));
+    j["version"] = FormatVersion;
+    j[initial ? "initial" : "operations"] = nlohmann::ordered_json::array({json});
+    const Genome g = parseGenome(j.dump(), name);
+    const auto& part = initial ? g.initial : g.operations;
+    if (part.size() != 1) throw InputError(name + ": not one step");
+    return part.front();
+}
+
+/// A step as it reads back from a file (vectors normalised, fields its tool lacks at their
+/// defaults), so that what the editor holds is exactly what a save and a reload give, and a
+/// recovered design equals the one being edited. A step the format refuses stays as it is.
+Operation canonicalStep(const Genome& design, const Operation& op, bool initial) {
+    try {
+        return parseStep(design, stepJson(design, op, initial), initial, "step");
+    } catch (const std::exception&) {
+        return op;
+    }
+}
+
+/// Inserts a step at full index `index` (Growth.h numbering) into the part given.
+void insertStep(EditorState& s, std::size_t index, const Operation& op, bool initial, bool muted) {
+    auto& g = s.design;
+    if (initial) {
+        index = std::min(index, g.initial.size());
+        g.initial.insert(g.initial.begin() + static_cast<std::ptrdiff_t>(index), op);
+    } else {
+        index = std::clamp(index, g.initial.size(), g.initial.size() + g.operations.size());
+        g.operations.insert(g.operations.begin() + static_cast<std::ptrdiff_t>(index - g.initial.size()), op);
+    }
+    s.muted.insert(s.muted.begin() + static_cast<std::ptrdiff_t>(index), muted);
+}
+
+/// Removes step i; returns it.
+Operation takeStep(EditorState& s, std::size_t i) {
+    auto& g = s.design;
+    Operation op = stepOf(g, i);
+    if (i < g.initial.size()) g.initial.erase(g.initial.begin() + static_cast<std::ptrdiff_t>(i));
+    else g.operations.erase(g.operations.begin() + static_cast<std::ptrdiff_t>(i - g.initial.size()));
+    s.muted.erase(s.muted.begin() + static_cast<std::ptrdiff_t>(i));
+    return op;
+}
+
+/// A design as the editor holds it: read back as a file gives it (see canonicalStep), with the
+/// steps kept aside in meta.editor.muted back in the list, muted, and meta without "editor".
+EditorState unpack(Genome design) {
+    try {
+        Genome canonical = parseGenome(serializeGenome(design), design.fileName.empty() ? "design" : design.fileName);
+        canonical.baseDirectory = design.baseDirectory;
+        canonical.fileName = design.fileName;
+        canonical.allowExternalSource = design.allowExternalSource;
+        design = std::move(canonical);
+    } catch (const std::exception&) {
+        // A design the format refuses is edited as it is; saving it reports why.
+    }
+    EditorState s{std::move(design), {}};
+    s.muted.assign(s.design.initial.size() + s.design.operations.size(), false);
+    auto& meta = s.design.meta;
+    if (!meta.is_object() || !meta.contains("editor")) return s;
+
+    struct Entry {
+        std::size_t step;
+        bool initial;
+        Operation op;
+    };
+    std::vector<Entry> entries;
+    const auto& editor = meta["editor"];
+    if (editor.is_object() && editor.contains("muted")) {
+        const auto& muted = editor["muted"];
+        if (!muted.is_array()) qWarning("meta.editor.muted is not a list: muted steps left out");
+        else
+            for (std::size_t k = 0; k < muted.size(); ++k) {
+                const std::string where = "meta.editor.muted[" + std::to_string(k) + "]";
+                try {
+                    const auto& e = muted[k];
+                    if (!e.is_object() || !e.contains("step") || !e["step"].is_number_unsigned() || !e.contains("part")
+                        || !e["part"].is_string() || !e.contains("operation"))
+                        throw InputError(where + ": needs \"step\", \"part\" and \"operation\"");
+                    const std::string part = e["part"].get<std::string>();
+                    if (part != "initial" && part != "operations")
+                        throw InputError(where + ".part: must be \"initial\" or \"operations\"");
+                    const bool initial = part == "initial";
+                    entries.push_back({e["step"].get<std::size_t>(), initial,
+                                       parseStep(s.design, e["operation"], initial, where)});
+                } catch (const std::exception& error) {
+                    qWarning("muted step left out: %s", error.what());
+                }
+            }
+    }
+    meta.erase("editor");
+    // In the order of their steps, each goes where it was: the ones before it are in place.
+    std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+        return a.initial != b.initial ? a.initial : a.step < b.step;
+    });
+    for (const Entry& e : entries) insertStep(s, e.step, e.op, e.initial, true);
+    return s;
+}
+
+/// Whether the list of steps must be rebuilt: steps added, removed, moved or muted, or a step's
+/// tool changed; not for a parameter edit of one step.
+bool stepsDiffer(const Genome& a, const std::vector<bool>& mutedA, const Genome& b, const std::vector<bool>& mutedB) {
+    if (mutedA != mutedB || a.initial.size() != b.initial.size() || a.operations.size() != b.operations.size())
+        return true;
+    int changed = 0;
+    const auto compare = [&](const std::vector<Operation>& x, const std::vector<Operation>& y) {
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            if (x[i] == y[i]) continue;
+            if (x[i].tool != y[i].tool) changed += 2;
+            ++changed;
+        }
+    };
+    compare(a.initial, b.initial);
+    compare(a.operations, b.operations);
+    return changed > 1;
+}
+
+/// "comb 3: spacing 18 → 23": the parameter changes of step i (ChangeSummary's words).
+QString describeStepEdit(const Genome& before, const Genome& after, std::size_t i) {
+    const Operation& a = stepOf(before, i);
+    const Operation& b = stepOf(after, i);
+    const QString label = stepLabel(before, i);
+    if (a.tool != b.tool) return QStringLiteral("%1 → %2").arg(label, fromView(toolSpec(b.tool).name));
+    const bool initial = i < before.initial.size();
+    const std::string text = describeChange(holder(before, a, initial), holder(after, b, initial));
+    // The holders hold one step, which ChangeSummary calls "<tool> 1".
+    const std::string prefix = std::string(toolSpec(a.tool).name) + " 1: ";
+    if (text.rfind(prefix, 0) == 0) return label + QStringLiteral(": ") + QString::fromStdString(text.substr(prefix.size()));
+    return label + QStringLiteral(": ") + QString::fromStdString(text);
+}
+
+} // namespace
+
+/// One edit: the states before and after. Consecutive edits with the same merge id and target
+/// (one drag of a slider or a handle) merge into one, named by the change from the first state
+/// to the last.
+class EditorCommand : public QUndoCommand {
+public:
+    EditorCommand(EditorDocument* doc, EditorState before, EditorState after, const QString& text, int mergeId,
+                  QString mergeKey, Describe describe)
+        : QUndoCommand(text)
+        , mDoc(doc)
+        , mBefore(std::move(before))
+        , mAfter(std::move(after))
+        , mMergeId(mergeId < 0 ? -1 : mergeId)
+        , mMergeKey(std::move(mergeKey))
+        , mDescribe(std::move(describe)) {}
+
+    void undo() override { mDoc->restore(mBefore.design, mBefore.muted); }
+    void redo() override { mDoc->restore(mAfter.design, mAfter.muted); }
+    int id() const override { return mMergeId; }
+
+    bool mergeWith(const QUndoCommand* other) override {
+        const auto* o = dynamic_cast<const EditorCommand*>(other);
+        if (!o || o->mMergeId != mMergeId || o->mMergeKey != mMergeKey || mMergeKey.isEmpty()) return false;
+        mAfter = o->mAfter;
+        setText(mDescribe ? mDescribe(mBefore, mAfter) : o->text());
+        return true;
+    }
+
+    /// Pushes an edit of `doc` from its present state to `after` (applying it); an edit that
+    /// changes nothing is no command.
+    static void push(EditorDocument* doc, QUndoStack* stack, EditorState before, EditorState after,
+                     const QString& text, int mergeId = -1, QString mergeKey = {}, Describe describe = {}) {
+        if (before == after) return;
+        stack->push(new EditorCommand(doc, std::move(before), std::move(after), text, mergeId, std::move(mergeKey),
+                                      std::move(describe)));
+    }
+
+private:
+    EditorDocument* mDoc;
+    EditorState mBefore;
+    EditorState mAfter;
+    int mMergeId;
+    QString mMergeKey; ///< what the edit changes ("step:3"): only edits of one target merge
+    Describe mDescribe;
+};
+
+EditorDocument::EditorDocument(Genome design, QObject* parent) : QObject(parent) {
+    EditorState s = unpack(std::move(design));
+    mDesign = std::move(s.design);
+    mMuted = std::move(s.muted);
+    connect(&mUndo, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+}
+
+EditorDocument::~EditorDocument() {
+    // The commands hold a pointer back to the document: drop them before it goes.
+    mUndo.blockSignals(true);
+    mUndo.clear();
+}
+
+Genome EditorDocument::renderedDesign() const {
+    Genome g = mDesign;
+    g.initial.clear();
+    g.operations.clear();
+    const std::size_t n = mDesign.initial.size();
+    for (std::size_t i = 0; i < n; ++i)
+        if (!mMuted[i]) g.initial.push_back(mDesign.initial[i]);
+    for (std::size_t i = 0; i < mDesign.operations.size(); ++i)
+        if (!mMuted[n + i]) g.operations.push_back(mDesign.operations[i]);
+    return g;
+}
+
+Genome EditorDocument::fileGenome() const {
+    Genome g = renderedDesign();
+    auto muted = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < mMuted.size(); ++i) {
+        if (!mMuted[i]) continue;
+        const bool initial = isInitial(i);
+        nlohmann::ordered_json entry;
+        entry["step"] = i;
+        entry["part"] = initial ? "initial" : "operations";
+        entry["operation"] = stepJson(mDesign, step(i), initial);
+        muted.push_back(std::move(entry));
+    }
+    if (!muted.empty()) {
+        if (!g.meta.is_object()) g.meta = nlohmann::ordered_json::object();
+        g.meta["editor"] = nlohmann::ordered_json{{"muted", std::move(muted)}};
+    }
+    return g;
+}
+
+std::size_t EditorDocument::stepCount() const { return mDesign.initial.size() + mDesign.operations.size(); }
+
+const Operation& EditorDocument::step(std::size_t i) const { return stepOf(mDesign, i); }
+
+bool EditorDocument::isMuted(std::size_t i) const { return i < mMuted.size() && mMuted[i]; }
+
+QString EditorDocument::stepName(std::size_t i) const { return stepLabel(mDesign, i); }
+
+std::size_t EditorDocument::addStep(const Operation& op) {
+    const bool initial = allowedInInitial(op.tool, mDesign.dimension);
+    const std::size_t index = initial ? mDesign.initial.size() : stepCount();
+    EditorState after{mDesign, mMuted};
+    insertStep(after, index, canonicalStep(mDesign, op, initial), initial, false);
+    const QString text = tr("Add %1").arg(stepLabel(after.design, index));
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), text);
+    return index;
+}
+
+void EditorDocument::addSteps(const std::vector<Operation>& ops, const QString& text) {
+    EditorState after{mDesign, mMuted};
+    for (const Operation& op : ops) {
+        const bool initial = allowedInInitial(op.tool, mDesign.dimension);
+        const std::size_t index = initial ? after.design.initial.size() : after.muted.size();
+        insertStep(after, index, canonicalStep(mDesign, op, initial), initial, false);
+    }
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), text);
+}
+
+void EditorDocument::setStep(std::size_t i, const Operation& op, int mergeId) {
+    if (i >= stepCount()) return;
+    const bool initial = isInitial(i);
+    if (initial && !allowedInInitial(op.tool, mDesign.dimension)) {
+        qWarning("a %s cannot be part of the initial state", std::string(toolSpec(op.tool).name).c_str());
+        return;
+    }
+    EditorState after{mDesign, mMuted};
+    (initial ? after.design.initial[i] : after.design.operations[i - mDesign.initial.size()]) =
+        canonicalStep(mDesign, op, initial);
+    const QString text = describeStepEdit(mDesign, after.design, i);
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), text, mergeId,
+                        QStringLiteral("step:%1").arg(i),
+                        [i](const EditorState& a, const EditorState& b) { return describeStepEdit(a.design, b.design, i); });
+}
+
+void EditorDocument::removeStep(std::size_t i) {
+    if (i >= stepCount()) return;
+    EditorState after{mDesign, mMuted};
+    takeStep(after, i);
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), tr("Delete %1").arg(stepName(i)));
+}
+
+std::size_t EditorDocument::duplicateStep(std::size_t i) {
+    if (i >= stepCount()) return i;
+    EditorState after{mDesign, mMuted};
+    insertStep(after, i + 1, step(i), isInitial(i), isMuted(i));
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), tr("Duplicate %1").arg(stepName(i)));
+    return i + 1;
+}
+
+bool EditorDocument::moveStep(std::size_t from, std::size_t to) {
+    const std::size_t n = stepCount();
+    if (from >= n || to >= n) return false;
+    if (from == to) return true;
+    EditorState after{mDesign, mMuted};
+    const bool wasInitial = isInitial(from);
+    const bool muted = isMuted(from);
+    const Operation op = takeStep(after, from);
+    // At the boundary between the parts the step stays in its own.
+    const std::size_t initialCount = after.design.initial.size();
+    const bool toInitial = to < initialCount || (to == initialCount && wasInitial);
+    if (toInitial && !allowedInInitial(op.tool, mDesign.dimension)) return false;
+    insertStep(after, to, op, toInitial, muted);
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after),
+                        tr("Move %1 to %2").arg(stepName(from)).arg(to + 1));
+    return true;
+}
+
+void EditorDocument::setMuted(std::size_t i, bool muted) {
+    if (i >= stepCount() || isMuted(i) == muted) return;
+    EditorState after{mDesign, mMuted};
+    after.muted[i] = muted;
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after),
+                        (muted ? tr("Mute %1") : tr("Unmute %1")).arg(stepName(i)));
+}
+
+void EditorDocument::setPaletteColor(int index, Color color, int mergeId) {
+    if (index < 0 || index >= static_cast<int>(mDesign.palette.size())) return;
+    const auto idx = static_cast<std::size_t>(index);
+    const auto describe = [idx](const EditorState& a, const EditorState& b) {
+        return tr("Ink %1: %2 → %3").arg(idx + 1).arg(hexName(a.design.palette[idx]), hexName(b.design.palette[idx]));
+    };
+    EditorState after{mDesign, mMuted};
+    after.design.palette[idx] = color;
+    EditorState before{mDesign, mMuted};
+    const QString text = describe(before, after);
+    EditorCommand::push(this, &mUndo, std::move(before), std::move(after), text, mergeId,
+                        QStringLiteral("ink:%1").arg(index), describe);
+}
+
+int EditorDocument::addPaletteColor(Color color) {
+    if (mDesign.palette.size() >= MaxPaletteSize) return -1;
+    EditorState after{mDesign, mMuted};
+    after.design.palette.push_back(color);
+    const int index = static_cast<int>(mDesign.palette.size());
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after),
+                        tr("Add ink %1: %2").arg(index + 1).arg(hexName(color)));
+    return index;
+}
+
+void EditorDocument::setBackground(Color color, int mergeId) {
+    const auto describe = [](const EditorState& a, const EditorState& b) {
+        return tr("Background: %1 → %2").arg(hexName(a.design.background), hexName(b.design.background));
+    };
+    EditorState before{mDesign, mMuted};
+    EditorState after = before;
+    after.design.background = color;
+    const QString text = describe(before, after);
+    EditorCommand::push(this, &mUndo, std::move(before), std::move(after), text, mergeId,
+                        QStringLiteral("background"), describe);
+}
+
+void EditorDocument::setBleed(double bleed, int mergeId) {
+    if (!std::isfinite(bleed) || bleed < 0.0) return;
+    const auto describe = [](const EditorState& a, const EditorState& b) {
+        return tr("Bleed: %1 → %2").arg(number(a.design.bleed), number(b.design.bleed));
+    };
+    EditorState before{mDesign, mMuted};
+    EditorState after = before;
+    after.design.bleed = bleed;
+    const QString text = describe(before, after);
+    EditorCommand::push(this, &mUndo, std::move(before), std::move(after), text, mergeId, QStringLiteral("bleed"),
+                        describe);
+}
+
+void EditorDocument::replaceDesign(const Genome& design, const QString& text) {
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, unpack(design), text);
+}
+
+void EditorDocument::setFileName(const QString& file) {
+    if (file == mFileName) return;
+    mFileName = file;
+    emit fileNameChanged(mFileName);
+}
+
+bool EditorDocument::saveAs(const QString& file, QString* error) {
+    try {
+        const Genome g = fileGenome();
+        // A file the format refuses would not open again: say why instead of writing it.
+        validateGenome(g, file.toStdString());
+        saveGenome(g, QFile::encodeName(file).toStdString());
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        return false;
+    }
+    mUndo.setClean();
+    setFileName(file);
+    return true;
+}
+
+void EditorDocument::markModified() { mUndo.resetClean(); }
+
+void EditorDocument::restore(const Genome& design, const std::vector<bool>& muted) {
+    const bool structural = stepsDiffer(mDesign, mMuted, design, muted);
+    mDesign = design;
+    mMuted = muted;
+    emit changed();
+    if (structural) emit stepsChanged();
+}
+
+} // namespace marbler::ui

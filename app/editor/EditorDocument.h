@@ -27,6 +27,9 @@ class EditorDocument : public QObject {
 public:
     /// Takes a design as read from a file or handed over by the workbench: steps kept aside in
     /// meta.editor.muted go back into the list, muted. The undo stack starts empty and clean.
+    /// The design (and every step an edit brings) is held as a save and a reload give it
+    /// (vectors normalised, fields a tool lacks at their defaults), so that a saved or recovered
+    /// design equals the one edited, exactly; a design the format refuses is held as it is.
     explicit EditorDocument(Genome design, QObject* parent = nullptr);
     ~EditorDocument() override;
 
@@ -44,7 +47,8 @@ public:
     /// Whether step i belongs to `initial`.
     bool isInitial(std::size_t i) const { return i < mDesign.initial.size(); }
     bool isMuted(std::size_t i) const;
-    /// "comb 3", "drop 1": the tool's name and the step's number from 1.
+    /// "comb 3", "drop 1": the tool's name and the step's number from 1 (i + 1, the number the
+    /// step list and the timeline show).
     QString stepName(std::size_t i) const;
 
     // Edits. Each is one undo command named by what changed ("comb 3: spacing 18 → 23").
@@ -81,6 +85,9 @@ public:
     /// Writes fileGenome() atomically (a temporary renamed over the file) and marks the stack
     /// clean; on failure returns false with the reason in `error` and changes nothing.
     bool saveAs(const QString& file, QString* error);
+    /// Marks the design unsaved without an edit: a design recovered after a crash, whose
+    /// changes never reached its file.
+    void markModified();
 
 signals:
     /// The design changed (any edit, undo or redo).
