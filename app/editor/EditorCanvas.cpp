@@ -53,6 +53,7 @@ EditorCanvas::EditorCanvas(RenderService* renderer, QWidget* parent)
     connect(mRenderer, &RenderService::rendered, this, &EditorCanvas::onRendered);
     mSlice = Slice{2, mDesign.size.z / 2.0};
     updateDesignSize();
+    setTool(mTool);
 }
 
 EditorCanvas::~EditorCanvas() { mRenderer->cancel(mKey); }

@@ -234,6 +234,32 @@ TEST(ToolOptionsTest, ShowsTheToolsRowsAndEditsItsSettings) {
     }
 }
 
+// RenderRequest::slice: a solid shown by that cross-section, not on its object, fitted to the
+// slice's own plane when no region is given.
+TEST(RenderServiceSliceTest, RendersTheCrossSectionAsked) {
+    Genome g = solidDesign();
+    g.size = {600, 400, 200};
+    g.initial[0].center = {300, 200, 100};
+    RenderService service(RenderService::Backend::Cpu);
+    QImage final;
+    QObject::connect(&service, &RenderService::rendered, [&](std::uint64_t, const QImage& image, bool isFinal) {
+        if (isFinal) final = image;
+    });
+    RenderRequest request;
+    request.genome = g;
+    request.size = QSize(256, 256);
+    request.slice = Slice{0, 320.0};
+    service.request(7, request);
+    MARBLER_WAIT(!final.isNull(), 30000);
+    EXPECT_EQ(final.size(), QSize(256, 128)) << "the y-z plane, 400 x 200";
+    RenderSettings settings;
+    settings.width = 256;
+    settings.height = 128;
+    settings.aa = "rgss";
+    settings.slice = Slice{0, 320.0};
+    EXPECT_EQ(final, toQImage(CpuRenderer(g).render(settings)).convertToFormat(final.format()));
+}
+
 /// A canvas of 400 x 400 on a CPU render service, showing `design` fitted (0.4 px a unit).
 class CanvasTest : public ::testing::Test {
 protected:
