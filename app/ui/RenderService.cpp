@@ -150,7 +150,7 @@ private:
         const Genome& genome = request.genome;
         RenderControl control;
         control.cancel = &mQueue->abort;
-        if (genome.dimension == 3) {
+        if (genome.dimension == 3 && !request.slice) {
             // On the CPU back end GL only rasterises the object; without any GL the object is
             // replaced by its middle cross-section below.
             if (gl::GlRenderer* renderer = mUseGl ? mGl.get() : glRenderer()) {
@@ -167,7 +167,14 @@ private:
                                        : gl::renderMeshHybrid(*renderer, genome, mesh, &control));
             }
         }
-        const QSize full = request.region ? request.size : fitDesign(genome, request.size);
+        QSize full = request.region ? request.size : fitDesign(genome, request.size);
+        if (!request.region && genome.dimension == 3 && request.slice && request.slice->axis != 2) {
+            // The slice's plane: x-z across y, y-z across x.
+            Genome plane;
+            plane.size = request.slice->axis == 1 ? glm::dvec3(genome.size.x, genome.size.z, 1.0)
+                                                  : glm::dvec3(genome.size.y, genome.size.z, 1.0);
+            full = fitDesign(plane, request.size);
+        }
         // A quick third-size preview; a region keeps its proportions in it as best whole
         // pixels allow.
         const QSize size = final ? full : (full / 3).expandedTo(QSize(8, 8));
@@ -175,7 +182,7 @@ private:
         settings.width = size.width();
         settings.height = size.height();
         settings.region = request.region;
-        if (genome.dimension == 3 && !settings.region && request.zoom != 1.0) {
+        if (genome.dimension == 3 && !settings.region && !request.slice && request.zoom != 1.0) {
             // The cross-section stands in for the object, so it takes the object's zoom, about
             // its middle.
             const double w = genome.size.x / request.zoom, h = genome.size.y / request.zoom;
@@ -183,7 +190,7 @@ private:
                                      (genome.size.y + h) / 2.0};
         }
         settings.aa = final ? request.aa.toStdString() : std::string("none");
-        if (genome.dimension == 3) settings.slice = Slice{2, genome.size.z / 2.0};
+        if (genome.dimension == 3) settings.slice = request.slice.value_or(Slice{2, genome.size.z / 2.0});
         if (mUseGl) {
             try {
                 return toQImage(mGl->render(genome, settings));

@@ -49,6 +49,9 @@ struct RenderRequest {
     double zoom = 1.0;
     /// Only the fast pass (while the user drags an object around).
     bool previewOnly = false;
+    /// A solid shown by this cross-section instead of on its object (the editor's canvas);
+    /// `region` is then of the slice's plane. Ignored for a flat design.
+    std::optional<Slice> slice;
 };
 
 class RenderWorker;

@@ -305,4 +305,12 @@ int traceColor(const std::vector<PreparedOp>& ops, glm::dvec3 p, glm::dvec3* whe
     return -1;
 }
 
+TracedInk traceStep(const std::vector<PreparedOp>& ops, glm::dvec3 p) {
+    for (std::size_t i = ops.size(); i-- > 0;) {
+        if (ops[i].color >= 0 && insideInk(ops[i], p)) return {ops[i].color, std::ptrdiff_t(i)};
+        p = inverseMap(ops[i], p);
+    }
+    return {};
+}
+
 } // namespace marbler

@@ -169,6 +169,43 @@ TEST(Maps, ConformanceProbes) {
     }
 }
 
+// traceStep sees what traceColor sees, and names the step that laid it: two drops at one centre
+// make a ring, and a point in the ring is the older drop's ink, pushed outward.
+TEST(Maps, TraceStepNamesTheInksStep) {
+    for (const std::string name : ProbeFiles) {
+        Json data = readJson(name);
+        Genome genome = parseGenome(data["genome"].dump(), name);
+        std::vector<PreparedOp> ops = prepare(genome);
+        for (const Json& probe : data["probes"]) {
+            glm::dvec3 p(probe[0].get<double>(), probe[1].get<double>(), genome.dimension == 3 ? probe[2].get<double>() : 0.0);
+            TracedInk ink = traceStep(ops, p);
+            ASSERT_EQ(ink.color, traceColor(ops, p)) << name;
+            if (ink.color < 0) {
+                EXPECT_EQ(ink.step, -1);
+            } else {
+                ASSERT_GE(ink.step, 0);
+                ASSERT_LT(std::size_t(ink.step), ops.size());
+                EXPECT_EQ(ops[std::size_t(ink.step)].color, ink.color);
+            }
+        }
+    }
+    Genome rings;
+    rings.palette = {{255, 0, 0}, {0, 0, 255}};
+    Operation older = defaultOperation(Tool::Drop, 2, {500, 500, 0});
+    older.radius = 100;
+    older.color = 0;
+    Operation newer = older;
+    newer.color = 1;
+    rings.initial = {older, newer};
+    std::vector<PreparedOp> ops = prepare(rings);
+    EXPECT_EQ(traceStep(ops, {500, 500, 0}).step, 1);
+    EXPECT_EQ(traceStep(ops, {500, 500, 0}).color, 1);
+    TracedInk ring = traceStep(ops, {500 + 120, 500, 0}); // between 100 and 100 sqrt 2
+    EXPECT_EQ(ring.step, 0);
+    EXPECT_EQ(ring.color, 0);
+    EXPECT_EQ(traceStep(ops, {900, 900, 0}).step, -1);
+}
+
 namespace {
 
 glm::dvec3 randomUnit(Pcg32& rng) {

@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <vector>
 
 namespace marbler {
@@ -64,6 +65,15 @@ bool insideInk(const PreparedOp& op, const glm::dvec3& p);
 /// The colour rule: the palette index seen at P after all of `ops` (time order), or -1 where
 /// no ink lies. `where`, if given, receives the point P maps back to (for a source image).
 int traceColor(const std::vector<PreparedOp>& ops, glm::dvec3 p, glm::dvec3* where = nullptr);
+
+/// What the colour rule sees at P: the palette index (-1 where no ink lies) and the index in
+/// `ops` of the step that laid it (-1 for the bath), as the editor's ink picker shows them.
+struct TracedInk {
+    int color = -1;
+    std::ptrdiff_t step = -1;
+};
+/// traceColor, also naming the step whose ink is seen.
+TracedInk traceStep(const std::vector<PreparedOp>& ops, glm::dvec3 p);
 
 /// One ink met by the bleed colour rule (genome-format.md, version 2, `bleed`).
 struct InkCover {

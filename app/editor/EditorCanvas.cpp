@@ -1,0 +1,443 @@
+#include "editor/EditorCanvas.h"
+
+#include "marbler/Params.h"
+#include "marbler/Tools.h"
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QWheelEvent>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <numbers>
+
+namespace marbler::ui {
+
+namespace {
+
+/// Render keys of their own, far from the grid's cell keys.
+std::uint64_t nextCanvasKey() {
+    static std::atomic<std::uint64_t> next{0xED170000'00000000ULL};
+    return next++;
+}
+
+/// How near (widget pixels) a press must come to a handle to take it.
+constexpr double HandleReach = 9.0;
+/// The length (widget pixels) of a direction handle's arm.
+constexpr double ArmLength = 70.0;
+
+bool hasAngle(Tool tool) {
+    return tool == Tool::Line || tool == Tool::Comb || tool == Tool::Wave || tool == Tool::Stretch || tool == Tool::Flow;
+}
+bool hasRadius(Tool tool) {
+    return tool == Tool::Drop || tool == Tool::Spray || tool == Tool::Circle || tool == Tool::Cylinder
+        || tool == Tool::Sphere;
+}
+
+} // namespace
+
+EditorCanvas::EditorCanvas(RenderService* renderer, QWidget* parent)
+    : QWidget(parent), mRenderer(renderer), mKey(nextCanvasKey()) {
+    setObjectName(QStringLiteral("editorCanvas"));
+    setMinimumSize(240, 240);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(false);
+    setToolTip(tr("Drag with the current tool; middle or right drag (or Space and drag) pans, the wheel zooms, "
+                  "0 fits, 1 shows one to one"));
+    connect(mRenderer, &RenderService::rendered, this, &EditorCanvas::onRendered);
+    mSlice = Slice{2, mDesign.size.z / 2.0};
+    updateDesignSize();
+    setTool(mTool);
+}
+
+EditorCanvas::~EditorCanvas() { mRenderer->cancel(mKey); }
+
+void EditorCanvas::setDesign(const Genome& rendered) {
+    const bool resized = rendered.size != mDesign.size || rendered.dimension != mDesign.dimension;
+    mDesign = rendered;
+    if (resized) {
+        if (mDesign.dimension == 3) mSlice = Slice{2, mDesign.size.z / 2.0};
+        updateDesignSize();
+    }
+    if (mHandles && *mHandles >= mDesign.initial.size() + mDesign.operations.size()) mHandles.reset();
+    rerender();
+}
+
+void EditorCanvas::setDragging(bool on) {
+    if (mDragging == on) return;
+    mDragging = on;
+    if (!on) rerender();
+}
+
+void EditorCanvas::setTool(EditorTool tool) {
+    mTool = tool;
+    setCursor(tool == EditorTool::Pick ? Qt::PointingHandCursor : Qt::CrossCursor);
+}
+
+void EditorCanvas::setToolSettings(const ToolSettings& settings) { mSettings = settings; }
+
+void EditorCanvas::setHandlesFor(std::optional<std::size_t> renderedIndex) {
+    mHandles = renderedIndex;
+    update();
+}
+
+void EditorCanvas::setSlice(const Slice& slice) {
+    mSlice = slice;
+    updateDesignSize();
+    rerender();
+}
+
+void EditorCanvas::updateDesignSize() {
+    double w = mDesign.size.x, h = mDesign.size.y;
+    if (mDesign.dimension == 3 && mSlice.axis == 1) h = mDesign.size.z;
+    if (mDesign.dimension == 3 && mSlice.axis == 0) {
+        w = mDesign.size.y;
+        h = mDesign.size.z;
+    }
+    mView.setDesignSize(w, h);
+    mView.setViewport((size() * devicePixelRatioF()).expandedTo(QSize(1, 1)));
+}
+
+QPointF EditorCanvas::toPlane(const glm::dvec3& p) const {
+    if (mDesign.dimension != 3 || mSlice.axis == 2) return {p.x, p.y};
+    if (mSlice.axis == 1) return {p.x, p.z};
+    return {p.y, p.z};
+}
+
+glm::dvec3 EditorCanvas::fromPlane(QPointF q) const {
+    if (mDesign.dimension != 3) return {q.x(), q.y(), 0.0};
+    if (mSlice.axis == 2) return {q.x(), q.y(), mSlice.value};
+    if (mSlice.axis == 1) return {q.x(), mSlice.value, q.y()};
+    return {mSlice.value, q.x(), q.y()};
+}
+
+glm::dvec3 EditorCanvas::toDesign(QPointF widgetPoint) const {
+    return fromPlane(mView.toDesign(widgetPoint * devicePixelRatioF()));
+}
+
+QPointF EditorCanvas::toWidget(const glm::dvec3& designPoint) const {
+    return mView.toViewport(toPlane(designPoint)) / devicePixelRatioF();
+}
+
+void EditorCanvas::rerender() {
+    if (mDrag == Drag::Gesture && !mPending.empty())
+        requestRender(withSteps(mDesign, mPending), true);
+    else
+        requestRender(mDesign, mDragging || mDrag == Drag::Handle);
+}
+
+void EditorCanvas::requestRender(const Genome& genome, bool previewOnly) {
+    const auto window = mView.visibleWindow();
+    if (!window || genome.size.x <= 0) {
+        mRenderer->cancel(mKey);
+        mImage = QImage();
+        update();
+        return;
+    }
+    RenderRequest request;
+    request.genome = genome;
+    request.region = window->region;
+    request.size = window->pixels.size();
+    request.previewOnly = previewOnly;
+    if (genome.dimension == 3) request.slice = mSlice;
+    mRequestRegion = request.region;
+    mImageFinal = false;
+    mRenderer->request(mKey, std::move(request));
+}
+
+void EditorCanvas::onRendered(std::uint64_t key, const QImage& image, bool final) {
+    if (key != mKey) return;
+    mImage = image;
+    if (mRequestRegion) mImageRegion = *mRequestRegion;
+    // A preview-only request's single pass comes as final, but it is still the coarse one.
+    mImageFinal = final && !mDragging && mDrag == Drag::None;
+    update();
+}
+
+void EditorCanvas::changeView() {
+    update(); // the image so far, moved and scaled at once, until the new render comes
+    rerender();
+    emit viewChanged();
+}
+
+void EditorCanvas::fitView() {
+    mView.fit();
+    changeView();
+}
+void EditorCanvas::oneToOne() {
+    mView.oneToOne();
+    changeView();
+}
+void EditorCanvas::zoomIn() {
+    mView.zoomBy(std::sqrt(2.0), QRectF(QPointF(0, 0), QSizeF(mView.viewport())).center());
+    changeView();
+}
+void EditorCanvas::zoomOut() {
+    mView.zoomBy(1.0 / std::sqrt(2.0), QRectF(QPointF(0, 0), QSizeF(mView.viewport())).center());
+    changeView();
+}
+
+void EditorCanvas::resizeEvent(QResizeEvent*) {
+    mView.setViewport((size() * devicePixelRatioF()).expandedTo(QSize(1, 1)));
+    rerender();
+}
+
+void EditorCanvas::wheelEvent(QWheelEvent* event) {
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches != 0.0) {
+        mView.zoomBy(std::pow(std::sqrt(2.0), notches), event->position() * devicePixelRatioF());
+        changeView();
+    }
+    event->accept();
+}
+
+void EditorCanvas::keyPressEvent(QKeyEvent* event) {
+    switch (event->key()) {
+    case Qt::Key_Plus:
+    case Qt::Key_Equal: zoomIn(); return;
+    case Qt::Key_Minus: zoomOut(); return;
+    case Qt::Key_0: fitView(); return;
+    case Qt::Key_1: oneToOne(); return;
+    case Qt::Key_Space:
+        if (!event->isAutoRepeat()) mSpace = true;
+        setCursor(Qt::OpenHandCursor);
+        return;
+    default: QWidget::keyPressEvent(event);
+    }
+}
+
+void EditorCanvas::keyReleaseEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Space && !event->isAutoRepeat()) {
+        mSpace = false;
+        setTool(mTool);
+        return;
+    }
+    QWidget::keyReleaseEvent(event);
+}
+
+std::optional<Operation> EditorCanvas::selectedStep() const {
+    if (!mHandles) return std::nullopt;
+    const std::size_t i = *mHandles;
+    if (i < mDesign.initial.size()) return mDesign.initial[i];
+    if (i - mDesign.initial.size() < mDesign.operations.size()) return mDesign.operations[i - mDesign.initial.size()];
+    return std::nullopt;
+}
+
+std::vector<std::pair<EditorCanvas::Handle, QPointF>> EditorCanvas::handlePoints() const {
+    std::vector<std::pair<Handle, QPointF>> points;
+    const std::optional<Operation> op = selectedStep();
+    if (!op) return points;
+    const QPointF centre = toWidget(op->center);
+    points.emplace_back(Handle::Centre, centre);
+    if (mDesign.dimension != 3 && hasAngle(op->tool)) {
+        const double a = op->angle * std::numbers::pi / 180.0;
+        points.emplace_back(Handle::Direction, centre + ArmLength * QPointF(std::cos(a), std::sin(a)));
+    }
+    if (hasRadius(op->tool)) {
+        const QPointF plane = toPlane(op->center) + QPointF(op->radius, 0.0);
+        points.emplace_back(Handle::Radius, mView.toViewport(plane) / devicePixelRatioF());
+    }
+    return points;
+}
+
+Operation EditorCanvas::movedStep(Handle handle, QPointF widget) const {
+    Operation op = *selectedStep();
+    const glm::dvec3 at = toDesign(widget);
+    switch (handle) {
+    case Handle::Centre: {
+        // Only the plane's two coordinates move; a solid's step keeps its depth.
+        const QPointF plane = toPlane(at);
+        const QPointF was = toPlane(op.center);
+        const glm::dvec3 shifted = fromPlane(plane) - fromPlane(was);
+        op.center += mDesign.dimension == 3 ? shifted : glm::dvec3(shifted.x, shifted.y, 0.0);
+        break;
+    }
+    case Handle::Direction: {
+        const QPointF d = widget - toWidget(op.center);
+        if (std::hypot(d.x(), d.y()) > 1.0) op.angle = std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi;
+        break;
+    }
+    case Handle::Radius: {
+        const QPointF d = toPlane(at) - toPlane(op.center);
+        op.radius = std::max(std::hypot(d.x(), d.y()), 1e-3);
+        break;
+    }
+    }
+    return op;
+}
+
+void EditorCanvas::mousePressEvent(QMouseEvent* event) {
+    mLastPos = event->position();
+    const bool left = event->button() == Qt::LeftButton;
+    if (event->button() == Qt::MiddleButton || event->button() == Qt::RightButton || (left && mSpace)) {
+        mDrag = Drag::Pan;
+        setCursor(Qt::ClosedHandCursor);
+        return;
+    }
+    if (!left) return;
+    for (const auto& [handle, point] : handlePoints()) {
+        const QPointF d = point - event->position();
+        if (std::hypot(d.x(), d.y()) <= HandleReach) {
+            mDrag = Drag::Handle;
+            mHandle = handle;
+            return;
+        }
+    }
+    if (mTool == EditorTool::Pick) {
+        const TracedInk ink = traceStep(prepare(mDesign), toDesign(event->position()));
+        emit inkPicked(ink.color, ink.step >= 0 ? std::optional<std::size_t>(std::size_t(ink.step)) : std::nullopt);
+        return;
+    }
+    if (!toolAvailable(mTool, mDesign.dimension)) return;
+    mDrag = Drag::Gesture;
+    mPress = mCurrent = toDesign(event->position());
+    mPending = gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
+    rerender();
+    update();
+}
+
+void EditorCanvas::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF delta = event->position() - mLastPos;
+    mLastPos = event->position();
+    switch (mDrag) {
+    case Drag::None: return;
+    case Drag::Pan:
+        mView.panBy(delta * devicePixelRatioF());
+        update();
+        requestRender(mDesign, true);
+        emit viewChanged();
+        return;
+    case Drag::Handle: {
+        const Operation op = movedStep(mHandle, event->position());
+        requestRender(withReplaced(op), true);
+        update();
+        emit handleDragged(*mHandles, op, false);
+        return;
+    }
+    case Drag::Gesture:
+        mCurrent = toDesign(event->position());
+        mPending = gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
+        rerender();
+        update();
+        return;
+    }
+}
+
+void EditorCanvas::mouseReleaseEvent(QMouseEvent* event) {
+    const Drag drag = std::exchange(mDrag, Drag::None);
+    switch (drag) {
+    case Drag::None: return;
+    case Drag::Pan:
+        setTool(mTool);
+        rerender();
+        return;
+    case Drag::Handle: {
+        const Operation op = movedStep(mHandle, event->position());
+        requestRender(withReplaced(op), mDragging);
+        emit handleDragged(*mHandles, op, true);
+        return;
+    }
+    case Drag::Gesture: {
+        mCurrent = toDesign(event->position());
+        std::vector<Operation> ops = gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
+        mPending.clear();
+        if (ops.empty()) {
+            rerender();
+            update();
+            return;
+        }
+        // Drawn with the new steps until the window hands the changed design back.
+        requestRender(withSteps(mDesign, ops), mDragging);
+        update();
+        const QString name = QString::fromUtf8(toolSpec(ops.front().tool).name.data(),
+                                               qsizetype(toolSpec(ops.front().tool).name.size()));
+        const QString text = ops.size() == 1 ? name : tr("%1 %2s").arg(ops.size()).arg(name);
+        emit stepsMade(ops, text);
+        return;
+    }
+    }
+}
+
+Genome EditorCanvas::withReplaced(const Operation& op) const {
+    Genome genome = mDesign;
+    if (!mHandles) return genome;
+    const std::size_t i = *mHandles;
+    if (i < genome.initial.size())
+        genome.initial[i] = op;
+    else if (i - genome.initial.size() < genome.operations.size())
+        genome.operations[i - genome.initial.size()] = op;
+    return genome;
+}
+
+void EditorCanvas::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), palette().color(QPalette::Window).darker(115));
+    if (!mImage.isNull()) {
+        const QRectF r = mView.toViewport(mImageRegion);
+        const double ratio = devicePixelRatioF();
+        p.setRenderHint(QPainter::SmoothPixmapTransform);
+        p.drawImage(QRectF(r.topLeft() / ratio, r.size() / ratio), mImage);
+    }
+    drawOverlay(p);
+}
+
+void EditorCanvas::drawStepOutline(QPainter& painter, const Operation& op) const {
+    const QPointF c = toWidget(op.center);
+    const double scale = mView.scale() / devicePixelRatioF(); // widget pixels a design unit
+    switch (op.tool) {
+    case Tool::Drop:
+    case Tool::Spray:
+    case Tool::Cylinder:
+    case Tool::Circle:
+    case Tool::Sphere: {
+        const double r = op.radius * scale;
+        painter.drawEllipse(c, r, r);
+        break;
+    }
+    case Tool::Vortex: {
+        const double r = std::abs(op.alpha) * scale;
+        painter.drawEllipse(c, r, r);
+        break;
+    }
+    case Tool::Flow: painter.drawRect(QRectF(c, QSizeF(op.extent.x * scale, op.extent.y * scale))); break;
+    default: break;
+    }
+}
+
+void EditorCanvas::drawOverlay(QPainter& p) const {
+    p.setRenderHint(QPainter::Antialiasing);
+    // Dark under light: seen on any ink.
+    const QPen dark(QColor(0, 0, 0, 160), 3.0), light(QColor(255, 255, 255, 230), 1.5);
+    if (mDrag == Drag::Gesture) {
+        for (const QPen& pen : {dark, light}) {
+            p.setPen(pen);
+            p.setBrush(Qt::NoBrush);
+            const QPointF a = toWidget(mPress), b = toWidget(mCurrent);
+            if (a != b) p.drawLine(a, b);
+            for (const Operation& op : mPending) drawStepOutline(p, op);
+        }
+    }
+    const auto handles = handlePoints();
+    if (const std::optional<Operation> op = selectedStep(); op && !handles.empty()) {
+        for (const QPen& pen : {dark, light}) {
+            p.setPen(pen);
+            p.setBrush(Qt::NoBrush);
+            drawStepOutline(p, mDrag == Drag::Handle ? movedStep(mHandle, mLastPos) : *op);
+            for (const auto& [handle, point] : handles)
+                if (handle == Handle::Direction) p.drawLine(handles.front().second, point);
+        }
+        p.setPen(dark);
+        for (const auto& [handle, point] : handles) {
+            p.setBrush(handle == Handle::Centre ? QColor(255, 255, 255) : QColor(255, 200, 60));
+            p.drawEllipse(point, 5.0, 5.0);
+        }
+    }
+}
+
+} // namespace marbler::ui

@@ -1,0 +1,136 @@
+#pragma once
+/// The editor's live canvas: the design drawn at any zoom (re-rendered for the part in view,
+/// never scaled up), the current tool's gestures with a preview while dragging, handles that
+/// move the selected step, and the ink picker. It knows no document: it shows the design it is
+/// given and says what the user did through its signals; the editor window applies them.
+
+#include "editor/Gestures.h"
+#include "ui/RenderService.h"
+#include "ui/ViewController.h"
+
+#include "marbler/Sampling.h"
+
+#include <QImage>
+#include <QPointF>
+#include <QString>
+#include <QWidget>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace marbler::ui {
+
+class EditorCanvas : public QWidget {
+    Q_OBJECT
+public:
+    explicit EditorCanvas(RenderService* renderer, QWidget* parent = nullptr);
+    ~EditorCanvas() override;
+
+    /// What to draw (muted steps already left out); re-renders, coarse then antialiased (coarse
+    /// only while dragging).
+    void setDesign(const Genome& rendered);
+    const Genome& design() const { return mDesign; }
+    /// While a parameter is dragged elsewhere: coarse passes only; sharp again when set back.
+    void setDragging(bool on);
+    bool dragging() const { return mDragging; }
+    void setTool(EditorTool tool);
+    EditorTool tool() const { return mTool; }
+    void setToolSettings(const ToolSettings& settings);
+    const ToolSettings& toolSettings() const { return mSettings; }
+    /// Shows the handles of that step of the drawn design (its centre or origin, its direction,
+    /// its radius); none with nullopt.
+    void setHandlesFor(std::optional<std::size_t> renderedIndex);
+    std::optional<std::size_t> handlesFor() const { return mHandles; }
+    /// Solids: the cross-section shown, and the plane clicks land on.
+    void setSlice(const Slice& slice);
+    Slice slice() const { return mSlice; }
+    /// Pan (middle or right drag, or Space and drag), wheel zoom, 0 fits, 1 one to one, + and -.
+    ViewController& view() { return mView; }
+
+    /// The design point under a canvas point (widget coordinates); for a solid, on the slice.
+    glm::dvec3 toDesign(QPointF widgetPoint) const;
+    /// The widget point of a design point (of a solid, projected on the slice's plane).
+    QPointF toWidget(const glm::dvec3& designPoint) const;
+
+    /// The handles of the selected step, for tests and the overlay: where each is (widget).
+    enum class Handle { Centre, Direction, Radius };
+    std::vector<std::pair<Handle, QPointF>> handlePoints() const;
+
+    /// The image shown now, whether it is the sharp final one, and the steps of the gesture in
+    /// progress (tests).
+    const QImage& image() const { return mImage; }
+    bool imageFinal() const { return mImageFinal; }
+    const std::vector<Operation>& pendingSteps() const { return mPending; }
+    /// Fits, zooms about the centre, one to one (the window's View menu and tool bar).
+    void fitView();
+    void zoomIn();
+    void zoomOut();
+    void oneToOne();
+
+signals:
+    /// A gesture made these steps (on release): one gesture, one undo step named `text`.
+    void stepsMade(const std::vector<marbler::Operation>& ops, const QString& text);
+    /// A handle moved the step (`final` on release; a drag is one undo step).
+    void handleDragged(std::size_t renderedIndex, const marbler::Operation& op, bool final);
+    /// The Pick tool clicked: the palette index seen there (-1: the bath) and the step that
+    /// laid it.
+    void inkPicked(int color, std::optional<std::size_t> renderedIndex);
+    /// The view was zoomed or panned.
+    void viewChanged();
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+
+private:
+    /// The 2D extent shown: the design, or its slice's plane.
+    void updateDesignSize();
+    void requestRender(const Genome& genome, bool previewOnly);
+    void rerender();
+    void onRendered(std::uint64_t key, const QImage& image, bool final);
+    void changeView();
+    std::optional<Operation> selectedStep() const;
+    /// The design with the selected step replaced by `op`.
+    Genome withReplaced(const Operation& op) const;
+    /// The step as a handle at `widget` would move it.
+    Operation movedStep(Handle handle, QPointF widget) const;
+    /// The plane coordinates of a design point, and back.
+    QPointF toPlane(const glm::dvec3& p) const;
+    glm::dvec3 fromPlane(QPointF plane) const;
+    void drawOverlay(QPainter& painter) const;
+    void drawStepOutline(QPainter& painter, const Operation& op) const;
+
+    RenderService* mRenderer;
+    std::uint64_t mKey;
+    Genome mDesign;
+    ViewController mView;
+    Slice mSlice;
+    EditorTool mTool = EditorTool::Drop;
+    ToolSettings mSettings;
+    std::optional<std::size_t> mHandles;
+    bool mDragging = false;
+
+    QImage mImage;
+    Region mImageRegion;
+    std::optional<Region> mRequestRegion;
+    bool mImageFinal = false;
+
+    enum class Drag { None, Gesture, Pan, Handle };
+    Drag mDrag = Drag::None;
+    bool mSpace = false;
+    QPointF mLastPos;
+    glm::dvec3 mPress{0.0}, mCurrent{0.0};
+    std::vector<Operation> mPending;
+    Handle mHandle = Handle::Centre;
+};
+
+} // namespace marbler::ui

@@ -1,0 +1,265 @@
+#include "editor/Gestures.h"
+
+#include "marbler/Params.h"
+#include "marbler/Random.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace marbler::ui {
+
+namespace {
+
+/// The unit normal of the section plane across `axis` (a solid's gestures lie in that plane).
+glm::dvec3 planeNormal(int axis) {
+    glm::dvec3 n(0.0);
+    n[std::clamp(axis, 0, 2)] = 1.0;
+    return n;
+}
+
+/// Two unit vectors spanning the section plane (x-y for z, x-z for y, y-z for x; 2D: x-y).
+void planeAxes(int dimension, int axis, glm::dvec3& u, glm::dvec3& v) {
+    if (dimension != 3 || axis == 2) {
+        u = {1, 0, 0};
+        v = {0, 1, 0};
+    } else if (axis == 1) {
+        u = {1, 0, 0};
+        v = {0, 0, 1};
+    } else {
+        u = {0, 1, 0};
+        v = {0, 0, 1};
+    }
+}
+
+/// The palette index a tool lays: the panel's, kept inside the palette.
+int inkIndex(const ToolSettings& s, const Genome& design) {
+    return std::clamp(s.color, 0, int(design.palette.size()) - 1);
+}
+
+Operation inkDrop(Tool tool, const glm::dvec3& centre, double radius, int color, const Genome& design) {
+    Operation op = defaultOperation(tool, design.dimension, centre);
+    op.radius = std::max(radius, 1e-3);
+    op.color = color;
+    return op;
+}
+
+/// The 2D angle of a drag, degrees clockwise on screen (design y grows downward).
+double dragAngle(const glm::dvec3& d) { return std::atan2(d.y, d.x) * 180.0 / std::numbers::pi; }
+
+/// Sets a stroke's direction: the 2D angle, or in 3D the direction along the drag with the
+/// plane's normal across it.
+void setStrokeDirection(Operation& op, const glm::dvec3& d, const Genome& design, int sliceAxis) {
+    if (design.dimension == 3) {
+        op.direction = glm::normalize(d);
+        op.normal = planeNormal(sliceAxis);
+    } else {
+        op.angle = dragAngle(d);
+    }
+}
+
+} // namespace
+
+Tool genomeTool(EditorTool tool) {
+    switch (tool) {
+    case EditorTool::Pick:
+    case EditorTool::Drop:
+    case EditorTool::DropLine:
+    case EditorTool::DropRings:
+    case EditorTool::DropScatter: return Tool::Drop;
+    case EditorTool::Spray: return Tool::Spray;
+    case EditorTool::Line: return Tool::Line;
+    case EditorTool::Comb: return Tool::Comb;
+    case EditorTool::Wave: return Tool::Wave;
+    case EditorTool::Circle: return Tool::Circle;
+    case EditorTool::Vortex: return Tool::Vortex;
+    case EditorTool::Stretch: return Tool::Stretch;
+    case EditorTool::Flow: return Tool::Flow;
+    }
+    return Tool::Drop;
+}
+
+bool laysInk(EditorTool tool) { return tool != EditorTool::Pick && toolSpec(genomeTool(tool)).laysInk; }
+
+bool toolAvailable(EditorTool tool, int dimension) {
+    return tool == EditorTool::Pick || toolSpec(genomeTool(tool)).available(dimension);
+}
+
+std::string_view toolId(EditorTool tool) {
+    switch (tool) {
+    case EditorTool::Pick: return "pick";
+    case EditorTool::Drop: return "drop";
+    case EditorTool::Spray: return "spray";
+    case EditorTool::DropLine: return "drop-line";
+    case EditorTool::DropRings: return "drop-rings";
+    case EditorTool::DropScatter: return "drop-scatter";
+    case EditorTool::Line: return "line";
+    case EditorTool::Comb: return "comb";
+    case EditorTool::Wave: return "wave";
+    case EditorTool::Circle: return "circle";
+    case EditorTool::Vortex: return "vortex";
+    case EditorTool::Stretch: return "stretch";
+    case EditorTool::Flow: return "flow";
+    }
+    return "pick";
+}
+
+Genome withSteps(Genome design, const std::vector<Operation>& ops) {
+    for (const Operation& op : ops) {
+        if (allowedInInitial(op.tool, design.dimension))
+            design.initial.push_back(op);
+        else
+            design.operations.push_back(op);
+    }
+    return design;
+}
+
+std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, const glm::dvec3& press,
+                                    const glm::dvec3& release, const Genome& design, int sliceAxis) {
+    if (tool == EditorTool::Pick || !toolAvailable(tool, design.dimension)) return {};
+    if (laysInk(tool) && design.palette.empty()) return {};
+    const int dim = design.dimension;
+    const glm::dvec3 p = dim == 3 ? press : glm::dvec3(press.x, press.y, 0.0);
+    const glm::dvec3 q = dim == 3 ? release : glm::dvec3(release.x, release.y, 0.0);
+    const glm::dvec3 d = q - p;
+    const double length = glm::length(d);
+    const bool stroke = length >= MinStrokeLength;
+    glm::dvec3 u, v;
+    planeAxes(dim, sliceAxis, u, v);
+    const int color = laysInk(tool) ? inkIndex(s, design) : 0;
+    const int count = std::max(1, s.patternCount);
+    std::vector<Operation> ops;
+
+    switch (tool) {
+    case EditorTool::Pick: break;
+    case EditorTool::Drop:
+        // A drop inside a drop needs nothing special: the new ink pushes the older outward.
+        ops.push_back(inkDrop(Tool::Drop, p, stroke ? length : s.radius, color, design));
+        break;
+    case EditorTool::Spray: {
+        // Droplets scattered uniformly within `brush` of the stroke's path.
+        Pcg32 rng(s.seed);
+        const double brush = std::max(s.brush, 0.0);
+        for (int i = 0; i < std::max(1, s.sprayCount); ++i) {
+            const double t = rng.uniform();
+            const double a = rng.uniform(0.0, 2.0 * std::numbers::pi);
+            const double r = brush * std::sqrt(rng.uniform());
+            const glm::dvec3 at = p + t * d + r * (std::cos(a) * u + std::sin(a) * v);
+            ops.push_back(inkDrop(Tool::Spray, at, s.sprayRadius, color, design));
+        }
+        break;
+    }
+    case EditorTool::DropLine: {
+        // Evenly along the drag; a click drops them along a short row to the right.
+        const glm::dvec3 along = stroke ? d : u * (2.0 * s.radius * (count - 1));
+        for (int i = 0; i < count; ++i) {
+            const double t = count == 1 ? 0.0 : double(i) / (count - 1);
+            ops.push_back(inkDrop(Tool::Drop, p + t * along, s.radius, color, design));
+        }
+        break;
+    }
+    case EditorTool::DropRings: {
+        // n drops at one centre, inks alternating with the next of the palette: each pushes the
+        // older ones outward, and by the area law (volume law in 3D) the last ring ends at the
+        // drag's length.
+        const double outer = stroke ? length : s.radius;
+        const double r = outer / std::pow(double(count), dim == 3 ? 1.0 / 3.0 : 0.5);
+        const int other = (color + 1) % int(design.palette.size());
+        for (int i = 0; i < count; ++i)
+            ops.push_back(inkDrop(Tool::Drop, p, r, i % 2 == 0 ? color : other, design));
+        break;
+    }
+    case EditorTool::DropScatter: {
+        // Poisson-disk (dart throwing) in the disc of the drag, drops spaced at least `gap`
+        // apart and half that wide, so none lands in another.
+        const double outer = stroke ? length : s.radius * 4.0;
+        const double gap = outer * std::sqrt(1.0 / count);
+        Pcg32 rng(s.seed);
+        std::vector<glm::dvec3> placed;
+        for (int attempt = 0; attempt < 60 * count && int(placed.size()) < count; ++attempt) {
+            const double a = rng.uniform(0.0, 2.0 * std::numbers::pi);
+            const double r = outer * std::sqrt(rng.uniform());
+            const glm::dvec3 at = p + r * (std::cos(a) * u + std::sin(a) * v);
+            if (std::all_of(placed.begin(), placed.end(), [&](const glm::dvec3& o) { return glm::length(o - at) >= gap; }))
+                placed.push_back(at);
+        }
+        for (const glm::dvec3& at : placed) ops.push_back(inkDrop(Tool::Drop, at, gap * 0.45, color, design));
+        break;
+    }
+    case EditorTool::Line:
+    case EditorTool::Comb: {
+        if (!stroke) break;
+        Operation op = defaultOperation(genomeTool(tool), dim, p);
+        setStrokeDirection(op, d, design, sliceAxis);
+        op.alpha = length;
+        op.lambda = std::max(s.lambda, 1e-3);
+        op.spacing = std::max(s.spacing, 1e-3);
+        ops.push_back(op);
+        break;
+    }
+    case EditorTool::Wave: {
+        if (!stroke) break;
+        Operation op = defaultOperation(Tool::Wave, dim, p);
+        setStrokeDirection(op, d, design, sliceAxis);
+        op.amplitude = glm::dvec2(length);
+        op.wavelength = glm::dvec2(std::max(s.wavelength, 1e-3));
+        ops.push_back(op);
+        break;
+    }
+    case EditorTool::Circle: {
+        if (!stroke) break;
+        Operation op = defaultOperation(Tool::Circle, dim, p);
+        if (dim == 3) op.axis = planeNormal(sliceAxis);
+        op.radius = length;
+        op.alpha = s.alpha;
+        op.lambda = std::max(s.lambda, 1e-3);
+        op.core = std::max(s.core, 0.0);
+        ops.push_back(op);
+        break;
+    }
+    case EditorTool::Vortex: {
+        // The drag's length is the swirl's largest shift; a click swirls by the panel's.
+        Operation op = defaultOperation(Tool::Vortex, dim, p);
+        if (dim == 3) op.axis = planeNormal(sliceAxis);
+        op.alpha = stroke ? length : s.alpha;
+        op.lambda = std::max(s.lambda, 1e-3);
+        op.core = std::max(s.core, 0.0);
+        ops.push_back(op);
+        break;
+    }
+    case EditorTool::Stretch: {
+        if (!stroke) break;
+        // Teeth evenly across the whole design at any angle, about the origin.
+        Operation op = defaultOperation(Tool::Stretch, dim, p);
+        op.angle = dragAngle(d);
+        op.shift = length;
+        op.power = std::max(s.power, 1e-3);
+        const double half = std::hypot(design.size.x, design.size.y);
+        const int n = std::clamp(s.teeth, 2, int(MaxTeeth));
+        op.teeth.clear();
+        for (int i = 0; i < n; ++i) op.teeth.push_back(-half + 2.0 * half * i / (n - 1));
+        ops.push_back(op);
+        break;
+    }
+    case EditorTool::Flow: {
+        // The drag spans one cell (or the cavity) from its corner; a click keeps the default size.
+        Operation op = defaultOperation(Tool::Flow, dim, p);
+        op.center = p;
+        if (stroke) op.extent = {std::max(std::abs(d.x), MinStrokeLength), std::max(std::abs(d.y), MinStrokeLength)};
+        op.center = {std::min(p.x, q.x), std::min(p.y, q.y), 0.0};
+        if (!stroke) op.center = p;
+        op.field = s.field == 1 ? FlowField::Cavity : FlowField::Cells;
+        op.speed = s.speed;
+        op.time = s.time > 0 ? s.time : 1.0;
+        op.steps = minimumFlowSteps(op);
+        if (op.steps > MaxFlowSteps) break;
+        ops.push_back(op);
+        break;
+    }
+    }
+    return ops;
+}
+
+} // namespace marbler::ui
