@@ -188,3 +188,6 @@ void AnimationExportJob::cancel() {
 }
 
 } // namespace marbler::ui
+
+// The moc output here, not in marbler_ui's mocs_compilation: a test of the panels links only them.
+#include "moc_AnimationExport.cpp"

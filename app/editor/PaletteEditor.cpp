@@ -149,3 +149,6 @@ void PaletteEditor::editColor(int index) {
 }
 
 } // namespace marbler::ui
+
+// The moc output here, not in marbler_ui's mocs_compilation: a test of the panels links only them.
+#include "moc_PaletteEditor.cpp"

@@ -16,6 +16,8 @@
 #include <QSlider>
 #include <QSpinBox>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -41,6 +43,28 @@ bool hasSlider(ParamKind kind) {
 }
 
 bool isInteger(ParamKind kind) { return kind == ParamKind::Count; }
+
+glm::dvec3 unitOrZero(const glm::dvec3& v) {
+    const double length = glm::length(v);
+    return length > 1e-12 && std::isfinite(length) ? v / length : glm::dvec3(0.0);
+}
+
+/// Sets a component; a 3D axis, direction or normal is kept unit, and the normal orthogonal to
+/// the direction (what loading a file makes of them, so the design edited is the design saved).
+void applyComponent(const ParamSpec& spec, Operation& op, int dimension, int component, double value) {
+    setComponent(spec, op, component, value);
+    if (spec.kind != ParamKind::Direction || dimension != 3) return;
+    const auto params = toolSpec(op.tool).params(dimension);
+    const bool hasNormal = std::any_of(params.begin(), params.end(), [](const ParamSpec& p) { return p.field == ParamField::Normal; });
+    if (spec.field == ParamField::Axis) op.axis = unitOrZero(op.axis);
+    if (spec.field == ParamField::Direction) op.direction = unitOrZero(op.direction);
+    if (hasNormal && (spec.field == ParamField::Direction || spec.field == ParamField::Normal)) {
+        // Gram-Schmidt twice, as the loader does.
+        glm::dvec3 n = unitOrZero(op.normal);
+        for (int pass = 0; pass < 2; ++pass) n = unitOrZero(n - glm::dot(n, op.direction) * op.direction);
+        op.normal = n;
+    }
+}
 
 } // namespace
 
@@ -214,7 +238,7 @@ void ParamForm::build() {
                         commitComponent(*row->spec, i, valueOf(position), slider->isSliderDown());
                     });
                     connect(slider, &QSlider::sliderReleased, this, [this, row, i, slider, valueOf] {
-                        if (!mUpdating) commitComponent(*row->spec, i, valueOf(slider->value()), false);
+                        if (!mUpdating) commitComponent(*row->spec, i, valueOf(slider->value()), false, true);
                     });
                 }
                 layout->addWidget(spin, 1);
@@ -287,7 +311,7 @@ bool ParamForm::valid(const Operation& op) const {
     }
 }
 
-void ParamForm::commitComponent(const ParamSpec& spec, int component, double value, bool dragging) {
+void ParamForm::commitComponent(const ParamSpec& spec, int component, double value, bool dragging, bool endsDrag) {
     if (!mHasStep || !std::isfinite(value)) return;
     const double old = getComponent(spec, mOp, component);
     // Into the parameter's own range first.
@@ -298,7 +322,7 @@ void ParamForm::commitComponent(const ParamSpec& spec, int component, double val
     if (spec.kind == ParamKind::Color || spec.kind == ParamKind::Choice || spec.kind == ParamKind::Count)
         value = std::round(value);
     Operation op = mOp;
-    setComponent(spec, op, component, value);
+    applyComponent(spec, op, mDimension, component, value);
     if (!valid(op)) {
         // A rule between parameters (a flow's steps, a direction's length): the valid value
         // nearest the one asked for, between it and the old value, which is valid.
@@ -307,29 +331,32 @@ void ParamForm::commitComponent(const ParamSpec& spec, int component, double val
             double mid = 0.5 * (good + bad);
             if (spec.kind == ParamKind::Count) mid = good < bad ? std::floor(mid) : std::ceil(mid);
             Operation probe = mOp;
-            setComponent(spec, probe, component, mid);
+            applyComponent(spec, probe, mDimension, component, mid);
             if (valid(probe)) good = mid;
             else bad = mid;
             if (mid == good && std::abs(good - bad) <= (spec.kind == ParamKind::Count ? 1.0 : 1e-9 * (1.0 + std::abs(bad))))
                 break;
         }
         op = mOp;
-        setComponent(spec, op, component, good);
+        applyComponent(spec, op, mDimension, component, good);
         if (!valid(op)) {
             refresh();
             return;
         }
     }
-    commitOperation(spec, op, dragging);
+    commitOperation(spec, op, dragging, endsDrag);
 }
 
-void ParamForm::commitOperation(const ParamSpec& spec, const Operation& op, bool dragging) {
+void ParamForm::commitOperation(const ParamSpec& spec, const Operation& op, bool dragging, bool endsDrag) {
     const bool shapeChanged = spec.kind == ParamKind::Choice && op.shape != mOp.shape;
-    if (op == mOp && dragging) return;
+    if (op == mOp && !endsDrag) {
+        // Nothing changed (a value brought back to where it was): show it, say nothing.
+        refresh();
+        return;
+    }
     mOp = op;
-    // Show the value kept (it may have been brought into range).
-    for (const Row* row : mRows)
-        if (row->spec == &spec) refreshRow(*row);
+    // Show the values kept (brought into range, a direction made unit, its normal turned with it).
+    refresh();
     emit edited(mOp, QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size())), dragging);
     if (shapeChanged) {
         // A 3D wave's pairs have one or two numbers by its shape: rebuild once this signal is done.
@@ -346,3 +373,6 @@ void ParamForm::commitOperation(const ParamSpec& spec, const Operation& op, bool
 }
 
 } // namespace marbler::ui
+
+// The moc output here, not in marbler_ui's mocs_compilation: a test of the panels links only them.
+#include "moc_ParamForm.cpp"

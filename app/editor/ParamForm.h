@@ -4,7 +4,9 @@
 /// for an ink's colour, a list for a choice, two boxes for an extent, a text field for a
 /// stretch's teeth. Every value it emits is valid: a value outside the parameter's range, or
 /// one that breaks a rule between parameters (a flow's steps, a normal parallel to the
-/// direction), is brought back to the nearest valid value first.
+/// direction), is brought back to the nearest valid value first. A 3D axis, direction or normal
+/// is kept unit, and the normal orthogonal to the direction, as loading a file makes them (so
+/// editing a direction may turn the normal with it).
 
 #include "marbler/Genome.h"
 #include "marbler/Params.h"
@@ -36,7 +38,8 @@ public:
 signals:
     /// The user changed parameter `key`: `op` is the step with it changed. `dragging` while a
     /// slider is held (render coarsely, merge into one undo step); the edit that ends a drag,
-    /// and every other edit, has it false.
+    /// and every other edit, has it false. An edit that changes nothing is not emitted, except
+    /// the one that ends a drag.
     void edited(const marbler::Operation& op, const QString& key, bool dragging);
 
 private:
@@ -45,8 +48,8 @@ private:
     void refresh();
     void refreshRow(const Row& row);
     bool valid(const Operation& op) const;
-    void commitComponent(const ParamSpec& spec, int component, double value, bool dragging);
-    void commitOperation(const ParamSpec& spec, const Operation& op, bool dragging);
+    void commitComponent(const ParamSpec& spec, int component, double value, bool dragging, bool endsDrag = false);
+    void commitOperation(const ParamSpec& spec, const Operation& op, bool dragging, bool endsDrag = false);
     double sliderSpan(const ParamSpec& spec, int component, double& low) const;
 
     Operation mOp;

@@ -18,6 +18,7 @@ public:
         setDragDropMode(QAbstractItemView::InternalMove);
         setDefaultDropAction(Qt::MoveAction);
         setSelectionMode(QAbstractItemView::SingleSelection);
+        viewport()->setAcceptDrops(true);
     }
 
 protected:
@@ -145,3 +146,6 @@ void StepList::showMenu(const QPoint& pos) {
 }
 
 } // namespace marbler::ui
+
+// The moc output here, not in marbler_ui's mocs_compilation: a test of the panels links only them.
+#include "moc_StepList.cpp"

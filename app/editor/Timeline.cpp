@@ -157,3 +157,6 @@ void Timeline::setCompareGrowth(double g) {
 }
 
 } // namespace marbler::ui
+
+// The moc output here, not in marbler_ui's mocs_compilation: a test of the panels links only them.
+#include "moc_Timeline.cpp"
