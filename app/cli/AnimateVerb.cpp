@@ -2,6 +2,7 @@
 // folder of PNG frames or a video (spec/cli.md).
 
 #include "cli/Cli.h"
+#include "marbler/Animation.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/Growth.h"
@@ -125,47 +126,8 @@ private:
     std::mutex mMutex;
 };
 
-/// A temporary folder beside OUT, removed unless committed (renamed to OUT).
-class TemporaryFolder {
-public:
-    explicit TemporaryFolder(const std::filesystem::path& out) : mOut(out) {
-        std::filesystem::path parent = out.parent_path();
-        if (parent.empty()) parent = ".";
-        mPath = parent / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
-        std::error_code ec;
-        std::filesystem::remove_all(mPath, ec);
-        if (!std::filesystem::create_directory(mPath, ec) || ec)
-            throw RuntimeFailure("cannot make the folder " + mPath.string() + ": " + ec.message());
-    }
-    ~TemporaryFolder() {
-        if (mCommitted) return;
-        std::error_code ec;
-        std::filesystem::remove_all(mPath, ec);
-    }
-    TemporaryFolder(const TemporaryFolder&) = delete;
-    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-
-    const std::filesystem::path& path() const { return mPath; }
-    void commit() {
-        std::error_code ec;
-        std::filesystem::rename(mPath, mOut, ec); // replaces an empty folder at OUT
-        if (ec) throw RuntimeFailure("cannot rename " + mPath.string() + " to " + mOut.string() + ": " + ec.message());
-        mCommitted = true;
-    }
-
-private:
-    std::filesystem::path mOut, mPath;
-    bool mCommitted = false;
-};
-
-std::string frameName(int frame) {
-    char name[32];
-    std::snprintf(name, sizeof name, "frame-%04d.png", frame);
-    return name;
-}
-
 int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
-                  const std::filesystem::path& out, bool video, double fps, int frames, int width, int height);
+                  const std::filesystem::path& out, double fps, int frames, int width, int height);
 
 int animate(std::span<const std::string> words) {
     Args args = parseArgs(words, {"o", "output", "frames", "fps", "width", "height", "aa", "slice", "threads"},
@@ -205,7 +167,7 @@ int animate(std::span<const std::string> words) {
     Genome genome = loadGenomeArgument("animate", genomeName);
     genome.allowExternalSource = args.has("allow-external-source");
     try {
-        return animateGenome(args, genomeName, genome, std::move(settings), out, video, fps, frames, width, height);
+        return animateGenome(args, genomeName, genome, std::move(settings), out, fps, frames, width, height);
     } catch (const InputError& e) {
         // One line that names the file: the genome, unless the message names one already.
         std::string message = e.what();
@@ -217,9 +179,8 @@ int animate(std::span<const std::string> words) {
 }
 
 int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
-                  const std::filesystem::path& out, bool video, double fps, int frames, int width, int height) {
+                  const std::filesystem::path& out, double fps, int frames, int width, int height) {
     const bool hasW = args.has("width"), hasH = args.has("height");
-    std::error_code ec;
     auto withGenome = [&](const std::string& message) { return InputError(genomeName + ": " + message); };
     if (genome.dimension == 3 && !settings.slice)
         throw withGenome("a solid (3D) genome needs --slice AXIS=VALUE (e.g. z=" +
@@ -246,37 +207,9 @@ int animateGenome(const Args& args, const std::string& genomeName, const Genome&
     const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
     FrameProgress progress(showProgress, frames);
     InterruptGuard interrupts;
-    const std::size_t steps = stepCount(genome);
-    auto designOf = [&](int frame) { return designAtGrowth(genome, frameGrowth(steps, frame, frames)); };
-    auto controlOf = [&](int frame) {
-        RenderControl control;
-        control.cancel = &gInterrupted;
-        control.progress = [&progress, frame](double f) { progress.update(frame, f); };
-        return control;
-    };
-    if (video) {
-        // The writer renames its temporary over OUT on finish; destroyed unfinished, it leaves nothing.
-        std::unique_ptr<VideoWriter> writer = openVideoWriter(out, width, height, fps);
-        for (int frame = 0; frame < frames; ++frame) {
-            const RenderControl control = controlOf(frame);
-            const Image image = CpuRenderer(designOf(frame)).render(settings, &control);
-            if (gInterrupted.load()) throw Cancelled();
-            writer->addFrame(image.rgb.data(), std::size_t(width) * 3);
-        }
-        progress.finish();
-        writer->finish();
-        return ExitOk;
-    }
-    TemporaryFolder folder(out);
-    for (int frame = 0; frame < frames; ++frame) {
-        const RenderControl control = controlOf(frame);
-        // renderToFile puts the frame's own design into the PNG.
-        renderToFile(designOf(frame), settings, folder.path() / frameName(frame), {}, &control);
-        if (gInterrupted.load()) throw Cancelled();
-    }
+    writeAnimation(genome, settings, out, frames, fps, &gInterrupted,
+                   [&progress](int frame, double within) { progress.update(frame, within); });
     progress.finish();
-    if (std::filesystem::exists(out, ec)) std::filesystem::remove(out, ec); // an empty folder, checked above
-    folder.commit();
     return ExitOk;
 }
 

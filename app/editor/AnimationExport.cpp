@@ -1,0 +1,193 @@
+// Export animation (AnimationExport.h).
+
+#include "editor/AnimationExport.h"
+
+#include "marbler/Animation.h"
+#include "marbler/Error.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace marbler::ui {
+
+QString animationExtension(AnimationFormat format) {
+    switch (format) {
+    case AnimationFormat::PngFrames: return {};
+    case AnimationFormat::Gif: return QStringLiteral("gif");
+    case AnimationFormat::WebP: return QStringLiteral("webp");
+    case AnimationFormat::Mp4: return QStringLiteral("mp4");
+    case AnimationFormat::WebM: return QStringLiteral("webm");
+    }
+    return {};
+}
+
+AnimationExportDialog::AnimationExportDialog(const Genome& design, const AnimationExportSettings& start, QWidget* parent)
+    : QDialog(parent), mFormat(new QComboBox(this)), mPath(new QLineEdit(this)), mWidth(new QSpinBox(this)),
+      mHeight(new QSpinBox(this)), mFrames(new QSpinBox(this)), mFps(new QDoubleSpinBox(this)), mSlice(start.slice) {
+    setObjectName(QStringLiteral("animationExportDialog"));
+    setWindowTitle(tr("Export animation"));
+    mFormat->setObjectName(QStringLiteral("animationFormat"));
+    mFormat->addItem(tr("PNG frames (a folder)"), int(AnimationFormat::PngFrames));
+    mFormat->addItem(tr("GIF"), int(AnimationFormat::Gif));
+    mFormat->addItem(tr("WebP (animated)"), int(AnimationFormat::WebP));
+    mFormat->addItem(tr("MP4 (H.264)"), int(AnimationFormat::Mp4));
+    mFormat->addItem(tr("WebM (VP9)"), int(AnimationFormat::WebM));
+    mFormat->setCurrentIndex(std::max(0, mFormat->findData(int(start.format))));
+    mFormat->setToolTip(tr("What to write: a folder of PNG frames (each carries the design it shows), an animated "
+                           "image or a video"));
+    mPath->setObjectName(QStringLiteral("animationPath"));
+    mPath->setText(start.path);
+    mPath->setToolTip(tr("The file to write, or for PNG frames a new or empty folder"));
+    auto* browseButton = new QPushButton(tr("&Browse…"), this);
+    browseButton->setToolTip(tr("Choose where to write the animation"));
+    mWidth->setObjectName(QStringLiteral("animationWidth"));
+    mHeight->setObjectName(QStringLiteral("animationHeight"));
+    for (QSpinBox* side : {mWidth, mHeight}) {
+        side->setRange(16, 8192);
+        side->setSuffix(tr(" px"));
+    }
+    mWidth->setToolTip(tr("Width of each frame in pixels"));
+    mHeight->setToolTip(tr("Height of each frame in pixels"));
+    mWidth->setValue(start.width);
+    const double aspect = design.size.y > 0 ? design.size.x / design.size.y : 1.0;
+    mHeight->setValue(std::max(16, int(std::lround(start.width / aspect))));
+    mFrames->setObjectName(QStringLiteral("animationFrames"));
+    mFrames->setRange(2, 100000);
+    mFrames->setValue(start.frames);
+    mFrames->setToolTip(tr("Number of frames: the first shows the bare bath, the last the whole design"));
+    mFps->setObjectName(QStringLiteral("animationFps"));
+    mFps->setRange(0.1, 1000.0);
+    mFps->setValue(start.fps);
+    mFps->setToolTip(tr("Frames a second of a video or animated image"));
+
+    auto* form = new QFormLayout(this);
+    form->addRow(tr("&Format:"), mFormat);
+    auto* pathRow = new QHBoxLayout;
+    pathRow->addWidget(mPath, 1);
+    pathRow->addWidget(browseButton);
+    form->addRow(tr("&Save to:"), pathRow);
+    auto* sizeRow = new QHBoxLayout;
+    sizeRow->addWidget(mWidth);
+    sizeRow->addWidget(mHeight);
+    form->addRow(tr("Si&ze:"), sizeRow);
+    form->addRow(tr("F&rames:"), mFrames);
+    form->addRow(tr("Frames a &second:"), mFps);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
+    form->addRow(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(browseButton, &QPushButton::clicked, this, &AnimationExportDialog::browse);
+    connect(mFormat, &QComboBox::currentIndexChanged, this, &AnimationExportDialog::formatChosen);
+}
+
+void AnimationExportDialog::formatChosen() {
+    // The path follows the format: its extension, or none for a folder of frames.
+    const auto format = AnimationFormat(mFormat->currentData().toInt());
+    QString path = mPath->text();
+    if (path.isEmpty()) return;
+    const QFileInfo info(path);
+    QString base = info.path() + QStringLiteral("/") + info.completeBaseName();
+    const QString ext = animationExtension(format);
+    mPath->setText(ext.isEmpty() ? base : base + QStringLiteral(".") + ext);
+}
+
+void AnimationExportDialog::browse() {
+    const auto format = AnimationFormat(mFormat->currentData().toInt());
+    QString chosen;
+    if (format == AnimationFormat::PngFrames)
+        chosen = QFileDialog::getExistingDirectory(this, tr("Folder for the PNG frames"), mPath->text());
+    else {
+        const QString ext = animationExtension(format);
+        chosen = QFileDialog::getSaveFileName(this, tr("Export animation"), mPath->text(),
+                                              tr("%1 files (*.%2)").arg(ext.toUpper(), ext));
+        if (!chosen.isEmpty() && QFileInfo(chosen).suffix().toLower() != ext) chosen += QStringLiteral(".") + ext;
+    }
+    if (!chosen.isEmpty()) mPath->setText(chosen);
+}
+
+AnimationExportSettings AnimationExportDialog::settings() const {
+    AnimationExportSettings s;
+    s.format = AnimationFormat(mFormat->currentData().toInt());
+    s.path = mPath->text();
+    s.width = mWidth->value();
+    s.height = mHeight->value();
+    s.frames = mFrames->value();
+    s.fps = mFps->value();
+    s.slice = mSlice;
+    return s;
+}
+
+AnimationExportJob::AnimationExportJob(QObject* parent) : QObject(parent) {}
+
+AnimationExportJob::~AnimationExportJob() {
+    if (mCancel) mCancel->store(true);
+    if (mThread.joinable()) mThread.join();
+}
+
+bool AnimationExportJob::start(const Genome& design, const AnimationExportSettings& settings) {
+    if (mRunning) return false;
+    if (mThread.joinable()) mThread.join();
+    mRunning = true;
+    mCancel = std::make_shared<std::atomic<bool>>(false);
+    RenderSettings render;
+    render.width = settings.width;
+    render.height = settings.height;
+    render.slice = settings.slice;
+    std::filesystem::path out = settings.path.toStdString();
+    const QString ext = animationExtension(settings.format);
+    if (!ext.isEmpty() && QFileInfo(settings.path).suffix().toLower() != ext) out += "." + ext.toStdString();
+    const bool frames = settings.format == AnimationFormat::PngFrames;
+    mThread = std::thread([this, design, render, out, frames, count = settings.frames, fps = settings.fps,
+                           cancel = mCancel] {
+        bool ok = false;
+        QString error;
+        try {
+            std::error_code ec;
+            if (std::filesystem::exists(out, ec)) {
+                const bool dir = std::filesystem::is_directory(out, ec);
+                if (frames ? !dir || !std::filesystem::is_empty(out, ec) : dir)
+                    throw InputError(out.string() + ": already exists; choose a new or empty folder for PNG frames");
+            }
+            auto last = std::make_shared<std::atomic<int>>(-1);
+            writeAnimation(design, render, out, count, fps, cancel.get(), [this, last, count](int frame, double within) {
+                const int permille = int((frame + within) / count * 1000.0);
+                if (last->exchange(permille) == permille) return;
+                QMetaObject::invokeMethod(this, [this, permille] { emit progress(permille / 1000.0); },
+                                          Qt::QueuedConnection);
+            });
+            ok = true;
+        } catch (const Cancelled&) {
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+        QMetaObject::invokeMethod(this, [this, ok, error] {
+            if (mThread.joinable()) mThread.join();
+            mRunning = false;
+            emit finished(ok, error);
+        }, Qt::QueuedConnection);
+    });
+    return true;
+}
+
+void AnimationExportJob::cancel() {
+    if (mCancel) mCancel->store(true);
+}
+
+} // namespace marbler::ui
+
+// The moc output here, not in marbler_ui's mocs_compilation: a test of the panels links only them.
+#include "moc_AnimationExport.cpp"

@@ -1,0 +1,85 @@
+#pragma once
+/// Export animation: the making of a design written as PNG frames, a GIF, an animated WebP, an
+/// MP4 or a WebM, by the same library code as `marbler animate` (Animation.h), off the GUI
+/// thread, with progress and cancel.
+
+#include "marbler/Genome.h"
+#include "marbler/Sampling.h"
+
+#include <QDialog>
+#include <QObject>
+#include <QString>
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <thread>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLineEdit;
+class QSpinBox;
+
+namespace marbler::ui {
+
+/// The formats of Export animation.
+enum class AnimationFormat { PngFrames, Gif, WebP, Mp4, WebM };
+
+/// What to write.
+struct AnimationExportSettings {
+    QString path;              ///< the file, or for PNG frames the folder (new or empty)
+    AnimationFormat format = AnimationFormat::Gif;
+    int width = 512, height = 512;
+    int frames = 100;          ///< at least 2
+    double fps = 25.0;
+    std::optional<Slice> slice; ///< the cross-section of a solid
+};
+
+/// The file extension of a format (empty for PNG frames).
+QString animationExtension(AnimationFormat format);
+
+/// The dialog of Export animation: format, path, size, frames and frame rate.
+class AnimationExportDialog : public QDialog {
+    Q_OBJECT
+public:
+    /// For `design` (its aspect sets the default height), starting from `start`.
+    AnimationExportDialog(const Genome& design, const AnimationExportSettings& start, QWidget* parent = nullptr);
+    /// The settings chosen.
+    AnimationExportSettings settings() const;
+
+private:
+    void formatChosen();
+    void browse();
+    QComboBox* mFormat;
+    QLineEdit* mPath;
+    QSpinBox *mWidth, *mHeight, *mFrames;
+    QDoubleSpinBox* mFps;
+    std::optional<Slice> mSlice;
+};
+
+/// Writes one animation on a thread of its own. Lives on the GUI thread; its signals arrive there.
+class AnimationExportJob : public QObject {
+    Q_OBJECT
+public:
+    explicit AnimationExportJob(QObject* parent = nullptr);
+    /// Cancels and waits for the thread.
+    ~AnimationExportJob() override;
+    /// Starts writing the making of `design`. False (and nothing started) while a job runs.
+    bool start(const Genome& design, const AnimationExportSettings& settings);
+    /// Stops the job; nothing is left at the path. finished(false, "") follows.
+    void cancel();
+    bool running() const { return mRunning; }
+
+signals:
+    /// Done so far, 0 to 1.
+    void progress(double fraction);
+    /// The job ended: written (`ok`), cancelled (not ok, empty error) or failed (the error).
+    void finished(bool ok, const QString& error);
+
+private:
+    std::thread mThread;
+    std::shared_ptr<std::atomic<bool>> mCancel;
+    bool mRunning = false;
+};
+
+} // namespace marbler::ui

@@ -1,0 +1,378 @@
+// The parameters of one step as widgets (ParamForm.h).
+
+#include "editor/ParamForm.h"
+
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPixmap>
+#include <QRegularExpression>
+#include <QSlider>
+#include <QSpinBox>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace marbler::ui {
+namespace {
+
+/// Slider positions: fine enough for a smooth drag, coarse enough to step with the keys.
+constexpr int SliderSteps = 1000;
+
+QString componentName(const ParamSpec& spec, int i, int count) {
+    if (spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction) {
+        static const char* axes[] = {"X", "Y", "Z"};
+        return QString::fromLatin1(axes[std::clamp(i, 0, 2)]);
+    }
+    if (spec.kind == ParamKind::Extent) return i == 0 ? QStringLiteral("X") : QStringLiteral("Y");
+    if (count == 2) return i == 0 ? QStringLiteral("1") : QStringLiteral("2");
+    return {};
+}
+
+bool hasSlider(ParamKind kind) {
+    return kind == ParamKind::Position || kind == ParamKind::Angle || kind == ParamKind::Length
+        || kind == ParamKind::Shift || kind == ParamKind::Phase;
+}
+
+bool isInteger(ParamKind kind) { return kind == ParamKind::Count; }
+
+glm::dvec3 unitOrZero(const glm::dvec3& v) {
+    const double length = glm::length(v);
+    return length > 1e-12 && std::isfinite(length) ? v / length : glm::dvec3(0.0);
+}
+
+/// Sets a component; a 3D axis, direction or normal is kept unit, and the normal orthogonal to
+/// the direction (what loading a file makes of them, so the design edited is the design saved).
+void applyComponent(const ParamSpec& spec, Operation& op, int dimension, int component, double value) {
+    setComponent(spec, op, component, value);
+    if (spec.kind != ParamKind::Direction || dimension != 3) return;
+    const auto params = toolSpec(op.tool).params(dimension);
+    const bool hasNormal = std::any_of(params.begin(), params.end(), [](const ParamSpec& p) { return p.field == ParamField::Normal; });
+    if (spec.field == ParamField::Axis) op.axis = unitOrZero(op.axis);
+    if (spec.field == ParamField::Direction) op.direction = unitOrZero(op.direction);
+    if (hasNormal && (spec.field == ParamField::Direction || spec.field == ParamField::Normal)) {
+        // Gram-Schmidt twice, as the loader does.
+        glm::dvec3 n = unitOrZero(op.normal);
+        for (int pass = 0; pass < 2; ++pass) n = unitOrZero(n - glm::dot(n, op.direction) * op.direction);
+        op.normal = n;
+    }
+}
+
+} // namespace
+
+/// The widgets of one parameter.
+struct ParamForm::Row {
+    const ParamSpec* spec = nullptr;
+    QWidget* box = nullptr;
+    std::vector<QDoubleSpinBox*> spins;
+    std::vector<QSpinBox*> counts;
+    std::vector<QSlider*> sliders;
+    QComboBox* combo = nullptr;
+    QLineEdit* text = nullptr;
+};
+
+ParamForm::ParamForm(QWidget* parent) : QWidget(parent), mLayout(new QFormLayout(this)) {
+    setObjectName(QStringLiteral("paramForm"));
+    setToolTip(tr("The parameters of the selected step"));
+}
+
+void ParamForm::clear() {
+    mHasStep = false;
+    for (Row* row : mRows) {
+        delete row->box;
+        delete row;
+    }
+    mRows.clear();
+    mShape.clear();
+    while (mLayout->rowCount() > 0) mLayout->removeRow(0);
+}
+
+void ParamForm::setStep(const Operation& op, int dimension, const Genome& design) {
+    const bool sameTool = mHasStep && op.tool == mOp.tool && dimension == mDimension;
+    mOp = op;
+    mDimension = dimension;
+    mSize = design.size;
+    const bool paletteChanged = design.palette != mPalette;
+    mPalette = design.palette;
+    std::vector<int> shape;
+    for (const ParamSpec& spec : toolSpec(op.tool).params(dimension))
+        shape.push_back(spec.kind == ParamKind::Teeth ? 0 : componentCount(spec, op, dimension));
+    if (sameTool && shape == mShape && !paletteChanged) {
+        refresh();
+        return;
+    }
+    clear();
+    mHasStep = true;
+    mShape = shape;
+    build();
+    refresh();
+}
+
+double ParamForm::sliderSpan(const ParamSpec& spec, int component, double& low) const {
+    const double side = std::max({mSize.x, mSize.y, mDimension == 3 ? mSize.z : 0.0});
+    switch (spec.kind) {
+    case ParamKind::Position: low = 0.0; return mSize[std::clamp(component, 0, 2)];
+    case ParamKind::Angle: low = -180.0; return 360.0;
+    case ParamKind::Phase: low = 0.0; return 360.0;
+    case ParamKind::Shift: low = -side; return 2.0 * side;
+    default: {
+        low = std::isfinite(spec.range.min) ? spec.range.min : 0.0;
+        const double high = std::isfinite(spec.range.max) ? std::min(spec.range.max, side) : side;
+        return std::max(high - low, 1e-9);
+    }
+    }
+}
+
+void ParamForm::build() {
+    const double side = std::max({mSize.x, mSize.y, mDimension == 3 ? mSize.z : 0.0});
+    for (const ParamSpec& spec : toolSpec(mOp.tool).params(mDimension)) {
+        auto* row = new Row;
+        row->spec = &spec;
+        row->box = new QWidget(this);
+        const QString key = QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size()));
+        row->box->setObjectName(QStringLiteral("param-") + key);
+        QString tip = QString::fromUtf8(spec.help.data(), qsizetype(spec.help.size()));
+        if (spec.kind == ParamKind::Choice)
+            tip += QStringLiteral(" (") + QString::fromStdString(spec.describeChoices()) + QStringLiteral(")");
+        else if (spec.kind != ParamKind::Color && (std::isfinite(spec.range.min) || std::isfinite(spec.range.max)))
+            tip += QStringLiteral(" (") + QString::fromStdString(spec.range.describe()) + QStringLiteral(")");
+        if (spec.version > 1) tip += tr(" [format version %1]").arg(spec.version);
+        row->box->setToolTip(tip);
+        auto* layout = new QHBoxLayout(row->box);
+        layout->setContentsMargins(0, 0, 0, 0);
+        const QString unit = QString::fromUtf8(spec.unit.data(), qsizetype(spec.unit.size()));
+
+        if (spec.kind == ParamKind::Color) {
+            row->combo = new QComboBox(row->box);
+            for (std::size_t i = 0; i < mPalette.size(); ++i) {
+                QPixmap swatch(16, 16);
+                swatch.fill(QColor(mPalette[i].r, mPalette[i].g, mPalette[i].b));
+                row->combo->addItem(QIcon(swatch), tr("Ink %1").arg(i + 1));
+            }
+            connect(row->combo, &QComboBox::currentIndexChanged, this, [this, row](int index) {
+                if (mUpdating || index < 0) return;
+                commitComponent(*row->spec, 0, index, false);
+            });
+        } else if (spec.kind == ParamKind::Choice) {
+            row->combo = new QComboBox(row->box);
+            for (std::string_view choice : spec.choices)
+                row->combo->addItem(QString::fromUtf8(choice.data(), qsizetype(choice.size())));
+            connect(row->combo, &QComboBox::currentIndexChanged, this, [this, row](int index) {
+                if (mUpdating || index < 0) return;
+                commitComponent(*row->spec, 0, index, false);
+            });
+        } else if (spec.kind == ParamKind::Teeth) {
+            row->text = new QLineEdit(row->box);
+            row->text->setPlaceholderText(tr("positions, increasing"));
+            connect(row->text, &QLineEdit::editingFinished, this, [this, row] {
+                if (mUpdating) return;
+                Operation op = mOp;
+                op.teeth.clear();
+                bool ok = true;
+                const QStringList words =
+                    row->text->text().split(QRegularExpression(QStringLiteral("[\\s,;]+")), Qt::SkipEmptyParts);
+                for (const QString& word : words) {
+                    op.teeth.push_back(word.toDouble(&ok));
+                    if (!ok) break;
+                }
+                if (ok && op.teeth != mOp.teeth && valid(op)) commitOperation(*row->spec, op, false);
+                else refreshRow(*row); // no valid list: show the teeth as they are
+            });
+        } else {
+            const int count = componentCount(spec, mOp, mDimension);
+            for (int i = 0; i < count; ++i) {
+                if (count > 1) layout->addWidget(new QLabel(componentName(spec, i, count), row->box));
+                if (isInteger(spec.kind)) {
+                    auto* spin = new QSpinBox(row->box);
+                    spin->setObjectName(QStringLiteral("edit-%1-%2").arg(key).arg(i));
+                    spin->setRange(std::isfinite(spec.range.min) ? int(std::ceil(spec.range.min)) : -1000000,
+                                   std::isfinite(spec.range.max) ? int(std::floor(spec.range.max)) : 1000000);
+                    spin->setKeyboardTracking(false);
+                    spin->setToolTip(tip);
+                    layout->addWidget(spin, 1);
+                    row->counts.push_back(spin);
+                    connect(spin, &QSpinBox::valueChanged, this, [this, row, i](int value) {
+                        if (!mUpdating) commitComponent(*row->spec, i, value, false);
+                    });
+                    continue;
+                }
+                auto* spin = new QDoubleSpinBox(row->box);
+                spin->setObjectName(QStringLiteral("edit-%1-%2").arg(key).arg(i));
+                const bool direction = spec.kind == ParamKind::Direction;
+                spin->setDecimals(direction ? 4 : 2);
+                const double wide = direction ? 1.0 : std::max(10.0 * side, 3600.0);
+                double low = std::isfinite(spec.range.min) ? spec.range.min : -wide;
+                if (spec.range.minOpen) low += direction ? 1e-4 : 0.01;
+                const double high = std::isfinite(spec.range.max) ? spec.range.max : wide;
+                spin->setRange(low, high);
+                spin->setSingleStep(direction ? 0.05 : spec.kind == ParamKind::Number ? 0.1 : 1.0);
+                if (!unit.isEmpty() && !direction) spin->setSuffix(QStringLiteral(" ") + unit);
+                spin->setKeyboardTracking(false);
+                spin->setToolTip(tip);
+                row->spins.push_back(spin);
+                connect(spin, &QDoubleSpinBox::valueChanged, this, [this, row, i](double value) {
+                    if (!mUpdating) commitComponent(*row->spec, i, value, false);
+                });
+                if (hasSlider(spec.kind)) {
+                    auto* slider = new QSlider(Qt::Horizontal, row->box);
+                    slider->setObjectName(QStringLiteral("slider-%1-%2").arg(key).arg(i));
+                    slider->setRange(0, SliderSteps);
+                    slider->setToolTip(tip + tr("\nDrag to see the change as you go"));
+                    layout->addWidget(slider, 2);
+                    row->sliders.push_back(slider);
+                    auto valueOf = [this, row, i](int position) {
+                        double lowValue = 0.0;
+                        const double span = sliderSpan(*row->spec, i, lowValue);
+                        return lowValue + span * position / SliderSteps;
+                    };
+                    connect(slider, &QSlider::valueChanged, this, [this, row, i, slider, valueOf](int position) {
+                        if (mUpdating) return;
+                        commitComponent(*row->spec, i, valueOf(position), slider->isSliderDown());
+                    });
+                    connect(slider, &QSlider::sliderReleased, this, [this, row, i, slider, valueOf] {
+                        if (!mUpdating) commitComponent(*row->spec, i, valueOf(slider->value()), false, true);
+                    });
+                }
+                layout->addWidget(spin, 1);
+            }
+        }
+        if (row->combo) {
+            row->combo->setObjectName(QStringLiteral("edit-%1-0").arg(key));
+            row->combo->setToolTip(tip);
+            layout->addWidget(row->combo, 1);
+        }
+        if (row->text) {
+            row->text->setObjectName(QStringLiteral("edit-%1-0").arg(key));
+            row->text->setToolTip(tip);
+            layout->addWidget(row->text, 1);
+        }
+        QString label = key;
+        if (!unit.isEmpty() && spec.kind != ParamKind::Color && spec.kind != ParamKind::Choice)
+            label += QStringLiteral(" (") + unit + QStringLiteral(")");
+        auto* caption = new QLabel(label, this);
+        caption->setToolTip(tip);
+        caption->setBuddy(row->box);
+        mLayout->addRow(caption, row->box);
+        mRows.push_back(row);
+    }
+}
+
+void ParamForm::refresh() {
+    for (const Row* row : mRows) refreshRow(*row);
+}
+
+void ParamForm::refreshRow(const Row& row) {
+    const bool was = mUpdating;
+    mUpdating = true;
+    const ParamSpec& spec = *row.spec;
+    if (row.combo) row.combo->setCurrentIndex(int(getComponent(spec, mOp, 0)));
+    if (row.text) {
+        QStringList words;
+        for (double t : mOp.teeth) words << QString::number(t, 'g', 10);
+        row.text->setText(words.join(QStringLiteral(" ")));
+    }
+    for (std::size_t i = 0; i < row.counts.size(); ++i) row.counts[i]->setValue(int(getComponent(spec, mOp, int(i))));
+    for (std::size_t i = 0; i < row.spins.size(); ++i) {
+        const double value = getComponent(spec, mOp, int(i));
+        QDoubleSpinBox* spin = row.spins[i];
+        // A value beyond the box's span (a file may hold one) widens the box rather than being cut.
+        if (value > spin->maximum()) spin->setMaximum(value);
+        if (value < spin->minimum()) spin->setMinimum(value);
+        spin->setValue(value);
+        if (i < row.sliders.size() && !row.sliders[i]->isSliderDown()) {
+            double low = 0.0;
+            const double span = sliderSpan(spec, int(i), low);
+            row.sliders[i]->setValue(int(std::lround(std::clamp((value - low) / span, 0.0, 1.0) * SliderSteps)));
+        }
+    }
+    mUpdating = was;
+}
+
+bool ParamForm::valid(const Operation& op) const {
+    Genome g;
+    g.dimension = mDimension;
+    g.size = mSize;
+    g.palette = mPalette;
+    if (g.palette.empty()) g.palette.push_back(Color{});
+    g.operations.push_back(op);
+    try {
+        validateGenome(g, "step");
+        return true;
+    } catch (const Error&) {
+        return false;
+    }
+}
+
+void ParamForm::commitComponent(const ParamSpec& spec, int component, double value, bool dragging, bool endsDrag) {
+    if (!mHasStep || !std::isfinite(value)) return;
+    const double old = getComponent(spec, mOp, component);
+    // Into the parameter's own range first.
+    if (value > spec.range.max) value = spec.range.max;
+    if (spec.range.minOpen ? value <= spec.range.min : value < spec.range.min)
+        value = spec.range.minOpen ? std::max(spec.range.min + 1e-6, std::nextafter(spec.range.min, INFINITY))
+                                   : spec.range.min;
+    if (spec.kind == ParamKind::Color || spec.kind == ParamKind::Choice || spec.kind == ParamKind::Count)
+        value = std::round(value);
+    Operation op = mOp;
+    applyComponent(spec, op, mDimension, component, value);
+    if (!valid(op)) {
+        // A rule between parameters (a flow's steps, a direction's length): the valid value
+        // nearest the one asked for, between it and the old value, which is valid.
+        double good = old, bad = value;
+        for (int i = 0; i < 60; ++i) {
+            double mid = 0.5 * (good + bad);
+            if (spec.kind == ParamKind::Count) mid = good < bad ? std::floor(mid) : std::ceil(mid);
+            Operation probe = mOp;
+            applyComponent(spec, probe, mDimension, component, mid);
+            if (valid(probe)) good = mid;
+            else bad = mid;
+            if (mid == good && std::abs(good - bad) <= (spec.kind == ParamKind::Count ? 1.0 : 1e-9 * (1.0 + std::abs(bad))))
+                break;
+        }
+        op = mOp;
+        applyComponent(spec, op, mDimension, component, good);
+        if (!valid(op)) {
+            refresh();
+            return;
+        }
+    }
+    commitOperation(spec, op, dragging, endsDrag);
+}
+
+void ParamForm::commitOperation(const ParamSpec& spec, const Operation& op, bool dragging, bool endsDrag) {
+    const bool shapeChanged = spec.kind == ParamKind::Choice && op.shape != mOp.shape;
+    if (op == mOp && !endsDrag) {
+        // Nothing changed (a value brought back to where it was): show it, say nothing.
+        refresh();
+        return;
+    }
+    mOp = op;
+    // Show the values kept (brought into range, a direction made unit, its normal turned with it).
+    refresh();
+    emit edited(mOp, QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size())), dragging);
+    if (shapeChanged) {
+        // A 3D wave's pairs have one or two numbers by its shape: rebuild once this signal is done.
+        QMetaObject::invokeMethod(this, [this] {
+            Genome g;
+            g.dimension = mDimension;
+            g.size = mSize;
+            g.palette = mPalette;
+            const Operation keep = mOp;
+            mHasStep = false;
+            setStep(keep, mDimension, g);
+        }, Qt::QueuedConnection);
+    }
+}
+
+} // namespace marbler::ui
+
+// The moc output here, not in marbler_ui's mocs_compilation: a test of the panels links only them.
+#include "moc_ParamForm.cpp"

@@ -1,0 +1,66 @@
+#pragma once
+/// The parameters of one step, as widgets built from the tool registry (Params.h): spin boxes
+/// with units and ranges, sliders for positions, lengths, angles, phases and shifts, the palette
+/// for an ink's colour, a list for a choice, two boxes for an extent, a text field for a
+/// stretch's teeth. Every value it emits is valid: a value outside the parameter's range, or
+/// one that breaks a rule between parameters (a flow's steps, a normal parallel to the
+/// direction), is brought back to the nearest valid value first. A 3D axis, direction or normal
+/// is kept unit, and the normal orthogonal to the direction, as loading a file makes them (so
+/// editing a direction may turn the normal with it).
+
+#include "marbler/Genome.h"
+#include "marbler/Params.h"
+
+#include <QString>
+#include <QWidget>
+
+#include <vector>
+
+class QFormLayout;
+
+namespace marbler::ui {
+
+/// The form of one step's parameters (see the file comment).
+class ParamForm : public QWidget {
+    Q_OBJECT
+public:
+    explicit ParamForm(QWidget* parent = nullptr);
+
+    /// Shows the parameters of `op`, a step of a design of `dimension`; `design` gives the
+    /// palette (the colour list) and the size (the sliders' spans). Keeps the widgets (and a
+    /// slider being dragged) when the tool and the shape of the form stay the same.
+    void setStep(const Operation& op, int dimension, const Genome& design);
+    /// Shows no step.
+    void clear();
+    /// The step as last set or edited.
+    const Operation& step() const { return mOp; }
+
+signals:
+    /// The user changed parameter `key`: `op` is the step with it changed. `dragging` while a
+    /// slider is held (render coarsely, merge into one undo step); the edit that ends a drag,
+    /// and every other edit, has it false. An edit that changes nothing is not emitted, except
+    /// the one that ends a drag.
+    void edited(const marbler::Operation& op, const QString& key, bool dragging);
+
+private:
+    struct Row;
+    void build();
+    void refresh();
+    void refreshRow(const Row& row);
+    bool valid(const Operation& op) const;
+    void commitComponent(const ParamSpec& spec, int component, double value, bool dragging, bool endsDrag = false);
+    void commitOperation(const ParamSpec& spec, const Operation& op, bool dragging, bool endsDrag = false);
+    double sliderSpan(const ParamSpec& spec, int component, double& low) const;
+
+    Operation mOp;
+    int mDimension = 2;
+    glm::dvec3 mSize{1000.0};
+    std::vector<Color> mPalette;
+    bool mHasStep = false;
+    bool mUpdating = false;
+    std::vector<int> mShape; ///< the component count of each parameter the widgets were built for
+    std::vector<Row*> mRows;
+    QFormLayout* mLayout;
+};
+
+} // namespace marbler::ui

@@ -1,0 +1,69 @@
+#pragma once
+/// The editor's list of steps: one row a step of the design (the entries of `initial`, then those
+/// of `operations`, numbered as Growth.h), each with a mute checkbox; drag a row to reorder,
+/// Ctrl+D duplicates, Del deletes, M mutes (also in the context menu). The list knows no
+/// document: it shows rows and asks for changes by signals; the editor window applies them and
+/// sets the rows again.
+
+#include <QString>
+#include <QWidget>
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+class QListWidget;
+class QListWidgetItem;
+
+namespace marbler::ui {
+
+/// What one row shows.
+struct StepRow {
+    QString name;         ///< e.g. "Drop (ink 2)"
+    bool muted = false;   ///< left out of the rendered design
+    bool initial = false; ///< an entry of `initial` (an ink laid before the strokes)
+    QString detail;       ///< a short line of its main values, shown as the row's tooltip
+};
+
+class StepListView;
+
+/// The list of steps (see the file comment).
+class StepList : public QWidget {
+    Q_OBJECT
+public:
+    explicit StepList(QWidget* parent = nullptr);
+
+    /// Shows these rows, keeping the current row where it still exists.
+    void setRows(const std::vector<StepRow>& rows);
+    /// The rows shown.
+    std::size_t rowCount() const;
+    /// Selects a row (nullopt: none) without emitting currentChanged.
+    void setCurrent(std::optional<std::size_t> row);
+    /// The selected row.
+    std::optional<std::size_t> current() const;
+    /// The list widget inside (for tests and the window's focus handling).
+    QListWidget* list() const;
+
+    /// Asks to move row `from` to `to` (what a drag does).
+    void requestMove(std::size_t from, std::size_t to);
+
+signals:
+    /// The user selected another row (nullopt: none).
+    void currentChanged(std::optional<std::size_t> row);
+    /// A drag asks to move step `from` so that it becomes step `to`.
+    void moveRequested(std::size_t from, std::size_t to);
+    /// The user muted (true) or unmuted a step.
+    void mutedToggled(std::size_t row, bool muted);
+    /// Ctrl+D or the context menu asks for a copy of the step after it.
+    void duplicateRequested(std::size_t row);
+    /// Del or the context menu asks to delete the step.
+    void deleteRequested(std::size_t row);
+
+private:
+    void showMenu(const QPoint& pos);
+    void toggleMuteOfCurrent();
+    StepListView* mList;
+    bool mUpdating = false;
+};
+
+} // namespace marbler::ui

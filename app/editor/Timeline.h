@@ -1,0 +1,74 @@
+#pragma once
+/// The editor's timeline: the making of the design (Growth.h) on a slider from 0 (the bare bath)
+/// to n (every step), Play that grows the steps one after another, a compare mode with a second
+/// marker (two states side by side), and Export animation.
+
+#include <QWidget>
+
+#include <cstddef>
+
+class QCheckBox;
+class QElapsedTimer;
+class QLabel;
+class QSlider;
+class QTimer;
+class QToolButton;
+
+namespace marbler::ui {
+
+/// The timeline (see the file comment).
+class Timeline : public QWidget {
+    Q_OBJECT
+public:
+    explicit Timeline(QWidget* parent = nullptr);
+    ~Timeline() override;
+
+    /// The design has `n` steps: the slider spans 0..n. At the end before, at the end after.
+    void setStepCount(std::size_t n);
+    std::size_t stepCount() const { return mSteps; }
+    /// What is shown: 0..n, fractional while playing or scrubbing.
+    double growth() const { return mGrowth; }
+    /// Whether the whole design is shown.
+    bool atEnd() const { return mGrowth >= double(mSteps); }
+    /// Grows the steps smoothly from the current point (from 0 when at the end) to n, about 0.6 s a
+    /// step and at most about 12 s in all, then stops.
+    void play();
+    /// Stops playing where it is.
+    void stop();
+    bool playing() const;
+    /// Shows growth `g` (clamped to 0..n); emits growthChanged when it changes.
+    void setGrowth(double g);
+    /// Whether two states are compared side by side (the second marker is shown).
+    bool comparing() const;
+    /// The growth the second marker shows.
+    double compareGrowth() const { return mCompare; }
+    /// Turns compare mode on or off.
+    void setComparing(bool on);
+    /// Moves the second marker.
+    void setCompareGrowth(double g);
+
+signals:
+    /// The growth shown changed (scrubbing, playing).
+    void growthChanged(double g);
+    /// Compare mode changed, or its second marker moved.
+    void compareChanged(bool on, double otherGrowth);
+    /// The user asked to export the making of the design as an animation.
+    void exportAnimationRequested();
+
+private:
+    void tick();
+    void showGrowth();
+    std::size_t mSteps = 0;
+    double mGrowth = 0.0, mCompare = 0.0;
+    double mPlayFrom = 0.0, mRate = 1.0; // growth at the start of play, steps a second
+    QSlider* mSlider;
+    QSlider* mCompareSlider;
+    QToolButton* mPlay;
+    QCheckBox* mCompareBox;
+    QLabel* mLabel;
+    QTimer* mTimer;
+    QElapsedTimer* mClock;
+    bool mUpdating = false;
+};
+
+} // namespace marbler::ui
