@@ -68,6 +68,7 @@ public:
     bool start(const Genome& design, const AnimationExportSettings& settings);
     /// Stops the job; nothing is left at the path. finished(false, "") follows.
     void cancel();
+    /// Whether a job is writing (until finished is emitted).
     bool running() const { return mRunning; }
 
 signals:

@@ -38,8 +38,7 @@ Timeline::Timeline(QWidget* parent)
     mPlay->setObjectName(QStringLiteral("playButton"));
     mPlay->setText(tr("Play"));
     mPlay->setCheckable(true);
-    mPlay->setShortcut(QKeySequence(Qt::Key_Space));
-    mPlay->setToolTip(tr("Play the making of the design, each step growing in (Space); again to stop"));
+    mPlay->setToolTip(tr("Play the making of the design, each step growing in; again to stop"));
     mCompareBox->setObjectName(QStringLiteral("compareBox"));
     mCompareBox->setToolTip(tr("Compare two states of the making side by side: the second slider picks the other"));
     auto* exportButton = new QToolButton(this);

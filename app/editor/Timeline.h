@@ -25,6 +25,7 @@ public:
 
     /// The design has `n` steps: the slider spans 0..n. At the end before, at the end after.
     void setStepCount(std::size_t n);
+    /// The design's steps (the slider's right end).
     std::size_t stepCount() const { return mSteps; }
     /// What is shown: 0..n, fractional while playing or scrubbing.
     double growth() const { return mGrowth; }
@@ -35,6 +36,7 @@ public:
     void play();
     /// Stops playing where it is.
     void stop();
+    /// Whether Play is running.
     bool playing() const;
     /// Shows growth `g` (clamped to 0..n); emits growthChanged when it changes.
     void setGrowth(double g);
