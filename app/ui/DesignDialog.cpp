@@ -463,9 +463,10 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     copy->setToolTip(tr("Put the design's genome on the clipboard as text, to paste into the workbench or "
                         "anywhere else (%1)")
                          .arg(QKeySequence(QKeySequence::Copy).toString(QKeySequence::NativeText)));
-    auto* editor = new QPushButton(tr("Open in editor"), this);
-    editor->setEnabled(false);
-    editor->setToolTip(tr("The editor arrives in a later version"));
+    auto* editor = new QPushButton(tr("Open in e&ditor"), this);
+    editor->setObjectName(QStringLiteral("openInEditor"));
+    editor->setToolTip(tr("Edit this design step by step in the editor (Ctrl+Shift+D)"));
+    connect(editor, &QPushButton::clicked, this, [this] { emit openInEditorRequested(mGenome); });
     auto* close = new QPushButton(tr("Close"), this);
     connect(save, &QPushButton::clicked, this, [this] {
         if (const QString file = saveGenomeWithDialog(this, mGenome); !file.isEmpty()) emit fileSaved(file);
@@ -486,6 +487,7 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     addKey(QStringLiteral("exportImageAction"), QKeySequence(Qt::CTRL | Qt::Key_E), exportButton);
     addKey(QStringLiteral("copyGenomeAction"), QKeySequence::Copy, copy);
     addKey(QStringLiteral("repeatSwatchAction"), QKeySequence(Qt::Key_R), mSwatchButton);
+    addKey(QStringLiteral("openInEditorAction"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D), editor);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
     auto* buttons = new QHBoxLayout;

@@ -1,7 +1,7 @@
 #pragma once
 /// One design shown large: zoom and pan a flat design (each view re-rendered sharp at its
 /// scale), zoom and turn a solid one, save its genome, export an image at a chosen size, and
-/// (later) open it in the editor.
+/// open it in the editor.
 
 #include "marbler/Genome.h"
 #include "marbler/Sampling.h"
@@ -120,6 +120,8 @@ signals:
     /// An export ended: written (the file is complete), or cancelled or failed (`error` says
     /// why for a failure; nothing is left behind either way).
     void exportFinished(const QString& file, bool written, const QString& error);
+    /// "Open in editor": the workbench opens the design in an editor window.
+    void openInEditorRequested(const marbler::Genome& design);
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;

@@ -6,6 +6,10 @@
 #include "ui/SessionStore.h"
 #include "ui/StartDialog.h"
 #include "ui/WorkbenchWindow.h"
+#include "editor/EditorWindow.h"
+#include "editor/Recovery.h"
+#include "marbler/Error.h"
+#include "marbler/GenomeImage.h"
 
 #include <QApplication>
 #include <QFile>
@@ -63,6 +67,41 @@ void takeScreenshot(WorkbenchWindow& window, RenderService& service, const QStri
     // Let the window settle at its size (the resize debounce) before breeding.
     QObject::connect(&service, &RenderService::backendReady, &window,
                      [breedThenGrab] { QTimer::singleShot(500, breedThenGrab); }, Qt::SingleShotConnection);
+}
+
+/// MARBLER_EDITOR_SCREENSHOT=FILE with a design file: open the design in the editor with its
+/// first stroke selected (its parameters in the form, its handles on the canvas), wait for every
+/// final image, save a picture of the editor window and quit. Makes the README's pictures of
+/// the editor from the real window.
+void takeEditorScreenshot(WorkbenchWindow& window, RenderService& service, const QString& design, const QString& file,
+                          int* status) {
+    auto open = [&window, &service, design, file, status] {
+        Genome g;
+        try {
+            g = loadDesign(design.toStdString());
+        } catch (const Error& e) {
+            std::cerr << "marbler: " << e.what() << "\n";
+            *status = 1;
+            QApplication::quit();
+            return;
+        }
+        EditorWindow* editor = window.openEditor(g, design);
+        editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+        editor->resize(1440, 900);
+        if (!g.operations.empty()) editor->selectStep(g.initial.size());
+        auto grab = [editor, &service, file, status] {
+            if (!service.idle()) return;
+            if (!editor->grab().save(file)) {
+                std::cerr << "marbler: cannot write " << file.toStdString() << "\n";
+                *status = 1;
+            }
+            QApplication::quit();
+        };
+        // Grab once the renders settle (a short wait lets the docks take their sizes first).
+        QObject::connect(&service, &RenderService::becameIdle, editor, [grab] { QTimer::singleShot(700, grab); });
+    };
+    QObject::connect(&service, &RenderService::backendReady, &window, [open] { QTimer::singleShot(300, open); },
+                     Qt::SingleShotConnection);
 }
 
 /// Seconds since this process started (the kernel's start time, so the dynamic loading before
@@ -210,9 +249,13 @@ int runWorkbench(int argc, char** argv) {
     QGuiApplication::setDesktopFileName(QStringLiteral("marbler"));
 
     // The hidden options can also come from the environment: MARBLER_SCREENSHOT=FILE,
-    // MARBLER_SEED=N, MARBLER_SOLID=1 (or 0 for flat), MARBLER_NO_START_DIALOG=1.
+    // MARBLER_SEED=N, MARBLER_SOLID=1 (or 0 for flat), MARBLER_NO_START_DIALOG=1, and
+    // MARBLER_EDITOR_SCREENSHOT=FILE with a design file (takeEditorScreenshot).
     QString screenshotFile = QString::fromStdString(args.screenshot);
     if (screenshotFile.isEmpty()) screenshotFile = qEnvironmentVariable("MARBLER_SCREENSHOT");
+    // The editor's picture: like the window's, a fresh session with no questions.
+    const QString editorShot = args.files.empty() ? QString() : qEnvironmentVariable("MARBLER_EDITOR_SCREENSHOT");
+    if (!editorShot.isEmpty()) screenshotFile = editorShot;
     std::optional<unsigned long long> seed = args.seed;
     if (!seed && !qEnvironmentVariableIsEmpty("MARBLER_SEED")) seed = qEnvironmentVariable("MARBLER_SEED").toULongLong();
     StartOptions start;
@@ -228,7 +271,9 @@ int runWorkbench(int argc, char** argv) {
     WorkbenchWindow window(&service);
     if (seed) window.model()->setSessionSeed(*seed);
     int status = 0;
-    if (!screenshotFile.isEmpty()) {
+    if (!editorShot.isEmpty()) {
+        takeEditorScreenshot(window, service, QString::fromStdString(args.files.front()), editorShot, &status);
+    } else if (!screenshotFile.isEmpty()) {
         window.resize(1280, 900);
         takeScreenshot(window, service, screenshotFile, &status);
     }
@@ -236,6 +281,9 @@ int runWorkbench(int argc, char** argv) {
     window.show();
     // Asked over the shown window, so the question sits on the workbench it sets up.
     startSession(window, start);
+    // Designs an editor left unsaved when Marbler stopped are offered back, after the session.
+    if (screenshotFile.isEmpty() && qEnvironmentVariableIntValue("MARBLER_EXIT_WHEN_SHOWN") != 1)
+        QTimer::singleShot(0, &window, [&window] { window.offerRecoveries(defaultRecoveryFolder()); });
     const int result = QApplication::exec();
     return status != 0 ? status : result;
 }

@@ -7,6 +7,7 @@
 #include "marbler/ImageFormats.h"
 #include "marbler/Paper.h"
 #include "ui/DesignCell.h"
+#include "editor/EditorWindow.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
 #include "ui/GenomeClipboard.h"
@@ -241,6 +242,23 @@ void WorkbenchWindow::buildActions() {
     open->setShortcut(QKeySequence::Open);
     open->setStatusTip(tr("Load genome files, or PNG and TIFF images Marbler wrote, into the selected cells, then free "
                           "ones; asks before replacing designs"));
+    QMenu* newDesign = fileMenu->addMenu(tr("New &design"));
+    newDesign->setObjectName(QStringLiteral("newDesignMenu"));
+    newDesign->setToolTipsVisible(true);
+    newDesign->addAction(tr("Blank &flat bath"), this, [this] { openEditor(blankDesign(2)); })
+        ->setToolTip(tr("Make a flat design by hand in the editor, from a bare bath"));
+    newDesign->addAction(tr("Blank &solid block"), this, [this] { openEditor(blankDesign(3)); })
+        ->setToolTip(tr("Make a solid design by hand in the editor, from a bare block"));
+    QAction* openInEditor = fileMenu->addAction(tr("Open in &editor…"), this, [this] {
+        const QString file = QFileDialog::getOpenFileName(this, tr("Open a design in the editor"), QString(), openFilter());
+        if (file.isEmpty()) return;
+        try {
+            openEditor(loadDesign(file.toStdString()), file);
+        } catch (const Error& e) {
+            reportError(this, tr("Cannot open the design"), QString::fromStdString(e.what()));
+        }
+    });
+    openInEditor->setStatusTip(tr("Edit a genome file, or an image carrying a genome, step by step"));
     QAction* newRandom = fileMenu->addAction(tr("&New random population"), this, [this] {
         newRandomPopulation(mDimension->currentData().toInt());
     });
@@ -655,6 +673,12 @@ void WorkbenchWindow::readSettings() {
 }
 
 void WorkbenchWindow::closeEvent(QCloseEvent* event) {
+    // Each open editor asks about its unsaved changes first; one kept open keeps Marbler open.
+    for (EditorWindow* editor : findChildren<EditorWindow*>(Qt::FindDirectChildrenOnly))
+        if (editor->isVisible() && !editor->close()) {
+            event->ignore();
+            return;
+        }
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
@@ -1139,6 +1163,9 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
     menu.addAction(mModel->isSelected(index) ? tr("Deselect parent") : tr("Select as parent"), this,
                    [this, index] { mModel->toggleSelected(index); });
     menu.addAction(tr("Open large…"), this, [this, index] { openDesign(index); });
+    menu.addAction(tr("Open in editor"), this, [this, index] {
+        if (const Genome* design = mModel->cell(index)) openEditor(*design);
+    });
     menu.addAction(tr("Keep as favourite"), this, [this, index] { keepFavourite(index); })
         ->setShortcut(QKeySequence(Qt::Key_F));
     menu.addAction(tr("Save design…"), this, [this, index] { saveDesign(index); });
@@ -1236,6 +1263,7 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
         if (shown && genomeId(*shown) == id) mModel->setCellView(index, angle);
     });
     connect(dialog, &DesignDialog::fileSaved, this, &WorkbenchWindow::noteSavedFile);
+    connect(dialog, &DesignDialog::openInEditorRequested, this, [this](const Genome& design) { openEditor(design); });
     connect(dialog, &DesignDialog::genomeCopied, this, [this](const QString& name) {
         statusBar()->showMessage(tr("Copied %1 to the clipboard as genome text").arg(name), 5000);
     });

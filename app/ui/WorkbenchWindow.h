@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 
 class QAction;
 class QComboBox;
@@ -36,6 +37,7 @@ namespace marbler::ui {
 
 class DesignCell;
 class DesignDialog;
+class EditorWindow;
 class RenderService;
 class SavedFileNotice;
 class SessionsDialog;
@@ -98,6 +100,17 @@ public:
     std::vector<int> marblePicture(const QString& file);
     std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1,
                                  const QString& description = {});
+    /// Opens a design in an editor window of its own ("Open in editor" on a cell and in the
+    /// large view, File ▸ New design, File ▸ Open in editor); `file` is the file it was read
+    /// from, if any. The editor's Send to grid places its design here as an opened design
+    /// (placeOpened), to breed from; its saved files show on the status bar.
+    EditorWindow* openEditor(const Genome& design, const QString& file = {});
+    /// Offers, one by one, the designs editors left unsaved when Marbler stopped (Recovery.h:
+    /// the autosaves in `folder`). Each one accepted opens in an editor exactly as it was,
+    /// its changes still unsaved; each one answered, either way, is taken out of the folder. `accept` answers instead of the user
+    /// (tests). Returns the editors opened.
+    std::vector<EditorWindow*> offerRecoveries(const QString& folder,
+                                               std::function<bool(const QString& name)> accept = {});
     /// File ▸ New marbled paper: the A4 paper `marbler paper --seed SEED` makes (Paper.h) goes
     /// into the grid as an opened design does (placeOpened), a starting point to breed from.
     /// Returns the cells filled. The menu's action (object name "newPaperAction") draws a seed.
@@ -212,6 +225,8 @@ signals:
     void renderingFinished();
     /// A design was opened large (tests close the dialog).
     void designOpened(DesignDialog* dialog);
+    /// An editor window was opened (tests drive it).
+    void editorOpened(EditorWindow* editor);
 
 protected:
     void closeEvent(QCloseEvent* event) override;

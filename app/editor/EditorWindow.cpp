@@ -1,0 +1,781 @@
+// The editor window: the document wired to the canvas, the panels and the history.
+
+#include "editor/EditorWindow.h"
+
+#include "editor/AnimationExport.h"
+#include "editor/EditorCanvas.h"
+#include "editor/PaletteEditor.h"
+#include "editor/ParamForm.h"
+#include "editor/Recovery.h"
+#include "editor/StepList.h"
+#include "editor/Timeline.h"
+#include "editor/ToolOptions.h"
+#include "marbler/Error.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeImage.h"
+#include "marbler/Growth.h"
+#include "marbler/Params.h"
+#include "ui/DesignDialog.h"
+#include "ui/ErrorReport.h"
+#include "ui/PopulationModel.h"
+#include "ui/RenderService.h"
+#include "ui/StartDialog.h"
+
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QProgressDialog>
+#include <QRandomGenerator>
+#include <QSettings>
+#include <QSlider>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QUndoView>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace marbler::ui {
+
+namespace {
+
+const QString RecentKey = QStringLiteral("editor/recentFiles");
+constexpr int MaxRecent = 10;
+
+/// Keys of the solid object views, apart from the grid's, the large views' and the canvases'.
+std::uint64_t nextObjectKey() {
+    static std::uint64_t next = 3'000'000;
+    return next++;
+}
+
+QString designFilter() {
+    return EditorWindow::tr("Designs (*.marble.json *.json *.png *.tif *.tiff);;All files (*)");
+}
+
+QString nameOf(const Genome& design) {
+    const LineageInfo info = lineageOf(design);
+    return info.name.isEmpty() ? EditorWindow::tr("Untitled design") : info.name;
+}
+
+} // namespace
+
+Genome blankDesign(int dimension) {
+    Genome g;
+    g.dimension = dimension == 3 ? 3 : 2;
+    g.palette = {Color{0x1f, 0x4e, 0x79}, Color{0xc8, 0x55, 0x3d}, Color{0x2a, 0x9d, 0x8f}};
+    g.meta["name"] = dimension == 3 ? "Untitled solid" : "Untitled design";
+    return g;
+}
+
+// ---- EditorWindow -------------------------------------------------------------------------
+
+EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString& file, QWidget* parent,
+                           const QString& recoveryFolder)
+    : QMainWindow(parent), mRenderer(renderer) {
+    setAttribute(Qt::WA_DeleteOnClose);
+    setObjectName(QStringLiteral("editorWindow"));
+    mDocument = new EditorDocument(std::move(design), this);
+    if (!file.isEmpty()) {
+        mDocument->setFileName(file);
+        addRecentFile(file);
+    }
+    const QString folder = recoveryFolder == QStringLiteral("<default>") ? defaultRecoveryFolder() : recoveryFolder;
+    if (!folder.isEmpty()) mAutosave = std::make_unique<EditorAutosave>(mDocument, folder);
+
+    const int dimension = mDocument->design().dimension;
+    if (dimension == 3) mSlice = Slice{2, mDocument->design().size.z / 2.0};
+
+    mCanvas = new EditorCanvas(renderer, this);
+    mCanvas->setObjectName(QStringLiteral("editorCanvas"));
+    mCompare = new EditorCanvas(renderer, this);
+    mCompare->setObjectName(QStringLiteral("compareCanvas"));
+    mCompare->setTool(EditorTool::Pick);
+    mCompare->hide();
+    mCanvases = new QSplitter(Qt::Horizontal, this);
+    mCanvases->addWidget(mCanvas);
+    mCanvases->addWidget(mCompare);
+    if (dimension == 3) {
+        mObject = new SolidObjectView(renderer, this);
+        mObject->setObjectName(QStringLiteral("objectView"));
+        mCanvases->addWidget(mObject);
+        mCanvas->setSlice(mSlice);
+        mCompare->setSlice(mSlice);
+    }
+    setCentralWidget(mCanvases);
+
+    buildDocks();
+    buildMenus();
+    wireDocument();
+
+    mToolSettings.color = 0;
+    mCanvas->setToolSettings(mToolSettings);
+    setTool(EditorTool::Drop);
+    stepsChanged();
+    designChanged();
+    updateTitle();
+    resize(1280, 860);
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("editor/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("editor/state")).toByteArray());
+}
+
+EditorWindow::~EditorWindow() = default;
+
+void EditorWindow::buildDocks() {
+    const int dimension = mDocument->design().dimension;
+
+    auto* stepsPanel = new QWidget(this);
+    auto* stepsLayout = new QVBoxLayout(stepsPanel);
+    stepsLayout->setContentsMargins(4, 4, 4, 4);
+    mSteps = new StepList(stepsPanel);
+    mSteps->setObjectName(QStringLiteral("stepList"));
+    mForm = new ParamForm(stepsPanel);
+    mForm->setObjectName(QStringLiteral("paramForm"));
+    auto* split = new QSplitter(Qt::Vertical, stepsPanel);
+    split->addWidget(mSteps);
+    split->addWidget(mForm);
+    stepsLayout->addWidget(split);
+    auto* stepsDock = new QDockWidget(tr("Steps"), this);
+    stepsDock->setObjectName(QStringLiteral("stepsDock"));
+    stepsDock->setWidget(stepsPanel);
+    addDockWidget(Qt::RightDockWidgetArea, stepsDock);
+
+    mPalette = new PaletteEditor(this);
+    mPalette->setObjectName(QStringLiteral("paletteEditor"));
+    auto* paletteDock = new QDockWidget(tr("Inks"), this);
+    paletteDock->setObjectName(QStringLiteral("paletteDock"));
+    paletteDock->setWidget(mPalette);
+    addDockWidget(Qt::LeftDockWidgetArea, paletteDock);
+
+    mToolOptions = new ToolOptions(this);
+    mToolOptions->setObjectName(QStringLiteral("toolOptions"));
+    auto* toolDock = new QDockWidget(tr("Tool"), this);
+    toolDock->setObjectName(QStringLiteral("toolDock"));
+    auto* toolPanel = new QWidget(this);
+    auto* toolLayout = new QVBoxLayout(toolPanel);
+    toolLayout->setContentsMargins(4, 4, 4, 4);
+    toolLayout->addWidget(mToolOptions);
+    if (dimension == 3) {
+        // The cross-section: its axis and where along it.
+        auto* row = new QHBoxLayout;
+        row->addWidget(new QLabel(tr("Section"), toolPanel));
+        mSliceAxis = new QComboBox(toolPanel);
+        mSliceAxis->setObjectName(QStringLiteral("sliceAxis"));
+        mSliceAxis->addItems({tr("x"), tr("y"), tr("z")});
+        mSliceAxis->setCurrentIndex(mSlice.axis);
+        mSliceAxis->setToolTip(tr("The axis the cross-section is cut across; clicks on it place the 3D tools"));
+        row->addWidget(mSliceAxis);
+        toolLayout->addLayout(row);
+        mSlicePosition = new QSlider(Qt::Horizontal, toolPanel);
+        mSlicePosition->setObjectName(QStringLiteral("slicePosition"));
+        mSlicePosition->setRange(0, 1000);
+        mSlicePosition->setValue(500);
+        mSlicePosition->setToolTip(tr("Where along its axis the cross-section is cut (PgUp / PgDn move it)"));
+        toolLayout->addWidget(mSlicePosition);
+        const auto sliceChanged = [this] {
+            const glm::dvec3 size = mDocument->design().size;
+            const int axis = mSliceAxis->currentIndex();
+            setSlice(Slice{axis, size[axis] * mSlicePosition->value() / 1000.0});
+        };
+        connect(mSliceAxis, &QComboBox::currentIndexChanged, this, sliceChanged);
+        connect(mSlicePosition, &QSlider::valueChanged, this, sliceChanged);
+        auto* meshRow = new QHBoxLayout;
+        meshRow->addWidget(new QLabel(tr("Object"), toolPanel));
+        auto* mesh = new QComboBox(toolPanel);
+        mesh->setObjectName(QStringLiteral("objectMesh"));
+        mesh->addItems(meshNames());
+        mesh->addItem(tr("Mesh file…"));
+        mesh->setToolTip(tr("The object the design is shown on (drag the object to turn it)"));
+        meshRow->addWidget(mesh);
+        toolLayout->addLayout(meshRow);
+        connect(mesh, &QComboBox::activated, this, [this, mesh](int index) {
+            if (index < int(meshNames().size())) {
+                mObject->setMesh(mesh->itemText(index));
+                return;
+            }
+            const QString file = QFileDialog::getOpenFileName(this, tr("Show the design on a mesh"), QString(),
+                                                              tr("Meshes (*.obj *.ply *.stl *.off *.gltf *.glb);;All files (*)"));
+            if (file.isEmpty()) return;
+            mObject->setMesh(file);
+        });
+    }
+    toolLayout->addStretch();
+    toolDock->setWidget(toolPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, toolDock);
+
+    mHistory = new QUndoView(mDocument->undoStack(), this);
+    mHistory->setObjectName(QStringLiteral("historyView"));
+    mHistory->setEmptyLabel(tr("Opened"));
+    mHistory->setToolTip(tr("Every edit; click one to go back (or forward) to it"));
+    auto* historyDock = new QDockWidget(tr("History"), this);
+    historyDock->setObjectName(QStringLiteral("historyDock"));
+    historyDock->setWidget(mHistory);
+    addDockWidget(Qt::RightDockWidgetArea, historyDock);
+
+    mTimeline = new Timeline(this);
+    mTimeline->setObjectName(QStringLiteral("timeline"));
+    auto* timelineDock = new QDockWidget(tr("Timeline"), this);
+    timelineDock->setObjectName(QStringLiteral("timelineDock"));
+    timelineDock->setWidget(mTimeline);
+    addDockWidget(Qt::BottomDockWidgetArea, timelineDock);
+
+    mStatus = new QLabel(this);
+    statusBar()->addPermanentWidget(mStatus);
+}
+
+void EditorWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QMenu* newMenu = file->addMenu(tr("&New design"));
+    newMenu->addAction(tr("Blank &flat bath"), this, [this] { emit openEditorRequested(blankDesign(2), {}); })
+        ->setShortcut(QKeySequence::New);
+    newMenu->addAction(tr("Blank &solid block"), this, [this] { emit openEditorRequested(blankDesign(3), {}); });
+    newMenu->addAction(tr("&Random design"), this, &EditorWindow::startFromRandom);
+    newMenu->addAction(tr("From a &picture…"), this, &EditorWindow::startFromSourceImage)
+        ->setToolTip(tr("A flat design whose bath is a picture (its source)"));
+    file->addAction(tr("&Open…"), this, &EditorWindow::openFileDialog)->setShortcut(QKeySequence::Open);
+    mRecentMenu = file->addMenu(tr("Open &recent"));
+    connect(mRecentMenu, &QMenu::aboutToShow, this, &EditorWindow::fillRecentMenu);
+    file->addSeparator();
+    file->addAction(tr("&Save"), this, &EditorWindow::save)->setShortcut(QKeySequence::Save);
+    file->addAction(tr("Save &as…"), this, &EditorWindow::saveAs)->setShortcut(QKeySequence::SaveAs);
+    file->addAction(tr("&Export image…"), this, &EditorWindow::exportImage)->setShortcut(QKeySequence(tr("Ctrl+E")));
+    file->addAction(tr("Export &animation…"), this, &EditorWindow::exportAnimation)
+        ->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
+    file->addSeparator();
+    QAction* send = file->addAction(tr("Send to &grid"), this, [this] {
+        emit sendToGrid(mDocument->renderedDesign());
+        statusBar()->showMessage(tr("Sent to the breeding grid"), 4000);
+    });
+    send->setShortcut(QKeySequence(tr("Ctrl+G")));
+    send->setToolTip(tr("Put this design into the breeding grid as a new design to breed from"));
+    file->addSeparator();
+    file->addAction(tr("&Close"), this, &QWidget::close)->setShortcut(QKeySequence::Close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = mDocument->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = mDocument->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    edit->addAction(tr("&Duplicate step"), this, [this] {
+        if (mSelected) selectStep(mDocument->duplicateStep(*mSelected));
+    })->setShortcut(QKeySequence(tr("Ctrl+D")));
+    edit->addAction(tr("De&lete step"), this, [this] {
+        if (!mSelected) return;
+        mDocument->removeStep(*mSelected);
+        selectStep(std::nullopt);
+    })->setShortcut(QKeySequence::Delete);
+    edit->addAction(tr("&Mute step"), this, [this] {
+        if (mSelected) mDocument->setMuted(*mSelected, !mDocument->isMuted(*mSelected));
+    })->setShortcut(QKeySequence(tr("M")));
+
+    QMenu* tools = menuBar()->addMenu(tr("&Tools"));
+    QToolBar* bar = addToolBar(tr("Tools"));
+    bar->setObjectName(QStringLiteral("toolsBar"));
+    mTools = new QActionGroup(this);
+    const int dimension = mDocument->design().dimension;
+    for (int i = int(EditorTool::Pick); i <= int(EditorTool::Flow); ++i) {
+        const auto t = EditorTool(i);
+        if (!toolAvailable(t, dimension)) continue;
+        QAction* a = tools->addAction(toolName(t));
+        a->setCheckable(true);
+        a->setData(int(t));
+        a->setToolTip(ui::toolTip(t));
+        a->setShortcut(toolShortcut(t));
+        a->setObjectName(QStringLiteral("tool-") + QString::fromUtf8(toolId(t).data(), qsizetype(toolId(t).size())));
+        mTools->addAction(a);
+        bar->addAction(a);
+        connect(a, &QAction::triggered, this, [this, t] { setTool(t); });
+    }
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(tr("&Fit"), this, [this] { mCanvas->fitView(); })
+        ->setShortcut(QKeySequence(tr("0")));
+    view->addAction(tr("&Compare two states"), this, [this] { mTimeline->setComparing(!mTimeline->comparing()); })
+        ->setShortcut(QKeySequence(tr("Ctrl+K")));
+    view->addAction(tr("&Play the making"), this, [this] { mTimeline->playing() ? mTimeline->stop() : mTimeline->play(); })
+        ->setShortcut(QKeySequence(Qt::Key_P));
+}
+
+void EditorWindow::wireDocument() {
+    connect(mDocument, &EditorDocument::changed, this, &EditorWindow::designChanged);
+    connect(mDocument, &EditorDocument::stepsChanged, this, &EditorWindow::stepsChanged);
+    connect(mDocument, &EditorDocument::modifiedChanged, this, &EditorWindow::updateTitle);
+    connect(mDocument, &EditorDocument::fileNameChanged, this, &EditorWindow::updateTitle);
+
+    // Gestures: one drag, one step.
+    connect(mCanvas, &EditorCanvas::stepsMade, this, [this](const std::vector<Operation>& ops, const QString& text) {
+        if (ops.empty()) return;
+        if (ops.size() == 1) {
+            selectStep(mDocument->addStep(ops.front()));
+        } else {
+            mDocument->addSteps(ops, text);
+            selectStep(std::nullopt);
+        }
+    });
+    connect(mCanvas, &EditorCanvas::handleDragged, this,
+            [this](std::size_t rendered, const Operation& op, bool final) {
+                const auto step = documentIndex(rendered);
+                if (!step) return;
+                mCanvas->setDragging(!final);
+                mDocument->setStep(*step, op, mergeFor(!final));
+            });
+    connect(mCanvas, &EditorCanvas::inkPicked, this, [this](int color, std::optional<std::size_t> rendered) {
+        if (color >= 0) mPalette->setCurrentInk(color);
+        if (rendered) selectStep(documentIndex(*rendered));
+        statusBar()->showMessage(color >= 0 ? tr("Ink %1 picked").arg(color + 1) : tr("The bare bath"), 3000);
+    });
+
+    // The list and the form.
+    connect(mSteps, &StepList::currentChanged, this, [this](std::optional<std::size_t> i) {
+        if (i != mSelected) selectStep(i);
+    });
+    connect(mSteps, &StepList::moveRequested, this, [this](std::size_t from, std::size_t to) {
+        if (mDocument->moveStep(from, to)) selectStep(to);
+    });
+    connect(mSteps, &StepList::mutedToggled, mDocument, &EditorDocument::setMuted);
+    connect(mSteps, &StepList::duplicateRequested, this, [this](std::size_t i) { selectStep(mDocument->duplicateStep(i)); });
+    connect(mSteps, &StepList::deleteRequested, this, [this](std::size_t i) {
+        mDocument->removeStep(i);
+        selectStep(std::nullopt);
+    });
+    connect(mForm, &ParamForm::edited, this, [this](const Operation& op, const QString&, bool dragging) {
+        if (!mSelected) return;
+        mCanvas->setDragging(dragging);
+        mFormEditing = true;
+        mDocument->setStep(*mSelected, op, mergeFor(dragging));
+        mFormEditing = false;
+    });
+
+    // Inks.
+    connect(mPalette, &PaletteEditor::colorChanged, this, [this](int index, Color c, bool dragging) {
+        mCanvas->setDragging(dragging);
+        mDocument->setPaletteColor(index, c, mergeFor(dragging));
+    });
+    connect(mPalette, &PaletteEditor::backgroundChanged, this, [this](Color c, bool dragging) {
+        mCanvas->setDragging(dragging);
+        mDocument->setBackground(c, mergeFor(dragging));
+    });
+    connect(mPalette, &PaletteEditor::bleedChanged, this, [this](double bleed, bool dragging) {
+        mCanvas->setDragging(dragging);
+        mDocument->setBleed(bleed, mergeFor(dragging));
+    });
+    connect(mPalette, &PaletteEditor::inkAdded, this, [this](Color c) {
+        const int index = mDocument->addPaletteColor(c);
+        if (index < 0)
+            statusBar()->showMessage(tr("A design holds at most %1 inks").arg(int(MaxPaletteSize)), 5000);
+        else
+            mPalette->setCurrentInk(index);
+    });
+    connect(mPalette, &PaletteEditor::currentInkChanged, this, [this](int index) {
+        mToolSettings.color = index;
+        mToolOptions->setSettings(mToolSettings);
+        mCanvas->setToolSettings(mToolSettings);
+    });
+    connect(mToolOptions, &ToolOptions::settingsChanged, this, [this](const ToolSettings& s) {
+        mToolSettings = s;
+        mCanvas->setToolSettings(s);
+    });
+
+    // The timeline.
+    connect(mTimeline, &Timeline::growthChanged, this, [this](double) { showShown(); });
+    connect(mTimeline, &Timeline::compareChanged, this, [this](bool on, double) {
+        mCompare->setVisible(on);
+        showShown();
+    });
+    connect(mTimeline, &Timeline::exportAnimationRequested, this, &EditorWindow::exportAnimation);
+}
+
+int EditorWindow::mergeFor(bool dragging) {
+    if (dragging) {
+        if (!mDragActive) {
+            mDragActive = true;
+            mMergeId = mNextMergeId++;
+        }
+        return mMergeId;
+    }
+    if (mDragActive) {
+        mDragActive = false; // the release closes the drag's step
+        return mMergeId;
+    }
+    return -1;
+}
+
+std::optional<std::size_t> EditorWindow::documentIndex(std::size_t rendered) const {
+    std::size_t seen = 0;
+    for (std::size_t i = 0; i < mDocument->stepCount(); ++i) {
+        if (mDocument->isMuted(i)) continue;
+        if (seen == rendered) return i;
+        ++seen;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::size_t> EditorWindow::renderedIndex(std::size_t step) const {
+    if (step >= mDocument->stepCount() || mDocument->isMuted(step)) return std::nullopt;
+    std::size_t rendered = 0;
+    for (std::size_t i = 0; i < step; ++i)
+        if (!mDocument->isMuted(i)) ++rendered;
+    return rendered;
+}
+
+Genome EditorWindow::shownDesign() const {
+    Genome rendered = mDocument->renderedDesign();
+    if (mTimeline->atEnd()) return rendered;
+    const double g = std::clamp(mTimeline->growth(), 0.0, double(stepCount(rendered)));
+    return designAtGrowth(rendered, g);
+}
+
+void EditorWindow::showShown() {
+    mCanvas->setDesign(shownDesign());
+    if (mTimeline->comparing()) {
+        const Genome rendered = mDocument->renderedDesign();
+        const double g = std::clamp(mTimeline->compareGrowth(), 0.0, double(stepCount(rendered)));
+        mCompare->setDesign(designAtGrowth(rendered, g));
+    }
+    if (mObject) mObject->setDesign(shownDesign());
+}
+
+void EditorWindow::designChanged() {
+    const Genome& design = mDocument->design();
+    mTimeline->setStepCount(stepCount(mDocument->renderedDesign()));
+    showShown();
+    mPalette->setDesign(design);
+    mToolOptions->setPalette(design.palette);
+    if (!mFormEditing) refreshForm();
+    // Keep the step list's details (a changed parameter shows in its row).
+    if (!mFormEditing && !mDragActive) stepsChanged();
+    updateTitle();
+}
+
+void EditorWindow::stepsChanged() {
+    std::vector<StepRow> rows;
+    rows.reserve(mDocument->stepCount());
+    for (std::size_t i = 0; i < mDocument->stepCount(); ++i) {
+        StepRow row;
+        row.name = mDocument->stepName(i);
+        row.muted = mDocument->isMuted(i);
+        row.initial = mDocument->isInitial(i);
+        rows.push_back(row);
+    }
+    mSteps->setRows(rows);
+    if (mSelected && *mSelected >= mDocument->stepCount()) mSelected.reset();
+    mSteps->setCurrent(mSelected);
+    mTimeline->setStepCount(stepCount(mDocument->renderedDesign()));
+    mStatus->setText(tr("%n step(s)", "", int(mDocument->stepCount())));
+}
+
+void EditorWindow::refreshForm() {
+    if (!mSelected || *mSelected >= mDocument->stepCount()) {
+        mForm->clear();
+        mCanvas->setHandlesFor(std::nullopt);
+        return;
+    }
+    mForm->setStep(mDocument->step(*mSelected), mDocument->design().dimension, mDocument->design());
+    mCanvas->setHandlesFor(renderedIndex(*mSelected));
+}
+
+void EditorWindow::selectStep(std::optional<std::size_t> step) {
+    if (step && *step >= mDocument->stepCount()) step.reset();
+    mSelected = step;
+    mSteps->setCurrent(step);
+    refreshForm();
+}
+
+void EditorWindow::setTool(EditorTool tool) {
+    mCanvas->setTool(tool);
+    mToolOptions->setTool(tool);
+    mToolOptions->setSettings(mToolSettings);
+    for (QAction* a : mTools->actions())
+        if (a->data().toInt() == int(tool)) a->setChecked(true);
+    statusBar()->showMessage(ui::toolTip(tool), 4000);
+}
+
+EditorTool EditorWindow::tool() const { return mCanvas->tool(); }
+
+void EditorWindow::setSlice(const Slice& slice) {
+    mSlice = slice;
+    mCanvas->setSlice(slice);
+    mCompare->setSlice(slice);
+}
+
+void EditorWindow::updateTitle() {
+    const QString file = mDocument->fileName();
+    const QString name = file.isEmpty() ? nameOf(mDocument->design()) : QFileInfo(file).fileName();
+    setWindowTitle(tr("%1[*] — Marbler editor").arg(name));
+    setWindowModified(mDocument->isModified());
+}
+
+// ---- files ----------------------------------------------------------------------------------
+
+bool EditorWindow::save() {
+    if (mDocument->fileName().isEmpty()) return saveAs();
+    return saveTo(mDocument->fileName());
+}
+
+bool EditorWindow::saveAs() {
+    const QString folder = QSettings().value(QStringLiteral("files/saveDir")).toString();
+    const QString suggested = mDocument->fileName().isEmpty()
+                                  ? suggestedFile(mDocument->renderedDesign(), folder, QStringLiteral(".marble.json"))
+                                  : mDocument->fileName();
+    const QString file = askSaveFile(this, tr("Save design"), suggested, tr("Marbler designs (*.marble.json)"));
+    if (file.isEmpty()) return false;
+    QSettings().setValue(QStringLiteral("files/saveDir"), QFileInfo(file).absolutePath());
+    return saveTo(file);
+}
+
+bool EditorWindow::saveTo(const QString& file) {
+    QString error;
+    if (!mDocument->saveAs(file, &error)) {
+        reportError(this, tr("Cannot save the design"), error);
+        return false;
+    }
+    addRecentFile(file);
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(file)), 5000);
+    emit fileSaved(file);
+    return true;
+}
+
+QStringList EditorWindow::recentFiles() { return QSettings().value(RecentKey).toStringList(); }
+
+void EditorWindow::addRecentFile(const QString& file) {
+    QStringList files = recentFiles();
+    const QString path = QFileInfo(file).absoluteFilePath();
+    files.removeAll(path);
+    files.prepend(path);
+    while (files.size() > MaxRecent) files.removeLast();
+    QSettings().setValue(RecentKey, files);
+}
+
+void EditorWindow::fillRecentMenu() {
+    mRecentMenu->clear();
+    const QStringList files = recentFiles();
+    for (const QString& f : files) {
+        QAction* a = mRecentMenu->addAction(QFileInfo(f).fileName(), this, [this, f] {
+            try {
+                emit openEditorRequested(loadDesign(f.toStdString()), f);
+            } catch (const Error& e) {
+                reportError(this, tr("Cannot open the design"), QString::fromStdString(e.what()));
+            }
+        });
+        a->setToolTip(QDir::toNativeSeparators(f));
+        a->setEnabled(QFileInfo::exists(f));
+    }
+    if (files.isEmpty()) mRecentMenu->addAction(tr("No recent designs"))->setEnabled(false);
+}
+
+void EditorWindow::openFileDialog() {
+    const QString file = QFileDialog::getOpenFileName(this, tr("Open a design"), QString(), designFilter());
+    if (file.isEmpty()) return;
+    try {
+        emit openEditorRequested(loadDesign(file.toStdString()), file);
+    } catch (const Error& e) {
+        reportError(this, tr("Cannot open the design"), QString::fromStdString(e.what()));
+    }
+}
+
+void EditorWindow::startFromRandom() {
+    Genome g = randomGenome(QRandomGenerator::global()->generate64(), mDocument->design().dimension);
+    emit openEditorRequested(g, {});
+}
+
+void EditorWindow::startFromSourceImage() {
+    if (mDocument->design().dimension != 2) {
+        statusBar()->showMessage(tr("Only a flat design has a picture for its bath"), 5000);
+        return;
+    }
+    const QString image = QFileDialog::getOpenFileName(this, tr("A picture for the bath"), QString(),
+                                                       tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.webp *.bmp)"));
+    if (image.isEmpty()) return;
+    Genome g = mDocument->design();
+    const QFileInfo info(image);
+    // The picture is named by its full path, beside which the design's folder is set, so the
+    // design renders now and saves with a path relative to wherever it is saved.
+    g.source = SourceImage{info.absoluteFilePath().toStdString()};
+    g.baseDirectory = info.absolutePath().toStdString();
+    g.allowExternalSource = true;
+    mDocument->replaceDesign(g, tr("Picture %1 as the bath").arg(info.fileName()));
+}
+
+void EditorWindow::exportImage() {
+    // The large view exports at print size, in vector form and on objects; it opens on the design.
+    auto* dialog = new DesignDialog(mDocument->renderedDesign(), mRenderer,
+                                    mObject ? mObject->mesh() : QStringLiteral("vase"), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &DesignDialog::fileSaved, this, &EditorWindow::fileSaved);
+    dialog->show();
+}
+
+void EditorWindow::exportAnimation() {
+    if (mAnimationJob && mAnimationJob->running()) {
+        statusBar()->showMessage(tr("An animation is being written already"), 4000);
+        return;
+    }
+    const Genome design = mDocument->renderedDesign();
+    AnimationExportSettings start;
+    const QString folder = QSettings().value(QStringLiteral("files/exportDir")).toString();
+    start.path = suggestedFile(design, folder, QStringLiteral(".gif"));
+    if (design.dimension == 3) start.slice = mSlice;
+    AnimationExportDialog dialog(design, start, this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const AnimationExportSettings settings = dialog.settings();
+    QSettings().setValue(QStringLiteral("files/exportDir"), QFileInfo(settings.path).absolutePath());
+    if (!mAnimationJob) mAnimationJob = new AnimationExportJob(this);
+    auto* progress = new QProgressDialog(tr("Writing the making of the design…"), tr("Cancel"), 0, 1000, this);
+    progress->setObjectName(QStringLiteral("animationProgress"));
+    progress->setWindowModality(Qt::WindowModal);
+    progress->setMinimumDuration(300);
+    progress->setAutoClose(false);
+    progress->setAutoReset(false);
+    connect(mAnimationJob, &AnimationExportJob::progress, progress,
+            [progress](double f) { progress->setValue(int(std::lround(f * 1000.0))); });
+    connect(progress, &QProgressDialog::canceled, mAnimationJob, &AnimationExportJob::cancel);
+    connect(mAnimationJob, &AnimationExportJob::finished, progress,
+            [this, progress, path = settings.path](bool ok, const QString& error) {
+                // Closing a progress dialog says "cancelled": let go of the job first.
+                QObject::disconnect(progress, nullptr, mAnimationJob, nullptr);
+                QObject::disconnect(mAnimationJob, nullptr, progress, nullptr);
+                progress->close();
+                progress->deleteLater();
+                if (ok) {
+                    statusBar()->showMessage(tr("Wrote %1").arg(QDir::toNativeSeparators(path)), 5000);
+                    emit fileSaved(path);
+                } else if (!error.isEmpty()) {
+                    reportError(this, tr("Cannot write the animation"), error);
+                } else {
+                    statusBar()->showMessage(tr("Animation cancelled; nothing was written"), 4000);
+                }
+            });
+    if (!mAnimationJob->start(design, settings)) {
+        progress->deleteLater();
+        statusBar()->showMessage(tr("An animation is being written already"), 4000);
+    }
+}
+
+bool EditorWindow::maybeKeepChanges() {
+    if (!mDocument->isModified()) return true;
+    UnsavedAnswer answer;
+    if (mUnsavedAnswer) {
+        answer = *mUnsavedAnswer;
+    } else {
+        const auto button = QMessageBox::warning(
+            this, tr("Unsaved changes"),
+            tr("“%1” has changes that are not saved. Save them?").arg(nameOf(mDocument->design())),
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+        answer = button == QMessageBox::Save      ? UnsavedAnswer::Save
+                 : button == QMessageBox::Discard ? UnsavedAnswer::Discard
+                                                  : UnsavedAnswer::Cancel;
+    }
+    switch (answer) {
+    case UnsavedAnswer::Save: return save();
+    case UnsavedAnswer::Discard: return true;
+    case UnsavedAnswer::Cancel: return false;
+    }
+    return false;
+}
+
+void EditorWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeKeepChanges()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("editor/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("editor/state"), saveState());
+    if (mAutosave) mAutosave->discard(); // a normal close: nothing to recover
+    event->accept();
+}
+
+// ---- SolidObjectView -------------------------------------------------------------------------
+
+SolidObjectView::SolidObjectView(RenderService* renderer, QWidget* parent)
+    : QWidget(parent), mRenderer(renderer), mKey(nextObjectKey()) {
+    setMinimumSize(200, 200);
+    setToolTip(tr("The design on its object: drag to turn it"));
+    connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool) {
+        if (key != mKey) return;
+        mImage = image;
+        update();
+    });
+}
+
+SolidObjectView::~SolidObjectView() { mRenderer->cancel(mKey); }
+
+void SolidObjectView::setDesign(const Genome& design) {
+    // The design's own angle at first; after that the angle the user turned it to.
+    if (mDesign.dimension != 3) mAngle = viewAngleOf(design);
+    mDesign = design;
+    request(false);
+}
+
+void SolidObjectView::setMesh(const QString& mesh) {
+    mMesh = mesh;
+    request(false);
+}
+
+void SolidObjectView::request(bool previewOnly) {
+    if (mDesign.dimension != 3 || width() < 8 || height() < 8) return;
+    RenderRequest r;
+    r.genome = mDesign;
+    setViewAngle(r.genome, mAngle);
+    const qreal dpr = devicePixelRatioF();
+    const int side = int(std::min(width(), height()) * dpr);
+    r.size = QSize(side, side);
+    r.mesh = mMesh;
+    r.yaw = mAngle.yaw;
+    r.pitch = mAngle.pitch;
+    r.previewOnly = previewOnly;
+    mRenderer->request(mKey, std::move(r));
+}
+
+void SolidObjectView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), palette().window());
+    if (mImage.isNull()) {
+        p.drawText(rect(), Qt::AlignCenter, tr("Rendering…"));
+        return;
+    }
+    QSizeF size = QSizeF(mImage.size()) / devicePixelRatioF();
+    size.scale(QSizeF(this->size()), Qt::KeepAspectRatio);
+    const QRectF target((width() - size.width()) / 2, (height() - size.height()) / 2, size.width(), size.height());
+    p.setRenderHint(QPainter::SmoothPixmapTransform);
+    p.drawImage(target, mImage);
+}
+
+void SolidObjectView::resizeEvent(QResizeEvent*) { request(false); }
+
+void SolidObjectView::mousePressEvent(QMouseEvent* event) {
+    mTurning = true;
+    mLast = event->position();
+}
+
+void SolidObjectView::mouseMoveEvent(QMouseEvent* event) {
+    if (!mTurning) return;
+    const QPointF d = event->position() - mLast;
+    mLast = event->position();
+    mAngle = mAngle.dragged(d.x(), d.y());
+    request(true);
+}
+
+void SolidObjectView::mouseReleaseEvent(QMouseEvent*) {
+    if (!mTurning) return;
+    mTurning = false;
+    request(false);
+}
+
+} // namespace marbler::ui

@@ -1,0 +1,202 @@
+#pragma once
+/// The manual editor: one design, made and refined step by step. The canvas in the middle shows
+/// the design live (re-rendered at any zoom, coarse first, never on the GUI thread); the mouse
+/// tools add steps to it; the step list, the parameter form and the canvas's handles edit any
+/// step, however far back; the palette recolours; the history lists every edit (QUndoView) and
+/// the timeline scrubs, plays and compares the design's making. A solid design shows the same
+/// canvas as a movable cross-section (where clicks place the 3D tools) beside the design on its
+/// object.
+///
+/// Every edit goes through EditorDocument, so undo and redo are exact; the design autosaves to
+/// a recovery file (Recovery.h) that the next start offers after a crash.
+
+#include "editor/EditorDocument.h"
+#include "editor/Gestures.h"
+#include "marbler/Genome.h"
+#include "marbler/Sampling.h"
+#include "ui/SavedFiles.h"
+#include "ui/ViewController.h"
+
+#include <QImage>
+#include <QMainWindow>
+#include <QString>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+class QAction;
+class QActionGroup;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QMenu;
+class QSlider;
+class QSplitter;
+class QUndoView;
+
+namespace marbler::ui {
+
+class AnimationExportJob;
+class EditorAutosave;
+class EditorCanvas;
+class ParamForm;
+class PaletteEditor;
+class RenderService;
+class StepList;
+class Timeline;
+class ToolOptions;
+class SolidObjectView;
+
+/// A fresh design to start from: a blank bath of the default size and background with a
+/// three-ink palette (flat or solid).
+Genome blankDesign(int dimension);
+
+class EditorWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    /// Opens `design` (read from `file` when given; empty: a design not saved yet). The render
+    /// service is shared with the workbench and must outlive the window. `recoveryFolder` is
+    /// where the autosave goes (defaultRecoveryFolder(); empty: no autosave).
+    EditorWindow(Genome design, RenderService* renderer, const QString& file = {}, QWidget* parent = nullptr,
+                 const QString& recoveryFolder = QStringLiteral("<default>"));
+    ~EditorWindow() override;
+
+    EditorDocument* document() const { return mDocument; }
+    EditorCanvas* canvas() const { return mCanvas; }
+    /// The second canvas shown while the timeline compares two states.
+    EditorCanvas* compareCanvas() const { return mCompare; }
+    StepList* stepList() const { return mSteps; }
+    ParamForm* paramForm() const { return mForm; }
+    PaletteEditor* paletteEditor() const { return mPalette; }
+    Timeline* timeline() const { return mTimeline; }
+    QUndoView* historyView() const { return mHistory; }
+    ToolOptions* toolOptions() const { return mToolOptions; }
+    EditorAutosave* autosave() const { return mAutosave.get(); }
+
+    /// The design the canvas shows now: the rendered design, or its state at the timeline's
+    /// point while the timeline is not at the end.
+    Genome shownDesign() const;
+    /// The step selected in the list (document numbering).
+    std::optional<std::size_t> selectedStep() const { return mSelected; }
+    void selectStep(std::optional<std::size_t> step);
+    void setTool(EditorTool tool);
+    EditorTool tool() const;
+    /// Solids: the cross-section the canvas shows and where clicks place the 3D tools.
+    Slice slice() const { return mSlice; }
+    void setSlice(const Slice& slice);
+
+    /// Saves to the document's file, asking for one when it has none; errors are reported.
+    bool save();
+    /// Asks for a file (the design's name in the folder used last; askSaveFile, which tests
+    /// replace) and saves there.
+    bool saveAs();
+    /// Saves to `file` atomically; errors are reported. Returns success.
+    bool saveTo(const QString& file);
+    /// What closing with unsaved changes does when the question cannot be asked (tests):
+    /// unset asks the user.
+    enum class UnsavedAnswer { Save, Discard, Cancel };
+    void setUnsavedAnswer(std::optional<UnsavedAnswer> answer) { mUnsavedAnswer = answer; }
+
+    /// The files opened or saved in the editor, newest first (QSettings editor/recentFiles).
+    static QStringList recentFiles();
+    static void addRecentFile(const QString& file);
+
+signals:
+    /// "Send to grid": the design goes into the breeding grid as a new design to breed from.
+    void sendToGrid(const marbler::Genome& design);
+    /// A file was written (the workbench's status bar says where).
+    void fileSaved(const QString& file);
+    /// File ▸ New design / Open…: the workbench opens another editor.
+    void openEditorRequested(const marbler::Genome& design, const QString& file);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void buildMenus();
+    void buildDocks();
+    void wireDocument();
+    /// Whether the window may close or its design be left: asks about unsaved changes.
+    bool maybeKeepChanges();
+    void updateTitle();
+    void designChanged();
+    void stepsChanged();
+    void showShown();
+    void refreshForm();
+    /// The document step of a rendered (unmuted) step and back.
+    std::optional<std::size_t> documentIndex(std::size_t rendered) const;
+    std::optional<std::size_t> renderedIndex(std::size_t step) const;
+    /// The merge id of an edit: one id from the press of a drag to its release.
+    int mergeFor(bool dragging);
+    void openFileDialog();
+    void fillRecentMenu();
+    void startFromRandom();
+    void startFromSourceImage();
+    void exportAnimation();
+    void exportImage();
+
+    EditorDocument* mDocument = nullptr;
+    RenderService* mRenderer;
+    std::unique_ptr<EditorAutosave> mAutosave;
+    EditorCanvas* mCanvas = nullptr;
+    EditorCanvas* mCompare = nullptr;
+    QSplitter* mCanvases = nullptr;
+    StepList* mSteps = nullptr;
+    ParamForm* mForm = nullptr;
+    PaletteEditor* mPalette = nullptr;
+    Timeline* mTimeline = nullptr;
+    QUndoView* mHistory = nullptr;
+    ToolOptions* mToolOptions = nullptr;
+    SolidObjectView* mObject = nullptr;
+    AnimationExportJob* mAnimationJob = nullptr; ///< Export animation's writer, made on first use
+    QComboBox* mSliceAxis = nullptr;
+    QSlider* mSlicePosition = nullptr;
+    QActionGroup* mTools = nullptr;
+    QMenu* mRecentMenu = nullptr;
+    QLabel* mStatus = nullptr;
+    ToolSettings mToolSettings;
+    Slice mSlice{2, 0.0};
+    std::optional<std::size_t> mSelected;
+    bool mFormEditing = false; ///< an edit from the form is being applied (no rebuild)
+    bool mDragActive = false;
+    int mMergeId = 0;
+    int mNextMergeId = 1;
+    std::optional<UnsavedAnswer> mUnsavedAnswer;
+};
+
+/// A solid design on its object, turned by dragging (its angle kept in meta.view), the object
+/// chosen from the built-ins or a mesh file. Rendered by the render service, coarse while
+/// turning.
+class SolidObjectView : public QWidget {
+    Q_OBJECT
+public:
+    SolidObjectView(RenderService* renderer, QWidget* parent = nullptr);
+    ~SolidObjectView() override;
+    void setDesign(const Genome& design);
+    void setMesh(const QString& mesh);
+    QString mesh() const { return mMesh; }
+    ViewAngle angle() const { return mAngle; }
+    const QImage& image() const { return mImage; }
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+
+private:
+    void request(bool previewOnly);
+    RenderService* mRenderer;
+    std::uint64_t mKey;
+    Genome mDesign;
+    QString mMesh = QStringLiteral("vase");
+    ViewAngle mAngle;
+    QImage mImage;
+    QPointF mLast;
+    bool mTurning = false;
+};
+
+} // namespace marbler::ui

@@ -1,0 +1,241 @@
+// The editor window as a user meets it: opened from the workbench, a gesture on its canvas, undo
+// and redo from the keyboard, a past step edited from the form, the timeline's ends, the
+// unsaved-changes question, Save, Send to grid, and the recovery of an autosaved design.
+
+#include "UiTestSupport.h"
+#include "WaitFor.h"
+#include "editor/EditorCanvas.h"
+#include "editor/EditorWindow.h"
+#include "editor/ParamForm.h"
+#include "editor/Recovery.h"
+#include "editor/StepList.h"
+#include "editor/Timeline.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeImage.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Growth.h"
+#include "ui/DesignDialog.h"
+#include "ui/OpenPlacement.h"
+#include "ui/SavedFiles.h"
+
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+#include <QUndoView>
+
+#include <gtest/gtest.h>
+
+using namespace marbler;
+using namespace marbler::ui;
+
+namespace {
+
+/// Genomes compared as their file text, so a failure shows what differs.
+std::string text(const Genome& g) { return serializeGenome(g); }
+
+class EditorWindowTest : public test::WindowTest {
+protected:
+    EditorWindow* open(const Genome& design, const QString& file = {}) {
+        auto* editor = new EditorWindow(design, mService.get(), file, mWindow.get(), mRecovery.path());
+        editor->setWindowFlag(Qt::Window);
+        editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+        editor->resize(1200, 850);
+        editor->show();
+        EXPECT_TRUE(QTest::qWaitForWindowExposed(editor));
+        return editor;
+    }
+    /// A click or drag on the canvas between two design points.
+    static void drag(EditorCanvas* canvas, glm::dvec2 from, glm::dvec2 to) {
+        const double z = canvas->slice().value;
+        const QPoint a = canvas->toWidget(glm::dvec3(from, z)).toPoint();
+        const QPoint b = canvas->toWidget(glm::dvec3(to, z)).toPoint();
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, a);
+        if (a != b) {
+            for (int i = 1; i <= 4; ++i) QTest::mouseMove(canvas, a + (b - a) * i / 4);
+        }
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, b);
+    }
+    QTemporaryDir mRecovery;
+};
+
+} // namespace
+
+TEST_F(EditorWindowTest, OpensFromTheWorkbenchAndTheLargeView) {
+    const Genome design = *model().cell(4);
+    EditorWindow* editor = mWindow->openEditor(design);
+    ASSERT_NE(editor, nullptr);
+    editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+    EXPECT_EQ(text(editor->document()->renderedDesign()), text(design));
+    EXPECT_FALSE(editor->document()->isModified());
+    editor->close();
+
+    DesignDialog* large = mWindow->openDesign(2);
+    ASSERT_NE(large, nullptr);
+    auto* button = large->findChild<QPushButton*>(QStringLiteral("openInEditor"));
+    ASSERT_NE(button, nullptr);
+    EXPECT_TRUE(button->isEnabled());
+    EditorWindow* opened = nullptr;
+    QObject::connect(mWindow.get(), &WorkbenchWindow::editorOpened, [&](EditorWindow* e) { opened = e; });
+    button->click();
+    ASSERT_NE(opened, nullptr);
+    opened->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+    EXPECT_EQ(text(opened->document()->renderedDesign()), text(*model().cell(2)));
+    opened->close();
+    large->close();
+}
+
+TEST_F(EditorWindowTest, AClickDropsInkAndUndoRedoAreExact) {
+    EditorWindow* editor = open(blankDesign(2));
+    const Genome before = editor->document()->design();
+    editor->setTool(EditorTool::Drop);
+    EditorCanvas* canvas = editor->canvas();
+    MARBLER_WAIT(canvas->view().scale() > 0.0, 5000);
+    drag(canvas, {400.0, 600.0}, {400.0, 600.0});
+    ASSERT_EQ(editor->document()->stepCount(), 1u);
+    const Operation& drop = editor->document()->step(0);
+    EXPECT_EQ(drop.tool, Tool::Drop);
+    const double pixel = 2.0 / canvas->view().scale(); // a click lands within a pixel or two
+    EXPECT_NEAR(drop.center.x, 400.0, pixel);
+    EXPECT_NEAR(drop.center.y, 600.0, pixel);
+    EXPECT_TRUE(editor->document()->isModified());
+    const Genome after = editor->document()->design();
+
+    // The keys as the user presses them: to the focused canvas of the active window.
+    editor->activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(editor));
+    canvas->setFocus();
+    QTest::keyClick(canvas, Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(text(editor->document()->design()), text(before));
+    QTest::keyClick(canvas, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    EXPECT_EQ(text(editor->document()->design()), text(after));
+    EXPECT_GE(editor->historyView()->stack()->count(), 1);
+    editor->close();
+}
+
+TEST_F(EditorWindowTest, EditingAPastStepFromTheFormGivesTheDesignEditedByHand) {
+    Genome design = randomGenome(7, 2);
+    ASSERT_GE(design.operations.size(), 2u);
+    EditorWindow* editor = open(design);
+    const std::size_t past = design.initial.size(); // the first stroke, with later ones after it
+    editor->selectStep(past);
+    Operation op = editor->document()->step(past);
+    const std::string key(toolSpec(op.tool).params(2)[0].key);
+    // The form's signal as a finished edit of the first parameter.
+    Operation changed = op;
+    changed.center += glm::dvec3(10.0, -5.0, 0.0);
+    changed.angle += 7.0;
+    emit editor->paramForm()->edited(changed, QString::fromStdString(key), false);
+    Genome byHand = design;
+    byHand.operations[0] = changed;
+    EXPECT_EQ(text(editor->document()->renderedDesign()), text(byHand));
+    // The canvas shows the design re-formed.
+    EXPECT_EQ(text(editor->shownDesign()), text(byHand));
+    editor->document()->undoStack()->undo();
+    EXPECT_EQ(text(editor->document()->renderedDesign()), text(design));
+    editor->close();
+}
+
+TEST_F(EditorWindowTest, TheTimelineShowsTheBareBathFirstAndTheWholeDesignLast) {
+    const Genome design = randomGenome(11, 2);
+    EditorWindow* editor = open(design);
+    Timeline* timeline = editor->timeline();
+    timeline->setGrowth(0.0);
+    const Genome first = editor->shownDesign();
+    EXPECT_TRUE(first.initial.empty());
+    EXPECT_TRUE(first.operations.empty());
+    EXPECT_EQ(first.palette, design.palette);
+    timeline->setGrowth(double(stepCount(design)));
+    EXPECT_EQ(text(editor->shownDesign()), text(design));
+    editor->close();
+}
+
+TEST_F(EditorWindowTest, SaveWritesTheDesignAndTheQuestionGuardsUnsavedChanges) {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("mine.marble.json"));
+    setSaveFileAsker([&](QWidget*, const QString&, const QString&, const QString&) { return file; });
+    EditorWindow* editor = open(blankDesign(2));
+    editor->setTool(EditorTool::Drop);
+    MARBLER_WAIT(editor->canvas()->view().scale() > 0.0, 5000);
+    drag(editor->canvas(), {500.0, 500.0}, {560.0, 500.0});
+    ASSERT_TRUE(editor->document()->isModified());
+    editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Cancel);
+    EXPECT_FALSE(editor->close()) << "Cancel keeps the editor open";
+    EXPECT_TRUE(editor->isVisible());
+    editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Save);
+    QPointer<EditorWindow> guard(editor);
+    EXPECT_TRUE(editor->close());
+    setSaveFileAsker({});
+    const Genome saved = loadDesign(file.toStdString());
+    ASSERT_EQ(saved.initial.size(), 1u);
+    EXPECT_EQ(saved.initial[0].tool, Tool::Drop);
+    EXPECT_TRUE(EditorWindow::recentFiles().contains(QFileInfo(file).absoluteFilePath()));
+    EXPECT_TRUE(pendingRecoveries(mRecovery.path()).empty()) << "a normal close leaves nothing to recover";
+}
+
+TEST_F(EditorWindowTest, SendToGridPutsTheDesignIntoTheGrid) {
+    Genome design = randomGenome(21, 2);
+    EditorWindow* editor = mWindow->openEditor(design);
+    editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+    const Genome edited = editor->document()->renderedDesign();
+    int asked = 0;
+    setOpenChooser([&](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> {
+        ++asked;
+        return OpenChoice::NewGeneration;
+    });
+    const int generations = int(model().history().size());
+    emit editor->sendToGrid(edited);
+    setOpenChooser({});
+    EXPECT_LE(asked, 1);
+    EXPECT_EQ(int(model().history().size()), generations + 1) << "a new generation to breed from";
+    bool found = false;
+    for (int i = 0; i < CellCount; ++i)
+        if (const Genome* g = model().cell(i))
+            found = found || (g->operations == edited.operations && g->palette == edited.palette);
+    EXPECT_TRUE(found);
+    editor->close();
+}
+
+TEST_F(EditorWindowTest, ARecoveredAutosaveIsTheDesignThatWasBeingEdited) {
+    Genome design = randomGenome(5, 2);
+    Genome edited;
+    {
+        EditorWindow* editor = open(design);
+        editor->document()->removeStep(0);
+        editor->document()->setBackground(Color{10, 20, 30});
+        editor->document()->setMuted(1, true);
+        edited = editor->document()->design();
+        editor->autosave()->flush();
+        // A crash: the window goes without closing, so the autosave stays.
+        delete editor;
+    }
+    ASSERT_EQ(pendingRecoveries(mRecovery.path()).size(), 1u);
+    QStringList asked;
+    const auto editors = mWindow->offerRecoveries(mRecovery.path(), [&](const QString& name) {
+        asked << name;
+        return true;
+    });
+    ASSERT_EQ(editors.size(), 1u);
+    EXPECT_EQ(asked.size(), 1);
+    EditorWindow* back = editors[0];
+    back->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+    EXPECT_EQ(text(back->document()->design()), text(edited));
+    EXPECT_TRUE(back->document()->isMuted(1));
+    EXPECT_TRUE(back->document()->isModified()) << "recovered changes are not saved yet";
+    back->close();
+    EXPECT_TRUE(pendingRecoveries(mRecovery.path()).empty());
+}
+
+TEST_F(EditorWindowTest, ASolidIsEditedOnItsCrossSectionBesideItsObject) {
+    EditorWindow* editor = open(blankDesign(3));
+    ASSERT_NE(editor->findChild<QWidget*>(QStringLiteral("objectView")), nullptr);
+    editor->setSlice(Slice{2, 300.0});
+    editor->setTool(EditorTool::Drop);
+    MARBLER_WAIT(editor->canvas()->view().scale() > 0.0, 5000);
+    drag(editor->canvas(), {250.0, 700.0}, {250.0, 700.0});
+    ASSERT_EQ(editor->document()->stepCount(), 1u);
+    const Operation& drop = editor->document()->step(0);
+    EXPECT_NEAR(drop.center.z, 300.0, 1e-9) << "the click fixes a point on the section's plane";
+    EXPECT_NEAR(drop.center.x, 250.0, 2.0 / editor->canvas()->view().scale());
+    editor->close();
+}
