@@ -119,6 +119,12 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
     buildDocks();
     buildMenus();
     wireDocument();
+    // The canvas gets most of the room; the panels keep what their widgets need.
+    mCanvases->setStretchFactor(0, 3);
+    if (mObject) mCanvases->setStretchFactor(2, 2);
+    const auto dock = [this](const char* name) { return findChild<QDockWidget*>(QLatin1String(name)); };
+    resizeDocks({dock("stepsDock"), dock("paletteDock")}, {380, 220}, Qt::Horizontal);
+    resizeDocks({dock("stepsDock"), dock("historyDock")}, {560, 180}, Qt::Vertical);
 
     mToolSettings.color = 0;
     mCanvas->setToolSettings(mToolSettings);
@@ -468,7 +474,11 @@ void EditorWindow::stepsChanged() {
     rows.reserve(mDocument->stepCount());
     for (std::size_t i = 0; i < mDocument->stepCount(); ++i) {
         StepRow row;
-        row.name = mDocument->stepName(i);
+        const Operation& op = mDocument->step(i);
+        const ToolSpec& spec = toolSpec(op.tool);
+        row.name = QString::fromUtf8(spec.name.data(), qsizetype(spec.name.size()));
+        if (spec.laysInk) row.name += tr(" · ink %1").arg(op.color + 1);
+        row.detail = mDocument->stepName(i);
         row.muted = mDocument->isMuted(i);
         row.initial = mDocument->isInitial(i);
         rows.push_back(row);
@@ -595,21 +605,19 @@ void EditorWindow::startFromRandom() {
 }
 
 void EditorWindow::startFromSourceImage() {
-    if (mDocument->design().dimension != 2) {
-        statusBar()->showMessage(tr("Only a flat design has a picture for its bath"), 5000);
-        return;
-    }
     const QString image = QFileDialog::getOpenFileName(this, tr("A picture for the bath"), QString(),
                                                        tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.webp *.bmp)"));
     if (image.isEmpty()) return;
-    Genome g = mDocument->design();
+    // A new flat design whose bath is the picture. It is named by its full path and may be read
+    // from there (the user chose it just now); saved beside the picture, the design renders
+    // anywhere the two travel together.
     const QFileInfo info(image);
-    // The picture is named by its full path, beside which the design's folder is set, so the
-    // design renders now and saves with a path relative to wherever it is saved.
+    Genome g = blankDesign(2);
     g.source = SourceImage{info.absoluteFilePath().toStdString()};
     g.baseDirectory = info.absolutePath().toStdString();
     g.allowExternalSource = true;
-    mDocument->replaceDesign(g, tr("Picture %1 as the bath").arg(info.fileName()));
+    g.meta["name"] = info.completeBaseName().toStdString();
+    emit openEditorRequested(g, {});
 }
 
 void EditorWindow::exportImage() {
@@ -618,6 +626,8 @@ void EditorWindow::exportImage() {
                                     mObject ? mObject->mesh() : QStringLiteral("vase"), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &DesignDialog::fileSaved, this, &EditorWindow::fileSaved);
+    // It is open in this editor already.
+    if (auto* again = dialog->findChild<QWidget*>(QStringLiteral("openInEditor"))) again->hide();
     dialog->show();
 }
 

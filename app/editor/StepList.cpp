@@ -108,8 +108,10 @@ std::size_t StepList::rowCount() const { return std::size_t(mList->count()); }
 
 void StepList::setCurrent(std::optional<std::size_t> row) {
     mUpdating = true;
-    if (row && *row < rowCount()) mList->setCurrentRow(int(*row));
-    else {
+    if (row && *row < rowCount()) {
+        mList->setCurrentRow(int(*row));
+        mList->scrollToItem(mList->currentItem(), QAbstractItemView::PositionAtCenter);
+    } else {
         mList->setCurrentRow(-1);
         mList->clearSelection();
     }

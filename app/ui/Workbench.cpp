@@ -87,7 +87,7 @@ void takeEditorScreenshot(WorkbenchWindow& window, RenderService& service, const
         }
         EditorWindow* editor = window.openEditor(g, design);
         editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
-        editor->resize(1440, 900);
+        editor->resize(1680, 960);
         if (!g.operations.empty()) editor->selectStep(g.initial.size());
         auto grab = [editor, &service, file, status] {
             if (!service.idle()) return;

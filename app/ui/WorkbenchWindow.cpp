@@ -2,6 +2,7 @@
 
 #include "marbler/Error.h"
 #include "marbler/Families.h"
+#include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/ImageFormats.h"
@@ -249,6 +250,9 @@ void WorkbenchWindow::buildActions() {
         ->setToolTip(tr("Make a flat design by hand in the editor, from a bare bath"));
     newDesign->addAction(tr("Blank &solid block"), this, [this] { openEditor(blankDesign(3)); })
         ->setToolTip(tr("Make a solid design by hand in the editor, from a bare block"));
+    newDesign->addAction(tr("&Random design"), this, [this] {
+        openEditor(randomGenome(QRandomGenerator::global()->generate64(), mDimension->currentData().toInt()));
+    })->setToolTip(tr("A random design of the kind chosen on the tool bar, to edit by hand"));
     QAction* openInEditor = fileMenu->addAction(tr("Open in &editor…"), this, [this] {
         const QString file = QFileDialog::getOpenFileName(this, tr("Open a design in the editor"), QString(), openFilter());
         if (file.isEmpty()) return;
