@@ -16,15 +16,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <mutex>
 #include <system_error>
 
-#include <unistd.h>
 
 namespace marbler::cli {
 namespace {
 
-constexpr const char* Help = R"(usage: marbler animate GENOME -o OUT [options]
+constexpr const char* AnimateHelp = R"(usage: marbler animate GENOME -o OUT [options]
 
 Renders the making of a design: its steps (the entries of "initial", then of "operations") one
 after another, each growing in (an ink's area, a stroke's shift). Frame f of N shows the first
@@ -98,34 +96,6 @@ Slice parseSliceOption(const std::string& text) {
     return slice;
 }
 
-/// Frame progress on stderr, rewritten in place.
-class FrameProgress {
-public:
-    FrameProgress(bool enabled, int frames) : mEnabled(enabled), mFrames(frames) {}
-    ~FrameProgress() { finish(); }
-    void update(int frame, double within) {
-        if (!mEnabled) return;
-        std::lock_guard lock(mMutex);
-        const int percent = static_cast<int>((frame + within) / mFrames * 100.0);
-        if (frame == mLastFrame && percent == mLastPercent) return;
-        mLastFrame = frame;
-        mLastPercent = percent;
-        std::cerr << "\rframe " << frame + 1 << "/" << mFrames << " (" << percent << "%)   " << std::flush;
-        mShown = true;
-    }
-    void finish() {
-        if (mShown) std::cerr << "\r                              \r" << std::flush;
-        mShown = false;
-    }
-
-private:
-    bool mEnabled;
-    int mFrames;
-    bool mShown = false;
-    int mLastFrame = -1, mLastPercent = -1;
-    std::mutex mMutex;
-};
-
 int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
                   const std::filesystem::path& out, double fps, int frames, int width, int height);
 
@@ -133,7 +103,7 @@ int animate(std::span<const std::string> words) {
     Args args = parseArgs(words, {"o", "output", "frames", "fps", "width", "height", "aa", "slice", "threads"},
                           {"quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
-        std::cout << Help;
+        std::cout << AnimateHelp;
         return ExitOk;
     }
     oneGenomeArgument(args, "animate");
@@ -204,11 +174,14 @@ int animateGenome(const Args& args, const std::string& genomeName, const Genome&
     settings.height = height;
     checkRenderSettings(genome, settings);
 
-    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
-    FrameProgress progress(showProgress, frames);
+    ProgressLine progress(args);
     InterruptGuard interrupts;
     writeAnimation(genome, settings, out, frames, fps, &gInterrupted,
-                   [&progress](int frame, double within) { progress.update(frame, within); });
+                   [&progress, frames](int frame, double within) {
+                       const int percent = static_cast<int>((frame + within) / frames * 100.0);
+                       progress.show("frame " + std::to_string(frame + 1) + "/" + std::to_string(frames) + " ("
+                                     + std::to_string(percent) + "%)");
+                   });
     progress.finish();
     return ExitOk;
 }

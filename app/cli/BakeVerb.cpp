@@ -15,15 +15,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <mutex>
 
-#include <unistd.h>
 
 namespace marbler::cli {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr const char* Help = R"(usage: marbler bake GENOME --mesh NAME|FILE -o OUT.{glb,gltf,obj} [options]
+constexpr const char* BakeHelp = R"(usage: marbler bake GENOME --mesh NAME|FILE -o OUT.{glb,gltf,obj} [options]
        marbler bake GENOME --slices AXIS [--count N] -o DIR [options]
 
 Bakes a design onto an object for other 3D tools: every texel of an N x N texture gets the
@@ -57,35 +55,6 @@ options:
   --quiet                   no progress line
   -h, --help                this text
 )";
-
-/// One progress line on stderr, rewritten in place.
-class Progress {
-public:
-    Progress(bool enabled, std::string what)
-        : mEnabled(enabled)
-        , mWhat(std::move(what)) {}
-    ~Progress() { finish(); }
-    void update(double fraction) {
-        if (!mEnabled) return;
-        std::lock_guard lock(mMutex);
-        const int percent = static_cast<int>(fraction * 100.0);
-        if (percent == mLast) return;
-        mLast = percent;
-        std::cerr << "\r" << mWhat << " " << percent << "%" << std::flush;
-        mShown = true;
-    }
-    void finish() {
-        if (mShown) std::cerr << "\r" << std::string(mWhat.size() + 6, ' ') << "\r" << std::flush;
-        mShown = false;
-    }
-
-private:
-    bool mEnabled;
-    std::string mWhat;
-    bool mShown = false;
-    int mLast = -1;
-    std::mutex mMutex;
-};
 
 std::string lower(std::string text) {
     std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -140,10 +109,9 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
         }
     }
 
-    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
-    Progress progress(showProgress, "baking");
+    ProgressLine progress(args);
     RenderControl control;
-    control.progress = [&](double f) { progress.update(f); };
+    control.progress = [&](double f) { progress.show("baking " + std::to_string(static_cast<int>(f * 100.0)) + "%"); };
     const BakedTexture baked = bakeTexture(genome, mesh, settings, &control);
     progress.finish();
     std::string name =
@@ -203,8 +171,7 @@ int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& 
 
     // Each image is written atomically; a failure part way removes the ones this run wrote.
     std::vector<fs::path> written;
-    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
-    Progress progress(showProgress, "slicing");
+    ProgressLine progress(args);
     try {
         for (int k = 0; k < count; ++k) {
             settings.slice->value = (k + 0.5) * genome.size[slice.axis] / count;
@@ -213,7 +180,7 @@ int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& 
             const fs::path file = outDir / name;
             renderToFile(genome, settings, file);
             written.push_back(file);
-            progress.update(double(k + 1) / count);
+            progress.show("slicing " + std::to_string((k + 1) * 100 / count) + "%");
         }
     } catch (...) {
         for (const fs::path& file : written)
@@ -229,7 +196,7 @@ int bake(std::span<const std::string> words) {
         words, {"o", "output", "mesh", "texture", "aa", "slices", "count", "width", "height", "threads"},
         {"quiet", "progress", "help", "h"});
     if (args.has("help") || args.has("h")) {
-        std::cout << Help;
+        std::cout << BakeHelp;
         return ExitOk;
     }
     oneGenomeArgument(args, "bake");

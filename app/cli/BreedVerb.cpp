@@ -27,7 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* Help = R"(usage: marbler breed OPERATOR PARENT... --seed N [--count K] [--strength S] -o DIR
+constexpr const char* BreedHelp = R"(usage: marbler breed OPERATOR PARENT... --seed N [--count K] [--strength S] -o DIR
 
 Writes K children of the PARENT genome files (or PNG or TIFF images that carry genomes), made
 by a genetic operator, as DIR/child-01.marble.json, DIR/child-02.marble.json, ... (DIR is
@@ -127,7 +127,7 @@ int runBreed(std::span<const std::string> words) {
     return guarded("breed", [&] {
         Args args = parseArgs(words, {"seed", "count", "strength", "o", "output"}, {"h", "help"});
         if (args.has("h") || args.has("help")) {
-            std::cout << Help;
+            std::cout << BreedHelp;
             return ExitOk;
         }
         if (args.positional.empty()) throw InputError("an operator is required: alter, recombine, swap or reinit");

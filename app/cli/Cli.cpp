@@ -9,6 +9,8 @@
 #include <cmath>
 #include <iostream>
 
+#include <unistd.h>
+
 namespace marbler::cli {
 
 std::optional<std::string> Args::get(const std::string& name) const {
@@ -177,6 +179,26 @@ int guarded(const char* verb, const std::function<int()>& body) {
         std::cerr << "marbler " << verb << ": " << e.what() << '\n';
         return ExitFailure;
     }
+}
+
+ProgressLine::ProgressLine(const Args& args)
+    : mEnabled(!args.has("quiet") && (args.has("progress") || ::isatty(2))) {}
+
+void ProgressLine::show(const std::string& text) {
+    if (!mEnabled) return;
+    std::lock_guard lock(mMutex);
+    if (text == mText) return;
+    // Spaces over what the longer old text leaves, so nothing of it stays on the line.
+    const std::size_t blank = mText.size() > text.size() ? mText.size() - text.size() : 0;
+    std::cerr << '\r' << text << std::string(blank, ' ') << std::flush;
+    mText = text;
+}
+
+void ProgressLine::finish() {
+    std::lock_guard lock(mMutex);
+    if (mText.empty()) return;
+    std::cerr << '\r' << std::string(mText.size(), ' ') << '\r' << std::flush;
+    mText.clear();
 }
 
 } // namespace marbler::cli

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -55,6 +56,25 @@ std::pair<double, double> parsePrintSize(const std::string& text);
 /// Pixels from a length in pixels, refusing what cannot be an image before any allocation;
 /// `what` names the length in the message.
 int pixelsOf(double value, const std::string& what);
+
+/// One line of progress on stderr, rewritten in place only when its text changes and cleared by
+/// finish() (or when it goes). It shows when stderr is a terminal or `--progress` is given, never
+/// with `--quiet`. show() may be called from the renderer's worker threads.
+class ProgressLine {
+public:
+    explicit ProgressLine(const Args& args);
+    ~ProgressLine() { finish(); }
+    ProgressLine(const ProgressLine&) = delete;
+    ProgressLine& operator=(const ProgressLine&) = delete;
+
+    void show(const std::string& text);
+    void finish();
+
+private:
+    const bool mEnabled;
+    std::mutex mMutex;
+    std::string mText; ///< on the line now; empty when nothing is
+};
 
 /// Loads the GENOME argument of a verb: a genome file, or a PNG or TIFF image that carries one
 /// (marbler::loadDesign; the one place the verbs read genomes). Warnings go to stderr as

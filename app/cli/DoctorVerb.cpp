@@ -16,7 +16,7 @@
 namespace marbler::cli {
 namespace {
 
-constexpr const char* Help = R"(usage: marbler doctor
+constexpr const char* DoctorHelp = R"(usage: marbler doctor
 
 Reports what this machine gives Marbler: versions, the image formats and where they come from,
 the OpenGL renderer found (or why none), the back end the window will render with and why, and
@@ -49,7 +49,7 @@ std::string joined(const std::vector<std::string>& names) {
 int doctor(std::span<const std::string> words) {
     Args args = parseArgs(words, {}, {"help", "h"});
     if (args.has("help") || args.has("h")) {
-        std::cout << Help;
+        std::cout << DoctorHelp;
         return ExitOk;
     }
     if (!args.positional.empty()) throw InputError("doctor takes no arguments (got '" + args.positional[0] + "')");

@@ -15,7 +15,7 @@
 namespace marbler::cli {
 namespace {
 
-constexpr const char* Help = R"(usage: marbler paper [options] --seed N -o OUT
+constexpr const char* PaperHelp = R"(usage: marbler paper [options] --seed N -o OUT
 
 Makes a marbled paper: layers of ink drops at Poisson-disk spaced points, one colour each and
 smaller for each later colour, combed by a few stretch passes along the sheet, each weaker
@@ -46,7 +46,7 @@ int paper(std::span<const std::string> words) {
     Args args = parseArgs(words, {"size", "dpi", "colors", "passes", "seed", "o", "output", "threads"},
                           {"pastel", "h", "help"});
     if (args.has("h") || args.has("help")) {
-        std::cout << Help;
+        std::cout << PaperHelp;
         return ExitOk;
     }
     if (!args.positional.empty()) throw InputError("unexpected argument '" + args.positional[0] + "' (see marbler paper --help)");

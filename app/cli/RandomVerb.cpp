@@ -13,7 +13,7 @@
 namespace marbler::cli {
 namespace {
 
-constexpr const char* Help = R"(usage: marbler random [--dimension 2|3 | --family NAME] --seed N -o OUT.marble.json
+constexpr const char* RandomHelp = R"(usage: marbler random [--dimension 2|3 | --family NAME] --seed N -o OUT.marble.json
        marbler random --families
 
 Writes a random genome: a harmonious palette, a bath covered with drops like a stone
@@ -46,7 +46,7 @@ int runRandom(std::span<const std::string> words) {
     return guarded("random", [&] {
         Args args = parseArgs(words, {"dimension", "family", "seed", "o", "output"}, {"h", "help", "families"});
         if (args.has("h") || args.has("help")) {
-            std::cout << Help;
+            std::cout << RandomHelp;
             return ExitOk;
         }
         if (!args.positional.empty()) throw InputError("unexpected argument '" + args.positional[0] + "' (see marbler random --help)");

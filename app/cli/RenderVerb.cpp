@@ -16,15 +16,13 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
-#include <mutex>
 #include <sstream>
 
-#include <unistd.h>
 
 namespace marbler::cli {
 namespace {
 
-constexpr const char* Help = R"(usage: marbler render GENOME -o OUT [options]
+constexpr const char* RenderHelp = R"(usage: marbler render GENOME -o OUT [options]
 
 Renders a genome to a raster image. GENOME is a genome file or a PNG or TIFF image Marbler
 wrote, which carries its genome; every PNG and TIFF written carries the genome too. The format follows OUT's extension: .png, .tif/.tiff,
@@ -81,32 +79,6 @@ Slice parseSlice(const std::string& text) {
     return slice;
 }
 
-/// One progress line on stderr, rewritten in place.
-class ProgressLine {
-public:
-    explicit ProgressLine(bool enabled) : mEnabled(enabled) {}
-    ~ProgressLine() { finish(); }
-    void update(double fraction) {
-        if (!mEnabled) return;
-        std::lock_guard lock(mMutex);
-        int percent = static_cast<int>(fraction * 100.0);
-        if (percent == mLast) return;
-        mLast = percent;
-        std::cerr << "\rrendering " << percent << "%" << std::flush;
-        mShown = true;
-    }
-    void finish() {
-        if (mShown) std::cerr << "\r              \r" << std::flush;
-        mShown = false;
-    }
-
-private:
-    bool mEnabled;
-    bool mShown = false;
-    int mLast = -1;
-    std::mutex mMutex;
-};
-
 int renderGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
                  const ExportOptions& exportOptions, const std::optional<std::pair<double, double>>& printSize,
                  const std::filesystem::path& outFile);
@@ -117,7 +89,7 @@ int render(std::span<const std::string> words) {
                            "supersample", "cut", "threads", "repeat", "steps"},
                           {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
-        std::cout << Help;
+        std::cout << RenderHelp;
         return ExitOk;
     }
     oneGenomeArgument(args, "render");
@@ -230,10 +202,9 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
                          std::to_string(MaxImageSide) + " pixels a side and " + std::to_string(MaxImagePixels) +
                          " pixels in all)");
 
-    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
-    ProgressLine progress(showProgress);
+    ProgressLine progress(args);
     RenderControl control;
-    control.progress = [&](double f) { progress.update(f); };
+    control.progress = [&](double f) { progress.show("rendering " + std::to_string(static_cast<int>(f * 100.0)) + "%"); };
 
     if (meshMode || args.has("gpu")) {
 #ifdef MARBLER_HAVE_GUI

@@ -16,7 +16,7 @@
 namespace marbler::cli {
 namespace {
 
-constexpr const char* Help = R"(usage: marbler svg GENOME -o OUT.svg [--tolerance T] [--simplify] [--stats]
+constexpr const char* SvgHelp = R"(usage: marbler svg GENOME -o OUT.svg [--tolerance T] [--simplify] [--stats]
 
 Writes a flat (2D) design as an SVG file: the background as a full rectangle, then every ink
 as a filled path, oldest first, so later inks cover earlier ones (a drop inside a drop makes a
@@ -45,7 +45,7 @@ options:
 int svg(std::span<const std::string> words) {
     Args args = parseArgs(words, {"o", "output", "tolerance"}, {"simplify", "stats", "help", "h"});
     if (args.has("help") || args.has("h")) {
-        std::cout << Help;
+        std::cout << SvgHelp;
         return ExitOk;
     }
     oneGenomeArgument(args, "svg");

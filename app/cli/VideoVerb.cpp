@@ -14,14 +14,13 @@
 #include <iostream>
 #include <system_error>
 
-#include <unistd.h>
 
 namespace marbler::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* Help = R"(usage: marbler video GENOME IN -o OUT [options]
+constexpr const char* VideoHelp = R"(usage: marbler video GENOME IN -o OUT [options]
 
 Marbles every frame of the video IN: each frame is the source image of the flat (2D) genome
 GENOME (a genome file or a PNG or TIFF image Marbler wrote), rendered as `marbler render` would
@@ -105,7 +104,7 @@ int video(std::span<const std::string> words) {
     Args args = parseArgs(words, {"o", "output", "width", "aa", "threads"},
                           {"quiet", "progress", "help", "h"});
     if (args.has("help") || args.has("h")) {
-        std::cout << Help;
+        std::cout << VideoHelp;
         return ExitOk;
     }
     if (args.positional.size() != 2)
@@ -142,7 +141,7 @@ int video(std::span<const std::string> words) {
 
     ExportOptions options;
     options.genome = serializeGenome(genome);
-    const bool showProgress = !args.has("quiet") && (args.has("progress") || ::isatty(2));
+    ProgressLine progress(args);
     FrameOutput output(out, settings.width, settings.height, reader->fps());
     std::vector<std::uint8_t> rgb;
     int frames = 0;
@@ -151,9 +150,9 @@ int video(std::span<const std::string> words) {
                                                   std::size_t(reader->width()) * 3);
         output.add(CpuRenderer(genome, std::move(source)).render(settings), options);
         ++frames;
-        if (showProgress) std::cerr << "\rmarbling frame " << frames << std::flush;
+        progress.show("marbling frame " + std::to_string(frames));
     }
-    if (showProgress && frames > 0) std::cerr << "\r                            \r" << std::flush;
+    progress.finish();
     if (frames == 0) throw InputError("'" + in.string() + "': holds no frames");
     output.commit();
     return ExitOk;

@@ -112,17 +112,23 @@ void AnimationExportDialog::browse() {
         chosen = QFileDialog::getExistingDirectory(this, tr("Folder for the PNG frames"), mPath->text());
     else {
         const QString ext = animationExtension(format);
-        chosen = QFileDialog::getSaveFileName(this, tr("Export animation"), mPath->text(),
-                                              tr("%1 files (*.%2)").arg(ext.toUpper(), ext));
-        if (!chosen.isEmpty() && QFileInfo(chosen).suffix().toLower() != ext) chosen += QStringLiteral(".") + ext;
+        chosen = withAnimationExtension(QFileDialog::getSaveFileName(this, tr("Export animation"), mPath->text(),
+                                                                     tr("%1 files (*.%2)").arg(ext.toUpper(), ext)),
+                                        format);
     }
     if (!chosen.isEmpty()) mPath->setText(chosen);
+}
+
+QString withAnimationExtension(const QString& path, AnimationFormat format) {
+    const QString ext = animationExtension(format);
+    if (ext.isEmpty() || path.isEmpty() || QFileInfo(path).suffix().toLower() == ext) return path;
+    return path + QStringLiteral(".") + ext;
 }
 
 AnimationExportSettings AnimationExportDialog::settings() const {
     AnimationExportSettings s;
     s.format = AnimationFormat(mFormat->currentData().toInt());
-    s.path = mPath->text();
+    s.path = withAnimationExtension(mPath->text(), s.format);
     s.width = mWidth->value();
     s.height = mHeight->value();
     s.frames = mFrames->value();
@@ -147,9 +153,7 @@ bool AnimationExportJob::start(const Genome& design, const AnimationExportSettin
     render.width = settings.width;
     render.height = settings.height;
     render.slice = settings.slice;
-    std::filesystem::path out = settings.path.toStdString();
-    const QString ext = animationExtension(settings.format);
-    if (!ext.isEmpty() && QFileInfo(settings.path).suffix().toLower() != ext) out += "." + ext.toStdString();
+    const std::filesystem::path out = withAnimationExtension(settings.path, settings.format).toStdString();
     const bool frames = settings.format == AnimationFormat::PngFrames;
     mThread = std::thread([this, design, render, out, frames, count = settings.frames, fps = settings.fps,
                            cancel = mCancel] {

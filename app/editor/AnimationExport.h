@@ -37,6 +37,8 @@ struct AnimationExportSettings {
 
 /// The file extension of a format (empty for PNG frames).
 QString animationExtension(AnimationFormat format);
+/// `path` with the format's extension added when it lacks it (as it is for PNG frames).
+QString withAnimationExtension(const QString& path, AnimationFormat format);
 
 /// The dialog of Export animation: format, path, size, frames and frame rate.
 class AnimationExportDialog : public QDialog {

@@ -62,7 +62,7 @@ void EditorCanvas::setDesign(const Genome& rendered) {
     const bool resized = rendered.size != mDesign.size || rendered.dimension != mDesign.dimension;
     mDesign = rendered;
     if (resized) {
-        if (mDesign.dimension == 3) mSlice = Slice{2, mDesign.size.z / 2.0};
+        if (mDesign.dimension == 3 && !mSliceChosen) mSlice = Slice{2, mDesign.size.z / 2.0};
         updateDesignSize();
     }
     if (mHandles && *mHandles >= mDesign.initial.size() + mDesign.operations.size()) mHandles.reset();
@@ -89,6 +89,7 @@ void EditorCanvas::setHandlesFor(std::optional<std::size_t> renderedIndex) {
 
 void EditorCanvas::setSlice(const Slice& slice) {
     mSlice = slice;
+    mSliceChosen = true;
     updateDesignSize();
     rerender();
 }
@@ -314,6 +315,11 @@ void EditorCanvas::mouseMoveEvent(QMouseEvent* event) {
         emit viewChanged();
         return;
     case Drag::Handle: {
+        // The step may have gone under the drag (an undo, a delete, the timeline playing).
+        if (!selectedStep()) {
+            mDrag = Drag::None;
+            return;
+        }
         const Operation op = movedStep(mHandle, event->position());
         requestRender(withReplaced(op), true);
         update();
@@ -338,6 +344,7 @@ void EditorCanvas::mouseReleaseEvent(QMouseEvent* event) {
         rerender();
         return;
     case Drag::Handle: {
+        if (!selectedStep()) return;
         const Operation op = movedStep(mHandle, event->position());
         requestRender(withReplaced(op), mDragging);
         emit handleDragged(*mHandles, op, true);

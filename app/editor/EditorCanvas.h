@@ -114,6 +114,7 @@ private:
     Genome mDesign;
     ViewController mView;
     Slice mSlice;
+    bool mSliceChosen = false; ///< setSlice was called: a new design keeps the section chosen
     EditorTool mTool = EditorTool::Drop;
     ToolSettings mSettings;
     std::optional<std::size_t> mHandles;

@@ -219,6 +219,9 @@ public:
         if (!o || o->mMergeId != mMergeId || o->mMergeKey != mMergeKey || mMergeKey.isEmpty()) return false;
         mAfter = o->mAfter;
         setText(mDescribe ? mDescribe(mBefore, mAfter) : o->text());
+        // A drag that ends where it began (a colour dialog cancelled) leaves no entry behind,
+        // and the design as clean as it was.
+        setObsolete(mBefore == mAfter);
         return true;
     }
 

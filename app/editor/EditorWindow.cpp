@@ -278,17 +278,12 @@ void EditorWindow::buildMenus() {
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
-    edit->addAction(tr("&Duplicate step"), this, [this] {
-        if (mSelected) selectStep(mDocument->duplicateStep(*mSelected));
-    })->setShortcut(QKeySequence(tr("Ctrl+D")));
-    edit->addAction(tr("De&lete step"), this, [this] {
-        if (!mSelected) return;
-        mDocument->removeStep(*mSelected);
-        selectStep(std::nullopt);
-    })->setShortcut(QKeySequence::Delete);
-    edit->addAction(tr("&Mute step"), this, [this] {
-        if (mSelected) mDocument->setMuted(*mSelected, !mDocument->isMuted(*mSelected));
-    })->setShortcut(QKeySequence(tr("M")));
+    // The step list's own actions (Ctrl+D, Del, M), for the whole window: one action a key, as
+    // two with the same key would be ambiguous where both apply and neither would run.
+    for (QAction* action : mSteps->actions()) {
+        action->setShortcutContext(Qt::WindowShortcut);
+        edit->addAction(action);
+    }
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     QToolBar* bar = addToolBar(tr("Tools"));
@@ -342,7 +337,7 @@ void EditorWindow::wireDocument() {
                 mDocument->setStep(*step, op, mergeFor(!final));
             });
     connect(mCanvas, &EditorCanvas::inkPicked, this, [this](int color, std::optional<std::size_t> rendered) {
-        if (color >= 0) mPalette->setCurrentInk(color);
+        if (color >= 0) setCurrentInk(color);
         if (rendered) selectStep(documentIndex(*rendered));
         statusBar()->showMessage(color >= 0 ? tr("Ink %1 picked").arg(color + 1) : tr("The bare bath"), 3000);
     });
@@ -386,16 +381,13 @@ void EditorWindow::wireDocument() {
         if (index < 0)
             statusBar()->showMessage(tr("A design holds at most %1 inks").arg(int(MaxPaletteSize)), 5000);
         else
-            mPalette->setCurrentInk(index);
+            setCurrentInk(index);
     });
-    connect(mPalette, &PaletteEditor::currentInkChanged, this, [this](int index) {
-        mToolSettings.color = index;
-        mToolOptions->setSettings(mToolSettings);
-        mCanvas->setToolSettings(mToolSettings);
-    });
+    connect(mPalette, &PaletteEditor::currentInkChanged, this, &EditorWindow::setCurrentInk);
     connect(mToolOptions, &ToolOptions::settingsChanged, this, [this](const ToolSettings& s) {
         mToolSettings = s;
         mCanvas->setToolSettings(s);
+        mPalette->setCurrentInk(s.color);
     });
 
     // The timeline.
@@ -448,13 +440,15 @@ Genome EditorWindow::shownDesign() const {
 }
 
 void EditorWindow::showShown() {
-    mCanvas->setDesign(shownDesign());
+    const Genome shown = shownDesign();
+    mCanvas->setDesign(shown);
     if (mTimeline->comparing()) {
         const Genome rendered = mDocument->renderedDesign();
         const double g = std::clamp(mTimeline->compareGrowth(), 0.0, double(stepCount(rendered)));
         mCompare->setDesign(designAtGrowth(rendered, g));
     }
-    if (mObject) mObject->setDesign(shownDesign());
+    if (mObject) mObject->setDesign(shown);
+    updateHandles();
 }
 
 void EditorWindow::designChanged() {
@@ -490,14 +484,26 @@ void EditorWindow::stepsChanged() {
     mStatus->setText(tr("%n step(s)", "", int(mDocument->stepCount())));
 }
 
+void EditorWindow::setCurrentInk(int index) {
+    mToolSettings.color = index;
+    mToolOptions->setSettings(mToolSettings);
+    mCanvas->setToolSettings(mToolSettings);
+    mPalette->setCurrentInk(index);
+}
+
 void EditorWindow::refreshForm() {
-    if (!mSelected || *mSelected >= mDocument->stepCount()) {
+    if (!mSelected || *mSelected >= mDocument->stepCount())
         mForm->clear();
-        mCanvas->setHandlesFor(std::nullopt);
-        return;
-    }
-    mForm->setStep(mDocument->step(*mSelected), mDocument->design().dimension, mDocument->design());
-    mCanvas->setHandlesFor(renderedIndex(*mSelected));
+    else
+        mForm->setStep(mDocument->step(*mSelected), mDocument->design().dimension, mDocument->design());
+    updateHandles();
+}
+
+void EditorWindow::updateHandles() {
+    // Handles edit the design itself, so they show only at the timeline's end: before it the
+    // canvas shows steps part grown, and a handle dragged there would write the part back.
+    const bool show = mSelected && *mSelected < mDocument->stepCount() && mTimeline->atEnd();
+    mCanvas->setHandlesFor(show ? renderedIndex(*mSelected) : std::nullopt);
 }
 
 void EditorWindow::selectStep(std::optional<std::size_t> step) {

@@ -125,6 +125,11 @@ private:
     void stepsChanged();
     void showShown();
     void refreshForm();
+    /// Makes ink `index` the one the tools lay, in the palette, the tool panel and the canvas
+    /// alike (whichever of them chose it).
+    void setCurrentInk(int index);
+    /// The canvas's handles for the selected step, at the timeline's end only.
+    void updateHandles();
     /// The document step of a rendered (unmuted) step and back.
     std::optional<std::size_t> documentIndex(std::size_t rendered) const;
     std::optional<std::size_t> renderedIndex(std::size_t step) const;

@@ -12,9 +12,9 @@ namespace marbler::ui {
 namespace {
 
 const QString ChoiceKey = QStringLiteral("open/placement");
-const QString AskKey = QStringLiteral("open/ask");
+const QString OpenAskKey = QStringLiteral("open/ask");
 
-OpenChooser& chooserHook() {
+OpenChooser& openChooserHook() {
     static OpenChooser hook;
     return hook;
 }
@@ -35,12 +35,12 @@ OpenChoice lastOpenChoice() {
                                                                                : OpenChoice::NewGeneration;
 }
 
-bool askOpenChoice() { return QSettings().value(AskKey, true).toBool(); }
+bool askOpenChoice() { return QSettings().value(OpenAskKey, true).toBool(); }
 
 void rememberOpenChoice(OpenChoice choice, bool askAgain) {
     QSettings settings;
     settings.setValue(ChoiceKey, choice == OpenChoice::Replace ? QStringLiteral("replace") : QStringLiteral("generation"));
-    settings.setValue(AskKey, askAgain);
+    settings.setValue(OpenAskKey, askAgain);
 }
 
 OpenPlacementDialog::OpenPlacementDialog(const OpenQuestion& question, QWidget* parent) : QDialog(parent) {
@@ -98,10 +98,10 @@ OpenPlacementDialog::OpenPlacementDialog(const OpenQuestion& question, QWidget* 
 
 bool OpenPlacementDialog::dontAskAgain() const { return mDontAsk->isChecked(); }
 
-void setOpenChooser(OpenChooser chooser) { chooserHook() = std::move(chooser); }
+void setOpenChooser(OpenChooser chooser) { openChooserHook() = std::move(chooser); }
 
 std::optional<OpenChoice> chooseOpenPlacement(QWidget* parent, const OpenQuestion& question) {
-    if (chooserHook()) return chooserHook()(parent, question);
+    if (openChooserHook()) return openChooserHook()(parent, question);
     OpenPlacementDialog dialog(question, parent);
     dialog.exec();
     if (dialog.choice() && dialog.dontAskAgain()) rememberOpenChoice(*dialog.choice(), false);

@@ -14,9 +14,9 @@ namespace {
 
 const QString DimensionKey = QStringLiteral("population/dimension");
 const QString MeshKey = QStringLiteral("view/mesh");
-const QString AskKey = QStringLiteral("start/ask");
+const QString StartAskKey = QStringLiteral("start/ask");
 
-StartChooser& chooserHook() {
+StartChooser& startChooserHook() {
     static StartChooser hook;
     return hook;
 }
@@ -37,13 +37,13 @@ StartChoice lastStartChoice() {
     return choice;
 }
 
-bool askStartChoice() { return QSettings().value(AskKey, true).toBool(); }
+bool askStartChoice() { return QSettings().value(StartAskKey, true).toBool(); }
 
 void rememberStartChoice(const StartChoice& choice, bool askAgain) {
     QSettings settings;
     settings.setValue(DimensionKey, choice.dimension);
     settings.setValue(MeshKey, choice.mesh);
-    settings.setValue(AskKey, askAgain);
+    settings.setValue(StartAskKey, askAgain);
 }
 
 StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog(parent), mChoice(defaults) {
@@ -126,10 +126,10 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog
 
 bool StartDialog::dontAskAgain() const { return mDontAsk->isChecked(); }
 
-void setStartChooser(StartChooser chooser) { chooserHook() = std::move(chooser); }
+void setStartChooser(StartChooser chooser) { startChooserHook() = std::move(chooser); }
 
 std::optional<StartChoice> chooseStart(QWidget* parent, const StartChoice& defaults) {
-    if (chooserHook()) return chooserHook()(parent, defaults);
+    if (startChooserHook()) return startChooserHook()(parent, defaults);
     StartDialog dialog(defaults, parent);
     if (dialog.exec() != QDialog::Accepted) return std::nullopt;
     rememberStartChoice(dialog.choice(), !dialog.dontAskAgain());

@@ -17,10 +17,9 @@
 namespace marbler::ui {
 
 EditorWindow* WorkbenchWindow::openEditor(const Genome& design, const QString& file) {
-    // A window of its own (not a child of the workbench), so each editor has its own place
-    // in the task switcher; the workbench outlives it by closing it first.
+    // A top-level window of its own (a QMainWindow is one, with its own place in the task
+    // switcher), owned by the workbench, which finds its editors and closes them first.
     auto* editor = new EditorWindow(design, mRenderer, file, this);
-    editor->setWindowFlag(Qt::Window);
     connect(editor, &EditorWindow::sendToGrid, this, [this](const Genome& edited) {
         const LineageInfo info = lineageOf(edited);
         placeOpened({edited}, {info.displayName()}, -1, tr("From the editor: %1").arg(info.displayName()));
@@ -56,6 +55,8 @@ std::vector<EditorWindow*> WorkbenchWindow::offerRecoveries(const QString& folde
             // The design as it was being edited, muted steps and all, still unsaved.
             EditorWindow* editor = openEditor(r.design, r.originalFile);
             editor->document()->markModified();
+            // Its own autosave now, before the old one goes: a second crash loses nothing.
+            editor->autosave()->flush();
             opened.push_back(editor);
             statusBar()->showMessage(tr("Recovered “%1”").arg(name), 5000);
         }

@@ -295,24 +295,6 @@ void describeInitial(const Genome& parent, const Genome& child, double side, std
     for (std::size_t i = 0; i < a.size(); ++i) describeStep(a[i], b[i], child.dimension, side, labels[i], out);
 }
 
-struct Hsl {
-    double h = 0.0, s = 0.0, l = 0.0;
-};
-
-Hsl toHsl(Color c) {
-    const double r = c.r / 255.0, g = c.g / 255.0, b = c.b / 255.0;
-    const double hi = std::max({r, g, b}), lo = std::min({r, g, b});
-    Hsl out;
-    out.l = 0.5 * (hi + lo);
-    const double d = hi - lo;
-    if (d <= 0.0) return out;
-    out.s = d / (1.0 - std::abs(2.0 * out.l - 1.0));
-    if (hi == r) out.h = 60.0 * std::fmod((g - b) / d + 6.0, 6.0);
-    else if (hi == g) out.h = 60.0 * ((b - r) / d + 2.0);
-    else out.h = 60.0 * ((r - g) / d + 4.0);
-    return out;
-}
-
 /// The hue words a shift is named after, by the hue it moves towards.
 struct HueWord {
     double hue;
@@ -340,7 +322,7 @@ const char* hueWord(double from, double delta) {
 /// shifts ("redder and lighter"); the weight is the shift in units of a gentle nudge.
 std::pair<std::string, double> describeColor(Color a, Color b) {
     const std::string wordA = colorWord(a), wordB = colorWord(b);
-    const Hsl x = toHsl(a), y = toHsl(b);
+    const Hsl x = hslOf(a), y = hslOf(b);
     double hue = std::fmod(y.h - x.h + 540.0, 360.0) - 180.0;
     // A grey has no hue to speak of.
     if (std::min(x.s, y.s) < 0.08 || std::min(x.l, y.l) < 0.04 || std::max(x.l, y.l) > 0.96) hue = 0.0;

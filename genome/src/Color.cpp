@@ -1,5 +1,7 @@
 #include "marbler/Genome.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace marbler {
@@ -32,5 +34,46 @@ double colorDistance2(Color a, Color b) {
     double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
     return (2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - rm) / 256.0) * db * db;
 }
+
+Hsl hslOf(Color c) {
+    const double r = c.r / 255.0, g = c.g / 255.0, b = c.b / 255.0;
+    const double hi = std::max({r, g, b}), lo = std::min({r, g, b});
+    Hsl out;
+    out.l = (hi + lo) / 2.0;
+    const double d = hi - lo;
+    if (d <= 0.0) return out;
+    out.s = out.l > 0.5 ? d / (2.0 - hi - lo) : d / (hi + lo);
+    if (hi == r) out.h = 60.0 * ((g - b) / d + (g < b ? 6.0 : 0.0));
+    else if (hi == g) out.h = 60.0 * ((b - r) / d + 2.0);
+    else out.h = 60.0 * ((r - g) / d + 4.0);
+    return out;
+}
+
+double wrapHue(double h) {
+    h = std::fmod(h, 360.0);
+    return h < 0.0 ? h + 360.0 : h;
+}
+
+Color colorFromHsl(const Hsl& c) {
+    const double h = wrapHue(c.h) / 60.0;
+    const double s = std::clamp(c.s, 0.0, 1.0), l = std::clamp(c.l, 0.0, 1.0);
+    const double chroma = (1.0 - std::abs(2.0 * l - 1.0)) * s;
+    const double hm = h - 2.0 * std::floor(h / 2.0);
+    const double x = chroma * (1.0 - std::abs(hm - 1.0));
+    double r = 0, g = 0, b = 0;
+    switch (static_cast<int>(h)) {
+    case 0: r = chroma, g = x; break;
+    case 1: r = x, g = chroma; break;
+    case 2: g = chroma, b = x; break;
+    case 3: g = x, b = chroma; break;
+    case 4: r = x, b = chroma; break;
+    default: r = chroma, b = x; break;
+    }
+    const double m = l - chroma / 2.0;
+    auto channel = [](double v) { return static_cast<std::uint8_t>(std::clamp(std::round(v * 255.0), 0.0, 255.0)); };
+    return {channel(r + m), channel(g + m), channel(b + m)};
+}
+
+Color colorFromHsl(double hue, double saturation, double lightness) { return colorFromHsl({hue, saturation, lightness}); }
 
 } // namespace marbler

@@ -14,41 +14,9 @@
 namespace marbler {
 namespace {
 
-/// SplitMix64, as Operators.cpp spreads (seed, child) over a Pcg32's state.
-std::uint64_t splitMix64(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ULL;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-    return x ^ (x >> 31);
-}
-
-/// Child i's own stream, apart from breed's.
-Pcg32 childRng(std::uint64_t seed, int index) {
-    auto i = static_cast<std::uint64_t>(index);
-    return Pcg32(splitMix64(seed ^ splitMix64(i + 0x636f6c6f75ULL)), 0x636f6c7761790000ULL + i);
-}
-
-/// HSL of an sRGB colour, with basic operations only (colorFromHsl's inverse).
-struct Hsl {
-    double h = 0.0, s = 0.0, l = 0.0;
-};
-Hsl toHsl(Color c) {
-    double r = c.r / 255.0, g = c.g / 255.0, b = c.b / 255.0;
-    double hi = std::max({r, g, b}), lo = std::min({r, g, b});
-    Hsl out;
-    out.l = (hi + lo) / 2.0;
-    double d = hi - lo;
-    if (d <= 0.0) return out;
-    out.s = out.l > 0.5 ? d / (2.0 - hi - lo) : d / (hi + lo);
-    if (hi == r) out.h = 60.0 * ((g - b) / d + (g < b ? 6.0 : 0.0));
-    else if (hi == g) out.h = 60.0 * ((b - r) / d + 2.0);
-    else out.h = 60.0 * ((r - g) / d + 4.0);
-    return out;
-}
-double wrapHue(double h) {
-    while (h < 0.0) h += 360.0;
-    while (h >= 360.0) h -= 360.0;
-    return h;
+/// Colourway i's own random stream (Random.h childRng), apart from breeding's.
+Pcg32 colourwayRng(std::uint64_t seed, int index) {
+    return childRng(seed, index, 0x636f6c6f75ULL, 0x636f6c7761790000ULL);
 }
 
 /// `count` inks from a pool, each apart from the background (inks too close to it are left
@@ -75,7 +43,7 @@ void widenPool(std::vector<Color>& pool, std::size_t wanted, Pcg32& rng) {
     const std::size_t base = pool.size();
     for (int turn = 1; pool.size() < wanted + 2; ++turn)
         for (std::size_t i = 0; i < base; ++i) {
-            Hsl c = toHsl(pool[i]);
+            Hsl c = hslOf(pool[i]);
             pool.push_back(colorFromHsl(wrapHue(c.h + 47.0 * turn), c.s, std::clamp(c.l + (turn % 2 ? 0.15 : -0.15), 0.15, 0.8)));
         }
 }
@@ -99,7 +67,7 @@ std::vector<Color> freshPalette(int count, Color& background, Pcg32& rng) {
 std::vector<Color> variedPalette(const std::vector<Color>& palette, Color& background, double strength, Pcg32& rng) {
     const double turn = rng.uniform(-180.0, 180.0) * strength;
     const auto vary = [&](Color c, double value) {
-        Hsl h = toHsl(c);
+        Hsl h = hslOf(c);
         return colorFromHsl(wrapHue(h.h + turn), std::clamp(h.s + rng.uniform(-0.2, 0.2) * strength, 0.0, 1.0),
                             std::clamp(h.l + value, 0.05, 0.95));
     };
@@ -203,7 +171,7 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
 
     std::vector<Genome> children;
     for (int i = 0; i < request.count; ++i) {
-        Pcg32 rng = childRng(request.seed, i);
+        Pcg32 rng = colourwayRng(request.seed, i);
         const std::size_t home = request.mix ? static_cast<std::size_t>(i) % request.parents.size() : 0;
         const auto draw = [&] {
             return request.mix ? mixedColourway(request.parents, home, rng) : colourwayOf(request.parents[0], request.strength, rng);

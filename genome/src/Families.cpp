@@ -14,12 +14,10 @@ namespace marbler {
 namespace {
 
 // Streams of their own, apart from randomGenome's.
-constexpr std::uint64_t PaletteStream = 0x66616d70616c3031ULL;
-constexpr std::uint64_t GroundStream = 0x66616d67726e3031ULL;
-constexpr std::uint64_t StrokeStream = 0x66616d7374723031ULL;
+constexpr std::uint64_t FamilyPaletteStream = 0x66616d70616c3031ULL;
+constexpr std::uint64_t FamilyGroundStream = 0x66616d67726e3031ULL;
+constexpr std::uint64_t FamilyStrokeStream = 0x66616d7374723031ULL;
 
-/// Rounds to a tenth so files stay readable; only basic operations, so it is exact everywhere.
-double tenth(double x) { return std::round(x * 10.0) / 10.0; }
 
 // ---------------------------------------------------------------------------------------
 // Palettes of the tradition
@@ -361,9 +359,18 @@ void tigerEye(Bath& b) {
 void zebra(Bath& b) {
     // The tray covered with bull's-eyes of a dark and a light ink, ring in ring, then drawn
     // into stripes by a wide gel-git and a wave.
+    // The eyes sit on a loose grid and are about as wide as its cells, so together they cover
+    // the whole tray (no bare paper between them once they push each other about).
     const int dark = 0, light = b.inks() > 1 ? 1 : 0;
-    const int eyes = b.ground.between(4, 6);
-    for (int e = 0; e < eyes; ++e) b.rings(b.anywhere(0.0), b.ground.between(12, 18), b.pick(18, 28), dark, light);
+    const int across = b.ground.between(3, 4);
+    const double cell = b.g.size.x / across;
+    for (int i = 0; i < across; ++i)
+        for (int j = 0; j < across; ++j) {
+            const glm::dvec3 at{tenth((i + b.ground.uniform(0.3, 0.7)) * cell), tenth((j + b.ground.uniform(0.3, 0.7)) * cell), 0.0};
+            const int count = b.ground.between(8, 12);
+            const double outer = cell * b.ground.uniform(0.7, 0.8);
+            b.rings(at, count, tenth(outer / std::sqrt(2.0 * count - 1.0)), dark, light);
+        }
     double along = b.axis();
     b.gelGit(along, b.pick(120, 220), b.pick(80, 160), b.pick(20, 40));
     b.wave(along, b.pick(30, 70), b.pick(200, 400));
@@ -471,9 +478,9 @@ Genome familyGenome(const Family& family, std::uint64_t seed) {
     Genome g;
     g.dimension = recipe->family.dimension;
     g.size = {1000.0, 1000.0, 1000.0};
-    Pcg32 paletteRng(seed, PaletteStream);
+    Pcg32 paletteRng(seed, FamilyPaletteStream);
     g.palette = familyPalette(paletteRng, paletteRng.between(recipe->inksLo, recipe->inksHi), g.background);
-    Pcg32 ground(seed, GroundStream), strokes(seed, StrokeStream);
+    Pcg32 ground(seed, FamilyGroundStream), strokes(seed, FamilyStrokeStream);
     Bath bath{ground, strokes, g};
     recipe->make(bath);
     // Stay within the format's limits whatever the draw.

@@ -24,8 +24,6 @@ constexpr std::uint64_t Version2Stream = 0x76657273696f6e32ULL;
 constexpr double Pi = 3.141592653589793;
 constexpr double SqrtHalf = 0.7071067811865476;
 
-/// Rounds to a tenth so files stay readable; only basic operations, so it is exact everywhere.
-double tenth(double x) { return std::round(x * 10.0) / 10.0; }
 
 /// Cube root by Newton's method on the mantissa: std::cbrt is not required to be correctly
 /// rounded, and the generator's output must not depend on the C library.
@@ -56,36 +54,6 @@ glm::dvec3 randomUnit(Pcg32& rng, int dimension) {
 
 // ---------------------------------------------------------------------------------------
 // Palette
-
-struct Hsl {
-    double h, s, l; // degrees, 0..1, 0..1
-};
-
-double wrapHue(double h) {
-    h = std::fmod(h, 360.0);
-    return h < 0.0 ? h + 360.0 : h;
-}
-
-Color toColor(const Hsl& c) {
-    // HSL is piecewise linear in its inputs, so the 8-bit result is the same on every machine.
-    double h = wrapHue(c.h) / 60.0;
-    double s = std::clamp(c.s, 0.0, 1.0), l = std::clamp(c.l, 0.0, 1.0);
-    double chroma = (1.0 - std::abs(2.0 * l - 1.0)) * s;
-    double hm = h - 2.0 * std::floor(h / 2.0);
-    double x = chroma * (1.0 - std::abs(hm - 1.0));
-    double r = 0, g = 0, b = 0;
-    switch (static_cast<int>(h)) {
-    case 0: r = chroma, g = x; break;
-    case 1: r = x, g = chroma; break;
-    case 2: g = chroma, b = x; break;
-    case 3: g = x, b = chroma; break;
-    case 4: r = x, b = chroma; break;
-    default: r = chroma, b = x; break;
-    }
-    double m = l - chroma / 2.0;
-    auto channel = [](double v) { return static_cast<std::uint8_t>(std::clamp(std::round(v * 255.0), 0.0, 255.0)); };
-    return {channel(r + m), channel(g + m), channel(b + m)};
-}
 
 /// Perceived brightness of gamma-encoded sRGB (Rec. 601 luma): good enough to judge contrast.
 double luma(Color c) { return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0; }
@@ -477,7 +445,7 @@ std::vector<Color> randomPalette(Pcg32& rng, Color* background) {
     } else {
         bg = {wrapHue(base + 180.0 + rng.uniform(-20.0, 20.0)), rng.uniform(0.15, 0.4), rng.uniform(0.84, 0.92)};
     }
-    Color bgColor = toColor(bg);
+    Color bgColor = colorFromHsl(bg);
 
     // Lightness spread evenly over the inks, then shuffled, so the stones differ in value too.
     std::vector<double> lightness(static_cast<std::size_t>(count));
@@ -488,7 +456,7 @@ std::vector<Color> randomPalette(Pcg32& rng, Color* background) {
     for (int i = 0; i < count; ++i) {
         Hsl ink{wrapHue(base + offsets[static_cast<std::size_t>(i)] + rng.uniform(-8.0, 8.0)),
                 std::clamp(mood + rng.uniform(-0.15, 0.15), 0.2, 0.95), lightness[static_cast<std::size_t>(i)]};
-        Color c = toColor(ink);
+        Color c = colorFromHsl(ink);
         // Keep every ink visible on the bath and apart from the inks before it.
         for (int attempt = 0; attempt < 8; ++attempt) {
             bool tooCloseToBath = std::abs(luma(c) - luma(bgColor)) < 0.2;
@@ -497,7 +465,7 @@ std::vector<Color> randomPalette(Pcg32& rng, Color* background) {
             if (!tooCloseToBath && !tooCloseToInk) break;
             ink.l = dark ? std::min(0.85, ink.l + 0.07) : std::max(0.15, ink.l - 0.07);
             if (tooCloseToInk) ink.h = wrapHue(ink.h + 25.0);
-            c = toColor(ink);
+            c = colorFromHsl(ink);
         }
         palette.push_back(c);
     }
@@ -680,6 +648,5 @@ Genome randomGenome(std::uint64_t seed, int dimension) {
     return g;
 }
 
-Color colorFromHsl(double hue, double saturation, double lightness) { return toColor({hue, saturation, lightness}); }
 
 } // namespace marbler

@@ -13,12 +13,10 @@ namespace {
 
 // Streams of their own, apart from randomGenome's, so a picture's design of seed N is not a
 // random design of seed N with its inks taken away.
-constexpr std::uint64_t FlowStream = 0x696d616765666c31ULL;
-constexpr std::uint64_t StrokeStream = 0x696d616765737431ULL;
-constexpr std::uint64_t PaletteStream = 0x696d616765706131ULL;
+constexpr std::uint64_t PictureFlowStream = 0x696d616765666c31ULL;
+constexpr std::uint64_t PictureStrokeStream = 0x696d616765737431ULL;
+constexpr std::uint64_t PicturePaletteStream = 0x696d616765706131ULL;
 
-/// Rounds to a tenth, as the random generator does, so files stay readable.
-double tenth(double x) { return std::round(x * 10.0) / 10.0; }
 
 /// The flow that carries the picture: cells over the whole bath, or one cavity filling most of
 /// it. Moves ink by about a tenth to a third of the bath, whatever the design's size.
@@ -72,11 +70,11 @@ Genome imageDesign(std::uint64_t seed, const std::string& image, double aspect, 
     // 1000 units across, at least 50 down (a panorama of 20:1 stays a valid design).
     g.size = {1000.0, std::max(50.0, tenth(1000.0 / aspect)), 1000.0};
     // Inks for later: reinitialising a picture's design drops these on it.
-    Pcg32 paletteRng(seed, PaletteStream);
+    Pcg32 paletteRng(seed, PicturePaletteStream);
     g.palette = randomPalette(paletteRng, &g.background);
     g.source = SourceImage{image};
-    Pcg32 flowRng(seed, FlowStream);
-    Pcg32 strokeRng(seed, StrokeStream);
+    Pcg32 flowRng(seed, PictureFlowStream);
+    Pcg32 strokeRng(seed, PictureStrokeStream);
     // Most designs first let the picture flow, then stroke it; some stroke first.
     std::vector<Operation> strokes = randomStrokes(strokeRng, 2, g.size);
     Operation flow = pictureFlow(flowRng, g.size);

@@ -21,20 +21,8 @@ namespace {
 
 constexpr std::array<std::string_view, 4> OperatorNames{"alter", "recombine", "swap", "reinit"};
 
-/// SplitMix64: spreads a seed and a child index over the whole state of a Pcg32.
-std::uint64_t splitMix64(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ULL;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-    return x ^ (x >> 31);
-}
-
-/// Child i's own random stream: depends on (seed, i) only, so children are reproducible one by
-/// one and asking for more children keeps the first ones.
-Pcg32 childRng(std::uint64_t seed, int index) {
-    auto i = static_cast<std::uint64_t>(index);
-    return Pcg32(splitMix64(seed ^ splitMix64(i)), 0x6272656564000000ULL + i);
-}
+/// Child i's own random stream (Random.h childRng), apart from the colourways'.
+Pcg32 bredChildRng(std::uint64_t seed, int index) { return childRng(seed, index, 0, 0x6272656564000000ULL); }
 
 double largestSide(const Genome& g) { return std::max({g.size.x, g.size.y, g.dimension == 3 ? g.size.z : 0.0}); }
 
@@ -512,7 +500,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
     std::vector<Genome> children;
     children.reserve(static_cast<std::size_t>(request.count));
     for (int i = 0; i < request.count; ++i) {
-        Pcg32 rng = childRng(request.seed, i);
+        Pcg32 rng = bredChildRng(request.seed, i);
         std::size_t home = 0;
         const auto draw = [&] {
             switch (op) {

@@ -12,9 +12,9 @@ namespace {
 
 // Separate streams for the parts of a paper, so that --pastel recolours the same shapes and
 // --passes combs the same drops.
-constexpr std::uint64_t PaletteStream = 0x7061706572706131ULL;
-constexpr std::uint64_t DropStream = 0x7061706572647231ULL;
-constexpr std::uint64_t PassStream = 0x7061706572707331ULL;
+constexpr std::uint64_t PaperPaletteStream = 0x7061706572706131ULL;
+constexpr std::uint64_t PaperDropStream = 0x7061706572647231ULL;
+constexpr std::uint64_t PaperPassStream = 0x7061706572707331ULL;
 
 constexpr double A4Area = 210.0 * 297.0;
 constexpr double A4Spacing = 28.0;   // mm between drop centres of one colour at A4
@@ -176,12 +176,12 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     Genome g;
     g.dimension = 2;
     g.size = {w, h, 1000.0};
-    Pcg32 paletteRng(seed, PaletteStream);
+    Pcg32 paletteRng(seed, PaperPaletteStream);
     g.palette = paperPalette(paletteRng, options.colors, options.pastel, &g.background);
 
     // Drops: one Poisson-disk layer a colour over the sheet and half a spacing round it, so
     // ink reaches the edges; each layer pushes the ones before it aside.
-    Pcg32 dropRng(seed, DropStream);
+    Pcg32 dropRng(seed, PaperDropStream);
     const double margin = 0.5 * spacing;
     const std::size_t perColour = (MaxEntries - MaxPaperPasses) / static_cast<std::size_t>(options.colors);
     for (int layer = 0; layer < options.colors; ++layer) {
@@ -201,7 +201,7 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     // along y at angle 90 from the top right corner (N points left, teeth along x from the
     // right edge). The teeth reach past the sheet by every shift together, so points that an
     // earlier pass sees carried off the sheet by a later one are combed too.
-    Pcg32 passRng(seed, PassStream);
+    Pcg32 passRng(seed, PaperPassStream);
     const double firstShift = spacing * passRng.uniform(0.6, 1.2);
     double reach = margin;
     for (int pass = 0; pass < options.passes; ++pass) reach += firstShift * power(PassShrink, pass);

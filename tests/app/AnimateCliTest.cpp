@@ -24,7 +24,6 @@ namespace {
 
 using test::runMarbler;
 
-std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
 /// The conformance genome saved as a file for the executable.
 std::filesystem::path growthGenomeFile(const std::filesystem::path& dir) {
@@ -156,7 +155,7 @@ void expectBadUsage(const std::vector<std::string>& args, const std::string& men
     for (const auto& entry : std::filesystem::directory_iterator(dir)) before.insert(entry.path());
     auto r = runMarbler(args);
     EXPECT_EQ(r.exitCode, 2) << r.err;
-    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
     for (const auto& entry : std::filesystem::directory_iterator(dir))
         EXPECT_TRUE(before.count(entry.path())) << "left behind: " << entry.path();

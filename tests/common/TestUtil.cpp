@@ -1,9 +1,11 @@
 #include "TestUtil.h"
 
+#include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -23,6 +25,12 @@ std::filesystem::path outputDir(const std::string& name) {
     std::filesystem::create_directories(dir);
     return dir;
 }
+
+std::string examplePath(const std::string& name) { return (dataDir() / "examples" / name).string(); }
+
+Genome loadExample(const std::string& name) { return loadGenome(dataDir() / "examples" / name); }
+
+std::size_t lineCount(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
 
 std::string readFile(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);

@@ -12,11 +12,34 @@
 
 namespace marbler::test {
 
+/// Whether this build runs under AddressSanitizer (dev.sh's second pass), where the CPU renderer
+/// is some ten times slower than in the release build.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool Sanitized = true;
+#else
+inline constexpr bool Sanitized = false;
+#endif
+
+/// `full` in the release build, `reduced` under the sanitiser: for a test that repeats the same
+/// work many times, so that every case of it still runs under the sanitiser, on less of it. The
+/// release build runs it in full.
+template <class T>
+constexpr T fullOrSanitized(T full, T reduced) {
+    return Sanitized ? reduced : full;
+}
+
 /// The committed test data folder (tests/data).
 std::filesystem::path dataDir();
 
 /// A fresh, empty folder under the build tree for one test's outputs (and failure images).
 std::filesystem::path outputDir(const std::string& name);
+
+/// An example design's file (tests/data/examples/NAME), as a command line names it.
+std::string examplePath(const std::string& name);
+/// An example design, loaded.
+Genome loadExample(const std::string& name);
+/// How many lines a text has (its newlines).
+std::size_t lineCount(const std::string& text);
 
 /// Reads a whole file; fails the test (throws) when it cannot.
 std::string readFile(const std::filesystem::path& file);

@@ -15,7 +15,6 @@ std::string genomeFile(const std::string& folder, const std::string& name) {
     return (test::dataDir() / "genome" / folder / (name + ".marble.json")).string();
 }
 
-long lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
 } // namespace
 
@@ -71,7 +70,7 @@ TEST(InfoVerb, WarnsAboutUnknownKeysButSucceeds) {
     std::string file = genomeFile("valid", "unknown-keys");
     test::RunResult run = test::runMarbler({"info", file});
     EXPECT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_EQ(lines(run.err), 3) << run.err;
+    EXPECT_EQ(test::lineCount(run.err), 3) << run.err;
     EXPECT_NE(run.err.find("marbler info: warning: " + file + ": unknown key \"comment\" ignored\n"), std::string::npos)
         << run.err;
     EXPECT_NE(run.out.find("source:     paper.png\n"), std::string::npos) << run.out;
@@ -84,7 +83,7 @@ TEST(InfoVerb, BadGenomeGivesOneLineAndExit2) {
         test::RunResult run = test::runMarbler({"info", file});
         EXPECT_EQ(run.exitCode, 2) << name;
         EXPECT_EQ(run.out, "") << name;
-        EXPECT_EQ(lines(run.err), 1) << run.err;
+        EXPECT_EQ(test::lineCount(run.err), 1) << run.err;
         EXPECT_TRUE(run.err.starts_with("marbler info: " + file + ": ")) << run.err;
     }
     std::string file = genomeFile("invalid", "radius-negative");
@@ -96,7 +95,7 @@ TEST(InfoVerb, BadUsage) {
              {"info"}, {"info", "a.json", "b.json"}, {"info", "--bogus", "a.json"}, {"info", "/no/such/file.marble.json"}}) {
         test::RunResult run = test::runMarbler(args);
         EXPECT_EQ(run.exitCode, 2) << args.back();
-        EXPECT_EQ(lines(run.err), 1) << run.err;
+        EXPECT_EQ(test::lineCount(run.err), 1) << run.err;
     }
 }
 

@@ -15,19 +15,13 @@ namespace {
 using test::runMarbler;
 namespace fs = std::filesystem;
 
-std::string example(const std::string& name) {
-    return (test::dataDir() / "examples" / name).string();
-}
-std::size_t lines(const std::string& text) {
-    return std::count(text.begin(), text.end(), '\n');
-}
 long entries(const fs::path& dir) {
     return std::distance(fs::directory_iterator(dir), {});
 }
 
 TEST(BakeCli, WritesEachFormatWithItsCompanions) {
     const auto dir = test::outputDir("bake-cli-formats");
-    const std::string solid = example("slate-block.marble.json");
+    const std::string solid = test::examplePath("slate-block.marble.json");
     auto r = runMarbler(
         {"bake", solid, "--mesh", "vase", "-o", (dir / "vase.glb").string(), "--texture", "1024", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -42,7 +36,7 @@ TEST(BakeCli, WritesEachFormatWithItsCompanions) {
     EXPECT_EQ(fs::file_size(dir / "cube.bin"), doc["buffers"][0]["byteLength"].get<std::uintmax_t>());
 
     // A flat design is projected onto the object.
-    r = runMarbler({"bake", example("flame-comb-vortex.marble.json"), "--mesh", "cube", "-o",
+    r = runMarbler({"bake", test::examplePath("flame-comb-vortex.marble.json"), "--mesh", "cube", "-o",
                     (dir / "flat.obj").string(), "--texture", "128"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(test::readFile(dir / "flat.mtl").find("map_Kd flat.png"), std::string::npos);
@@ -54,7 +48,7 @@ void expectFailure(const std::vector<std::string>& args, int exitCode, const std
                    const fs::path& dir) {
     auto r = runMarbler(args);
     EXPECT_EQ(r.exitCode, exitCode) << r.err;
-    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
     for (const auto& entry : fs::directory_iterator(dir))
         ADD_FAILURE() << "left behind: " << entry.path();
@@ -63,7 +57,7 @@ void expectFailure(const std::vector<std::string>& args, int exitCode, const std
 TEST(BakeCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     const auto dir = test::outputDir("bake-cli-bad");
     const std::string out = (dir / "out.glb").string();
-    const std::string solid = example("slate-block.marble.json");
+    const std::string solid = test::examplePath("slate-block.marble.json");
     expectFailure({"bake", solid, "--mesh", "dodecahedron", "-o", out}, 2, "dodecahedron", dir);
     expectFailure({"bake", solid, "--mesh", "vase", "-o", (dir / "out.fbx").string()}, 2, "out.fbx", dir);
     expectFailure({"bake", solid, "--mesh", "vase", "-o", out, "--texture", "16385"}, 2, "--texture", dir);
@@ -79,7 +73,7 @@ TEST(BakeCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     expectFailure({"bake", solid, "--slices", "w", "-o", (dir / "s").string()}, 2, "'w'", dir);
     expectFailure({"bake", solid, "--slices", "z", "--count", "0", "-o", (dir / "s").string()}, 2, "--count",
                   dir);
-    expectFailure({"bake", example("five-stones.marble.json"), "--slices", "z", "-o", (dir / "s").string()},
+    expectFailure({"bake", test::examplePath("five-stones.marble.json"), "--slices", "z", "-o", (dir / "s").string()},
                   2, "five-stones", dir);
     // Not the input's fault: exit 1, the file named.
     expectFailure(
@@ -89,7 +83,7 @@ TEST(BakeCli, BadInputExitsTwoWithOneLineAndNoOutput) {
 
 TEST(BakeCli, SlicesAreTheCentresOfEqualLayers) {
     const auto dir = test::outputDir("bake-cli-slices");
-    const std::string solid = example("slate-block.marble.json");
+    const std::string solid = test::examplePath("slate-block.marble.json");
     auto r = runMarbler(
         {"bake", solid, "--slices", "y", "--count", "5", "--width", "64", "-o", (dir / "stack").string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -107,7 +101,7 @@ TEST(BakeCli, BakingOntoABuiltInObjectLoadsNoModule) {
     // The built-in objects and the writers are in the executable; only a mesh file needs assimp
     // (the window module), so a bake onto the vase starts as fast as a render.
     const auto dir = test::outputDir("bake-cli-modules");
-    auto r = runMarbler({"bake", example("slate-block.marble.json"), "--mesh", "cube", "-o",
+    auto r = runMarbler({"bake", test::examplePath("slate-block.marble.json"), "--mesh", "cube", "-o",
                          (dir / "c.glb").string(), "--texture", "64", "--quiet"},
                         {{"LD_DEBUG", "files"}});
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -21,7 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-Genome example(const std::string& name) { return loadGenome(test::dataDir() / "examples" / name); }
 
 std::vector<unsigned char> bytesOf(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -90,7 +89,7 @@ std::string itxt(const std::string& keyword, const std::string& text, bool compr
 
 TEST(GenomeImage, EveryPngAndTiffGivesItsGenomeBack) {
     const fs::path dir = test::outputDir("genome-image-roundtrip");
-    for (const Genome& g : {tiny(), example("five-stones.marble.json"), example("flame-comb-vortex.marble.json")}) {
+    for (const Genome& g : {tiny(), test::loadExample("five-stones.marble.json"), test::loadExample("flame-comb-vortex.marble.json")}) {
         const std::string canonical = serializeGenome(g);
         for (const char* ext : {".png", ".tif", ".tiff"}) {
             const fs::path file = dir / (g.meta.value("name", std::string("x")).substr(0, 4) + ext);
@@ -117,7 +116,7 @@ TEST(GenomeImage, ShortGenomesStayReadableLongOnesAreDeflated) {
     renderToFile(tiny(), small(), dir / "short.png");
     EXPECT_TRUE(fileHolds(dir / "short.png", shortText));
 
-    const Genome big = example("flame-comb-vortex.marble.json");
+    const Genome big = test::loadExample("flame-comb-vortex.marble.json");
     ASSERT_GT(serializeGenome(big).size(), PngCompressAbove);
     renderToFile(big, small(), dir / "long.png");
     EXPECT_FALSE(fileHolds(dir / "long.png", serializeGenome(big)));
@@ -128,7 +127,7 @@ TEST(GenomeImage, ShortGenomesStayReadableLongOnesAreDeflated) {
 
 TEST(GenomeImage, WriteImageCarriesTheGenomeItIsGiven) {
     const fs::path dir = test::outputDir("genome-image-write");
-    const Genome g = example("five-stones.marble.json");
+    const Genome g = test::loadExample("five-stones.marble.json");
     const Image image = CpuRenderer(g).render(small());
     for (const char* ext : {".png", ".tif"}) {
         ExportOptions options;
@@ -221,9 +220,9 @@ TEST(GenomeImage, ATiffDescriptionHoldingAGenomeIsReadToo) {
         EXPECT_GE(TIFFWriteScanline(tiff, pixel, 0, 0), 0);
         TIFFClose(tiff);
     };
-    const std::string text = serializeGenome(example("five-stones.marble.json"));
+    const std::string text = serializeGenome(test::loadExample("five-stones.marble.json"));
     writeTiff(dir / "described.tif", text.c_str());
-    EXPECT_EQ(loadDesign(dir / "described.tif"), example("five-stones.marble.json"));
+    EXPECT_EQ(loadDesign(dir / "described.tif"), test::loadExample("five-stones.marble.json"));
     // A description that is no genome is just a description.
     writeTiff(dir / "scan.tif", "Scanned at 600 dpi");
     EXPECT_THROW(loadDesign(dir / "scan.tif"), InputError);
@@ -288,7 +287,7 @@ void expectEveryTruncationSafe(const std::vector<unsigned char>& bytes, ImageKin
 
 TEST(GenomeImage, TruncatedAndDamagedImagesAreRefused) {
     const fs::path dir = test::outputDir("genome-image-truncated");
-    const Genome g = example("flame-comb-vortex.marble.json");
+    const Genome g = test::loadExample("flame-comb-vortex.marble.json");
     renderToFile(g, small(), dir / "a.png");
     renderToFile(g, small(), dir / "a.tif");
     const std::vector<unsigned char> png = bytesOf(dir / "a.png");
@@ -365,7 +364,6 @@ TEST(GenomeImage, HugeChunksAreRefusedBeforeTheyAreRead) {
 
 // --- the verbs ---------------------------------------------------------------------------------
 
-std::size_t lines(const std::string& text) { return std::size_t(std::count(text.begin(), text.end(), '\n')); }
 
 TEST(GenomeImageCli, VerbsTakeImagesThatCarryGenomes) {
     const fs::path dir = test::outputDir("genome-image-cli");
@@ -402,7 +400,7 @@ TEST(GenomeImageCli, VerbsTakeImagesThatCarryGenomes) {
 
 TEST(GenomeImageCli, PlainBrokenAndForeignImagesAreBadInputOnOneLine) {
     const fs::path dir = test::outputDir("genome-image-cli-bad");
-    const Genome g = example("five-stones.marble.json");
+    const Genome g = test::loadExample("five-stones.marble.json");
     const Image image = CpuRenderer(g).render(small());
     writeImage(image, dir / "plain.png");
     writeImage(image, dir / "plain.tif");
@@ -424,7 +422,7 @@ TEST(GenomeImageCli, PlainBrokenAndForeignImagesAreBadInputOnOneLine) {
             if (std::string(verb) == "render") args.insert(args.end(), {"-o", (dir / "out.png").string()});
             auto r = test::runMarbler(args);
             EXPECT_EQ(r.exitCode, 2) << verb << " " << file;
-            EXPECT_EQ(lines(r.err), 1u) << r.err;
+            EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
             EXPECT_EQ(r.err.find(std::string("marbler ") + verb + ": " + (dir / message).string()), 0u) << r.err;
         }
         EXPECT_FALSE(fs::exists(dir / "out.png"));

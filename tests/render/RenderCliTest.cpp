@@ -13,25 +13,48 @@ namespace {
 
 using test::runMarbler;
 
-std::string example(const std::string& name) { return (test::dataDir() / "examples" / name).string(); }
-std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+TEST(RenderCli, ProgressIsOneLineRewrittenThenClearedAndQuietSaysNothing) {
+    const auto dir = test::outputDir("cli-progress");
+    const std::vector<std::string> render{"render", test::examplePath("five-stones.marble.json"), "-o",
+                                          (dir / "a.png").string(), "--width", "400"};
+    std::vector<std::string> args = render;
+    args.push_back("--progress");
+    auto r = runMarbler(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // The line is rewritten in place (no newline), reaches 100 % and is blanked at the end.
+    EXPECT_EQ(r.err.find('\n'), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("\rrendering 100%"), std::string::npos) << r.err;
+    const std::size_t last = r.err.rfind('\r');
+    ASSERT_NE(last, std::string::npos);
+    EXPECT_EQ(last, r.err.size() - 1) << "the last thing written returns to an empty line";
+    EXPECT_EQ(r.err.find_first_not_of(" \r", r.err.rfind("%") + 1), std::string::npos) << "then blanks it";
+
+    // Not a terminal and no --progress, or --quiet even with it: nothing on stderr.
+    r = runMarbler(render);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    args.push_back("--quiet");
+    r = runMarbler(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+}
 
 TEST(RenderCli, DefaultSizeAndAspect) {
     const auto dir = test::outputDir("cli-sizes");
-    auto r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "a.png").string(), "--threads", "2"});
+    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "a.png").string(), "--threads", "2"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image a = test::readImage8(dir / "a.png");
     EXPECT_EQ(a.width, 1024);
     EXPECT_EQ(a.height, 1024);
 
-    r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "b.png").string(), "--width", "300",
+    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "b.png").string(), "--width", "300",
                     "--region", "0,0,1000,500"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image b = test::readImage8(dir / "b.png");
     EXPECT_EQ(b.width, 300);
     EXPECT_EQ(b.height, 150);
 
-    r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "c.tif").string(), "--height", "100",
+    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "c.tif").string(), "--height", "100",
                     "--region=0,0,1000,500", "--aa", "rgss"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image c = test::readImage8(dir / "c.tif");
@@ -39,7 +62,7 @@ TEST(RenderCli, DefaultSizeAndAspect) {
     EXPECT_EQ(c.height, 100);
 
     // A y slice of the solid example covers x-z.
-    r = runMarbler({"render", example("slate-block.marble.json"), "-o", (dir / "d.png").string(), "--width", "64",
+    r = runMarbler({"render", test::examplePath("slate-block.marble.json"), "-o", (dir / "d.png").string(), "--width", "64",
                     "--slice", "y=500"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readImage8(dir / "d.png").height, 64);
@@ -47,7 +70,7 @@ TEST(RenderCli, DefaultSizeAndAspect) {
 
 TEST(RenderCli, PrintSizeAndDpiSetThePixels) {
     const auto dir = test::outputDir("cli-print");
-    auto r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "p.png").string(), "--size",
+    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "p.png").string(), "--size",
                          "10x5cm", "--dpi", "254", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto in = OIIO::ImageInput::open((dir / "p.png").string());
@@ -56,11 +79,11 @@ TEST(RenderCli, PrintSizeAndDpiSetThePixels) {
     EXPECT_EQ(in->spec().height, 500);
     EXPECT_NEAR(in->spec().get_float_attribute("XResolution"), 254.0f, 0.05f);
     in->close();
-    r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "q.png").string(), "--size", "2x1in",
+    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "q.png").string(), "--size", "2x1in",
                     "--dpi", "50"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readImage8(dir / "q.png").width, 100);
-    r = runMarbler({"render", example("five-stones.marble.json"), "-o", (dir / "r.png").string(), "--size", "20x10mm",
+    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "r.png").string(), "--size", "20x10mm",
                     "--dpi", "127"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readImage8(dir / "r.png").width, 100);
@@ -71,7 +94,7 @@ void expectFailure(const std::vector<std::string>& args, int exitCode, const std
                    const std::filesystem::path& out) {
     auto r = runMarbler(args);
     EXPECT_EQ(r.exitCode, exitCode) << r.err;
-    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << out;
     for (const auto& entry : std::filesystem::directory_iterator(out.parent_path()))
@@ -81,7 +104,7 @@ void expectFailure(const std::vector<std::string>& args, int exitCode, const std
 TEST(RenderCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     const auto dir = test::outputDir("cli-bad");
     const std::string out = (dir / "out.png").string();
-    const std::string good = example("five-stones.marble.json");
+    const std::string good = test::examplePath("five-stones.marble.json");
     test::writeFile(dir.parent_path() / "broken.marble.json", "{\"format\": \"marbler-genome\", ");
     expectFailure({"render", (dir.parent_path() / "broken.marble.json").string(), "-o", out}, 2, "broken.marble.json", out);
     expectFailure({"render", (dir.parent_path() / "absent.marble.json").string(), "-o", out}, 2, "absent.marble.json", out);
@@ -91,7 +114,7 @@ TEST(RenderCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     expectFailure({"render", good, "-o", out, "--aa", "fxaa"}, 2, "fxaa", out);
     expectFailure({"render", good, "-o", out, "--region", "5,5,5,9"}, 2, "region", out);
     expectFailure({"render", good, "-o", out, "--slice", "z=10"}, 2, "five-stones", out);
-    expectFailure({"render", example("slate-block.marble.json"), "-o", out}, 2, "slate-block", out);
+    expectFailure({"render", test::examplePath("slate-block.marble.json"), "-o", out}, 2, "slate-block", out);
     expectFailure({"render", good, "-o", out, "--size", "10x10cm"}, 2, "--dpi", out);
     expectFailure({"render", good, "-o", out, "--size", "10x10furlong", "--dpi", "300"}, 2, "--size", out);
     expectFailure({"render", good, "-o", (dir / "out.xyz").string()}, 2, "out.xyz", dir / "out.xyz");
@@ -102,9 +125,9 @@ TEST(RenderCli, BadInputExitsTwoWithOneLineAndNoOutput) {
 TEST(RenderCli, UnwritableFolderExitsOne) {
     const auto dir = test::outputDir("cli-unwritable");
     const auto out = dir / "no" / "such" / "folder" / "out.png";
-    auto r = runMarbler({"render", example("five-stones.marble.json"), "-o", out.string(), "--width", "16"});
+    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", out.string(), "--width", "16"});
     EXPECT_EQ(r.exitCode, 1) << r.err;
-    EXPECT_EQ(lines(r.err), 1u) << r.err;
+    EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find("out.png"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(out));
 }
@@ -112,19 +135,19 @@ TEST(RenderCli, UnwritableFolderExitsOne) {
 TEST(RenderCli, GpuEitherRendersOrSaysWhyNot) {
     const auto dir = test::outputDir("cli-gpu");
     const auto out = dir / "gpu.png";
-    auto r = runMarbler({"render", example("five-stones.marble.json"), "-o", out.string(), "--width", "32", "--gpu"});
+    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", out.string(), "--width", "32", "--gpu"});
     if (r.exitCode == 0) {
         EXPECT_EQ(test::readImage8(out).width, 32);
     } else {
         EXPECT_EQ(r.exitCode, 1) << r.err;
-        EXPECT_EQ(lines(r.err), 1u) << r.err;
+        EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
         EXPECT_FALSE(std::filesystem::exists(out));
     }
 }
 
 TEST(RenderCli, MirrorRepeatWrapsWithoutASeam) {
     const auto dir = test::outputDir("cli-repeat");
-    const std::string genome = example("flame-comb-vortex.marble.json");
+    const std::string genome = test::examplePath("flame-comb-vortex.marble.json");
     auto r = runMarbler({"render", genome, "-o", (dir / "design.png").string(), "--width", "96", "--height", "64",
                          "--aa", "rgss", "--region", "100,200,700,600"});
     ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -50,9 +50,6 @@ struct SourceFolders {
     }
 };
 
-std::size_t lines(const std::string& text) {
-    return std::size_t(std::count(text.begin(), text.end(), '\n'));
-}
 
 TEST(SourcePath, LocatesEveryKindOfSource) {
     SourceFolders f;
@@ -132,7 +129,7 @@ TEST(SourcePathCli, RenderRefusesOutsideSourcesUnlessAllowed) {
         const fs::path file = f.genome("shared", image);
         auto r = runMarbler({"render", file.string(), "-o", out.string(), "--width", "40"});
         EXPECT_EQ(r.exitCode, 2) << image << ": " << r.err;
-        EXPECT_EQ(lines(r.err), 1u) << r.err;
+        EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
         EXPECT_EQ(r.err.find("marbler render: " + file.string() + ": source.image: "), 0u) << r.err;
         EXPECT_NE(r.err.find("outside the genome's folder"), std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(out)) << image;

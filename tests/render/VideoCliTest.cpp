@@ -22,13 +22,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int Frames = 5, InWidth = 64, InHeight = 48;
+constexpr int InFrames = 5, InWidth = 64, InHeight = 48;
 
 /// A short video of colour gradients that move from frame to frame.
 fs::path writeInput(const fs::path& file, double fps) {
     auto writer = openVideoWriter(file, InWidth, InHeight, fps);
     std::vector<std::uint8_t> rgb(std::size_t(InWidth) * InHeight * 3);
-    for (int k = 0; k < Frames; ++k) {
+    for (int k = 0; k < InFrames; ++k) {
         for (int y = 0; y < InHeight; ++y)
             for (int x = 0; x < InWidth; ++x) {
                 std::uint8_t* p = rgb.data() + (std::size_t(y) * InWidth + std::size_t(x)) * 3;
@@ -59,8 +59,12 @@ TEST(VideoCli, EveryFrameIsTheRenderWithThatFrameAsTheSource) {
     const fs::path in = writeInput(dir / "in.mp4", 25.0);
     const fs::path genomeFile = writeGenome(dir, "frame.png");
     test::RunResult r = test::runMarbler({"video", genomeFile.string(), in.string(), "-o", (dir / "out").string(),
-                                          "--width", "96", "--aa", "rgss"});
+                                          "--width", "96", "--aa", "rgss", "--progress"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    // Progress names each frame on one line rewritten in place, blanked at the end.
+    EXPECT_NE(r.err.find("\rmarbling frame " + std::to_string(InFrames)), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.back(), '\r') << r.err;
 
     // The reference: each decoded frame written as the genome's source image file and rendered
     // as `render` renders it.
@@ -85,7 +89,7 @@ TEST(VideoCli, EveryFrameIsTheRenderWithThatFrameAsTheSource) {
         EXPECT_EQ(test::compareImages(got, expected, 0).maxDifference, 0) << name;
         ++k;
     }
-    EXPECT_EQ(k, Frames);
+    EXPECT_EQ(k, InFrames);
     EXPECT_FALSE(fs::exists(dir / "out" / "frame-0005.png"));
     // The frames carry the genome, as every PNG Marbler writes does.
     EXPECT_EQ(loadDesign((dir / "out" / "frame-0000.png").string()).palette, loadGenome(genomeFile).palette);
@@ -123,7 +127,7 @@ TEST(VideoCli, AVideoOutKeepsTheInputsRateAndWidth) {
         std::vector<std::uint8_t> rgb;
         int count = 0;
         while (out->nextFrame(rgb)) ++count;
-        EXPECT_EQ(count, Frames) << name;
+        EXPECT_EQ(count, InFrames) << name;
     }
 }
 

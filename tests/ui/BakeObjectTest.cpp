@@ -23,9 +23,6 @@
 namespace marbler::ui {
 namespace {
 
-Genome example(const char* name) {
-    return loadGenome(test::dataDir() / "examples" / name);
-}
 
 class BakeObjectTest : public ::testing::Test {
 protected:
@@ -43,8 +40,8 @@ protected:
 
 TEST_F(BakeObjectTest, TheLargeViewOffersItForSolidDesignsOnly) {
     RenderService service(RenderService::Backend::Cpu);
-    DesignDialog solid(example("slate-block.marble.json"), &service, QStringLiteral("cube"));
-    DesignDialog flat(example("five-stones.marble.json"), &service, QStringLiteral("cube"));
+    DesignDialog solid(test::loadExample("slate-block.marble.json"), &service, QStringLiteral("cube"));
+    DesignDialog flat(test::loadExample("five-stones.marble.json"), &service, QStringLiteral("cube"));
     EXPECT_NE(solid.findChild<QPushButton*>(QStringLiteral("bakeObject")), nullptr);
     EXPECT_EQ(flat.findChild<QPushButton*>(QStringLiteral("bakeObject")), nullptr);
 }
@@ -58,7 +55,7 @@ TEST_F(BakeObjectTest, WritesTheObjectAsGlbWithTheDesignsName) {
     QWidget parent;
     QStringList written;
     QPushButton* button = makeBakeButton(
-        &parent, [] { return example("slate-block.marble.json"); }, QStringLiteral("cube"),
+        &parent, [] { return test::loadExample("slate-block.marble.json"); }, QStringLiteral("cube"),
         [&](const QString& file) { written << file; }, 256);
     button->click();
     MARBLER_WAIT(!written.isEmpty() || !mErrors.isEmpty(), 120000);
@@ -81,7 +78,7 @@ TEST_F(BakeObjectTest, AnotherFormatIsReportedAndNothingWritten) {
     QWidget parent;
     QStringList written;
     QPushButton* button = makeBakeButton(
-        &parent, [] { return example("slate-block.marble.json"); }, QStringLiteral("cube"),
+        &parent, [] { return test::loadExample("slate-block.marble.json"); }, QStringLiteral("cube"),
         [&](const QString& file) { written << file; }, 256);
     button->click();
     ASSERT_EQ(mErrors.size(), 1);

@@ -269,6 +269,22 @@ TEST(EditorDocument, ADragMergesIntoOneUndoStep) {
     EXPECT_TRUE(doc.design() == original);
 }
 
+TEST(EditorDocument, ADragThatEndsWhereItBeganLeavesNoStepAndNoChange) {
+    // A colour dialog moved about, then cancelled: its last colour is the first one again.
+    const Genome original = sample();
+    EditorDocument doc(original);
+    QUndoStack& stack = *doc.undoStack();
+    const Color first = original.palette[0];
+    for (Color c : {Color{0x20, 0, 0}, Color{0x40, 0, 0}, first}) doc.setPaletteColor(0, c, 11);
+    EXPECT_EQ(stack.count(), 0) << (stack.count() ? text(stack.text(0)) : std::string());
+    EXPECT_FALSE(doc.isModified());
+    EXPECT_TRUE(doc.design() == original);
+    // A real change after it is an entry as usual.
+    doc.setPaletteColor(0, Color{1, 2, 3}, 12);
+    EXPECT_EQ(stack.count(), 1);
+    EXPECT_TRUE(doc.isModified());
+}
+
 TEST(EditorDocument, MutedStepsRoundTripThroughAFile) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());

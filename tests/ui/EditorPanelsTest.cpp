@@ -564,4 +564,13 @@ TEST(AnimationExport, AFramesFolderMustBeNewOrEmptyAndTheDialogSaysWhatToWrite) 
     EXPECT_EQ(dialog.settings().path, dir.filePath(QStringLiteral("making.mp4")));
     format->setCurrentIndex(format->findData(int(AnimationFormat::PngFrames)));
     EXPECT_EQ(dialog.settings().path, dir.filePath(QStringLiteral("making")));
+    // A name typed without its extension gets it: the file said written is the file written.
+    auto* path = dialog.findChild<QLineEdit*>(QStringLiteral("animationPath"));
+    ASSERT_NE(path, nullptr);
+    format->setCurrentIndex(format->findData(int(AnimationFormat::WebM)));
+    path->setText(dir.filePath(QStringLiteral("typed")));
+    EXPECT_EQ(dialog.settings().path, dir.filePath(QStringLiteral("typed.webm")));
+    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/b.GIF"), AnimationFormat::Gif), QStringLiteral("a/b.GIF"));
+    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/b.gif"), AnimationFormat::Mp4), QStringLiteral("a/b.gif.mp4"));
+    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/frames"), AnimationFormat::PngFrames), QStringLiteral("a/frames"));
 }

@@ -5,6 +5,7 @@
 #include "UiTestSupport.h"
 #include "WaitFor.h"
 #include "editor/EditorCanvas.h"
+#include "editor/EditorDocument.h"
 #include "editor/EditorWindow.h"
 #include "editor/ParamForm.h"
 #include "editor/Recovery.h"
@@ -18,6 +19,10 @@
 #include "ui/OpenPlacement.h"
 #include "ui/SavedFiles.h"
 
+#include <QAbstractButton>
+#include <QFileInfo>
+#include <QListWidget>
+#include <QStatusBar>
 #include <QPushButton>
 #include <QTemporaryDir>
 #include <QTest>
@@ -25,6 +30,8 @@
 #include <QUndoView>
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace marbler;
 using namespace marbler::ui;
@@ -222,8 +229,75 @@ TEST_F(EditorWindowTest, ARecoveredAutosaveIsTheDesignThatWasBeingEdited) {
     EXPECT_EQ(text(back->document()->design()), text(edited));
     EXPECT_TRUE(back->document()->isMuted(1));
     EXPECT_TRUE(back->document()->isModified()) << "recovered changes are not saved yet";
-    back->close();
+
+    // A second crash before any edit loses nothing either: the recovered design was written
+    // again at once, before the old recovery file went.
+    const QString second = back->autosave()->file();
+    ASSERT_TRUE(QFile::exists(second));
+    const QString folder = QFileInfo(second).absolutePath();
+    delete back;
+    const auto again = pendingRecoveries(folder);
+    const auto it = std::find_if(again.begin(), again.end(), [&](const RecoveredDesign& r) { return r.recoveryFile == second; });
+    ASSERT_NE(it, again.end());
+    EXPECT_EQ(text(EditorDocument(it->design).design()), text(edited));
+    EXPECT_TRUE(discardRecovery(it->recoveryFile));
     EXPECT_TRUE(pendingRecoveries(mRecovery.path()).empty());
+}
+
+TEST_F(EditorWindowTest, StepKeysWorkFromTheStepListAndTheCanvas) {
+    // Ctrl+D, M and Del are the step list's and the Edit menu's alike: one action each, so that
+    // where both apply the key is not ambiguous (Qt would then run neither).
+    EditorWindow* editor = open(randomGenome(8, 2));
+    EditorDocument* doc = editor->document();
+    const std::size_t steps = doc->stepCount();
+    ASSERT_GE(steps, 3u);
+    editor->activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(editor));
+    editor->selectStep(1);
+    QWidget* list = editor->findChild<StepList*>()->list();
+    list->setFocus();
+    QTest::keyClick(list, Qt::Key_D, Qt::ControlModifier);
+    EXPECT_EQ(doc->stepCount(), steps + 1) << "Ctrl+D in the list duplicates";
+    editor->selectStep(1);
+    QTest::keyClick(list, Qt::Key_M);
+    EXPECT_TRUE(doc->isMuted(1)) << "M in the list mutes";
+    editor->canvas()->setFocus();
+    editor->selectStep(2);
+    QTest::keyClick(editor->canvas(), Qt::Key_Delete);
+    EXPECT_EQ(doc->stepCount(), steps) << "Del on the canvas deletes";
+    QTest::keyClick(editor->canvas(), Qt::Key_D, Qt::ControlModifier);
+    EXPECT_EQ(doc->stepCount(), steps) << "nothing selected after a delete: Ctrl+D does nothing";
+    editor->selectStep(0);
+    QTest::keyClick(editor->canvas(), Qt::Key_D, Qt::ControlModifier);
+    EXPECT_EQ(doc->stepCount(), steps + 1) << "Ctrl+D on the canvas duplicates";
+    editor->close();
+}
+
+TEST_F(EditorWindowTest, APickedInkIsTheInkTheToolsLay) {
+    Genome design = blankDesign(2);
+    design.palette = {Color{200, 30, 30}, Color{30, 30, 200}};
+    EditorWindow* editor = open(design);
+    EditorCanvas* canvas = editor->canvas();
+    MARBLER_WAIT(canvas->view().scale() > 0.0, 5000);
+    // A drop of ink 1, then ink 2 chosen in the palette, then the drop picked: ink 1 again.
+    editor->setTool(EditorTool::Drop);
+    drag(canvas, {500.0, 400.0}, {500.0, 400.0});
+    ASSERT_EQ(editor->document()->stepCount(), 1u);
+    ASSERT_EQ(editor->document()->step(0).color, 0);
+    auto* second = editor->findChild<QAbstractButton*>(QStringLiteral("inkSwatch1"));
+    ASSERT_NE(second, nullptr);
+    second->click();
+    EXPECT_EQ(canvas->toolSettings().color, 1);
+    editor->setTool(EditorTool::Pick);
+    const double inside = 0.5 * editor->document()->step(0).radius; // off the centre's handle
+    drag(canvas, {500.0, 400.0 + inside}, {500.0, 400.0 + inside});
+    EXPECT_EQ(canvas->toolSettings().color, 0) << "the picked ink is the one the tools lay next; "
+                                                << editor->statusBar()->currentMessage().toStdString();
+    editor->setTool(EditorTool::Drop);
+    drag(canvas, {200.0, 200.0}, {200.0, 200.0});
+    ASSERT_EQ(editor->document()->stepCount(), 2u);
+    EXPECT_EQ(editor->document()->step(1).color, 0);
+    editor->close();
 }
 
 TEST_F(EditorWindowTest, ASolidIsEditedOnItsCrossSectionBesideItsObject) {

@@ -49,9 +49,6 @@ struct ExportSwatchTest : test::WindowTest {
     QTemporaryDir dir;
 };
 
-Genome example(const char* name) {
-    return loadGenome(test::dataDir() / "examples" / name);
-}
 
 /// The vertices of every path in an SVG written by toSvg ("M x yLx y x y …Z").
 std::size_t pathVertices(const std::string& svg) {
@@ -77,7 +74,7 @@ std::size_t pathVertices(const std::string& svg) {
 }
 
 TEST_F(ExportSwatchTest, SvgExportWritesWhatMarblerSvgWrites) {
-    const Genome genome = example("five-stones.marble.json");
+    const Genome genome = test::loadExample("five-stones.marble.json");
     ExportSettingsDialog settings(genome);
     auto* format = settings.findChild<QComboBox*>(QStringLiteral("exportFormat"));
     auto* width = settings.findChild<QDoubleSpinBox*>(QStringLiteral("exportWidth"));
@@ -123,7 +120,7 @@ TEST_F(ExportSwatchTest, SvgExportWritesWhatMarblerSvgWrites) {
 }
 
 TEST_F(ExportSwatchTest, SolidsDoNotOfferSvgAndAreRefusedWithTheLibrarysReason) {
-    const Genome genome = example("slate-block.marble.json");
+    const Genome genome = test::loadExample("slate-block.marble.json");
     ASSERT_EQ(genome.dimension, 3);
     ExportSettingsDialog settings(genome);
     auto* format = settings.findChild<QComboBox*>(QStringLiteral("exportFormat"));
@@ -152,7 +149,7 @@ TEST_F(ExportSwatchTest, SolidsDoNotOfferSvgAndAreRefusedWithTheLibrarysReason) 
 }
 
 TEST_F(ExportSwatchTest, RepeatExportIsTheMirrorTileOfAPlainExport) {
-    const Genome genome = example("five-stones.marble.json");
+    const Genome genome = test::loadExample("five-stones.marble.json");
     ExportSettingsDialog settings(genome);
     auto* repeat = settings.findChild<QCheckBox*>(QStringLiteral("exportRepeat"));
     ASSERT_NE(repeat, nullptr);
@@ -208,7 +205,7 @@ bool isMirrorTiled(const QImage& image) {
 }
 
 TEST_F(ExportSwatchTest, SwatchShowsTheWholeDesignTiledAndIsRemembered) {
-    const Genome genome = example("five-stones.marble.json");
+    const Genome genome = test::loadExample("five-stones.marble.json");
     QSettings().remove(QStringLiteral("view/repeatSwatch"));
     {
         DesignDialog dialog(genome, mService.get(), QStringLiteral("vase"));
@@ -255,7 +252,7 @@ TEST_F(ExportSwatchTest, SwatchShowsTheWholeDesignTiledAndIsRemembered) {
     }
     // A solid has no repeat: the toggle is off and greyed out, whatever was remembered.
     QSettings().setValue(QStringLiteral("view/repeatSwatch"), true);
-    DesignDialog solid(example("slate-block.marble.json"), mService.get(), QStringLiteral("sphere"));
+    DesignDialog solid(test::loadExample("slate-block.marble.json"), mService.get(), QStringLiteral("sphere"));
     EXPECT_FALSE(solid.repeatSwatch());
     EXPECT_FALSE(solid.findChild<QToolButton*>(QStringLiteral("repeatSwatch"))->isEnabled());
 }

@@ -46,7 +46,6 @@ std::vector<std::string> gridText(const PopulationModel& model) {
     return result;
 }
 
-Genome example(const char* name) { return loadGenome(test::dataDir() / "examples" / name); }
 
 class MetadataTest : public test::WindowTest {
 protected:
@@ -84,8 +83,8 @@ protected:
 };
 
 TEST_F(MetadataTest, ImagesWithAGenomeOpenLikeGenomeFiles) {
-    const Genome stones = example("five-stones.marble.json");
-    const Genome flame = example("flame-comb-vortex.marble.json");
+    const Genome stones = test::loadExample("five-stones.marble.json");
+    const Genome flame = test::loadExample("flame-comb-vortex.marble.json");
     const QString png = imageOf(stones, QStringLiteral("stones.png"));
     const QString tif = imageOf(flame, QStringLiteral("flame.tif"));
 
@@ -112,7 +111,7 @@ TEST_F(MetadataTest, ImagesWithAGenomeOpenLikeGenomeFiles) {
 TEST_F(MetadataTest, APlainImageIsRefusedAndChangesNothing) {
     RenderSettings s;
     s.width = s.height = 32;
-    const Image pixels = CpuRenderer(example("five-stones.marble.json")).render(s);
+    const Image pixels = CpuRenderer(test::loadExample("five-stones.marble.json")).render(s);
     writeImage(pixels, file(QStringLiteral("plain.png")).toStdString());
     const auto before = gridText(model());
     const std::size_t generations = model().history().size();
@@ -181,14 +180,14 @@ TEST_F(MetadataTest, CopyAndPasteADesignWithTheKeys) {
 
 TEST_F(MetadataTest, PastedTextFromElsewhereAndCopiedFilesWork) {
     // Genome text typed or copied in another program: plain text only.
-    const Genome flame = example("flame-comb-vortex.marble.json");
+    const Genome flame = test::loadExample("flame-comb-vortex.marble.json");
     QApplication::clipboard()->setText(QString::fromStdString(serializeGenome(flame)));
     model().setSelected(0, true);
     ASSERT_TRUE(mWindow->pasteDesign());
     EXPECT_EQ(serializeGenome(*model().cell(0)), serializeGenome(flame));
 
     // Files copied in a file manager open as files, images with a genome among them.
-    const Genome stones = example("five-stones.marble.json");
+    const Genome stones = test::loadExample("five-stones.marble.json");
     auto* mime = new QMimeData;
     mime->setUrls({QUrl::fromLocalFile(imageOf(stones, QStringLiteral("copied.png")))});
     mime->setText(file(QStringLiteral("copied.png")));
@@ -210,7 +209,7 @@ TEST_F(MetadataTest, BadClipboardTextIsSaidOnTheStatusBarAndChangesNothing) {
         << status().toStdString();
 
     // A genome that breaks a rule names its place.
-    std::string bad = serializeGenome(example("five-stones.marble.json"));
+    std::string bad = serializeGenome(test::loadExample("five-stones.marble.json"));
     bad.replace(bad.find("\"radius\": "), 10, "\"radius\": -");
     QApplication::clipboard()->setText(QString::fromStdString(bad));
     EXPECT_FALSE(mWindow->pasteDesign());

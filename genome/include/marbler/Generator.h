@@ -32,10 +32,6 @@ Genome randomGenome(std::uint64_t seed, int dimension);
 /// or monochrome-with-accent around a random base hue) and a background that sets them off.
 std::vector<Color> randomPalette(Pcg32& rng, Color* background = nullptr);
 
-/// An sRGB colour from hue (degrees), saturation and lightness (0 to 1, clamped). HSL is
-/// piecewise linear, so the 8-bit result is the same on every machine.
-Color colorFromHsl(double hue, double saturation, double lightness);
-
 /// A new initial state (stone pattern of drops, bull's-eyes, occasional sprays, and in 3D ink
 /// columns) for a genome with the given dimension, size and palette size (>= 1).
 std::vector<Operation> randomInitial(Pcg32& rng, int dimension, const glm::dvec3& size, int paletteSize);

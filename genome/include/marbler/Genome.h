@@ -119,4 +119,17 @@ std::optional<Color> parseHexColor(const std::string& text);
 /// pair is, after Riemersma). Only basic operations, so the same on every machine.
 double colorDistance2(Color a, Color b);
 
+/// Hue (degrees, [0, 360)), saturation and lightness (0 to 1) of an sRGB colour.
+struct Hsl {
+    double h = 0.0, s = 0.0, l = 0.0;
+};
+/// A colour's HSL, with basic operations only (colorFromHsl's inverse).
+Hsl hslOf(Color c);
+/// An sRGB colour from HSL (hue wrapped, saturation and lightness clamped). HSL is piecewise
+/// linear, so the 8-bit result is the same on every machine.
+Color colorFromHsl(const Hsl& c);
+Color colorFromHsl(double hue, double saturation, double lightness);
+/// An angle in degrees wrapped into [0, 360).
+double wrapHue(double h);
+
 } // namespace marbler

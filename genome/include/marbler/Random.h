@@ -63,4 +63,24 @@ private:
     std::uint64_t mInc = 0xda3e39cb94b95bdbULL;
 };
 
+/// SplitMix64 (Steele, Lea and Flood 2014): spreads a 64-bit value over all 64 bits.
+constexpr std::uint64_t splitMix64(std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+/// Child `index`'s own random stream: it depends on (seed, index) only, so children are
+/// reproducible one by one and asking for more keeps the first ones. `salt` and `stream` keep
+/// one kind of child (bred, colourway) apart from another of the same seed.
+inline Pcg32 childRng(std::uint64_t seed, int index, std::uint64_t salt, std::uint64_t stream) {
+    const auto i = static_cast<std::uint64_t>(index);
+    return Pcg32(splitMix64(seed ^ splitMix64(i + salt)), stream + i);
+}
+
+/// Rounds to a tenth so generated files stay readable; only basic operations, so the result is
+/// the same everywhere.
+inline double tenth(double x) { return std::round(x * 10.0) / 10.0; }
+
 } // namespace marbler
