@@ -393,7 +393,9 @@ void firstPaper(Bath& b) {
 // Solid families.
 
 void veined(Bath& b) {
-    // Spheres of ink, big first, then thin 3D combs drawing them into veins.
+    // A ground of the first ink through the whole block (marble has no holes: a sphere to its
+    // corners), spheres of ink in it, big first, then thin 3D combs drawing them into veins.
+    b.drop(0.5 * b.g.size, 0.5 * glm::length(b.g.size) + 10.0, 0);
     b.stone(b.pick(170, 230), 0.7, b.ground.between(12, 18), 1.2);
     int a = static_cast<int>(b.rng.below(3));
     b.comb3(boxAxis(a), boxAxis(a + 1), b.pick(150, 260), b.pick(100, 200), b.pick(5, 15));
@@ -404,12 +406,13 @@ void veined(Bath& b) {
 void agate(Bath& b) {
     // Columns one in another, the colours alternating: the bands of agate, then waved.
     b.column(0.5 * b.g.size, boxAxis(2), 720.0, 0); // the ground, to the box's corners
-    const int centres = b.ground.between(1, 3);
+    // Wide enough together to band most of the stone, not to leave a plain block round them.
+    const int centres = b.ground.between(2, 3);
     for (int c = 0; c < centres; ++c) {
         glm::dvec3 at = b.anywhere(-0.15);
         glm::dvec3 axisVector = boxAxis(static_cast<int>(b.ground.below(3)));
-        const int bands = b.ground.between(6, 12);
-        const double width = b.pick(12, 28);
+        const int bands = b.ground.between(9, 14);
+        const double width = b.pick(22, 38);
         // As Bath::rings: the widest column first, so the bands come out equally wide.
         for (int k = bands; k >= 1; --k)
             b.column(at, axisVector, width * std::sqrt(2.0 * k - 1.0), 1 + (k % std::max(1, b.inks() - 1)));
