@@ -6,6 +6,7 @@
 #include <QDropEvent>
 #include <QListWidget>
 #include <QMenu>
+#include <QTimer>
 #include <QVBoxLayout>
 
 namespace marbler::ui {
@@ -106,11 +107,23 @@ void StepList::setRows(const std::vector<StepRow>& rows) {
 
 std::size_t StepList::rowCount() const { return std::size_t(mList->count()); }
 
+void StepList::scrollToCurrent() {
+    if (QListWidgetItem* item = mList->currentItem()) mList->scrollToItem(item, QAbstractItemView::PositionAtCenter);
+}
+
+void StepList::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    // Only when the row would be hidden: a resize does not move a list the user scrolled about.
+    QTimer::singleShot(0, this, [this] {
+        if (QListWidgetItem* item = mList->currentItem()) mList->scrollToItem(item, QAbstractItemView::EnsureVisible);
+    });
+}
+
 void StepList::setCurrent(std::optional<std::size_t> row) {
     mUpdating = true;
     if (row && *row < rowCount()) {
         mList->setCurrentRow(int(*row));
-        mList->scrollToItem(mList->currentItem(), QAbstractItemView::PositionAtCenter);
+        scrollToCurrent();
     } else {
         mList->setCurrentRow(-1);
         mList->clearSelection();

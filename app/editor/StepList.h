@@ -59,7 +59,13 @@ signals:
     /// Del or the context menu asks to delete the step.
     void deleteRequested(std::size_t row);
 
+protected:
+    /// Keeps the current row in view as the list is resized (its dock laid out or dragged): a
+    /// row chosen while the list had another size would otherwise sit out of view.
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
+    void scrollToCurrent();
     void showMenu(const QPoint& pos);
     void toggleMuteOfCurrent();
     StepListView* mList;

@@ -15,6 +15,7 @@
 #include "marbler/GenomeImage.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Growth.h"
+#include "marbler/Params.h"
 #include "ui/DesignDialog.h"
 #include "ui/OpenPlacement.h"
 #include "ui/SavedFiles.h"
@@ -297,6 +298,28 @@ TEST_F(EditorWindowTest, APickedInkIsTheInkTheToolsLay) {
     drag(canvas, {200.0, 200.0}, {200.0, 200.0});
     ASSERT_EQ(editor->document()->stepCount(), 2u);
     EXPECT_EQ(editor->document()->step(1).color, 0);
+    editor->close();
+}
+
+TEST_F(EditorWindowTest, TheSelectedStepStaysInViewAsTheListIsResized) {
+    // A long design opened on its last step: the step list shows that row, and still does when
+    // the window (so the list's dock) is made smaller.
+    Genome design = blankDesign(2);
+    for (int i = 0; i < 120; ++i) design.initial.push_back(defaultOperation(Tool::Drop, 2, {5.0 * i, 400.0, 0.0}));
+    auto* editor = new EditorWindow(design, mService.get(), {}, mWindow.get(), mRecovery.path());
+    editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+    editor->selectStep(119);
+    editor->resize(1200, 850);
+    editor->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(editor));
+    QListWidget* view = editor->findChild<StepList*>()->list();
+    ASSERT_EQ(view->currentRow(), 119);
+    const auto inView = [view] { return view->viewport()->rect().contains(view->visualItemRect(view->item(119)).center()); };
+    MARBLER_WAIT(inView(), 5000);
+    // The window made smaller under it (the row was centred in the taller list): still in view.
+    editor->resize(1200, 420);
+    MARBLER_WAIT(view->viewport()->height() < 200, 5000);
+    MARBLER_WAIT(inView(), 5000);
     editor->close();
 }
 
