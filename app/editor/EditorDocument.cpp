@@ -5,6 +5,7 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
 
+#include <QCryptographicHash>
 #include <QFile>
 #include <QUndoCommand>
 #include <QtGlobal>
@@ -17,16 +18,27 @@
 
 namespace marbler::ui {
 
-namespace {
-
 /// What one edit changes, whole: the design and the muted flags (a genome is a few kilobytes,
-/// so whole snapshots are simpler and safer than diffs).
+/// so whole snapshots are simpler and safer than diffs). Commands and branches share them.
 struct EditorState {
     Genome design;
     std::vector<bool> muted;
 
     bool operator==(const EditorState& o) const { return design == o.design && muted == o.muted; }
 };
+
+using StatePtr = std::shared_ptr<const EditorState>;
+
+struct EditorDocument::Line {
+    struct Edit {
+        QString text;
+        StatePtr before;
+        StatePtr after;
+    };
+    std::vector<Edit> edits;
+};
+
+namespace {
 
 /// How a merged command names the change from its first state to its last.
 using Describe = std::function<QString(const EditorState& before, const EditorState& after)>;
@@ -94,6 +106,21 @@ void insertStep(EditorState& s, std::size_t index, const Operation& op, bool ini
         g.operations.insert(g.operations.begin() + static_cast<std::ptrdiff_t>(index - g.initial.size()), op);
     }
     s.muted.insert(s.muted.begin() + static_cast<std::ptrdiff_t>(index), muted);
+}
+
+/// Where a step of `tool` added as step `at` of `g` goes: its index, and whether in `initial`.
+/// A tool that may stand in `initial` goes there when `at` is within it or at its end (the
+/// same place in the design's order, and `initial` is where a design's inks are read).
+struct Place {
+    std::size_t index;
+    bool initial;
+};
+Place placeFor(const Genome& g, Tool tool, std::size_t at) {
+    const std::size_t initialCount = g.initial.size();
+    const std::size_t n = initialCount + g.operations.size();
+    at = std::min(at, n);
+    const bool initial = allowedInInitial(tool, g.dimension) && at <= initialCount;
+    return {initial ? at : std::max(at, initialCount), initial};
 }
 
 /// Removes step i; returns it.
@@ -200,7 +227,7 @@ QString describeStepEdit(const Genome& before, const Genome& after, std::size_t 
 /// to the last.
 class EditorCommand : public QUndoCommand {
 public:
-    EditorCommand(EditorDocument* doc, EditorState before, EditorState after, const QString& text, int mergeId,
+    EditorCommand(EditorDocument* doc, StatePtr before, StatePtr after, const QString& text, int mergeId,
                   QString mergeKey, Describe describe)
         : QUndoCommand(text)
         , mDoc(doc)
@@ -210,34 +237,40 @@ public:
         , mMergeKey(std::move(mergeKey))
         , mDescribe(std::move(describe)) {}
 
-    void undo() override { mDoc->restore(mBefore.design, mBefore.muted); }
-    void redo() override { mDoc->restore(mAfter.design, mAfter.muted); }
+    void undo() override { mDoc->restore(mBefore->design, mBefore->muted); }
+    void redo() override { mDoc->restore(mAfter->design, mAfter->muted); }
     int id() const override { return mMergeId; }
 
     bool mergeWith(const QUndoCommand* other) override {
         const auto* o = dynamic_cast<const EditorCommand*>(other);
         if (!o || o->mMergeId != mMergeId || o->mMergeKey != mMergeKey || mMergeKey.isEmpty()) return false;
         mAfter = o->mAfter;
-        setText(mDescribe ? mDescribe(mBefore, mAfter) : o->text());
+        setText(mDescribe ? mDescribe(*mBefore, *mAfter) : o->text());
         // A drag that ends where it began (a colour dialog cancelled) leaves no entry behind,
         // and the design as clean as it was.
-        setObsolete(mBefore == mAfter);
+        setObsolete(*mBefore == *mAfter);
         return true;
     }
 
     /// Pushes an edit of `doc` from its present state to `after` (applying it); an edit that
-    /// changes nothing is no command.
+    /// changes nothing is no command. Undone edits the push drops are kept as a branch first.
     static void push(EditorDocument* doc, QUndoStack* stack, EditorState before, EditorState after,
                      const QString& text, int mergeId = -1, QString mergeKey = {}, Describe describe = {}) {
         if (before == after) return;
-        stack->push(new EditorCommand(doc, std::move(before), std::move(after), text, mergeId, std::move(mergeKey),
-                                      std::move(describe)));
+        doc->keepRedoBranch();
+        // The state before is the one the stack is at: shared, so that lines can be compared.
+        StatePtr from = doc->currentState();
+        stack->push(new EditorCommand(doc, from, std::make_shared<const EditorState>(std::move(after)), text,
+                                      mergeId, std::move(mergeKey), std::move(describe)));
     }
+
+    const StatePtr& before() const { return mBefore; }
+    const StatePtr& after() const { return mAfter; }
 
 private:
     EditorDocument* mDoc;
-    EditorState mBefore;
-    EditorState mAfter;
+    StatePtr mBefore;
+    StatePtr mAfter;
     int mMergeId;
     QString mMergeKey; ///< what the edit changes ("step:3"): only edits of one target merge
     Describe mDescribe;
@@ -247,7 +280,11 @@ EditorDocument::EditorDocument(Genome design, QObject* parent) : QObject(parent)
     EditorState s = unpack(std::move(design));
     mDesign = std::move(s.design);
     mMuted = std::move(s.muted);
-    connect(&mUndo, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
+    mOpened = std::make_shared<const EditorState>(EditorState{mDesign, mMuted});
+    mSaved = mOpened;
+    connect(&mUndo, &QUndoStack::cleanChanged, this, [this](bool clean) {
+        if (!mQuiet) emit modifiedChanged(!clean);
+    });
 }
 
 EditorDocument::~EditorDocument() {
@@ -295,24 +332,33 @@ bool EditorDocument::isMuted(std::size_t i) const { return i < mMuted.size() && 
 
 QString EditorDocument::stepName(std::size_t i) const { return stepLabel(mDesign, i); }
 
-std::size_t EditorDocument::addStep(const Operation& op) {
-    const bool initial = allowedInInitial(op.tool, mDesign.dimension);
-    const std::size_t index = initial ? mDesign.initial.size() : stepCount();
-    EditorState after{mDesign, mMuted};
-    insertStep(after, index, canonicalStep(mDesign, op, initial), initial, false);
-    const QString text = tr("Add %1").arg(stepLabel(after.design, index));
-    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), text);
-    return index;
+std::size_t EditorDocument::insertionIndex(Tool tool, std::optional<std::size_t> at) const {
+    return placeFor(mDesign, tool, at.value_or(stepCount())).index;
 }
 
-void EditorDocument::addSteps(const std::vector<Operation>& ops, const QString& text) {
+std::size_t EditorDocument::addStep(const Operation& op, std::optional<std::size_t> at) {
+    const Place place = placeFor(mDesign, op.tool, at.value_or(stepCount()));
     EditorState after{mDesign, mMuted};
+    insertStep(after, place.index, canonicalStep(mDesign, op, place.initial), place.initial, false);
+    const QString text = tr("Add %1").arg(stepLabel(after.design, place.index));
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), text);
+    return place.index;
+}
+
+std::size_t EditorDocument::addSteps(const std::vector<Operation>& ops, const QString& text,
+                                     std::optional<std::size_t> at) {
+    EditorState after{mDesign, mMuted};
+    std::optional<std::size_t> first;
+    std::size_t next = at.value_or(stepCount());
     for (const Operation& op : ops) {
-        const bool initial = allowedInInitial(op.tool, mDesign.dimension);
-        const std::size_t index = initial ? after.design.initial.size() : after.muted.size();
-        insertStep(after, index, canonicalStep(mDesign, op, initial), initial, false);
+        // Each goes after the one before, placed by addStep's rule in the design as it grows.
+        const Place place = placeFor(after.design, op.tool, next);
+        insertStep(after, place.index, canonicalStep(mDesign, op, place.initial), place.initial, false);
+        if (!first) first = place.index;
+        next = place.index + 1;
     }
     EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), text);
+    return first.value_or(stepCount());
 }
 
 void EditorDocument::setStep(std::size_t i, const Operation& op, int mergeId) {
@@ -441,19 +487,137 @@ bool EditorDocument::saveAs(const QString& file, QString* error) {
         if (error) *error = QString::fromStdString(e.what());
         return false;
     }
-    mUndo.setClean();
-    setFileName(file);
+    markSaved(file);
     return true;
 }
 
-void EditorDocument::markModified() { mUndo.resetClean(); }
+void EditorDocument::markSaved(const QString& file) {
+    mUndo.setClean();
+    mSaved = currentState();
+    setFileName(file);
+    noteFileOnDisk();
+}
+
+void EditorDocument::markModified() {
+    mUndo.resetClean();
+    mSaved.reset();
+}
+
+namespace {
+
+/// What the document remembers of a file's bytes: their hash, or empty when it cannot be read.
+QByteArray hashOfFile(const QString& file) {
+    QFile f(file);
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    QCryptographicHash hash(QCryptographicHash::Sha256);
+    if (!hash.addData(&f)) return {};
+    return hash.result();
+}
+
+} // namespace
+
+bool EditorDocument::fileChangedOnDisk() const {
+    if (mFileName.isEmpty() || mDiskHash.isEmpty()) return false;
+    return hashOfFile(mFileName) != mDiskHash;
+}
+
+void EditorDocument::noteFileOnDisk() {
+    mDiskHash = mFileName.isEmpty() ? QByteArray() : hashOfFile(mFileName);
+}
 
 void EditorDocument::restore(const Genome& design, const std::vector<bool>& muted) {
     const bool structural = stepsDiffer(mDesign, mMuted, design, muted);
     mDesign = design;
     mMuted = muted;
+    if (mQuiet) return;
     emit changed();
     if (structural) emit stepsChanged();
+}
+
+// ---- history as a tree ------------------------------------------------------------------------
+
+StatePtr EditorDocument::currentState() const {
+    const int index = mUndo.index();
+    if (index == 0) return mOpened;
+    return static_cast<const EditorCommand*>(mUndo.command(index - 1))->after();
+}
+
+EditorDocument::Line EditorDocument::currentLine() const {
+    Line line;
+    for (int k = 0; k < mUndo.count(); ++k) {
+        const auto* c = static_cast<const EditorCommand*>(mUndo.command(k));
+        line.edits.push_back({c->text(), c->before(), c->after()});
+    }
+    return line;
+}
+
+namespace {
+
+/// How many edits two lines share from their start (their states are shared, not copied).
+std::size_t sharedEdits(const EditorDocument::Line& a, const EditorDocument::Line& b) {
+    std::size_t k = 0;
+    while (k < a.edits.size() && k < b.edits.size() && a.edits[k].after == b.edits[k].after)
+        ++k;
+    return k;
+}
+
+} // namespace
+
+void EditorDocument::keepRedoBranch() {
+    if (mQuiet || mUndo.index() >= mUndo.count()) return;
+    mBranches.push_back(std::make_shared<Line>(currentLine()));
+    emit branchesChanged();
+}
+
+std::vector<EditorDocument::BranchInfo> EditorDocument::branches() const {
+    const Line current = currentLine();
+    std::vector<BranchInfo> infos;
+    for (const auto& branch : mBranches) {
+        const std::size_t fork = sharedEdits(*branch, current);
+        BranchInfo info;
+        info.forkAt = static_cast<int>(fork);
+        info.length = static_cast<int>(branch->edits.size() - fork);
+        info.forkText = fork == 0 ? QString() : branch->edits[fork - 1].text;
+        info.lastText = branch->edits.empty() ? QString() : branch->edits.back().text;
+        infos.push_back(info);
+    }
+    return infos;
+}
+
+void EditorDocument::switchToBranch(std::size_t k) {
+    if (k >= mBranches.size()) return;
+    const std::shared_ptr<Line> target = mBranches[k];
+    mBranches.erase(mBranches.begin() + static_cast<std::ptrdiff_t>(k));
+    // The line left stays reachable, unless all of it is in the line switched to.
+    const Line left = currentLine();
+    if (sharedEdits(left, *target) < left.edits.size()) mBranches.push_back(std::make_shared<Line>(left));
+
+    // The stack is made anew from the branch's edits (their states shared, not copied), at its
+    // newest edit, clean where the saved state is on it; one change is signalled at the end.
+    const bool wasModified = isModified();
+    mQuiet = true;
+    mUndo.clear();
+    int cleanAt = mSaved == mOpened ? 0 : -1;
+    for (const Line::Edit& e : target->edits) {
+        mUndo.push(new EditorCommand(this, e.before, e.after, e.text, -1, {}, {}));
+        if (mSaved && e.after == mSaved) cleanAt = mUndo.index();
+    }
+    if (cleanAt >= 0) {
+        const int tip = mUndo.index();
+        mUndo.setIndex(cleanAt);
+        mUndo.setClean();
+        mUndo.setIndex(tip);
+    } else {
+        mUndo.resetClean();
+    }
+    mQuiet = false;
+    const StatePtr now = currentState();
+    mDesign = now->design;
+    mMuted = now->muted;
+    emit changed();
+    emit stepsChanged();
+    if (wasModified != isModified()) emit modifiedChanged(isModified());
+    emit branchesChanged();
 }
 
 } // namespace marbler::ui

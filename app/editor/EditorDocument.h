@@ -17,10 +17,17 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <QByteArray>
+
 #include <cstddef>
+#include <memory>
+#include <optional>
 #include <vector>
 
 namespace marbler::ui {
+
+/// One state of the document: the design and its muted flags (EditorDocument.cpp).
+struct EditorState;
 
 class EditorDocument : public QObject {
     Q_OBJECT
@@ -55,11 +62,16 @@ public:
     // `mergeId` >= 0 merges consecutive commands with the same id into one undo step (a drag of
     // a slider or a handle passes the same id from press to release); -1 never merges.
 
-    /// Adds a step at the end of its part: ink-laying tools allowed in `initial` go to the end
-    /// of `initial`, other tools to the end of `operations`. Returns its step index.
-    std::size_t addStep(const Operation& op);
-    /// Adds several steps as one undo step (a drop pattern, a spray's drops).
-    void addSteps(const std::vector<Operation>& ops, const QString& text);
+    /// Adds a step so that it becomes step `at` (stepCount(), the default: after every step),
+    /// in `initial` where the tool may stand there and `at` is within it, else in `operations`
+    /// (insertionIndex). Returns its step index.
+    std::size_t addStep(const Operation& op, std::optional<std::size_t> at = std::nullopt);
+    /// Adds several steps as one undo step (a drop pattern, a spray's drops), in their order
+    /// from step `at` on (default: after every step). Returns the index of the first.
+    std::size_t addSteps(const std::vector<Operation>& ops, const QString& text,
+                         std::optional<std::size_t> at = std::nullopt);
+    /// The index a step of `tool` added at `at` gets (see addStep).
+    std::size_t insertionIndex(Tool tool, std::optional<std::size_t> at) const;
     /// Replaces step i (its tool stays a valid one for its part).
     void setStep(std::size_t i, const Operation& op, int mergeId = -1);
     void removeStep(std::size_t i);
@@ -85,9 +97,36 @@ public:
     /// Writes fileGenome() atomically (a temporary renamed over the file) and marks the stack
     /// clean; on failure returns false with the reason in `error` and changes nothing.
     bool saveAs(const QString& file, QString* error);
+    /// Marks the design saved in `file` by other means (an image written with it inside): the
+    /// stack clean, the file the document's, its bytes the ones known.
+    void markSaved(const QString& file);
     /// Marks the design unsaved without an edit: a design recovered after a crash, whose
     /// changes never reached its file.
     void markModified();
+
+    /// Whether the file was changed by someone else since this document read or wrote it (its
+    /// bytes differ from those seen then, or it is gone). False without a file.
+    bool fileChangedOnDisk() const;
+    /// Remembers the file's present bytes as the ones this document knows (after opening it).
+    void noteFileOnDisk();
+
+    // History as a tree: an edit made after undoing keeps the undone edits as a branch, so no
+    // state is ever unreachable. The undo stack holds the current line of edits; every other
+    // line is a branch, shown by the History panel and switched to with one click.
+
+    /// One branch as the History panel names it.
+    struct BranchInfo {
+        int forkAt = 0;   ///< edits it shares with the current line
+        int length = 0;   ///< its edits after the fork
+        QString forkText; ///< the last shared edit ("" when it leaves from the opened design)
+        QString lastText; ///< its newest edit
+    };
+    std::vector<BranchInfo> branches() const;
+    /// Makes branch `k` the current line, at its newest edit; the line left becomes a branch.
+    /// One undo step is not made: the history itself is switched.
+    void switchToBranch(std::size_t k);
+    /// One line of history: its edits in order, each the states before and after it.
+    struct Line;
 
 signals:
     /// The design changed (any edit, undo or redo).
@@ -96,16 +135,28 @@ signals:
     void stepsChanged();
     void modifiedChanged(bool modified);
     void fileNameChanged(const QString& file);
+    /// A branch was made, switched to or dropped.
+    void branchesChanged();
 
 private:
     friend class EditorCommand;
     /// Applies a new state (design and muted flags); used by the commands' undo and redo.
     void restore(const Genome& design, const std::vector<bool>& muted);
+    /// Before an edit is pushed: a redo tail that the push would drop is kept as a branch.
+    void keepRedoBranch();
+    Line currentLine() const;
+    /// The state the stack is at now, as shared by its commands (the opened state at index 0).
+    std::shared_ptr<const EditorState> currentState() const;
 
     Genome mDesign;
     std::vector<bool> mMuted; ///< one flag a step
     QUndoStack mUndo;
     QString mFileName;
+    QByteArray mDiskHash;                       ///< the file's bytes (a hash) as last read or written
+    std::shared_ptr<const EditorState> mOpened; ///< the state at the start of every line
+    std::shared_ptr<const EditorState> mSaved;  ///< the state last saved (null: none kept)
+    std::vector<std::shared_ptr<Line>> mBranches;
+    bool mQuiet = false; ///< a history switch in progress: signals once at its end
 };
 
 } // namespace marbler::ui

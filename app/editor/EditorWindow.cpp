@@ -10,13 +10,16 @@
 #include "editor/StepList.h"
 #include "editor/Timeline.h"
 #include "editor/ToolOptions.h"
+#include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
+#include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/Growth.h"
 #include "marbler/Params.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
+#include "ui/Help.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/StartDialog.h"
@@ -25,28 +28,39 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QImageReader>
 #include <QLabel>
+#include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QRandomGenerator>
 #include <QSettings>
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTextBrowser>
+#include <QThread>
 #include <QToolBar>
 #include <QUndoView>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <functional>
+#include <span>
+#include <utility>
 
 namespace marbler::ui {
 
@@ -70,6 +84,39 @@ QString nameOf(const Genome& design) {
     return info.name.isEmpty() ? EditorWindow::tr("Untitled design") : info.name;
 }
 
+/// Every editor open in this process, so that a file is edited in one window at a time.
+QList<QPointer<EditorWindow>>& openEditors() {
+    static QList<QPointer<EditorWindow>> editors;
+    return editors;
+}
+
+/// A file named by its real path, so that two names of one file compare equal.
+QString canonical(const QString& file) {
+    const QFileInfo info(file);
+    const QString real = info.canonicalFilePath();
+    return real.isEmpty() ? info.absoluteFilePath() : real;
+}
+
+/// Whether `file` is an image (by its first bytes; by its name when it cannot be read): a design
+/// opened from one is saved as a design file, never as JSON under the image's name.
+bool isImageFile(const QString& file) {
+    QFile f(file);
+    if (f.open(QIODevice::ReadOnly)) {
+        const QByteArray head = f.read(16);
+        return imageKindOf(std::span(reinterpret_cast<const unsigned char*>(head.constData()),
+                                     static_cast<std::size_t>(head.size()))) != ImageKind::NotAnImage;
+    }
+    static const QStringList imageSuffixes{"png", "tif", "tiff", "jpg", "jpeg", "webp", "exr", "gif", "bmp"};
+    return imageSuffixes.contains(QFileInfo(file).suffix().toLower());
+}
+
+/// `file` with the design file's extension, unless it has a JSON one already.
+QString withDesignExtension(const QString& file) {
+    return file.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)
+               ? file
+               : file + QStringLiteral(".marble.json");
+}
+
 } // namespace
 
 Genome blankDesign(int dimension) {
@@ -80,6 +127,67 @@ Genome blankDesign(int dimension) {
     return g;
 }
 
+// ---- ImageWriteJob ---------------------------------------------------------------------------
+
+/// Renders a design into an image file on a thread of its own (the CPU renderer, every core),
+/// written atomically; its progress and its end are told on the GUI thread.
+class ImageWriteJob : public QObject {
+public:
+    /// Done so far, 0 to 1.
+    std::function<void(double)> onProgress;
+    /// Written (ok), cancelled (not ok, no error) or failed.
+    std::function<void(bool ok, const QString& error)> onFinished;
+
+    ~ImageWriteJob() override {
+        mCancel.store(true);
+        if (mThread) mThread->wait();
+        delete mThread;
+    }
+    bool running() const { return mThread && mThread->isRunning(); }
+    void cancel() { mCancel.store(true); }
+    void start(Genome design, RenderSettings settings, std::filesystem::path file, ExportOptions options) {
+        if (mThread) mThread->wait();
+        delete mThread;
+        mCancel.store(false);
+        mThread = QThread::create([this, design = std::move(design), settings, file = std::move(file),
+                                   options = std::move(options)] {
+            QString error;
+            bool ok = false;
+            RenderControl control;
+            control.cancel = &mCancel;
+            control.progress = [this](double f) {
+                QMetaObject::invokeMethod(
+                    this,
+                    [this, f] {
+                        if (onProgress) onProgress(f);
+                    },
+                    Qt::QueuedConnection);
+            };
+            try {
+                renderToFile(design, settings, file, options, &control);
+                ok = true;
+            } catch (const Cancelled&) {
+            } catch (const std::exception& e) {
+                error = QString::fromStdString(e.what());
+            }
+            QMetaObject::invokeMethod(
+                this,
+                [this, ok, error] {
+                    // Taken out first: the handler is one run's, and may start the next run.
+                    const auto finished = std::exchange(onFinished, nullptr);
+                    onProgress = nullptr;
+                    if (finished) finished(ok, error);
+                },
+                Qt::QueuedConnection);
+        });
+        mThread->start();
+    }
+
+private:
+    QThread* mThread = nullptr;
+    std::atomic<bool> mCancel{false};
+};
+
 // ---- EditorWindow -------------------------------------------------------------------------
 
 EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString& file, QWidget* parent,
@@ -87,9 +195,11 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
     : QMainWindow(parent), mRenderer(renderer) {
     setAttribute(Qt::WA_DeleteOnClose);
     setObjectName(QStringLiteral("editorWindow"));
+    openEditors().append(this);
     mDocument = new EditorDocument(std::move(design), this);
     if (!file.isEmpty()) {
         mDocument->setFileName(file);
+        mDocument->noteFileOnDisk();
         addRecentFile(file);
     }
     const QString folder = recoveryFolder == QStringLiteral("<default>") ? defaultRecoveryFolder() : recoveryFolder;
@@ -132,13 +242,26 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
     stepsChanged();
     designChanged();
     updateTitle();
+    fillBranchList();
     resize(1280, 860);
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("editor/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("editor/state")).toByteArray());
 }
 
-EditorWindow::~EditorWindow() = default;
+EditorWindow::~EditorWindow() {
+    openEditors().removeAll(this);
+    delete mImageJob; // waits for its thread
+}
+
+EditorWindow* EditorWindow::editorFor(const QString& file) {
+    if (file.isEmpty()) return nullptr;
+    const QString wanted = canonical(file);
+    for (const QPointer<EditorWindow>& e : openEditors())
+        if (e && !e->mDocument->fileName().isEmpty() && canonical(e->mDocument->fileName()) == wanted)
+            return e;
+    return nullptr;
+}
 
 void EditorWindow::buildDocks() {
     const int dimension = mDocument->design().dimension;
@@ -226,9 +349,28 @@ void EditorWindow::buildDocks() {
     mHistory->setObjectName(QStringLiteral("historyView"));
     mHistory->setEmptyLabel(tr("Opened"));
     mHistory->setToolTip(tr("Every edit; click one to go back (or forward) to it"));
+    // Every other line of edits: an edit made after undoing leaves the undone ones here.
+    mBranchList = new QListWidget(this);
+    mBranchList->setObjectName(QStringLiteral("branchList"));
+    mBranchList->setToolTip(tr("Edits you undid and then left by making another: click one to go back to it "
+                               "(the edits you leave stay here)"));
+    mBranchList->setMaximumHeight(110);
+    auto* historyPanel = new QWidget(this);
+    auto* historyLayout = new QVBoxLayout(historyPanel);
+    historyLayout->setContentsMargins(0, 0, 0, 0);
+    historyLayout->addWidget(mHistory, 1);
+    mBranchLabel = new QLabel(tr("Other branches"), historyPanel);
+    historyLayout->addWidget(mBranchLabel);
+    historyLayout->addWidget(mBranchList);
+    connect(mBranchList, &QListWidget::itemClicked, this, [this](QListWidgetItem* item) {
+        const int k = mBranchList->row(item);
+        if (k < 0) return;
+        mDocument->switchToBranch(std::size_t(k));
+        statusBar()->showMessage(tr("Switched to another branch of the history"), 4000);
+    });
     auto* historyDock = new QDockWidget(tr("History"), this);
     historyDock->setObjectName(QStringLiteral("historyDock"));
-    historyDock->setWidget(mHistory);
+    historyDock->setWidget(historyPanel);
     addDockWidget(Qt::RightDockWidgetArea, historyDock);
 
     mTimeline = new Timeline(this);
@@ -256,7 +398,10 @@ void EditorWindow::buildMenus() {
     connect(mRecentMenu, &QMenu::aboutToShow, this, &EditorWindow::fillRecentMenu);
     file->addSeparator();
     file->addAction(tr("&Save"), this, &EditorWindow::save)->setShortcut(QKeySequence::Save);
-    file->addAction(tr("Save &as…"), this, &EditorWindow::saveAs)->setShortcut(QKeySequence::SaveAs);
+    // Ctrl+Shift+S everywhere: QKeySequence::SaveAs is empty on some desktops (X11 without a
+    // platform theme).
+    file->addAction(tr("Save &as…"), this, &EditorWindow::saveAs)
+        ->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
     file->addAction(tr("&Export image…"), this, &EditorWindow::exportImage)->setShortcut(QKeySequence(tr("Ctrl+E")));
     file->addAction(tr("Export &animation…"), this, &EditorWindow::exportAnimation)
         ->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
@@ -267,6 +412,12 @@ void EditorWindow::buildMenus() {
     });
     send->setShortcut(QKeySequence(tr("Ctrl+G")));
     send->setToolTip(tr("Put this design into the breeding grid as a new design to breed from"));
+    file->addSeparator();
+    QAction* recover =
+        file->addAction(tr("Recover &unsaved designs…"), this, [this] { emit recoveriesRequested(); });
+    recover->setObjectName(QStringLiteral("recoverAction"));
+    recover->setToolTip(
+        tr("Designs that editors left unsaved when Marbler stopped, kept until you discard them"));
     file->addSeparator();
     file->addAction(tr("&Close"), this, &QWidget::close)->setShortcut(QKeySequence::Close);
 
@@ -307,10 +458,51 @@ void EditorWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Fit"), this, [this] { mCanvas->fitView(); })
         ->setShortcut(QKeySequence(tr("0")));
+    view->addAction(tr("Zoom &in"), this, [this] { mCanvas->zoomIn(); })->setShortcut(QKeySequence::ZoomIn);
+    view->addAction(tr("Zoom &out"), this, [this] { mCanvas->zoomOut(); })
+        ->setShortcut(QKeySequence::ZoomOut);
     view->addAction(tr("&Compare two states"), this, [this] { mTimeline->setComparing(!mTimeline->comparing()); })
         ->setShortcut(QKeySequence(tr("Ctrl+K")));
     view->addAction(tr("&Play the making"), this, [this] { mTimeline->playing() ? mTimeline->stop() : mTimeline->play(); })
         ->setShortcut(QKeySequence(Qt::Key_P));
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* guide = help->addAction(tr("Editor &guide"), this, &EditorWindow::showGuide);
+    guide->setObjectName(QStringLiteral("editorGuideAction"));
+    guide->setShortcut(QKeySequence(Qt::Key_F1));
+    guide->setToolTip(tr("How the editor works, and every keyboard shortcut"));
+}
+
+QDialog* EditorWindow::showGuide() {
+    if (!mGuide) {
+        mGuide = new QDialog(this);
+        mGuide->setObjectName(QStringLiteral("editorGuide"));
+        mGuide->setWindowTitle(tr("Marbler editor guide"));
+        auto* browser = new QTextBrowser(mGuide);
+        browser->setObjectName(QStringLiteral("guideBrowser"));
+        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, mGuide);
+        connect(buttons, &QDialogButtonBox::rejected, mGuide, &QDialog::close);
+        auto* layout = new QVBoxLayout(mGuide);
+        layout->addWidget(browser, 1);
+        layout->addWidget(buttons);
+        mGuide->resize(560, 640);
+    }
+    const QString intro = tr(
+        "<h2>The editor</h2>"
+        "<p>A design is a list of steps: inks dropped on the bath, then strokes that move them. Pick a tool, "
+        "then click or drag on the canvas; a new step goes after the selected step (or at the timeline's "
+        "point) and the canvas shows the design just after it.</p>"
+        "<p>Select a step to change it in the form or with its handles, however far back; mute, duplicate, "
+        "move or delete it from the list. Undo and redo work from anywhere; edits you undo and then leave "
+        "by making another stay under History ▸ Other branches, one click away.</p>"
+        "<p>The timeline scrubs through the making of the design, plays it and compares two states. "
+        "Inks holds the palette and the bath's colour.</p>"
+        "<h3>Keys</h3>");
+    mGuide->findChild<QTextBrowser*>(QStringLiteral("guideBrowser"))
+        ->setHtml(intro + shortcutTableHtml(shortcutActions(this)));
+    mGuide->show();
+    mGuide->raise();
+    return mGuide;
 }
 
 void EditorWindow::wireDocument() {
@@ -318,15 +510,34 @@ void EditorWindow::wireDocument() {
     connect(mDocument, &EditorDocument::stepsChanged, this, &EditorWindow::stepsChanged);
     connect(mDocument, &EditorDocument::modifiedChanged, this, &EditorWindow::updateTitle);
     connect(mDocument, &EditorDocument::fileNameChanged, this, &EditorWindow::updateTitle);
+    connect(mDocument, &EditorDocument::branchesChanged, this, &EditorWindow::fillBranchList);
+    connect(mDocument->undoStack(), &QUndoStack::indexChanged, this, &EditorWindow::fillBranchList);
 
     // Gestures: one drag, one step.
     connect(mCanvas, &EditorCanvas::stepsMade, this, [this](const std::vector<Operation>& ops, const QString& text) {
         if (ops.empty()) return;
-        if (ops.size() == 1) {
-            selectStep(mDocument->addStep(ops.front()));
+        // Where the user works: after the selected step, else at the timeline's point.
+        const std::optional<std::size_t> at = insertionPoint();
+        const std::size_t first =
+            ops.size() == 1 ? mDocument->addStep(ops.front(), at) : mDocument->addSteps(ops, text, at);
+        const std::size_t last = first + ops.size() - 1;
+        if (ops.size() == 1)
+            selectStep(first);
+        else
+            selectStep(last);
+        // The canvas shows the design just after what was added: all of it when that is the end,
+        // else up to the new steps (the timeline says where), so new ink is seen where it went.
+        const auto rendered = renderedIndex(last);
+        const std::size_t total = stepCount(mDocument->renderedDesign());
+        if (!rendered || *rendered + 1 >= total) {
+            mTimeline->setGrowth(double(total));
         } else {
-            mDocument->addSteps(ops, text);
-            selectStep(std::nullopt);
+            mTimeline->setGrowth(double(*rendered + 1));
+            statusBar()->showMessage(
+                tr("Added as step %1 of %2; the timeline shows the design up to it (End shows all)")
+                    .arg(*rendered + 1)
+                    .arg(total),
+                6000);
         }
     });
     connect(mCanvas, &EditorCanvas::handleDragged, this,
@@ -414,6 +625,16 @@ int EditorWindow::mergeFor(bool dragging) {
     return -1;
 }
 
+std::optional<std::size_t> EditorWindow::insertionPoint() const {
+    if (mSelected && *mSelected < mDocument->stepCount()) return *mSelected + 1;
+    if (mTimeline->atEnd()) return std::nullopt;
+    // After the last step the timeline has grown whole (rendered numbering to the document's).
+    const auto grown = static_cast<std::size_t>(std::floor(mTimeline->growth()));
+    if (grown == 0) return 0;
+    const auto step = documentIndex(grown - 1);
+    return step ? std::optional<std::size_t>(*step + 1) : std::nullopt;
+}
+
 std::optional<std::size_t> EditorWindow::documentIndex(std::size_t rendered) const {
     std::size_t seen = 0;
     for (std::size_t i = 0; i < mDocument->stepCount(); ++i) {
@@ -484,6 +705,19 @@ void EditorWindow::stepsChanged() {
     mStatus->setText(tr("%n step(s)", "", int(mDocument->stepCount())));
 }
 
+void EditorWindow::fillBranchList() {
+    const auto branches = mDocument->branches();
+    mBranchList->clear();
+    for (const EditorDocument::BranchInfo& b : branches) {
+        const QString from = b.forkText.isEmpty() ? tr("the opened design") : tr("“%1”").arg(b.forkText);
+        auto* item = new QListWidgetItem(
+            tr("After %1: %n more edit(s), last “%2”", "", b.length).arg(from, b.lastText), mBranchList);
+        item->setToolTip(tr("Click to switch to this branch"));
+    }
+    mBranchLabel->setVisible(!branches.empty());
+    mBranchList->setVisible(!branches.empty());
+}
+
 void EditorWindow::setCurrentInk(int index) {
     mToolSettings.color = index;
     mToolOptions->setSettings(mToolSettings);
@@ -530,32 +764,116 @@ void EditorWindow::setSlice(const Slice& slice) {
     mCompare->setSlice(slice);
 }
 
-void EditorWindow::updateTitle() {
+QString EditorWindow::displayName() const {
     const QString file = mDocument->fileName();
-    const QString name = file.isEmpty() ? nameOf(mDocument->design()) : QFileInfo(file).fileName();
-    setWindowTitle(tr("%1[*] — Marbler editor").arg(name));
+    return file.isEmpty() ? nameOf(mDocument->design()) : QFileInfo(file).fileName();
+}
+
+void EditorWindow::updateTitle() {
+    setWindowTitle(tr("%1[*] — Marbler editor").arg(displayName()));
     setWindowModified(mDocument->isModified());
 }
 
 // ---- files ----------------------------------------------------------------------------------
 
 bool EditorWindow::save() {
-    if (mDocument->fileName().isEmpty()) return saveAs();
-    return saveTo(mDocument->fileName());
+    const QString file = mDocument->fileName();
+    if (file.isEmpty()) return saveAs();
+    if (isImageFile(file)) {
+        // A design opened from an image: its genome file is a new file, or the image is written
+        // again with the design inside; JSON never goes under the image's name.
+        ImageSaveAnswer answer = ImageSaveAnswer::DesignFile;
+        if (mImageSaveAnswer) {
+            answer = *mImageSaveAnswer;
+        } else {
+            QMessageBox box(QMessageBox::Question, tr("Save a design opened from an image"),
+                            tr("“%1” is an image. Save the design as a design file, or write the image again "
+                               "with the design inside?")
+                                .arg(QFileInfo(file).fileName()),
+                            QMessageBox::Cancel, this);
+            QPushButton* asFile = box.addButton(tr("Save as design file…"), QMessageBox::AcceptRole);
+            QPushButton* asImage = box.addButton(tr("Update the image"), QMessageBox::DestructiveRole);
+            asImage->setToolTip(tr("Render the design into %1 at its size; the picture there is replaced")
+                                    .arg(QFileInfo(file).fileName()));
+            box.setDefaultButton(asFile);
+            box.exec();
+            answer = box.clickedButton() == asFile    ? ImageSaveAnswer::DesignFile
+                     : box.clickedButton() == asImage ? ImageSaveAnswer::UpdateImage
+                                                      : ImageSaveAnswer::Cancel;
+        }
+        switch (answer) {
+        case ImageSaveAnswer::DesignFile:
+            return saveAs();
+        case ImageSaveAnswer::UpdateImage:
+            return writeDesignImage(file);
+        case ImageSaveAnswer::Cancel:
+            return false;
+        }
+        return false;
+    }
+    return saveTo(file);
 }
 
 bool EditorWindow::saveAs() {
     const QString folder = QSettings().value(QStringLiteral("files/saveDir")).toString();
-    const QString suggested = mDocument->fileName().isEmpty()
-                                  ? suggestedFile(mDocument->renderedDesign(), folder, QStringLiteral(".marble.json"))
-                                  : mDocument->fileName();
-    const QString file = askSaveFile(this, tr("Save design"), suggested, tr("Marbler designs (*.marble.json)"));
-    if (file.isEmpty()) return false;
+    const QString current = mDocument->fileName();
+    QString suggested;
+    if (current.isEmpty())
+        suggested = suggestedFile(mDocument->renderedDesign(), folder, QStringLiteral(".marble.json"));
+    else if (isImageFile(current))
+        suggested = QFileInfo(current).dir().filePath(QFileInfo(current).completeBaseName() +
+                                                      QStringLiteral(".marble.json"));
+    else
+        suggested = current;
+    const QString chosen =
+        askSaveFile(this, tr("Save design"), suggested, tr("Marbler designs (*.marble.json)"));
+    if (chosen.isEmpty()) return false;
+    // A name without the extension gets it (the Open dialog lists designs by it); the file
+    // dialog asked about the name typed, so a file of the full name is asked about here.
+    const QString file = withDesignExtension(chosen);
+    if (file != chosen && !mayOverwrite(file)) return false;
     QSettings().setValue(QStringLiteral("files/saveDir"), QFileInfo(file).absolutePath());
     return saveTo(file);
 }
 
 bool EditorWindow::saveTo(const QString& file) {
+    if (!mDocument->fileName().isEmpty() && canonical(file) == canonical(mDocument->fileName()) &&
+        mDocument->fileChangedOnDisk()) {
+        // Someone else wrote the file since this editor read or wrote it: never overwritten
+        // without a word.
+        DiskChangeAnswer answer = DiskChangeAnswer::Cancel;
+        if (mDiskChangeAnswer) {
+            answer = *mDiskChangeAnswer;
+        } else {
+            QMessageBox box(
+                QMessageBox::Warning, tr("The file was changed"),
+                tr("“%1” was changed by another program or window since it was opened here. "
+                   "Overwrite those changes, reload the file (your changes stay in Undo), or save "
+                   "under another name?")
+                    .arg(QFileInfo(file).fileName()),
+                QMessageBox::Cancel, this);
+            QPushButton* overwrite = box.addButton(tr("Overwrite"), QMessageBox::DestructiveRole);
+            QPushButton* reload = box.addButton(tr("Reload"), QMessageBox::ResetRole);
+            QPushButton* other = box.addButton(tr("Save as…"), QMessageBox::AcceptRole);
+            box.setDefaultButton(other);
+            box.exec();
+            answer = box.clickedButton() == overwrite ? DiskChangeAnswer::Overwrite
+                     : box.clickedButton() == reload  ? DiskChangeAnswer::Reload
+                     : box.clickedButton() == other   ? DiskChangeAnswer::SaveAs
+                                                      : DiskChangeAnswer::Cancel;
+        }
+        switch (answer) {
+        case DiskChangeAnswer::Overwrite:
+            break;
+        case DiskChangeAnswer::Reload:
+            reloadFromDisk();
+            return false;
+        case DiskChangeAnswer::SaveAs:
+            return saveAs();
+        case DiskChangeAnswer::Cancel:
+            return false;
+        }
+    }
     QString error;
     if (!mDocument->saveAs(file, &error)) {
         reportError(this, tr("Cannot save the design"), error);
@@ -565,6 +883,82 @@ bool EditorWindow::saveTo(const QString& file) {
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(file)), 5000);
     emit fileSaved(file);
     return true;
+}
+
+bool EditorWindow::reloadFromDisk() {
+    const QString file = mDocument->fileName();
+    if (file.isEmpty()) return false;
+    try {
+        Genome design = loadDesign(QFile::encodeName(file).toStdString());
+        mDocument->replaceDesign(design, tr("Reload %1").arg(QFileInfo(file).fileName()));
+        mDocument->markSaved(file);
+    } catch (const Error& e) {
+        reportError(this, tr("Cannot reload the design"), QString::fromStdString(e.what()));
+        return false;
+    }
+    selectStep(std::nullopt);
+    statusBar()->showMessage(tr("Reloaded %1; Undo brings your changes back").arg(QFileInfo(file).fileName()),
+                             6000);
+    return true;
+}
+
+bool EditorWindow::writeDesignImage(const QString& image) {
+    if (mImageJob && mImageJob->running()) {
+        statusBar()->showMessage(tr("The image is being written already"), 4000);
+        return false;
+    }
+    const Genome design = mDocument->renderedDesign();
+    RenderSettings settings;
+    // The image's own size; where its format has no reader here, the design's.
+    const QSize pixels = QImageReader(image).size();
+    settings.width = pixels.isValid() ? pixels.width() : int(std::lround(design.size.x));
+    settings.height = pixels.isValid() ? pixels.height() : int(std::lround(design.size.y));
+    settings.aa = "rgss";
+    if (design.dimension == 3) settings.slice = mSlice;
+    ExportOptions options;
+    // The file's genome, muted steps and all, so that the image opens as it is edited.
+    options.genome = serializeGenome(mDocument->fileGenome());
+    if (!mImageJob) mImageJob = new ImageWriteJob;
+    auto* progress =
+        new QProgressDialog(tr("Writing %1…").arg(QFileInfo(image).fileName()), tr("Cancel"), 0, 1000, this);
+    progress->setObjectName(QStringLiteral("imageProgress"));
+    progress->setWindowModality(Qt::WindowModal);
+    progress->setMinimumDuration(300);
+    progress->setAutoClose(false);
+    progress->setAutoReset(false);
+    mImageJob->onProgress = [progress](double f) { progress->setValue(int(std::lround(f * 1000.0))); };
+    connect(progress, &QProgressDialog::canceled, mImageJob, [job = mImageJob] { job->cancel(); });
+    // The design is saved in the image when it is still the state the render started from.
+    const QString stateText = QString::fromStdString(options.genome);
+    mImageJob->onFinished = [this, progress, image, stateText](bool ok, const QString& error) {
+        QObject::disconnect(progress, nullptr, mImageJob, nullptr);
+        progress->close();
+        progress->deleteLater();
+        if (ok) {
+            if (QString::fromStdString(serializeGenome(mDocument->fileGenome())) == stateText)
+                mDocument->markSaved(image);
+            addRecentFile(image);
+            statusBar()->showMessage(
+                tr("Wrote %1 with the design inside").arg(QDir::toNativeSeparators(image)), 5000);
+            emit fileSaved(image);
+        } else if (!error.isEmpty()) {
+            reportError(this, tr("Cannot write the image"), error);
+        } else {
+            statusBar()->showMessage(tr("Cancelled; the image is as it was"), 4000);
+        }
+    };
+    mImageJob->start(design, settings, std::filesystem::path(QFile::encodeName(image).toStdString()),
+                     options);
+    return true;
+}
+
+bool EditorWindow::mayOverwrite(const QString& file) {
+    if (!QFileInfo::exists(file)) return true;
+    if (mOverwriteAnswer) return *mOverwriteAnswer;
+    return QMessageBox::question(this, tr("Replace the file?"),
+                                 tr("“%1” exists already. Replace it?").arg(QFileInfo(file).fileName()),
+                                 QMessageBox::Yes | QMessageBox::Cancel,
+                                 QMessageBox::Cancel) == QMessageBox::Yes;
 }
 
 QStringList EditorWindow::recentFiles() { return QSettings().value(RecentKey).toStringList(); }
@@ -650,6 +1044,7 @@ void EditorWindow::exportAnimation() {
     AnimationExportDialog dialog(design, start, this);
     if (dialog.exec() != QDialog::Accepted) return;
     const AnimationExportSettings settings = dialog.settings();
+    if (!mayOverwrite(withAnimationExtension(settings.path, settings.format))) return;
     QSettings().setValue(QStringLiteral("files/exportDir"), QFileInfo(settings.path).absolutePath());
     if (!mAnimationJob) mAnimationJob = new AnimationExportJob(this);
     auto* progress = new QProgressDialog(tr("Writing the making of the design…"), tr("Cancel"), 0, 1000, this);
@@ -691,7 +1086,7 @@ bool EditorWindow::maybeKeepChanges() {
     } else {
         const auto button = QMessageBox::warning(
             this, tr("Unsaved changes"),
-            tr("“%1” has changes that are not saved. Save them?").arg(nameOf(mDocument->design())),
+            tr("“%1” has changes that are not saved. Save them?").arg(displayName()),
             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
         answer = button == QMessageBox::Save      ? UnsavedAnswer::Save
                  : button == QMessageBox::Discard ? UnsavedAnswer::Discard

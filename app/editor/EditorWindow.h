@@ -19,6 +19,7 @@
 
 #include <QImage>
 #include <QMainWindow>
+#include <QPointer>
 #include <QString>
 
 #include <cstddef>
@@ -29,8 +30,10 @@
 class QAction;
 class QActionGroup;
 class QComboBox;
+class QDialog;
 class QDoubleSpinBox;
 class QLabel;
+class QListWidget;
 class QMenu;
 class QSlider;
 class QSplitter;
@@ -39,6 +42,7 @@ class QUndoView;
 namespace marbler::ui {
 
 class AnimationExportJob;
+class ImageWriteJob;
 class EditorAutosave;
 class EditorCanvas;
 class ParamForm;
@@ -98,6 +102,36 @@ public:
     /// unset asks the user.
     enum class UnsavedAnswer { Save, Discard, Cancel };
     void setUnsavedAnswer(std::optional<UnsavedAnswer> answer) { mUnsavedAnswer = answer; }
+    /// Save on a design opened from an image: a new design file (the default), the image written
+    /// again with the design inside, or nothing. Unset asks the user.
+    enum class ImageSaveAnswer { DesignFile, UpdateImage, Cancel };
+    void setImageSaveAnswer(std::optional<ImageSaveAnswer> answer) { mImageSaveAnswer = answer; }
+    /// Save on a file that someone else changed since it was opened or saved here. Unset asks.
+    enum class DiskChangeAnswer { Overwrite, Reload, SaveAs, Cancel };
+    void setDiskChangeAnswer(std::optional<DiskChangeAnswer> answer) { mDiskChangeAnswer = answer; }
+    /// Whether an existing file may be replaced by an export (unset asks the user).
+    void setOverwriteAnswer(std::optional<bool> answer) { mOverwriteAnswer = answer; }
+
+    /// Reads the document's file again (an undoable replacement of the design, clean after it).
+    bool reloadFromDisk();
+    /// Renders the design into `image` (PNG or TIFF) at that image's pixel size, with the design
+    /// inside, in the background with progress and cancel; the image becomes the document's file.
+    /// Returns whether the render started.
+    bool writeDesignImage(const QString& image);
+    /// Where a step made now goes, in document numbering: after the selected step, else at the
+    /// timeline's point (nullopt: after every step).
+    std::optional<std::size_t> insertionPoint() const;
+    /// The History panel's list of branches (one click switches to one).
+    QListWidget* branchList() const { return mBranchList; }
+
+    /// File ▸ Export animation… (asks before replacing a file) and Export image….
+    void exportAnimation();
+    void exportImage();
+    /// Help ▸ Editor guide (F1): how the editor works and every shortcut, from its actions.
+    QDialog* showGuide();
+
+    /// The editor open on `file` (the same file by its canonical path), if any.
+    static EditorWindow* editorFor(const QString& file);
 
     /// The files opened or saved in the editor, newest first (QSettings editor/recentFiles).
     static QStringList recentFiles();
@@ -110,6 +144,8 @@ signals:
     void fileSaved(const QString& file);
     /// File ▸ New design / Open…: the workbench opens another editor.
     void openEditorRequested(const marbler::Genome& design, const QString& file);
+    /// File ▸ Recover unsaved designs…: the workbench lists what crashed editors left.
+    void recoveriesRequested();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -121,6 +157,8 @@ private:
     /// Whether the window may close or its design be left: asks about unsaved changes.
     bool maybeKeepChanges();
     void updateTitle();
+    /// The design's name as the title shows it: its file's name, else its own name.
+    QString displayName() const;
     void designChanged();
     void stepsChanged();
     void showShown();
@@ -139,8 +177,9 @@ private:
     void fillRecentMenu();
     void startFromRandom();
     void startFromSourceImage();
-    void exportAnimation();
-    void exportImage();
+    /// Whether `file` may be written: it does not exist, or the user lets it be replaced.
+    bool mayOverwrite(const QString& file);
+    void fillBranchList();
 
     EditorDocument* mDocument = nullptr;
     RenderService* mRenderer;
@@ -169,6 +208,13 @@ private:
     int mMergeId = 0;
     int mNextMergeId = 1;
     std::optional<UnsavedAnswer> mUnsavedAnswer;
+    std::optional<ImageSaveAnswer> mImageSaveAnswer;
+    std::optional<DiskChangeAnswer> mDiskChangeAnswer;
+    std::optional<bool> mOverwriteAnswer;
+    QListWidget* mBranchList = nullptr;
+    QLabel* mBranchLabel = nullptr;
+    QDialog* mGuide = nullptr;
+    ImageWriteJob* mImageJob = nullptr; ///< Save into an image, made on first use
 };
 
 /// A solid design on its object, turned by dragging (its angle kept in meta.view), the object

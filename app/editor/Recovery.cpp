@@ -62,6 +62,7 @@ RecoveredDesign readRecovery(const QFileInfo& info) {
     if (root.contains("saved") && root["saved"].is_string())
         r.saved = QDateTime::fromString(QString::fromStdString(root["saved"].get<std::string>()), Qt::ISODateWithMs);
     if (!r.saved.isValid()) r.saved = info.lastModified();
+    r.declined = root.value("declined", false);
     return r;
 }
 
@@ -149,6 +150,31 @@ std::vector<RecoveredDesign> pendingRecoveries(const QString& folder, QStringLis
 }
 
 bool discardRecovery(const QString& recoveryFile) { return QFile::remove(recoveryFile); }
+
+bool declineRecovery(const QString& recoveryFile) {
+    QFile f(recoveryFile);
+    if (!f.open(QIODevice::ReadOnly)) return false;
+    const QByteArray bytes = f.readAll();
+    f.close();
+    try {
+        auto root = nlohmann::ordered_json::parse(bytes.constData(), bytes.constData() + bytes.size());
+        if (!root.is_object()) return false;
+        root["declined"] = true;
+        writeFileAtomically(QFile::encodeName(recoveryFile).toStdString(),
+                            root.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    } catch (const std::exception& e) {
+        qWarning("cannot mark %s declined: %s", qPrintable(recoveryFile), e.what());
+        return false;
+    }
+    return true;
+}
+
+int purgeOldRecoveries(const QString& folder, int days, const QDateTime& now) {
+    int removed = 0;
+    for (const RecoveredDesign& r : pendingRecoveries(folder))
+        if (r.saved.isValid() && r.saved.daysTo(now) > days && discardRecovery(r.recoveryFile)) ++removed;
+    return removed;
+}
 
 QString defaultRecoveryFolder() {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/recovery");

@@ -5,7 +5,9 @@
 /// atomically a short while after each change and at once by flush(), and removed when the
 /// document is saved clean or the editor closes normally (discard()). The file is a JSON object
 /// {"format": "marbler-recovery", "file": the design's file or null, "saved": ISO time,
-/// "baseDirectory": ..., "genome": the document's fileGenome()}, so the muted steps come back too.
+/// "baseDirectory": ..., "genome": the document's fileGenome()}, so the muted steps come back too;
+/// "declined": true once the user said No to it (kept, listed by File ▸ Recover unsaved designs,
+/// not offered at start again), until discarded or RecoveryKeepDays old.
 ///
 /// While its editor runs, a recovery file is locked (a QLockFile beside it): only the files of
 /// editors that are gone (a crash) are offered by pendingRecoveries, never those of an editor
@@ -66,6 +68,9 @@ struct RecoveredDesign {
     /// an EditorDocument made from it shows the design that was being edited, exactly.
     Genome design;
     QDateTime saved; ///< when the recovery file was written
+    /// The user said No when it was offered: kept (File ▸ Recover unsaved designs…) but not
+    /// offered again at start.
+    bool declined = false;
 };
 
 /// The recovery files in `folder` whose editors are gone, newest first. A file that cannot be
@@ -73,8 +78,16 @@ struct RecoveredDesign {
 /// to `warnings` when given, and logged.
 std::vector<RecoveredDesign> pendingRecoveries(const QString& folder, QStringList* warnings = nullptr);
 
-/// Removes a recovery file once its design was taken back or declined; false when it could not.
+/// Removes a recovery file once its design was taken back or discarded; false when it could not.
 bool discardRecovery(const QString& recoveryFile);
+/// Marks a recovery file declined (see RecoveredDesign::declined); false when it could not.
+bool declineRecovery(const QString& recoveryFile);
+/// How long a recovery file is kept after it was written: then it is old, and purged.
+inline constexpr int RecoveryKeepDays = 30;
+/// Removes the recovery files in `folder` whose editors are gone and that were written more than
+/// `days` days before `now`; returns how many went.
+int purgeOldRecoveries(const QString& folder, int days = RecoveryKeepDays,
+                       const QDateTime& now = QDateTime::currentDateTimeUtc());
 
 /// Where editors keep their recovery files: the application data folder + "/recovery".
 QString defaultRecoveryFolder();

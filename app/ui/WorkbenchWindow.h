@@ -39,6 +39,7 @@ class DesignCell;
 class DesignDialog;
 class EditorWindow;
 class RenderService;
+struct RecoveredDesign;
 class SavedFileNotice;
 class SessionsDialog;
 
@@ -106,11 +107,18 @@ public:
     /// (placeOpened), to breed from; its saved files show on the status bar.
     EditorWindow* openEditor(const Genome& design, const QString& file = {});
     /// Offers, one by one, the designs editors left unsaved when Marbler stopped (Recovery.h:
-    /// the autosaves in `folder`). Each one accepted opens in an editor exactly as it was,
-    /// its changes still unsaved; each one answered, either way, is taken out of the folder. `accept` answers instead of the user
-    /// (tests). Returns the editors opened.
+    /// the autosaves in `folder`), but those declined before; old ones are purged first. Each one
+    /// accepted opens in an editor exactly as it was, its changes still unsaved; each one
+    /// declined is kept, for File ▸ Recover unsaved designs…. `accept` answers instead of the
+    /// user (tests). Returns the editors opened.
     std::vector<EditorWindow*> offerRecoveries(const QString& folder,
                                                std::function<bool(const QString& name)> accept = {});
+    /// File ▸ Recover unsaved designs… (also in the editor): every design left in `folder`
+    /// (default: defaultRecoveryFolder()), declined ones too, to open or discard. Non-modal.
+    QDialog* showRecoveries(const QString& folder = {});
+    /// Opens a recovered design in an editor as it was (unsaved) and removes its recovery file
+    /// once the editor's own autosave holds it.
+    EditorWindow* recover(const RecoveredDesign& design);
     /// File ▸ New marbled paper: the A4 paper `marbler paper --seed SEED` makes (Paper.h) goes
     /// into the grid as an opened design does (placeOpened), a starting point to breed from.
     /// Returns the cells filled. The menu's action (object name "newPaperAction") draws a seed.

@@ -104,30 +104,33 @@ TEST(EditorDocument, UndoAndRedoRestoreTheExactGenomeAcrossEveryKindOfEdit) {
         EXPECT_EQ(stack.index(), static_cast<int>(states.size()) - 1) << "each edit is one undo step";
     };
 
-    // A drop goes to the end of the initial state, a comb to the end of the strokes.
-    EXPECT_EQ(doc.addStep(drop(200, 200, 50, 1)), 3u);
+    // A drop added within the initial state stays in it; steps added with no place go last.
+    EXPECT_EQ(doc.addStep(drop(200, 200, 50, 1), 3), 3u);
     record();
     EXPECT_TRUE(doc.isInitial(3));
     EXPECT_EQ(doc.addStep(comb(45, 30)), 7u);
     record();
-    doc.addSteps({drop(100, 100, 20, 0), wave(10), drop(900, 900, 20, 2)}, QStringLiteral("Drop pattern"));
+    EXPECT_EQ(doc.addSteps({drop(100, 100, 20, 0), wave(10), drop(900, 900, 20, 2)},
+                           QStringLiteral("Drop pattern")),
+              8u);
     record();
     EXPECT_EQ(doc.stepCount(), 11u);
-    EXPECT_EQ(doc.design().initial.size(), 6u);
-    Operation edited = doc.step(9);
+    EXPECT_EQ(doc.design().initial.size(), 4u);
+    EXPECT_EQ(doc.step(8).tool, Tool::Drop) << "after the strokes, where it was put";
+    Operation edited = doc.step(7);
     edited.spacing = 23;
-    doc.setStep(9, edited);
+    doc.setStep(7, edited);
     record();
     doc.removeStep(1);
     record();
-    EXPECT_EQ(doc.duplicateStep(6), 7u);
+    EXPECT_EQ(doc.duplicateStep(4), 5u);
     record();
-    EXPECT_EQ(doc.step(7).tool, Tool::Wave);
-    EXPECT_EQ(doc.step(7), doc.step(6));
-    EXPECT_FALSE(doc.moveStep(9, 2)) << "a comb has no place in the initial state";
-    EXPECT_TRUE(doc.moveStep(9, 5));
+    EXPECT_EQ(doc.step(5).tool, Tool::Wave);
+    EXPECT_EQ(doc.step(5), doc.step(4));
+    EXPECT_FALSE(doc.moveStep(7, 2)) << "a comb has no place in the initial state";
+    EXPECT_TRUE(doc.moveStep(7, 3));
     record();
-    EXPECT_FALSE(doc.isInitial(5)) << "at the boundary a stroke stays a stroke";
+    EXPECT_FALSE(doc.isInitial(3)) << "at the boundary a stroke stays a stroke";
     doc.setMuted(2, true);
     record();
     doc.setMuted(8, true);
@@ -151,12 +154,12 @@ TEST(EditorDocument, UndoAndRedoRestoreTheExactGenomeAcrossEveryKindOfEdit) {
     EXPECT_EQ(texts[0], "Add drop 4");
     EXPECT_EQ(texts[1], "Add comb 8");
     EXPECT_EQ(texts[2], "Drop pattern");
-    EXPECT_EQ(texts[3], "comb 10: spacing 30 → 23");
+    EXPECT_EQ(texts[3], "comb 8: spacing 30 → 23");
     EXPECT_EQ(texts[4], "Delete drop 2");
-    EXPECT_EQ(texts[5], "Duplicate wave 7");
-    EXPECT_EQ(texts[6], "Move comb 10 to 6");
+    EXPECT_EQ(texts[5], "Duplicate wave 5");
+    EXPECT_EQ(texts[6], "Move comb 8 to 4");
     EXPECT_EQ(texts[7], "Mute drop 3");
-    EXPECT_EQ(texts[8], "Mute wave 9");
+    EXPECT_EQ(texts[8], "Mute drop 9");
     EXPECT_EQ(texts[9], "Ink 2: #b8412c → #112233");
     EXPECT_EQ(texts[10], "Add ink 4: #aa0000");
     EXPECT_EQ(texts[11], "Background: #f3ecdc → #ffffff");
