@@ -45,6 +45,8 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QRandomGenerator>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSlider>
 #include <QSplitter>
@@ -67,6 +69,9 @@ namespace marbler::ui {
 namespace {
 
 const QString RecentKey = QStringLiteral("editor/recentFiles");
+/// The steps panel's width: the list and the form's labels and fields, no more (the form
+/// scrolls when a step has more), so that the canvas and the object view get the room.
+constexpr int StepsPanelWidth = 360;
 constexpr int MaxRecent = 10;
 
 /// Keys of the solid object views, apart from the grid's, the large views' and the canvases'.
@@ -233,9 +238,10 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
     mCanvases->setStretchFactor(0, 3);
     if (mObject) mCanvases->setStretchFactor(2, 2);
     const auto dock = [this](const char* name) { return findChild<QDockWidget*>(QLatin1String(name)); };
-    resizeDocks({dock("stepsDock"), dock("paletteDock")}, {380, 220}, Qt::Horizontal);
-    resizeDocks({dock("stepsDock"), dock("historyDock")}, {560, 180}, Qt::Vertical);
+    resizeDocks({dock("stepsDock"), dock("paletteDock")}, {StepsPanelWidth + 20, 220}, Qt::Horizontal);
+    resizeDocks({dock("stepsDock"), dock("historyDock")}, {520, 160}, Qt::Vertical);
 
+    if (dimension == 3) setSlice(mSlice);
     mToolSettings.color = 0;
     mCanvas->setToolSettings(mToolSettings);
     setTool(EditorTool::Drop);
@@ -243,7 +249,11 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
     designChanged();
     updateTitle();
     fillBranchList();
-    resize(1280, 860);
+    // A laptop's screen holds it whole (1,366 x 768 and up); a remembered size comes next.
+    QSize size(1280, 860);
+    if (const QScreen* screen = QGuiApplication::primaryScreen())
+        size = size.boundedTo(screen->availableGeometry().size() - QSize(16, 48));
+    resize(size);
     QSettings settings;
     restoreGeometry(settings.value(QStringLiteral("editor/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("editor/state")).toByteArray());
@@ -273,9 +283,21 @@ void EditorWindow::buildDocks() {
     mSteps->setObjectName(QStringLiteral("stepList"));
     mForm = new ParamForm(stepsPanel);
     mForm->setObjectName(QStringLiteral("paramForm"));
+    // The form scrolls inside a panel of its own width: a step with many fields (a 3D comb) or a
+    // tool switched never widens the dock, so the canvas never moves by itself.
+    auto* formScroll = new QScrollArea(stepsPanel);
+    formScroll->setObjectName(QStringLiteral("paramScroll"));
+    formScroll->setWidget(mForm);
+    formScroll->setWidgetResizable(true);
+    formScroll->setFrameShape(QFrame::NoFrame);
+    formScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    formScroll->setMinimumWidth(StepsPanelWidth);
     auto* split = new QSplitter(Qt::Vertical, stepsPanel);
     split->addWidget(mSteps);
-    split->addWidget(mForm);
+    split->addWidget(formScroll);
+    split->setStretchFactor(0, 2);
+    split->setStretchFactor(1, 3);
+    split->setSizes({200, 300});
     stepsLayout->addWidget(split);
     auto* stepsDock = new QDockWidget(tr("Steps"), this);
     stepsDock->setObjectName(QStringLiteral("stepsDock"));
@@ -313,14 +335,28 @@ void EditorWindow::buildDocks() {
         mSlicePosition->setRange(0, 1000);
         mSlicePosition->setValue(500);
         mSlicePosition->setToolTip(tr("Where along its axis the cross-section is cut (PgUp / PgDn move it)"));
-        toolLayout->addWidget(mSlicePosition);
+        // Where the section is, as a number too (design units along its axis).
+        mSliceValue = new QDoubleSpinBox(toolPanel);
+        mSliceValue->setObjectName(QStringLiteral("sliceValue"));
+        mSliceValue->setDecimals(1);
+        mSliceValue->setToolTip(tr("Where the cross-section is cut, in design units along its axis"));
+        auto* positionRow = new QHBoxLayout;
+        positionRow->addWidget(mSlicePosition, 1);
+        positionRow->addWidget(mSliceValue);
+        toolLayout->addLayout(positionRow);
         const auto sliceChanged = [this] {
+            if (mSliceUpdating) return;
             const glm::dvec3 size = mDocument->design().size;
             const int axis = mSliceAxis->currentIndex();
             setSlice(Slice{axis, size[axis] * mSlicePosition->value() / 1000.0});
         };
         connect(mSliceAxis, &QComboBox::currentIndexChanged, this, sliceChanged);
         connect(mSlicePosition, &QSlider::valueChanged, this, sliceChanged);
+        connect(mSliceValue, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+            if (mSliceUpdating) return;
+            const glm::dvec3 size = mDocument->design().size;
+            setSlice(Slice{mSliceAxis->currentIndex(), std::clamp(value, 0.0, size[mSliceAxis->currentIndex()])});
+        });
         auto* meshRow = new QHBoxLayout;
         meshRow->addWidget(new QLabel(tr("Object"), toolPanel));
         auto* mesh = new QComboBox(toolPanel);
@@ -346,6 +382,7 @@ void EditorWindow::buildDocks() {
     addDockWidget(Qt::LeftDockWidgetArea, toolDock);
 
     mHistory = new QUndoView(mDocument->undoStack(), this);
+    mHistory->setMinimumHeight(60);
     mHistory->setObjectName(QStringLiteral("historyView"));
     mHistory->setEmptyLabel(tr("Opened"));
     mHistory->setToolTip(tr("Every edit; click one to go back (or forward) to it"));
@@ -762,6 +799,18 @@ void EditorWindow::setSlice(const Slice& slice) {
     mSlice = slice;
     mCanvas->setSlice(slice);
     mCompare->setSlice(slice);
+    if (mObject) mObject->setSlice(slice);
+    if (mSliceValue) {
+        // The number and the slider say where it is, whichever moved it.
+        mSliceUpdating = true;
+        const double extent = mDocument->design().size[slice.axis];
+        mSliceAxis->setCurrentIndex(slice.axis);
+        mSliceValue->setRange(0.0, extent);
+        mSliceValue->setValue(slice.value);
+        mSliceValue->setPrefix(tr("%1 = ").arg(QStringLiteral("xyz").at(slice.axis)));
+        if (extent > 0.0) mSlicePosition->setValue(int(std::lround(slice.value / extent * 1000.0)));
+        mSliceUpdating = false;
+    }
 }
 
 QString EditorWindow::displayName() const {
@@ -1134,6 +1183,11 @@ void SolidObjectView::setDesign(const Genome& design) {
     request(false);
 }
 
+void SolidObjectView::setSlice(const Slice& slice) {
+    mSlice = slice;
+    update();
+}
+
 void SolidObjectView::setMesh(const QString& mesh) {
     mMesh = mesh;
     request(false);
@@ -1166,6 +1220,49 @@ void SolidObjectView::paintEvent(QPaintEvent*) {
     const QRectF target((width() - size.width()) / 2, (height() - size.height()) / 2, size.width(), size.height());
     p.setRenderHint(QPainter::SmoothPixmapTransform);
     p.drawImage(target, mImage);
+    if (mSlice && mDesign.dimension == 3) paintSlice(p);
+}
+
+void SolidObjectView::paintSlice(QPainter& p) const {
+    // The block in an oblique view in the corner, the section a plane through it: where the
+    // canvas cuts, at a glance, whatever the object's shape.
+    const glm::dvec3 size = mDesign.size;
+    const double extent = std::max({size.x, size.y, size.z, 1e-9});
+    constexpr double Side = 64.0;
+    const QPointF origin(12.0, height() - 14.0);
+    const auto at = [&](glm::dvec3 q) {
+        q /= extent;
+        return origin + QPointF((q.x + 0.5 * q.z) * Side, -(q.y + 0.35 * q.z) * Side);
+    };
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(30, 30, 30, 200));
+    p.drawRoundedRect(QRectF(origin.x() - 8.0, origin.y() - Side * 1.5, Side * 2.9, Side * 1.5 + 8.0), 6.0, 6.0);
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(QColor(220, 220, 220, 200), 1.0));
+    const glm::dvec3 corner[8] = {{0, 0, 0},          {size.x, 0, 0},          {size.x, size.y, 0},
+                                  {0, size.y, 0},     {0, 0, size.z},          {size.x, 0, size.z},
+                                  {size.x, size.y, size.z}, {0, size.y, size.z}};
+    constexpr int Edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    for (const auto& e : Edges) p.drawLine(at(corner[e[0]]), at(corner[e[1]]));
+    // The plane: the block's extent along the two other axes, at the section's value.
+    const int axis = mSlice->axis;
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    QPolygonF plane;
+    for (const auto& [ua, ub] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}) {
+        glm::dvec3 q(0.0);
+        q[axis] = mSlice->value;
+        q[a] = ua * size[a];
+        q[b] = ub * size[b];
+        plane << at(q);
+    }
+    p.setPen(QPen(QColor(255, 170, 40), 1.5));
+    p.setBrush(QColor(255, 170, 40, 90));
+    p.drawPolygon(plane);
+    p.setPen(QColor(235, 235, 235));
+    p.drawText(QPointF(origin.x() + Side * 1.55, origin.y() - 2.0),
+               tr("%1 = %2").arg(QStringLiteral("xyz").at(axis)).arg(mSlice->value, 0, 'f', 1));
 }
 
 void SolidObjectView::resizeEvent(QResizeEvent*) { request(false); }

@@ -35,6 +35,7 @@ class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
 class QMenu;
+class QPainter;
 class QSlider;
 class QSplitter;
 class QUndoView;
@@ -197,6 +198,8 @@ private:
     AnimationExportJob* mAnimationJob = nullptr; ///< Export animation's writer, made on first use
     QComboBox* mSliceAxis = nullptr;
     QSlider* mSlicePosition = nullptr;
+    QDoubleSpinBox* mSliceValue = nullptr;
+    bool mSliceUpdating = false; ///< the slice's widgets are being set to it (no feedback)
     QActionGroup* mTools = nullptr;
     QMenu* mRecentMenu = nullptr;
     QLabel* mStatus = nullptr;
@@ -228,6 +231,8 @@ public:
     void setDesign(const Genome& design);
     void setMesh(const QString& mesh);
     QString mesh() const { return mMesh; }
+    /// The cross-section the editor shows: drawn in the corner as a plane through the block.
+    void setSlice(const Slice& slice);
     ViewAngle angle() const { return mAngle; }
     const QImage& image() const { return mImage; }
 
@@ -240,6 +245,7 @@ protected:
 
 private:
     void request(bool previewOnly);
+    void paintSlice(QPainter& p) const;
     RenderService* mRenderer;
     std::uint64_t mKey;
     Genome mDesign;
@@ -248,6 +254,7 @@ private:
     QImage mImage;
     QPointF mLast;
     bool mTurning = false;
+    std::optional<Slice> mSlice;
 };
 
 } // namespace marbler::ui

@@ -87,7 +87,12 @@ void takeEditorScreenshot(WorkbenchWindow& window, RenderService& service, const
         }
         EditorWindow* editor = window.openEditor(g, design);
         editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
-        editor->resize(1680, 960);
+        // MARBLER_EDITOR_SCREENSHOT_SIZE=WxH: the window's size (a laptop's 1366x768, say).
+        const QStringList size = qEnvironmentVariable("MARBLER_EDITOR_SCREENSHOT_SIZE").split(QLatin1Char('x'));
+        if (size.size() == 2 && size[0].toInt() > 0 && size[1].toInt() > 0)
+            editor->resize(size[0].toInt(), size[1].toInt());
+        else
+            editor->resize(1680, 960);
         if (!g.operations.empty()) editor->selectStep(g.initial.size());
         auto grab = [editor, &service, file, status] {
             if (!service.idle()) return;
