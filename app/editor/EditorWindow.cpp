@@ -362,6 +362,8 @@ void EditorWindow::wireDocument() {
         mDocument->setStep(*mSelected, op, mergeFor(dragging));
         mFormEditing = false;
     });
+    // Enter in a field commits it and hands the keys back to the canvas (tool keys, Space, Undo).
+    connect(mForm, &ParamForm::committed, this, [this] { mCanvas->setFocus(Qt::OtherFocusReason); });
 
     // Inks.
     connect(mPalette, &PaletteEditor::colorChanged, this, [this](int index, Color c, bool dragging) {
