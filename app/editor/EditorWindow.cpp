@@ -477,6 +477,7 @@ void EditorWindow::stepsChanged() {
         row.detail = mDocument->stepName(i);
         row.muted = mDocument->isMuted(i);
         row.initial = mDocument->isInitial(i);
+        row.tool = QString::fromUtf8(spec.name.data(), qsizetype(spec.name.size())); // groups and the filter
         rows.push_back(row);
     }
     mSteps->setRows(rows);

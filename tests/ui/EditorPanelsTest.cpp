@@ -807,3 +807,131 @@ TEST(ParamForm, StretchTeethByCountAndSpacing) {
     EXPECT_TRUE(validStep(designOf(2), form.step()));
 }
 
+namespace {
+
+std::vector<StepRow> sprayDesignRows() {
+    // Two drops, one spray stroke of 40 droplets, then three combs and a wave.
+    std::vector<StepRow> rows;
+    auto add = [&rows](const char* tool, bool initial, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i)
+            rows.push_back({QString::fromLatin1(tool), false, initial, {}, QString::fromLatin1(tool)});
+    };
+    add("drop", true, 2);
+    add("spray", true, 40);
+    add("comb", false, 3);
+    add("wave", false, 1);
+    return rows;
+}
+
+/// The texts of the rows shown, top to bottom.
+QStringList shownRows(const StepList& list) {
+    QStringList texts;
+    for (int i = 0; i < list.list()->count(); ++i)
+        if (!list.list()->item(i)->isHidden()) texts << list.list()->item(i)->text().trimmed();
+    return texts;
+}
+
+} // namespace
+
+// Issue 27, item 17: one spray stroke is one row, which opens to show its droplets; the indices
+// in and out are still the document's steps.
+TEST(StepList, ARunOfOneToolIsOneRowThatOpens) {
+    StepList list;
+    list.setRows(sprayDesignRows());
+    ASSERT_EQ(list.rowCount(), 46u) << "every step keeps its index";
+    EXPECT_EQ(shownRows(list),
+              (QStringList{QStringLiteral("1. drop"), QStringLiteral("2. drop"),
+                           QStringLiteral("▸ 40 sprays (steps 3–42)"),
+                           QStringLiteral("▸ 3 combs (steps 43–45)"), QStringLiteral("46. wave")}));
+    QSignalSpy current(&list, &StepList::currentChanged);
+    list.show();
+    list.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&list));
+    list.list()->setFocus();
+    current.clear();
+
+    // Selecting the group's row selects its first step.
+    list.list()->setCurrentItem(list.list()->item(2));
+    ASSERT_EQ(current.count(), 1);
+    EXPECT_EQ(current.last().at(0).value<std::optional<std::size_t>>(), std::optional<std::size_t>(2));
+    EXPECT_TRUE(list.isGroupHead(2));
+    // → opens it: its 40 steps are rows, numbered as the document's.
+    QTest::keyClick(list.list(), Qt::Key_Right);
+    EXPECT_TRUE(list.isGroupExpanded(2));
+    QStringList rows = shownRows(list);
+    ASSERT_EQ(rows.size(), 44);
+    EXPECT_EQ(rows[2], QStringLiteral("▾ 3. spray"));
+    EXPECT_EQ(rows[41], QStringLiteral("42. spray"));
+    EXPECT_TRUE(list.isRowShown(30));
+    list.list()->setCurrentRow(30);
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(30));
+    // ← folds it again, and the group's row (step 3) is selected.
+    QTest::keyClick(list.list(), Qt::Key_Left);
+    EXPECT_FALSE(list.isGroupExpanded(2));
+    EXPECT_FALSE(list.isRowShown(30));
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(2));
+    EXPECT_EQ(current.last().at(0).value<std::optional<std::size_t>>(), std::optional<std::size_t>(2));
+    // Double-click opens it too.
+    const QPoint groupRow = list.list()->visualItemRect(list.list()->item(2)).center();
+    QTest::mouseClick(list.list()->viewport(), Qt::LeftButton, {}, groupRow);
+    QTest::mouseDClick(list.list()->viewport(), Qt::LeftButton, {}, groupRow);
+    EXPECT_TRUE(list.isGroupExpanded(2));
+    list.setGroupExpanded(2, false);
+
+    // The window selecting a step inside a folded group (a pick on the canvas) opens it.
+    list.setCurrent(20);
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(20));
+    EXPECT_TRUE(list.isRowShown(20));
+    // New rows (an edit) keep it open and the step selected.
+    list.setRows(sprayDesignRows());
+    EXPECT_TRUE(list.isGroupExpanded(2));
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(20));
+
+    // A folded group's box mutes all its steps; the keys act on the step selected.
+    list.setGroupExpanded(43, false);
+    QSignalSpy muted(&list, &StepList::mutedToggled);
+    list.list()->item(42)->setCheckState(Qt::Unchecked);
+    ASSERT_EQ(muted.count(), 3);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(muted.at(i).at(0).value<std::size_t>(), std::size_t(42 + i));
+        EXPECT_TRUE(muted.at(i).at(1).toBool());
+    }
+    QSignalSpy deleted(&list, &StepList::deleteRequested);
+    list.setCurrent(42);
+    QTest::keyClick(list.list(), Qt::Key_Delete);
+    ASSERT_EQ(deleted.count(), 1);
+    EXPECT_EQ(deleted.last().at(0).value<std::size_t>(), 42u);
+    // Two steps of one tool stay two rows.
+    std::vector<StepRow> two = sprayDesignRows();
+    two.resize(2);
+    list.setRows(two);
+    EXPECT_EQ(shownRows(list), (QStringList{QStringLiteral("1. drop"), QStringLiteral("2. drop")}));
+}
+
+// Issue 27, item 17: the filter shows the steps of one tool.
+TEST(StepList, TheFilterShowsOneToolsSteps) {
+    StepList list;
+    list.setRows(sprayDesignRows());
+    QComboBox* filter = list.filter();
+    ASSERT_NE(filter, nullptr);
+    EXPECT_EQ(filter->objectName(), QStringLiteral("stepFilter"));
+    EXPECT_FALSE(filter->toolTip().isEmpty());
+    QStringList entries;
+    for (int i = 0; i < filter->count(); ++i)
+        entries << filter->itemText(i);
+    EXPECT_EQ(entries, (QStringList{QStringLiteral("All steps"), QStringLiteral("drops (2)"),
+                                    QStringLiteral("sprays (40)"), QStringLiteral("combs (3)"),
+                                    QStringLiteral("waves (1)")}));
+    filter->setCurrentIndex(filter->findData(QStringLiteral("comb")));
+    EXPECT_EQ(shownRows(list), (QStringList{QStringLiteral("▸ 3 combs (steps 43–45)")}));
+    list.setGroupExpanded(42, true);
+    EXPECT_EQ(shownRows(list), (QStringList{QStringLiteral("▾ 43. comb"), QStringLiteral("44. comb"),
+                                            QStringLiteral("45. comb")}));
+    // New rows keep the filter; a step selected outside it clears it.
+    list.setRows(sprayDesignRows());
+    EXPECT_EQ(filter->currentData().toString(), QStringLiteral("comb"));
+    list.setCurrent(45);
+    EXPECT_EQ(filter->currentIndex(), 0);
+    EXPECT_TRUE(list.isRowShown(45));
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(45));
+}
