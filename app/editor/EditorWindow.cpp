@@ -610,6 +610,8 @@ void EditorWindow::wireDocument() {
         mDocument->setStep(*mSelected, op, mergeFor(dragging));
         mFormEditing = false;
     });
+    // Enter in a field commits it and hands the keys back to the canvas (tool keys, Space, Undo).
+    connect(mForm, &ParamForm::committed, this, [this] { mCanvas->setFocus(Qt::OtherFocusReason); });
 
     // Inks.
     connect(mPalette, &PaletteEditor::colorChanged, this, [this](int index, Color c, bool dragging) {
@@ -733,6 +735,7 @@ void EditorWindow::stepsChanged() {
         row.detail = mDocument->stepName(i);
         row.muted = mDocument->isMuted(i);
         row.initial = mDocument->isInitial(i);
+        row.tool = QString::fromUtf8(spec.name.data(), qsizetype(spec.name.size())); // groups and the filter
         rows.push_back(row);
     }
     mSteps->setRows(rows);

@@ -9,17 +9,20 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPixmap>
 #include <QRegularExpression>
 #include <QSlider>
 #include <QSpinBox>
+#include <QVBoxLayout>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace marbler::ui {
 namespace {
@@ -66,7 +69,76 @@ void applyComponent(const ParamSpec& spec, Operation& op, int dimension, int com
     }
 }
 
+QString text(std::string_view s) {
+    return QString::fromUtf8(s.data(), qsizetype(s.size()));
+}
+
+/// Whether a key is one of the window's undo or redo keys.
+bool isUndoKey(const QKeyEvent* key) {
+    const QKeySequence pressed(key->keyCombination());
+    return key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo) ||
+           pressed == QKeySequence(Qt::CTRL | Qt::Key_Z) ||
+           pressed == QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z) ||
+           pressed == QKeySequence(Qt::CTRL | Qt::Key_Y);
+}
+
 } // namespace
+
+CompactSpinBox::CompactSpinBox(QWidget* parent)
+    : QDoubleSpinBox(parent) {
+    // What QDoubleSpinBox rounds every value to: fine enough that a value is kept as it is.
+    setDecimals(15);
+}
+
+QString CompactSpinBox::compact(double value) {
+    return QString::number(value, 'g', 6);
+}
+
+QString CompactSpinBox::textFromValue(double value) const {
+    return compact(value);
+}
+
+namespace {
+
+/// The number in a spin box's text, without its prefix and suffix.
+QString numberPart(const QDoubleSpinBox& box, QString text) {
+    if (!box.prefix().isEmpty() && text.startsWith(box.prefix())) text.remove(0, box.prefix().size());
+    if (!box.suffix().isEmpty() && text.endsWith(box.suffix())) text.chop(box.suffix().size());
+    return text.trimmed();
+}
+
+std::optional<double> parseNumber(const QLocale& locale, const QString& text) {
+    bool ok = false;
+    double value = text.toDouble(&ok);
+    if (!ok) value = locale.toDouble(text, &ok);
+    if (!ok || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+} // namespace
+
+double CompactSpinBox::valueFromText(const QString& text) const {
+    const QString number = numberPart(*this, text);
+    // The text shown, unchanged, is the value itself (not its six digits).
+    if (number == compact(value())) return value();
+    return parseNumber(locale(), number).value_or(value());
+}
+
+QValidator::State CompactSpinBox::validate(QString& input, int&) const {
+    const QString number = numberPart(*this, input);
+    if (number.isEmpty()) return QValidator::Intermediate;
+    if (const auto value = parseNumber(locale(), number))
+        return *value >= minimum() && *value <= maximum() ? QValidator::Acceptable : QValidator::Intermediate;
+    // A number being typed ("-", "1.", "2e", "2e-").
+    static const QRegularExpression partial(QStringLiteral("^[+-]?[0-9]*[.,]?[0-9]*([eE][+-]?[0-9]*)?$"));
+    return partial.match(number).hasMatch() ? QValidator::Intermediate : QValidator::Invalid;
+}
+
+void CompactSpinBox::fixup(QString& input) const {
+    // A number out of range becomes the nearest in range; anything else keeps the old value.
+    if (const auto value = parseNumber(locale(), numberPart(*this, input)))
+        input = prefix() + compact(std::clamp(*value, minimum(), maximum())) + suffix();
+}
 
 /// The widgets of one parameter.
 struct ParamForm::Row {
@@ -77,6 +149,8 @@ struct ParamForm::Row {
     std::vector<QSlider*> sliders;
     QComboBox* combo = nullptr;
     QLineEdit* text = nullptr;
+    QSpinBox* teethCount = nullptr;         ///< a stretch's teeth: how many
+    CompactSpinBox* teethSpacing = nullptr; ///< and how far apart (even)
 };
 
 ParamForm::ParamForm(QWidget* parent) : QWidget(parent), mLayout(new QFormLayout(this)) {
@@ -137,18 +211,20 @@ void ParamForm::build() {
         auto* row = new Row;
         row->spec = &spec;
         row->box = new QWidget(this);
-        const QString key = QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size()));
+        const QString key = text(spec.key);
+        const QString label = text(spec.label);
         row->box->setObjectName(QStringLiteral("param-") + key);
-        QString tip = QString::fromUtf8(spec.help.data(), qsizetype(spec.help.size()));
+        QString tip = text(spec.help);
         if (spec.kind == ParamKind::Choice)
             tip += QStringLiteral(" (") + QString::fromStdString(spec.describeChoices()) + QStringLiteral(")");
         else if (spec.kind != ParamKind::Color && (std::isfinite(spec.range.min) || std::isfinite(spec.range.max)))
             tip += QStringLiteral(" (") + QString::fromStdString(spec.range.describe()) + QStringLiteral(")");
         if (spec.version > 1) tip += tr(" [format version %1]").arg(spec.version);
+        tip += tr("\nIn the file: \"%1\"").arg(key);
         row->box->setToolTip(tip);
         auto* layout = new QHBoxLayout(row->box);
         layout->setContentsMargins(0, 0, 0, 0);
-        const QString unit = QString::fromUtf8(spec.unit.data(), qsizetype(spec.unit.size()));
+        const QString unit = text(spec.unit);
 
         if (spec.kind == ParamKind::Color) {
             row->combo = new QComboBox(row->box);
@@ -170,8 +246,39 @@ void ParamForm::build() {
                 commitComponent(*row->spec, 0, index, false);
             });
         } else if (spec.kind == ParamKind::Teeth) {
+            // Count and spacing for the usual even comb; the positions as text for any other.
+            auto* lines = new QVBoxLayout;
+            auto* even = new QHBoxLayout;
+            layout->addLayout(lines, 1);
+            lines->addLayout(even);
+            row->teethCount = new QSpinBox(row->box);
+            row->teethCount->setObjectName(QStringLiteral("edit-teeth-count"));
+            row->teethCount->setRange(2, int(MaxTeeth));
+            row->teethCount->setKeyboardTracking(false);
+            row->teethCount->setToolTip(tr("How many teeth: more or fewer over the same span"));
+            row->teethSpacing = new CompactSpinBox(row->box);
+            row->teethSpacing->setObjectName(QStringLiteral("edit-teeth-spacing"));
+            row->teethSpacing->setRange(1e-3, 1e9);
+            row->teethSpacing->setSuffix(QStringLiteral(" ") + unit);
+            row->teethSpacing->setKeyboardTracking(false);
+            row->teethSpacing->setToolTip(tr("The distance between two teeth, about the same middle"));
+            even->addWidget(new QLabel(tr("Count"), row->box));
+            even->addWidget(row->teethCount, 1);
+            even->addWidget(new QLabel(tr("Spacing"), row->box));
+            even->addWidget(row->teethSpacing, 2);
+            connect(row->teethCount, &QSpinBox::valueChanged, this, [this, row](int count) {
+                if (mUpdating || mOp.teeth.size() < 2) return;
+                // The same span, teeth spread evenly over it.
+                setTeeth(*row, count, (mOp.teeth.back() - mOp.teeth.front()) / (count - 1));
+            });
+            connect(row->teethSpacing, &QDoubleSpinBox::valueChanged, this, [this, row](double spacing) {
+                if (!mUpdating) setTeeth(*row, int(mOp.teeth.size()), spacing);
+            });
+            watch(row->teethCount);
+            watch(row->teethSpacing);
             row->text = new QLineEdit(row->box);
             row->text->setPlaceholderText(tr("positions, increasing"));
+            lines->addWidget(row->text);
             connect(row->text, &QLineEdit::editingFinished, this, [this, row] {
                 if (mUpdating) return;
                 Operation op = mOp;
@@ -197,6 +304,7 @@ void ParamForm::build() {
                                    std::isfinite(spec.range.max) ? int(std::floor(spec.range.max)) : 1000000);
                     spin->setKeyboardTracking(false);
                     spin->setToolTip(tip);
+                    watch(spin);
                     layout->addWidget(spin, 1);
                     row->counts.push_back(spin);
                     connect(spin, &QSpinBox::valueChanged, this, [this, row, i](int value) {
@@ -204,10 +312,10 @@ void ParamForm::build() {
                     });
                     continue;
                 }
-                auto* spin = new QDoubleSpinBox(row->box);
+                auto* spin = new CompactSpinBox(row->box);
                 spin->setObjectName(QStringLiteral("edit-%1-%2").arg(key).arg(i));
                 const bool direction = spec.kind == ParamKind::Direction;
-                spin->setDecimals(direction ? 4 : 2);
+                watch(spin);
                 const double wide = direction ? 1.0 : std::max(10.0 * side, 3600.0);
                 double low = std::isfinite(spec.range.min) ? spec.range.min : -wide;
                 if (spec.range.minOpen) low += direction ? 1e-4 : 0.01;
@@ -252,11 +360,9 @@ void ParamForm::build() {
         if (row->text) {
             row->text->setObjectName(QStringLiteral("edit-%1-0").arg(key));
             row->text->setToolTip(tip);
-            layout->addWidget(row->text, 1);
+            watch(row->text);
         }
-        QString label = key;
-        if (!unit.isEmpty() && spec.kind != ParamKind::Color && spec.kind != ParamKind::Choice)
-            label += QStringLiteral(" (") + unit + QStringLiteral(")");
+        // The registry's word, as the tool panel shows it; the unit is in the boxes' suffix.
         auto* caption = new QLabel(label, this);
         caption->setToolTip(tip);
         caption->setBuddy(row->box);
@@ -276,8 +382,22 @@ void ParamForm::refreshRow(const Row& row) {
     if (row.combo) row.combo->setCurrentIndex(int(getComponent(spec, mOp, 0)));
     if (row.text) {
         QStringList words;
-        for (double t : mOp.teeth) words << QString::number(t, 'g', 10);
+        for (double t : mOp.teeth)
+            words << CompactSpinBox::compact(t);
         row.text->setText(words.join(QStringLiteral(" ")));
+    }
+    if (row.teethCount && mOp.teeth.size() >= 2) {
+        const double spacing = (mOp.teeth.back() - mOp.teeth.front()) / double(mOp.teeth.size() - 1);
+        row.teethCount->setValue(int(mOp.teeth.size()));
+        row.teethSpacing->setValue(spacing);
+        bool evenly = true;
+        for (std::size_t i = 1; i < mOp.teeth.size(); ++i)
+            evenly = evenly &&
+                     std::abs(mOp.teeth[i] - mOp.teeth[i - 1] - spacing) <= 1e-6 * (1.0 + std::abs(spacing));
+        row.teethSpacing->setToolTip(
+            evenly ? tr("The distance between two teeth, about the same middle")
+                   : tr("The mean distance between the teeth, which are unevenly spaced: "
+                        "a new spacing spaces them evenly"));
     }
     for (std::size_t i = 0; i < row.counts.size(); ++i) row.counts[i]->setValue(int(getComponent(spec, mOp, int(i))));
     for (std::size_t i = 0; i < row.spins.size(); ++i) {
@@ -294,6 +414,45 @@ void ParamForm::refreshRow(const Row& row) {
         }
     }
     mUpdating = was;
+}
+
+void ParamForm::watch(QWidget* field) {
+    field->installEventFilter(this);
+}
+
+bool ParamForm::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride && isUndoKey(static_cast<QKeyEvent*>(event))) {
+        // Not the field's own text undo: the key goes on to the window's Undo or Redo.
+        event->ignore();
+        return true;
+    }
+    if (event->type() == QEvent::KeyPress) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key == Qt::Key_Return || key == Qt::Key_Enter) {
+            // The field takes its Enter first (it commits its text), then the form says so.
+            watched->event(event);
+            emit committed();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void ParamForm::setTeeth(const Row& row, int count, double spacing) {
+    if (!mHasStep || mOp.teeth.size() < 2 || !std::isfinite(spacing) || spacing <= 0.0) {
+        refreshRow(row);
+        return;
+    }
+    count = std::clamp(count, 2, int(MaxTeeth));
+    const double middle = 0.5 * (mOp.teeth.front() + mOp.teeth.back());
+    Operation op = mOp;
+    op.teeth.clear();
+    for (int i = 0; i < count; ++i)
+        op.teeth.push_back(middle + (i - 0.5 * (count - 1)) * spacing);
+    if (op.teeth != mOp.teeth && valid(op))
+        commitOperation(*row.spec, op, false);
+    else
+        refreshRow(row);
 }
 
 bool ParamForm::valid(const Operation& op) const {

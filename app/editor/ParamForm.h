@@ -1,16 +1,20 @@
 #pragma once
 /// The parameters of one step, as widgets built from the tool registry (Params.h): spin boxes
 /// with units and ranges, sliders for positions, lengths, angles, phases and shifts, the palette
-/// for an ink's colour, a list for a choice, two boxes for an extent, a text field for a
-/// stretch's teeth. Every value it emits is valid: a value outside the parameter's range, or
-/// one that breaks a rule between parameters (a flow's steps, a normal parallel to the
-/// direction), is brought back to the nearest valid value first. A 3D axis, direction or normal
-/// is kept unit, and the normal orthogonal to the direction, as loading a file makes them (so
-/// editing a direction may turn the normal with it).
+/// for an ink's colour, a list for a choice, two boxes for an extent, a stretch's teeth as a
+/// count and a spacing (and their positions as text). Each row is named by the registry's label,
+/// the word the tool panel uses too; numbers show compactly (six significant digits, an exponent
+/// for the huge and the tiny), the value kept exact until it is edited. Enter commits a field
+/// and says so (`committed`), and the fields leave the undo keys to the window. Every value it emits is
+/// valid: a value outside the parameter's range, or one that breaks a rule between parameters (a flow's
+/// steps, a normal parallel to the direction), is brought back to the nearest valid value first. A 3D axis,
+/// direction or normal is kept unit, and the normal orthogonal to the direction, as loading a file makes them
+/// (so editing a direction may turn the normal with it).
 
 #include "marbler/Genome.h"
 #include "marbler/Params.h"
 
+#include <QDoubleSpinBox>
 #include <QString>
 #include <QWidget>
 
@@ -19,6 +23,21 @@
 class QFormLayout;
 
 namespace marbler::ui {
+
+/// A number box that shows its value compactly ("1e+308", not 309 digits; six significant
+/// digits) and reads any number back, exponents included. Text the user did not change reads
+/// back as the exact value shown, so focusing and leaving a field never rounds the value.
+class CompactSpinBox : public QDoubleSpinBox {
+    Q_OBJECT
+public:
+    explicit CompactSpinBox(QWidget* parent = nullptr);
+    /// `value` in the compact form (no prefix or suffix).
+    static QString compact(double value);
+    QString textFromValue(double value) const override;
+    double valueFromText(const QString& text) const override;
+    QValidator::State validate(QString& input, int& pos) const override;
+    void fixup(QString& input) const override;
+};
 
 /// The form of one step's parameters (see the file comment).
 class ParamForm : public QWidget {
@@ -41,12 +60,22 @@ signals:
     /// and every other edit, has it false. An edit that changes nothing is not emitted, except
     /// the one that ends a drag.
     void edited(const marbler::Operation& op, const QString& key, bool dragging);
+    /// Enter was pressed in a field: its value is committed (the window hands the focus back to
+    /// the canvas, where the single-key shortcuts work).
+    void committed();
+
+protected:
+    /// Leaves the undo and redo keys of the fields to the window's Undo and Redo (a spin box
+    /// or line edit would otherwise take Ctrl+Z for its own text), and reports Enter.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     struct Row;
     void build();
     void refresh();
     void refreshRow(const Row& row);
+    void watch(QWidget* field);
+    void setTeeth(const Row& row, int count, double spacing);
     bool valid(const Operation& op) const;
     void commitComponent(const ParamSpec& spec, int component, double value, bool dragging, bool endsDrag = false);
     void commitOperation(const ParamSpec& spec, const Operation& op, bool dragging, bool endsDrag = false);

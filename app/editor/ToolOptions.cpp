@@ -1,5 +1,7 @@
 #include "editor/ToolOptions.h"
 
+#include "marbler/Params.h"
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -13,6 +15,27 @@
 namespace marbler::ui {
 
 using T = EditorTool;
+
+namespace {
+
+/// A parameter's word and unit as the registry gives them, so the panel and the step's form
+/// (ParamForm) say the same ("Shift", not alpha here and Shift there).
+const ParamSpec& param(Tool tool, ParamField field) {
+    const ParamSpec* spec = findParam(tool, field);
+    Q_ASSERT(spec);
+    return *spec;
+}
+QString labelOf(Tool tool, ParamField field) {
+    const std::string_view label = param(tool, field).label;
+    return QString::fromUtf8(label.data(), qsizetype(label.size()));
+}
+QString unitOf(Tool tool, ParamField field) {
+    const std::string_view unit = param(tool, field).unit;
+    return unit.empty() ? QString()
+                        : QStringLiteral(" ") + QString::fromUtf8(unit.data(), qsizetype(unit.size()));
+}
+
+} // namespace
 
 QString toolName(EditorTool tool) {
     switch (tool) {
@@ -76,7 +99,7 @@ QKeySequence toolShortcut(EditorTool tool) {
 ToolOptions::ToolOptions(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("toolOptions"));
     mForm = new QFormLayout(this);
-    const QString units = tr(" units");
+    const QString units = unitOf(Tool::Drop, ParamField::Radius);
     const std::vector<T> inks{T::Drop, T::Spray, T::DropLine, T::DropRings, T::DropScatter};
 
     mInk = new QComboBox(this);
@@ -90,8 +113,9 @@ ToolOptions::ToolOptions(QWidget* parent) : QWidget(parent) {
     addRow(tr("Ink"), mInk, inks);
     mLoaders.push_back([this] { mInk->setCurrentIndex(std::min(mSettings.color, mInk->count() - 1)); });
 
-    addNumber("toolRadius", tr("Radius"), tr("A clicked drop's radius (a drag sets it)"), &ToolSettings::radius, 0.1,
-              100000, units, {T::Drop, T::DropLine, T::DropRings, T::DropScatter});
+    addNumber("toolRadius", labelOf(Tool::Drop, ParamField::Radius),
+              tr("A clicked drop's radius (a drag sets it)"), &ToolSettings::radius, 0.1, 100000, units,
+              {T::Drop, T::DropLine, T::DropRings, T::DropScatter});
     addNumber("toolSprayRadius", tr("Droplet"), tr("The radius of each sprayed droplet"), &ToolSettings::sprayRadius,
               0.1, 1000, units, {T::Spray});
     addCount("toolSprayCount", tr("Droplets"), tr("How many droplets one stroke sprinkles"), &ToolSettings::sprayCount,
@@ -100,19 +124,25 @@ ToolOptions::ToolOptions(QWidget* parent) : QWidget(parent) {
               units, {T::Spray});
     addCount("toolPatternCount", tr("Drops"), tr("How many drops the pattern lays"), &ToolSettings::patternCount, 1,
              200, {T::DropLine, T::DropRings, T::DropScatter});
-    addNumber("toolSpacing", tr("Spacing"), tr("The distance between the comb's tines"), &ToolSettings::spacing, 1,
-              100000, units, {T::Comb});
-    addNumber("toolWavelength", tr("Wavelength"), tr("The length of one period of the wave"), &ToolSettings::wavelength,
-              1, 100000, units, {T::Wave});
-    addNumber("toolAlpha", tr("Shift"), tr("How far the circle moves the ink along its rim (a vortex's click too)"),
+    addNumber("toolSpacing", labelOf(Tool::Comb, ParamField::Spacing),
+              tr("The distance between the comb's tines"), &ToolSettings::spacing, 1, 100000, units,
+              {T::Comb});
+    addNumber("toolWavelength", labelOf(Tool::Wave, ParamField::Wavelength),
+              tr("The length of one period of the wave"), &ToolSettings::wavelength, 1, 100000, units,
+              {T::Wave});
+    addNumber("toolAlpha", labelOf(Tool::Circle, ParamField::Alpha),
+              tr("How far the circle moves the ink along its rim (a vortex's click too)"),
               &ToolSettings::alpha, -100000, 100000, units, {T::Circle, T::Vortex});
-    addNumber("toolLambda", tr("Sharpness"), tr("Smaller concentrates the shift near the stroke"), &ToolSettings::lambda,
-              0.1, 100000, units, {T::Line, T::Comb, T::Circle, T::Vortex});
-    addNumber("toolCore", tr("Core"), tr("A finite centre: 0 winds without end, larger keeps the eye clean"),
-              &ToolSettings::core, 0, 100000, units, {T::Circle, T::Vortex});
+    addNumber("toolLambda", labelOf(Tool::Line, ParamField::Lambda),
+              tr("Smaller concentrates the shift near the stroke"), &ToolSettings::lambda, 0.1, 100000, units,
+              {T::Line, T::Comb, T::Circle, T::Vortex});
+    addNumber("toolCore", labelOf(Tool::Circle, ParamField::Core),
+              tr("A finite centre: 0 winds without end, larger keeps the eye clean"), &ToolSettings::core, 0,
+              100000, units, {T::Circle, T::Vortex});
     addCount("toolTeeth", tr("Teeth"), tr("How many teeth span the design"), &ToolSettings::teeth, 2, 1000, {T::Stretch});
-    addNumber("toolPower", tr("Profile"), tr("The tooth profile |sin|^p: small is blunt, large is pointed"),
-              &ToolSettings::power, 0.05, 50, QString(), {T::Stretch});
+    addNumber("toolPower", labelOf(Tool::Stretch, ParamField::Power),
+              tr("The tooth profile |sin|^p: small is blunt, large is pointed"), &ToolSettings::power, 0.05,
+              50, unitOf(Tool::Stretch, ParamField::Power), {T::Stretch});
 
     mField = new QComboBox(this);
     mField->setObjectName(QStringLiteral("toolField"));
@@ -123,11 +153,13 @@ ToolOptions::ToolOptions(QWidget* parent) : QWidget(parent) {
         mSettings.field = index;
         changed();
     });
-    addRow(tr("Field"), mField, {T::Flow});
+    addRow(labelOf(Tool::Flow, ParamField::Field), mField, {T::Flow});
     mLoaders.push_back([this] { mField->setCurrentIndex(std::clamp(mSettings.field, 0, 1)); });
-    addNumber("toolSpeed", tr("Speed"), tr("The flow's speed; its sign is the sense of turning"), &ToolSettings::speed,
-              -100000, 100000, QString(), {T::Flow});
-    addNumber("toolTime", tr("Time"), tr("How long the flow runs"), &ToolSettings::time, 0.01, 1000, QString(), {T::Flow});
+    addNumber("toolSpeed", labelOf(Tool::Flow, ParamField::Speed),
+              tr("The flow's speed; its sign is the sense of turning"), &ToolSettings::speed, -100000, 100000,
+              unitOf(Tool::Flow, ParamField::Speed), {T::Flow});
+    addNumber("toolTime", labelOf(Tool::Flow, ParamField::Time), tr("How long the flow runs"),
+              &ToolSettings::time, 0.01, 1000, unitOf(Tool::Flow, ParamField::Time), {T::Flow});
     addCount("toolSeed", tr("Seed"), tr("Where sprayed and scattered drops land: the same seed, the same drops"),
              nullptr, 1, 1000000, {T::Spray, T::DropScatter});
     refresh();

@@ -14,41 +14,41 @@ using F = ParamField;
 
 // Shared rows. Mutation scales: positions and lengths as a fraction of the design's largest
 // side, angles and phases in degrees.
-constexpr ParamSpec Center{"center", F::Center, K::Position, "design units", "centre of the tool", AnyNumber, 0.0, 0.08};
-constexpr ParamSpec Origin{"origin", F::Center, K::Position, "design units", "a point on the stroke's path", AnyNumber, 0.0, 0.08};
-constexpr ParamSpec Radius{"radius", F::Radius, K::Length, "design units", "radius", PositiveNumber, 60.0, 0.03};
-constexpr ParamSpec ColorRow{"color", F::Color, K::Color, "", "palette index of the ink", AnyNumber, 0.0, 0.0};
-constexpr ParamSpec Axis{"axis", F::Axis, K::Direction, "", "axis (turned by the right-hand rule)", AnyNumber, 0.0, 0.25};
-constexpr ParamSpec Angle{"angle", F::Angle, K::Angle, "degrees", "direction of motion, clockwise from +x", AnyNumber, 0.0, 25.0};
-constexpr ParamSpec Direction{"direction", F::Direction, K::Direction, "", "direction of motion", AnyNumber, 0.0, 0.25};
-constexpr ParamSpec Normal{"normal", F::Normal, K::Direction, "", "across the plane the tine sweeps", AnyNumber, 0.0, 0.25};
-constexpr ParamSpec Alpha{"alpha", F::Alpha, K::Shift, "design units", "largest shift, at the tine", AnyNumber, 60.0, 0.03};
-constexpr ParamSpec Lambda{"lambda", F::Lambda, K::Length, "design units", "sharpness: smaller concentrates the shift near the tine", PositiveNumber, 12.0, 0.01};
-constexpr ParamSpec Spacing{"spacing", F::Spacing, K::Length, "design units", "distance between tines", PositiveNumber, 80.0, 0.02};
-constexpr ParamSpec Amplitude{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02};
-constexpr ParamSpec Wavelength{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05};
-constexpr ParamSpec Phase{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0};
+constexpr ParamSpec Center{"center", "Centre", F::Center, K::Position, "design units", "centre of the tool", AnyNumber, 0.0, 0.08};
+constexpr ParamSpec Origin{"origin", "Origin", F::Center, K::Position, "design units", "a point on the stroke's path", AnyNumber, 0.0, 0.08};
+constexpr ParamSpec Radius{"radius", "Radius", F::Radius, K::Length, "design units", "radius", PositiveNumber, 60.0, 0.03};
+constexpr ParamSpec ColorRow{"color", "Ink", F::Color, K::Color, "", "palette index of the ink", AnyNumber, 0.0, 0.0};
+constexpr ParamSpec Axis{"axis", "Axis", F::Axis, K::Direction, "", "axis (turned by the right-hand rule)", AnyNumber, 0.0, 0.25};
+constexpr ParamSpec Angle{"angle", "Angle", F::Angle, K::Angle, "degrees", "direction of motion, clockwise from +x", AnyNumber, 0.0, 25.0};
+constexpr ParamSpec Direction{"direction", "Direction", F::Direction, K::Direction, "", "direction of motion", AnyNumber, 0.0, 0.25};
+constexpr ParamSpec Normal{"normal", "Normal", F::Normal, K::Direction, "", "across the plane the tine sweeps", AnyNumber, 0.0, 0.25};
+constexpr ParamSpec Alpha{"alpha", "Shift", F::Alpha, K::Shift, "design units", "largest shift, at the tine", AnyNumber, 60.0, 0.03};
+constexpr ParamSpec Lambda{"lambda", "Sharpness", F::Lambda, K::Length, "design units", "sharpness: smaller concentrates the shift near the tine", PositiveNumber, 12.0, 0.01};
+constexpr ParamSpec Spacing{"spacing", "Spacing", F::Spacing, K::Length, "design units", "distance between tines", PositiveNumber, 80.0, 0.02};
+constexpr ParamSpec Amplitude{"amplitude", "Amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02};
+constexpr ParamSpec Wavelength{"wavelength", "Wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05};
+constexpr ParamSpec Phase{"phase", "Phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0};
 // In the order of WaveShape.
 constexpr std::array<std::string_view, 2> WaveShapes{"eggcrate", "ripple"};
 static_assert(WaveShapes.size() == static_cast<std::size_t>(WaveShape::Ripple) + 1);
-constexpr ParamSpec Shape{"shape", F::Shape, K::Choice, "", "shape of the wave", AnyNumber, 0.0, 0.0, false, WaveShapes};
-constexpr ParamSpec AmplitudePair{"amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02, true};
-constexpr ParamSpec WavelengthPair{"wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05, true};
-constexpr ParamSpec PhasePair{"phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0, true};
+constexpr ParamSpec Shape{"shape", "Shape", F::Shape, K::Choice, "", "shape of the wave", AnyNumber, 0.0, 0.0, false, WaveShapes};
+constexpr ParamSpec AmplitudePair{"amplitude", "Amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02, true};
+constexpr ParamSpec WavelengthPair{"wavelength", "Wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05, true};
+constexpr ParamSpec PhasePair{"phase", "Phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0, true};
 
 // Version 2.
-constexpr ParamSpec Core{"core", F::Core, K::Length, "design units", "finite centre: 0 winds without end, larger keeps the swirl's eye clean", NonNegativeNumber, 0.0, 0.01, false, {}, 2, true};
-constexpr ParamSpec Teeth{"teeth", F::Teeth, K::Teeth, "design units", "tooth positions along the normal, from the origin, increasing", AnyNumber, 0.0, 0.01, false, {}, 2};
-constexpr ParamSpec ShiftRow{"shift", F::Shift, K::Shift, "design units", "largest shift, midway between two teeth; its sign is the direction", AnyNumber, 40.0, 0.03, false, {}, 2};
-constexpr ParamSpec Power{"power", F::Power, K::Number, "", "tooth profile |sin|^p: small is blunt, large is pointed", PositiveNumber, 0.5, 0.15, false, {}, 2};
+constexpr ParamSpec Core{"core", "Core", F::Core, K::Length, "design units", "finite centre: 0 winds without end, larger keeps the swirl's eye clean", NonNegativeNumber, 0.0, 0.01, false, {}, 2, true};
+constexpr ParamSpec Teeth{"teeth", "Teeth", F::Teeth, K::Teeth, "design units", "tooth positions along the normal, from the origin, increasing", AnyNumber, 0.0, 0.01, false, {}, 2};
+constexpr ParamSpec ShiftRow{"shift", "Shift", F::Shift, K::Shift, "design units", "largest shift, midway between two teeth; its sign is the direction", AnyNumber, 40.0, 0.03, false, {}, 2};
+constexpr ParamSpec Power{"power", "Profile", F::Power, K::Number, "", "tooth profile |sin|^p: small is blunt, large is pointed", PositiveNumber, 0.5, 0.15, false, {}, 2};
 // In the order of FlowField.
 constexpr std::array<std::string_view, 2> FlowFields{"cells", "cavity"};
 static_assert(FlowFields.size() == static_cast<std::size_t>(FlowField::Cavity) + 1);
-constexpr ParamSpec FieldRow{"field", F::Field, K::Choice, "", "the velocity field: a lattice of cells or one cavity", AnyNumber, 0.0, 0.0, false, FlowFields, 2};
-constexpr ParamSpec SizeRow{"size", F::Size, K::Extent, "design units", "size of a cell (cells) or of the box (cavity)", PositiveNumber, 250.0, 0.05, false, {}, 2};
-constexpr ParamSpec Speed{"speed", F::Speed, K::Number, "design units per time", "speed of the flow; its sign is the sense of turning", AnyNumber, 40.0, 10.0, false, {}, 2};
-constexpr ParamSpec Time{"time", F::Time, K::Number, "time", "how long the flow runs", PositiveNumber, 2.0, 0.3, false, {}, 2};
-constexpr ParamSpec Steps{"steps", F::Steps, K::Count, "", "implicit midpoint steps (at least 32 |speed| time max(size) / min(size)^2)", ParamRange{1.0, double(MaxFlowSteps)}, 32.0, 0.0, false, {}, 2};
+constexpr ParamSpec FieldRow{"field", "Field", F::Field, K::Choice, "", "the velocity field: a lattice of cells or one cavity", AnyNumber, 0.0, 0.0, false, FlowFields, 2};
+constexpr ParamSpec SizeRow{"size", "Size", F::Size, K::Extent, "design units", "size of a cell (cells) or of the box (cavity)", PositiveNumber, 250.0, 0.05, false, {}, 2};
+constexpr ParamSpec Speed{"speed", "Speed", F::Speed, K::Number, "design units per time unit", "speed of the flow; its sign is the sense of turning", AnyNumber, 40.0, 10.0, false, {}, 2};
+constexpr ParamSpec Time{"time", "Time", F::Time, K::Number, "time units", "how long the flow runs", PositiveNumber, 2.0, 0.3, false, {}, 2};
+constexpr ParamSpec Steps{"steps", "Steps", F::Steps, K::Count, "", "implicit midpoint steps (at least 32 |speed| time max(size) / min(size)^2)", ParamRange{1.0, double(MaxFlowSteps)}, 32.0, 0.0, false, {}, 2};
 
 constexpr std::array Ink{Center, Radius, ColorRow};
 constexpr std::array Cylinder3{Center, Axis, Radius, ColorRow};
@@ -99,6 +99,16 @@ constexpr bool choicesWhereChosen() {
     return true;
 }
 static_assert(choicesWhereChosen(), "a Choice parameter lists its choices, no other parameter has any");
+
+/// Every parameter has a word for the editor to show.
+constexpr bool everyParamLabelled() {
+    for (const ToolSpec& tool : Tools)
+        for (std::span<const ParamSpec> params : {tool.params2D, tool.params3D})
+            for (const ParamSpec& spec : params)
+                if (spec.label.empty()) return false;
+    return true;
+}
+static_assert(everyParamLabelled(), "every parameter has a label");
 
 /// Exactly the parameters newer than their tool are optional: a file of the tool's own version
 /// says all of the tool's parameters, a newer parameter may be left out of an older tool.
@@ -172,6 +182,14 @@ std::span<const ToolSpec> allTools() { return Tools; }
 const ToolSpec* findTool(std::string_view name) {
     for (const ToolSpec& spec : Tools)
         if (spec.name == name) return &spec;
+    return nullptr;
+}
+
+const ParamSpec* findParam(Tool tool, ParamField field) {
+    const ToolSpec& spec = toolSpec(tool);
+    for (std::span<const ParamSpec> params : {spec.params2D, spec.params3D})
+        for (const ParamSpec& p : params)
+            if (p.field == field) return &p;
     return nullptr;
 }
 

@@ -7,6 +7,7 @@
 #include "editor/ParamForm.h"
 #include "editor/StepList.h"
 #include "editor/Timeline.h"
+#include "editor/ToolOptions.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
@@ -20,7 +21,9 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFormLayout>
 #include <QImage>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QRegularExpression>
@@ -30,6 +33,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 #include <gtest/gtest.h>
 
@@ -573,4 +577,361 @@ TEST(AnimationExport, AFramesFolderMustBeNewOrEmptyAndTheDialogSaysWhatToWrite) 
     EXPECT_EQ(withAnimationExtension(QStringLiteral("a/b.GIF"), AnimationFormat::Gif), QStringLiteral("a/b.GIF"));
     EXPECT_EQ(withAnimationExtension(QStringLiteral("a/b.gif"), AnimationFormat::Mp4), QStringLiteral("a/b.gif.mp4"));
     EXPECT_EQ(withAnimationExtension(QStringLiteral("a/frames"), AnimationFormat::PngFrames), QStringLiteral("a/frames"));
+}
+
+namespace {
+
+QString labelText(std::string_view s) {
+    return QString::fromUtf8(s.data(), qsizetype(s.size()));
+}
+
+/// The caption a form layout shows beside `field`.
+QString captionOf(QWidget* field) {
+    for (QWidget* w = field; w; w = w->parentWidget())
+        if (auto* form =
+                qobject_cast<QFormLayout*>(w->parentWidget() ? w->parentWidget()->layout() : nullptr))
+            if (auto* label = qobject_cast<QLabel*>(form->labelForField(w))) return label->text();
+    return {};
+}
+
+} // namespace
+
+// Issue 27, item 12: Ctrl+Z in a parameter field is the window's Undo, not the field's own text
+// undo; Enter commits the field and says so (the window then gives the canvas the focus).
+TEST(ParamForm, UndoKeysReachTheWindowAndEnterCommits) {
+    QWidget window;
+    auto* layout = new QVBoxLayout(&window);
+    auto* form = new ParamForm(&window);
+    layout->addWidget(form);
+    auto* undo = new QAction(QStringLiteral("Undo"), &window);
+    undo->setShortcut(QKeySequence::Undo);
+    auto* redo = new QAction(QStringLiteral("Redo"), &window);
+    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    window.addActions({undo, redo});
+    QSignalSpy undone(undo, &QAction::triggered);
+    QSignalSpy redone(redo, &QAction::triggered);
+    QSignalSpy committed(form, &ParamForm::committed);
+    std::vector<Edit> edits;
+    QObject::connect(form, &ParamForm::edited, form,
+                     [&](const Operation& op, const QString& key, bool dragging) {
+                         edits.push_back({op, key, dragging});
+                     });
+    const Genome design = designOf(2);
+    form->setStep(defaultOperation(Tool::Circle, 2, {500, 400, 0}), 2, design);
+    window.show();
+    window.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+
+    for (const char* name : {"edit-alpha-0", "edit-steps-0"}) {
+        if (QString::fromLatin1(name) == QStringLiteral("edit-steps-0"))
+            form->setStep(defaultOperation(Tool::Flow, 2, {500, 400, 0}), 2, design);
+        auto* field = form->findChild<QAbstractSpinBox*>(QString::fromLatin1(name));
+        ASSERT_NE(field, nullptr) << name;
+        field->setFocus();
+        ASSERT_TRUE(QTest::qWaitFor([&] { return field->hasFocus(); }));
+        const int undos = undone.count(), redos = redone.count();
+        QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+        EXPECT_EQ(undone.count(), undos + 1) << name << ": Ctrl+Z in a field is the window's Undo";
+        QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QTest::keyClick(field, Qt::Key_Y, Qt::ControlModifier);
+        EXPECT_EQ(redone.count(), redos + 2) << name << ": Ctrl+Shift+Z and Ctrl+Y are the window's Redo";
+    }
+
+    // Typed text and Enter: the value is committed, then `committed` says so.
+    form->setStep(defaultOperation(Tool::Circle, 2, {500, 400, 0}), 2, design);
+    auto* alpha = form->findChild<QDoubleSpinBox*>(QStringLiteral("edit-alpha-0"));
+    ASSERT_NE(alpha, nullptr);
+    alpha->setFocus();
+    alpha->selectAll();
+    edits.clear();
+    committed.clear();
+    QTest::keyClicks(alpha, QStringLiteral("35"));
+    EXPECT_TRUE(edits.empty()) << "nothing is committed while typing";
+    QTest::keyClick(alpha, Qt::Key_Return);
+    ASSERT_EQ(edits.size(), 1u);
+    EXPECT_EQ(edits[0].op.alpha, 35.0);
+    EXPECT_EQ(committed.count(), 1);
+    EXPECT_EQ(alpha->text(), QStringLiteral("35 design units"));
+    // The stretch's teeth text commits on Enter too.
+    form->setStep(defaultOperation(Tool::Stretch, 2, {500, 400, 0}), 2, design);
+    auto* teeth = form->findChild<QLineEdit*>(QStringLiteral("edit-teeth-0"));
+    ASSERT_NE(teeth, nullptr);
+    teeth->setFocus();
+    teeth->setText(QStringLiteral("-100 0 100"));
+    committed.clear();
+    QTest::keyClick(teeth, Qt::Key_Enter);
+    EXPECT_EQ(committed.count(), 1);
+    EXPECT_EQ(form->step().teeth, (std::vector<double>{-100, 0, 100}));
+    const int undos = undone.count();
+    QTest::keyClick(teeth, Qt::Key_Z, Qt::ControlModifier);
+    EXPECT_EQ(undone.count(), undos + 1);
+}
+
+// Issue 27, item 14: huge and tiny values show compactly, and showing a value never rounds it.
+TEST(ParamForm, NumbersShowCompactlyAndStayExact) {
+    ParamForm form;
+    std::vector<Edit> edits;
+    QObject::connect(&form, &ParamForm::edited, &form,
+                     [&](const Operation& op, const QString& key, bool dragging) {
+                         edits.push_back({op, key, dragging});
+                     });
+    Operation circle = defaultOperation(Tool::Circle, 2, {500, 400, 0});
+    circle.alpha = 1e308;
+    circle.lambda = 123.456789;
+    circle.radius = 2.5e-7;
+    form.setStep(circle, 2, designOf(2));
+    form.show();
+    auto* alpha = form.findChild<QDoubleSpinBox*>(QStringLiteral("edit-alpha-0"));
+    auto* lambda = form.findChild<QDoubleSpinBox*>(QStringLiteral("edit-lambda-0"));
+    auto* radius = form.findChild<QDoubleSpinBox*>(QStringLiteral("edit-radius-0"));
+    ASSERT_TRUE(alpha && lambda && radius);
+    EXPECT_EQ(alpha->text(), QStringLiteral("1e+308 design units"));
+    EXPECT_EQ(lambda->text(), QStringLiteral("123.457 design units"));
+    EXPECT_EQ(radius->text(), QStringLiteral("2.5e-07 design units"));
+    EXPECT_EQ(alpha->value(), 1e308);
+    // Re-reading the text shown (what Enter and leaving the field do) keeps the exact value.
+    for (QDoubleSpinBox* box : {alpha, lambda, radius}) {
+        QString shown = box->text();
+        int pos = 0;
+        EXPECT_EQ(box->validate(shown, pos), QValidator::Acceptable) << shown.toStdString();
+        EXPECT_EQ(box->valueFromText(shown), box->value()) << shown.toStdString();
+        box->interpretText();
+    }
+    EXPECT_TRUE(edits.empty()) << "showing a value changes nothing";
+    EXPECT_EQ(form.step().lambda, 123.456789);
+    // Exponents are read back; text that is no number is refused, the value kept.
+    lambda->findChild<QLineEdit*>()->setText(QStringLiteral("2.5e3 design units"));
+    lambda->interpretText();
+    ASSERT_EQ(edits.size(), 1u);
+    EXPECT_EQ(edits[0].op.lambda, 2500.0);
+    QString junk = QStringLiteral("abc design units");
+    int pos = 0;
+    EXPECT_EQ(lambda->validate(junk, pos), QValidator::Invalid);
+    // The teeth's positions are compact too.
+    Operation stretch = defaultOperation(Tool::Stretch, 2, {500, 400, 0});
+    stretch.teeth = {-1e300, 0.0, 1e300};
+    form.setStep(stretch, 2, designOf(2));
+    auto* teeth = form.findChild<QLineEdit*>(QStringLiteral("edit-teeth-0"));
+    ASSERT_NE(teeth, nullptr);
+    EXPECT_EQ(teeth->text(), QStringLiteral("-1e+300 0 1e+300"));
+}
+
+// Issue 27, item 14: one vocabulary. Every row of the form is named by the registry's label, the
+// tool panel names its rows by the same labels, and no caption repeats its unit ("time (time)").
+TEST(ParamForm, RowsAreNamedAsTheToolPanelNamesThem) {
+    for (const ToolSpec& tool : allTools())
+        for (int dimension : {2, 3}) {
+            if (!tool.available(dimension)) continue;
+            ParamForm form;
+            form.setStep(defaultOperation(tool.tool, dimension, {500, 400, 300}), dimension,
+                         designOf(dimension));
+            for (const ParamSpec& spec : tool.params(dimension)) {
+                auto* box = form.findChild<QWidget*>(QStringLiteral("param-") + keyOf(spec));
+                ASSERT_NE(box, nullptr) << keyOf(spec).toStdString();
+                const QString caption = captionOf(box);
+                EXPECT_EQ(caption, labelText(spec.label)) << tool.name << " " << spec.key;
+                EXPECT_FALSE(caption.contains(QLatin1Char('('))) << caption.toStdString();
+            }
+        }
+    ParamForm form;
+    form.setStep(defaultOperation(Tool::Circle, 2, {500, 400, 0}), 2, designOf(2));
+    ToolOptions panel;
+    struct Pair {
+        const char* panelField;
+        Tool tool;
+        ParamField field;
+    };
+    for (const Pair& p :
+         {Pair{"toolAlpha", Tool::Circle, ParamField::Alpha},
+          Pair{"toolLambda", Tool::Circle, ParamField::Lambda},
+          Pair{"toolCore", Tool::Circle, ParamField::Core},
+          Pair{"toolRadius", Tool::Circle, ParamField::Radius},
+          Pair{"toolSpacing", Tool::Comb, ParamField::Spacing},
+          Pair{"toolWavelength", Tool::Wave, ParamField::Wavelength},
+          Pair{"toolPower", Tool::Stretch, ParamField::Power},
+          Pair{"toolSpeed", Tool::Flow, ParamField::Speed}, Pair{"toolTime", Tool::Flow, ParamField::Time}}) {
+        auto* field = panel.findChild<QWidget*>(QString::fromLatin1(p.panelField));
+        ASSERT_NE(field, nullptr) << p.panelField;
+        const ParamSpec* spec = findParam(p.tool, p.field);
+        ASSERT_NE(spec, nullptr);
+        EXPECT_EQ(captionOf(field), labelText(spec->label)) << p.panelField;
+    }
+    // The circle's alpha and lambda: "Shift" and "Sharpness" in both places.
+    EXPECT_EQ(captionOf(form.findChild<QWidget*>(QStringLiteral("param-alpha"))), QStringLiteral("Shift"));
+    EXPECT_EQ(captionOf(panel.findChild<QWidget*>(QStringLiteral("toolAlpha"))), QStringLiteral("Shift"));
+    EXPECT_EQ(captionOf(form.findChild<QWidget*>(QStringLiteral("param-lambda"))),
+              QStringLiteral("Sharpness"));
+    EXPECT_EQ(captionOf(panel.findChild<QWidget*>(QStringLiteral("toolLambda"))),
+              QStringLiteral("Sharpness"));
+    // A flow's time: "Time", its unit once, in the box.
+    form.setStep(defaultOperation(Tool::Flow, 2, {500, 400, 0}), 2, designOf(2));
+    auto* time = form.findChild<QDoubleSpinBox*>(QStringLiteral("edit-time-0"));
+    ASSERT_NE(time, nullptr);
+    EXPECT_EQ(captionOf(form.findChild<QWidget*>(QStringLiteral("param-time"))), QStringLiteral("Time"));
+    EXPECT_EQ(time->suffix(), QStringLiteral(" time units"));
+}
+
+// Issue 27, item 14: a stretch's teeth have an editor, a count and a spacing.
+TEST(ParamForm, StretchTeethByCountAndSpacing) {
+    ParamForm form;
+    std::vector<Edit> edits;
+    QObject::connect(&form, &ParamForm::edited, &form,
+                     [&](const Operation& op, const QString& key, bool dragging) {
+                         edits.push_back({op, key, dragging});
+                     });
+    Operation stretch = defaultOperation(Tool::Stretch, 2, {500, 400, 0});
+    stretch.teeth = {-100, 0, 100, 200, 300};
+    form.setStep(stretch, 2, designOf(2));
+    auto* count = form.findChild<QSpinBox*>(QStringLiteral("edit-teeth-count"));
+    auto* spacing = form.findChild<QDoubleSpinBox*>(QStringLiteral("edit-teeth-spacing"));
+    ASSERT_TRUE(count && spacing);
+    EXPECT_EQ(count->value(), 5);
+    EXPECT_EQ(spacing->value(), 100.0);
+    EXPECT_EQ(spacing->text(), QStringLiteral("100 design units"));
+    // More teeth over the same span.
+    count->setValue(9);
+    ASSERT_EQ(edits.size(), 1u);
+    EXPECT_EQ(edits[0].key, QStringLiteral("teeth"));
+    EXPECT_EQ(edits[0].op.teeth, (std::vector<double>{-100, -50, 0, 50, 100, 150, 200, 250, 300}));
+    EXPECT_EQ(spacing->value(), 50.0);
+    // A wider spacing about the same middle.
+    spacing->setValue(80.0);
+    ASSERT_EQ(edits.size(), 2u);
+    const std::vector<double>& teeth = edits[1].op.teeth;
+    ASSERT_EQ(teeth.size(), 9u);
+    EXPECT_DOUBLE_EQ(teeth.front(), 100.0 - 4 * 80.0);
+    EXPECT_DOUBLE_EQ(teeth.back(), 100.0 + 4 * 80.0);
+    auto* text = form.findChild<QLineEdit*>(QStringLiteral("edit-teeth-0"));
+    ASSERT_NE(text, nullptr);
+    EXPECT_TRUE(text->text().startsWith(QStringLiteral("-220 -140 -60"))) << text->text().toStdString();
+    EXPECT_TRUE(validStep(designOf(2), form.step()));
+}
+
+namespace {
+
+std::vector<StepRow> sprayDesignRows() {
+    // Two drops, one spray stroke of 40 droplets, then three combs and a wave.
+    std::vector<StepRow> rows;
+    auto add = [&rows](const char* tool, bool initial, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i)
+            rows.push_back({QString::fromLatin1(tool), false, initial, {}, QString::fromLatin1(tool)});
+    };
+    add("drop", true, 2);
+    add("spray", true, 40);
+    add("comb", false, 3);
+    add("wave", false, 1);
+    return rows;
+}
+
+/// The texts of the rows shown, top to bottom.
+QStringList shownRows(const StepList& list) {
+    QStringList texts;
+    for (int i = 0; i < list.list()->count(); ++i)
+        if (!list.list()->item(i)->isHidden()) texts << list.list()->item(i)->text().trimmed();
+    return texts;
+}
+
+} // namespace
+
+// Issue 27, item 17: one spray stroke is one row, which opens to show its droplets; the indices
+// in and out are still the document's steps.
+TEST(StepList, ARunOfOneToolIsOneRowThatOpens) {
+    StepList list;
+    list.setRows(sprayDesignRows());
+    ASSERT_EQ(list.rowCount(), 46u) << "every step keeps its index";
+    EXPECT_EQ(shownRows(list),
+              (QStringList{QStringLiteral("1. drop"), QStringLiteral("2. drop"),
+                           QStringLiteral("▸ 40 sprays (steps 3–42)"),
+                           QStringLiteral("▸ 3 combs (steps 43–45)"), QStringLiteral("46. wave")}));
+    QSignalSpy current(&list, &StepList::currentChanged);
+    list.show();
+    list.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&list));
+    list.list()->setFocus();
+    current.clear();
+
+    // Selecting the group's row selects its first step.
+    list.list()->setCurrentItem(list.list()->item(2));
+    ASSERT_EQ(current.count(), 1);
+    EXPECT_EQ(current.last().at(0).value<std::optional<std::size_t>>(), std::optional<std::size_t>(2));
+    EXPECT_TRUE(list.isGroupHead(2));
+    // → opens it: its 40 steps are rows, numbered as the document's.
+    QTest::keyClick(list.list(), Qt::Key_Right);
+    EXPECT_TRUE(list.isGroupExpanded(2));
+    QStringList rows = shownRows(list);
+    ASSERT_EQ(rows.size(), 44);
+    EXPECT_EQ(rows[2], QStringLiteral("▾ 3. spray"));
+    EXPECT_EQ(rows[41], QStringLiteral("42. spray"));
+    EXPECT_TRUE(list.isRowShown(30));
+    list.list()->setCurrentRow(30);
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(30));
+    // ← folds it again, and the group's row (step 3) is selected.
+    QTest::keyClick(list.list(), Qt::Key_Left);
+    EXPECT_FALSE(list.isGroupExpanded(2));
+    EXPECT_FALSE(list.isRowShown(30));
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(2));
+    EXPECT_EQ(current.last().at(0).value<std::optional<std::size_t>>(), std::optional<std::size_t>(2));
+    // Double-click opens it too.
+    const QPoint groupRow = list.list()->visualItemRect(list.list()->item(2)).center();
+    QTest::mouseClick(list.list()->viewport(), Qt::LeftButton, {}, groupRow);
+    QTest::mouseDClick(list.list()->viewport(), Qt::LeftButton, {}, groupRow);
+    EXPECT_TRUE(list.isGroupExpanded(2));
+    list.setGroupExpanded(2, false);
+
+    // The window selecting a step inside a folded group (a pick on the canvas) opens it.
+    list.setCurrent(20);
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(20));
+    EXPECT_TRUE(list.isRowShown(20));
+    // New rows (an edit) keep it open and the step selected.
+    list.setRows(sprayDesignRows());
+    EXPECT_TRUE(list.isGroupExpanded(2));
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(20));
+
+    // A folded group's box mutes all its steps; the keys act on the step selected.
+    list.setGroupExpanded(43, false);
+    QSignalSpy muted(&list, &StepList::mutedToggled);
+    list.list()->item(42)->setCheckState(Qt::Unchecked);
+    ASSERT_EQ(muted.count(), 3);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(muted.at(i).at(0).value<std::size_t>(), std::size_t(42 + i));
+        EXPECT_TRUE(muted.at(i).at(1).toBool());
+    }
+    QSignalSpy deleted(&list, &StepList::deleteRequested);
+    list.setCurrent(42);
+    QTest::keyClick(list.list(), Qt::Key_Delete);
+    ASSERT_EQ(deleted.count(), 1);
+    EXPECT_EQ(deleted.last().at(0).value<std::size_t>(), 42u);
+    // Two steps of one tool stay two rows.
+    std::vector<StepRow> two = sprayDesignRows();
+    two.resize(2);
+    list.setRows(two);
+    EXPECT_EQ(shownRows(list), (QStringList{QStringLiteral("1. drop"), QStringLiteral("2. drop")}));
+}
+
+// Issue 27, item 17: the filter shows the steps of one tool.
+TEST(StepList, TheFilterShowsOneToolsSteps) {
+    StepList list;
+    list.setRows(sprayDesignRows());
+    QComboBox* filter = list.filter();
+    ASSERT_NE(filter, nullptr);
+    EXPECT_EQ(filter->objectName(), QStringLiteral("stepFilter"));
+    EXPECT_FALSE(filter->toolTip().isEmpty());
+    QStringList entries;
+    for (int i = 0; i < filter->count(); ++i)
+        entries << filter->itemText(i);
+    EXPECT_EQ(entries, (QStringList{QStringLiteral("All steps"), QStringLiteral("drops (2)"),
+                                    QStringLiteral("sprays (40)"), QStringLiteral("combs (3)"),
+                                    QStringLiteral("waves (1)")}));
+    filter->setCurrentIndex(filter->findData(QStringLiteral("comb")));
+    EXPECT_EQ(shownRows(list), (QStringList{QStringLiteral("▸ 3 combs (steps 43–45)")}));
+    list.setGroupExpanded(42, true);
+    EXPECT_EQ(shownRows(list), (QStringList{QStringLiteral("▾ 43. comb"), QStringLiteral("44. comb"),
+                                            QStringLiteral("45. comb")}));
+    // New rows keep the filter; a step selected outside it clears it.
+    list.setRows(sprayDesignRows());
+    EXPECT_EQ(filter->currentData().toString(), QStringLiteral("comb"));
+    list.setCurrent(45);
+    EXPECT_EQ(filter->currentIndex(), 0);
+    EXPECT_TRUE(list.isRowShown(45));
+    EXPECT_EQ(list.current(), std::optional<std::size_t>(45));
 }

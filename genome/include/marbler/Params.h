@@ -59,6 +59,9 @@ inline constexpr ParamRange NonNegativeNumber{0.0, std::numeric_limits<double>::
 /// One row of a tool's parameter table.
 struct ParamSpec {
     std::string_view key;  ///< JSON key
+    /// The word the editor shows for it, in its parameter form and its tool panel alike ("Shift"
+    /// for a stroke's alpha): one vocabulary, read from here by both.
+    std::string_view label;
     ParamField field;
     ParamKind kind;
     std::string_view unit; ///< shown by the editor
@@ -122,6 +125,8 @@ const ToolSpec& toolSpec(Tool tool);
 std::span<const ToolSpec> allTools();
 /// The tool of a JSON name; nullptr when unknown.
 const ToolSpec* findTool(std::string_view name);
+/// The parameter of `tool` held in `field` (its 2D row, else its 3D one); nullptr when it has none.
+const ParamSpec* findParam(Tool tool, ParamField field);
 /// Whether a tool may appear in `initial`: the ink-laying tools of that dimension.
 bool allowedInInitial(Tool tool, int dimension);
 /// The tools `initial` may hold, for messages: "drop, spray and, in 3D, cylinder".
