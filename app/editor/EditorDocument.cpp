@@ -418,6 +418,14 @@ void EditorDocument::setMuted(std::size_t i, bool muted) {
                         (muted ? tr("Mute %1") : tr("Unmute %1")).arg(stepName(i)));
 }
 
+void EditorDocument::setMuted(std::size_t first, std::size_t last, bool muted) {
+    if (first > last || last >= stepCount()) return;
+    EditorState after{mDesign, mMuted};
+    for (std::size_t i = first; i <= last; ++i) after.muted[i] = muted;
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after),
+                        (muted ? tr("Mute steps %1–%2") : tr("Unmute steps %1–%2")).arg(first + 1).arg(last + 1));
+}
+
 void EditorDocument::setPaletteColor(int index, Color color, int mergeId) {
     if (index < 0 || index >= static_cast<int>(mDesign.palette.size())) return;
     const auto idx = static_cast<std::size_t>(index);

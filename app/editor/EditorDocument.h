@@ -81,6 +81,8 @@ public:
     /// across parts is refused (returns false) when the tool is not allowed there.
     bool moveStep(std::size_t from, std::size_t to);
     void setMuted(std::size_t i, bool muted);
+    /// Mutes or unmutes steps `first` to `last` as one undo step (a folded group of the list).
+    void setMuted(std::size_t first, std::size_t last, bool muted);
     void setPaletteColor(int index, Color color, int mergeId = -1);
     /// Adds an ink to the palette (at most MaxPaletteSize); returns its index or -1.
     int addPaletteColor(Color color);

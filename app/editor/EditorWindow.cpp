@@ -597,12 +597,16 @@ void EditorWindow::wireDocument() {
     connect(mSteps, &StepList::moveRequested, this, [this](std::size_t from, std::size_t to) {
         if (mDocument->moveStep(from, to)) selectStep(to);
     });
-    connect(mSteps, &StepList::mutedToggled, mDocument, &EditorDocument::setMuted);
+    connect(mSteps, &StepList::mutedToggled, mDocument, qOverload<std::size_t, bool>(&EditorDocument::setMuted));
+    connect(mSteps, &StepList::rangeMutedToggled, mDocument,
+            qOverload<std::size_t, std::size_t, bool>(&EditorDocument::setMuted));
     connect(mSteps, &StepList::duplicateRequested, this, [this](std::size_t i) { selectStep(mDocument->duplicateStep(i)); });
     connect(mSteps, &StepList::deleteRequested, this, [this](std::size_t i) {
         mDocument->removeStep(i);
         selectStep(std::nullopt);
     });
+    // Enter in a field commits it and gives the canvas the keys again.
+    connect(mForm, &ParamForm::committed, this, [this] { mCanvas->setFocus(Qt::OtherFocusReason); });
     connect(mForm, &ParamForm::edited, this, [this](const Operation& op, const QString&, bool dragging) {
         if (!mSelected) return;
         mCanvas->setDragging(dragging);
@@ -735,6 +739,7 @@ void EditorWindow::stepsChanged() {
         row.detail = mDocument->stepName(i);
         row.muted = mDocument->isMuted(i);
         row.initial = mDocument->isInitial(i);
+        row.tool = QString::fromUtf8(spec.name.data(), qsizetype(spec.name.size()));
         row.tool = QString::fromUtf8(spec.name.data(), qsizetype(spec.name.size())); // groups and the filter
         rows.push_back(row);
     }

@@ -123,9 +123,7 @@ StepList::StepList(QWidget* parent)
         const Group* group = groupOf(row);
         if (group && !isGroupExpanded(row)) {
             // A folded group's box stands for all its steps.
-            const Group g = *group;
-            for (std::size_t i = g.first; i <= g.last; ++i)
-                if (i < mRows.size() && mRows[i].muted != muted) emit mutedToggled(i, muted);
+            emit rangeMutedToggled(group->first, std::min(group->last, mRows.size() - 1), muted);
             return;
         }
         emit mutedToggled(row, muted);

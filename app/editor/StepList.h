@@ -77,6 +77,8 @@ signals:
     void moveRequested(std::size_t from, std::size_t to);
     /// The user muted (true) or unmuted a step.
     void mutedToggled(std::size_t row, bool muted);
+    /// The user muted (true) or unmuted a folded group: steps `first` to `last`, as one edit.
+    void rangeMutedToggled(std::size_t first, std::size_t last, bool muted);
     /// Ctrl+D or the context menu asks for a copy of the step after it.
     void duplicateRequested(std::size_t row);
     /// Del or the context menu asks to delete the step.

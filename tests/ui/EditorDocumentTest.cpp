@@ -515,3 +515,15 @@ TEST(EditorRecovery, TheDefaultFolderIsInTheApplicationData) {
     EXPECT_TRUE(defaultRecoveryFolder().endsWith(QStringLiteral("/recovery")));
     EXPECT_FALSE(defaultRecoveryFolder().startsWith(QStringLiteral("/recovery")));
 }
+
+TEST(EditorDocument, AFoldedGroupIsMutedAsOneEdit) {
+    EditorDocument doc(sample());
+    doc.setMuted(1, 4, true);
+    EXPECT_EQ(doc.undoStack()->count(), 1);
+    for (std::size_t i = 0; i < doc.stepCount(); ++i) EXPECT_EQ(doc.isMuted(i), i >= 1 && i <= 4) << i;
+    EXPECT_EQ(text(doc.undoStack()->text(0)), "Mute steps 2–5");
+    doc.undoStack()->undo();
+    for (std::size_t i = 0; i < doc.stepCount(); ++i) EXPECT_FALSE(doc.isMuted(i)) << i;
+    doc.setMuted(3, 9, true); // past the end: nothing
+    EXPECT_EQ(doc.undoStack()->count(), 1);
+}
