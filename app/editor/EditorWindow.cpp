@@ -397,6 +397,18 @@ void EditorWindow::wireDocument() {
         showShown();
     });
     connect(mTimeline, &Timeline::exportAnimationRequested, this, &EditorWindow::exportAnimation);
+
+    // ---- Issue 27 (fix-canvas): deleting an ink, palette presets.
+    connect(mPalette, &PaletteEditor::inkRemoved, this, [this](int index, int replacement) {
+        if (!mDocument->removePaletteColor(index, replacement))
+            statusBar()->showMessage(
+                tr("Ink %1 is laid by steps and there is no other ink for them").arg(index + 1), 5000);
+    });
+    connect(mPalette, &PaletteEditor::presetChosen, this, [this](int index) {
+        const PalettePreset& preset = palettePresets()[std::size_t(index)];
+        mDocument->replaceDesign(withPalettePreset(mDocument->fileGenome(), preset),
+                                 tr("Palette: %1").arg(preset.name));
+    });
 }
 
 int EditorWindow::mergeFor(bool dragging) {

