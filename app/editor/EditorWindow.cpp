@@ -3,6 +3,7 @@
 #include "editor/EditorWindow.h"
 
 #include "editor/AnimationExport.h"
+#include "editor/BathSizes.h"
 #include "editor/EditorCanvas.h"
 #include "editor/PaletteEditor.h"
 #include "editor/ParamForm.h"
@@ -311,6 +312,9 @@ void EditorWindow::buildMenus() {
         ->setShortcut(QKeySequence(tr("Ctrl+K")));
     view->addAction(tr("&Play the making"), this, [this] { mTimeline->playing() ? mTimeline->stop() : mTimeline->play(); })
         ->setShortcut(QKeySequence(Qt::Key_P));
+
+    // ---- Issue 27 (fix-canvas): the bath's shapes in New design.
+    addBathSizeMenus(newMenu, [this](const Genome& g) { emit openEditorRequested(g, {}); });
 }
 
 void EditorWindow::wireDocument() {

@@ -2,6 +2,7 @@
 // New design's bath shapes, and deleting an ink and choosing a preset from the palette.
 
 #include "WaitFor.h"
+#include "editor/BathSizes.h"
 #include "editor/EditorCanvas.h"
 #include "editor/EditorDocument.h"
 #include "editor/EditorWindow.h"
@@ -65,6 +66,35 @@ protected:
     std::unique_ptr<EditorWindow> mEditor;
     EditorCanvas* mCanvas = nullptr;
 };
+
+TEST_F(EditorWindowExtrasTest, NewDesignOffersTheBathsShapes) {
+    auto* flat = mEditor->findChild<QMenu*>(QStringLiteral("newFlatSizeMenu"));
+    auto* solid = mEditor->findChild<QMenu*>(QStringLiteral("newSolidSizeMenu"));
+    ASSERT_NE(flat, nullptr);
+    ASSERT_NE(solid, nullptr);
+    ASSERT_EQ(flat->actions().size(), qsizetype(bathSizes().size()));
+    std::vector<Genome> opened;
+    QObject::connect(mEditor.get(), &EditorWindow::openEditorRequested,
+                     [&opened](const Genome& g, const QString&) { opened.push_back(g); });
+    // A4 portrait: taller than wide, by √2.
+    QAction* a4 = nullptr;
+    for (QAction* a : flat->actions())
+        if (a->text().remove(QLatin1Char('&')) == QStringLiteral("A4 portrait")) a4 = a;
+    ASSERT_NE(a4, nullptr);
+    EXPECT_FALSE(a4->toolTip().isEmpty());
+    a4->trigger();
+    ASSERT_EQ(opened.size(), 1);
+    const Genome made = opened.front();
+    EXPECT_EQ(made.dimension, 2);
+    EXPECT_NEAR(made.size.y / made.size.x, std::sqrt(2.0), 0.01);
+    EXPECT_NO_THROW(validateGenome(made, "new"));
+    solid->actions().at(3)->trigger(); // 16:9
+    ASSERT_EQ(opened.size(), 2);
+    const Genome block = opened.back();
+    EXPECT_EQ(block.dimension, 3);
+    EXPECT_NEAR(block.size.x / block.size.y, 16.0 / 9.0, 1e-9);
+    EXPECT_DOUBLE_EQ(block.size.z, block.size.y);
+}
 
 TEST_F(EditorWindowExtrasTest, DeletingAnInkAndAPresetAreUndoSteps) {
     auto* palette = mEditor->findChild<PaletteEditor*>(QStringLiteral("paletteEditor"));
