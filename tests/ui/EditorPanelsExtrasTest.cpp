@@ -41,6 +41,52 @@ Genome threeInks() {
     return g;
 }
 
+TEST(TimelineSpeedTest, TheSpeedBoxSetsHowLongPlayTakes) {
+    Timeline timeline;
+    timeline.show();
+    timeline.setStepCount(2000);
+    auto* speed = timeline.findChild<QComboBox*>(QStringLiteral("playSpeed"));
+    ASSERT_NE(speed, nullptr);
+    EXPECT_FALSE(speed->toolTip().isEmpty());
+    EXPECT_EQ(speed->currentText(), QStringLiteral("1×"));
+    EXPECT_DOUBLE_EQ(timeline.playSeconds(), 12.0) << "2,000 steps play in 12 s at 1×, never 0.6 s each";
+    timeline.setPlaySpeed(16.0);
+    EXPECT_EQ(speed->currentText(), QStringLiteral("16×"));
+    EXPECT_DOUBLE_EQ(timeline.playSeconds(), 0.75);
+
+    // Play from the start: the label reaches the end in well under the 1× time.
+    timeline.setGrowth(0.0);
+    QElapsedTimer clock;
+    clock.start();
+    timeline.play();
+    EXPECT_TRUE(timeline.playing());
+    MARBLER_WAIT(!timeline.playing(), 10000);
+    EXPECT_LT(clock.elapsed(), 6000);
+    auto* label = timeline.findChild<QLabel*>(QStringLiteral("timelineLabel"));
+    ASSERT_NE(label, nullptr);
+    EXPECT_EQ(label->text(), QStringLiteral("2000 / 2000"));
+
+    // Slower: [ steps the speed down, a quarter at the slowest.
+    for (int i = 0; i < 10; ++i)
+        speed->setCurrentIndex(std::max(0, speed->currentIndex() - 1));
+    EXPECT_EQ(speed->currentText(), QStringLiteral("0.25×"));
+    EXPECT_DOUBLE_EQ(timeline.playSeconds(), 48.0);
+}
+
+TEST(TimelineSpeedTest, SpeedKeysStepTheBox) {
+    Timeline timeline;
+    timeline.show();
+    timeline.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&timeline));
+    auto* speed = timeline.findChild<QComboBox*>(QStringLiteral("playSpeed"));
+    ASSERT_NE(speed, nullptr);
+    QTest::keyClick(&timeline, Qt::Key_BracketRight);
+    EXPECT_EQ(speed->currentText(), QStringLiteral("2×"));
+    QTest::keyClick(&timeline, Qt::Key_BracketLeft);
+    QTest::keyClick(&timeline, Qt::Key_BracketLeft);
+    EXPECT_EQ(speed->currentText(), QStringLiteral("0.5×"));
+}
+
 TEST(AnimationExportLabelsTest, NoLabelShowsALiteralAmpersand) {
     AnimationExportDialog dialog(threeInks(), AnimationExportSettings{});
     dialog.show();
