@@ -3,6 +3,7 @@
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
 
+#include <QFontMetricsF>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -171,6 +172,13 @@ void EditorCanvas::fitView() {
     mView.fit();
     changeView();
 }
+
+void EditorCanvas::setCaption(const QString& text) {
+    if (text == mCaption) return;
+    mCaption = text;
+    update();
+}
+
 void EditorCanvas::oneToOne() {
     mView.oneToOne();
     changeView();
@@ -392,6 +400,22 @@ void EditorCanvas::paintEvent(QPaintEvent*) {
         p.drawImage(QRectF(r.topLeft() / ratio, r.size() / ratio), mImage);
     }
     drawOverlay(p);
+    drawCaption(p);
+}
+
+void EditorCanvas::drawCaption(QPainter& p) const {
+    if (mCaption.isEmpty()) return;
+    QFont font = p.font();
+    font.setBold(true);
+    p.setFont(font);
+    const QFontMetricsF metrics(font);
+    const QRectF text = metrics.boundingRect(mCaption).translated(12.0, 10.0 + metrics.ascent());
+    const QRectF box = text.adjusted(-6, -3, 6, 3);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 170));
+    p.drawRoundedRect(box, 4, 4);
+    p.setPen(QColor(255, 255, 255));
+    p.drawText(box, Qt::AlignCenter, mCaption);
 }
 
 void EditorCanvas::drawStepOutline(QPainter& painter, const Operation& op) const {

@@ -64,6 +64,10 @@ public:
     const QImage& image() const { return mImage; }
     bool imageFinal() const { return mImageFinal; }
     const std::vector<Operation>& pendingSteps() const { return mPending; }
+    /// A caption drawn at the canvas's top left (the compare panes say which state each shows:
+    /// "Step 12 of 40", "Now"); none when empty.
+    void setCaption(const QString& text);
+    QString caption() const { return mCaption; }
     /// Fits, zooms about the centre, one to one (the window's View menu and tool bar).
     void fitView();
     void zoomIn();
@@ -94,6 +98,7 @@ protected:
 private:
     /// The 2D extent shown: the design, or its slice's plane.
     void updateDesignSize();
+    void drawCaption(QPainter& painter) const;
     void requestRender(const Genome& genome, bool previewOnly);
     void rerender();
     void onRendered(std::uint64_t key, const QImage& image, bool final);
@@ -119,6 +124,7 @@ private:
     ToolSettings mSettings;
     std::optional<std::size_t> mHandles;
     bool mDragging = false;
+    QString mCaption;
 
     QImage mImage;
     Region mImageRegion;

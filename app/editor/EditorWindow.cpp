@@ -402,7 +402,11 @@ void EditorWindow::wireDocument() {
     });
     connect(mTimeline, &Timeline::exportAnimationRequested, this, &EditorWindow::exportAnimation);
 
-    // ---- Issue 27 (fix-canvas): deleting an ink, palette presets.
+    // ---- Issue 27 (fix-canvas): compare captions, deleting an ink, palette presets.
+    connect(mTimeline, &Timeline::captionsChanged, this, [this](const QString& shown, const QString& other) {
+        mCanvas->setCaption(shown);
+        mCompare->setCaption(other);
+    });
     connect(mPalette, &PaletteEditor::inkRemoved, this, [this](int index, int replacement) {
         if (!mDocument->removePaletteColor(index, replacement))
             statusBar()->showMessage(

@@ -147,6 +147,8 @@ void Timeline::showGrowth() {
     mCompareSlider->setValue(int(std::lround(mCompare * PerStep)));
     mUpdating = false;
     mLabel->setText(tr("%1 / %2").arg(QString::number(mGrowth, 'f', std::floor(mGrowth) == mGrowth ? 0 : 1)).arg(mSteps));
+    const bool on = comparing();
+    emit captionsChanged(on ? caption(mGrowth) : QString(), on ? caption(mCompare) : QString());
 }
 
 void Timeline::play() {
@@ -169,7 +171,7 @@ void Timeline::stop() {
 bool Timeline::playing() const { return mTimer->isActive(); }
 
 void Timeline::setPlaySpeed(double factor) {
-    if (!std::isfinite(factor)) return;
+    if (!std::isfinite(factor) || factor <= 0.0) return;
     int best = 0;
     for (int i = 0; i < mSpeed->count(); ++i)
         if (std::abs(std::log(mSpeed->itemData(i).toDouble() / factor)) <
@@ -184,6 +186,12 @@ double Timeline::playSpeed() const {
 
 double Timeline::playSeconds() const {
     return std::min(SecondsPerStep * double(std::max<std::size_t>(mSteps, 1)), LongestPlay) / playSpeed();
+}
+
+QString Timeline::caption(double g) const {
+    if (g >= double(mSteps)) return tr("Now");
+    if (g <= 0.0) return tr("Bare bath");
+    return tr("Step %1 of %2").arg(QString::number(g, 'f', std::floor(g) == g ? 0 : 1)).arg(mSteps);
 }
 
 void Timeline::tick() {
@@ -203,6 +211,7 @@ void Timeline::setComparing(bool on) {
     mCompareBox->setChecked(on);
     mUpdating = false;
     mCompareSlider->setVisible(on);
+    showGrowth();
     emit compareChanged(on, mCompare);
 }
 

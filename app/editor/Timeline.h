@@ -42,6 +42,9 @@ public:
     double playSpeed() const;
     /// Seconds a play of the whole making takes at the current speed.
     double playSeconds() const;
+    /// What a compare pane showing growth `g` says: "Now" for the whole design, "Bare bath" for
+    /// none of it, else "Step 12 of 40" (with a tenth while part way through a step).
+    QString caption(double g) const;
     /// Stops playing where it is.
     void stop();
     /// Whether Play is running.
@@ -64,6 +67,9 @@ signals:
     void compareChanged(bool on, double otherGrowth);
     /// The user asked to export the making of the design as an animation.
     void exportAnimationRequested();
+    /// The captions of the two compare panes (the main one, the second marker's); both empty
+    /// when not comparing. Emitted whenever either may have changed.
+    void captionsChanged(const QString& shown, const QString& other);
 
 private:
     void tick();

@@ -87,6 +87,23 @@ TEST(TimelineSpeedTest, SpeedKeysStepTheBox) {
     EXPECT_EQ(speed->currentText(), QStringLiteral("0.5×"));
 }
 
+TEST(TimelineCaptionTest, ComparePanesSayWhichStateTheyShow) {
+    Timeline timeline;
+    timeline.setStepCount(40);
+    QSignalSpy captions(&timeline, &Timeline::captionsChanged);
+    timeline.setComparing(true);
+    ASSERT_FALSE(captions.isEmpty());
+    EXPECT_EQ(captions.last().at(0).toString(), QStringLiteral("Now"));
+    EXPECT_EQ(captions.last().at(1).toString(), QStringLiteral("Bare bath"));
+    timeline.setCompareGrowth(12.0);
+    EXPECT_EQ(captions.last().at(1).toString(), QStringLiteral("Step 12 of 40"));
+    timeline.setGrowth(7.5);
+    EXPECT_EQ(captions.last().at(0).toString(), QStringLiteral("Step 7.5 of 40"));
+    timeline.setComparing(false);
+    EXPECT_TRUE(captions.last().at(0).toString().isEmpty());
+    EXPECT_TRUE(captions.last().at(1).toString().isEmpty());
+}
+
 TEST(AnimationExportLabelsTest, NoLabelShowsALiteralAmpersand) {
     AnimationExportDialog dialog(threeInks(), AnimationExportSettings{});
     dialog.show();

@@ -67,6 +67,32 @@ protected:
     EditorCanvas* mCanvas = nullptr;
 };
 
+TEST_F(EditorWindowExtrasTest, ComparePanesSayWhichStateTheyShow) {
+    auto* timeline = mEditor->findChild<Timeline*>(QStringLiteral("timeline"));
+    auto* compare = mEditor->findChild<EditorCanvas*>(QStringLiteral("compareCanvas"));
+    ASSERT_NE(timeline, nullptr);
+    ASSERT_NE(compare, nullptr);
+    EXPECT_TRUE(mCanvas->caption().isEmpty()) << "one pane needs no caption";
+    const QImage plain = seen(mCanvas);
+    timeline->setComparing(true);
+    timeline->setCompareGrowth(1.0);
+    EXPECT_EQ(mCanvas->caption(), QStringLiteral("Now"));
+    EXPECT_EQ(compare->caption(), QStringLiteral("Step 1 of 2"));
+    // Drawn on the canvas: its top left differs from the same design without it.
+    timeline->setGrowth(timeline->stepCount());
+    const QImage captioned = seen(mCanvas);
+    QTest::qWait(1); // paint
+    int differing = 0;
+    const QImage a = plain.scaled(captioned.size());
+    for (int y = 8; y < 30; ++y)
+        for (int x = 8; x < 60; ++x)
+            differing += a.pixel(x, y) != captioned.pixel(x, y);
+    EXPECT_GT(differing, 50) << "the caption is drawn";
+    timeline->setComparing(false);
+    EXPECT_TRUE(mCanvas->caption().isEmpty());
+    EXPECT_TRUE(compare->caption().isEmpty());
+}
+
 TEST_F(EditorWindowExtrasTest, NewDesignOffersTheBathsShapes) {
     auto* flat = mEditor->findChild<QMenu*>(QStringLiteral("newFlatSizeMenu"));
     auto* solid = mEditor->findChild<QMenu*>(QStringLiteral("newSolidSizeMenu"));
