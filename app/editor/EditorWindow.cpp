@@ -313,7 +313,30 @@ void EditorWindow::buildMenus() {
     view->addAction(tr("&Play the making"), this, [this] { mTimeline->playing() ? mTimeline->stop() : mTimeline->play(); })
         ->setShortcut(QKeySequence(Qt::Key_P));
 
-    // ---- Issue 27 (fix-canvas): the bath's shapes in New design.
+    // ---- Issue 27 (fix-canvas): the repeat preview, the bath's shapes in New design.
+    QMenu* repeat = view->addMenu(tr("&Repeat preview"));
+    repeat->setObjectName(QStringLiteral("repeatPreviewMenu"));
+    auto* repeatGroup = new QActionGroup(repeat);
+    using Repeat = EditorCanvas::RepeatPreview;
+    struct RepeatEntry {
+        Repeat mode;
+        QString name, key;
+        const char* id;
+    };
+    for (const RepeatEntry& e :
+         {RepeatEntry{Repeat::Off, tr("&Off"), QString(), "repeatOff"},
+          RepeatEntry{Repeat::Plain, tr("&Plain repeat (3 × 3)"), tr("Ctrl+Shift+R"), "repeatPlain"},
+          RepeatEntry{Repeat::Mirror, tr("&Mirror repeat (3 × 3)"), tr("Ctrl+Shift+M"), "repeatMirror"}}) {
+        const Repeat mode = e.mode;
+        QAction* a = repeat->addAction(e.name, this, [this, mode] { mCanvas->setRepeatPreview(mode); });
+        a->setObjectName(QString::fromLatin1(e.id));
+        a->setCheckable(true);
+        a->setChecked(mode == Repeat::Off);
+        if (!e.key.isEmpty()) a->setShortcut(QKeySequence(e.key));
+        repeatGroup->addAction(a);
+    }
+    repeat->setToolTip(
+        tr("Show the design tiled 3 × 3, plainly or as the mirror repeat tile, to judge its seams"));
     addBathSizeMenus(newMenu, [this](const Genome& g) { emit openEditorRequested(g, {}); });
 }
 

@@ -93,6 +93,52 @@ TEST_F(EditorWindowExtrasTest, ComparePanesSayWhichStateTheyShow) {
     EXPECT_TRUE(compare->caption().isEmpty());
 }
 
+TEST_F(EditorWindowExtrasTest, RepeatPreviewTilesTheDesignOnTheCanvas) {
+    QAction* plain = action(QStringLiteral("repeatPlain"));
+    QAction* mirror = action(QStringLiteral("repeatMirror"));
+    QAction* off = action(QStringLiteral("repeatOff"));
+    ASSERT_NE(plain, nullptr);
+    ASSERT_NE(mirror, nullptr);
+    ASSERT_NE(off, nullptr);
+    EXPECT_FALSE(mirror->shortcut().isEmpty());
+    EXPECT_TRUE(off->isChecked());
+
+    const double ratio = mCanvas->devicePixelRatioF();
+    auto colourAt = [&](const QImage& image, glm::dvec3 p) {
+        const QPointF w = mCanvas->toWidget(p) * ratio;
+        return image.pixelColor(int(w.x()), int(w.y()));
+    };
+    auto near = [](QColor a, QColor b) {
+        return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) <
+               30;
+    };
+    const glm::dvec3 inside{250, 200, 0}; // on the first drop
+    const glm::dvec3 right{1000 + 250, 200, 0}, mirroredRight{2000 - 250, 200, 0};
+    const glm::dvec3 below{250, 600 + 200, 0}, mirroredBelow{250, 1200 - 200, 0};
+
+    plain->trigger();
+    EXPECT_EQ(mCanvas->repeatPreview(), EditorCanvas::RepeatPreview::Plain);
+    QImage image = seen(mCanvas);
+    const QColor ink = colourAt(image, inside);
+    EXPECT_TRUE(near(ink, QColor(200, 30, 30))) << ink.name().toStdString();
+    EXPECT_TRUE(near(colourAt(image, right), ink)) << "the tile to the right repeats the design";
+    EXPECT_TRUE(near(colourAt(image, below), ink));
+    EXPECT_FALSE(near(colourAt(image, mirroredRight), ink));
+
+    mirror->trigger();
+    image = seen(mCanvas);
+    EXPECT_TRUE(near(colourAt(image, mirroredRight), ink)) << "the tile to the right is the design mirrored";
+    EXPECT_TRUE(near(colourAt(image, mirroredBelow), ink));
+    EXPECT_FALSE(near(colourAt(image, right), ink));
+
+    off->trigger();
+    image = seen(mCanvas);
+    EXPECT_TRUE(near(colourAt(image, inside), ink));
+    const QPointF outside = mCanvas->toWidget(right);
+    if (mCanvas->rect().contains(outside.toPoint()))
+        EXPECT_FALSE(near(colourAt(image, right), ink)) << "no tiles";
+}
+
 TEST_F(EditorWindowExtrasTest, NewDesignOffersTheBathsShapes) {
     auto* flat = mEditor->findChild<QMenu*>(QStringLiteral("newFlatSizeMenu"));
     auto* solid = mEditor->findChild<QMenu*>(QStringLiteral("newSolidSizeMenu"));
