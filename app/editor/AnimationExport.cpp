@@ -13,6 +13,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -34,9 +35,17 @@ QString animationExtension(AnimationFormat format) {
     return {};
 }
 
-AnimationExportDialog::AnimationExportDialog(const Genome& design, const AnimationExportSettings& start, QWidget* parent)
-    : QDialog(parent), mFormat(new QComboBox(this)), mPath(new QLineEdit(this)), mWidth(new QSpinBox(this)),
-      mHeight(new QSpinBox(this)), mFrames(new QSpinBox(this)), mFps(new QDoubleSpinBox(this)), mSlice(start.slice) {
+AnimationExportDialog::AnimationExportDialog(const Genome& design, const AnimationExportSettings& start,
+                                             QWidget* parent)
+    : QDialog(parent)
+    , mFormat(new QComboBox(this))
+    , mPath(new QLineEdit(this))
+    , mWidth(new QSpinBox(this))
+    , mHeight(new QSpinBox(this))
+    , mFrames(new QSpinBox(this))
+    , mFps(new QDoubleSpinBox(this))
+    , mDuration(new QDoubleSpinBox(this))
+    , mSlice(start.slice) {
     setObjectName(QStringLiteral("animationExportDialog"));
     setWindowTitle(tr("Export animation"));
     mFormat->setObjectName(QStringLiteral("animationFormat"));
@@ -72,19 +81,48 @@ AnimationExportDialog::AnimationExportDialog(const Genome& design, const Animati
     mFps->setRange(0.1, 1000.0);
     mFps->setValue(start.fps);
     mFps->setToolTip(tr("Frames a second of a video or animated image"));
+    mDuration->setObjectName(QStringLiteral("animationDuration"));
+    mDuration->setRange(0.01, 100000.0);
+    mDuration->setDecimals(2);
+    mDuration->setSuffix(tr(" s"));
+    mDuration->setToolTip(
+        tr("How long the animation plays: the frames at the frame rate (changing it sets the "
+           "number of frames)"));
+    const auto showDuration = [this] {
+        if (mSyncing) return;
+        mSyncing = true;
+        mDuration->setValue(mFrames->value() / mFps->value());
+        mSyncing = false;
+    };
+    showDuration();
+    connect(mFrames, &QSpinBox::valueChanged, this, showDuration);
+    connect(mFps, &QDoubleSpinBox::valueChanged, this, showDuration);
+    connect(mDuration, &QDoubleSpinBox::valueChanged, this, [this](double seconds) {
+        if (mSyncing) return;
+        mSyncing = true;
+        mFrames->setValue(
+            std::clamp(int(std::lround(seconds * mFps->value())), mFrames->minimum(), mFrames->maximum()));
+        mSyncing = false;
+    });
 
     auto* form = new QFormLayout(this);
     form->addRow(tr("&Format:"), mFormat);
     auto* pathRow = new QHBoxLayout;
     pathRow->addWidget(mPath, 1);
     pathRow->addWidget(browseButton);
-    form->addRow(tr("&Save to:"), pathRow);
+    // A row that is a layout gets no buddy from the form: its label would show the & itself.
+    auto* pathLabel = new QLabel(tr("&Save to:"), this);
+    pathLabel->setBuddy(mPath);
+    form->addRow(pathLabel, pathRow);
     auto* sizeRow = new QHBoxLayout;
     sizeRow->addWidget(mWidth);
     sizeRow->addWidget(mHeight);
-    form->addRow(tr("Si&ze:"), sizeRow);
+    auto* sizeLabel = new QLabel(tr("Si&ze:"), this);
+    sizeLabel->setBuddy(mWidth);
+    form->addRow(sizeLabel, sizeRow);
     form->addRow(tr("F&rames:"), mFrames);
     form->addRow(tr("Frames a &second:"), mFps);
+    form->addRow(tr("&Duration:"), mDuration);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     buttons->button(QDialogButtonBox::Ok)->setText(tr("Export"));
     form->addRow(buttons);

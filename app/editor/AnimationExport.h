@@ -40,7 +40,8 @@ QString animationExtension(AnimationFormat format);
 /// `path` with the format's extension added when it lacks it (as it is for PNG frames).
 QString withAnimationExtension(const QString& path, AnimationFormat format);
 
-/// The dialog of Export animation: format, path, size, frames and frame rate.
+/// The dialog of Export animation: format, path, size, frames, frame rate and the duration they
+/// make.
 class AnimationExportDialog : public QDialog {
     Q_OBJECT
 public:
@@ -56,6 +57,8 @@ private:
     QLineEdit* mPath;
     QSpinBox *mWidth, *mHeight, *mFrames;
     QDoubleSpinBox* mFps;
+    QDoubleSpinBox* mDuration; ///< frames / fps, in seconds; editing it sets the frames
+    bool mSyncing = false;
     std::optional<Slice> mSlice;
 };
 

@@ -3,6 +3,7 @@
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
 
+#include <QFontMetricsF>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -94,14 +95,19 @@ void EditorCanvas::setSlice(const Slice& slice) {
     rerender();
 }
 
-void EditorCanvas::updateDesignSize() {
+QSizeF EditorCanvas::planeSize() const {
     double w = mDesign.size.x, h = mDesign.size.y;
     if (mDesign.dimension == 3 && mSlice.axis == 1) h = mDesign.size.z;
     if (mDesign.dimension == 3 && mSlice.axis == 0) {
         w = mDesign.size.y;
         h = mDesign.size.z;
     }
-    mView.setDesignSize(w, h);
+    return {w, h};
+}
+
+void EditorCanvas::updateDesignSize() {
+    const QSizeF plane = planeSize();
+    mView.setDesignSize(plane.width(), plane.height());
     mView.setViewport((size() * devicePixelRatioF()).expandedTo(QSize(1, 1)));
 }
 
@@ -134,7 +140,18 @@ void EditorCanvas::rerender() {
 }
 
 void EditorCanvas::requestRender(const Genome& genome, bool previewOnly) {
-    const auto window = mView.visibleWindow();
+    auto window = mView.visibleWindow();
+    if (mRepeat != RepeatPreview::Off && genome.size.x > 0) {
+        // Any tile may show any part of the design: render all of it, at the view's scale (at
+        // most 1024 pixels a side; the tiles are for judging seams, not detail).
+        const QSizeF plane = planeSize();
+        const double scale = std::min(mView.scale(), 1024.0 / std::max(plane.width(), plane.height()));
+        ViewController::Window whole;
+        whole.region = Region{0.0, 0.0, plane.width(), plane.height()};
+        whole.pixels = QRect(0, 0, std::max(1, int(std::lround(plane.width() * scale))),
+                             std::max(1, int(std::lround(plane.height() * scale))));
+        window = whole;
+    }
     if (!window || genome.size.x <= 0) {
         mRenderer->cancel(mKey);
         mImage = QImage();
@@ -169,8 +186,24 @@ void EditorCanvas::changeView() {
 
 void EditorCanvas::fitView() {
     mView.fit();
+    // The repeat preview's nine tiles, the design in the middle.
+    if (mRepeat != RepeatPreview::Off)
+        mView.zoomBy(1.0 / 3.0, QRectF(QPointF(0, 0), QSizeF(mView.viewport())).center());
     changeView();
 }
+
+void EditorCanvas::setCaption(const QString& text) {
+    if (text == mCaption) return;
+    mCaption = text;
+    update();
+}
+
+void EditorCanvas::setRepeatPreview(RepeatPreview mode) {
+    if (mode == mRepeat) return;
+    mRepeat = mode;
+    fitView();
+}
+
 void EditorCanvas::oneToOne() {
     mView.oneToOne();
     changeView();
@@ -389,9 +422,38 @@ void EditorCanvas::paintEvent(QPaintEvent*) {
         const QRectF r = mView.toViewport(mImageRegion);
         const double ratio = devicePixelRatioF();
         p.setRenderHint(QPainter::SmoothPixmapTransform);
-        p.drawImage(QRectF(r.topLeft() / ratio, r.size() / ratio), mImage);
+        if (mRepeat == RepeatPreview::Off) {
+            p.drawImage(QRectF(r.topLeft() / ratio, r.size() / ratio), mImage);
+        } else {
+            const QSizeF plane = planeSize();
+            for (int j = -1; j <= 1; ++j)
+                for (int i = -1; i <= 1; ++i) {
+                    const Region tile{i * plane.width(), j * plane.height(), (i + 1) * plane.width(),
+                                      (j + 1) * plane.height()};
+                    const QRectF t = mView.toViewport(tile);
+                    const bool mirror = mRepeat == RepeatPreview::Mirror;
+                    p.drawImage(QRectF(t.topLeft() / ratio, t.size() / ratio),
+                                mirror && (i != 0 || j != 0) ? mImage.mirrored(i != 0, j != 0) : mImage);
+                }
+        }
     }
     drawOverlay(p);
+    drawCaption(p);
+}
+
+void EditorCanvas::drawCaption(QPainter& p) const {
+    if (mCaption.isEmpty()) return;
+    QFont font = p.font();
+    font.setBold(true);
+    p.setFont(font);
+    const QFontMetricsF metrics(font);
+    const QRectF text = metrics.boundingRect(mCaption).translated(12.0, 10.0 + metrics.ascent());
+    const QRectF box = text.adjusted(-6, -3, 6, 3);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 170));
+    p.drawRoundedRect(box, 4, 4);
+    p.setPen(QColor(255, 255, 255));
+    p.drawText(box, Qt::AlignCenter, mCaption);
 }
 
 void EditorCanvas::drawStepOutline(QPainter& painter, const Operation& op) const {

@@ -12,6 +12,7 @@
 
 #include <QImage>
 #include <QPointF>
+#include <QSizeF>
 #include <QString>
 #include <QWidget>
 
@@ -64,6 +65,18 @@ public:
     const QImage& image() const { return mImage; }
     bool imageFinal() const { return mImageFinal; }
     const std::vector<Operation>& pendingSteps() const { return mPending; }
+    /// A caption drawn at the canvas's top left (the compare panes say which state each shows:
+    /// "Step 12 of 40", "Now"); none when empty.
+    void setCaption(const QString& text);
+    QString caption() const { return mCaption; }
+    /// The repeat preview: the design shown tiled 3 × 3 about itself, plainly repeated or
+    /// mirrored as the mirror repeat tile lays it (the tiles left and right mirrored across the
+    /// vertical edges, those above and below across the horizontal ones), to judge the seams.
+    /// Turning it on or off fits the view (on: all nine tiles). Gestures still land on the
+    /// design in the middle.
+    enum class RepeatPreview { Off, Plain, Mirror };
+    void setRepeatPreview(RepeatPreview mode);
+    RepeatPreview repeatPreview() const { return mRepeat; }
     /// Fits, zooms about the centre, one to one (the window's View menu and tool bar).
     void fitView();
     void zoomIn();
@@ -94,6 +107,9 @@ protected:
 private:
     /// The 2D extent shown: the design, or its slice's plane.
     void updateDesignSize();
+    /// The width and height of that extent, in design units.
+    QSizeF planeSize() const;
+    void drawCaption(QPainter& painter) const;
     void requestRender(const Genome& genome, bool previewOnly);
     void rerender();
     void onRendered(std::uint64_t key, const QImage& image, bool final);
@@ -119,6 +135,8 @@ private:
     ToolSettings mSettings;
     std::optional<std::size_t> mHandles;
     bool mDragging = false;
+    QString mCaption;
+    RepeatPreview mRepeat = RepeatPreview::Off;
 
     QImage mImage;
     Region mImageRegion;

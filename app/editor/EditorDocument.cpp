@@ -628,4 +628,37 @@ void EditorDocument::switchToBranch(std::size_t k) {
     emit branchesChanged();
 }
 
+// ---- Removing an ink (appended; issue 27) -----------------------------------------------------
+
+std::size_t EditorDocument::inkUseCount(int index) const {
+    std::size_t n = 0;
+    for (const auto* part : {&mDesign.initial, &mDesign.operations})
+        for (const Operation& op : *part)
+            if (toolSpec(op.tool).laysInk && op.color == index) ++n;
+    return n;
+}
+
+bool EditorDocument::removePaletteColor(int index, int replacement) {
+    const int size = static_cast<int>(mDesign.palette.size());
+    if (index < 0 || index >= size) return false;
+    const bool valid = replacement >= 0 && replacement < size && replacement != index;
+    if (inkUseCount(index) > 0 && !valid) return false;
+    EditorState after{mDesign, mMuted};
+    after.design.palette.erase(after.design.palette.begin() + index);
+    // Only ink-laying steps carry a meaningful colour; the others keep theirs.
+    const int mapped = valid ? (replacement > index ? replacement - 1 : replacement) : 0;
+    for (auto* part : {&after.design.initial, &after.design.operations})
+        for (Operation& op : *part) {
+            if (!toolSpec(op.tool).laysInk) continue;
+            if (op.color == index)
+                op.color = mapped;
+            else if (op.color > index)
+                --op.color;
+        }
+    QString text = tr("Delete ink %1: %2").arg(index + 1).arg(hexName(mDesign.palette[std::size_t(index)]));
+    if (inkUseCount(index) > 0) text += tr(", its steps in ink %1").arg(replacement + 1);
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), text);
+    return true;
+}
+
 } // namespace marbler::ui

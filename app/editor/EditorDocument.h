@@ -159,6 +159,16 @@ private:
     std::shared_ptr<const EditorState> mSaved;  ///< the state last saved (null: none kept)
     std::vector<std::shared_ptr<Line>> mBranches;
     bool mQuiet = false; ///< a history switch in progress: signals once at its end
+
+public:
+    /// Removes ink `index` from the palette as one undo step ("Delete ink 2: #c8553d"). Steps
+    /// (muted ones too) that lay it lay `replacement` instead (an index of the palette before
+    /// the removal, not `index`); the inks after it move down one. Refused (false, nothing
+    /// changed) for an index out of range, or when a step lays the ink and `replacement` is no
+    /// other ink.
+    bool removePaletteColor(int index, int replacement = -1);
+    /// How many steps (muted ones too) lay ink `index`.
+    std::size_t inkUseCount(int index) const;
 };
 
 } // namespace marbler::ui

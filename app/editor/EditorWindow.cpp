@@ -3,6 +3,7 @@
 #include "editor/EditorWindow.h"
 
 #include "editor/AnimationExport.h"
+#include "editor/BathSizes.h"
 #include "editor/EditorCanvas.h"
 #include "editor/PaletteEditor.h"
 #include "editor/ParamForm.h"
@@ -503,6 +504,31 @@ void EditorWindow::buildMenus() {
     view->addAction(tr("&Play the making"), this, [this] { mTimeline->playing() ? mTimeline->stop() : mTimeline->play(); })
         ->setShortcut(QKeySequence(Qt::Key_P));
 
+    // ---- Issue 27 (fix-canvas): the repeat preview, the bath's shapes in New design.
+    QMenu* repeat = view->addMenu(tr("&Repeat preview"));
+    repeat->setObjectName(QStringLiteral("repeatPreviewMenu"));
+    auto* repeatGroup = new QActionGroup(repeat);
+    using Repeat = EditorCanvas::RepeatPreview;
+    struct RepeatEntry {
+        Repeat mode;
+        QString name, key;
+        const char* id;
+    };
+    for (const RepeatEntry& e :
+         {RepeatEntry{Repeat::Off, tr("&Off"), QString(), "repeatOff"},
+          RepeatEntry{Repeat::Plain, tr("&Plain repeat (3 × 3)"), tr("Ctrl+Shift+R"), "repeatPlain"},
+          RepeatEntry{Repeat::Mirror, tr("&Mirror repeat (3 × 3)"), tr("Ctrl+Shift+M"), "repeatMirror"}}) {
+        const Repeat mode = e.mode;
+        QAction* a = repeat->addAction(e.name, this, [this, mode] { mCanvas->setRepeatPreview(mode); });
+        a->setObjectName(QString::fromLatin1(e.id));
+        a->setCheckable(true);
+        a->setChecked(mode == Repeat::Off);
+        if (!e.key.isEmpty()) a->setShortcut(QKeySequence(e.key));
+        repeatGroup->addAction(a);
+    }
+    repeat->setToolTip(
+        tr("Show the design tiled 3 × 3, plainly or as the mirror repeat tile, to judge its seams"));
+    addBathSizeMenus(newMenu, [this](const Genome& g) { emit openEditorRequested(g, {}); });
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* guide = help->addAction(tr("Editor &guide"), this, &EditorWindow::showGuide);
     guide->setObjectName(QStringLiteral("editorGuideAction"));
@@ -651,6 +677,22 @@ void EditorWindow::wireDocument() {
         showShown();
     });
     connect(mTimeline, &Timeline::exportAnimationRequested, this, &EditorWindow::exportAnimation);
+
+    // ---- Issue 27 (fix-canvas): compare captions, deleting an ink, palette presets.
+    connect(mTimeline, &Timeline::captionsChanged, this, [this](const QString& shown, const QString& other) {
+        mCanvas->setCaption(shown);
+        mCompare->setCaption(other);
+    });
+    connect(mPalette, &PaletteEditor::inkRemoved, this, [this](int index, int replacement) {
+        if (!mDocument->removePaletteColor(index, replacement))
+            statusBar()->showMessage(
+                tr("Ink %1 is laid by steps and there is no other ink for them").arg(index + 1), 5000);
+    });
+    connect(mPalette, &PaletteEditor::presetChosen, this, [this](int index) {
+        const PalettePreset& preset = palettePresets()[std::size_t(index)];
+        mDocument->replaceDesign(withPalettePreset(mDocument->fileGenome(), preset),
+                                 tr("Palette: %1").arg(preset.name));
+    });
 }
 
 int EditorWindow::mergeFor(bool dragging) {

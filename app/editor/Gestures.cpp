@@ -49,12 +49,26 @@ Operation inkDrop(Tool tool, const glm::dvec3& centre, double radius, int color,
 /// The 2D angle of a drag, degrees clockwise on screen (design y grows downward).
 double dragAngle(const glm::dvec3& d) { return std::atan2(d.y, d.x) * 180.0 / std::numbers::pi; }
 
-/// Sets a stroke's direction: the 2D angle, or in 3D the direction along the drag with the
-/// plane's normal across it.
+/// A solid's stroke in the section plane: `along` the drag, `across` it (both unit, in the plane,
+/// across = plane normal x along, as a 2D angle's N is to its M).
+struct SectionStroke {
+    glm::dvec3 along, across;
+};
+SectionStroke sectionStroke(const glm::dvec3& d, int sliceAxis) {
+    const glm::dvec3 n = planeNormal(sliceAxis);
+    const glm::dvec3 along = glm::normalize(d - glm::dot(d, n) * n);
+    return {along, glm::normalize(glm::cross(n, along))};
+}
+
+/// Sets a line's or comb's direction: the 2D angle, or in 3D the motion along the drag and the
+/// `normal` (the tine's distance is measured along it) across the drag in the section plane. A
+/// normal along the plane's axis would give every point of the section one distance to the
+/// tine: the section would slide rigidly and nothing would be combed.
 void setStrokeDirection(Operation& op, const glm::dvec3& d, const Genome& design, int sliceAxis) {
     if (design.dimension == 3) {
-        op.direction = glm::normalize(d);
-        op.normal = planeNormal(sliceAxis);
+        const SectionStroke stroke = sectionStroke(d, sliceAxis);
+        op.direction = stroke.along;
+        op.normal = stroke.across;
     } else {
         op.angle = dragAngle(d);
     }
@@ -202,9 +216,21 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
     case EditorTool::Wave: {
         if (!stroke) break;
         Operation op = defaultOperation(Tool::Wave, dim, p);
-        setStrokeDirection(op, d, design, sliceAxis);
         op.amplitude = glm::dvec2(length);
         op.wavelength = glm::dvec2(std::max(s.wavelength, 1e-3));
+        if (dim == 3) {
+            // The flat wave on the section, the same on every parallel section: the shift (3D
+            // `normal`) along the drag, varying across it (`direction`), the egg-crate's second
+            // term (along the plane's axis) off.
+            const SectionStroke stroke = sectionStroke(d, sliceAxis);
+            op.shape = WaveShape::Eggcrate;
+            op.direction = stroke.across;
+            op.normal = stroke.along;
+            op.amplitude = {length, 0.0};
+            op.phase = glm::dvec2(0.0);
+        } else {
+            op.angle = dragAngle(d);
+        }
         ops.push_back(op);
         break;
     }

@@ -2,7 +2,9 @@
 
 #include "editor/Timeline.h"
 
+#include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -21,13 +23,21 @@ namespace {
 constexpr int PerStep = 100;
 constexpr double SecondsPerStep = 0.6;
 constexpr double LongestPlay = 12.0;
+/// The Speed box's factors of the normal pace.
+constexpr double Speeds[] = {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0};
 
 } // namespace
 
 Timeline::Timeline(QWidget* parent)
-    : QWidget(parent), mSlider(new QSlider(Qt::Horizontal, this)), mCompareSlider(new QSlider(Qt::Horizontal, this)),
-      mPlay(new QToolButton(this)), mCompareBox(new QCheckBox(tr("&Compare"), this)), mLabel(new QLabel(this)),
-      mTimer(new QTimer(this)), mClock(new QElapsedTimer) {
+    : QWidget(parent)
+    , mSlider(new QSlider(Qt::Horizontal, this))
+    , mCompareSlider(new QSlider(Qt::Horizontal, this))
+    , mPlay(new QToolButton(this))
+    , mCompareBox(new QCheckBox(tr("&Compare"), this))
+    , mSpeed(new QComboBox(this))
+    , mLabel(new QLabel(this))
+    , mTimer(new QTimer(this))
+    , mClock(new QElapsedTimer) {
     setObjectName(QStringLiteral("timeline"));
     mSlider->setObjectName(QStringLiteral("timelineSlider"));
     mSlider->setToolTip(tr("The making of the design: drag to see it after any step, part way through a step "
@@ -41,6 +51,13 @@ Timeline::Timeline(QWidget* parent)
     mPlay->setToolTip(tr("Play the making of the design, each step growing in; again to stop"));
     mCompareBox->setObjectName(QStringLiteral("compareBox"));
     mCompareBox->setToolTip(tr("Compare two states of the making side by side: the second slider picks the other"));
+    mSpeed->setObjectName(QStringLiteral("playSpeed"));
+    for (double f : Speeds)
+        mSpeed->addItem(tr("%1×").arg(f), f);
+    mSpeed->setCurrentIndex(mSpeed->findData(1.0));
+    mSpeed->setToolTip(
+        tr("Play speed: 1× plays the whole making in at most 12 s (0.6 s a step); faster for a "
+           "quick look, slower to watch each step ([ and ])"));
     auto* exportButton = new QToolButton(this);
     exportButton->setObjectName(QStringLiteral("exportAnimationButton"));
     exportButton->setText(tr("Export animation…"));
@@ -50,6 +67,7 @@ Timeline::Timeline(QWidget* parent)
 
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(mPlay);
+    layout->addWidget(mSpeed);
     auto* sliders = new QVBoxLayout;
     sliders->addWidget(mSlider);
     sliders->addWidget(mCompareSlider);
@@ -72,6 +90,28 @@ Timeline::Timeline(QWidget* parent)
     });
     connect(mCompareSlider, &QSlider::valueChanged, this, [this](int v) {
         if (!mUpdating) setCompareGrowth(double(v) / PerStep);
+    });
+    // [ and ] step the speed anywhere in the window (the widget's actions, window-wide keys).
+    auto* slower = new QAction(tr("Play slower"), this);
+    slower->setObjectName(QStringLiteral("playSlower"));
+    slower->setShortcut(QKeySequence(Qt::Key_BracketLeft));
+    slower->setShortcutContext(Qt::WindowShortcut);
+    connect(slower, &QAction::triggered, this,
+            [this] { mSpeed->setCurrentIndex(std::max(0, mSpeed->currentIndex() - 1)); });
+    auto* faster = new QAction(tr("Play faster"), this);
+    faster->setObjectName(QStringLiteral("playFaster"));
+    faster->setShortcut(QKeySequence(Qt::Key_BracketRight));
+    faster->setShortcutContext(Qt::WindowShortcut);
+    connect(faster, &QAction::triggered, this,
+            [this] { mSpeed->setCurrentIndex(std::min(mSpeed->count() - 1, mSpeed->currentIndex() + 1)); });
+    addAction(slower);
+    addAction(faster);
+    connect(mSpeed, &QComboBox::currentIndexChanged, this, [this] {
+        // Keep the growth shown and go on from it at the new pace.
+        if (!playing()) return;
+        mPlayFrom = mGrowth;
+        mRate = double(mSteps) / playSeconds();
+        mClock->start();
     });
     setStepCount(0);
 }
@@ -107,13 +147,15 @@ void Timeline::showGrowth() {
     mCompareSlider->setValue(int(std::lround(mCompare * PerStep)));
     mUpdating = false;
     mLabel->setText(tr("%1 / %2").arg(QString::number(mGrowth, 'f', std::floor(mGrowth) == mGrowth ? 0 : 1)).arg(mSteps));
+    const bool on = comparing();
+    emit captionsChanged(on ? caption(mGrowth) : QString(), on ? caption(mCompare) : QString());
 }
 
 void Timeline::play() {
     if (mSteps == 0) return;
     if (atEnd()) setGrowth(0.0);
     mPlayFrom = mGrowth;
-    mRate = double(mSteps) / std::min(SecondsPerStep * double(mSteps), LongestPlay);
+    mRate = double(mSteps) / playSeconds();
     mClock->start();
     mPlay->setChecked(true);
     mPlay->setText(tr("Stop"));
@@ -127,6 +169,30 @@ void Timeline::stop() {
 }
 
 bool Timeline::playing() const { return mTimer->isActive(); }
+
+void Timeline::setPlaySpeed(double factor) {
+    if (!std::isfinite(factor) || factor <= 0.0) return;
+    int best = 0;
+    for (int i = 0; i < mSpeed->count(); ++i)
+        if (std::abs(std::log(mSpeed->itemData(i).toDouble() / factor)) <
+            std::abs(std::log(mSpeed->itemData(best).toDouble() / factor)))
+            best = i;
+    mSpeed->setCurrentIndex(best);
+}
+
+double Timeline::playSpeed() const {
+    return mSpeed->currentData().toDouble();
+}
+
+double Timeline::playSeconds() const {
+    return std::min(SecondsPerStep * double(std::max<std::size_t>(mSteps, 1)), LongestPlay) / playSpeed();
+}
+
+QString Timeline::caption(double g) const {
+    if (g >= double(mSteps)) return tr("Now");
+    if (g <= 0.0) return tr("Bare bath");
+    return tr("Step %1 of %2").arg(QString::number(g, 'f', std::floor(g) == g ? 0 : 1)).arg(mSteps);
+}
 
 void Timeline::tick() {
     const double g = mPlayFrom + mRate * double(mClock->elapsed()) / 1000.0;
@@ -145,6 +211,7 @@ void Timeline::setComparing(bool on) {
     mCompareBox->setChecked(on);
     mUpdating = false;
     mCompareSlider->setVisible(on);
+    showGrowth();
     emit compareChanged(on, mCompare);
 }
 

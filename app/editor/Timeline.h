@@ -3,11 +3,13 @@
 /// to n (every step), Play that grows the steps one after another, a compare mode with a second
 /// marker (two states side by side), and Export animation.
 
+#include <QString>
 #include <QWidget>
 
 #include <cstddef>
 
 class QCheckBox;
+class QComboBox;
 class QElapsedTimer;
 class QLabel;
 class QSlider;
@@ -32,8 +34,17 @@ public:
     /// Whether the whole design is shown.
     bool atEnd() const { return mGrowth >= double(mSteps); }
     /// Grows the steps smoothly from the current point (from 0 when at the end) to n, about 0.6 s a
-    /// step and at most about 12 s in all, then stops.
+    /// step and at most about 12 s in all at 1×, divided by the play speed, then stops.
     void play();
+    /// The play speed, a factor of the normal pace (the Speed box: 0.25× to 16×). Takes effect at
+    /// once, also while playing. Values outside the box's choices take its nearest.
+    void setPlaySpeed(double factor);
+    double playSpeed() const;
+    /// Seconds a play of the whole making takes at the current speed.
+    double playSeconds() const;
+    /// What a compare pane showing growth `g` says: "Now" for the whole design, "Bare bath" for
+    /// none of it, else "Step 12 of 40" (with a tenth while part way through a step).
+    QString caption(double g) const;
     /// Stops playing where it is.
     void stop();
     /// Whether Play is running.
@@ -56,6 +67,9 @@ signals:
     void compareChanged(bool on, double otherGrowth);
     /// The user asked to export the making of the design as an animation.
     void exportAnimationRequested();
+    /// The captions of the two compare panes (the main one, the second marker's); both empty
+    /// when not comparing. Emitted whenever either may have changed.
+    void captionsChanged(const QString& shown, const QString& other);
 
 private:
     void tick();
@@ -67,6 +81,7 @@ private:
     QSlider* mCompareSlider;
     QToolButton* mPlay;
     QCheckBox* mCompareBox;
+    QComboBox* mSpeed;
     QLabel* mLabel;
     QTimer* mTimer;
     QElapsedTimer* mClock;

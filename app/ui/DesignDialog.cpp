@@ -55,6 +55,16 @@ std::uint64_t nextDialogKey() {
     return next++;
 }
 
+/// Grows `dialog` so that the word-wrapped `label` shows all its lines. A top-level window is
+/// laid out for the text its wrapped labels had when shown; a longer text (Export image's line
+/// with Mirror repeat ticked) would otherwise be clipped to the old height.
+void growToShowWrapped(QWidget* dialog, QLabel* label) {
+    if (!dialog->isVisible() || !dialog->layout()) return;
+    // As a minimum the layout must keep, the dialog grows to it at once.
+    label->setMinimumHeight(label->heightForWidth(label->width()));
+    dialog->layout()->activate();
+}
+
 /// The mirror repeat of an image as mirrorRepeat (marbler/Repeat.h) lays it out: the image at
 /// the top left, its horizontal mirror at the top right, the vertical mirrors of both below.
 QImage mirrorTiled(const QImage& image) {
@@ -267,6 +277,7 @@ void ExportSettingsDialog::updateSummary() {
         mPixels->setText(tr("Vector outlines in design units (%L1 × %L2)").arg(mGenome.size.x).arg(mGenome.size.y));
         mPixels->setStyleSheet(QString());
         mButtons->button(QDialogButtonBox::Ok)->setEnabled(true);
+        growToShowWrapped(this, mPixels);
         return;
     }
     const bool tile = mirrorRepeatTile();
@@ -282,6 +293,7 @@ void ExportSettingsDialog::updateSummary() {
     mPixels->setText(problem.isEmpty() ? text : problem);
     mPixels->setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("color: #c03030"));
     mButtons->button(QDialogButtonBox::Ok)->setEnabled(problem.isEmpty());
+    growToShowWrapped(this, mPixels);
 }
 
 void ExportSettingsDialog::setUnit(const QString& unit) {
