@@ -25,6 +25,7 @@
 #include "ui/RenderService.h"
 #include "ui/StartDialog.h"
 
+#include <QAbstractSpinBox>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
@@ -37,7 +38,9 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QImageReader>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -73,6 +76,8 @@ const QString RecentKey = QStringLiteral("editor/recentFiles");
 /// The steps panel's width: the list and the form's labels and fields, no more (the form
 /// scrolls when a step has more), so that the canvas and the object view get the room.
 constexpr int StepsPanelWidth = 360;
+/// The tool panel's width: the widest tool's options but for long words (they scroll).
+constexpr int ToolPanelWidth = 230;
 constexpr int MaxRecent = 10;
 
 /// Keys of the solid object views, apart from the grid's, the large views' and the canvases'.
@@ -237,12 +242,18 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
     wireDocument();
     // The canvas gets most of the room; the panels keep what their widgets need.
     mCanvases->setStretchFactor(0, 3);
-    if (mObject) mCanvases->setStretchFactor(2, 2);
+    if (mObject) {
+        // The section and the object share the middle, three to two.
+        mCanvases->setStretchFactor(2, 2);
+        mCanvases->setSizes({600, 0, 400});
+    }
     const auto dock = [this](const char* name) { return findChild<QDockWidget*>(QLatin1String(name)); };
     resizeDocks({dock("stepsDock"), dock("paletteDock")}, {StepsPanelWidth + 20, 220}, Qt::Horizontal);
     resizeDocks({dock("stepsDock"), dock("historyDock")}, {520, 160}, Qt::Vertical);
 
     if (dimension == 3) setSlice(mSlice);
+    // Undo and Redo from anywhere in the window, a text field with the focus included.
+    qApp->installEventFilter(this);
     mToolSettings.color = 0;
     mCanvas->setToolSettings(mToolSettings);
     setTool(EditorTool::Drop);
@@ -263,6 +274,19 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
 EditorWindow::~EditorWindow() {
     openEditors().removeAll(this);
     delete mImageJob; // waits for its thread
+}
+
+bool EditorWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride && isUndoKey(static_cast<QKeyEvent*>(event))) {
+        // A spin box or line edit of this window would take the key for its own text undo.
+        auto* widget = qobject_cast<QWidget*>(watched);
+        if (widget && isAncestorOf(widget)
+            && (qobject_cast<QAbstractSpinBox*>(widget) || qobject_cast<QLineEdit*>(widget))) {
+            event->ignore();
+            return true;
+        }
+    }
+    return QMainWindow::eventFilter(watched, event);
 }
 
 EditorWindow* EditorWindow::editorFor(const QString& file) {
@@ -379,7 +403,15 @@ void EditorWindow::buildDocks() {
         });
     }
     toolLayout->addStretch();
-    toolDock->setWidget(toolPanel);
+    // As the form: the options of the tool chosen scroll in a panel of their own width, so that
+    // switching tools never moves the canvas.
+    auto* toolScroll = new QScrollArea(this);
+    toolScroll->setObjectName(QStringLiteral("toolScroll"));
+    toolScroll->setWidget(toolPanel);
+    toolScroll->setWidgetResizable(true);
+    toolScroll->setFrameShape(QFrame::NoFrame);
+    toolScroll->setMinimumWidth(ToolPanelWidth);
+    toolDock->setWidget(toolScroll);
     addDockWidget(Qt::LeftDockWidgetArea, toolDock);
 
     mHistory = new QUndoView(mDocument->undoStack(), this);

@@ -150,6 +150,8 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    /// Undo and Redo keys pressed in a field of this window go to the window's actions.
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void buildMenus();

@@ -73,7 +73,8 @@ QString text(std::string_view s) {
     return QString::fromUtf8(s.data(), qsizetype(s.size()));
 }
 
-/// Whether a key is one of the window's undo or redo keys.
+} // namespace
+
 bool isUndoKey(const QKeyEvent* key) {
     const QKeySequence pressed(key->keyCombination());
     return key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo) ||
@@ -81,8 +82,6 @@ bool isUndoKey(const QKeyEvent* key) {
            pressed == QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z) ||
            pressed == QKeySequence(Qt::CTRL | Qt::Key_Y);
 }
-
-} // namespace
 
 CompactSpinBox::CompactSpinBox(QWidget* parent)
     : QDoubleSpinBox(parent) {

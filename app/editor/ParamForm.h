@@ -21,8 +21,13 @@
 #include <vector>
 
 class QFormLayout;
+class QKeyEvent;
 
 namespace marbler::ui {
+
+/// Whether a key is one of the editor's undo or redo keys (Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y and the
+/// platform's): a field lets them go on to the window's Undo and Redo instead of its own.
+bool isUndoKey(const QKeyEvent* key);
 
 /// A number box that shows its value compactly ("1e+308", not 309 digits; six significant
 /// digits) and reads any number back, exponents included. Text the user did not change reads

@@ -5,6 +5,7 @@
 // designs get their extension. And new steps land where the user works: after the selected
 // step, at the timeline's point, shown at once.
 
+#include "TestUtil.h"
 #include "UiTestSupport.h"
 #include "WaitFor.h"
 #include "editor/EditorCanvas.h"
@@ -20,9 +21,11 @@
 #include "marbler/Params.h"
 #include "ui/SavedFiles.h"
 
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QApplication>
 #include <QDialog>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QLineEdit>
@@ -447,4 +450,77 @@ TEST_F(EditorWorkTest, TheUnsavedQuestionNamesTheDesignAsTheTitleDoes) {
     EXPECT_TRUE(asked.contains(QStringLiteral("hand.marble.json"))) << asked.toStdString();
     EXPECT_TRUE(editor->windowTitle().contains(QStringLiteral("hand.marble.json")));
     editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
+}
+
+// 12. Undo and Redo work from anywhere in the window, a field with the focus included.
+TEST_F(EditorWorkTest, UndoAndRedoWorkWhileAFieldHasTheFocus) {
+    EditorWindow* editor = open(combed());
+    EditorDocument* doc = editor->document();
+    const std::string before = text(doc->design());
+    doc->setMuted(0, true);
+    const std::string after = text(doc->design());
+    editor->activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(editor));
+    const auto fields = editor->findChildren<QAbstractSpinBox*>();
+    ASSERT_FALSE(fields.isEmpty());
+    for (QAbstractSpinBox* field : fields) {
+        if (!field->isVisible()) continue;
+        field->setFocus();
+        QTest::keyClick(field, Qt::Key_Z, Qt::ControlModifier);
+        EXPECT_EQ(text(doc->design()), before) << field->objectName().toStdString();
+        QTest::keyClick(field, Qt::Key_Y, Qt::ControlModifier);
+        EXPECT_EQ(text(doc->design()), after) << field->objectName().toStdString();
+    }
+}
+
+// 9 and 10. The editor fits a 1,366 x 768 laptop screen, never moves its canvas by itself, and a
+// solid's views come first, its section shown as a number.
+TEST_F(EditorWorkTest, TheEditorFitsALaptopScreenAndItsCanvasStaysPut) {
+    for (const QString& example : {QStringLiteral("five-stones"), QStringLiteral("slate-block")}) {
+        SCOPED_TRACE(example.toStdString());
+        const Genome design = test::loadExample((example + QStringLiteral(".marble.json")).toStdString());
+        EditorWindow* editor = open(design);
+        editor->resize(1366, 768);
+        QTest::qWait(50);
+        EXPECT_LE(editor->minimumSizeHint().width(), 1366);
+        EXPECT_LE(editor->minimumSizeHint().height(), 768);
+        EXPECT_EQ(editor->width(), 1366);
+        // Every panel lies within the window: the timeline's Export is not cut off.
+        for (QPushButton* w : editor->findChildren<QPushButton*>()) {
+            if (!w->isVisible() || w->window() != editor) continue;
+            const QRect r(w->mapTo(editor, QPoint(0, 0)), w->size());
+            EXPECT_LE(r.right(), editor->width()) << w->text().toStdString();
+        }
+        const QRect canvas = editor->canvas()->geometry();
+        const QPoint place = editor->canvas()->mapTo(editor, QPoint(0, 0));
+        // Select every step in turn and every tool: the canvas keeps its place and size.
+        for (std::size_t i = 0; i < editor->document()->stepCount(); i += 7) {
+            editor->selectStep(i);
+            QApplication::processEvents();
+            ASSERT_EQ(editor->canvas()->geometry(), canvas) << "step " << i;
+            ASSERT_EQ(editor->canvas()->mapTo(editor, QPoint(0, 0)), place) << "step " << i;
+        }
+        for (QAction* tool : editor->findChildren<QAction*>()) {
+            if (!tool->objectName().startsWith(QStringLiteral("tool-")) || !tool->isEnabled()) continue;
+            tool->trigger();
+            QApplication::processEvents();
+            ASSERT_EQ(editor->canvas()->geometry(), canvas) << tool->objectName().toStdString();
+        }
+        if (design.dimension == 3) {
+            auto* object = editor->findChild<QWidget*>(QStringLiteral("objectView"));
+            ASSERT_NE(object, nullptr);
+            // Was 240 and 200 px beside a Steps dock of 770.
+            EXPECT_GE(canvas.width(), 360) << "the section comes first";
+            EXPECT_GE(canvas.width(), object->width());
+            EXPECT_GE(object->width(), 250);
+            auto* value = editor->findChild<QDoubleSpinBox*>(QStringLiteral("sliceValue"));
+            ASSERT_NE(value, nullptr);
+            EXPECT_DOUBLE_EQ(value->value(), design.size.z / 2.0);
+            value->setValue(250.0);
+            EXPECT_DOUBLE_EQ(editor->slice().value, 250.0) << "the number moves the section";
+        } else {
+            EXPECT_GE(canvas.width(), 600);
+        }
+        editor->close();
+    }
 }
