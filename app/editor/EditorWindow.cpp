@@ -249,7 +249,8 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
     }
     const auto dock = [this](const char* name) { return findChild<QDockWidget*>(QLatin1String(name)); };
     resizeDocks({dock("stepsDock"), dock("paletteDock")}, {StepsPanelWidth + 20, 220}, Qt::Horizontal);
-    resizeDocks({dock("stepsDock"), dock("historyDock")}, {520, 160}, Qt::Vertical);
+    resizeDocks({dock("stepsDock"), dock("historyDock")}, {600, 120}, Qt::Vertical);
+    resizeDocks({dock("paletteDock"), dock("toolDock")}, {150, 400}, Qt::Vertical);
 
     if (dimension == 3) setSlice(mSlice);
     // Undo and Redo from anywhere in the window, a text field with the focus included.

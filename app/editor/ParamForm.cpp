@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QStyle>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -89,6 +90,20 @@ CompactSpinBox::CompactSpinBox(QWidget* parent)
     setDecimals(15);
 }
 
+QSize CompactSpinBox::sizeHint() const {
+    QSize size = QDoubleSpinBox::sizeHint();
+    // Room for "-1234.56" and the suffix, the frame and the arrows.
+    const int text = fontMetrics().horizontalAdvance(QStringLiteral("-1234.56") + suffix());
+    size.setWidth(text + 2 * style()->pixelMetric(QStyle::PM_SpinBoxFrameWidth, nullptr, this) + 28);
+    return size;
+}
+
+QSize CompactSpinBox::minimumSizeHint() const {
+    QSize size = sizeHint();
+    size.setWidth(fontMetrics().horizontalAdvance(QStringLiteral("-1234.5")) + 28);
+    return size;
+}
+
 QString CompactSpinBox::compact(double value) {
     return QString::number(value, 'g', 6);
 }
@@ -155,6 +170,8 @@ struct ParamForm::Row {
 ParamForm::ParamForm(QWidget* parent) : QWidget(parent), mLayout(new QFormLayout(this)) {
     setObjectName(QStringLiteral("paramForm"));
     setToolTip(tr("The parameters of the selected step"));
+    // Where the panel is narrow, a field goes below its label rather than off the edge.
+    mLayout->setRowWrapPolicy(QFormLayout::WrapLongRows);
 }
 
 void ParamForm::clear() {
@@ -294,8 +311,20 @@ void ParamForm::build() {
             });
         } else {
             const int count = componentCount(spec, mOp, mDimension);
+            // A vector's components one above the other: the form stays as narrow as its panel.
+            QVBoxLayout* stack = nullptr;
+            if (count > 1) {
+                stack = new QVBoxLayout;
+                stack->setSpacing(2);
+                layout->addLayout(stack, 1);
+            }
             for (int i = 0; i < count; ++i) {
-                if (count > 1) layout->addWidget(new QLabel(componentName(spec, i, count), row->box));
+                QHBoxLayout* line = layout;
+                if (stack) {
+                    line = new QHBoxLayout;
+                    stack->addLayout(line);
+                    line->addWidget(new QLabel(componentName(spec, i, count), row->box));
+                }
                 if (isInteger(spec.kind)) {
                     auto* spin = new QSpinBox(row->box);
                     spin->setObjectName(QStringLiteral("edit-%1-%2").arg(key).arg(i));
@@ -304,7 +333,7 @@ void ParamForm::build() {
                     spin->setKeyboardTracking(false);
                     spin->setToolTip(tip);
                     watch(spin);
-                    layout->addWidget(spin, 1);
+                    line->addWidget(spin, 1);
                     row->counts.push_back(spin);
                     connect(spin, &QSpinBox::valueChanged, this, [this, row, i](int value) {
                         if (!mUpdating) commitComponent(*row->spec, i, value, false);
@@ -333,7 +362,7 @@ void ParamForm::build() {
                     slider->setObjectName(QStringLiteral("slider-%1-%2").arg(key).arg(i));
                     slider->setRange(0, SliderSteps);
                     slider->setToolTip(tip + tr("\nDrag to see the change as you go"));
-                    layout->addWidget(slider, 2);
+                    line->addWidget(slider, 2);
                     row->sliders.push_back(slider);
                     auto valueOf = [this, row, i](int position) {
                         double lowValue = 0.0;
@@ -348,7 +377,7 @@ void ParamForm::build() {
                         if (!mUpdating) commitComponent(*row->spec, i, valueOf(slider->value()), false, true);
                     });
                 }
-                layout->addWidget(spin, 1);
+                line->addWidget(spin, 1);
             }
         }
         if (row->combo) {

@@ -42,6 +42,10 @@ public:
     double valueFromText(const QString& text) const override;
     QValidator::State validate(QString& input, int& pos) const override;
     void fixup(QString& input) const override;
+    /// As wide as a compact number and the suffix: not the 15-decimal width of its range, which
+    /// would widen the form.
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
 };
 
 /// The form of one step's parameters (see the file comment).
