@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+
 namespace marbler {
 namespace {
 
@@ -173,6 +176,30 @@ TEST(ChangeSummary, PartsFromAnotherParent) {
     c = b;
     c.palette = a.palette;
     EXPECT_EQ(describeChange({b, a}, 1, c), "the strokes of parent 1");
+}
+
+TEST(ChangeSummary, EveryToolHasAnEnglishPlural) {
+    const std::map<Tool, std::string> plurals{
+        {Tool::Drop, "drops"},        {Tool::Spray, "sprays"},   {Tool::Cylinder, "cylinders"},
+        {Tool::Line, "lines"},        {Tool::Comb, "combs"},     {Tool::Wave, "waves"},
+        {Tool::Circle, "circles"},    {Tool::Sphere, "spheres"}, {Tool::Vortex, "vortices"},
+        {Tool::Stretch, "stretches"}, {Tool::Flow, "flows"}};
+    for (const ToolSpec& tool : allTools()) {
+        ASSERT_TRUE(plurals.count(tool.tool)) << "a new tool needs its plural here: " << tool.name;
+        const int dimension = tool.in2D ? 2 : 3;
+        Genome a;
+        a.dimension = dimension;
+        if (dimension == 3) a.size = {1000.0, 1000.0, 1000.0};
+        Genome b = a;
+        b.operations = {defaultOperation(tool.tool, dimension, a.size),
+                        defaultOperation(tool.tool, dimension, a.size)};
+        EXPECT_EQ(describeChange(a, b), "added 2 " + plurals.at(tool.tool));
+        // And where steps are counted, in the initial state.
+        b = a;
+        b.initial = {defaultOperation(tool.tool, dimension, a.size),
+                     defaultOperation(tool.tool, dimension, a.size)};
+        EXPECT_EQ(describeChange(a, b), "initial state: empty → 2 " + plurals.at(tool.tool));
+    }
 }
 
 } // namespace
