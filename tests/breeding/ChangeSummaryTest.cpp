@@ -202,5 +202,33 @@ TEST(ChangeSummary, EveryToolHasAnEnglishPlural) {
     }
 }
 
+/// `marbler breed swap A B --count 4`: children 3 and 4 repeat the swaps, so they are gentle
+/// variations of them; their change is told against the swap each varies (same tools, small
+/// moves), not against the home parent.
+TEST(ChangeSummary, AVariedChildIsDescribedAgainstTheDesignItVaries) {
+    BreedRequest r;
+    r.op = GeneticOperator::Swap;
+    r.parents = {randomGenome(12, 2), randomGenome(38, 2)};
+    r.seed = 5;
+    r.count = 4;
+    const std::vector<Genome> children = breed(r);
+    ASSERT_EQ(children.size(), 4u);
+    for (std::size_t i = 2; i < 4; ++i) {
+        ASSERT_TRUE(children[i].meta["lineage"].contains("variation")) << i;
+        const std::string change = children[i].meta["lineage"]["change"].get<std::string>();
+        EXPECT_EQ(change, "a variation of #" + std::to_string(i - 1) + ": " +
+                              describeChange(children[i - 2], children[i]))
+            << change;
+        EXPECT_EQ(change.find("added"), std::string::npos) << "the same tools as the swap: " << change;
+        EXPECT_EQ(change.find("removed"), std::string::npos) << change;
+        EXPECT_EQ(change.find("initial state"), std::string::npos) << change;
+    }
+    // The numbers the window gives its children name the varied one.
+    r.childNumbers = {4, 5, 7, 8};
+    const std::vector<Genome> numbered = breed(r);
+    EXPECT_EQ(numbered[2].meta["lineage"]["change"].get<std::string>().rfind("a variation of #4: ", 0), 0u);
+    EXPECT_EQ(numbered[3].meta["lineage"]["change"].get<std::string>().rfind("a variation of #5: ", 0), 0u);
+}
+
 } // namespace
 } // namespace marbler
