@@ -382,13 +382,24 @@ void WorkbenchWindow::buildActions() {
     mStrengthLabel->setText(tr(" Strength %1 % ").arg(mStrength->value()));
     bar->addWidget(mStrengthLabel);
     bar->addWidget(mStrength);
-    bar->addSeparator();
+
+    // New populations on a row of their own: on one row the family box, New random and the
+    // object box hid behind the bar's ›› at the default width, and on a 1,366-pixel screen.
+    addToolBarBreak();
+    bar = addToolBar(tr("New population"));
+    bar->setObjectName(QStringLiteral("populationToolBar"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    auto* kindLabel = new QLabel(tr(" New population: "), bar);
+    bar->addWidget(kindLabel);
 
     mDimension = new QComboBox(bar);
     mDimension->addItem(tr("2D designs"), 2);
     mDimension->addItem(tr("Solid designs"), 3);
     mDimension->setToolTip(tr("What a new random population holds: flat marbling or solid (volume) marbling"));
     bar->addWidget(mDimension);
+    kindLabel->setBuddy(mDimension);
+    kindLabel->setToolTip(tr("What File ▸ New random population (%1) makes")
+                              .arg(newRandom->shortcut().toString(QKeySequence::NativeText)));
     mFamily = new QComboBox(bar);
     mFamily->setObjectName(QStringLiteral("familyCombo"));
     mFamily->setToolTip(tr("The pattern family of a new random population, or a mix of the craft's families"));
@@ -396,10 +407,15 @@ void WorkbenchWindow::buildActions() {
     fillFamilies();
     connect(mDimension, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::fillFamilies);
     bar->addAction(newRandom);
+    bar->addSeparator();
 
+    auto* meshLabel = new QLabel(tr(" Solids on: "), bar);
+    bar->addWidget(meshLabel);
     mMesh = new QComboBox(bar);
     mMesh->addItems(meshNames());
     mMesh->setToolTip(tr("The object solid designs are shown on (drag in a cell to turn it)"));
+    meshLabel->setBuddy(mMesh);
+    meshLabel->setToolTip(mMesh->toolTip());
     connect(mMesh, &QComboBox::currentTextChanged, this, [this](const QString& mesh) {
         QSettings().setValue(QStringLiteral("view/mesh"), mesh);
         mModel->setMesh(mesh);

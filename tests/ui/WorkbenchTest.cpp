@@ -48,6 +48,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QUrl>
 
@@ -1411,3 +1413,38 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
 }
 
 } // namespace
+
+// Issue 27, the workbench's items.
+
+/// Every control of the tool bars is in sight at the default window size and on a 1,366-pixel
+/// screen: none hides behind a bar's ›› (the family box, New random and the object box did).
+TEST_F(WorkbenchTest, EveryToolBarControlIsInSightAtTheDefaultWidth) {
+    mWindow->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
+    for (const int width : {1180, 1366 - 16}) {
+        mWindow->resize(width, 860);
+        MARBLER_WAIT(mWindow->width() == width, 5000);
+        QApplication::processEvents();
+        const auto bars = mWindow->findChildren<QToolBar*>();
+        ASSERT_GE(bars.size(), 1);
+        for (QToolBar* bar : bars) {
+            if (!bar->isVisible()) continue;
+            auto* extension = bar->findChild<QToolButton*>(QStringLiteral("qt_toolbar_ext_button"));
+            ASSERT_NE(extension, nullptr);
+            EXPECT_FALSE(extension->isVisible())
+                << bar->objectName().toStdString() << " overflows at " << width;
+            for (QAction* action : bar->actions()) {
+                QWidget* widget = bar->widgetForAction(action);
+                ASSERT_NE(widget, nullptr);
+                EXPECT_TRUE(widget->isVisible()) << bar->objectName().toStdString() << ": "
+                                                 << action->text().toStdString() << " hidden at " << width;
+                EXPECT_TRUE(bar->rect().contains(widget->geometry()))
+                    << bar->objectName().toStdString() << ": " << action->text().toStdString()
+                    << " cut off at " << width;
+            }
+        }
+        auto* family = mWindow->findChild<QComboBox*>(QStringLiteral("familyCombo"));
+        ASSERT_NE(family, nullptr);
+        EXPECT_TRUE(family->isVisible()) << width;
+    }
+}
