@@ -180,7 +180,10 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     connect(mRenderer, &RenderService::rendered, this, &WorkbenchWindow::onRendered);
     connect(mRenderer, &RenderService::failed, this, &WorkbenchWindow::onRenderFailed);
 
+    connect(this, &WorkbenchWindow::renderingFinished, this, &WorkbenchWindow::onRenderingFinished);
     connect(mModel, &PopulationModel::populationChanged, this, [this] {
+        // Going to another generation drops a click still waiting: it was meant for this one.
+        if (!mBreedingNow) mPendingOperator.reset();
         updateCells();
         requestAllRenders();
         updateLineage();
@@ -322,8 +325,9 @@ void WorkbenchWindow::buildActions() {
     mRestoreFavourite->setStatusTip(tr("Puts the favourite removed last back on the shelf"));
     mRestoreFavourite->setEnabled(false);
 
-    const auto makeOperator = [&](GeneticOperator op, const QString& text, const QString& tip, QKeySequence key) {
-        QAction* action = breedMenu->addAction(text, this, [this, op] { applyOperator(op); });
+    const auto makeOperator = [&](GeneticOperator op, const QString& text, const QString& tip,
+                                  QKeySequence key) {
+        QAction* action = breedMenu->addAction(text, this, [this, op] { requestOperator(op); });
         action->setShortcut(key);
         action->setToolTip(QStringLiteral("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
         // The tooltip when the operator can run; updateActions() says why when it cannot.
@@ -924,6 +928,30 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
     }
     statusBar()->showMessage(tr("Bred generation %1 with %2").arg(mModel->generationLabel(mModel->currentIndex())).arg(operatorLabel(op)), 5000);
     return true;
+}
+
+void WorkbenchWindow::requestOperator(GeneticOperator op) {
+    if (mBredRendering) {
+        // Breeding is quick, its nine renders are not: clicks made meanwhile would queue
+        // generations that keep arriving for seconds. The last click waits for the renders.
+        mPendingOperator = op;
+        statusBar()->showMessage(tr("%1 follows when this generation has rendered").arg(operatorLabel(op)),
+                                 5000);
+        return;
+    }
+    mBreedingNow = true;
+    const bool bred = applyOperator(op);
+    mBreedingNow = false;
+    mBredRendering = bred && !renderingDone();
+}
+
+void WorkbenchWindow::onRenderingFinished() {
+    mBredRendering = false;
+    if (!mPendingOperator) return;
+    const GeneticOperator op = *mPendingOperator;
+    mPendingOperator.reset();
+    // Not inside the render result's handler, which is still updating the cells.
+    QTimer::singleShot(0, this, [this, op] { requestOperator(op); });
 }
 
 void WorkbenchWindow::fillFamilies() {

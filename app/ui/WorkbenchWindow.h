@@ -20,6 +20,8 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <string>
 
 class QAction;
 class QComboBox;
@@ -126,8 +128,13 @@ public:
     bool pasteDesign();
     QAction* copyDesignAction() const { return mCopyDesign; }
     QAction* pasteDesignAction() const { return mPasteDesign; }
-    /// Breeds the selected parents with an operator; errors are reported.
+    /// Breeds the selected parents with an operator at once; errors are reported.
     bool applyOperator(GeneticOperator op);
+    /// What the operator actions (buttons, menu, Ctrl+1..4) do: breeds at once, unless the
+    /// generation bred last is still rendering; then the click waits for its renders (a later
+    /// click replacing it, going to another generation dropping it) and the status bar says so.
+    /// Fast clicks so make one generation each time the grid has caught up, not one per click.
+    void requestOperator(GeneticOperator op);
     /// A fresh random population (2: flat, 3: solid) of the family chosen in the tool bar (or
     /// mixed families); remembers the choices.
     void newRandomPopulation(int dimension);
@@ -273,6 +280,8 @@ private:
     void requestAllRenders();
     void onRendered(std::uint64_t key, const QImage& image, bool final);
     void onRenderFailed(std::uint64_t key, const QString& message);
+    /// The operator click waiting for the renders (requestOperator), now that they are done.
+    void onRenderingFinished();
     void onCellClicked(int index);
     void onFocusMove(int index, int dx, int dy);
     void onOrbit(int index, QPoint delta, bool finished);
@@ -300,6 +309,10 @@ private:
     QAction* mRecombine = nullptr;
     QAction* mSwap = nullptr;
     QAction* mReinit = nullptr;
+    /// requestOperator: a generation it bred is still rendering; the click waiting for it.
+    bool mBredRendering = false;
+    bool mBreedingNow = false;
+    std::optional<GeneticOperator> mPendingOperator;
     QAction* mBack = nullptr;
     QAction* mForward = nullptr;
     QSlider* mStrength = nullptr;

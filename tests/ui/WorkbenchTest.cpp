@@ -1448,3 +1448,34 @@ TEST_F(WorkbenchTest, EveryToolBarControlIsInSightAtTheDefaultWidth) {
         EXPECT_TRUE(family->isVisible()) << width;
     }
 }
+
+/// Twenty fast clicks on Alter while the generation it bred is still rendering make one more
+/// generation once the grid has caught up, not twenty that keep arriving for seconds.
+TEST_F(WorkbenchTest, FastOperatorClicksWaitForTheRendersAndCoalesce) {
+    mWindow->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
+    MARBLER_WAIT(mWindow->renderingDone(), 120000);
+    model().setSelected(4, true);
+    const std::size_t before = model().history().size();
+    QAction* alter = mWindow->operatorAction(GeneticOperator::Alter);
+    for (int k = 0; k < 20; ++k)
+        alter->trigger();
+    EXPECT_EQ(model().history().size(), before + 1) << "the first click breeds at once";
+    EXPECT_TRUE(mWindow->statusBar()->currentMessage().contains(QStringLiteral("Alter follows")))
+        << mWindow->statusBar()->currentMessage().toStdString();
+    // The last click waiting is made once the first generation has rendered, and nothing after.
+    MARBLER_WAIT(model().history().size() == before + 2, 120000);
+    MARBLER_WAIT(mWindow->renderingDone(), 120000);
+    QApplication::processEvents();
+    EXPECT_EQ(model().history().size(), before + 2);
+    EXPECT_TRUE(model().isSelected(4)) << "the parent stays selected";
+
+    // A click waiting when the user goes back is dropped: it was meant for the grid left.
+    alter->trigger();
+    ASSERT_EQ(model().history().size(), before + 3);
+    alter->trigger();
+    mWindow->backAction()->trigger();
+    MARBLER_WAIT(mWindow->renderingDone(), 120000);
+    QApplication::processEvents();
+    EXPECT_EQ(model().history().size(), before + 3);
+}
