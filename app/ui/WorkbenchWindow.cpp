@@ -1040,8 +1040,8 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
                        "open them on their own:\n\n%4")
                         .arg(names.value(0), kind == 3 ? tr("solid") : tr("flat"), kind == 3 ? tr("flat") : tr("solid"),
                              refused.join(QStringLiteral("\n"))));
-    const QString description = describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
-    const auto kindName = [this](int dimension) { return dimension == 3 ? tr("solid") : tr("flat"); };
+    const QString description =
+        describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
 
     std::vector<int> used;
     if (mModel->isEmptyWorkbench()) {
@@ -1053,18 +1053,7 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
             used = mModel->placeDesigns(designs, description);
         }
     } else if (kind != mModel->populationDimension()) {
-        // Among designs of the other kind it could breed with none of them, and the operators
-        // would grey out for no visible reason: it starts a generation of its own, and the grid
-        // it replaces stays one step back.
-        const int before = mModel->populationDimension();
-        used = mModel->startGenerationOf(designs, description, cell >= 0 ? cell : 0);
-        mDimension->setCurrentIndex(kind == 3 ? 1 : 0);
-        statusBar()->showMessage(tr("%1: %2 designs start a generation of their own; the %3 designs are one "
-                                    "generation back (%4)")
-                                     .arg(description, kindName(kind), kindName(before),
-                                          mBack->shortcut().toString(QKeySequence::NativeText)),
-                                 10000);
-        return used;
+        return startGenerationOfKind(designs, description, cell >= 0 ? cell : 0);
     } else {
         const bool targeted = cell >= 0 && cell < CellCount && designs.size() == 1;
         OpenQuestion question;
@@ -1102,6 +1091,32 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
                                  10000);
     else
         statusBar()->showMessage(description, 5000);
+    return used;
+}
+
+std::vector<int> WorkbenchWindow::startGenerationOfKind(const std::vector<Genome>& designs,
+                                                        const QString& description, int first) {
+    if (designs.empty()) return {};
+    const int kind = designs.front().dimension;
+    const int before = mModel->populationDimension();
+    const bool wasEmpty = mModel->isEmptyWorkbench();
+    const std::vector<int> used = mModel->startGenerationOf(designs, description, first);
+    mDimension->setCurrentIndex(kind == 3 ? 1 : 0);
+    const auto kindName = [this](int dimension) { return dimension == 3 ? tr("solid") : tr("flat"); };
+    const QString back = mBack->shortcut().toString(QKeySequence::NativeText);
+    if (wasEmpty)
+        statusBar()->showMessage(description, 5000);
+    else if (kind != before)
+        // Among designs of the other kind it could breed with none of them, and the operators
+        // would grey out for no visible reason: it starts a generation of its own, and the grid
+        // it replaces stays one step back.
+        statusBar()->showMessage(tr("%1: %2 designs start a generation of their own; the %3 designs are one "
+                                    "generation back (%4)")
+                                     .arg(description, kindName(kind), kindName(before), back),
+                                 10000);
+    else
+        statusBar()->showMessage(tr("%1; the grid before is one generation back (%2)").arg(description, back),
+                                 10000);
     return used;
 }
 

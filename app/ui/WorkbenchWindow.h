@@ -149,7 +149,8 @@ public:
     QString mesh() const;
     void setMesh(const QString& mesh);
     /// Brings a design of any generation back into the grid as a new generation (placed as
-    /// PopulationModel::placeDesigns places it), so Back undoes it.
+    /// PopulationModel::placeDesigns places it), so Back undoes it. A design of the other kind
+    /// (solid among flat, or the reverse) starts a generation of its own, as an opened one does.
     void bringBackDesign(int generation, int cell);
     /// Kept sessions (SessionStore.h): the session folder whose store File ▸ Sessions shows
     /// (set by startSession; empty: no store, and the menu entries are disabled).
@@ -255,6 +256,11 @@ private:
     void fillFamilies();
     void readSettings();
     void updateCells();
+    /// Puts designs into a generation of their own (every other cell empty) and the kind box to
+    /// their kind, saying on the status bar that the grid before is one generation back: designs
+    /// of the other kind than the grid's, and the nine of a marbled picture.
+    std::vector<int> startGenerationOfKind(const std::vector<Genome>& designs, const QString& description,
+                                           int first = 0);
     void updateActions();
     void updateLineage();
     /// Fills a generation's lineage item with its designs (done when it is first expanded).

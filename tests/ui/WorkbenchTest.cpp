@@ -1479,3 +1479,37 @@ TEST_F(WorkbenchTest, FastOperatorClicksWaitForTheRendersAndCoalesce) {
     QApplication::processEvents();
     EXPECT_EQ(model().history().size(), before + 3);
 }
+
+/// A solid design brought back from the lineage into a flat grid starts a generation of its own,
+/// as an opened one does; it never sits among flat designs.
+TEST_F(WorkbenchTest, ADesignOfTheOtherKindBroughtBackStartsItsOwnGeneration) {
+    mWindow->newRandomPopulation(3);
+    const int solid = model().currentIndex();
+    const Genome solidDesign = *model().cell(2);
+    mWindow->newRandomPopulation(2);
+    const int flat = model().currentIndex();
+    ASSERT_EQ(model().populationDimension(), 2);
+    mWindow->bringBackDesign(solid, 2);
+    EXPECT_EQ(model().current().parent, flat) << "the flat grid is one generation back";
+    int designs = 0;
+    for (int c = 0; c < CellCount; ++c)
+        if (const Genome* g = model().cell(c)) {
+            ++designs;
+            EXPECT_EQ(g->dimension, 3) << "cell " << c;
+            EXPECT_EQ(genomeId(*g), genomeId(solidDesign));
+        }
+    EXPECT_EQ(designs, 1);
+    QComboBox* kind = nullptr;
+    for (QComboBox* box : mWindow->findChildren<QComboBox*>())
+        if (box->findData(3) >= 0 && box->findData(2) >= 0) kind = box;
+    ASSERT_NE(kind, nullptr);
+    EXPECT_EQ(kind->currentData().toInt(), 3) << "the kind box follows the grid";
+    EXPECT_TRUE(mWindow->statusBar()->currentMessage().contains(QStringLiteral("generation of their own")))
+        << mWindow->statusBar()->currentMessage().toStdString();
+    // A flat one brought back into the flat grid goes on as before: into the grid.
+    mWindow->backAction()->trigger();
+    ASSERT_EQ(model().currentIndex(), flat);
+    mWindow->bringBackDesign(0, 0);
+    for (int c = 0; c < CellCount; ++c)
+        EXPECT_EQ(model().cell(c)->dimension, 2) << c;
+}
