@@ -823,10 +823,20 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
         if (const QImage* cached = mImageCache.object(key)) {
             mRenderer->cancel(std::uint64_t(index));
             c->setImage(*cached);
+            mShownDesign[std::size_t(index)] = genomeId(*g);
             mFinal[std::size_t(index)] = true;
             return;
         }
     }
+    // A cell showing another design's image (a new generation) shows "rendering…" until its
+    // own arrives, never the old picture under the new name; the same design at another size
+    // or angle keeps its image meanwhile.
+    const std::string id = genomeId(*g);
+    if (mShownDesign[std::size_t(index)] != id) {
+        c->setImage(QImage());
+        mShownDesign[std::size_t(index)].clear();
+    }
+    mRequestedDesign[std::size_t(index)] = id;
     RenderRequest request;
     request.genome = *g;
     const int margin = 12;
@@ -856,6 +866,7 @@ void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool fi
     if (key < std::uint64_t(CellCount)) {
         const auto index = std::size_t(key);
         mCells[index]->setImage(image);
+        mShownDesign[index] = mRequestedDesign[index];
         if (final) {
             if (!mPendingCacheKey[index].isEmpty()) mImageCache.insert(mPendingCacheKey[index], new QImage(image));
             mFinal[index] = true;

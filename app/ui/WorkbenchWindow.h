@@ -97,8 +97,9 @@ public:
     /// rest. `description` names the new generation ("Opened NAMES" when empty). Returns the
     /// cells filled (none when cancelled).
     /// Nine designs whose bath is the picture `file` (ImageDesign.h: a flow and strokes over it,
-    /// no ink), placed as opened designs are (placeOpened). Reports a picture that cannot be
-    /// read and returns no cells.
+    /// no ink), named "NAME marbled 1" to "… 9", as a new generation of all nine (the grid before
+    /// one generation back; no question, as for a new random population). Reports a picture
+    /// that cannot be read and returns no cells.
     std::vector<int> marblePicture(const QString& file);
     std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1,
                                  const QString& description = {});
@@ -310,6 +311,9 @@ private:
     ViewAngle mOrbitAngle;
     std::array<bool, CellCount> mFinal{};
     std::array<QString, CellCount> mPendingCacheKey;
+    /// The design (genomeId) whose image each cell shows, and the one last asked for.
+    std::array<std::string, CellCount> mShownDesign;
+    std::array<std::string, CellCount> mRequestedDesign;
     QCache<QString, QImage> mImageCache{48};
     QAction* mAlter = nullptr;
     QAction* mRecombine = nullptr;
