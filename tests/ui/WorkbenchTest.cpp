@@ -1513,3 +1513,20 @@ TEST_F(WorkbenchTest, ADesignOfTheOtherKindBroughtBackStartsItsOwnGeneration) {
     for (int c = 0; c < CellCount; ++c)
         EXPECT_EQ(model().cell(c)->dimension, 2) << c;
 }
+
+/// The question before opened designs replace others says what its Replace does: nine designs
+/// over a grid with one parent replace all nine, not "the selected cells".
+TEST(OpenPlacementWording, ReplaceSaysWhatItReplaces) {
+    OpenQuestion nine;
+    for (int c = 0; c < CellCount; ++c) {
+        nine.names << QStringLiteral("p%1").arg(c);
+        nine.replaced.push_back(c);
+    }
+    nine.parents = {4};
+    EXPECT_EQ(OpenPlacementDialog(nine).replaceButton()->text(), QStringLiteral("&Replace all nine designs"));
+    OpenQuestion selected{{QStringLiteral("a"), QStringLiteral("b")}, {0, 4}, {0, 4}};
+    EXPECT_EQ(OpenPlacementDialog(selected).replaceButton()->text(),
+              QStringLiteral("&Replace the selected cells"));
+    OpenQuestion mixed{{QStringLiteral("a"), QStringLiteral("b")}, {0, 1}, {0}};
+    EXPECT_EQ(OpenPlacementDialog(mixed).replaceButton()->text(), QStringLiteral("&Replace designs 1 and 2"));
+}
