@@ -56,11 +56,15 @@ OpenPlacementDialog::OpenPlacementDialog(const OpenQuestion& question, QWidget* 
     auto* intro = new QLabel(text, this);
     intro->setWordWrap(true);
 
-    const bool parents = !question.parents.empty();
-    mReplace = new QPushButton(parents ? (question.replaced.size() == 1 ? tr("&Replace the selected cell")
-                                                                        : tr("&Replace the selected cells"))
-                                       : tr("&Replace %1").arg(designList(question.replaced)),
-                               this);
+    // "The selected cells" only where they are all that would be replaced: nine designs over
+    // a grid with one parent replace all nine, and the button must say so.
+    const bool onlyParents = !question.parents.empty() && question.parents.size() == question.replaced.size();
+    mReplace = new QPushButton(
+        onlyParents                     ? (question.replaced.size() == 1 ? tr("&Replace the selected cell")
+                                                                         : tr("&Replace the selected cells"))
+        : question.replaced.size() == 9 ? tr("&Replace all nine designs")
+                                        : tr("&Replace %1").arg(designList(question.replaced)),
+        this);
     mReplace->setObjectName(QStringLiteral("replaceButton"));
     mReplace->setToolTip(tr("Put the opened designs over %1").arg(designList(question.replaced)));
     mNewGeneration = new QPushButton(tr("Add as a &new generation"), this);

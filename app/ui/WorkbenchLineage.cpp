@@ -252,6 +252,12 @@ void WorkbenchWindow::bringBackDesign(int generation, int cell) {
     const auto& design = history[std::size_t(generation)].cells[std::size_t(cell)];
     if (!design) return;
     const QString from = tr("design %1 of generation %2").arg(cell + 1).arg(mModel->generationLabel(generation));
+    if (design->dimension != mModel->populationDimension()) {
+        // A solid among flat designs (or the reverse) could breed with none of them: as an
+        // opened design of the other kind, it starts a generation of its own.
+        startGenerationOfKind({*design}, tr("Brought back %1").arg(from));
+        return;
+    }
     const std::vector<int> used = mModel->placeDesigns({*design}, tr("Brought back %1").arg(from));
     if (!used.empty())
         statusBar()->showMessage(tr("Brought back %1 into design %2").arg(from).arg(used.front() + 1), 5000);

@@ -45,23 +45,27 @@ std::vector<int> WorkbenchWindow::marblePicture(const QString& file) {
     // The picture stays where it is and is named from its own folder, so the designs read it
     // without asking (SourcePath.h) and a session resumed later still finds it.
     const std::string folder = info.absolutePath().toStdString();
-    const std::string name = tr("%1 marbled").arg(info.completeBaseName()).toStdString();
     const double aspect = double(size.width()) / double(size.height());
     const std::uint64_t seed = mModel->nextBreedSeed();
     std::vector<Genome> designs;
-    QStringList names;
     try {
         for (int k = 0; k < CellCount; ++k) {
+            // Nine designs, nine names: the captions, the lineage and saved files tell them apart.
+            const std::string name =
+                tr("%1 marbled %2").arg(info.completeBaseName()).arg(k + 1).toStdString();
             Genome design = imageDesign(seed + std::uint64_t(k), info.fileName().toStdString(), aspect, name);
             design.baseDirectory = folder;
             designs.push_back(std::move(design));
-            names << info.fileName();
         }
     } catch (const Error& e) {
         reportError(this, tr("Cannot marble the picture"), QString::fromStdString(e.what()));
         return {};
     }
-    return placeOpened(designs, names, -1, tr("Marbled %1").arg(info.fileName()));
+    // Nine designs fill the grid: like a new random population they are a generation of their
+    // own, all nine, without a question (placed as opened designs, a selected parent kept one
+    // of them out, and the question offered to replace "the selected cells" while all nine
+    // went). The grid before is one generation back.
+    return startGenerationOfKind(designs, tr("Marbled %1").arg(info.fileName()));
 }
 
 void WorkbenchWindow::marblePictureDialog() {

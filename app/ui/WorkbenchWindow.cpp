@@ -180,7 +180,10 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     connect(mRenderer, &RenderService::rendered, this, &WorkbenchWindow::onRendered);
     connect(mRenderer, &RenderService::failed, this, &WorkbenchWindow::onRenderFailed);
 
+    connect(this, &WorkbenchWindow::renderingFinished, this, &WorkbenchWindow::onRenderingFinished);
     connect(mModel, &PopulationModel::populationChanged, this, [this] {
+        // Going to another generation drops a click still waiting: it was meant for this one.
+        if (!mBreedingNow) mPendingOperator.reset();
         updateCells();
         requestAllRenders();
         updateLineage();
@@ -322,8 +325,9 @@ void WorkbenchWindow::buildActions() {
     mRestoreFavourite->setStatusTip(tr("Puts the favourite removed last back on the shelf"));
     mRestoreFavourite->setEnabled(false);
 
-    const auto makeOperator = [&](GeneticOperator op, const QString& text, const QString& tip, QKeySequence key) {
-        QAction* action = breedMenu->addAction(text, this, [this, op] { applyOperator(op); });
+    const auto makeOperator = [&](GeneticOperator op, const QString& text, const QString& tip,
+                                  QKeySequence key) {
+        QAction* action = breedMenu->addAction(text, this, [this, op] { requestOperator(op); });
         action->setShortcut(key);
         action->setToolTip(QStringLiteral("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
         // The tooltip when the operator can run; updateActions() says why when it cannot.
@@ -382,13 +386,24 @@ void WorkbenchWindow::buildActions() {
     mStrengthLabel->setText(tr(" Strength %1 % ").arg(mStrength->value()));
     bar->addWidget(mStrengthLabel);
     bar->addWidget(mStrength);
-    bar->addSeparator();
+
+    // New populations on a row of their own: on one row the family box, New random and the
+    // object box hid behind the bar's ›› at the default width, and on a 1,366-pixel screen.
+    addToolBarBreak();
+    bar = addToolBar(tr("New population"));
+    bar->setObjectName(QStringLiteral("populationToolBar"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    auto* kindLabel = new QLabel(tr(" New population: "), bar);
+    bar->addWidget(kindLabel);
 
     mDimension = new QComboBox(bar);
     mDimension->addItem(tr("2D designs"), 2);
     mDimension->addItem(tr("Solid designs"), 3);
     mDimension->setToolTip(tr("What a new random population holds: flat marbling or solid (volume) marbling"));
     bar->addWidget(mDimension);
+    kindLabel->setBuddy(mDimension);
+    kindLabel->setToolTip(tr("What File ▸ New random population (%1) makes")
+                              .arg(newRandom->shortcut().toString(QKeySequence::NativeText)));
     mFamily = new QComboBox(bar);
     mFamily->setObjectName(QStringLiteral("familyCombo"));
     mFamily->setToolTip(tr("The pattern family of a new random population, or a mix of the craft's families"));
@@ -396,10 +411,15 @@ void WorkbenchWindow::buildActions() {
     fillFamilies();
     connect(mDimension, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::fillFamilies);
     bar->addAction(newRandom);
+    bar->addSeparator();
 
+    auto* meshLabel = new QLabel(tr(" Solids on: "), bar);
+    bar->addWidget(meshLabel);
     mMesh = new QComboBox(bar);
     mMesh->addItems(meshNames());
     mMesh->setToolTip(tr("The object solid designs are shown on (drag in a cell to turn it)"));
+    meshLabel->setBuddy(mMesh);
+    meshLabel->setToolTip(mMesh->toolTip());
     connect(mMesh, &QComboBox::currentTextChanged, this, [this](const QString& mesh) {
         QSettings().setValue(QStringLiteral("view/mesh"), mesh);
         mModel->setMesh(mesh);
@@ -803,10 +823,20 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
         if (const QImage* cached = mImageCache.object(key)) {
             mRenderer->cancel(std::uint64_t(index));
             c->setImage(*cached);
+            mShownDesign[std::size_t(index)] = genomeId(*g);
             mFinal[std::size_t(index)] = true;
             return;
         }
     }
+    // A cell showing another design's image (a new generation) shows "rendering…" until its
+    // own arrives, never the old picture under the new name; the same design at another size
+    // or angle keeps its image meanwhile.
+    const std::string id = genomeId(*g);
+    if (mShownDesign[std::size_t(index)] != id) {
+        c->setImage(QImage());
+        mShownDesign[std::size_t(index)].clear();
+    }
+    mRequestedDesign[std::size_t(index)] = id;
     RenderRequest request;
     request.genome = *g;
     const int margin = 12;
@@ -836,6 +866,7 @@ void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool fi
     if (key < std::uint64_t(CellCount)) {
         const auto index = std::size_t(key);
         mCells[index]->setImage(image);
+        mShownDesign[index] = mRequestedDesign[index];
         if (final) {
             if (!mPendingCacheKey[index].isEmpty()) mImageCache.insert(mPendingCacheKey[index], new QImage(image));
             mFinal[index] = true;
@@ -908,6 +939,30 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
     }
     statusBar()->showMessage(tr("Bred generation %1 with %2").arg(mModel->generationLabel(mModel->currentIndex())).arg(operatorLabel(op)), 5000);
     return true;
+}
+
+void WorkbenchWindow::requestOperator(GeneticOperator op) {
+    if (mBredRendering) {
+        // Breeding is quick, its nine renders are not: clicks made meanwhile would queue
+        // generations that keep arriving for seconds. The last click waits for the renders.
+        mPendingOperator = op;
+        statusBar()->showMessage(tr("%1 follows when this generation has rendered").arg(operatorLabel(op)),
+                                 5000);
+        return;
+    }
+    mBreedingNow = true;
+    const bool bred = applyOperator(op);
+    mBreedingNow = false;
+    mBredRendering = bred && !renderingDone();
+}
+
+void WorkbenchWindow::onRenderingFinished() {
+    mBredRendering = false;
+    if (!mPendingOperator) return;
+    const GeneticOperator op = *mPendingOperator;
+    mPendingOperator.reset();
+    // Not inside the render result's handler, which is still updating the cells.
+    QTimer::singleShot(0, this, [this, op] { requestOperator(op); });
 }
 
 void WorkbenchWindow::fillFamilies() {
@@ -996,8 +1051,8 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
                        "open them on their own:\n\n%4")
                         .arg(names.value(0), kind == 3 ? tr("solid") : tr("flat"), kind == 3 ? tr("flat") : tr("solid"),
                              refused.join(QStringLiteral("\n"))));
-    const QString description = describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
-    const auto kindName = [this](int dimension) { return dimension == 3 ? tr("solid") : tr("flat"); };
+    const QString description =
+        describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
 
     std::vector<int> used;
     if (mModel->isEmptyWorkbench()) {
@@ -1009,18 +1064,7 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
             used = mModel->placeDesigns(designs, description);
         }
     } else if (kind != mModel->populationDimension()) {
-        // Among designs of the other kind it could breed with none of them, and the operators
-        // would grey out for no visible reason: it starts a generation of its own, and the grid
-        // it replaces stays one step back.
-        const int before = mModel->populationDimension();
-        used = mModel->startGenerationOf(designs, description, cell >= 0 ? cell : 0);
-        mDimension->setCurrentIndex(kind == 3 ? 1 : 0);
-        statusBar()->showMessage(tr("%1: %2 designs start a generation of their own; the %3 designs are one "
-                                    "generation back (%4)")
-                                     .arg(description, kindName(kind), kindName(before),
-                                          mBack->shortcut().toString(QKeySequence::NativeText)),
-                                 10000);
-        return used;
+        return startGenerationOfKind(designs, description, cell >= 0 ? cell : 0);
     } else {
         const bool targeted = cell >= 0 && cell < CellCount && designs.size() == 1;
         OpenQuestion question;
@@ -1058,6 +1102,32 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
                                  10000);
     else
         statusBar()->showMessage(description, 5000);
+    return used;
+}
+
+std::vector<int> WorkbenchWindow::startGenerationOfKind(const std::vector<Genome>& designs,
+                                                        const QString& description, int first) {
+    if (designs.empty()) return {};
+    const int kind = designs.front().dimension;
+    const int before = mModel->populationDimension();
+    const bool wasEmpty = mModel->isEmptyWorkbench();
+    const std::vector<int> used = mModel->startGenerationOf(designs, description, first);
+    mDimension->setCurrentIndex(kind == 3 ? 1 : 0);
+    const auto kindName = [this](int dimension) { return dimension == 3 ? tr("solid") : tr("flat"); };
+    const QString back = mBack->shortcut().toString(QKeySequence::NativeText);
+    if (wasEmpty)
+        statusBar()->showMessage(description, 5000);
+    else if (kind != before)
+        // Among designs of the other kind it could breed with none of them, and the operators
+        // would grey out for no visible reason: it starts a generation of its own, and the grid
+        // it replaces stays one step back.
+        statusBar()->showMessage(tr("%1: %2 designs start a generation of their own; the %3 designs are one "
+                                    "generation back (%4)")
+                                     .arg(description, kindName(kind), kindName(before), back),
+                                 10000);
+    else
+        statusBar()->showMessage(tr("%1; the grid before is one generation back (%2)").arg(description, back),
+                                 10000);
     return used;
 }
 

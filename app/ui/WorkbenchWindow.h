@@ -20,6 +20,8 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <string>
 
 class QAction;
 class QComboBox;
@@ -96,8 +98,9 @@ public:
     /// rest. `description` names the new generation ("Opened NAMES" when empty). Returns the
     /// cells filled (none when cancelled).
     /// Nine designs whose bath is the picture `file` (ImageDesign.h: a flow and strokes over it,
-    /// no ink), placed as opened designs are (placeOpened). Reports a picture that cannot be
-    /// read and returns no cells.
+    /// no ink), named "NAME marbled 1" to "… 9", as a new generation of all nine (the grid before
+    /// one generation back; no question, as for a new random population). Reports a picture
+    /// that cannot be read and returns no cells.
     std::vector<int> marblePicture(const QString& file);
     std::vector<int> placeOpened(const std::vector<Genome>& designs, const QStringList& names, int cell = -1,
                                  const QString& description = {});
@@ -134,8 +137,13 @@ public:
     bool pasteDesign();
     QAction* copyDesignAction() const { return mCopyDesign; }
     QAction* pasteDesignAction() const { return mPasteDesign; }
-    /// Breeds the selected parents with an operator; errors are reported.
+    /// Breeds the selected parents with an operator at once; errors are reported.
     bool applyOperator(GeneticOperator op);
+    /// What the operator actions (buttons, menu, Ctrl+1..4) do: breeds at once, unless the
+    /// generation bred last is still rendering; then the click waits for its renders (a later
+    /// click replacing it, going to another generation dropping it) and the status bar says so.
+    /// Fast clicks so make one generation each time the grid has caught up, not one per click.
+    void requestOperator(GeneticOperator op);
     /// A fresh random population (2: flat, 3: solid) of the family chosen in the tool bar (or
     /// mixed families); remembers the choices.
     void newRandomPopulation(int dimension);
@@ -150,7 +158,8 @@ public:
     QString mesh() const;
     void setMesh(const QString& mesh);
     /// Brings a design of any generation back into the grid as a new generation (placed as
-    /// PopulationModel::placeDesigns places it), so Back undoes it.
+    /// PopulationModel::placeDesigns places it), so Back undoes it. A design of the other kind
+    /// (solid among flat, or the reverse) starts a generation of its own, as an opened one does.
     void bringBackDesign(int generation, int cell);
     /// Kept sessions (SessionStore.h): the session folder whose store File ▸ Sessions shows
     /// (set by startSession; empty: no store, and the menu entries are disabled).
@@ -256,6 +265,11 @@ private:
     void fillFamilies();
     void readSettings();
     void updateCells();
+    /// Puts designs into a generation of their own (every other cell empty) and the kind box to
+    /// their kind, saying on the status bar that the grid before is one generation back: designs
+    /// of the other kind than the grid's, and the nine of a marbled picture.
+    std::vector<int> startGenerationOfKind(const std::vector<Genome>& designs, const QString& description,
+                                           int first = 0);
     void updateActions();
     void updateLineage();
     /// Fills a generation's lineage item with its designs (done when it is first expanded).
@@ -281,6 +295,8 @@ private:
     void requestAllRenders();
     void onRendered(std::uint64_t key, const QImage& image, bool final);
     void onRenderFailed(std::uint64_t key, const QString& message);
+    /// The operator click waiting for the renders (requestOperator), now that they are done.
+    void onRenderingFinished();
     void onCellClicked(int index);
     void onFocusMove(int index, int dx, int dy);
     void onOrbit(int index, QPoint delta, bool finished);
@@ -303,11 +319,18 @@ private:
     ViewAngle mOrbitAngle;
     std::array<bool, CellCount> mFinal{};
     std::array<QString, CellCount> mPendingCacheKey;
+    /// The design (genomeId) whose image each cell shows, and the one last asked for.
+    std::array<std::string, CellCount> mShownDesign;
+    std::array<std::string, CellCount> mRequestedDesign;
     QCache<QString, QImage> mImageCache{48};
     QAction* mAlter = nullptr;
     QAction* mRecombine = nullptr;
     QAction* mSwap = nullptr;
     QAction* mReinit = nullptr;
+    /// requestOperator: a generation it bred is still rendering; the click waiting for it.
+    bool mBredRendering = false;
+    bool mBreedingNow = false;
+    std::optional<GeneticOperator> mPendingOperator;
     QAction* mBack = nullptr;
     QAction* mForward = nullptr;
     QSlider* mStrength = nullptr;

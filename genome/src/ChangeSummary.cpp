@@ -168,9 +168,34 @@ std::string withArticle(std::string_view name) {
     return (vowel ? "an " : "a ") + std::string(name);
 }
 
-/// "combs", "stretches".
-std::string plural(std::string_view name) {
-    return std::string(name) + (name.ends_with("ch") || name.ends_with("sh") || name.ends_with('s') ? "es" : "s");
+/// "combs", "stretches", "vortices": spelled out per tool (no rule covers English), and a
+/// switch with no default, so a new tool does not build until it has its plural.
+std::string plural(Tool tool) {
+    switch (tool) {
+    case Tool::Drop:
+        return "drops";
+    case Tool::Spray:
+        return "sprays";
+    case Tool::Cylinder:
+        return "cylinders";
+    case Tool::Line:
+        return "lines";
+    case Tool::Comb:
+        return "combs";
+    case Tool::Wave:
+        return "waves";
+    case Tool::Circle:
+        return "circles";
+    case Tool::Sphere:
+        return "spheres";
+    case Tool::Vortex:
+        return "vortices";
+    case Tool::Stretch:
+        return "stretches";
+    case Tool::Flow:
+        return "flows";
+    }
+    return std::string(toolSpec(tool).name) + "s";
 }
 
 /// The pairs of steps matched by the longest common run of their tools; nothing when
@@ -251,7 +276,8 @@ void describeStrokes(const std::vector<Operation>& a, const std::vector<Operatio
     }
     for (const auto& [key, count] : added) {
         const std::string_view name = toolSpec(key.first).name;
-        std::string text = "added " + (count == 1 ? withArticle(name) : std::to_string(count) + " " + plural(name));
+        std::string text =
+            "added " + (count == 1 ? withArticle(name) : std::to_string(count) + " " + plural(key.first));
         if (key.second) text += " from parent " + std::to_string(key.second);
         out.push_back({"", text, 5.0 * count});
     }
@@ -266,7 +292,7 @@ std::string countSteps(const std::vector<Operation>& steps) {
         const int c = count[static_cast<std::size_t>(tool.tool)];
         if (c == 0) continue;
         if (!text.empty()) text += " and ";
-        text += std::to_string(c) + " " + (c == 1 ? std::string(tool.name) : plural(tool.name));
+        text += std::to_string(c) + " " + (c == 1 ? std::string(tool.name) : plural(tool.tool));
     }
     return text.empty() ? "empty" : text;
 }

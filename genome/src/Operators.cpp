@@ -447,6 +447,22 @@ Genome reinitGenome(const Genome& parent, Pcg32& rng) {
     return child;
 }
 
+/// A varied child's change: against the design it varies (a parent, or a sibling made before
+/// it, named as the window and the verb number it: "#2"), not against its home parent, from
+/// which it may differ in everything the repeated design already did.
+static std::string describeVariation(const BreedRequest& request, const std::vector<Genome>& siblings,
+                                     const Genome& repeated, const Genome& child) {
+    const std::string id = genomeId(repeated);
+    std::string of = "an earlier design";
+    for (std::size_t p = 0; p < request.parents.size(); ++p)
+        if (genomeId(request.parents[p]) == id) of = "parent " + std::to_string(p + 1);
+    for (std::size_t k = 0; k < siblings.size(); ++k)
+        if (genomeId(siblings[k]) == id)
+            of = "#" + std::to_string(request.childNumbers.empty() ? static_cast<int>(k) + 1
+                                                                   : request.childNumbers[k]);
+    return "a variation of " + of + ": " + describeChange(repeated, child);
+}
+
 std::vector<Genome> breed(const BreedRequest& request) {
     const GeneticOperator op = request.op;
     const auto parentCount = static_cast<int>(request.parents.size());
@@ -519,9 +535,12 @@ std::vector<Genome> breed(const BreedRequest& request) {
         const bool random = op == GeneticOperator::Recombine || op == GeneticOperator::Reinit ||
                             (op == GeneticOperator::Alter && request.strength > 0.0);
         // One draw, and what the operator does when it repeats a design already in the generation.
-        const auto candidate = [&](std::optional<nlohmann::ordered_json>& variation) {
+        // `variedFrom` keeps the repeated design, which a varied child's change is told against.
+        const auto candidate = [&](std::optional<nlohmann::ordered_json>& variation,
+                                   std::optional<Genome>& variedFrom) {
             Genome child = draw();
-            for (int attempt = 0; random && taken.count(genomeId(child)) && attempt < 16; ++attempt) child = draw();
+            for (int attempt = 0; random && taken.count(genomeId(child)) && attempt < 16; ++attempt)
+                child = draw();
             if (taken.count(genomeId(child))) {
                 // A repeat wastes a cell: vary it gently instead (more on a further repeat). alterGenome
                 // honours the home parent's locks, which the child carries in its meta.
@@ -536,12 +555,14 @@ std::vector<Genome> breed(const BreedRequest& request) {
                     variation = nlohmann::ordered_json::object();
                     (*variation)["of"] = genomeId(repeated);
                     (*variation)["strength"] = strength;
+                    variedFrom = repeated;
                 }
             }
             return child;
         };
         std::optional<nlohmann::ordered_json> variation;
-        Genome child = candidate(variation);
+        std::optional<Genome> variedFrom;
+        Genome child = candidate(variation, variedFrom);
         int redraws = 0;
         if (filtered) {
             // The filter: a dull child or a near-duplicate of a parent or an earlier sibling is
@@ -556,13 +577,15 @@ std::vector<Genome> breed(const BreedRequest& request) {
             Verdict verdict = judge(look);
             for (int attempt = 1; attempt <= ChildRedraws && !verdict.passes(); ++attempt) {
                 std::optional<nlohmann::ordered_json> againVariation;
-                Genome again = candidate(againVariation);
+                std::optional<Genome> againVariedFrom;
+                Genome again = candidate(againVariation, againVariedFrom);
                 Glimpse againLook = glimpseOf(again);
                 Verdict againVerdict = judge(againLook);
                 redraws = attempt;
                 if (againVerdict.betterThan(verdict)) {
                     child = std::move(again);
                     variation = std::move(againVariation);
+                    variedFrom = std::move(againVariedFrom);
                     look = std::move(againLook);
                     verdict = againVerdict;
                 }
@@ -585,7 +608,9 @@ std::vector<Genome> breed(const BreedRequest& request) {
         const nlohmann::ordered_json meta = childMeta(homeParent, generation, number, std::move(lineage));
         child.meta = meta;
         child.meta["id"] = genomeId(child);
-        child.meta["lineage"]["change"] = describeChange(request.parents, home, child);
+        child.meta["lineage"]["change"] = variedFrom
+                                              ? describeVariation(request, children, *variedFrom, child)
+                                              : describeChange(request.parents, home, child);
 
         try {
             validateGenome(child, "child " + std::to_string(i + 1));

@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+
 namespace marbler {
 namespace {
 
@@ -173,6 +176,58 @@ TEST(ChangeSummary, PartsFromAnotherParent) {
     c = b;
     c.palette = a.palette;
     EXPECT_EQ(describeChange({b, a}, 1, c), "the strokes of parent 1");
+}
+
+TEST(ChangeSummary, EveryToolHasAnEnglishPlural) {
+    const std::map<Tool, std::string> plurals{
+        {Tool::Drop, "drops"},        {Tool::Spray, "sprays"},   {Tool::Cylinder, "cylinders"},
+        {Tool::Line, "lines"},        {Tool::Comb, "combs"},     {Tool::Wave, "waves"},
+        {Tool::Circle, "circles"},    {Tool::Sphere, "spheres"}, {Tool::Vortex, "vortices"},
+        {Tool::Stretch, "stretches"}, {Tool::Flow, "flows"}};
+    for (const ToolSpec& tool : allTools()) {
+        ASSERT_TRUE(plurals.count(tool.tool)) << "a new tool needs its plural here: " << tool.name;
+        const int dimension = tool.in2D ? 2 : 3;
+        Genome a;
+        a.dimension = dimension;
+        if (dimension == 3) a.size = {1000.0, 1000.0, 1000.0};
+        Genome b = a;
+        b.operations = {defaultOperation(tool.tool, dimension, a.size),
+                        defaultOperation(tool.tool, dimension, a.size)};
+        EXPECT_EQ(describeChange(a, b), "added 2 " + plurals.at(tool.tool));
+        // And where steps are counted, in the initial state.
+        b = a;
+        b.initial = {defaultOperation(tool.tool, dimension, a.size),
+                     defaultOperation(tool.tool, dimension, a.size)};
+        EXPECT_EQ(describeChange(a, b), "initial state: empty → 2 " + plurals.at(tool.tool));
+    }
+}
+
+/// `marbler breed swap A B --count 4`: children 3 and 4 repeat the swaps, so they are gentle
+/// variations of them; their change is told against the swap each varies (same tools, small
+/// moves), not against the home parent.
+TEST(ChangeSummary, AVariedChildIsDescribedAgainstTheDesignItVaries) {
+    BreedRequest r;
+    r.op = GeneticOperator::Swap;
+    r.parents = {randomGenome(12, 2), randomGenome(38, 2)};
+    r.seed = 5;
+    r.count = 4;
+    const std::vector<Genome> children = breed(r);
+    ASSERT_EQ(children.size(), 4u);
+    for (std::size_t i = 2; i < 4; ++i) {
+        ASSERT_TRUE(children[i].meta["lineage"].contains("variation")) << i;
+        const std::string change = children[i].meta["lineage"]["change"].get<std::string>();
+        EXPECT_EQ(change, "a variation of #" + std::to_string(i - 1) + ": " +
+                              describeChange(children[i - 2], children[i]))
+            << change;
+        EXPECT_EQ(change.find("added"), std::string::npos) << "the same tools as the swap: " << change;
+        EXPECT_EQ(change.find("removed"), std::string::npos) << change;
+        EXPECT_EQ(change.find("initial state"), std::string::npos) << change;
+    }
+    // The numbers the window gives its children name the varied one.
+    r.childNumbers = {4, 5, 7, 8};
+    const std::vector<Genome> numbered = breed(r);
+    EXPECT_EQ(numbered[2].meta["lineage"]["change"].get<std::string>().rfind("a variation of #4: ", 0), 0u);
+    EXPECT_EQ(numbered[3].meta["lineage"]["change"].get<std::string>().rfind("a variation of #5: ", 0), 0u);
 }
 
 } // namespace

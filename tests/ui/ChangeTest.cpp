@@ -49,3 +49,34 @@ TEST_F(ChangeTest, BredCellsAndTheLineageSayWhatChanged) {
     EXPECT_EQ(wildcards, model().wildcardCell() ? 1 : 0);
     EXPECT_EQ(bred + wildcards, CellCount - 1);
 }
+
+/// Swap gives two results; the cells after them are gentle variations of those, and their
+/// tooltips say what changed from the swap each varies (named by its number, as the captions
+/// are), not the whole difference from the home parent.
+TEST_F(ChangeTest, AVariedCellSaysWhatChangedFromTheDesignItVaries) {
+    model().setSelected(0, true);
+    model().setSelected(1, true);
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Swap));
+    int varied = 0;
+    for (int i = 0; i < CellCount; ++i) {
+        SCOPED_TRACE("design " + std::to_string(i + 1));
+        const Genome* g = model().cell(i);
+        ASSERT_NE(g, nullptr);
+        if (!g->meta.contains("lineage") || !g->meta["lineage"].contains("variation")) continue;
+        ++varied;
+        const std::string of = g->meta["lineage"]["variation"]["of"].get<std::string>();
+        int source = -1;
+        for (int k = 0; k < CellCount; ++k)
+            if (k != i && model().cell(k) && genomeId(*model().cell(k)) == of) source = k;
+        ASSERT_GE(source, 0) << "the varied design is in the grid";
+        const QString expected = QStringLiteral("a variation of #%1: %2")
+                                     .arg(source + 1)
+                                     .arg(QString::fromStdString(describeChange(*model().cell(source), *g)));
+        EXPECT_EQ(lineageOf(*g).change.toStdString(), expected.toStdString());
+        EXPECT_TRUE(mWindow->cell(i)->toolTip().startsWith(QStringLiteral("Changed: ") + expected))
+            << mWindow->cell(i)->toolTip().toStdString();
+        EXPECT_TRUE(designCaption(*model().cell(source)).contains(QStringLiteral("#%1)").arg(source + 1)))
+            << "the number names the cell: " << designCaption(*model().cell(source)).toStdString();
+    }
+    EXPECT_GE(varied, 4) << "seven offspring of two swaps";
+}

@@ -5,6 +5,7 @@
 #include "UiTestSupport.h"
 #include "WaitFor.h"
 #include "ui/DesignCell.h"
+#include "ui/OpenPlacement.h"
 #include "ui/SourcePermissions.h"
 
 #include <QAction>
@@ -15,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
 
 using namespace marbler;
 using namespace marbler::ui;
@@ -105,4 +107,53 @@ TEST_F(PictureTest, TheFileMenuOffersIt) {
     ASSERT_NE(action, nullptr);
     EXPECT_FALSE(action->shortcut().isEmpty());
     EXPECT_FALSE(action->statusTip().isEmpty());
+}
+
+/// Marbling a picture over a grid: all nine designs come in as a generation of their own (the
+/// grid before one generation back, even with a parent selected, and without a question whose
+/// words would not match), each under a name of its own, and no cell shows the previous
+/// design's image under a new name while the new one renders.
+TEST_F(PictureTest, NineNamedDesignsReplaceTheGridWithoutStaleImages) {
+    int asked = 0;
+    setOpenChooser([&](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> {
+        ++asked;
+        return OpenChoice::NewGeneration;
+    });
+    const QString file = picture();
+    mWindow->resize(600, 500);
+    mWindow->show();
+    mWindow->newRandomPopulation(2);
+    MARBLER_WAIT(mWindow->renderingDone(), 120000);
+    for (int c = 0; c < CellCount; ++c)
+        ASSERT_FALSE(mWindow->cell(c)->image().isNull()) << c;
+    model().setSelected(4, true);
+    const int before = model().currentIndex();
+
+    const std::vector<int> cells = mWindow->marblePicture(file);
+    EXPECT_EQ(asked, 0) << "nine new designs are a new generation, as a new random population is";
+    ASSERT_EQ(cells.size(), std::size_t(CellCount)) << "all nine placed";
+    EXPECT_EQ(model().current().parent, before);
+    std::set<QString> names;
+    for (int c = 0; c < CellCount; ++c) {
+        const Genome* design = model().cell(c);
+        ASSERT_NE(design, nullptr) << c;
+        ASSERT_TRUE(design->source.has_value()) << c;
+        // What the person sees: the caption under the cell, and no old picture in it.
+        names.insert(mWindow->cell(c)->caption());
+        EXPECT_TRUE(mWindow->cell(c)->image().isNull())
+            << "cell " << c << " shows the previous design's image";
+        EXPECT_FALSE(model().isSelected(c)) << c;
+    }
+    EXPECT_EQ(names.size(), std::size_t(CellCount)) << "nine distinct names";
+    EXPECT_TRUE(names.count(QStringLiteral("bands marbled 1")));
+    EXPECT_TRUE(names.count(QStringLiteral("bands marbled 9")));
+    MARBLER_WAIT(mWindow->renderingDone(), 120000);
+    for (int c = 0; c < CellCount; ++c)
+        EXPECT_FALSE(mWindow->cell(c)->image().isNull()) << c;
+    // Back returns to the grid as it was, its images from the cache at once.
+    mWindow->backAction()->trigger();
+    EXPECT_EQ(model().currentIndex(), before);
+    for (int c = 0; c < CellCount; ++c)
+        EXPECT_FALSE(mWindow->cell(c)->image().isNull()) << c;
+    setOpenChooser({});
 }

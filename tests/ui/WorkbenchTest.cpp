@@ -48,6 +48,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QUrl>
 
@@ -1411,3 +1413,120 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
 }
 
 } // namespace
+
+// Issue 27, the workbench's items.
+
+/// Every control of the tool bars is in sight at the default window size and on a 1,366-pixel
+/// screen: none hides behind a bar's ›› (the family box, New random and the object box did).
+TEST_F(WorkbenchTest, EveryToolBarControlIsInSightAtTheDefaultWidth) {
+    mWindow->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
+    for (const int width : {1180, 1366 - 16}) {
+        mWindow->resize(width, 860);
+        MARBLER_WAIT(mWindow->width() == width, 5000);
+        QApplication::processEvents();
+        const auto bars = mWindow->findChildren<QToolBar*>();
+        ASSERT_GE(bars.size(), 1);
+        for (QToolBar* bar : bars) {
+            if (!bar->isVisible()) continue;
+            auto* extension = bar->findChild<QToolButton*>(QStringLiteral("qt_toolbar_ext_button"));
+            ASSERT_NE(extension, nullptr);
+            EXPECT_FALSE(extension->isVisible())
+                << bar->objectName().toStdString() << " overflows at " << width;
+            for (QAction* action : bar->actions()) {
+                QWidget* widget = bar->widgetForAction(action);
+                ASSERT_NE(widget, nullptr);
+                EXPECT_TRUE(widget->isVisible()) << bar->objectName().toStdString() << ": "
+                                                 << action->text().toStdString() << " hidden at " << width;
+                EXPECT_TRUE(bar->rect().contains(widget->geometry()))
+                    << bar->objectName().toStdString() << ": " << action->text().toStdString()
+                    << " cut off at " << width;
+            }
+        }
+        auto* family = mWindow->findChild<QComboBox*>(QStringLiteral("familyCombo"));
+        ASSERT_NE(family, nullptr);
+        EXPECT_TRUE(family->isVisible()) << width;
+    }
+}
+
+/// Twenty fast clicks on Alter while the generation it bred is still rendering make one more
+/// generation once the grid has caught up, not twenty that keep arriving for seconds.
+TEST_F(WorkbenchTest, FastOperatorClicksWaitForTheRendersAndCoalesce) {
+    mWindow->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
+    MARBLER_WAIT(mWindow->renderingDone(), 120000);
+    model().setSelected(4, true);
+    const std::size_t before = model().history().size();
+    QAction* alter = mWindow->operatorAction(GeneticOperator::Alter);
+    for (int k = 0; k < 20; ++k)
+        alter->trigger();
+    EXPECT_EQ(model().history().size(), before + 1) << "the first click breeds at once";
+    EXPECT_TRUE(mWindow->statusBar()->currentMessage().contains(QStringLiteral("Alter follows")))
+        << mWindow->statusBar()->currentMessage().toStdString();
+    // The last click waiting is made once the first generation has rendered, and nothing after.
+    MARBLER_WAIT(model().history().size() == before + 2, 120000);
+    MARBLER_WAIT(mWindow->renderingDone(), 120000);
+    QApplication::processEvents();
+    EXPECT_EQ(model().history().size(), before + 2);
+    EXPECT_TRUE(model().isSelected(4)) << "the parent stays selected";
+
+    // A click waiting when the user goes back is dropped: it was meant for the grid left.
+    alter->trigger();
+    ASSERT_EQ(model().history().size(), before + 3);
+    alter->trigger();
+    mWindow->backAction()->trigger();
+    MARBLER_WAIT(mWindow->renderingDone(), 120000);
+    QApplication::processEvents();
+    EXPECT_EQ(model().history().size(), before + 3);
+}
+
+/// A solid design brought back from the lineage into a flat grid starts a generation of its own,
+/// as an opened one does; it never sits among flat designs.
+TEST_F(WorkbenchTest, ADesignOfTheOtherKindBroughtBackStartsItsOwnGeneration) {
+    mWindow->newRandomPopulation(3);
+    const int solid = model().currentIndex();
+    const Genome solidDesign = *model().cell(2);
+    mWindow->newRandomPopulation(2);
+    const int flat = model().currentIndex();
+    ASSERT_EQ(model().populationDimension(), 2);
+    mWindow->bringBackDesign(solid, 2);
+    EXPECT_EQ(model().current().parent, flat) << "the flat grid is one generation back";
+    int designs = 0;
+    for (int c = 0; c < CellCount; ++c)
+        if (const Genome* g = model().cell(c)) {
+            ++designs;
+            EXPECT_EQ(g->dimension, 3) << "cell " << c;
+            EXPECT_EQ(genomeId(*g), genomeId(solidDesign));
+        }
+    EXPECT_EQ(designs, 1);
+    QComboBox* kind = nullptr;
+    for (QComboBox* box : mWindow->findChildren<QComboBox*>())
+        if (box->findData(3) >= 0 && box->findData(2) >= 0) kind = box;
+    ASSERT_NE(kind, nullptr);
+    EXPECT_EQ(kind->currentData().toInt(), 3) << "the kind box follows the grid";
+    EXPECT_TRUE(mWindow->statusBar()->currentMessage().contains(QStringLiteral("generation of their own")))
+        << mWindow->statusBar()->currentMessage().toStdString();
+    // A flat one brought back into the flat grid goes on as before: into the grid.
+    mWindow->backAction()->trigger();
+    ASSERT_EQ(model().currentIndex(), flat);
+    mWindow->bringBackDesign(0, 0);
+    for (int c = 0; c < CellCount; ++c)
+        EXPECT_EQ(model().cell(c)->dimension, 2) << c;
+}
+
+/// The question before opened designs replace others says what its Replace does: nine designs
+/// over a grid with one parent replace all nine, not "the selected cells".
+TEST(OpenPlacementWording, ReplaceSaysWhatItReplaces) {
+    OpenQuestion nine;
+    for (int c = 0; c < CellCount; ++c) {
+        nine.names << QStringLiteral("p%1").arg(c);
+        nine.replaced.push_back(c);
+    }
+    nine.parents = {4};
+    EXPECT_EQ(OpenPlacementDialog(nine).replaceButton()->text(), QStringLiteral("&Replace all nine designs"));
+    OpenQuestion selected{{QStringLiteral("a"), QStringLiteral("b")}, {0, 4}, {0, 4}};
+    EXPECT_EQ(OpenPlacementDialog(selected).replaceButton()->text(),
+              QStringLiteral("&Replace the selected cells"));
+    OpenQuestion mixed{{QStringLiteral("a"), QStringLiteral("b")}, {0, 1}, {0}};
+    EXPECT_EQ(OpenPlacementDialog(mixed).replaceButton()->text(), QStringLiteral("&Replace designs 1 and 2"));
+}

@@ -158,7 +158,9 @@ inline constexpr int MaxChildren = 1000;
 
 /// The children of a request. Each child's `meta.lineage` holds {parents: [ids], operator,
 /// seed, child (1-based index), generation (1 + the parents' largest), change (what differs
-/// from its home parent, in words: describeChange(parents, home, child), ChangeSummary.h)} (alter adds strength; a
+/// from its home parent, in words: describeChange(parents, home, child), ChangeSummary.h; for
+/// a varied child what differs from the design it varies: "a variation of #3: …" for a sibling
+/// numbered as childNumbers number it, "a variation of parent 1: …")} (alter adds strength; a
 /// varied child adds variation: {of: the id of the repeated design, strength}; a redrawn one
 /// redraws: the number of redraws) and `meta.id`
 /// its own id. Child i draws from a Pcg32 stream derived from (seed, i) alone (and is checked
