@@ -32,12 +32,15 @@ constexpr double HandleReach = 9.0;
 /// The length (widget pixels) of a direction handle's arm.
 constexpr double ArmLength = 70.0;
 
+/// A flat step has a direction handle where its tool's 2D parameters have an angle (registry).
 bool hasAngle(Tool tool) {
-    return tool == Tool::Line || tool == Tool::Comb || tool == Tool::Wave || tool == Tool::Stretch || tool == Tool::Flow;
+    const auto params = toolSpec(tool).params2D;
+    return std::any_of(params.begin(), params.end(),
+                       [](const ParamSpec& p) { return p.field == ParamField::Angle; });
 }
+/// A radius handle where the tool has a radius, in either dimension (registry).
 bool hasRadius(Tool tool) {
-    return tool == Tool::Drop || tool == Tool::Spray || tool == Tool::Circle || tool == Tool::Cylinder
-        || tool == Tool::Sphere;
+    return findParam(tool, ParamField::Radius) != nullptr;
 }
 
 } // namespace
@@ -475,7 +478,11 @@ void EditorCanvas::drawStepOutline(QPainter& painter, const Operation& op) const
         break;
     }
     case Tool::Flow: painter.drawRect(QRectF(c, QSizeF(op.extent.x * scale, op.extent.y * scale))); break;
-    default: break;
+    case Tool::Line:
+    case Tool::Comb:
+    case Tool::Wave:
+    case Tool::Stretch:
+        break; // strokes across the whole design: the handles say enough
     }
 }
 

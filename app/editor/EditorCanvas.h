@@ -131,7 +131,7 @@ private:
     ViewController mView;
     Slice mSlice;
     bool mSliceChosen = false; ///< setSlice was called: a new design keeps the section chosen
-    EditorTool mTool = EditorTool::Drop;
+    EditorTool mTool = Tool::Drop;
     ToolSettings mSettings;
     std::optional<std::size_t> mHandles;
     bool mDragging = false;

@@ -257,7 +257,7 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
     qApp->installEventFilter(this);
     mToolSettings.color = 0;
     mCanvas->setToolSettings(mToolSettings);
-    setTool(EditorTool::Drop);
+    setTool(Tool::Drop);
     stepsChanged();
     designChanged();
     updateTitle();
@@ -512,12 +512,11 @@ void EditorWindow::buildMenus() {
     bar->setObjectName(QStringLiteral("toolsBar"));
     mTools = new QActionGroup(this);
     const int dimension = mDocument->design().dimension;
-    for (int i = int(EditorTool::Pick); i <= int(EditorTool::Flow); ++i) {
-        const auto t = EditorTool(i);
+    for (const EditorTool t : editorTools()) {
         if (!toolAvailable(t, dimension)) continue;
         QAction* a = tools->addAction(toolName(t));
         a->setCheckable(true);
-        a->setData(int(t));
+        a->setData(t.index());
         a->setToolTip(ui::toolTip(t));
         a->setShortcut(toolShortcut(t));
         a->setObjectName(QStringLiteral("tool-") + QString::fromUtf8(toolId(t).data(), qsizetype(toolId(t).size())));
@@ -872,7 +871,7 @@ void EditorWindow::setTool(EditorTool tool) {
     mToolOptions->setTool(tool);
     mToolOptions->setSettings(mToolSettings);
     for (QAction* a : mTools->actions())
-        if (a->data().toInt() == int(tool)) a->setChecked(true);
+        if (a->data().toInt() == tool.index()) a->setChecked(true);
     statusBar()->showMessage(ui::toolTip(tool), 4000);
 }
 

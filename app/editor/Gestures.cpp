@@ -76,46 +76,82 @@ void setStrokeDirection(Operation& op, const glm::dvec3& d, const Genome& design
 
 } // namespace
 
-Tool genomeTool(EditorTool tool) {
-    switch (tool) {
-    case EditorTool::Pick:
-    case EditorTool::Drop:
-    case EditorTool::DropLine:
-    case EditorTool::DropRings:
-    case EditorTool::DropScatter: return Tool::Drop;
-    case EditorTool::Spray: return Tool::Spray;
-    case EditorTool::Line: return Tool::Line;
-    case EditorTool::Comb: return Tool::Comb;
-    case EditorTool::Wave: return Tool::Wave;
-    case EditorTool::Circle: return Tool::Circle;
-    case EditorTool::Vortex: return Tool::Vortex;
-    case EditorTool::Stretch: return Tool::Stretch;
-    case EditorTool::Flow: return Tool::Flow;
+std::vector<EditorTool> editorTools() {
+    std::vector<EditorTool> tools{EditorTool::Pick};
+    bool patterns = false;
+    for (const ToolSpec& spec : allTools()) {
+        if (spec.editor.gesture == EditorGesture::None) continue;
+        if (!spec.laysInk && !patterns) {
+            tools.insert(tools.end(), {EditorTool::DropLine, EditorTool::DropRings, EditorTool::DropScatter});
+            patterns = true;
+        }
+        tools.push_back(spec.tool);
     }
-    return Tool::Drop;
+    if (!patterns)
+        tools.insert(tools.end(), {EditorTool::DropLine, EditorTool::DropRings, EditorTool::DropScatter});
+    return tools;
+}
+
+Tool genomeTool(EditorTool tool) {
+    return tool.inRegistry() ? tool.tool() : Tool::Drop;
 }
 
 bool laysInk(EditorTool tool) { return tool != EditorTool::Pick && toolSpec(genomeTool(tool)).laysInk; }
 
+EditorGesture gestureOf(EditorTool tool) {
+    if (tool.inRegistry()) return toolSpec(tool.tool()).editor.gesture;
+    switch (tool.own()) {
+    case EditorOnly::Pick:
+        return EditorGesture::None;
+    case EditorOnly::DropLine:
+    case EditorOnly::DropRings:
+    case EditorOnly::DropScatter:
+        return EditorGesture::Drop;
+    }
+    return EditorGesture::None;
+}
+
 bool toolAvailable(EditorTool tool, int dimension) {
-    return tool == EditorTool::Pick || toolSpec(genomeTool(tool)).available(dimension);
+    if (tool == EditorTool::Pick) return true;
+    return gestureOf(tool) != EditorGesture::None && toolSpec(genomeTool(tool)).available(dimension);
+}
+
+bool panelSets(EditorTool tool, ParamField field) {
+    if (!findParam(genomeTool(tool), field)) return false;
+    using F = ParamField;
+    switch (gestureOf(tool)) {
+    case EditorGesture::None:
+        return false;
+    case EditorGesture::Drop:
+        return field == F::Radius; // a click's radius
+    case EditorGesture::Spray:
+        return false; // the spray's own rows
+    case EditorGesture::Stroke:
+        return field == F::Lambda || field == F::Spacing;
+    case EditorGesture::Wave:
+        return field == F::Wavelength;
+    case EditorGesture::Ring:
+    case EditorGesture::Swirl:
+        return field == F::Alpha || field == F::Lambda || field == F::Core;
+    case EditorGesture::Teeth:
+        return field == F::Power;
+    case EditorGesture::Cell:
+        return field == F::Field || field == F::Speed || field == F::Time;
+    }
+    return false;
 }
 
 std::string_view toolId(EditorTool tool) {
-    switch (tool) {
-    case EditorTool::Pick: return "pick";
-    case EditorTool::Drop: return "drop";
-    case EditorTool::Spray: return "spray";
-    case EditorTool::DropLine: return "drop-line";
-    case EditorTool::DropRings: return "drop-rings";
-    case EditorTool::DropScatter: return "drop-scatter";
-    case EditorTool::Line: return "line";
-    case EditorTool::Comb: return "comb";
-    case EditorTool::Wave: return "wave";
-    case EditorTool::Circle: return "circle";
-    case EditorTool::Vortex: return "vortex";
-    case EditorTool::Stretch: return "stretch";
-    case EditorTool::Flow: return "flow";
+    if (tool.inRegistry()) return toolSpec(tool.tool()).name;
+    switch (tool.own()) {
+    case EditorOnly::Pick:
+        return "pick";
+    case EditorOnly::DropLine:
+        return "drop-line";
+    case EditorOnly::DropRings:
+        return "drop-rings";
+    case EditorOnly::DropScatter:
+        return "drop-scatter";
     }
     return "pick";
 }
@@ -146,13 +182,63 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
     const int count = std::max(1, s.patternCount);
     std::vector<Operation> ops;
 
-    switch (tool) {
-    case EditorTool::Pick: break;
-    case EditorTool::Drop:
-        // A drop inside a drop needs nothing special: the new ink pushes the older outward.
-        ops.push_back(inkDrop(Tool::Drop, p, stroke ? length : s.radius, color, design));
+    if (!tool.inRegistry()) {
+        switch (tool.own()) {
+        case EditorOnly::Pick:
+            break;
+        case EditorOnly::DropLine: {
+            // Evenly along the drag; a click drops them along a short row to the right.
+            const glm::dvec3 along = stroke ? d : u * (2.0 * s.radius * (count - 1));
+            for (int i = 0; i < count; ++i) {
+                const double t = count == 1 ? 0.0 : double(i) / (count - 1);
+                ops.push_back(inkDrop(Tool::Drop, p + t * along, s.radius, color, design));
+            }
+            break;
+        }
+        case EditorOnly::DropRings: {
+            // n drops at one centre, inks alternating with the next of the palette: each pushes the
+            // older ones outward, and by the area law (volume law in 3D) the last ring ends at the
+            // drag's length.
+            const double outer = stroke ? length : s.radius;
+            const double r = outer / std::pow(double(count), dim == 3 ? 1.0 / 3.0 : 0.5);
+            const int other = (color + 1) % int(design.palette.size());
+            for (int i = 0; i < count; ++i)
+                ops.push_back(inkDrop(Tool::Drop, p, r, i % 2 == 0 ? color : other, design));
+            break;
+        }
+        case EditorOnly::DropScatter: {
+            // Poisson-disk (dart throwing) in the disc of the drag, drops spaced at least `gap`
+            // apart and half that wide, so none lands in another.
+            const double outer = stroke ? length : s.radius * 4.0;
+            const double gap = outer * std::sqrt(1.0 / count);
+            Pcg32 rng(s.seed);
+            std::vector<glm::dvec3> placed;
+            for (int attempt = 0; attempt < 60 * count && int(placed.size()) < count; ++attempt) {
+                const double a = rng.uniform(0.0, 2.0 * std::numbers::pi);
+                const double r = outer * std::sqrt(rng.uniform());
+                const glm::dvec3 at = p + r * (std::cos(a) * u + std::sin(a) * v);
+                if (std::all_of(placed.begin(), placed.end(),
+                                [&](const glm::dvec3& o) { return glm::length(o - at) >= gap; }))
+                    placed.push_back(at);
+            }
+            for (const glm::dvec3& at : placed)
+                ops.push_back(inkDrop(Tool::Drop, at, gap * 0.45, color, design));
+            break;
+        }
+        }
+        return ops;
+    }
+
+    // The registry says which kind of gesture makes the tool; each kind is written once here.
+    const Tool made = tool.tool();
+    switch (toolSpec(made).editor.gesture) {
+    case EditorGesture::None:
         break;
-    case EditorTool::Spray: {
+    case EditorGesture::Drop:
+        // A drop inside a drop needs nothing special: the new ink pushes the older outward.
+        ops.push_back(inkDrop(made, p, stroke ? length : s.radius, color, design));
+        break;
+    case EditorGesture::Spray: {
         // Droplets scattered uniformly within `brush` of the stroke's path.
         Pcg32 rng(s.seed);
         const double brush = std::max(s.brush, 0.0);
@@ -161,51 +247,13 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
             const double a = rng.uniform(0.0, 2.0 * std::numbers::pi);
             const double r = brush * std::sqrt(rng.uniform());
             const glm::dvec3 at = p + t * d + r * (std::cos(a) * u + std::sin(a) * v);
-            ops.push_back(inkDrop(Tool::Spray, at, s.sprayRadius, color, design));
+            ops.push_back(inkDrop(made, at, s.sprayRadius, color, design));
         }
         break;
     }
-    case EditorTool::DropLine: {
-        // Evenly along the drag; a click drops them along a short row to the right.
-        const glm::dvec3 along = stroke ? d : u * (2.0 * s.radius * (count - 1));
-        for (int i = 0; i < count; ++i) {
-            const double t = count == 1 ? 0.0 : double(i) / (count - 1);
-            ops.push_back(inkDrop(Tool::Drop, p + t * along, s.radius, color, design));
-        }
-        break;
-    }
-    case EditorTool::DropRings: {
-        // n drops at one centre, inks alternating with the next of the palette: each pushes the
-        // older ones outward, and by the area law (volume law in 3D) the last ring ends at the
-        // drag's length.
-        const double outer = stroke ? length : s.radius;
-        const double r = outer / std::pow(double(count), dim == 3 ? 1.0 / 3.0 : 0.5);
-        const int other = (color + 1) % int(design.palette.size());
-        for (int i = 0; i < count; ++i)
-            ops.push_back(inkDrop(Tool::Drop, p, r, i % 2 == 0 ? color : other, design));
-        break;
-    }
-    case EditorTool::DropScatter: {
-        // Poisson-disk (dart throwing) in the disc of the drag, drops spaced at least `gap`
-        // apart and half that wide, so none lands in another.
-        const double outer = stroke ? length : s.radius * 4.0;
-        const double gap = outer * std::sqrt(1.0 / count);
-        Pcg32 rng(s.seed);
-        std::vector<glm::dvec3> placed;
-        for (int attempt = 0; attempt < 60 * count && int(placed.size()) < count; ++attempt) {
-            const double a = rng.uniform(0.0, 2.0 * std::numbers::pi);
-            const double r = outer * std::sqrt(rng.uniform());
-            const glm::dvec3 at = p + r * (std::cos(a) * u + std::sin(a) * v);
-            if (std::all_of(placed.begin(), placed.end(), [&](const glm::dvec3& o) { return glm::length(o - at) >= gap; }))
-                placed.push_back(at);
-        }
-        for (const glm::dvec3& at : placed) ops.push_back(inkDrop(Tool::Drop, at, gap * 0.45, color, design));
-        break;
-    }
-    case EditorTool::Line:
-    case EditorTool::Comb: {
+    case EditorGesture::Stroke: {
         if (!stroke) break;
-        Operation op = defaultOperation(genomeTool(tool), dim, p);
+        Operation op = defaultOperation(made, dim, p);
         setStrokeDirection(op, d, design, sliceAxis);
         op.alpha = length;
         op.lambda = std::max(s.lambda, 1e-3);
@@ -213,9 +261,9 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         ops.push_back(op);
         break;
     }
-    case EditorTool::Wave: {
+    case EditorGesture::Wave: {
         if (!stroke) break;
-        Operation op = defaultOperation(Tool::Wave, dim, p);
+        Operation op = defaultOperation(made, dim, p);
         op.amplitude = glm::dvec2(length);
         op.wavelength = glm::dvec2(std::max(s.wavelength, 1e-3));
         if (dim == 3) {
@@ -234,9 +282,9 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         ops.push_back(op);
         break;
     }
-    case EditorTool::Circle: {
+    case EditorGesture::Ring: {
         if (!stroke) break;
-        Operation op = defaultOperation(Tool::Circle, dim, p);
+        Operation op = defaultOperation(made, dim, p);
         if (dim == 3) op.axis = planeNormal(sliceAxis);
         op.radius = length;
         op.alpha = s.alpha;
@@ -245,9 +293,9 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         ops.push_back(op);
         break;
     }
-    case EditorTool::Vortex: {
+    case EditorGesture::Swirl: {
         // The drag's length is the swirl's largest shift; a click swirls by the panel's.
-        Operation op = defaultOperation(Tool::Vortex, dim, p);
+        Operation op = defaultOperation(made, dim, p);
         if (dim == 3) op.axis = planeNormal(sliceAxis);
         op.alpha = stroke ? length : s.alpha;
         op.lambda = std::max(s.lambda, 1e-3);
@@ -255,10 +303,10 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         ops.push_back(op);
         break;
     }
-    case EditorTool::Stretch: {
+    case EditorGesture::Teeth: {
         if (!stroke) break;
         // Teeth evenly across the whole design at any angle, about the origin.
-        Operation op = defaultOperation(Tool::Stretch, dim, p);
+        Operation op = defaultOperation(made, dim, p);
         op.angle = dragAngle(d);
         op.shift = length;
         op.power = std::max(s.power, 1e-3);
@@ -269,9 +317,9 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         ops.push_back(op);
         break;
     }
-    case EditorTool::Flow: {
+    case EditorGesture::Cell: {
         // The drag spans one cell (or the cavity) from its corner; a click keeps the default size.
-        Operation op = defaultOperation(Tool::Flow, dim, p);
+        Operation op = defaultOperation(made, dim, p);
         op.center = p;
         if (stroke) op.extent = {std::max(std::abs(d.x), MinStrokeLength), std::max(std::abs(d.y), MinStrokeLength)};
         op.center = {std::min(p.x, q.x), std::min(p.y, q.y), 0.0};

@@ -4,6 +4,7 @@
 /// here, and tests check the steps alone.
 
 #include "marbler/Genome.h"
+#include "marbler/Params.h"
 
 #include <glm/vec3.hpp>
 
@@ -13,24 +14,65 @@
 
 namespace marbler::ui {
 
-/// The tools of the editor's tool bar, in its order.
-enum class EditorTool { Pick, Drop, Spray, DropLine, DropRings, DropScatter, Line, Comb, Wave, Circle, Vortex, Stretch, Flow };
-inline constexpr int EditorToolCount = 13;
+/// The editor's own tools, what no genome tool is: the ink picker and the patterns of drops.
+enum class EditorOnly : std::uint8_t { Pick, DropLine, DropRings, DropScatter };
 
-/// What a drag does not set: the tool panel's values (ToolOptions.h).
+/// A tool of the editor's tool bar: a registry tool (its gesture, name, tooltip and shortcut
+/// come from its row in Params.h) or one of the editor's own. Converts from either.
+class EditorTool {
+public:
+    constexpr EditorTool(Tool tool)
+        : mRegistry(true)
+        , mTool(tool) {}
+    constexpr EditorTool(EditorOnly own)
+        : mOwn(own) {}
+    static const EditorTool Pick, DropLine, DropRings, DropScatter;
+
+    /// Whether it is a registry tool (else one of the editor's own).
+    constexpr bool inRegistry() const { return mRegistry; }
+    /// The registry tool; only where inRegistry().
+    constexpr Tool tool() const { return mTool; }
+    /// The editor's own tool; only where !inRegistry().
+    constexpr EditorOnly own() const { return mOwn; }
+    /// A number for an action's data: the registry tools' indices, then the editor's own.
+    constexpr int index() const { return mRegistry ? int(mTool) : ToolCount + int(mOwn); }
+    friend constexpr bool operator==(EditorTool a, EditorTool b) { return a.index() == b.index(); }
+
+private:
+    bool mRegistry = false;
+    Tool mTool = Tool::Drop;
+    EditorOnly mOwn = EditorOnly::Pick;
+};
+inline constexpr EditorTool EditorTool::Pick{EditorOnly::Pick};
+inline constexpr EditorTool EditorTool::DropLine{EditorOnly::DropLine};
+inline constexpr EditorTool EditorTool::DropRings{EditorOnly::DropRings};
+inline constexpr EditorTool EditorTool::DropScatter{EditorOnly::DropScatter};
+
+/// The tool bar, in its order: Pick, every registry tool with a gesture (the drop patterns right
+/// after the ink-laying ones). Whatever the dimension; see toolAvailable.
+std::vector<EditorTool> editorTools();
+
+/// What a drag does not set: the tool panel's values (ToolOptions.h). Those that are a genome
+/// parameter start as the registry's row says (ParamSpec::editorValue); the rest are the
+/// editor's own (spray, patterns, teeth, seed).
 struct ToolSettings {
-    int color = 0;          ///< palette index of the ink laid
-    double radius = 60;     ///< a clicked drop's radius (a drag sets it)
-    double alpha = 60;      ///< a circle's largest shift (its turn along the rim)
-    double spacing = 80, lambda = 24, wavelength = 250, core = 0; ///< comb, line, wave, circle, vortex
+    int color = 0;                                               ///< palette index of the ink laid
+    double radius = editorStart(Tool::Drop, ParamField::Radius); ///< a clicked drop's radius (a drag sets it)
+    double alpha =
+        editorStart(Tool::Circle, ParamField::Alpha); ///< a circle's largest shift (its turn along the rim)
+    double spacing = editorStart(Tool::Comb, ParamField::Spacing);       ///< comb
+    double lambda = editorStart(Tool::Line, ParamField::Lambda);         ///< line, comb, circle, vortex
+    double wavelength = editorStart(Tool::Wave, ParamField::Wavelength); ///< wave
+    double core = editorStart(Tool::Circle, ParamField::Core);           ///< circle, vortex
     double sprayRadius = 4; ///< a sprayed droplet's radius
     int sprayCount = 40;    ///< droplets a spray stroke lays
     double brush = 60;      ///< how far from the stroke droplets land
     int patternCount = 8;   ///< drops in a line, rings, scattered drops
     int teeth = 12;         ///< stretch: teeth across the design
-    double power = 2;       ///< stretch: tooth profile
-    double speed = 200, time = 1; ///< flow
-    int field = 0;          ///< flow: 0 cells, 1 cavity
+    double power = editorStart(Tool::Stretch, ParamField::Power); ///< stretch: tooth profile
+    double speed = editorStart(Tool::Flow, ParamField::Speed);    ///< flow
+    double time = editorStart(Tool::Flow, ParamField::Time);      ///< flow
+    int field = int(editorStart(Tool::Flow, ParamField::Field));  ///< flow: 0 cells, 1 cavity
     std::uint64_t seed = 1; ///< spray and scatter positions (the same seed, the same drops)
     friend bool operator==(const ToolSettings&, const ToolSettings&) = default;
 };
@@ -42,13 +84,19 @@ struct ToolSettings {
 std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, const glm::dvec3& press,
                                     const glm::dvec3& release, const Genome& design, int sliceAxis = 2);
 
-/// Whether the tool works on designs of this dimension (stretch and flow are flat only).
+/// Whether the tool works on designs of this dimension (stretch and flow are flat only) and has
+/// a gesture there.
 bool toolAvailable(EditorTool tool, int dimension);
+/// The kind of its gesture (the registry's; the drop patterns lay drops; Pick: None).
+EditorGesture gestureOf(EditorTool tool);
+/// Whether the tool panel gives the value of the parameter in `field` for this tool's gesture
+/// (the drag sets the others; the panel's editor-only rows are not parameters).
+bool panelSets(EditorTool tool, ParamField field);
 /// The genome tool the gesture makes (Pick: none; Drop for the drop patterns).
 Tool genomeTool(EditorTool tool);
 /// Whether the tool lays ink (its steps go to `initial`).
 bool laysInk(EditorTool tool);
-/// A short stable name, "drop-line", for object names and settings.
+/// A short stable name, a registry tool's JSON name or "drop-line", for object names and settings.
 std::string_view toolId(EditorTool tool);
 /// A drag shorter than this (design units) gives a stroke no direction: it makes nothing.
 inline constexpr double MinStrokeLength = 1.0;

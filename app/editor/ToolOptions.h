@@ -1,7 +1,7 @@
 #pragma once
 /// The tool panel: what a gesture does not set (the ink, a comb's spacing, a spray's brush...),
 /// showing only the rows the current tool uses. Also the tools' names, tooltips and shortcuts
-/// for the window's tool bar.
+/// for the window's tool bar: a registry tool's from its row (Params.h), the editor's own here.
 
 #include "editor/Gestures.h"
 
@@ -42,16 +42,18 @@ signals:
     void settingsChanged(const marbler::ui::ToolSettings& settings);
 
 private:
+    /// Whether a row shows for a tool (read from the registry through Gestures.h).
+    using Shows = std::function<bool(EditorTool)>;
     /// One row: a spin box bound to a field of the settings, shown for some tools.
     struct Row {
         QWidget* field = nullptr;
-        std::vector<EditorTool> tools;
+        Shows shows;
     };
-    void addRow(const QString& label, QWidget* field, std::vector<EditorTool> tools);
-    void addNumber(const char* name, const QString& label, const QString& tip, double ToolSettings::*member, double min,
-                   double max, const QString& suffix, std::vector<EditorTool> tools);
-    void addCount(const char* name, const QString& label, const QString& tip, int ToolSettings::*member, int min, int max,
-                  std::vector<EditorTool> tools);
+    void addRow(const QString& label, QWidget* field, Shows shows);
+    void addNumber(const char* name, const QString& label, const QString& tip, double ToolSettings::*member,
+                   double min, double max, const QString& suffix, Shows shows);
+    void addCount(const char* name, const QString& label, const QString& tip, int ToolSettings::*member,
+                  int min, int max, Shows shows);
     void refresh();
     void changed();
 
@@ -61,7 +63,7 @@ private:
     std::vector<Row> mRows;
     std::vector<std::function<void()>> mLoaders; ///< each row reads its value from mSettings
     ToolSettings mSettings;
-    EditorTool mTool = EditorTool::Drop;
+    EditorTool mTool = Tool::Drop;
     bool mLoading = false;
 };
 

@@ -11,6 +11,13 @@ namespace {
 
 using K = ParamKind;
 using F = ParamField;
+using G = EditorGesture;
+
+/// `spec` with the editor's own starting value (ParamSpec::editorDefault).
+constexpr ParamSpec startingAt(ParamSpec spec, double editorValue) {
+    spec.editorDefault = editorValue;
+    return spec;
+}
 
 // Shared rows. Mutation scales: positions and lengths as a fraction of the design's largest
 // side, angles and phases in degrees.
@@ -23,31 +30,31 @@ constexpr ParamSpec Angle{"angle", "Angle", F::Angle, K::Angle, "degrees", "dire
 constexpr ParamSpec Direction{"direction", "Direction", F::Direction, K::Direction, "", "direction of motion", AnyNumber, 0.0, 0.25};
 constexpr ParamSpec Normal{"normal", "Normal", F::Normal, K::Direction, "", "across the plane the tine sweeps", AnyNumber, 0.0, 0.25};
 constexpr ParamSpec Alpha{"alpha", "Shift", F::Alpha, K::Shift, "design units", "largest shift, at the tine", AnyNumber, 60.0, 0.03};
-constexpr ParamSpec Lambda{"lambda", "Sharpness", F::Lambda, K::Length, "design units", "sharpness: smaller concentrates the shift near the tine", PositiveNumber, 12.0, 0.01};
+constexpr ParamSpec Lambda = startingAt({"lambda", "Sharpness", F::Lambda, K::Length, "design units", "sharpness: smaller concentrates the shift near the tine", PositiveNumber, 12.0, 0.01}, 24.0);
 constexpr ParamSpec Spacing{"spacing", "Spacing", F::Spacing, K::Length, "design units", "distance between tines", PositiveNumber, 80.0, 0.02};
 constexpr ParamSpec Amplitude{"amplitude", "Amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02};
-constexpr ParamSpec Wavelength{"wavelength", "Wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05};
+constexpr ParamSpec Wavelength = startingAt({"wavelength", "Wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05}, 250.0);
 constexpr ParamSpec Phase{"phase", "Phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0};
 // In the order of WaveShape.
 constexpr std::array<std::string_view, 2> WaveShapes{"eggcrate", "ripple"};
 static_assert(WaveShapes.size() == static_cast<std::size_t>(WaveShape::Ripple) + 1);
 constexpr ParamSpec Shape{"shape", "Shape", F::Shape, K::Choice, "", "shape of the wave", AnyNumber, 0.0, 0.0, false, WaveShapes};
 constexpr ParamSpec AmplitudePair{"amplitude", "Amplitude", F::Amplitude, K::Shift, "design units", "largest shift of the wave", AnyNumber, 25.0, 0.02, true};
-constexpr ParamSpec WavelengthPair{"wavelength", "Wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05, true};
+constexpr ParamSpec WavelengthPair = startingAt({"wavelength", "Wavelength", F::Wavelength, K::Length, "design units", "length of one period", PositiveNumber, 300.0, 0.05, true}, 250.0);
 constexpr ParamSpec PhasePair{"phase", "Phase", F::Phase, K::Phase, "degrees", "phase of the wave", AnyNumber, 0.0, 45.0, true};
 
 // Version 2.
 constexpr ParamSpec Core{"core", "Core", F::Core, K::Length, "design units", "finite centre: 0 winds without end, larger keeps the swirl's eye clean", NonNegativeNumber, 0.0, 0.01, false, {}, 2, true};
 constexpr ParamSpec Teeth{"teeth", "Teeth", F::Teeth, K::Teeth, "design units", "tooth positions along the normal, from the origin, increasing", AnyNumber, 0.0, 0.01, false, {}, 2};
 constexpr ParamSpec ShiftRow{"shift", "Shift", F::Shift, K::Shift, "design units", "largest shift, midway between two teeth; its sign is the direction", AnyNumber, 40.0, 0.03, false, {}, 2};
-constexpr ParamSpec Power{"power", "Profile", F::Power, K::Number, "", "tooth profile |sin|^p: small is blunt, large is pointed", PositiveNumber, 0.5, 0.15, false, {}, 2};
+constexpr ParamSpec Power = startingAt({"power", "Profile", F::Power, K::Number, "", "tooth profile |sin|^p: small is blunt, large is pointed", PositiveNumber, 0.5, 0.15, false, {}, 2}, 2.0);
 // In the order of FlowField.
 constexpr std::array<std::string_view, 2> FlowFields{"cells", "cavity"};
 static_assert(FlowFields.size() == static_cast<std::size_t>(FlowField::Cavity) + 1);
 constexpr ParamSpec FieldRow{"field", "Field", F::Field, K::Choice, "", "the velocity field: a lattice of cells or one cavity", AnyNumber, 0.0, 0.0, false, FlowFields, 2};
 constexpr ParamSpec SizeRow{"size", "Size", F::Size, K::Extent, "design units", "size of a cell (cells) or of the box (cavity)", PositiveNumber, 250.0, 0.05, false, {}, 2};
-constexpr ParamSpec Speed{"speed", "Speed", F::Speed, K::Number, "design units per time unit", "speed of the flow; its sign is the sense of turning", AnyNumber, 40.0, 10.0, false, {}, 2};
-constexpr ParamSpec Time{"time", "Time", F::Time, K::Number, "time units", "how long the flow runs", PositiveNumber, 2.0, 0.3, false, {}, 2};
+constexpr ParamSpec Speed = startingAt({"speed", "Speed", F::Speed, K::Number, "design units per time unit", "speed of the flow; its sign is the sense of turning", AnyNumber, 40.0, 10.0, false, {}, 2}, 200.0);
+constexpr ParamSpec Time = startingAt({"time", "Time", F::Time, K::Number, "time units", "how long the flow runs", PositiveNumber, 2.0, 0.3, false, {}, 2}, 1.0);
 constexpr ParamSpec Steps{"steps", "Steps", F::Steps, K::Count, "", "implicit midpoint steps (at least 32 |speed| time max(size) / min(size)^2)", ParamRange{1.0, double(MaxFlowSteps)}, 32.0, 0.0, false, {}, 2};
 
 constexpr std::array Ink{Center, Radius, ColorRow};
@@ -67,21 +74,83 @@ constexpr std::array Flow2{FieldRow, Origin, Angle, SizeRow, Speed, Time, Steps}
 
 using SF = ShaderForm;
 
-/// The registry, in the order of enum Tool.
+/// The registry, in the order of enum Tool. The editor's words stay as its tool bar has always
+/// shown them; cylinder and sphere have no gesture (made in the step form only).
 constexpr std::array<ToolSpec, ToolCount> Tools{{
-    // tool, JSON name, in 2D, in 3D, lays ink, moves ink, shader form in 2D and 3D, parameters in 2D and 3D
-    {Tool::Drop, "drop", true, true, true, true, SF::PushArea, SF::PushVolume, Ink, Ink},
-    {Tool::Spray, "spray", true, true, true, false, SF::PushArea, SF::PushArea, Ink, Ink},
-    {Tool::Cylinder, "cylinder", false, true, true, true, SF::PushArea, SF::PushArea, {}, Cylinder3},
-    {Tool::Line, "line", true, true, false, true, SF::Shift, SF::Shift, Line2, Line3},
-    {Tool::Comb, "comb", true, true, false, true, SF::Shift, SF::Shift, Comb2, Comb3},
-    {Tool::Wave, "wave", true, true, false, true, SF::WaveShift, SF::WaveShift, Wave2, Wave3},
-    {Tool::Circle, "circle", true, true, false, true, SF::Turn, SF::Turn, Circle2, Circle3},
-    {Tool::Sphere, "sphere", false, true, false, true, SF::Turn, SF::Turn, {}, Circle3},
-    {Tool::Vortex, "vortex", true, true, false, true, SF::Turn, SF::Turn, Vortex2, Vortex3},
-    {Tool::Stretch, "stretch", true, false, false, true, SF::Stretch, SF::Stretch, Stretch2, {}, 2},
-    {Tool::Flow, "flow", true, false, false, true, SF::Flow, SF::Flow, Flow2, {}, 2},
+    {.tool = Tool::Drop, .name = "drop", .in2D = true, .in3D = true, .laysInk = true, .movesInk = true,
+     .form2D = SF::PushArea, .form3D = SF::PushVolume, .params2D = Ink, .params3D = Ink,
+     .editor = {.gesture = G::Drop,
+                .name = "Drop",
+                .tooltip = "Click to drop ink of the current colour; drag to set its radius. A drop in a drop "
+                           "pushes the older ink into a ring",
+                .shortcut = 'D'}},
+    {.tool = Tool::Spray, .name = "spray", .in2D = true, .in3D = true, .laysInk = true, .movesInk = false,
+     .form2D = SF::PushArea, .form3D = SF::PushArea, .params2D = Ink, .params3D = Ink,
+     .editor = {.gesture = G::Spray,
+                .name = "Spray",
+                .tooltip = "Drag a brush that sprinkles small droplets along its path",
+                .shortcut = 'S'}},
+    {.tool = Tool::Cylinder, .name = "cylinder", .in2D = false, .in3D = true, .laysInk = true, .movesInk = true,
+     .form2D = SF::PushArea, .form3D = SF::PushArea, .params2D = {}, .params3D = Cylinder3,
+     .editor = {}}, // no gesture: made in the step form only
+    {.tool = Tool::Line, .name = "line", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::Shift, .form3D = SF::Shift, .params2D = Line2, .params3D = Line3,
+     .editor = {.gesture = G::Stroke,
+                .name = "Line",
+                .tooltip = "Drag a stylus through the ink: the drag's direction and length",
+                .shortcut = 'N'}},
+    {.tool = Tool::Comb, .name = "comb", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::Shift, .form3D = SF::Shift, .params2D = Comb2, .params3D = Comb3,
+     .editor = {.gesture = G::Stroke,
+                .name = "Comb",
+                .tooltip = "Drag a comb through the ink: the drag's direction and length",
+                .shortcut = 'C'}},
+    {.tool = Tool::Wave, .name = "wave", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::WaveShift, .form3D = SF::WaveShift, .params2D = Wave2, .params3D = Wave3,
+     .editor = {.gesture = G::Wave,
+                .name = "Wave",
+                .tooltip = "Drag a wavy comb: the drag gives its direction and amplitude",
+                .shortcut = 'W'}},
+    {.tool = Tool::Circle, .name = "circle", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = Circle2, .params3D = Circle3,
+     .editor = {.gesture = G::Ring,
+                .name = "Circle",
+                .tooltip = "Drag from the centre: a circular stroke of that radius",
+                .shortcut = 'O'}},
+    {.tool = Tool::Sphere, .name = "sphere", .in2D = false, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = {}, .params3D = Circle3,
+     .editor = {}}, // no gesture: made in the step form only
+    {.tool = Tool::Vortex, .name = "vortex", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = Vortex2, .params3D = Vortex3,
+     .editor = {.gesture = G::Swirl,
+                .name = "Vortex",
+                .tooltip = "Drag from the centre: a swirl, the drag's length its strength",
+                .shortcut = 'V'}},
+    {.tool = Tool::Stretch, .name = "stretch", .in2D = true, .in3D = false, .laysInk = false, .movesInk = true,
+     .form2D = SF::Stretch, .form3D = SF::Stretch, .params2D = Stretch2, .params3D = {}, .version = 2,
+     .editor = {.gesture = G::Teeth,
+                .name = "Stretch",
+                .tooltip = "Drag to stretch the ink between teeth across the design",
+                .shortcut = 'T'}},
+    {.tool = Tool::Flow, .name = "flow", .in2D = true, .in3D = false, .laysInk = false, .movesInk = true,
+     .form2D = SF::Flow, .form3D = SF::Flow, .params2D = Flow2, .params3D = {}, .version = 2,
+     .editor = {.gesture = G::Cell,
+                .name = "Flow",
+                .tooltip = "Drag out a cell of a steady flow (cells or one cavity)",
+                .shortcut = 'F'}},
 }};
+
+/// A tool on the editor's tool bar has a name, a tooltip and a key; one without a gesture has none.
+constexpr bool editorRowsComplete() {
+    for (const ToolSpec& tool : Tools) {
+        const bool offered = tool.editor.gesture != G::None;
+        if (offered != !tool.editor.name.empty() || offered != !tool.editor.tooltip.empty()
+            || offered != (tool.editor.shortcut >= 'A' && tool.editor.shortcut <= 'Z'))
+            return false;
+    }
+    return true;
+}
+static_assert(editorRowsComplete(), "an editor gesture comes with a name, a tooltip and a capital-letter shortcut");
 
 constexpr bool inEnumOrder() {
     for (std::size_t i = 0; i < Tools.size(); ++i)
@@ -127,8 +196,12 @@ glm::dvec3* vectorField(const ParamSpec& spec, Operation& op) {
     case F::Axis: return &op.axis;
     case F::Direction: return &op.direction;
     case F::Normal: return &op.normal;
-    default: return nullptr;
+    case F::Angle: case F::Radius: case F::Alpha: case F::Lambda: case F::Spacing: case F::Amplitude:
+    case F::Wavelength: case F::Phase: case F::Shape: case F::Color: case F::Core: case F::Teeth:
+    case F::Shift: case F::Power: case F::Field: case F::Size: case F::Speed: case F::Time: case F::Steps:
+        return nullptr;
     }
+    return nullptr;
 }
 
 glm::dvec2* pairField(const ParamSpec& spec, Operation& op) {
@@ -136,8 +209,12 @@ glm::dvec2* pairField(const ParamSpec& spec, Operation& op) {
     case F::Amplitude: return &op.amplitude;
     case F::Wavelength: return &op.wavelength;
     case F::Phase: return &op.phase;
-    default: return nullptr;
+    case F::Center: case F::Axis: case F::Direction: case F::Normal: case F::Angle: case F::Radius:
+    case F::Alpha: case F::Lambda: case F::Spacing: case F::Shape: case F::Color: case F::Core: case F::Teeth:
+    case F::Shift: case F::Power: case F::Field: case F::Size: case F::Speed: case F::Time: case F::Steps:
+        return nullptr;
     }
+    return nullptr;
 }
 
 double* scalarField(const ParamSpec& spec, Operation& op) {
@@ -155,8 +232,11 @@ double* scalarField(const ParamSpec& spec, Operation& op) {
     case F::Amplitude: return &op.amplitude[0];
     case F::Wavelength: return &op.wavelength[0];
     case F::Phase: return &op.phase[0];
-    default: return nullptr;
+    case F::Center: case F::Axis: case F::Direction: case F::Normal: case F::Shape: case F::Color:
+    case F::Teeth: case F::Field: case F::Size: case F::Steps:
+        return nullptr;
     }
+    return nullptr;
 }
 
 } // namespace
@@ -191,6 +271,12 @@ const ParamSpec* findParam(Tool tool, ParamField field) {
         for (const ParamSpec& p : params)
             if (p.field == field) return &p;
     return nullptr;
+}
+
+double editorStart(Tool tool, ParamField field) {
+    const ParamSpec* spec = findParam(tool, field);
+    assert(spec && "the tool has a parameter in that field");
+    return spec ? spec->editorValue() : 0.0;
 }
 
 bool allowedInInitial(Tool tool, int dimension) {

@@ -18,10 +18,10 @@ using namespace marbler::ui;
 
 namespace section_tools_test {
 
-constexpr EditorTool SectionTools[] = {EditorTool::Drop,      EditorTool::Spray,       EditorTool::DropLine,
-                                       EditorTool::DropRings, EditorTool::DropScatter, EditorTool::Line,
-                                       EditorTool::Comb,      EditorTool::Wave,        EditorTool::Circle,
-                                       EditorTool::Vortex,    EditorTool::Stretch,     EditorTool::Flow};
+constexpr EditorTool SectionTools[] = {
+    Tool::Drop,    Tool::Spray, EditorTool::DropLine, EditorTool::DropRings, EditorTool::DropScatter,
+    Tool::Line,    Tool::Comb,  Tool::Wave,           Tool::Circle,          Tool::Vortex,
+    Tool::Stretch, Tool::Flow};
 
 /// A solid of concentric shells in two inks about its centre: any section through the middle
 /// shows rings, which any real deformation bends and a translation only moves.
@@ -124,14 +124,14 @@ TEST(SectionToolsTest, StrokesLieInTheSectionPlaneAcrossTheDrag) {
         const glm::dvec3 along = glm::normalize(release - press);
         glm::dvec3 n(0.0);
         n[axis] = 1.0;
-        for (EditorTool tool : {EditorTool::Line, EditorTool::Comb}) {
+        for (EditorTool tool : {Tool::Line, Tool::Comb}) {
             const auto ops = gestureSteps(tool, settings, press, release, g, axis);
             ASSERT_EQ(ops.size(), 1u);
             EXPECT_NEAR(glm::length(ops[0].direction - along), 0.0, 1e-12) << toolId(tool);
             EXPECT_NEAR(glm::dot(ops[0].normal, n), 0.0, 1e-12) << toolId(tool) << ": normal in the plane";
             EXPECT_NEAR(glm::dot(ops[0].normal, along), 0.0, 1e-12) << toolId(tool) << ": across the drag";
         }
-        const auto wave = gestureSteps(EditorTool::Wave, settings, press, release, g, axis);
+        const auto wave = gestureSteps(Tool::Wave, settings, press, release, g, axis);
         ASSERT_EQ(wave.size(), 1u);
         EXPECT_NEAR(glm::length(wave[0].normal - along), 0.0, 1e-12) << "the wave shifts along the drag";
         EXPECT_NEAR(glm::dot(wave[0].direction, n), 0.0, 1e-12) << "and varies across it, in the plane";

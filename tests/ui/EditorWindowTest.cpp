@@ -96,7 +96,7 @@ TEST_F(EditorWindowTest, OpensFromTheWorkbenchAndTheLargeView) {
 TEST_F(EditorWindowTest, AClickDropsInkAndUndoRedoAreExact) {
     EditorWindow* editor = open(blankDesign(2));
     const Genome before = editor->document()->design();
-    editor->setTool(EditorTool::Drop);
+    editor->setTool(Tool::Drop);
     EditorCanvas* canvas = editor->canvas();
     MARBLER_WAIT(canvas->view().scale() > 0.0, 5000);
     drag(canvas, {400.0, 600.0}, {400.0, 600.0});
@@ -163,7 +163,7 @@ TEST_F(EditorWindowTest, SaveWritesTheDesignAndTheQuestionGuardsUnsavedChanges) 
     const QString file = dir.filePath(QStringLiteral("mine.marble.json"));
     setSaveFileAsker([&](QWidget*, const QString&, const QString&, const QString&) { return file; });
     EditorWindow* editor = open(blankDesign(2));
-    editor->setTool(EditorTool::Drop);
+    editor->setTool(Tool::Drop);
     MARBLER_WAIT(editor->canvas()->view().scale() > 0.0, 5000);
     drag(editor->canvas(), {500.0, 500.0}, {560.0, 500.0});
     ASSERT_TRUE(editor->document()->isModified());
@@ -281,7 +281,7 @@ TEST_F(EditorWindowTest, APickedInkIsTheInkTheToolsLay) {
     EditorCanvas* canvas = editor->canvas();
     MARBLER_WAIT(canvas->view().scale() > 0.0, 5000);
     // A drop of ink 1, then ink 2 chosen in the palette, then the drop picked: ink 1 again.
-    editor->setTool(EditorTool::Drop);
+    editor->setTool(Tool::Drop);
     drag(canvas, {500.0, 400.0}, {500.0, 400.0});
     ASSERT_EQ(editor->document()->stepCount(), 1u);
     ASSERT_EQ(editor->document()->step(0).color, 0);
@@ -294,7 +294,7 @@ TEST_F(EditorWindowTest, APickedInkIsTheInkTheToolsLay) {
     drag(canvas, {500.0, 400.0 + inside}, {500.0, 400.0 + inside});
     EXPECT_EQ(canvas->toolSettings().color, 0) << "the picked ink is the one the tools lay next; "
                                                 << editor->statusBar()->currentMessage().toStdString();
-    editor->setTool(EditorTool::Drop);
+    editor->setTool(Tool::Drop);
     drag(canvas, {200.0, 200.0}, {200.0, 200.0});
     ASSERT_EQ(editor->document()->stepCount(), 2u);
     EXPECT_EQ(editor->document()->step(1).color, 0);
@@ -327,7 +327,7 @@ TEST_F(EditorWindowTest, ASolidIsEditedOnItsCrossSectionBesideItsObject) {
     EditorWindow* editor = open(blankDesign(3));
     ASSERT_NE(editor->findChild<QWidget*>(QStringLiteral("objectView")), nullptr);
     editor->setSlice(Slice{2, 300.0});
-    editor->setTool(EditorTool::Drop);
+    editor->setTool(Tool::Drop);
     MARBLER_WAIT(editor->canvas()->view().scale() > 0.0, 5000);
     drag(editor->canvas(), {250.0, 700.0}, {250.0, 700.0});
     ASSERT_EQ(editor->document()->stepCount(), 1u);

@@ -367,7 +367,7 @@ TEST_F(EditorWorkTest, NewInkLandsAfterTheSelectedStepOrAtTheTimelinesPointAndIs
     EditorDocument* doc = editor->document();
     EditorCanvas* canvas = editor->canvas();
     MARBLER_WAIT(canvas->view().scale() > 0.0, 5000);
-    editor->setTool(EditorTool::Drop);
+    editor->setTool(Tool::Drop);
 
     // The last step (the comb) selected: the drop goes on top of it, at the click.
     editor->selectStep(2);

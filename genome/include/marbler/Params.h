@@ -1,14 +1,16 @@
 #pragma once
 /// The registry of tools: one entry per tool (its name, the dimensions it exists in, whether it
 /// lays ink, the shader form it is packed into, its parameters with kind, unit, range, default,
-/// mutation scale and enumerated choices). The loader and validator, the saver, the random
-/// generator, the genetic operators, the scalar maps, the vector kernel and the shader packing
-/// read it (and later the editor's widgets); the tests iterate it, so a tool added here without
-/// its maps, kernel, shader and conformance cases fails the build or the tests.
+/// mutation scale and enumerated choices, and how the editor offers it: gesture, name, tooltip,
+/// shortcut, the tool panel's starting values). The loader and validator, the saver, the random
+/// generator, the genetic operators, the scalar maps, the vector kernel, the shader packing and
+/// the editor read it; the tests iterate it, so a tool added here without its maps, kernel,
+/// shader, conformance cases or editor gesture fails the build or the tests.
 
 #include "marbler/Genome.h"
 
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -80,6 +82,12 @@ struct ParamSpec {
     int version = 1;
     /// May be left out of a file (then it has `defaultValue`); written only when it differs.
     bool optional = false;
+    /// The value the editor's tool panel starts with, where it differs on purpose from
+    /// `defaultValue` (a drawn stroke starts broader, a dragged flow faster); none: the default.
+    std::optional<double> editorDefault = {};
+
+    /// What the editor's tool panel starts with: `editorDefault`, else `defaultValue`.
+    constexpr double editorValue() const { return editorDefault.value_or(defaultValue); }
 
     /// The index of `value` among the choices; -1 when it is none of them.
     int choiceIndex(std::string_view value) const;
@@ -99,6 +107,29 @@ enum class ShaderForm : std::uint8_t {
     Flow = 6,       ///< implicit midpoint steps through a stream function's velocity (flow)
 };
 
+/// What a click or a drag on the editor's canvas makes of a tool. The registry names each
+/// tool's kind; the editor (app/editor/Gestures.cpp) holds each kind's geometry once, so a new
+/// tool of a known kind needs nothing in the editor's code.
+enum class EditorGesture : std::uint8_t {
+    None,   ///< not on the editor's tool bar: its steps are made in the step form only
+    Drop,   ///< ink at the press, the drag's length its radius (a click: the panel's)
+    Spray,  ///< droplets of the panel's size strewn within a brush of the drag
+    Stroke, ///< a stroke along the drag, its length the largest shift (line, comb)
+    Wave,   ///< a wavy stroke along the drag, its length the amplitude
+    Ring,   ///< a turn about the press, the drag's length its radius (circle)
+    Swirl,  ///< a swirl about the press, the drag's length its strength (vortex)
+    Teeth,  ///< a stretch along the drag between teeth across the design
+    Cell,   ///< the drag spans one cell (or the cavity) of a steady flow
+};
+
+/// How the editor offers a tool: its gesture and its tool bar button's words and key.
+struct EditorSpec {
+    EditorGesture gesture = EditorGesture::None;
+    std::string_view name;    ///< on its button and in menus ("Comb")
+    std::string_view tooltip; ///< what a click or a drag does
+    char shortcut = 0;        ///< its key on the tool bar, a capital letter
+};
+
 /// One entry of the registry.
 struct ToolSpec {
     Tool tool;
@@ -113,6 +144,8 @@ struct ToolSpec {
     std::span<const ParamSpec> params3D;
     /// The format version that introduced the tool.
     int version = 1;
+    /// The editor's gesture, name, tooltip and shortcut.
+    EditorSpec editor = {};
 
     std::span<const ParamSpec> params(int dimension) const { return dimension == 3 ? params3D : params2D; }
     bool available(int dimension) const { return dimension == 3 ? in3D : in2D; }
@@ -127,6 +160,9 @@ std::span<const ToolSpec> allTools();
 const ToolSpec* findTool(std::string_view name);
 /// The parameter of `tool` held in `field` (its 2D row, else its 3D one); nullptr when it has none.
 const ParamSpec* findParam(Tool tool, ParamField field);
+/// What the editor's tool panel starts with for the parameter of `tool` held in `field`
+/// (ParamSpec::editorValue); the tool must have one.
+double editorStart(Tool tool, ParamField field);
 /// Whether a tool may appear in `initial`: the ink-laying tools of that dimension.
 bool allowedInInitial(Tool tool, int dimension);
 /// The tools `initial` may hold, for messages: "drop, spray and, in 3D, cylinder".
