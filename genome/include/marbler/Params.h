@@ -2,9 +2,9 @@
 /// The registry of tools: one entry per tool (its name, the dimensions it exists in, whether it
 /// lays ink, the shader form it is packed into, its parameters with kind, unit, range, default,
 /// mutation scale and enumerated choices). The loader and validator, the saver, the random
-/// generator, the genetic operators, the scalar maps, the vector kernel and the shader packing
-/// read it (and later the editor's widgets); the tests iterate it, so a tool added here without
-/// its maps, kernel, shader and conformance cases fails the build or the tests.
+/// generator, the genetic operators, the scalar maps, the vector kernel, the shader packing and
+/// the editor's parameter form and tool panel read it; the tests iterate it, so a tool added here
+/// without its maps, kernel, shader and conformance cases fails the build or the tests.
 
 #include "marbler/Genome.h"
 
