@@ -15,7 +15,6 @@ namespace marbler::ui {
 
 /// The tools of the editor's tool bar, in its order.
 enum class EditorTool { Pick, Drop, Spray, DropLine, DropRings, DropScatter, Line, Comb, Wave, Circle, Vortex, Stretch, Flow };
-inline constexpr int EditorToolCount = 13;
 
 /// What a drag does not set: the tool panel's values (ToolOptions.h).
 struct ToolSettings {
