@@ -7,10 +7,10 @@
 // P - C only, so the shift is exact and keeps float precision where the samples are.
 //
 // Speed: a software rasteriser (llvmpipe) runs both sides of every branch whose condition varies
-// between lanes or that it cannot prove uniform, so a switch over nine tools costs nine tools per
-// operation. Instead every operation runs one branch-free body: the host packs each tool into the
-// coefficients of three shared forms (radial push, translation along a direction, turn about an
-// axis) and the body picks the form's result by the operation's class. The shared pieces (the
+// between lanes or that it cannot prove uniform, so a switch over the tools would cost every tool
+// per operation. Instead every operation runs one branch-free body: the host packs each tool into
+// the coefficients of three shared forms (radial push, translation along a direction, turn about
+// an axis) and the body picks the form's result by the operation's class. The shared pieces (the
 // distance to the centre or axis, the shift alpha lambda / (d + lambda), two sines that are the
 // wave's two terms or the turn's sine and cosine) are computed once per operation.
 //

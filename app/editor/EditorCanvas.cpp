@@ -184,7 +184,6 @@ void EditorCanvas::onRendered(std::uint64_t key, const QImage& image, bool final
 void EditorCanvas::changeView() {
     update(); // the image so far, moved and scaled at once, until the new render comes
     rerender();
-    emit viewChanged();
 }
 
 void EditorCanvas::fitView() {
@@ -348,7 +347,6 @@ void EditorCanvas::mouseMoveEvent(QMouseEvent* event) {
         mView.panBy(delta * devicePixelRatioF());
         update();
         requestRender(mDesign, true);
-        emit viewChanged();
         return;
     case Drag::Handle: {
         // The step may have gone under the drag (an undo, a delete, the timeline playing).

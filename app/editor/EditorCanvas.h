@@ -44,7 +44,6 @@ public:
     /// Shows the handles of that step of the drawn design (its centre or origin, its direction,
     /// its radius); none with nullopt.
     void setHandlesFor(std::optional<std::size_t> renderedIndex);
-    std::optional<std::size_t> handlesFor() const { return mHandles; }
     /// Solids: the cross-section shown, and the plane clicks land on.
     void setSlice(const Slice& slice);
     Slice slice() const { return mSlice; }
@@ -91,8 +90,6 @@ signals:
     /// The Pick tool clicked: the palette index seen there (-1: the bath) and the step that
     /// laid it.
     void inkPicked(int color, std::optional<std::size_t> renderedIndex);
-    /// The view was zoomed or panned.
-    void viewChanged();
 
 protected:
     void paintEvent(QPaintEvent* event) override;

@@ -70,8 +70,6 @@ public:
 
     EditorDocument* document() const { return mDocument; }
     EditorCanvas* canvas() const { return mCanvas; }
-    /// The second canvas shown while the timeline compares two states.
-    EditorCanvas* compareCanvas() const { return mCompare; }
     StepList* stepList() const { return mSteps; }
     ParamForm* paramForm() const { return mForm; }
     PaletteEditor* paletteEditor() const { return mPalette; }

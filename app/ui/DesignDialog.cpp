@@ -332,9 +332,6 @@ void ExportSettingsDialog::setFormat(const QString& extension, int bitsPerSample
 }
 
 double ExportSettingsDialog::tolerance() const { return mTolerance ? mTolerance->value() : 1.0; }
-void ExportSettingsDialog::setTolerance(double tolerance) {
-    if (mTolerance) mTolerance->setValue(tolerance);
-}
 bool ExportSettingsDialog::mirrorRepeatTile() const { return mRepeat && mRepeat->isChecked() && !isSvg(); }
 void ExportSettingsDialog::setMirrorRepeatTile(bool on) {
     if (mRepeat) mRepeat->setChecked(on);

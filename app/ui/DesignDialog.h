@@ -202,7 +202,6 @@ public:
     void setFormat(const QString& extension, int bitsPerSample = 8);
     /// The SVG's tolerance in design units (the format ".svg"; `marbler svg --tolerance`).
     double tolerance() const;
-    void setTolerance(double tolerance);
     /// Whether a raster is exported as its mirror repeat tile (flat designs; twice the size).
     bool mirrorRepeatTile() const;
     void setMirrorRepeatTile(bool on);

@@ -90,8 +90,6 @@ public:
     void setSelected(int index, bool selected);
     void clearSelection();
 
-    /// Whether an operator can run with the current selection (parent count, dimensions).
-    bool canApply(GeneticOperator op) const { return whyNot(op).isEmpty(); }
     /// Why an operator cannot run with the current selection, in the window's words and with
     /// what to do about it ("Swap needs exactly 2 parents: click two designs"); empty when it can.
     /// The disabled operators' tooltips and the status bar say this.

@@ -1,5 +1,5 @@
 #pragma once
-/// Renders designs for the window (and later the editor) off the GUI thread. One worker thread
+/// Renders designs for the window and the editor off the GUI thread. One worker thread
 /// renders either with the GL shaders or with the CPU kernel on every core, as
 /// gl::chooseBackend decides from the GL probe and the user's preference (a GPU renders on GL; a
 /// software rasteriser such as llvmpipe, or no GL, on the CPU). On the CPU, solid designs are

@@ -30,7 +30,6 @@ public:
 
     QTreeWidget* list() const { return mList; }
     QPushButton* resumeButton() const { return mResume; }
-    QPushButton* renameButton() const { return mRename; }
     QPushButton* deleteButton() const { return mDelete; }
     QPushButton* undoDeleteButton() const { return mUndoDelete; }
     QLabel* messageLabel() const { return mMessage; }

@@ -207,9 +207,8 @@ public:
     /// says it; empty while the service is still choosing.
     QString rendererDescription() const;
 
-    /// Help ▸ Marbler guide (F1), About Marbler, About Qt.
+    /// Help ▸ Marbler guide (F1) and About Qt.
     QAction* guideAction() const { return mGuideAction; }
-    QAction* aboutAction() const { return mAboutAction; }
     QAction* aboutQtAction() const { return mAboutQtAction; }
     /// Shows the guide (not modal, one at a time, deleted on close) and returns it.
     QDialog* showGuide();

@@ -81,9 +81,9 @@ glm::dvec3 push(const PreparedOp& op, const glm::dvec3& p, double sign, bool acr
     double factor;
     if (op.form == ShaderForm::PushVolume) {
         double len3 = len2 * std::sqrt(len2);
-        factor = std::cbrt(std::max(0.0, 1.0 + sign * op.r2 / len3));
+        factor = std::cbrt(std::max(0.0, 1.0 + sign * op.rPow / len3));
     } else {
-        factor = std::sqrt(std::max(0.0, 1.0 + sign * op.r2 / len2));
+        factor = std::sqrt(std::max(0.0, 1.0 + sign * op.rPow / len2));
     }
     return p + rel * (factor - 1.0);
 }
@@ -171,9 +171,9 @@ PreparedOp prepare(const Operation& op, int dimension) {
     p.form = spec.form(dimension);
     if (spec.laysInk) p.color = op.color;
     if (p.form == ShaderForm::PushVolume)
-        p.r2 = op.radius * op.radius * op.radius;
+        p.rPow = op.radius * op.radius * op.radius;
     else
-        p.r2 = op.radius * op.radius;
+        p.rPow = op.radius * op.radius;
     if (dimension == 2) {
         double a = op.angle * DegToRad;
         p.m = {std::cos(a), std::sin(a), 0.0};

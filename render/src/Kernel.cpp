@@ -204,7 +204,7 @@ template <typename T>
     double* __restrict x = t.x;
     double* __restrict y = t.y;
     std::int64_t* __restrict flag = t.flag;
-    const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r, r2 = op.r2;
+    const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r, r2 = op.rPow;
     std::int64_t inside = 0;
 MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
@@ -362,11 +362,12 @@ template <int Dim>
 template <int Dim>
 __attribute__((target("avx512f,fma"))) int dropAvx512(const PreparedOp& op, Tile& t, int n, int* colors) {
     const __m512d cx = _mm512_set1_pd(op.c.x), cy = _mm512_set1_pd(op.c.y), cz = _mm512_set1_pd(op.c.z);
-    const __m512d rr = _mm512_set1_pd(op.r * op.r), r2 = _mm512_set1_pd(op.r2);
+    const __m512d rr = _mm512_set1_pd(op.r * op.r), r2 = _mm512_set1_pd(op.rPow);
     int i = 0, j = 0;
-    for (; i + 8 <= n; i += 8) dropStep<Dim>(t, i, j, __mmask8(0xFF), cx, cy, cz, rr, r2, op.r2, op.color, colors);
+    for (; i + 8 <= n; i += 8)
+        dropStep<Dim>(t, i, j, __mmask8(0xFF), cx, cy, cz, rr, r2, op.rPow, op.color, colors);
     if (i < n)
-        dropStep<Dim>(t, i, j, __mmask8((1u << (n - i)) - 1u), cx, cy, cz, rr, r2, op.r2, op.color, colors);
+        dropStep<Dim>(t, i, j, __mmask8((1u << (n - i)) - 1u), cx, cy, cz, rr, r2, op.rPow, op.color, colors);
     return j;
 }
 
@@ -500,7 +501,7 @@ enum class Push3 {
     double* __restrict y = t.y;
     double* __restrict z = t.z;
     std::int64_t* __restrict flag = t.flag;
-    const double cx = op.c.x, cy = op.c.y, cz = op.c.z, rr = op.r * op.r, r2 = op.r2;
+    const double cx = op.c.x, cy = op.c.y, cz = op.c.z, rr = op.r * op.r, r2 = op.rPow;
     const double ax = op.a.x, ay = op.a.y, az = op.a.z;
     std::int64_t inside = 0;
     if (push == Push3::Column) {
@@ -875,7 +876,7 @@ template <int Dim>
     double* __restrict cg = t.g;
     double* __restrict cb = t.b;
     std::int64_t* __restrict flag = t.flag;
-    const double cx = op.c.x, cy = op.c.y, cz = op.c.z, r = op.r, r2 = op.r2;
+    const double cx = op.c.x, cy = op.c.y, cz = op.c.z, r = op.r, r2 = op.rPow;
     const double ax = op.a.x, ay = op.a.y, az = op.a.z;
     const double inkR = ink.x, inkG = ink.y, inkB = ink.z;
     const bool column = op.tool == Tool::Cylinder, volume = Dim == 3 && op.tool == Tool::Drop;

@@ -524,3 +524,65 @@ TEST_F(EditorWorkTest, TheEditorFitsALaptopScreenAndItsCanvasStaysPut) {
         editor->close();
     }
 }
+
+// ---- Issue 22 (docs): the README's editor section names only keys the editor has.
+// Each key the README gives for the editor, with the words it is given in: the README must say
+// it (so the guide stays current) and an action of the window must have it (so the README is
+// true).
+TEST_F(EditorWorkTest, EveryKeyTheReadmeGivesTheEditorHasAnAction) {
+    QFile readme(QStringLiteral(MARBLER_TEST_DATA "/../../README.md"));
+    ASSERT_TRUE(readme.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QString all = QString::fromUtf8(readme.readAll());
+    const qsizetype start = all.indexOf(QStringLiteral("\n## The editor\n"));
+    ASSERT_GE(start, 0) << "the README has a section \"The editor\"";
+    const qsizetype end = all.indexOf(QStringLiteral("\n## "), start + 1);
+    const QString section = all.mid(start, end < 0 ? -1 : end - start).simplified();
+
+    struct Key {
+        const char* words;
+        const char* keys;
+    };
+    const Key keys[] = {
+        {"**Pick** (I)", "I"},
+        {"**Drop** (D)", "D"},
+        {"**Spray** (S)", "S"},
+        {"**Line of drops** (L)", "L"},
+        {"**Rings** (R)", "R"},
+        {"**Scatter** (A,", "A"},
+        {"**Line** (N)", "N"},
+        {"**Comb** (C)", "C"},
+        {"**Wave** (W)", "W"},
+        {"**Circle** (O)", "O"},
+        {"**Vortex** (V)", "V"},
+        {"**Stretch** (T)", "T"},
+        {"**Flow** (F)", "F"},
+        {"0 fits", "0"},
+        {"plainly (Ctrl+Shift+R)", "Ctrl+Shift+R"},
+        {"mirror repeat tile (Ctrl+Shift+M)", "Ctrl+Shift+M"},
+        {"Ctrl+D duplicates", "Ctrl+D"},
+        {"Del deletes", "Del"},
+        {"M mutes", "M"},
+        {"History (Ctrl+Z, Ctrl+Shift+Z", "Ctrl+Z"},
+        {"History (Ctrl+Z, Ctrl+Shift+Z", "Ctrl+Shift+Z"},
+        {"growing smoothly (P)", "P"},
+        {"([ and ] step it)", "["},
+        {"([ and ] step it)", "]"},
+        {"Ctrl+K compares two states", "Ctrl+K"},
+        {"Export animation (Ctrl+Shift+E)", "Ctrl+Shift+E"},
+        {"Save (Ctrl+S)", "Ctrl+S"},
+        {"Save As (Ctrl+Shift+S", "Ctrl+Shift+S"},
+        {"Send to grid (Ctrl+G)", "Ctrl+G"},
+        {"Editor guide (F1)", "F1"},
+    };
+    EditorWindow* editor = open(combed());
+    const auto actions = editor->findChildren<QAction*>();
+    for (const Key& key : keys) {
+        EXPECT_TRUE(section.contains(QString::fromUtf8(key.words)))
+            << "the README's editor section says \"" << key.words << "\"";
+        const QKeySequence sequence(QString::fromUtf8(key.keys));
+        const bool has = std::any_of(actions.begin(), actions.end(),
+                                     [&](QAction* a) { return a->shortcuts().contains(sequence); });
+        EXPECT_TRUE(has) << "an action of the editor has the key " << key.keys;
+    }
+    editor->close();
+}

@@ -29,7 +29,7 @@ struct PreparedOp {
     glm::dvec3 v{0, 0, 1};  ///< wave 3D second axis v = w x u
     glm::dvec3 a{0, 0, 1};  ///< rotation or column axis (unit)
     double r = 0.0;         ///< radius
-    double r2 = 0.0;        ///< r^2 (2D drop, cylinder), r^3 for 3D drops
+    double rPow = 0.0;      ///< r^d of the push: r^2 (2D drop, cylinder), r^3 (3D drop)
     double alphaLambda = 0; ///< alpha * lambda
     double lambda = 1.0;
     double spacing = 1.0;

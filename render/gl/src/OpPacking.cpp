@@ -88,13 +88,13 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
         switch (op.tool) {
         case Tool::Drop:
             k.radius = op.r;
-            k.p5[0] = op.r2;
+            k.p5[0] = op.rPow;
             break;
         case Tool::Spray: k.radius = op.r; break; // a push of strength 0: moves nothing
         case Tool::Cylinder:
             k.projected = op.a;
             k.radius = op.r;
-            k.p5[0] = op.r2;
+            k.p5[0] = op.rPow;
             break;
         case Tool::Line: shiftCoefficients(op, 0.0, k); break;
         case Tool::Comb: shiftCoefficients(op, op.spacing, k); break;

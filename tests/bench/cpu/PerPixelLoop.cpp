@@ -38,7 +38,7 @@ using namespace marbler;
             const double len2 = dx * dx + dy * dy;
             if (len2 < op.r * op.r) return op.color;
             if (op.tool == Tool::Drop && len2 > 0.0) {
-                const double factor = std::sqrt(std::max(0.0, 1.0 - op.r2 / len2));
+                const double factor = std::sqrt(std::max(0.0, 1.0 - op.rPow / len2));
                 x = x + dx * (factor - 1.0);
                 y = y + dy * (factor - 1.0);
             }

@@ -13,7 +13,7 @@ namespace {
 
 /// Inverse 2D drop: the ink test, then the push; points already coloured keep their colour.
 [[gnu::always_inline]] inline void drop(const PreparedOp& op, double* __restrict x, double* __restrict y, int* __restrict colors, std::size_t n) {
-    const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r, r2 = op.r2;
+    const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r, r2 = op.rPow;
     const int color = op.color;
     for (std::size_t i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy;
