@@ -42,17 +42,8 @@ namespace {
 /// Genomes compared as their file text, so a failure shows what differs.
 std::string text(const Genome& g) { return serializeGenome(g); }
 
-class EditorWindowTest : public test::WindowTest {
+class EditorWindowTest : public test::EditorTest {
 protected:
-    EditorWindow* open(const Genome& design, const QString& file = {}) {
-        auto* editor = new EditorWindow(design, mService.get(), file, mWindow.get(), mRecovery.path());
-        editor->setWindowFlag(Qt::Window);
-        editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
-        editor->resize(1200, 850);
-        editor->show();
-        EXPECT_TRUE(QTest::qWaitForWindowExposed(editor));
-        return editor;
-    }
     /// A click or drag on the canvas between two design points.
     static void drag(EditorCanvas* canvas, glm::dvec2 from, glm::dvec2 to) {
         const double z = canvas->slice().value;
@@ -64,7 +55,6 @@ protected:
         }
         QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, b);
     }
-    QTemporaryDir mRecovery;
 };
 
 } // namespace

@@ -73,27 +73,17 @@ Genome combed() {
     return g;
 }
 
-class EditorWorkTest : public test::WindowTest {
+class EditorWorkTest : public test::EditorTest {
 protected:
     void TearDown() override {
         setSaveFileAsker({});
-        test::WindowTest::TearDown();
-    }
-    EditorWindow* open(const Genome& design, const QString& file = {}) {
-        auto* editor = new EditorWindow(design, mService.get(), file, mWindow.get(), mRecovery.path());
-        editor->setWindowFlag(Qt::Window);
-        editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
-        editor->resize(1200, 850);
-        editor->show();
-        EXPECT_TRUE(QTest::qWaitForWindowExposed(editor));
-        return editor;
+        test::EditorTest::TearDown();
     }
     static void click(EditorCanvas* canvas, glm::dvec2 at) {
         const QPoint p = canvas->toWidget(glm::dvec3(at, canvas->slice().value)).toPoint();
         QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, p);
         QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, p);
     }
-    QTemporaryDir mRecovery;
     QTemporaryDir mDir;
 };
 

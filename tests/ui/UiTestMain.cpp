@@ -2,6 +2,7 @@
 // with settings and data of its own (see below).
 #include "UiTestSupport.h"
 
+#include "editor/EditorWindow.h"
 #include "ui/ErrorReport.h"
 
 #include <QApplication>
@@ -13,6 +14,7 @@
 #include <QMimeData>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QTest>
 #include <QUrl>
 #include <QWidget>
 
@@ -27,6 +29,16 @@ void WindowTest::SetUp() {
     mWindow = std::make_unique<ui::WorkbenchWindow>(mService.get());
     mWindow->model()->setSessionSeed(42);
     if (mPopulate) mWindow->newRandomPopulation(2);
+}
+
+ui::EditorWindow* EditorTest::open(const Genome& design, const QString& file) {
+    auto* editor = new ui::EditorWindow(design, mService.get(), file, mWindow.get(), mRecovery.path());
+    editor->setWindowFlag(Qt::Window);
+    editor->setUnsavedAnswer(ui::EditorWindow::UnsavedAnswer::Discard);
+    editor->resize(1200, 850);
+    editor->show();
+    EXPECT_TRUE(QTest::qWaitForWindowExposed(editor));
+    return editor;
 }
 
 void WindowTest::TearDown() {

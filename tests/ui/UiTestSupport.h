@@ -34,6 +34,14 @@ private:
     bool mPopulate;
 };
 
+/// A workbench window with editors opened over it, each autosaving into a folder of the test's
+/// own: open() shows one at 1200 x 850, answering Discard to the unsaved question.
+class EditorTest : public WindowTest {
+protected:
+    ui::EditorWindow* open(const Genome& design, const QString& file = {});
+    QTemporaryDir mRecovery;
+};
+
 /// Captures errors instead of showing a modal message box ("title: message" each).
 struct ErrorCapture {
     QStringList messages;
