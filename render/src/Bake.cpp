@@ -248,10 +248,9 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
     image.rgb.resize(texels * 3);
     std::vector<std::uint8_t> filled(texels, 0);
 
-    // Rows handed out by an atomic counter, one worker per core, as the CPU renderer does; a row's
-    // samples go through the kernel together.
-    std::atomic<int> nextRow{0}, rowsDone{0};
-    std::atomic<bool> stop{false};
+    // Rows handed out by the one row loop, as the CPU renderer does; a row's samples go through
+    // the kernel together.
+    RowLoop rowLoop(0, n, settings.threads, control);
     const std::size_t perTexel = pattern.offsets.size();
     const auto worker = [&] {
         std::vector<double> xs(std::size_t(n) * perTexel), ys(xs.size()), zs(xs.size());
@@ -259,14 +258,7 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
         // With bleed, soft edges: the kernel's composited linear colours instead of indices.
         std::vector<double> soft(soften ? xs.size() * 3 : 0);
         std::vector<int> columns;
-        for (;;) {
-            if (stop.load(std::memory_order_relaxed)) return;
-            if (control && control->cancelled()) {
-                stop = true;
-                return;
-            }
-            const int j = nextRow.fetch_add(1);
-            if (j >= n) return;
+        for (int j; rowLoop.next(j);) {
             columns.clear();
             std::size_t count = 0;
             for (int i = 0; i < n; ++i) {
@@ -315,14 +307,10 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                 out[2] = encodeSrgb8(std::clamp(sum.z, 0.0, 1.0));
                 filled[std::size_t(j) * std::size_t(n) + std::size_t(i)] = 1;
             }
-            const int done = rowsDone.fetch_add(1) + 1;
-            if (control && control->progress) control->progress(double(done) / double(n));
+            rowLoop.done();
         }
     };
-    const int threads =
-        std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, n);
-    runOnThreads(threads, stop, worker);
-    if (control && control->cancelled()) throw Cancelled();
+    rowLoop.run(worker);
 
     // Dilation: each pass gives every empty texel beside a filled one (of 8) their mean, so a
     // texture lookup at a triangle's edge, which blends the texels round it, finds the surface's

@@ -41,6 +41,7 @@ struct MeshSettings {
     int supersample = 3;             ///< 1, 3 or 5 (n x n)
     std::optional<CutPlane> cut;
     Color clearColor{0x2b, 0x2b, 0x2b};
+    int threads = 0; ///< CPU workers when the CPU shades the samples (renderMeshHybrid); 0: every core
 };
 
 /// The first pass of a mesh render, read back: per sample of the n x n supersampled raster
