@@ -7,6 +7,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Mesh.h"
+#include "marbler/Sampling.h"
 
 #include "WindowModule.h"
 
@@ -123,16 +124,10 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
 }
 
 int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& outDir) {
-    const std::string axisText = lower(*args.get("slices"));
+    const std::optional<int> axis = parseAxis(*args.get("slices"));
+    if (!axis) throw InputError("--slices: '" + *args.get("slices") + "' is not an axis (x, y or z)");
     Slice slice;
-    if (axisText == "x")
-        slice.axis = 0;
-    else if (axisText == "y")
-        slice.axis = 1;
-    else if (axisText == "z")
-        slice.axis = 2;
-    else
-        throw InputError("--slices: '" + *args.get("slices") + "' is not an axis (x, y or z)");
+    slice.axis = *axis;
     const int count = parseIntOption(args, "count", 64, 1, 10000);
     RenderSettings settings;
     settings.aa = args.get("aa").value_or("none");
