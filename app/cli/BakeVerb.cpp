@@ -43,7 +43,7 @@ bad input, 1 any other failure.
 
 options:
   -o, --output OUT          the mesh file (.glb, .gltf, .obj), or the folder for --slices
-  --mesh NAME|FILE          sphere, cube, torus, vase, teapot, or a mesh file assimp reads
+  --mesh NAME|FILE          vase, sphere, cube, torus, teapot, or a mesh file assimp reads
                             (OBJ, STL, PLY, glTF, ...)
   --texture N               the texture's side in texels (default 2048, at most 16384)
   --aa MODE                 samples a texel or pixel: none, rgss (default for the texture;
@@ -68,9 +68,8 @@ MeshData meshOf(const std::string& nameOrFile) {
     if (isBuiltinMesh(nameOrFile)) return builtinMesh(nameOrFile);
     std::error_code ec;
     if (!fs::is_regular_file(nameOrFile, ec))
-        throw InputError(
-            "--mesh: '" + nameOrFile +
-            "' is neither a built-in object (sphere, cube, torus, vase, teapot) nor a mesh file");
+        throw InputError("--mesh: '" + nameOrFile + "' is neither a built-in object (" + builtinMeshList() +
+                         ") nor a mesh file");
 #ifdef MARBLER_HAVE_GUI
     return app::windowModule().loadMesh(nameOrFile);
 #else

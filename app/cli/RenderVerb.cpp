@@ -46,7 +46,7 @@ options:
   --size WxH{cm,mm,in}      print size, e.g. 42x59.4cm; with --dpi it sets the pixel size
   --threads N               worker threads (default: every core)
   --gpu                     render with the OpenGL back end (needs a GL 4.3 context)
-  --mesh NAME|FILE          show a solid genome on an object: sphere, cube, torus, vase, teapot
+  --mesh NAME|FILE          show a solid genome on an object: vase, sphere, cube, torus, teapot
                             or a mesh file (uses the GL back end; needs --view)
   --view YAW,PITCH          orbit camera angles in degrees for --mesh
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
