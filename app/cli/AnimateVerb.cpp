@@ -6,11 +6,11 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/Growth.h"
+#include "marbler/Sampling.h"
 #include "marbler/Video.h"
 
 #include <algorithm>
 #include <atomic>
-#include <charconv>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -81,21 +81,6 @@ private:
     void (*mTerm)(int);
 };
 
-Slice parseSliceOption(const std::string& text) {
-    const std::size_t eq = text.find('=');
-    const std::string axis = eq == std::string::npos ? "" : text.substr(0, eq);
-    Slice slice;
-    if (axis == "x" || axis == "X") slice.axis = 0;
-    else if (axis == "y" || axis == "Y") slice.axis = 1;
-    else if (axis == "z" || axis == "Z") slice.axis = 2;
-    else throw InputError("--slice: '" + text + "' is not AXIS=VALUE with AXIS x, y or z (e.g. z=500)");
-    const std::string number = text.substr(eq + 1);
-    auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), slice.value);
-    if (number.empty() || ec != std::errc() || end != number.data() + number.size() || !std::isfinite(slice.value))
-        throw InputError("--slice: '" + text + "' is not AXIS=VALUE with a number VALUE (e.g. z=500)");
-    return slice;
-}
-
 int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
                   const std::filesystem::path& out, double fps, int frames, int width, int height);
 
@@ -120,7 +105,7 @@ int animate(std::span<const std::string> words) {
     settings.aa = args.get("aa").value_or("none");
     aaPattern(settings.aa);
     settings.threads = parseIntOption(args, "threads", 0, 0, 1024);
-    if (auto slice = args.get("slice")) settings.slice = parseSliceOption(*slice);
+    if (auto slice = args.get("slice")) settings.slice = parseSlice(*slice);
     const bool hasW = args.has("width"), hasH = args.has("height");
     int width = hasW ? parseIntOption(args, "width", 0, 1, MaxImageSide) : 0;
     int height = hasH ? parseIntOption(args, "height", 0, 1, MaxImageSide) : 0;

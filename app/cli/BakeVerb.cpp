@@ -7,6 +7,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Mesh.h"
+#include "marbler/Sampling.h"
 
 #include "WindowModule.h"
 
@@ -42,7 +43,7 @@ bad input, 1 any other failure.
 
 options:
   -o, --output OUT          the mesh file (.glb, .gltf, .obj), or the folder for --slices
-  --mesh NAME|FILE          sphere, cube, torus, vase, teapot, or a mesh file assimp reads
+  --mesh NAME|FILE          vase, sphere, cube, torus, teapot, or a mesh file assimp reads
                             (OBJ, STL, PLY, glTF, ...)
   --texture N               the texture's side in texels (default 2048, at most 16384)
   --aa MODE                 samples a texel or pixel: none, rgss (default for the texture;
@@ -67,9 +68,8 @@ MeshData meshOf(const std::string& nameOrFile) {
     if (isBuiltinMesh(nameOrFile)) return builtinMesh(nameOrFile);
     std::error_code ec;
     if (!fs::is_regular_file(nameOrFile, ec))
-        throw InputError(
-            "--mesh: '" + nameOrFile +
-            "' is neither a built-in object (sphere, cube, torus, vase, teapot) nor a mesh file");
+        throw InputError("--mesh: '" + nameOrFile + "' is neither a built-in object (" + builtinMeshList() +
+                         ") nor a mesh file");
 #ifdef MARBLER_HAVE_GUI
     return app::windowModule().loadMesh(nameOrFile);
 #else
@@ -123,16 +123,10 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
 }
 
 int bakeSlices(const Args& args, const std::string& genomeName, const fs::path& outDir) {
-    const std::string axisText = lower(*args.get("slices"));
+    const std::optional<int> axis = parseAxis(*args.get("slices"));
+    if (!axis) throw InputError("--slices: '" + *args.get("slices") + "' is not an axis (x, y or z)");
     Slice slice;
-    if (axisText == "x")
-        slice.axis = 0;
-    else if (axisText == "y")
-        slice.axis = 1;
-    else if (axisText == "z")
-        slice.axis = 2;
-    else
-        throw InputError("--slices: '" + *args.get("slices") + "' is not an axis (x, y or z)");
+    slice.axis = *axis;
     const int count = parseIntOption(args, "count", 64, 1, 10000);
     RenderSettings settings;
     settings.aa = args.get("aa").value_or("none");

@@ -2,6 +2,7 @@
 
 #include "cli/Cli.h"
 
+#include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/ImageFormats.h"
@@ -19,8 +20,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-
-#include <unistd.h>
 
 namespace marbler::cli {
 namespace {
@@ -173,16 +172,12 @@ int runBreed(std::span<const std::string> words) {
         if (ec) throw RuntimeFailure("cannot create " + dir.string() + ": " + ec.message());
         // Written under temporary names first and renamed only when all are written: an I/O
         // failure half way leaves no children at all.
-        std::vector<fs::path> temporary;
         try {
-            for (std::size_t i = 0; i < texts.size(); ++i) {
-                fs::path tmp = dir / ("." + childName(static_cast<int>(i) + 1) + "." + std::to_string(::getpid()) + ".partial");
-                temporary.push_back(tmp);
-                writeFileAtomically(tmp, texts[i]);
-            }
-            for (std::size_t i = 0; i < texts.size(); ++i) fs::rename(temporary[i], dir / childName(static_cast<int>(i) + 1));
+            AtomicFileSet files;
+            for (std::size_t i = 0; i < texts.size(); ++i)
+                files.add(dir / childName(static_cast<int>(i) + 1)).write(texts[i]);
+            files.commit();
         } catch (...) {
-            for (const fs::path& tmp : temporary) fs::remove(tmp, ec);
             if (created) fs::remove(dir, ec); // only removes it when empty
             throw;
         }

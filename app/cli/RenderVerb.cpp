@@ -7,11 +7,11 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Growth.h"
 #include "marbler/Repeat.h"
+#include "marbler/Sampling.h"
 
 #include "WindowModule.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -46,7 +46,7 @@ options:
   --size WxH{cm,mm,in}      print size, e.g. 42x59.4cm; with --dpi it sets the pixel size
   --threads N               worker threads (default: every core)
   --gpu                     render with the OpenGL back end (needs a GL 4.3 context)
-  --mesh NAME|FILE          show a solid genome on an object: sphere, cube, torus, vase, teapot
+  --mesh NAME|FILE          show a solid genome on an object: vase, sphere, cube, torus, teapot
                             or a mesh file (uses the GL back end; needs --view)
   --view YAW,PITCH          orbit camera angles in degrees for --mesh
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
@@ -66,18 +66,6 @@ options:
   --quiet                   no progress line
   -h, --help                this text
 )";
-
-Slice parseSlice(const std::string& text) {
-    std::size_t eq = text.find('=');
-    std::string axis = eq == std::string::npos ? "" : text.substr(0, eq);
-    Slice slice;
-    if (axis == "x" || axis == "X") slice.axis = 0;
-    else if (axis == "y" || axis == "Y") slice.axis = 1;
-    else if (axis == "z" || axis == "Z") slice.axis = 2;
-    else throw InputError("--slice: '" + text + "' is not AXIS=VALUE with AXIS x, y or z (e.g. z=500)");
-    slice.value = parseNumberList("slice", text.substr(eq + 1), 1)[0];
-    return slice;
-}
 
 int renderGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
                  const ExportOptions& exportOptions, const std::optional<std::pair<double, double>>& printSize,

@@ -99,13 +99,8 @@ void EditorCanvas::setSlice(const Slice& slice) {
 }
 
 QSizeF EditorCanvas::planeSize() const {
-    double w = mDesign.size.x, h = mDesign.size.y;
-    if (mDesign.dimension == 3 && mSlice.axis == 1) h = mDesign.size.z;
-    if (mDesign.dimension == 3 && mSlice.axis == 0) {
-        w = mDesign.size.y;
-        h = mDesign.size.z;
-    }
-    return {w, h};
+    const glm::dvec2 extent = slicePlane(mDesign.dimension, mSlice.axis).extent(mDesign.size);
+    return {extent.x, extent.y};
 }
 
 void EditorCanvas::updateDesignSize() {
@@ -115,16 +110,12 @@ void EditorCanvas::updateDesignSize() {
 }
 
 QPointF EditorCanvas::toPlane(const glm::dvec3& p) const {
-    if (mDesign.dimension != 3 || mSlice.axis == 2) return {p.x, p.y};
-    if (mSlice.axis == 1) return {p.x, p.z};
-    return {p.y, p.z};
+    const glm::dvec2 q = slicePlane(mDesign.dimension, mSlice.axis).toPlane(p);
+    return {q.x, q.y};
 }
 
 glm::dvec3 EditorCanvas::fromPlane(QPointF q) const {
-    if (mDesign.dimension != 3) return {q.x(), q.y(), 0.0};
-    if (mSlice.axis == 2) return {q.x(), q.y(), mSlice.value};
-    if (mSlice.axis == 1) return {q.x(), mSlice.value, q.y()};
-    return {mSlice.value, q.x(), q.y()};
+    return slicePlane(mDesign.dimension, mSlice.axis, mSlice.value).fromPlane({q.x(), q.y()});
 }
 
 glm::dvec3 EditorCanvas::toDesign(QPointF widgetPoint) const {

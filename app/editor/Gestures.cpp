@@ -2,6 +2,7 @@
 
 #include "marbler/Params.h"
 #include "marbler/Random.h"
+#include "marbler/Sampling.h"
 
 #include <glm/geometric.hpp>
 
@@ -15,23 +16,14 @@ namespace {
 
 /// The unit normal of the section plane across `axis` (a solid's gestures lie in that plane).
 glm::dvec3 planeNormal(int axis) {
-    glm::dvec3 n(0.0);
-    n[std::clamp(axis, 0, 2)] = 1.0;
-    return n;
+    return slicePlane(3, axis).normal();
 }
 
 /// Two unit vectors spanning the section plane (x-y for z, x-z for y, y-z for x; 2D: x-y).
 void planeAxes(int dimension, int axis, glm::dvec3& u, glm::dvec3& v) {
-    if (dimension != 3 || axis == 2) {
-        u = {1, 0, 0};
-        v = {0, 1, 0};
-    } else if (axis == 1) {
-        u = {1, 0, 0};
-        v = {0, 0, 1};
-    } else {
-        u = {0, 1, 0};
-        v = {0, 0, 1};
-    }
+    const SlicePlane plane = slicePlane(dimension, axis);
+    u = plane.u();
+    v = plane.v();
 }
 
 /// The palette index a tool lays: the panel's, kept inside the palette.

@@ -310,12 +310,8 @@ double ExportSettingsDialog::aspect() const {
     const glm::dvec3& size = mGenome.size;
     if (mGenome.dimension != 3) return size.y / size.x;
     if (mSolidView->currentIndex() == 0) return 1.0;
-    // A slice's plane in its own axes: y-z across x, x-z across y, x-y across z.
-    switch (mAxis->currentIndex()) {
-    case 0: return size.z / size.y;
-    case 1: return size.z / size.x;
-    default: return size.y / size.x;
-    }
+    const glm::dvec2 plane = slicePlane(mGenome.dimension, mAxis->currentIndex()).extent(size);
+    return plane.y / plane.x;
 }
 
 QString ExportSettingsDialog::extension() const { return mFormat->currentData().toString().section('/', 0, 0); }

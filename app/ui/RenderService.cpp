@@ -167,12 +167,11 @@ private:
                                        : gl::renderMeshHybrid(*renderer, genome, mesh, &control));
             }
         }
-        QSize full = request.region ? request.size : fitDesign(genome, request.size);
-        if (!request.region && genome.dimension == 3 && request.slice && request.slice->axis != 2) {
-            // The slice's plane: x-z across y, y-z across x.
+        QSize full = request.size;
+        if (!request.region) {
+            // The whole plane the render shows (a solid's slice: x-z across y, y-z across x).
             Genome plane;
-            plane.size = request.slice->axis == 1 ? glm::dvec3(genome.size.x, genome.size.z, 1.0)
-                                                  : glm::dvec3(genome.size.y, genome.size.z, 1.0);
+            plane.size = glm::dvec3(slicePlane(genome, request.slice).extent(genome.size), 1.0);
             full = fitDesign(plane, request.size);
         }
         // A quick third-size preview; a region keeps its proportions in it as best whole

@@ -1,5 +1,7 @@
 #include "ui/StartDialog.h"
 
+#include "marbler/Mesh.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -24,8 +26,10 @@ StartChooser& startChooserHook() {
 } // namespace
 
 QStringList meshNames() {
-    return {QStringLiteral("vase"), QStringLiteral("sphere"), QStringLiteral("cube"), QStringLiteral("torus"),
-            QStringLiteral("teapot")};
+    QStringList names;
+    for (const std::string& name : builtinMeshNames())
+        names << QString::fromStdString(name);
+    return names;
 }
 
 StartChoice lastStartChoice() {

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -15,9 +14,6 @@
 #include <cstring>
 #include <fstream>
 #include <system_error>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace marbler {
 namespace {
@@ -504,10 +500,6 @@ Json operationJson(const Operation& op, int dimension) {
     return entry;
 }
 
-[[noreturn]] void ioFailure(const std::string& what, const std::filesystem::path& file, int error) {
-    throw RuntimeFailure("cannot " + what + " " + file.string() + ": " + std::strerror(error));
-}
-
 } // namespace
 
 Genome parseGenome(std::string_view text, const std::string& name, std::vector<std::string>* warnings) {
@@ -623,59 +615,6 @@ std::string serializeGenome(const Genome& genome) {
     // `replace` rather than throwing: a string built in memory with broken UTF-8 (a meta note)
     // should not make a design unsaveable.
     return toJson(genome).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
-}
-
-void writeFileAtomically(const std::filesystem::path& file, std::string_view text) {
-    static std::atomic<unsigned> counter{0};
-    std::filesystem::path folder = file.parent_path();
-    if (folder.empty()) folder = ".";
-    if (file.filename().empty()) throw RuntimeFailure("cannot write " + file.string() + ": not a file name");
-
-    // The temporary lives beside the target so that rename() stays within one file system and
-    // is atomic; its name is hidden and unique to this process and call.
-    std::filesystem::path temp;
-    int fd = -1;
-    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-        temp = folder / ("." + file.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                         std::to_string(counter.fetch_add(1)));
-        fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd < 0 && errno != EEXIST) ioFailure("write", file, errno);
-    }
-    if (fd < 0) ioFailure("write", file, EEXIST);
-
-    auto abandon = [&](int error) {
-        ::close(fd);
-        ::unlink(temp.c_str());
-        ioFailure("write", file, error);
-    };
-    const char* data = text.data();
-    std::size_t left = text.size();
-    while (left > 0) {
-        ssize_t written = ::write(fd, data, left);
-        if (written < 0) {
-            if (errno == EINTR) continue;
-            abandon(errno);
-        }
-        data += written;
-        left -= static_cast<std::size_t>(written);
-    }
-    if (::fsync(fd) != 0) abandon(errno);
-    if (::close(fd) != 0) {
-        int error = errno;
-        ::unlink(temp.c_str());
-        ioFailure("write", file, error);
-    }
-    if (::rename(temp.c_str(), file.c_str()) != 0) {
-        int error = errno;
-        ::unlink(temp.c_str());
-        ioFailure("write", file, error);
-    }
-    // Persist the rename itself; a failure here loses nothing already written, so it is ignored.
-    int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (dir >= 0) {
-        ::fsync(dir);
-        ::close(dir);
-    }
 }
 
 void saveGenome(const Genome& genome, const std::filesystem::path& file) {

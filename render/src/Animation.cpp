@@ -2,6 +2,7 @@
 
 #include "marbler/Animation.h"
 
+#include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
 #include "marbler/Growth.h"
 #include "marbler/Video.h"
@@ -9,45 +10,7 @@
 #include <cstdio>
 #include <system_error>
 
-#include <unistd.h>
-
 namespace marbler {
-namespace {
-
-/// A temporary folder beside OUT, removed unless committed (renamed to OUT).
-class TemporaryFolder {
-public:
-    explicit TemporaryFolder(const std::filesystem::path& out) : mOut(out) {
-        std::filesystem::path parent = out.parent_path();
-        if (parent.empty()) parent = ".";
-        mPath = parent / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
-        std::error_code ec;
-        std::filesystem::remove_all(mPath, ec);
-        if (!std::filesystem::create_directory(mPath, ec) || ec)
-            throw RuntimeFailure("cannot make the folder " + mPath.string() + ": " + ec.message());
-    }
-    ~TemporaryFolder() {
-        if (mCommitted) return;
-        std::error_code ec;
-        std::filesystem::remove_all(mPath, ec);
-    }
-    TemporaryFolder(const TemporaryFolder&) = delete;
-    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-
-    const std::filesystem::path& path() const { return mPath; }
-    void commit() {
-        std::error_code ec;
-        std::filesystem::rename(mPath, mOut, ec); // replaces an empty folder at OUT
-        if (ec) throw RuntimeFailure("cannot rename " + mPath.string() + " to " + mOut.string() + ": " + ec.message());
-        mCommitted = true;
-    }
-
-private:
-    std::filesystem::path mOut, mPath;
-    bool mCommitted = false;
-};
-
-} // namespace
 
 std::string animationFrameName(int frame) {
     char name[32];
@@ -81,11 +44,12 @@ void writeAnimation(const Genome& genome, const RenderSettings& settings, const 
         writer->finish();
         return;
     }
-    TemporaryFolder folder(out);
+    // The frames go to a temporary folder beside OUT, renamed to OUT when all are written.
+    AtomicFile folder(out, AtomicFile::Kind::Folder);
     for (int frame = 0; frame < frames; ++frame) {
         const RenderControl control = controlOf(frame);
         // renderToFile puts the frame's own design into the PNG.
-        renderToFile(designOf(frame), settings, folder.path() / animationFrameName(frame), {}, &control);
+        renderToFile(designOf(frame), settings, folder.temporary() / animationFrameName(frame), {}, &control);
         if (cancelled()) throw Cancelled();
     }
     std::error_code ec;

@@ -7,6 +7,7 @@
 
 #include "marbler/Bake.h"
 
+#include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
 #include "marbler/ImageFormats.h"
 #include "marbler/Threads.h"
@@ -26,8 +27,6 @@
 #include <limits>
 #include <mutex>
 #include <thread>
-
-#include <unistd.h>
 
 namespace marbler {
 namespace fs = std::filesystem;
@@ -249,10 +248,9 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
     image.rgb.resize(texels * 3);
     std::vector<std::uint8_t> filled(texels, 0);
 
-    // Rows handed out by an atomic counter, one worker per core, as the CPU renderer does; a row's
-    // samples go through the kernel together.
-    std::atomic<int> nextRow{0}, rowsDone{0};
-    std::atomic<bool> stop{false};
+    // Rows handed out by the one row loop, as the CPU renderer does; a row's samples go through
+    // the kernel together.
+    RowLoop rowLoop(0, n, settings.threads, control);
     const std::size_t perTexel = pattern.offsets.size();
     const auto worker = [&] {
         std::vector<double> xs(std::size_t(n) * perTexel), ys(xs.size()), zs(xs.size());
@@ -260,14 +258,7 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
         // With bleed, soft edges: the kernel's composited linear colours instead of indices.
         std::vector<double> soft(soften ? xs.size() * 3 : 0);
         std::vector<int> columns;
-        for (;;) {
-            if (stop.load(std::memory_order_relaxed)) return;
-            if (control && control->cancelled()) {
-                stop = true;
-                return;
-            }
-            const int j = nextRow.fetch_add(1);
-            if (j >= n) return;
+        for (int j; rowLoop.next(j);) {
             columns.clear();
             std::size_t count = 0;
             for (int i = 0; i < n; ++i) {
@@ -316,14 +307,10 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                 out[2] = encodeSrgb8(std::clamp(sum.z, 0.0, 1.0));
                 filled[std::size_t(j) * std::size_t(n) + std::size_t(i)] = 1;
             }
-            const int done = rowsDone.fetch_add(1) + 1;
-            if (control && control->progress) control->progress(double(done) / double(n));
+            rowLoop.done();
         }
     };
-    const int threads =
-        std::clamp(settings.threads > 0 ? settings.threads : int(std::thread::hardware_concurrency()), 1, n);
-    runOnThreads(threads, stop, worker);
-    if (control && control->cancelled()) throw Cancelled();
+    rowLoop.run(worker);
 
     // Dilation: each pass gives every empty texel beside a filled one (of 8) their mean, so a
     // texture lookup at a triangle's edge, which blends the texels round it, finds the surface's
@@ -369,58 +356,6 @@ std::vector<std::string> texturedMeshExtensions() {
 
 namespace {
 
-/// Files written under temporary names beside their targets and renamed together by commit();
-/// destroyed uncommitted, it removes every file it wrote, renamed or not.
-class AtomicFileSet {
-public:
-    ~AtomicFileSet() {
-        if (mCommitted) return;
-        std::error_code ec;
-        for (const auto& [target, temp] : mFiles)
-            fs::remove(temp, ec);
-        for (const fs::path& done : mRenamed)
-            fs::remove(done, ec);
-    }
-
-    /// A temporary name for `target` (which keeps its extension, so image writers know it).
-    fs::path add(const fs::path& target) {
-        static std::atomic<int> counter{0};
-        fs::path temp =
-            target.parent_path() / ("." + target.stem().string() + ".part-" + std::to_string(::getpid()) +
-                                    "-" + std::to_string(counter++) + target.extension().string());
-        mFiles.emplace_back(target, temp);
-        return temp;
-    }
-
-    void writeBytes(const fs::path& target, const std::string& bytes) {
-        const fs::path temp = add(target);
-        std::ofstream out(temp, std::ios::binary);
-        out.write(bytes.data(), std::streamsize(bytes.size()));
-        out.close();
-        if (!out) throw RuntimeFailure("cannot write '" + target.string() + "'");
-    }
-
-    /// Renames every file; the last added is renamed last, so the file the user named appears
-    /// only when its companions are in place.
-    std::vector<fs::path> commit() {
-        std::vector<fs::path> written;
-        for (const auto& [target, temp] : mFiles) {
-            std::error_code ec;
-            fs::rename(temp, target, ec);
-            if (ec) throw RuntimeFailure("cannot write '" + target.string() + "': " + ec.message());
-            mRenamed.push_back(target);
-            written.push_back(target);
-        }
-        mCommitted = true;
-        return written;
-    }
-
-private:
-    std::vector<std::pair<fs::path, fs::path>> mFiles;
-    std::vector<fs::path> mRenamed;
-    bool mCommitted = false;
-};
-
 std::string readBytes(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -430,7 +365,7 @@ std::string readBytes(const fs::path& file) {
 
 /// The texture as PNG bytes, by the project's own PNG writer (through a temporary file).
 std::string pngBytes(const Image& texture, AtomicFileSet& files, const fs::path& beside) {
-    const fs::path temp = files.add(beside);
+    const fs::path temp = files.add(beside).temporary();
     writeImage(texture, temp);
     return readBytes(temp);
 }
@@ -588,27 +523,27 @@ std::vector<fs::path> writeTexturedMesh(const MeshData& mesh, const Image& textu
         glb += bin;
         // The PNG's temporary file (in `files`, never committed) served only to encode it.
         AtomicFileSet onlyGlb;
-        onlyGlb.writeBytes(file, glb);
+        onlyGlb.add(file).write(glb);
         return onlyGlb.commit();
     }
 
     if (extension == ".gltf") {
         fs::path binFile = file;
         binFile.replace_extension(".bin");
-        writeImage(texture, files.add(pngFile));
+        writeImage(texture, files.add(pngFile).temporary());
         auto [doc, bin] = gltfDocument(mesh, name, "", pngName);
         doc["buffers"][0]["uri"] = binFile.filename().string();
-        files.writeBytes(binFile, bin);
-        files.writeBytes(file, doc.dump(2) + "\n");
+        files.add(binFile).write(bin);
+        files.add(file).write(doc.dump(2) + "\n");
         return files.commit();
     }
 
     // OBJ: v/vt/vn per vertex (vt's v counts upwards), one material whose diffuse map is the PNG.
     fs::path mtlFile = file;
     mtlFile.replace_extension(".mtl");
-    writeImage(texture, files.add(pngFile));
-    files.writeBytes(mtlFile, "# Marbler (marbler bake)\nnewmtl " + objName +
-                                  "\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " + pngName + "\n");
+    writeImage(texture, files.add(pngFile).temporary());
+    files.add(mtlFile).write("# Marbler (marbler bake)\nnewmtl " + objName +
+                             "\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nillum 1\nmap_Kd " + pngName + "\n");
     std::string obj =
         "# Marbler (marbler bake)\nmtllib " + mtlFile.filename().string() + "\no " + objName + "\n";
     obj.reserve(mesh.positions.size() * 120 + mesh.indices.size() * 12);
@@ -629,7 +564,7 @@ std::vector<fs::path> writeTexturedMesh(const MeshData& mesh, const Image& textu
         }
         obj += "\n";
     }
-    files.writeBytes(file, obj);
+    files.add(file).write(obj);
     return files.commit();
 }
 

@@ -192,21 +192,43 @@ MeshData teapot() {
 
 } // namespace
 
-std::vector<std::string> builtinMeshNames() { return {"sphere", "cube", "torus", "vase", "teapot"}; }
+namespace {
+
+struct BuiltinMesh {
+    const char* name;
+    MeshData (*make)();
+};
+
+/// The one list of built-in objects; the first is DefaultMesh.
+constexpr BuiltinMesh BuiltinMeshes[] = {
+    {"vase", vase}, {"sphere", sphere}, {"cube", cube}, {"torus", torus}, {"teapot", teapot}};
+
+} // namespace
+
+std::vector<std::string> builtinMeshNames() {
+    std::vector<std::string> names;
+    for (const BuiltinMesh& mesh : BuiltinMeshes)
+        names.emplace_back(mesh.name);
+    return names;
+}
+
+std::string builtinMeshList() {
+    std::string list;
+    for (const BuiltinMesh& mesh : BuiltinMeshes)
+        list += (list.empty() ? "" : ", ") + std::string(mesh.name);
+    return list;
+}
 
 bool isBuiltinMesh(const std::string& name) {
-    for (const std::string& builtin : builtinMeshNames())
-        if (builtin == name) return true;
+    for (const BuiltinMesh& mesh : BuiltinMeshes)
+        if (mesh.name == name) return true;
     return false;
 }
 
 MeshData builtinMesh(const std::string& name) {
-    if (name == "sphere") return sphere();
-    if (name == "cube") return cube();
-    if (name == "torus") return torus();
-    if (name == "vase") return vase();
-    if (name == "teapot") return teapot();
-    throw InputError("unknown built-in mesh \"" + name + "\" (sphere, cube, torus, vase, teapot, or a mesh file)");
+    for (const BuiltinMesh& mesh : BuiltinMeshes)
+        if (mesh.name == name) return mesh.make();
+    throw InputError("unknown built-in mesh \"" + name + "\" (" + builtinMeshList() + ", or a mesh file)");
 }
 
 } // namespace marbler

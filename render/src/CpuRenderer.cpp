@@ -109,28 +109,6 @@ void checkRows(const RenderSettings& settings, int y0, int y1) {
                          std::to_string(settings.height) + " rows");
 }
 
-/// Reports progress from many workers through one lock, at most once per 1/1000 of the work.
-class ProgressReporter {
-public:
-    ProgressReporter(const RenderControl* control, int total) : mControl(control), mTotal(total) {}
-    void rowDone() {
-        if (!mControl || !mControl->progress) return;
-        std::lock_guard lock(mMutex);
-        ++mDone;
-        int permille = static_cast<int>(std::int64_t(mDone) * 1000 / mTotal);
-        if (permille == mLastPermille && mDone != mTotal) return;
-        mLastPermille = permille;
-        mControl->progress(double(mDone) / mTotal);
-    }
-
-private:
-    const RenderControl* mControl;
-    int mTotal;
-    int mDone = 0;
-    int mLastPermille = -1;
-    std::mutex mMutex;
-};
-
 } // namespace
 
 template <typename MakeShader>
@@ -144,13 +122,7 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
     const int rows = y1 - y0;
     if (rows <= 0) return;
 
-    int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::thread::hardware_concurrency());
-    threads = std::clamp(threads, 1, rows);
-
-    std::atomic<int> nextRow{y0};
-    std::atomic<bool> stop{false};
-    ProgressReporter progress(control, rows);
-
+    RowLoop rowLoop(y0, y1, settings.threads, control);
     auto worker = [&] {
         auto tile = std::make_unique<kernel::Tile>();
         std::vector<int> colors(kernel::TileSize);
@@ -161,14 +133,7 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
                             layers ? rgb.data() : nullptr};
         std::vector<glm::dvec3> rowPart(static_cast<std::size_t>(samples));
         auto shade = makeShader();
-        for (;;) {
-            if (stop.load(std::memory_order_relaxed)) return;
-            if (control && control->cancelled()) {
-                stop = true;
-                return;
-            }
-            int j = nextRow.fetch_add(1);
-            if (j >= y1) return;
+        for (int j; rowLoop.next(j);) {
             // frame.at(i, j, ox, oy) component by component, in the same order of
             // operations (so the same bits), with the row's part computed once per sample.
             for (int s = 0; s < samples; ++s) {
@@ -195,12 +160,10 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
                                   source ? whereX.data() : nullptr, whereY.data(), layers ? &*layers : nullptr);
                 shade(j, i0, pixels, traced);
             }
-            progress.rowDone();
+            rowLoop.done();
         }
     };
-
-    runOnThreads(threads, stop, worker);
-    if (control && control->cancelled()) throw Cancelled();
+    rowLoop.run(worker);
 }
 
 template <typename Emit>

@@ -2,6 +2,7 @@
 // formats themselves live in ImageWriters.cpp (PNG, TIFF, PPM) and in the OpenImageIO module.
 
 #include "ImageSink.h"
+#include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/ImageFormats.h"
@@ -9,7 +10,6 @@
 #include "marbler/SourcePath.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -18,8 +18,6 @@
 #include <system_error>
 #include <thread>
 #include <utility>
-
-#include <unistd.h>
 
 namespace marbler {
 namespace fs = std::filesystem;
@@ -125,27 +123,19 @@ int stripRows(int width, int height) {
     return std::clamp((height + 7) / 8, 16, most);
 }
 
-/// An image file written in strips to a temporary name beside the target, renamed over the
-/// target only by commit(); destroyed uncommitted, it leaves nothing behind.
+/// An image file written in strips to a temporary name beside the target (an AtomicFile),
+/// renamed over the target only by commit(); destroyed uncommitted, it leaves nothing behind.
 class AtomicImageFile {
 public:
     AtomicImageFile(const fs::path& file, int width, int height, const ExportOptions& options) : mFile(file) {
-        static std::atomic<int> counter{0};
-        mTemp = file.parent_path() / ("." + file.stem().string() + ".part-" + std::to_string(::getpid()) + "-" +
-                                      std::to_string(counter++) + file.extension().string());
-        SinkTarget target{mTemp.string(), lowerExtension(file), file.string(), width, height, options};
-        try {
-            mSink = openBuiltinSink(target);
-            if (!mSink) mSink = imageIoModule().openSink(target);
-        } catch (...) {
-            removeTemp();
-            throw;
-        }
+        SinkTarget target{
+            mFile.temporary().string(), lowerExtension(file), file.string(), width, height, options};
+        mSink = openBuiltinSink(target);
+        if (!mSink) mSink = imageIoModule().openSink(target);
     }
 
     ~AtomicImageFile() {
-        mSink.reset(); // closes the file first
-        if (!mCommitted) removeTemp();
+        mSink.reset(); // closes the file before the AtomicFile removes it
     }
 
     AtomicImageFile(const AtomicImageFile&) = delete;
@@ -159,21 +149,12 @@ public:
     void commit() {
         mSink->finish();
         mSink.reset();
-        std::error_code ec;
-        fs::rename(mTemp, mFile, ec);
-        if (ec) throw RuntimeFailure("cannot write '" + mFile.string() + "': " + ec.message());
-        mCommitted = true;
+        mFile.commit();
     }
 
 private:
-    void removeTemp() {
-        std::error_code ec;
-        fs::remove(mTemp, ec);
-    }
-
-    fs::path mFile, mTemp;
+    AtomicFile mFile; // before mSink: destroyed after it, so the sink closes the file first
     std::unique_ptr<ImageSink> mSink;
-    bool mCommitted = false;
 };
 
 /// Writes strips on a thread of its own while the caller renders the next one. At most one

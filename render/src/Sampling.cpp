@@ -2,8 +2,10 @@
 
 #include "marbler/Error.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -27,9 +29,49 @@ AaPattern grid(int n, bool checkerOnly) {
     return pattern;
 }
 
+} // namespace
+
 const char* axisName(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
 
-} // namespace
+std::optional<int> parseAxis(std::string_view name) {
+    if (name == "x" || name == "X") return 0;
+    if (name == "y" || name == "Y") return 1;
+    if (name == "z" || name == "Z") return 2;
+    return std::nullopt;
+}
+
+Slice parseSlice(std::string_view text) {
+    const std::size_t eq = text.find('=');
+    const std::optional<int> axis =
+        parseAxis(eq == std::string_view::npos ? std::string_view() : text.substr(0, eq));
+    if (!axis)
+        throw InputError("--slice: '" + std::string(text) +
+                         "' is not AXIS=VALUE with AXIS x, y or z (e.g. z=500)");
+    const std::string_view number = text.substr(eq + 1);
+    Slice slice{*axis, 0.0};
+    auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), slice.value);
+    if (number.empty() || ec != std::errc() || end != number.data() + number.size() ||
+        !std::isfinite(slice.value))
+        throw InputError("--slice: '" + std::string(text) +
+                         "' is not AXIS=VALUE with a number VALUE (e.g. z=500)");
+    return slice;
+}
+
+SlicePlane slicePlane(int dimension, int axis, double value) {
+    if (dimension != 3) return {};
+    SlicePlane plane;
+    plane.normalAxis = std::clamp(axis, 0, 2);
+    // The two other axes in increasing order: y-z across x, x-z across y, x-y across z.
+    plane.uAxis = plane.normalAxis == 0 ? 1 : 0;
+    plane.vAxis = plane.normalAxis == 2 ? 1 : 2;
+    plane.value = value;
+    return plane;
+}
+
+SlicePlane slicePlane(const Genome& genome, const std::optional<Slice>& slice) {
+    if (genome.dimension != 3 || !slice) return {};
+    return slicePlane(genome.dimension, slice->axis, slice->value);
+}
 
 AaPattern aaPattern(std::string_view name) {
     AaPattern pattern;
@@ -68,41 +110,19 @@ std::vector<std::string> aaPatternNames() {
 
 Region effectiveRegion(const Genome& genome, const RenderSettings& settings) {
     if (settings.region) return *settings.region;
-    const glm::dvec3& s = genome.size;
-    if (genome.dimension == 3 && settings.slice) {
-        switch (settings.slice->axis) {
-        case 0: return {0.0, 0.0, s.y, s.z};
-        case 1: return {0.0, 0.0, s.x, s.z};
-        default: break;
-        }
-    }
-    return {0.0, 0.0, s.x, s.y};
+    const glm::dvec2 extent = slicePlane(genome, settings.slice).extent(genome.size);
+    return {0.0, 0.0, extent.x, extent.y};
 }
 
 SampleFrame sampleFrame(const Genome& genome, const RenderSettings& settings) {
-    Region r = effectiveRegion(genome, settings);
-    double su = (r.x1 - r.x0) / settings.width;
-    double sv = (r.y1 - r.y0) / settings.height;
+    const Region r = effectiveRegion(genome, settings);
+    const double su = (r.x1 - r.x0) / settings.width;
+    const double sv = (r.y1 - r.y0) / settings.height;
+    const SlicePlane plane = slicePlane(genome, settings.slice);
     SampleFrame frame;
-    int axis = genome.dimension == 3 && settings.slice ? settings.slice->axis : 2;
-    double c = genome.dimension == 3 && settings.slice ? settings.slice->value : 0.0;
-    switch (axis) {
-    case 0: // x = c: columns along y, rows along z
-        frame.origin = {c, r.x0, r.y0};
-        frame.du = {0.0, su, 0.0};
-        frame.dv = {0.0, 0.0, sv};
-        break;
-    case 1: // y = c: columns along x, rows along z
-        frame.origin = {r.x0, c, r.y0};
-        frame.du = {su, 0.0, 0.0};
-        frame.dv = {0.0, 0.0, sv};
-        break;
-    default:
-        frame.origin = {r.x0, r.y0, c};
-        frame.du = {su, 0.0, 0.0};
-        frame.dv = {0.0, sv, 0.0};
-        break;
-    }
+    frame.origin = plane.fromPlane({r.x0, r.y0});
+    frame.du = su * plane.u();
+    frame.dv = sv * plane.v();
     return frame;
 }
 

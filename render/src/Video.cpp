@@ -2,6 +2,7 @@
 // renamed on finish; FFmpeg itself is in the module marbler-video.so, loaded on first use.
 
 #include "VideoModule.h"
+#include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
 #include "marbler/ImageFormats.h"
 #include "marbler/Modules.h"
@@ -9,12 +10,9 @@
 #include "marbler/SourceDecoder.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <system_error>
-
-#include <unistd.h>
 
 namespace marbler {
 namespace fs = std::filesystem;
@@ -37,52 +35,35 @@ namespace {
 constexpr int MaxVideoSide = 16384;
 constexpr double MaxVideoFps = 1000.0;
 
-/// The module's writer on a temporary name beside the target, renamed over the target by
-/// finish(); destroyed unfinished, it leaves nothing behind.
+/// The module's writer on a temporary name beside the target (an AtomicFile), renamed over the
+/// target by finish(); destroyed unfinished, it leaves nothing behind.
 class AtomicVideoWriter final : public VideoWriter {
 public:
     AtomicVideoWriter(const fs::path& file, int width, int height, double fps) : mFile(file) {
-        static std::atomic<int> counter{0};
-        mTemp = file.parent_path() / ("." + file.stem().string() + ".part-" + std::to_string(::getpid()) + "-" +
-                                      std::to_string(counter++) + file.extension().string());
-        detail::VideoTarget target{mTemp.string(), lowerExtension(file), file.string(), width, height, fps};
-        try {
-            mWriter = detail::videoModule().openWriter(target);
-        } catch (...) {
-            removeTemp();
-            throw;
-        }
+        detail::VideoTarget target{
+            mFile.temporary().string(), lowerExtension(file), file.string(), width, height, fps};
+        mWriter = detail::videoModule().openWriter(target);
     }
 
     ~AtomicVideoWriter() override {
-        mWriter.reset(); // closes the file first
-        if (!mFinished) removeTemp();
+        mWriter.reset(); // closes the file before the AtomicFile removes it
     }
 
     void addFrame(const std::uint8_t* rgb, std::size_t stride) override {
-        if (!mWriter) throw RuntimeFailure("'" + mFile.string() + "': a frame added after finish()");
+        if (!mWriter) throw RuntimeFailure("'" + mFile.target().string() + "': a frame added after finish()");
         mWriter->addFrame(rgb, stride);
     }
 
     void finish() override {
-        if (!mWriter) throw RuntimeFailure("'" + mFile.string() + "': finished twice");
+        if (!mWriter) throw RuntimeFailure("'" + mFile.target().string() + "': finished twice");
         mWriter->finish();
         mWriter.reset();
-        std::error_code ec;
-        fs::rename(mTemp, mFile, ec);
-        if (ec) throw RuntimeFailure("cannot write '" + mFile.string() + "': " + ec.message());
-        mFinished = true;
+        mFile.commit();
     }
 
 private:
-    void removeTemp() {
-        std::error_code ec;
-        fs::remove(mTemp, ec);
-    }
-
-    fs::path mFile, mTemp;
+    AtomicFile mFile; // before mWriter: destroyed after it, so the writer closes the file first
     std::unique_ptr<VideoWriter> mWriter;
-    bool mFinished = false;
 };
 
 } // namespace

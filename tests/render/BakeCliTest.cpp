@@ -3,6 +3,8 @@
 
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
+#include "marbler/Error.h"
+#include "marbler/Mesh.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -79,6 +81,31 @@ TEST(BakeCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     expectFailure(
         {"bake", solid, "--mesh", "cube", "-o", (dir / "no" / "cube.glb").string(), "--texture", "64"}, 1,
         "cube.glb", dir);
+}
+
+TEST(BakeCli, MessagesAndHelpNameEveryBuiltInObject) {
+    // The objects come from one list (Mesh.h); what a person reads names each of them.
+    const auto dir = test::outputDir("bake-cli-objects");
+    auto r = runMarbler({"bake", test::examplePath("slate-block.marble.json"), "--mesh", "dodecahedron", "-o",
+                         (dir / "out.glb").string()});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err,
+              "marbler bake: --mesh: 'dodecahedron' is neither a built-in object (vase, sphere, cube, torus, "
+              "teapot) nor a mesh file\n");
+    EXPECT_EQ(builtinMeshList(), "vase, sphere, cube, torus, teapot");
+    try {
+        builtinMesh("dodecahedron");
+        ADD_FAILURE() << "an unknown object was made";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("(" + builtinMeshList() + ", or a mesh file)"),
+                  std::string::npos)
+            << e.what();
+    }
+    for (const char* verb : {"bake", "render"}) {
+        const std::string help = runMarbler({verb, "--help"}).out;
+        for (const std::string& name : builtinMeshNames())
+            EXPECT_NE(help.find(name), std::string::npos) << verb << " --help does not name " << name;
+    }
 }
 
 TEST(BakeCli, SlicesAreTheCentresOfEqualLayers) {

@@ -122,6 +122,27 @@ TEST(RenderCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     expectFailure({"render", good, "-o", out, "--mesh", "vase", "--view", "30,20"}, 2, "five-stones", out);
 }
 
+TEST(RenderCli, EveryVerbRefusesABadSliceInTheSameWords) {
+    // render and animate parse --slice in one place, so a person reads one message from both.
+    const auto dir = test::outputDir("cli-bad-slice");
+    const std::string solid = test::examplePath("slate-block.marble.json");
+    const std::string out = (dir / "out.png").string();
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"z=abc", "--slice: 'z=abc' is not AXIS=VALUE with a number VALUE (e.g. z=500)"},
+        {"z=1,2", "--slice: 'z=1,2' is not AXIS=VALUE with a number VALUE (e.g. z=500)"},
+        {"z=", "--slice: 'z=' is not AXIS=VALUE with a number VALUE (e.g. z=500)"},
+        {"w=5", "--slice: 'w=5' is not AXIS=VALUE with AXIS x, y or z (e.g. z=500)"},
+        {"500", "--slice: '500' is not AXIS=VALUE with AXIS x, y or z (e.g. z=500)"}};
+    for (const auto& [text, message] : cases) {
+        for (const char* verb : {"render", "animate"}) {
+            auto r = runMarbler({verb, solid, "-o", out, "--slice", text});
+            EXPECT_EQ(r.exitCode, 2) << verb << ' ' << text << ": " << r.err;
+            EXPECT_EQ(r.err, std::string("marbler ") + verb + ": " + message + "\n") << verb << ' ' << text;
+        }
+        EXPECT_FALSE(std::filesystem::exists(out)) << text;
+    }
+}
+
 TEST(RenderCli, UnwritableFolderExitsOne) {
     const auto dir = test::outputDir("cli-unwritable");
     const auto out = dir / "no" / "such" / "folder" / "out.png";

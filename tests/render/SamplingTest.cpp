@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
 #include <cmath>
@@ -107,6 +108,59 @@ TEST(SampleFrame, SlicesOnEveryAxis) {
     r = effectiveRegion(g, s);
     EXPECT_EQ((glm::dvec4(r.x0, r.y0, r.x1, r.y1)), glm::dvec4(0, 0, 200, 300));
     EXPECT_EQ(sampleFrame(g, s).at(1, 2, 0, 0), glm::dvec3(7, 30, 75)); // (c, y, z)
+}
+
+TEST(SlicePlane, MapsThePlaneBothWaysOnEveryAxis) {
+    const glm::dvec3 size{100, 200, 300};
+    struct Case {
+        int axis;
+        glm::dvec2 extent;
+        glm::dvec3 point; ///< the design point of plane coordinates (1, 2) at value 7
+    };
+    for (const Case& c :
+         {Case{0, {200, 300}, {7, 1, 2}}, Case{1, {100, 300}, {1, 7, 2}}, Case{2, {100, 200}, {1, 2, 7}}}) {
+        const SlicePlane plane = slicePlane(3, c.axis, 7.0);
+        EXPECT_EQ(plane.normalAxis, c.axis);
+        EXPECT_EQ(plane.extent(size), c.extent) << c.axis;
+        EXPECT_EQ(plane.fromPlane({1, 2}), c.point) << c.axis;
+        EXPECT_EQ(plane.toPlane(c.point), glm::dvec2(1, 2)) << c.axis;
+        EXPECT_EQ(plane.fromPlane({1, 0}) - plane.fromPlane({0, 0}), plane.u()) << c.axis;
+        EXPECT_EQ(plane.fromPlane({0, 1}) - plane.fromPlane({0, 0}), plane.v()) << c.axis;
+        EXPECT_EQ(glm::dot(plane.normal(), plane.u()) + glm::dot(plane.normal(), plane.v()), 0.0) << c.axis;
+    }
+    // A flat design is always the x-y plane at 0, whatever slice a caller holds.
+    const SlicePlane flat = slicePlane(2, 0, 7.0);
+    EXPECT_EQ(flat.fromPlane({1, 2}), glm::dvec3(1, 2, 0));
+    EXPECT_EQ(flat.extent(size), glm::dvec2(100, 200));
+    EXPECT_EQ(slicePlane(solid({1, 2, 3}), std::nullopt).normalAxis, 2);
+    EXPECT_EQ(slicePlane(solid({1, 2, 3}), Slice{1, 0.5}).fromPlane({0, 0}), glm::dvec3(0, 0.5, 0));
+}
+
+TEST(SlicePlane, AxisNamesAndTheSliceOption) {
+    for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_EQ(parseAxis(axisName(axis)), axis);
+        std::string upper = axisName(axis);
+        upper[0] = char(upper[0] - 'a' + 'A');
+        EXPECT_EQ(parseAxis(upper), axis);
+    }
+    EXPECT_EQ(parseAxis("w"), std::nullopt);
+    EXPECT_EQ(parseAxis(""), std::nullopt);
+    EXPECT_EQ(parseAxis("xy"), std::nullopt);
+
+    const Slice slice = parseSlice("Y=12.5");
+    EXPECT_EQ(slice.axis, 1);
+    EXPECT_EQ(slice.value, 12.5);
+    EXPECT_EQ(parseSlice("z=-3e2").value, -300.0);
+    for (const char* bad : {"", "z", "=5", "w=5", "z=", "z=abc", "z=1,2", "z=5x", "z=inf", "z=nan", "z= 5"}) {
+        try {
+            parseSlice(bad);
+            ADD_FAILURE() << "accepted '" << bad << "'";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("--slice: '" + std::string(bad) + "' is not AXIS=VALUE", 0),
+                      0u)
+                << e.what();
+        }
+    }
 }
 
 TEST(CheckRenderSettings, RefusesWhatCannotBeRendered) {

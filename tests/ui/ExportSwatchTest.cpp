@@ -18,6 +18,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
+#include <QLocale>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -255,6 +256,23 @@ TEST_F(ExportSwatchTest, SwatchShowsTheWholeDesignTiledAndIsRemembered) {
     DesignDialog solid(test::loadExample("slate-block.marble.json"), mService.get(), QStringLiteral("sphere"));
     EXPECT_FALSE(solid.repeatSwatch());
     EXPECT_FALSE(solid.findChild<QToolButton*>(QStringLiteral("repeatSwatch"))->isEnabled());
+}
+
+TEST_F(ExportSwatchTest, ACrossSectionTakesItsPlanesProportions) {
+    // The plane of a slice (SlicePlane, Sampling.h): y-z across x, x-z across y, x-y across z.
+    Genome genome = test::loadExample("slate-block.marble.json");
+    genome.size = {100, 200, 300};
+    ExportSettingsDialog settings(genome);
+    auto* summary = settings.findChild<QLabel*>(QStringLiteral("exportPixels"));
+    ASSERT_NE(summary, nullptr);
+    const std::pair<int, int> expected[] = {{0, 3072}, {1, 6144}, {2, 4096}};
+    for (const auto& [axis, height] : expected) {
+        settings.setSolidExport(SolidExport{false, Slice{axis, 50.0}});
+        EXPECT_EQ(settings.pixels(), QSize(2048, height)) << "axis " << axis;
+        EXPECT_TRUE(summary->text().contains(QLocale().toString(height))) << summary->text().toStdString();
+    }
+    settings.setSolidExport(SolidExport{true, Slice{}});
+    EXPECT_EQ(settings.pixels(), QSize(2048, 2048)) << "the object view is square";
 }
 
 } // namespace

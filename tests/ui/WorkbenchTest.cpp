@@ -7,6 +7,7 @@
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Mesh.h"
 #include "marbler/Sampling.h"
 #include "marbler/gl/GlRenderer.h"
 #include "ui/DesignCell.h"
@@ -782,6 +783,20 @@ TEST_F(StartChoiceTest, StartDialogOffersBothKindsAndRemembersNotAsking) {
     rememberStartChoice(dialog.choice(), !dialog.dontAskAgain());
     EXPECT_FALSE(askStartChoice());
     EXPECT_EQ(lastStartChoice(), (StartChoice{3, QStringLiteral("teapot")}));
+}
+
+TEST_F(StartChoiceTest, TheObjectBoxListsEveryBuiltInObjectDefaultFirst) {
+    // One list of built-in objects (Mesh.h): the start dialog offers exactly those `--mesh` takes.
+    StartDialog dialog(StartChoice{3});
+    QStringList offered;
+    for (int i = 0; i < dialog.meshBox()->count(); ++i)
+        offered << dialog.meshBox()->itemText(i);
+    QStringList builtin;
+    for (const std::string& name : builtinMeshNames())
+        builtin << QString::fromStdString(name);
+    EXPECT_EQ(offered.join(", ").toStdString(), builtin.join(", ").toStdString());
+    EXPECT_EQ(offered.value(0).toStdString(), DefaultMesh);
+    EXPECT_EQ(dialog.meshBox()->currentText().toStdString(), DefaultMesh);
 }
 
 // The session: autosaved after every change, offered and resumed at the next start.

@@ -2,6 +2,7 @@
 /// Reading and writing genome files (genome-format.md, File). Every rule of the format is
 /// checked on load; what breaks a rule throws GenomeError naming the file and JSON location.
 
+#include "marbler/AtomicFile.h" // writeFileAtomically, which saveGenome uses
 #include "marbler/Genome.h"
 
 #include <filesystem>
@@ -29,10 +30,6 @@ nlohmann::ordered_json toJson(const Genome& genome);
 /// Checks every rule of the format on an in-memory genome (what the loader checks after
 /// parsing). Throws GenomeError with `name` as the file.
 void validateGenome(const Genome& genome, const std::string& name);
-
-/// Writes text to a file atomically: a temporary file beside it, flushed, then renamed over
-/// the target, so a failure never leaves a half-written file. Throws RuntimeFailure.
-void writeFileAtomically(const std::filesystem::path& file, std::string_view text);
 
 /// Saves a genome atomically. Throws RuntimeFailure.
 void saveGenome(const Genome& genome, const std::filesystem::path& file);

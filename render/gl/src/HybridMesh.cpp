@@ -62,11 +62,10 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
     image.height = g.height;
     image.rgb.resize(std::size_t(g.width) * std::size_t(g.height) * 3);
 
-    // Output rows are handed out by an atomic counter, one worker per core, as the CPU
-    // renderer does. Each row's covered samples go through the kernel a tile at a time; the
-    // uncovered ones (most of the frame around an object) cost nothing.
-    std::atomic<int> nextRow{0};
-    std::atomic<bool> stop{false};
+    // Output rows are handed out by the one row loop, as the CPU renderer does. Each row's
+    // covered samples go through the kernel a tile at a time; the uncovered ones (most of the
+    // frame around an object) cost nothing.
+    RowLoop rowLoop(0, g.height, settings.threads, control);
     const auto worker = [&] {
         std::vector<double> xs(std::size_t(g.width) * std::size_t(n * n));
         std::vector<double> ys(xs.size()), zs(xs.size());
@@ -76,14 +75,7 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
         std::vector<std::size_t> sampleOf(colors.size());
         std::vector<glm::dvec3> sum(std::size_t(g.width));
         std::vector<int> coveredIn(std::size_t(g.width));
-        for (;;) {
-            if (stop.load(std::memory_order_relaxed)) return;
-            if (control && control->cancelled()) {
-                stop = true;
-                return;
-            }
-            const int y = nextRow.fetch_add(1);
-            if (y >= g.height) return;
+        for (int y; rowLoop.next(y);) {
             // GL's first row is the bottom of the view.
             const int glRow = g.height - 1 - y;
             int covered = 0;
@@ -130,11 +122,10 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
                 out[x * 3 + 1] = encodeSrgb8(std::clamp(linear.y, 0.0, 1.0));
                 out[x * 3 + 2] = encodeSrgb8(std::clamp(linear.z, 0.0, 1.0));
             }
+            rowLoop.done();
         }
     };
-    const int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, std::max(1, g.height));
-    runOnThreads(threads, stop, worker);
-    if (control && control->cancelled()) throw Cancelled();
+    rowLoop.run(worker);
     return image;
 }
 

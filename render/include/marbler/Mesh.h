@@ -21,8 +21,16 @@ struct MeshData {
     std::vector<std::uint32_t> indices; ///< three per triangle
 };
 
-/// The built-in objects: sphere, cube, torus, vase, teapot.
+/// The built-in objects, in the order the window lists them: vase (the default), sphere, cube,
+/// torus, teapot. The one list of them: `--mesh`, the window's object boxes and the session
+/// file all read it.
 std::vector<std::string> builtinMeshNames();
+
+/// The object a solid design is shown on until a person picks another.
+inline constexpr const char* DefaultMesh = "vase";
+
+/// The built-in names for a message: "vase, sphere, cube, torus, teapot".
+std::string builtinMeshList();
 
 /// Whether `name` is one of builtinMeshNames().
 bool isBuiltinMesh(const std::string& name);

@@ -41,6 +41,57 @@ struct Slice {
     double value = 0.0;
 };
 
+/// "x", "y" or "z" for axis 0, 1 or 2 (any other axis: "z").
+const char* axisName(int axis);
+
+/// The axis a name gives (x, y or z, either case), or nothing for any other text.
+std::optional<int> parseAxis(std::string_view name);
+
+/// The text of `--slice`: AXIS=VALUE with AXIS x, y or z and VALUE a finite number (e.g. z=500).
+/// Every verb that takes a slice parses it here. Throws InputError naming `--slice`.
+Slice parseSlice(std::string_view text);
+
+/// The plane a flat design or a slice of a solid shows, in the plane's own 2D coordinates:
+/// u along its columns, v down its rows (x-y for z = c and for a flat design, x-z for y = c,
+/// y-z for x = c). The one mapping between those coordinates and the design's 3D points, for
+/// the renderers, the editor's canvas and gestures, the render service and the export dialog.
+struct SlicePlane {
+    int uAxis = 0;      ///< the design axis along the plane's first coordinate
+    int vAxis = 1;      ///< the design axis along the plane's second coordinate
+    int normalAxis = 2; ///< the axis the plane lies across
+    double value = 0.0; ///< where it crosses that axis
+
+    /// Unit vectors of the plane's coordinates and of its normal, in design space.
+    glm::dvec3 u() const { return unit(uAxis); }
+    glm::dvec3 v() const { return unit(vAxis); }
+    glm::dvec3 normal() const { return unit(normalAxis); }
+    /// The plane's extent within a design box of `size`.
+    glm::dvec2 extent(const glm::dvec3& size) const { return {size[uAxis], size[vAxis]}; }
+    /// A design point's plane coordinates (its distance from the plane is dropped).
+    glm::dvec2 toPlane(const glm::dvec3& p) const { return {p[uAxis], p[vAxis]}; }
+    /// The design point at plane coordinates q.
+    glm::dvec3 fromPlane(const glm::dvec2& q) const {
+        glm::dvec3 p(0.0);
+        p[uAxis] = q.x;
+        p[vAxis] = q.y;
+        p[normalAxis] = value;
+        return p;
+    }
+
+private:
+    static glm::dvec3 unit(int axis) {
+        glm::dvec3 e(0.0);
+        e[axis] = 1.0;
+        return e;
+    }
+};
+
+/// The plane across `axis` (clamped to 0..2) at `value` of a genome of `dimension`; a flat
+/// design's plane is always x-y at 0.
+SlicePlane slicePlane(int dimension, int axis, double value = 0.0);
+/// The plane a render shows: its slice for a solid genome, else x-y at 0.
+SlicePlane slicePlane(const Genome& genome, const std::optional<Slice>& slice);
+
 /// Everything a raster render needs besides the genome.
 struct RenderSettings {
     int width = 0, height = 0;

@@ -23,7 +23,7 @@ struct CutPlane {
 /// How a solid genome is shown on an object.
 struct MeshSettings {
     int width = 512, height = 512;
-    std::string mesh = "vase"; ///< built-in name (sphere, cube, torus, vase, teapot) or a file path
+    std::string mesh = "vase"; ///< a built-in name (builtinMeshNames()) or a file path
     /// Orbit camera about the design box centre, +y up: the eye sits at
     /// centre + D * (cos pitch sin yaw, sin pitch, cos pitch cos yaw), looking at the centre.
     double yaw = 30.0, pitch = 20.0; ///< degrees
@@ -41,6 +41,7 @@ struct MeshSettings {
     int supersample = 3;             ///< 1, 3 or 5 (n x n)
     std::optional<CutPlane> cut;
     Color clearColor{0x2b, 0x2b, 0x2b};
+    int threads = 0; ///< CPU workers when the CPU shades the samples (renderMeshHybrid); 0: every core
 };
 
 /// The first pass of a mesh render, read back: per sample of the n x n supersampled raster
