@@ -889,7 +889,7 @@ void EditorWindow::setSlice(const Slice& slice) {
         mSliceAxis->setCurrentIndex(slice.axis);
         mSliceValue->setRange(0.0, extent);
         mSliceValue->setValue(slice.value);
-        mSliceValue->setPrefix(tr("%1 = ").arg(QStringLiteral("xyz").at(slice.axis)));
+        mSliceValue->setPrefix(tr("%1 = ").arg(QLatin1String(axisName(slice.axis))));
         if (extent > 0.0) mSlicePosition->setValue(int(std::lround(slice.value / extent * 1000.0)));
         mSliceUpdating = false;
     }
@@ -1330,21 +1330,17 @@ void SolidObjectView::paintSlice(QPainter& p) const {
     for (const auto& e : Edges) p.drawLine(at(corner[e[0]]), at(corner[e[1]]));
     // The plane: the block's extent along the two other axes, at the section's value.
     const int axis = mSlice->axis;
-    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const SlicePlane section = slicePlane(3, axis, mSlice->value);
+    const glm::dvec2 span = section.extent(size);
     QPolygonF plane;
-    for (const auto& [ua, ub] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}) {
-        glm::dvec3 q(0.0);
-        q[axis] = mSlice->value;
-        q[a] = ua * size[a];
-        q[b] = ub * size[b];
-        plane << at(q);
-    }
+    for (const auto& [ua, ub] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+        plane << at(section.fromPlane({ua * span.x, ub * span.y}));
     p.setPen(QPen(QColor(255, 170, 40), 1.5));
     p.setBrush(QColor(255, 170, 40, 90));
     p.drawPolygon(plane);
     p.setPen(QColor(235, 235, 235));
     p.drawText(QPointF(origin.x() + Side * 1.55, origin.y() - 2.0),
-               tr("%1 = %2").arg(QStringLiteral("xyz").at(axis)).arg(mSlice->value, 0, 'f', 1));
+               tr("%1 = %2").arg(QLatin1String(axisName(axis))).arg(mSlice->value, 0, 'f', 1));
 }
 
 void SolidObjectView::resizeEvent(QResizeEvent*) { request(false); }
