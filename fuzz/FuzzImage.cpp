@@ -31,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             if (text) (void)marbler::parseEmbeddedGenome(*text, kind, "fuzz-image");
             (void)marbler::genomeFromXmp(std::string_view(reinterpret_cast<const char*>(data), size));
         } catch (const marbler::InputError& e) {
-            if (std::string(e.what()).find('\n') != std::string::npos) finding("multi-line error message", e.what());
+            if (std::string(e.what()).find('\n') != std::string::npos)
+                finding("multi-line error message", e.what());
         }
     }
     return 0;

@@ -18,7 +18,6 @@
 #include <iostream>
 #include <system_error>
 
-
 namespace marbler::cli {
 namespace {
 
@@ -59,7 +58,9 @@ options:
 std::atomic<bool> gInterrupted{false};
 static_assert(std::atomic<bool>::is_always_lock_free);
 
-extern "C" void onInterrupt(int) { gInterrupted.store(true); }
+extern "C" void onInterrupt(int) {
+    gInterrupted.store(true);
+}
 
 /// Catches Ctrl-C (and SIGTERM) for its lifetime, so that the temporary output is removed.
 class InterruptGuard {
@@ -81,12 +82,14 @@ private:
     void (*mTerm)(int);
 };
 
-int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
-                  const std::filesystem::path& out, double fps, int frames, int width, int height);
+int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome,
+                  RenderSettings settings, const std::filesystem::path& out, double fps, int frames,
+                  int width, int height);
 
 int animate(std::span<const std::string> words) {
-    Args args = parseArgs(words, {"o", "output", "frames", "fps", "width", "height", "aa", "slice", "threads"},
-                          {"quiet", "progress", "allow-external-source", "help", "h"});
+    Args args =
+        parseArgs(words, {"o", "output", "frames", "fps", "width", "height", "aa", "slice", "threads"},
+                  {"quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << AnimateHelp;
         return ExitOk;
@@ -94,13 +97,16 @@ int animate(std::span<const std::string> words) {
     oneGenomeArgument(args, "animate");
     const std::optional<std::string> output = requiredOutput(args, "animate", "OUT");
     std::filesystem::path out(*output);
-    if (!out.has_filename() && out.has_parent_path()) out = out.parent_path(); // "frames/" is the folder "frames"
+    if (!out.has_filename() && out.has_parent_path())
+        out = out.parent_path(); // "frames/" is the folder "frames"
     const bool video = isVideoFile(out);
 
     // Everything the command line can check is checked before the genome is read.
     const double fps = parseDoubleOption(args, "fps", 25.0);
-    if (!(fps > 0.0) || fps > 1000.0) throw InputError("--fps: must be a number above 0, at most 1000 (got " + *args.get("fps") + ")");
-    const int frames = parseIntOption(args, "frames", std::max(2, static_cast<int>(std::lround(4.0 * fps))), 2, 100000);
+    if (!(fps > 0.0) || fps > 1000.0)
+        throw InputError("--fps: must be a number above 0, at most 1000 (got " + *args.get("fps") + ")");
+    const int frames =
+        parseIntOption(args, "frames", std::max(2, static_cast<int>(std::lround(4.0 * fps))), 2, 100000);
     RenderSettings settings;
     settings.aa = args.get("aa").value_or("none");
     aaPattern(settings.aa);
@@ -114,8 +120,9 @@ int animate(std::span<const std::string> words) {
     if (std::filesystem::exists(out, ec)) {
         if (video ? std::filesystem::is_directory(out, ec)
                   : !std::filesystem::is_directory(out, ec) || !std::filesystem::is_empty(out, ec))
-            throw InputError(out.string() + ": already exists; OUT must be a new or empty folder, or a .gif, .webp, "
-                                            ".mp4 or .webm file");
+            throw InputError(out.string() +
+                             ": already exists; OUT must be a new or empty folder, or a .gif, .webp, "
+                             ".mp4 or .webm file");
     }
 
     const std::string genomeName = args.positional[0];
@@ -133,14 +140,16 @@ int animate(std::span<const std::string> words) {
     }
 }
 
-int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
-                  const std::filesystem::path& out, double fps, int frames, int width, int height) {
+int animateGenome(const Args& args, const std::string& genomeName, const Genome& genome,
+                  RenderSettings settings, const std::filesystem::path& out, double fps, int frames,
+                  int width, int height) {
     const bool hasW = args.has("width"), hasH = args.has("height");
     auto withGenome = [&](const std::string& message) { return InputError(genomeName + ": " + message); };
     if (genome.dimension == 3 && !settings.slice)
         throw withGenome("a solid (3D) genome needs --slice AXIS=VALUE (e.g. z=" +
                          std::to_string(static_cast<int>(genome.size.z / 2)) + ")");
-    if (genome.dimension == 2 && settings.slice) throw withGenome("--slice needs a solid (3D) genome; this one is flat (2D)");
+    if (genome.dimension == 2 && settings.slice)
+        throw withGenome("--slice needs a solid (3D) genome; this one is flat (2D)");
 
     // Pixel size: as `render`, with 512 pixels on the longer side by default.
     RenderSettings probe = settings;
@@ -148,7 +157,9 @@ int animateGenome(const Args& args, const std::string& genomeName, const Genome&
     checkRenderSettings(genome, probe);
     const Region region = effectiveRegion(genome, settings);
     const double aspect = (region.x1 - region.x0) / (region.y1 - region.y0);
-    auto pixels = [](double value) { return static_cast<int>(std::clamp(std::round(value), 1.0, double(MaxImageSide))); };
+    auto pixels = [](double value) {
+        return static_cast<int>(std::clamp(std::round(value), 1.0, double(MaxImageSide)));
+    };
     if (hasW && !hasH) height = pixels(width / aspect);
     if (hasH && !hasW) width = pixels(height * aspect);
     if (!hasW && !hasH) {
@@ -164,8 +175,8 @@ int animateGenome(const Args& args, const std::string& genomeName, const Genome&
     writeAnimation(genome, settings, out, frames, fps, &gInterrupted,
                    [&progress, frames](int frame, double within) {
                        const int percent = static_cast<int>((frame + within) / frames * 100.0);
-                       progress.show("frame " + std::to_string(frame + 1) + "/" + std::to_string(frames) + " ("
-                                     + std::to_string(percent) + "%)");
+                       progress.show("frame " + std::to_string(frame + 1) + "/" + std::to_string(frames) +
+                                     " (" + std::to_string(percent) + "%)");
                    });
     progress.finish();
     return ExitOk;

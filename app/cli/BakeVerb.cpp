@@ -17,12 +17,12 @@
 #include <filesystem>
 #include <iostream>
 
-
 namespace marbler::cli {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr const char* BakeHelp = R"(usage: marbler bake GENOME --mesh NAME|FILE -o OUT.{glb,gltf,obj} [options]
+constexpr const char* BakeHelp =
+    R"(usage: marbler bake GENOME --mesh NAME|FILE -o OUT.{glb,gltf,obj} [options]
        marbler bake GENOME --slices AXIS [--count N] -o DIR [options]
 
 Bakes a design onto an object for other 3D tools: every texel of an N x N texture gets the
@@ -111,7 +111,9 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
 
     ProgressLine progress(args);
     RenderControl control;
-    control.progress = [&](double f) { progress.show("baking " + std::to_string(static_cast<int>(f * 100.0)) + "%"); };
+    control.progress = [&](double f) {
+        progress.show("baking " + std::to_string(static_cast<int>(f * 100.0)) + "%");
+    };
     const BakedTexture baked = bakeTexture(genome, mesh, settings, &control);
     progress.finish();
     std::string name =

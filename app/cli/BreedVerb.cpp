@@ -26,7 +26,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* BreedHelp = R"(usage: marbler breed OPERATOR PARENT... --seed N [--count K] [--strength S] -o DIR
+constexpr const char* BreedHelp =
+    R"(usage: marbler breed OPERATOR PARENT... --seed N [--count K] [--strength S] -o DIR
 
 Writes K children of the PARENT genome files (or PNG or TIFF images that carry genomes), made
 by a genetic operator, as DIR/child-01.marble.json, DIR/child-02.marble.json, ... (DIR is
@@ -86,10 +87,9 @@ std::string encodeBase64(const std::string& bytes) {
 /// enough to leave the genome within its size limit; nullopt otherwise.
 std::optional<std::string> dataUriOf(const fs::path& file) {
     const std::string extension = lowerExtension(file);
-    const std::map<std::string, std::string> types{{".png", "image/png"},   {".jpg", "image/jpeg"},
-                                                   {".jpeg", "image/jpeg"}, {".tif", "image/tiff"},
-                                                   {".tiff", "image/tiff"}, {".bmp", "image/bmp"},
-                                                   {".exr", "image/x-exr"}};
+    const std::map<std::string, std::string> types{
+        {".png", "image/png"},   {".jpg", "image/jpeg"}, {".jpeg", "image/jpeg"}, {".tif", "image/tiff"},
+        {".tiff", "image/tiff"}, {".bmp", "image/bmp"},  {".exr", "image/x-exr"}};
     auto type = types.find(extension);
     std::error_code ec;
     const std::uintmax_t size = fs::file_size(file, ec);
@@ -115,8 +115,7 @@ void rebaseSource(Genome& child, const fs::path& dir) {
     fs::path target = fs::absolute(base / image).lexically_normal();
     const fs::path rebased = target.lexically_proximate(fs::absolute(dir).lexically_normal());
     child.source->image = rebased.generic_string();
-    if (parent.kind != SourceLocation::Kind::Inside || (!rebased.empty() && *rebased.begin() != ".."))
-        return;
+    if (parent.kind != SourceLocation::Kind::Inside || (!rebased.empty() && *rebased.begin() != "..")) return;
     if (std::optional<std::string> embedded = dataUriOf(parent.file)) child.source->image = *embedded;
 }
 
@@ -129,10 +128,12 @@ int runBreed(std::span<const std::string> words) {
             std::cout << BreedHelp;
             return ExitOk;
         }
-        if (args.positional.empty()) throw InputError("an operator is required: alter, recombine, swap or reinit");
+        if (args.positional.empty())
+            throw InputError("an operator is required: alter, recombine, swap or reinit");
         std::optional<GeneticOperator> op = parseOperator(args.positional[0]);
         if (!op)
-            throw InputError("unknown operator '" + args.positional[0] + "' (alter, recombine, swap or reinit)");
+            throw InputError("unknown operator '" + args.positional[0] +
+                             "' (alter, recombine, swap or reinit)");
 
         BreedRequest request;
         request.op = *op;
@@ -154,9 +155,11 @@ int runBreed(std::span<const std::string> words) {
         if (!out || out->empty()) throw InputError("-o DIR is required");
         fs::path dir(*out);
         std::error_code ec;
-        if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) throw InputError(dir.string() + ": exists and is not a folder");
+        if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+            throw InputError(dir.string() + ": exists and is not a folder");
 
-        for (std::size_t i = 1; i < args.positional.size(); ++i) request.parents.push_back(loadGenomeArgument("breed", args.positional[i]));
+        for (std::size_t i = 1; i < args.positional.size(); ++i)
+            request.parents.push_back(loadGenomeArgument("breed", args.positional[i]));
 
         // Everything is bred and serialised before the first byte is written, so bad input
         // never leaves a partial set of children.

@@ -68,8 +68,8 @@ int parseIntOption(const Args& args, const std::string& name, int fallback, int 
     if (ec != std::errc() || end != text->data() + text->size())
         throw InputError("--" + name + ": not an integer: '" + *text + "'");
     if (value < lo || value > hi)
-        throw InputError("--" + name + ": must be between " + std::to_string(lo) + " and " + std::to_string(hi) +
-                         " (got " + *text + ")");
+        throw InputError("--" + name + ": must be between " + std::to_string(lo) + " and " +
+                         std::to_string(hi) + " (got " + *text + ")");
     return static_cast<int>(value);
 }
 
@@ -85,15 +85,17 @@ double parseDoubleOption(const Args& args, const std::string& name, double fallb
 
 const std::string& oneGenomeArgument(const Args& args, const std::string& verb) {
     if (args.positional.size() != 1)
-        throw InputError(args.positional.empty() ? "a genome file is required (see marbler " + verb + " --help)"
-                                                 : "exactly one genome file is expected (got " +
-                                                       std::to_string(args.positional.size()) + ")");
+        throw InputError(args.positional.empty()
+                             ? "a genome file is required (see marbler " + verb + " --help)"
+                             : "exactly one genome file is expected (got " +
+                                   std::to_string(args.positional.size()) + ")");
     return args.positional.front();
 }
 
 std::string requiredOutput(const Args& args, const std::string& verb, const std::string& what) {
     const std::optional<std::string> output = args.has("o") ? args.get("o") : args.get("output");
-    if (!output || output->empty()) throw InputError("-o " + what + " is required (see marbler " + verb + " --help)");
+    if (!output || output->empty())
+        throw InputError("-o " + what + " is required (see marbler " + verb + " --help)");
     return *output;
 }
 
@@ -110,7 +112,8 @@ std::uint64_t parseSeedOption(const Args& args, const std::string& name) {
 double parseDpiOption(const Args& args, double fallback) {
     if (!args.has("dpi")) return fallback;
     double dpi = parseDoubleOption(args, "dpi", 0.0);
-    if (!(dpi > 0.0) || dpi > 1e6) throw InputError("--dpi: must be a positive number (got " + *args.get("dpi") + ")");
+    if (!(dpi > 0.0) || dpi > 1e6)
+        throw InputError("--dpi: must be a positive number (got " + *args.get("dpi") + ")");
     return dpi;
 }
 
@@ -136,7 +139,10 @@ std::vector<double> parseNumberList(const std::string& option, const std::string
 }
 
 std::pair<double, double> parsePrintSize(const std::string& text) {
-    auto bad = [&] { return InputError("--size: '" + text + "' is not WIDTHxHEIGHT with a unit cm, mm or in (e.g. 42x59.4cm)"); };
+    auto bad = [&] {
+        return InputError("--size: '" + text +
+                          "' is not WIDTHxHEIGHT with a unit cm, mm or in (e.g. 42x59.4cm)");
+    };
     if (text.size() < 3) throw bad();
     std::string unit = text.substr(text.size() - 2);
     double perInch = unit == "cm" ? 2.54 : unit == "mm" ? 25.4 : unit == "in" ? 1.0 : 0.0;
@@ -146,7 +152,8 @@ std::pair<double, double> parsePrintSize(const std::string& text) {
     if (x == std::string::npos) throw bad();
     std::vector<double> w = parseNumberList("size", numbers.substr(0, x), 1);
     std::vector<double> h = parseNumberList("size", numbers.substr(x + 1), 1);
-    if (!(w[0] > 0.0) || !(h[0] > 0.0)) throw InputError("--size: width and height must be > 0 (got '" + text + "')");
+    if (!(w[0] > 0.0) || !(h[0] > 0.0))
+        throw InputError("--size: width and height must be > 0 (got '" + text + "')");
     return {w[0] / perInch, h[0] / perInch};
 }
 
@@ -154,7 +161,8 @@ int pixelsOf(double value, const std::string& what) {
     double rounded = std::round(value);
     if (!(rounded >= 1.0)) throw InputError(what + " comes to less than one pixel");
     if (rounded > MaxImageSide)
-        throw InputError(what + " comes to " + std::to_string(static_cast<long long>(std::min(rounded, 1e18))) +
+        throw InputError(what + " comes to " +
+                         std::to_string(static_cast<long long>(std::min(rounded, 1e18))) +
                          " pixels, more than the largest side of " + std::to_string(MaxImageSide));
     return static_cast<int>(rounded);
 }
@@ -162,7 +170,8 @@ int pixelsOf(double value, const std::string& what) {
 Genome loadGenomeArgument(const char* verb, const std::string& file) {
     std::vector<std::string> warnings;
     Genome genome = loadDesign(file, &warnings);
-    for (const std::string& warning : warnings) std::cerr << "marbler " << verb << ": warning: " << warning << '\n';
+    for (const std::string& warning : warnings)
+        std::cerr << "marbler " << verb << ": warning: " << warning << '\n';
     return genome;
 }
 

@@ -42,7 +42,8 @@ std::string cpuModel() {
 
 std::string joined(const std::vector<std::string>& names) {
     std::string out;
-    for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
+    for (const std::string& name : names)
+        out += (out.empty() ? "" : ", ") + name;
     return out;
 }
 
@@ -52,7 +53,8 @@ int doctor(std::span<const std::string> words) {
         std::cout << DoctorHelp;
         return ExitOk;
     }
-    if (!args.positional.empty()) throw InputError("doctor takes no arguments (got '" + args.positional[0] + "')");
+    if (!args.positional.empty())
+        throw InputError("doctor takes no arguments (got '" + args.positional[0] + "')");
 
     std::cout << "marbler: 0.1.0\n";
     std::cout << "machine: " << cpuModel() << ", " << std::thread::hardware_concurrency() << " threads\n";

@@ -31,7 +31,8 @@ file and the JSON location of the first problem).
 /// "5 (drop 3, spray 2)": the total, then the count of each tool in table order.
 std::string countsByTool(const std::vector<Operation>& ops) {
     std::array<std::size_t, ToolCount> counts{};
-    for (const Operation& op : ops) ++counts[static_cast<std::size_t>(op.tool)];
+    for (const Operation& op : ops)
+        ++counts[static_cast<std::size_t>(op.tool)];
     std::ostringstream text;
     text << ops.size();
     const char* separator = " (";
@@ -61,14 +62,16 @@ int runInfo(std::span<const std::string> words) {
             std::cout << InfoHelp;
             return ExitOk;
         }
-        if (args.positional.size() != 1) throw InputError("expected one genome file (see marbler info --help)");
+        if (args.positional.size() != 1)
+            throw InputError("expected one genome file (see marbler info --help)");
         const std::string& file = args.positional[0];
 
         Genome genome = loadGenomeArgument("info", file);
         if (const SourceLocation where = locateSource(genome); where.kind == SourceLocation::Kind::Outside)
-            std::cerr << "marbler info: warning: " << file << ": source.image: '" << genome.source->image << "' ("
-                      << where.file.string()
-                      << ") lies outside the genome's folder; render reads it only with --allow-external-source\n";
+            std::cerr
+                << "marbler info: warning: " << file << ": source.image: '" << genome.source->image << "' ("
+                << where.file.string()
+                << ") lies outside the genome's folder; render reads it only with --allow-external-source\n";
 
         std::ostringstream out;
         out << "file:       " << file << '\n';
@@ -79,8 +82,10 @@ int runInfo(std::span<const std::string> words) {
         out << "size:       " << number(genome.size.x) << " x " << number(genome.size.y);
         if (genome.dimension == 3) out << " x " << number(genome.size.z);
         out << '\n';
-        out << "palette:    " << genome.palette.size() << (genome.palette.size() == 1 ? " colour:" : " colours:");
-        for (const Color& color : genome.palette) out << ' ' << toHex(color);
+        out << "palette:    " << genome.palette.size()
+            << (genome.palette.size() == 1 ? " colour:" : " colours:");
+        for (const Color& color : genome.palette)
+            out << ' ' << toHex(color);
         out << '\n';
         out << "background: " << toHex(genome.background) << '\n';
         if (genome.bleed > 0.0) out << "bleed:      " << number(genome.bleed) << " design units\n";

@@ -49,7 +49,8 @@ int paper(std::span<const std::string> words) {
         std::cout << PaperHelp;
         return ExitOk;
     }
-    if (!args.positional.empty()) throw InputError("unexpected argument '" + args.positional[0] + "' (see marbler paper --help)");
+    if (!args.positional.empty())
+        throw InputError("unexpected argument '" + args.positional[0] + "' (see marbler paper --help)");
 
     // Every option is checked before anything is made or written.
     std::pair<double, double> inches = parsePrintSize(args.get("size").value_or("21x29.7cm"));

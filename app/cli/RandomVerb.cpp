@@ -13,7 +13,8 @@
 namespace marbler::cli {
 namespace {
 
-constexpr const char* RandomHelp = R"(usage: marbler random [--dimension 2|3 | --family NAME] --seed N -o OUT.marble.json
+constexpr const char* RandomHelp =
+    R"(usage: marbler random [--dimension 2|3 | --family NAME] --seed N -o OUT.marble.json
        marbler random --families
 
 Writes a random genome: a harmonious palette, a bath covered with drops like a stone
@@ -36,7 +37,8 @@ options:
 /// "stone, gel-git, ..." for messages.
 std::string familyNames() {
     std::string names;
-    for (const Family& f : allFamilies()) names += (names.empty() ? "" : ", ") + std::string(f.name);
+    for (const Family& f : allFamilies())
+        names += (names.empty() ? "" : ", ") + std::string(f.name);
     return names;
 }
 
@@ -44,12 +46,14 @@ std::string familyNames() {
 
 int runRandom(std::span<const std::string> words) {
     return guarded("random", [&] {
-        Args args = parseArgs(words, {"dimension", "family", "seed", "o", "output"}, {"h", "help", "families"});
+        Args args =
+            parseArgs(words, {"dimension", "family", "seed", "o", "output"}, {"h", "help", "families"});
         if (args.has("h") || args.has("help")) {
             std::cout << RandomHelp;
             return ExitOk;
         }
-        if (!args.positional.empty()) throw InputError("unexpected argument '" + args.positional[0] + "' (see marbler random --help)");
+        if (!args.positional.empty())
+            throw InputError("unexpected argument '" + args.positional[0] + "' (see marbler random --help)");
         if (args.has("families")) {
             for (const Family& f : allFamilies()) {
                 std::string name(f.name);
@@ -61,9 +65,11 @@ int runRandom(std::span<const std::string> words) {
         const Family* family = nullptr;
         if (std::optional<std::string> name = args.get("family")) {
             family = findFamily(*name);
-            if (!family) throw InputError("--family: no family '" + *name + "' (one of " + familyNames() + ")");
+            if (!family)
+                throw InputError("--family: no family '" + *name + "' (one of " + familyNames() + ")");
             if (args.has("dimension") && parseIntOption(args, "dimension", 2, 2, 3) != family->dimension)
-                throw InputError("--family " + *name + " is " + (family->dimension == 3 ? "solid (3D)" : "flat (2D)") +
+                throw InputError("--family " + *name + " is " +
+                                 (family->dimension == 3 ? "solid (3D)" : "flat (2D)") +
                                  ", not --dimension " + *args.get("dimension"));
         }
         int dimension = parseIntOption(args, "dimension", 2, 2, 3);

@@ -18,7 +18,6 @@
 #include <limits>
 #include <sstream>
 
-
 namespace marbler::cli {
 namespace {
 
@@ -67,14 +66,15 @@ options:
   -h, --help                this text
 )";
 
-int renderGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
-                 const ExportOptions& exportOptions, const std::optional<std::pair<double, double>>& printSize,
+int renderGenome(const Args& args, const std::string& genomeName, const Genome& genome,
+                 RenderSettings settings, const ExportOptions& exportOptions,
+                 const std::optional<std::pair<double, double>>& printSize,
                  const std::filesystem::path& outFile);
 
 int render(std::span<const std::string> words) {
     Args args = parseArgs(words,
-                          {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
-                           "supersample", "cut", "threads", "repeat", "steps"},
+                          {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh",
+                           "view", "supersample", "cut", "threads", "repeat", "steps"},
                           {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << RenderHelp;
@@ -100,15 +100,18 @@ int render(std::span<const std::string> words) {
     if (auto size = args.get("size")) {
         printSize = parsePrintSize(*size);
         if (!exportOptions.dpi) throw InputError("--size needs --dpi to give the pixel size");
-        if (args.has("width") || args.has("height")) throw InputError("--size and --width/--height exclude each other");
+        if (args.has("width") || args.has("height"))
+            throw InputError("--size and --width/--height exclude each other");
     }
     if (auto repeat = args.get("repeat"); repeat && *repeat != "mirror")
-        throw InputError("--repeat: '" + *repeat + "' is not a repeat Marbler makes; 'mirror' is the one (an exact "
+        throw InputError("--repeat: '" + *repeat +
+                         "' is not a repeat Marbler makes; 'mirror' is the one (an exact "
                          "straight repeat is impossible for drops)");
     const bool meshMode = args.has("mesh");
     if (meshMode && !args.has("view")) throw InputError("--mesh needs --view YAW,PITCH");
     for (const char* meshOnly : {"view", "supersample", "cut"})
-        if (!meshMode && args.has(meshOnly)) throw InputError(std::string("--") + meshOnly + " only applies with --mesh");
+        if (!meshMode && args.has(meshOnly))
+            throw InputError(std::string("--") + meshOnly + " only applies with --mesh");
     if (auto cut = args.get("cut")) {
         std::vector<double> plane = parseNumberList("cut", *cut, 4);
         if (plane[0] == 0.0 && plane[1] == 0.0 && plane[2] == 0.0)
@@ -123,7 +126,8 @@ int render(std::span<const std::string> words) {
     if (steps >= 0) {
         if (static_cast<std::size_t>(steps) > stepCount(genome))
             throw InputError(genomeName + ": --steps: must be between 0 and the design's " +
-                             std::to_string(stepCount(genome)) + " steps (got " + std::to_string(steps) + ")");
+                             std::to_string(stepCount(genome)) + " steps (got " + std::to_string(steps) +
+                             ")");
         genome = designAfterSteps(genome, static_cast<std::size_t>(steps));
     }
 
@@ -137,16 +141,19 @@ int render(std::span<const std::string> words) {
     }
 }
 
-int renderGenome(const Args& args, const std::string& genomeName, const Genome& genome, RenderSettings settings,
-                 const ExportOptions& exportOptions, const std::optional<std::pair<double, double>>& printSize,
+int renderGenome(const Args& args, const std::string& genomeName, const Genome& genome,
+                 RenderSettings settings, const ExportOptions& exportOptions,
+                 const std::optional<std::pair<double, double>>& printSize,
                  const std::filesystem::path& outFile) {
     const bool meshMode = args.has("mesh");
     auto withGenome = [&](const std::string& message) { return genomeName + ": " + message; };
     if (genome.dimension == 3 && !settings.slice && !meshMode)
         throw InputError(withGenome("a solid (3D) genome needs --slice AXIS=VALUE (e.g. z=" +
                                     std::to_string(static_cast<int>(genome.size.z / 2)) + ") or --mesh"));
-    if (genome.dimension == 2 && settings.slice) throw InputError(withGenome("--slice needs a solid (3D) genome; this one is flat (2D)"));
-    if (genome.dimension == 2 && meshMode) throw InputError(withGenome("--mesh needs a solid (3D) genome; this one is flat (2D)"));
+    if (genome.dimension == 2 && settings.slice)
+        throw InputError(withGenome("--slice needs a solid (3D) genome; this one is flat (2D)"));
+    if (genome.dimension == 2 && meshMode)
+        throw InputError(withGenome("--mesh needs a solid (3D) genome; this one is flat (2D)"));
 
     // Pixel size: --size with --dpi, else --width/--height keeping the region's aspect, else
     // 1024 on the longer side.
@@ -169,7 +176,8 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
         if (hasW) width = parseIntOption(args, "width", 0, 1, MaxImageSide);
         if (hasH) height = parseIntOption(args, "height", 0, 1, MaxImageSide);
         if (hasW && !hasH) height = pixelsOf(width / aspect, "the height for width " + std::to_string(width));
-        if (hasH && !hasW) width = pixelsOf(height * aspect, "the width for height " + std::to_string(height));
+        if (hasH && !hasW)
+            width = pixelsOf(height * aspect, "the width for height " + std::to_string(height));
         if (!hasW && !hasH) {
             if (aspect >= 1.0) {
                 width = 1024;
@@ -187,12 +195,14 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
                    4 * std::int64_t(width) * height > MaxImagePixels))
         throw InputError("--repeat mirror: the tile of " + std::to_string(2 * std::int64_t(width)) + " x " +
                          std::to_string(2 * std::int64_t(height)) + " pixels is too large (at most " +
-                         std::to_string(MaxImageSide) + " pixels a side and " + std::to_string(MaxImagePixels) +
-                         " pixels in all)");
+                         std::to_string(MaxImageSide) + " pixels a side and " +
+                         std::to_string(MaxImagePixels) + " pixels in all)");
 
     ProgressLine progress(args);
     RenderControl control;
-    control.progress = [&](double f) { progress.show("rendering " + std::to_string(static_cast<int>(f * 100.0)) + "%"); };
+    control.progress = [&](double f) {
+        progress.show("rendering " + std::to_string(static_cast<int>(f * 100.0)) + "%");
+    };
 
     if (meshMode || args.has("gpu")) {
 #ifdef MARBLER_HAVE_GUI
@@ -222,8 +232,9 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
         writeImage(repeat ? mirrorRepeat(image) : image, outFile, withGenome);
         return ExitOk;
 #else
-        throw RuntimeFailure(std::string(meshMode ? "--mesh" : "--gpu") +
-                             " needs the OpenGL back end, and this build has none (built without MARBLER_BUILD_GUI)");
+        throw RuntimeFailure(
+            std::string(meshMode ? "--mesh" : "--gpu") +
+            " needs the OpenGL back end, and this build has none (built without MARBLER_BUILD_GUI)");
 #endif
     }
 

@@ -51,11 +51,13 @@ int svg(std::span<const std::string> words) {
     oneGenomeArgument(args, "svg");
     const std::optional<std::string> output = requiredOutput(args, "svg", "OUT.svg");
     const std::filesystem::path outFile(*output);
-    if (lowerExtension(outFile) != ".svg") throw InputError(*output + ": the output of marbler svg must end in .svg");
+    if (lowerExtension(outFile) != ".svg")
+        throw InputError(*output + ": the output of marbler svg must end in .svg");
     VectorOptions options;
     options.tolerance = parseDoubleOption(args, "tolerance", 1.0);
     if (!(options.tolerance > 0.0))
-        throw InputError("--tolerance: must be a positive number of design units (got " + *args.get("tolerance") + ")");
+        throw InputError("--tolerance: must be a positive number of design units (got " +
+                         *args.get("tolerance") + ")");
     // Straight runs may span up to 16 T: about 4 x fewer vertices at T = 1 on the examples.
     if (args.has("simplify")) options.straightChord = 16.0;
 
@@ -74,13 +76,14 @@ int svg(std::span<const std::string> words) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if (design.gapsAtDepthCap > 0)
-        std::cerr << "marbler svg: warning: " << genomeName << ": " << design.gapsAtDepthCap
-                  << " gaps stay wider than the tolerance where an outline runs through the centre of a later "
-                     "drop (the drop covers them)\n";
+        std::cerr
+            << "marbler svg: warning: " << genomeName << ": " << design.gapsAtDepthCap
+            << " gaps stay wider than the tolerance where an outline runs through the centre of a later "
+               "drop (the drop covers them)\n";
     if (args.has("stats"))
         std::cout << "outlines " << design.outlines.size() << " vertices " << design.vertexCount
-                  << " dropped-as-straight " << design.droppedAsStraight << " bytes " << text.size() << " seconds "
-                  << seconds << '\n';
+                  << " dropped-as-straight " << design.droppedAsStraight << " bytes " << text.size()
+                  << " seconds " << seconds << '\n';
     return ExitOk;
 }
 

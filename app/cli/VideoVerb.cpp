@@ -14,7 +14,6 @@
 #include <iostream>
 #include <system_error>
 
-
 namespace marbler::cli {
 namespace {
 
@@ -47,14 +46,16 @@ options:
 /// temporary is dropped.
 class FrameOutput {
 public:
-    FrameOutput(const fs::path& out, int width, int height, double fps) : mOut(out) {
+    FrameOutput(const fs::path& out, int width, int height, double fps)
+        : mOut(out) {
         if (isVideoFile(out)) {
             mVideo = openVideoWriter(out, width, height, fps);
             return;
         }
         std::error_code ec;
         if (fs::exists(out, ec) && !fs::is_directory(out, ec))
-            throw InputError("'" + out.string() + "' is a file; OUT is a folder or a .gif, .webp, .mp4 or .webm file");
+            throw InputError("'" + out.string() +
+                             "' is a file; OUT is a folder or a .gif, .webp, .mp4 or .webm file");
         if (!fs::exists(out, ec)) {
             if (!fs::create_directories(out, ec) || ec)
                 throw RuntimeFailure("cannot create the folder '" + out.string() + "': " + ec.message());
@@ -66,7 +67,8 @@ public:
         if (mCommitted) return;
         mVideo.reset();
         std::error_code ec;
-        for (const fs::path& file : mWritten) fs::remove(file, ec);
+        for (const fs::path& file : mWritten)
+            fs::remove(file, ec);
         if (mMadeFolder) fs::remove(mOut, ec);
     }
 
@@ -101,8 +103,8 @@ private:
 };
 
 int video(std::span<const std::string> words) {
-    Args args = parseArgs(words, {"o", "output", "width", "aa", "threads"},
-                          {"quiet", "progress", "help", "h"});
+    Args args =
+        parseArgs(words, {"o", "output", "width", "aa", "threads"}, {"quiet", "progress", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << VideoHelp;
         return ExitOk;
@@ -125,7 +127,8 @@ int video(std::span<const std::string> words) {
     const std::string genomeName = args.positional[0];
     const Genome genome = loadGenomeArgument("video", genomeName);
     if (genome.dimension != 2)
-        throw InputError(genomeName + ": a solid (3D) genome cannot marble a video; video needs a flat (2D) one");
+        throw InputError(genomeName +
+                         ": a solid (3D) genome cannot marble a video; video needs a flat (2D) one");
     const fs::path in(args.positional[1]);
     std::unique_ptr<VideoReader> reader = openVideoReader(in);
 

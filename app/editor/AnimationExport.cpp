@@ -26,11 +26,16 @@ namespace marbler::ui {
 
 QString animationExtension(AnimationFormat format) {
     switch (format) {
-    case AnimationFormat::PngFrames: return {};
-    case AnimationFormat::Gif: return QStringLiteral("gif");
-    case AnimationFormat::WebP: return QStringLiteral("webp");
-    case AnimationFormat::Mp4: return QStringLiteral("mp4");
-    case AnimationFormat::WebM: return QStringLiteral("webm");
+    case AnimationFormat::PngFrames:
+        return {};
+    case AnimationFormat::Gif:
+        return QStringLiteral("gif");
+    case AnimationFormat::WebP:
+        return QStringLiteral("webp");
+    case AnimationFormat::Mp4:
+        return QStringLiteral("mp4");
+    case AnimationFormat::WebM:
+        return QStringLiteral("webm");
     }
     return {};
 }
@@ -55,8 +60,9 @@ AnimationExportDialog::AnimationExportDialog(const Genome& design, const Animati
     mFormat->addItem(tr("MP4 (H.264)"), int(AnimationFormat::Mp4));
     mFormat->addItem(tr("WebM (VP9)"), int(AnimationFormat::WebM));
     mFormat->setCurrentIndex(std::max(0, mFormat->findData(int(start.format))));
-    mFormat->setToolTip(tr("What to write: a folder of PNG frames (each carries the design it shows), an animated "
-                           "image or a video"));
+    mFormat->setToolTip(
+        tr("What to write: a folder of PNG frames (each carries the design it shows), an animated "
+           "image or a video"));
     mPath->setObjectName(QStringLiteral("animationPath"));
     mPath->setText(start.path);
     mPath->setToolTip(tr("The file to write, or for PNG frames a new or empty folder"));
@@ -150,9 +156,10 @@ void AnimationExportDialog::browse() {
         chosen = QFileDialog::getExistingDirectory(this, tr("Folder for the PNG frames"), mPath->text());
     else {
         const QString ext = animationExtension(format);
-        chosen = withAnimationExtension(QFileDialog::getSaveFileName(this, tr("Export animation"), mPath->text(),
-                                                                     tr("%1 files (*.%2)").arg(ext.toUpper(), ext)),
-                                        format);
+        chosen = withAnimationExtension(
+            QFileDialog::getSaveFileName(this, tr("Export animation"), mPath->text(),
+                                         tr("%1 files (*.%2)").arg(ext.toUpper(), ext)),
+            format);
     }
     if (!chosen.isEmpty()) mPath->setText(chosen);
 }
@@ -175,7 +182,8 @@ AnimationExportSettings AnimationExportDialog::settings() const {
     return s;
 }
 
-AnimationExportJob::AnimationExportJob(QObject* parent) : QObject(parent) {}
+AnimationExportJob::AnimationExportJob(QObject* parent)
+    : QObject(parent) {}
 
 AnimationExportJob::~AnimationExportJob() {
     if (mCancel) mCancel->store(true);
@@ -202,25 +210,30 @@ bool AnimationExportJob::start(const Genome& design, const AnimationExportSettin
             if (std::filesystem::exists(out, ec)) {
                 const bool dir = std::filesystem::is_directory(out, ec);
                 if (frames ? !dir || !std::filesystem::is_empty(out, ec) : dir)
-                    throw InputError(out.string() + ": already exists; choose a new or empty folder for PNG frames");
+                    throw InputError(out.string() +
+                                     ": already exists; choose a new or empty folder for PNG frames");
             }
             auto last = std::make_shared<std::atomic<int>>(-1);
-            writeAnimation(design, render, out, count, fps, cancel.get(), [this, last, count](int frame, double within) {
-                const int permille = int((frame + within) / count * 1000.0);
-                if (last->exchange(permille) == permille) return;
-                QMetaObject::invokeMethod(this, [this, permille] { emit progress(permille / 1000.0); },
-                                          Qt::QueuedConnection);
-            });
+            writeAnimation(
+                design, render, out, count, fps, cancel.get(), [this, last, count](int frame, double within) {
+                    const int permille = int((frame + within) / count * 1000.0);
+                    if (last->exchange(permille) == permille) return;
+                    QMetaObject::invokeMethod(
+                        this, [this, permille] { emit progress(permille / 1000.0); }, Qt::QueuedConnection);
+                });
             ok = true;
         } catch (const Cancelled&) {
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }
-        QMetaObject::invokeMethod(this, [this, ok, error] {
-            if (mThread.joinable()) mThread.join();
-            mRunning = false;
-            emit finished(ok, error);
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this,
+            [this, ok, error] {
+                if (mThread.joinable()) mThread.join();
+                mRunning = false;
+                emit finished(ok, error);
+            },
+            Qt::QueuedConnection);
     });
     return true;
 }

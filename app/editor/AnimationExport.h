@@ -27,10 +27,10 @@ enum class AnimationFormat { PngFrames, Gif, WebP, Mp4, WebM };
 
 /// What to write.
 struct AnimationExportSettings {
-    QString path;              ///< the file, or for PNG frames the folder (new or empty)
+    QString path; ///< the file, or for PNG frames the folder (new or empty)
     AnimationFormat format = AnimationFormat::Gif;
     int width = 512, height = 512;
-    int frames = 100;          ///< at least 2
+    int frames = 100; ///< at least 2
     double fps = 25.0;
     std::optional<Slice> slice; ///< the cross-section of a solid
 };
@@ -46,7 +46,8 @@ class AnimationExportDialog : public QDialog {
     Q_OBJECT
 public:
     /// For `design` (its aspect sets the default height), starting from `start`.
-    AnimationExportDialog(const Genome& design, const AnimationExportSettings& start, QWidget* parent = nullptr);
+    AnimationExportDialog(const Genome& design, const AnimationExportSettings& start,
+                          QWidget* parent = nullptr);
     /// The settings chosen.
     AnimationExportSettings settings() const;
 

@@ -46,21 +46,26 @@ bool hasRadius(Tool tool) {
 } // namespace
 
 EditorCanvas::EditorCanvas(RenderService* renderer, QWidget* parent)
-    : QWidget(parent), mRenderer(renderer), mKey(nextCanvasKey()) {
+    : QWidget(parent)
+    , mRenderer(renderer)
+    , mKey(nextCanvasKey()) {
     setObjectName(QStringLiteral("editorCanvas"));
     setMinimumSize(240, 240);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
-    setToolTip(tr("Drag with the current tool; middle or right drag (or Space and drag) pans, the wheel zooms, "
-                  "0 fits, 1 shows one to one"));
+    setToolTip(
+        tr("Drag with the current tool; middle or right drag (or Space and drag) pans, the wheel zooms, "
+           "0 fits, 1 shows one to one"));
     connect(mRenderer, &RenderService::rendered, this, &EditorCanvas::onRendered);
     mSlice = Slice{2, mDesign.size.z / 2.0};
     updateDesignSize();
     setTool(mTool);
 }
 
-EditorCanvas::~EditorCanvas() { mRenderer->cancel(mKey); }
+EditorCanvas::~EditorCanvas() {
+    mRenderer->cancel(mKey);
+}
 
 void EditorCanvas::setDesign(const Genome& rendered) {
     const bool resized = rendered.size != mDesign.size || rendered.dimension != mDesign.dimension;
@@ -84,7 +89,9 @@ void EditorCanvas::setTool(EditorTool tool) {
     setCursor(tool == EditorTool::Pick ? Qt::PointingHandCursor : Qt::CrossCursor);
 }
 
-void EditorCanvas::setToolSettings(const ToolSettings& settings) { mSettings = settings; }
+void EditorCanvas::setToolSettings(const ToolSettings& settings) {
+    mSettings = settings;
+}
 
 void EditorCanvas::setHandlesFor(std::optional<std::size_t> renderedIndex) {
     mHandles = renderedIndex;
@@ -227,15 +234,24 @@ void EditorCanvas::wheelEvent(QWheelEvent* event) {
 void EditorCanvas::keyPressEvent(QKeyEvent* event) {
     switch (event->key()) {
     case Qt::Key_Plus:
-    case Qt::Key_Equal: zoomIn(); return;
-    case Qt::Key_Minus: zoomOut(); return;
-    case Qt::Key_0: fitView(); return;
-    case Qt::Key_1: oneToOne(); return;
+    case Qt::Key_Equal:
+        zoomIn();
+        return;
+    case Qt::Key_Minus:
+        zoomOut();
+        return;
+    case Qt::Key_0:
+        fitView();
+        return;
+    case Qt::Key_1:
+        oneToOne();
+        return;
     case Qt::Key_Space:
         if (!event->isAutoRepeat()) mSpace = true;
         setCursor(Qt::OpenHandCursor);
         return;
-    default: QWidget::keyPressEvent(event);
+    default:
+        QWidget::keyPressEvent(event);
     }
 }
 
@@ -252,7 +268,8 @@ std::optional<Operation> EditorCanvas::selectedStep() const {
     if (!mHandles) return std::nullopt;
     const std::size_t i = *mHandles;
     if (i < mDesign.initial.size()) return mDesign.initial[i];
-    if (i - mDesign.initial.size() < mDesign.operations.size()) return mDesign.operations[i - mDesign.initial.size()];
+    if (i - mDesign.initial.size() < mDesign.operations.size())
+        return mDesign.operations[i - mDesign.initial.size()];
     return std::nullopt;
 }
 
@@ -318,7 +335,8 @@ void EditorCanvas::mousePressEvent(QMouseEvent* event) {
     }
     if (mTool == EditorTool::Pick) {
         const TracedInk ink = traceStep(prepare(mDesign), toDesign(event->position()));
-        emit inkPicked(ink.color, ink.step >= 0 ? std::optional<std::size_t>(std::size_t(ink.step)) : std::nullopt);
+        emit inkPicked(ink.color,
+                       ink.step >= 0 ? std::optional<std::size_t>(std::size_t(ink.step)) : std::nullopt);
         return;
     }
     if (!toolAvailable(mTool, mDesign.dimension)) return;
@@ -333,7 +351,8 @@ void EditorCanvas::mouseMoveEvent(QMouseEvent* event) {
     const QPointF delta = event->position() - mLastPos;
     mLastPos = event->position();
     switch (mDrag) {
-    case Drag::None: return;
+    case Drag::None:
+        return;
     case Drag::Pan:
         mView.panBy(delta * devicePixelRatioF());
         update();
@@ -363,7 +382,8 @@ void EditorCanvas::mouseMoveEvent(QMouseEvent* event) {
 void EditorCanvas::mouseReleaseEvent(QMouseEvent* event) {
     const Drag drag = std::exchange(mDrag, Drag::None);
     switch (drag) {
-    case Drag::None: return;
+    case Drag::None:
+        return;
     case Drag::Pan:
         setTool(mTool);
         rerender();
@@ -466,7 +486,9 @@ void EditorCanvas::drawStepOutline(QPainter& painter, const Operation& op) const
         painter.drawEllipse(c, r, r);
         break;
     }
-    case Tool::Flow: painter.drawRect(QRectF(c, QSizeF(op.extent.x * scale, op.extent.y * scale))); break;
+    case Tool::Flow:
+        painter.drawRect(QRectF(c, QSizeF(op.extent.x * scale, op.extent.y * scale)));
+        break;
     case Tool::Line:
     case Tool::Comb:
     case Tool::Wave:
@@ -485,7 +507,8 @@ void EditorCanvas::drawOverlay(QPainter& p) const {
             p.setBrush(Qt::NoBrush);
             const QPointF a = toWidget(mPress), b = toWidget(mCurrent);
             if (a != b) p.drawLine(a, b);
-            for (const Operation& op : mPending) drawStepOutline(p, op);
+            for (const Operation& op : mPending)
+                drawStepOutline(p, op);
         }
     }
     const auto handles = handlePoints();

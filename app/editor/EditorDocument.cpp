@@ -43,10 +43,16 @@ namespace {
 /// How a merged command names the change from its first state to its last.
 using Describe = std::function<QString(const EditorState& before, const EditorState& after)>;
 
-QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
-QString hexName(Color c) { return QString::fromStdString(toHex(c)); }
+QString fromView(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+QString hexName(Color c) {
+    return QString::fromStdString(toHex(c));
+}
 /// A number as the history shows it: up to four significant figures, no locale.
-QString number(double v) { return QString::number(v, 'g', 4); }
+QString number(double v) {
+    return QString::number(v, 'g', 4);
+}
 
 const Operation& stepOf(const Genome& g, std::size_t i) {
     return i < g.initial.size() ? g.initial.at(i) : g.operations.at(i - g.initial.size());
@@ -74,7 +80,8 @@ nlohmann::ordered_json stepJson(const Genome& design, const Operation& op, bool 
 }
 
 /// The step a file form gives, read by the genome parser (every rule checked). Throws Error.
-Operation parseStep(const Genome& design, const nlohmann::ordered_json& json, bool initial, const std::string& name) {
+Operation parseStep(const Genome& design, const nlohmann::ordered_json& json, bool initial,
+                    const std::string& name) {
     nlohmann::ordered_json j = toJson(holder(design, std::nullopt, initial));
     j["version"] = FormatVersion;
     j[initial ? "initial" : "operations"] = nlohmann::ordered_json::array({json});
@@ -127,8 +134,10 @@ Place placeFor(const Genome& g, Tool tool, std::size_t at) {
 Operation takeStep(EditorState& s, std::size_t i) {
     auto& g = s.design;
     Operation op = stepOf(g, i);
-    if (i < g.initial.size()) g.initial.erase(g.initial.begin() + static_cast<std::ptrdiff_t>(i));
-    else g.operations.erase(g.operations.begin() + static_cast<std::ptrdiff_t>(i - g.initial.size()));
+    if (i < g.initial.size())
+        g.initial.erase(g.initial.begin() + static_cast<std::ptrdiff_t>(i));
+    else
+        g.operations.erase(g.operations.begin() + static_cast<std::ptrdiff_t>(i - g.initial.size()));
     s.muted.erase(s.muted.begin() + static_cast<std::ptrdiff_t>(i));
     return op;
 }
@@ -137,7 +146,8 @@ Operation takeStep(EditorState& s, std::size_t i) {
 /// steps kept aside in meta.editor.muted back in the list, muted, and meta without "editor".
 EditorState unpack(Genome design) {
     try {
-        Genome canonical = parseGenome(serializeGenome(design), design.fileName.empty() ? "design" : design.fileName);
+        Genome canonical =
+            parseGenome(serializeGenome(design), design.fileName.empty() ? "design" : design.fileName);
         canonical.baseDirectory = design.baseDirectory;
         canonical.fileName = design.fileName;
         canonical.allowExternalSource = design.allowExternalSource;
@@ -159,14 +169,15 @@ EditorState unpack(Genome design) {
     const auto& editor = meta["editor"];
     if (editor.is_object() && editor.contains("muted")) {
         const auto& muted = editor["muted"];
-        if (!muted.is_array()) qWarning("meta.editor.muted is not a list: muted steps left out");
+        if (!muted.is_array())
+            qWarning("meta.editor.muted is not a list: muted steps left out");
         else
             for (std::size_t k = 0; k < muted.size(); ++k) {
                 const std::string where = "meta.editor.muted[" + std::to_string(k) + "]";
                 try {
                     const auto& e = muted[k];
-                    if (!e.is_object() || !e.contains("step") || !e["step"].is_number_unsigned() || !e.contains("part")
-                        || !e["part"].is_string() || !e.contains("operation"))
+                    if (!e.is_object() || !e.contains("step") || !e["step"].is_number_unsigned() ||
+                        !e.contains("part") || !e["part"].is_string() || !e.contains("operation"))
                         throw InputError(where + ": needs \"step\", \"part\" and \"operation\"");
                     const std::string part = e["part"].get<std::string>();
                     if (part != "initial" && part != "operations")
@@ -184,14 +195,17 @@ EditorState unpack(Genome design) {
     std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
         return a.initial != b.initial ? a.initial : a.step < b.step;
     });
-    for (const Entry& e : entries) insertStep(s, e.step, e.op, e.initial, true);
+    for (const Entry& e : entries)
+        insertStep(s, e.step, e.op, e.initial, true);
     return s;
 }
 
 /// Whether the list of steps must be rebuilt: steps added, removed, moved or muted, or a step's
 /// tool changed; not for a parameter edit of one step.
-bool stepsDiffer(const Genome& a, const std::vector<bool>& mutedA, const Genome& b, const std::vector<bool>& mutedB) {
-    if (mutedA != mutedB || a.initial.size() != b.initial.size() || a.operations.size() != b.operations.size())
+bool stepsDiffer(const Genome& a, const std::vector<bool>& mutedA, const Genome& b,
+                 const std::vector<bool>& mutedB) {
+    if (mutedA != mutedB || a.initial.size() != b.initial.size() ||
+        a.operations.size() != b.operations.size())
         return true;
     int changed = 0;
     const auto compare = [&](const std::vector<Operation>& x, const std::vector<Operation>& y) {
@@ -216,7 +230,8 @@ QString describeStepEdit(const Genome& before, const Genome& after, std::size_t 
     const std::string text = describeChange(holder(before, a, initial), holder(after, b, initial));
     // The holders hold one step, which ChangeSummary calls "<tool> 1".
     const std::string prefix = std::string(toolSpec(a.tool).name) + " 1: ";
-    if (text.rfind(prefix, 0) == 0) return label + QStringLiteral(": ") + QString::fromStdString(text.substr(prefix.size()));
+    if (text.rfind(prefix, 0) == 0)
+        return label + QStringLiteral(": ") + QString::fromStdString(text.substr(prefix.size()));
     return label + QStringLiteral(": ") + QString::fromStdString(text);
 }
 
@@ -276,7 +291,8 @@ private:
     Describe mDescribe;
 };
 
-EditorDocument::EditorDocument(Genome design, QObject* parent) : QObject(parent) {
+EditorDocument::EditorDocument(Genome design, QObject* parent)
+    : QObject(parent) {
     EditorState s = unpack(std::move(design));
     mDesign = std::move(s.design);
     mMuted = std::move(s.muted);
@@ -324,13 +340,21 @@ Genome EditorDocument::fileGenome() const {
     return g;
 }
 
-std::size_t EditorDocument::stepCount() const { return mDesign.initial.size() + mDesign.operations.size(); }
+std::size_t EditorDocument::stepCount() const {
+    return mDesign.initial.size() + mDesign.operations.size();
+}
 
-const Operation& EditorDocument::step(std::size_t i) const { return stepOf(mDesign, i); }
+const Operation& EditorDocument::step(std::size_t i) const {
+    return stepOf(mDesign, i);
+}
 
-bool EditorDocument::isMuted(std::size_t i) const { return i < mMuted.size() && mMuted[i]; }
+bool EditorDocument::isMuted(std::size_t i) const {
+    return i < mMuted.size() && mMuted[i];
+}
 
-QString EditorDocument::stepName(std::size_t i) const { return stepLabel(mDesign, i); }
+QString EditorDocument::stepName(std::size_t i) const {
+    return stepLabel(mDesign, i);
+}
 
 std::size_t EditorDocument::insertionIndex(Tool tool, std::optional<std::size_t> at) const {
     return placeFor(mDesign, tool, at.value_or(stepCount())).index;
@@ -372,9 +396,9 @@ void EditorDocument::setStep(std::size_t i, const Operation& op, int mergeId) {
     (initial ? after.design.initial[i] : after.design.operations[i - mDesign.initial.size()]) =
         canonicalStep(mDesign, op, initial);
     const QString text = describeStepEdit(mDesign, after.design, i);
-    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), text, mergeId,
-                        QStringLiteral("step:%1").arg(i),
-                        [i](const EditorState& a, const EditorState& b) { return describeStepEdit(a.design, b.design, i); });
+    EditorCommand::push(
+        this, &mUndo, {mDesign, mMuted}, std::move(after), text, mergeId, QStringLiteral("step:%1").arg(i),
+        [i](const EditorState& a, const EditorState& b) { return describeStepEdit(a.design, b.design, i); });
 }
 
 void EditorDocument::removeStep(std::size_t i) {
@@ -388,7 +412,8 @@ std::size_t EditorDocument::duplicateStep(std::size_t i) {
     if (i >= stepCount()) return i;
     EditorState after{mDesign, mMuted};
     insertStep(after, i + 1, step(i), isInitial(i), isMuted(i));
-    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after), tr("Duplicate %1").arg(stepName(i)));
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after),
+                        tr("Duplicate %1").arg(stepName(i)));
     return i + 1;
 }
 
@@ -421,16 +446,20 @@ void EditorDocument::setMuted(std::size_t i, bool muted) {
 void EditorDocument::setMuted(std::size_t first, std::size_t last, bool muted) {
     if (first > last || last >= stepCount()) return;
     EditorState after{mDesign, mMuted};
-    for (std::size_t i = first; i <= last; ++i) after.muted[i] = muted;
-    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after),
-                        (muted ? tr("Mute steps %1–%2") : tr("Unmute steps %1–%2")).arg(first + 1).arg(last + 1));
+    for (std::size_t i = first; i <= last; ++i)
+        after.muted[i] = muted;
+    EditorCommand::push(
+        this, &mUndo, {mDesign, mMuted}, std::move(after),
+        (muted ? tr("Mute steps %1–%2") : tr("Unmute steps %1–%2")).arg(first + 1).arg(last + 1));
 }
 
 void EditorDocument::setPaletteColor(int index, Color color, int mergeId) {
     if (index < 0 || index >= static_cast<int>(mDesign.palette.size())) return;
     const auto idx = static_cast<std::size_t>(index);
     const auto describe = [idx](const EditorState& a, const EditorState& b) {
-        return tr("Ink %1: %2 → %3").arg(idx + 1).arg(hexName(a.design.palette[idx]), hexName(b.design.palette[idx]));
+        return tr("Ink %1: %2 → %3")
+            .arg(idx + 1)
+            .arg(hexName(a.design.palette[idx]), hexName(b.design.palette[idx]));
     };
     EditorState after{mDesign, mMuted};
     after.design.palette[idx] = color;
@@ -471,8 +500,8 @@ void EditorDocument::setBleed(double bleed, int mergeId) {
     EditorState after = before;
     after.design.bleed = bleed;
     const QString text = describe(before, after);
-    EditorCommand::push(this, &mUndo, std::move(before), std::move(after), text, mergeId, QStringLiteral("bleed"),
-                        describe);
+    EditorCommand::push(this, &mUndo, std::move(before), std::move(after), text, mergeId,
+                        QStringLiteral("bleed"), describe);
 }
 
 void EditorDocument::replaceDesign(const Genome& design, const QString& text) {

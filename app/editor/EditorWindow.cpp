@@ -203,7 +203,8 @@ private:
 
 EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString& file, QWidget* parent,
                            const QString& recoveryFolder)
-    : QMainWindow(parent), mRenderer(renderer) {
+    : QMainWindow(parent)
+    , mRenderer(renderer) {
     setAttribute(Qt::WA_DeleteOnClose);
     setObjectName(QStringLiteral("editorWindow"));
     openEditors().append(this);
@@ -213,7 +214,8 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
         mDocument->noteFileOnDisk();
         addRecentFile(file);
     }
-    const QString folder = recoveryFolder == QStringLiteral("<default>") ? defaultRecoveryFolder() : recoveryFolder;
+    const QString folder =
+        recoveryFolder == QStringLiteral("<default>") ? defaultRecoveryFolder() : recoveryFolder;
     if (!folder.isEmpty()) mAutosave = std::make_unique<EditorAutosave>(mDocument, folder);
 
     const int dimension = mDocument->design().dimension;
@@ -281,8 +283,8 @@ bool EditorWindow::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() == QEvent::ShortcutOverride && isUndoKey(static_cast<QKeyEvent*>(event))) {
         // A spin box or line edit of this window would take the key for its own text undo.
         auto* widget = qobject_cast<QWidget*>(watched);
-        if (widget && isAncestorOf(widget)
-            && (qobject_cast<QAbstractSpinBox*>(widget) || qobject_cast<QLineEdit*>(widget))) {
+        if (widget && isAncestorOf(widget) &&
+            (qobject_cast<QAbstractSpinBox*>(widget) || qobject_cast<QLineEdit*>(widget))) {
             event->ignore();
             return true;
         }
@@ -353,7 +355,8 @@ void EditorWindow::buildDocks() {
         mSliceAxis->setObjectName(QStringLiteral("sliceAxis"));
         mSliceAxis->addItems({tr("x"), tr("y"), tr("z")});
         mSliceAxis->setCurrentIndex(mSlice.axis);
-        mSliceAxis->setToolTip(tr("The axis the cross-section is cut across; clicks on it place the 3D tools"));
+        mSliceAxis->setToolTip(
+            tr("The axis the cross-section is cut across; clicks on it place the 3D tools"));
         row->addWidget(mSliceAxis);
         toolLayout->addLayout(row);
         mSlicePosition = new QSlider(Qt::Horizontal, toolPanel);
@@ -381,7 +384,8 @@ void EditorWindow::buildDocks() {
         connect(mSliceValue, &QDoubleSpinBox::valueChanged, this, [this](double value) {
             if (mSliceUpdating) return;
             const glm::dvec3 size = mDocument->design().size;
-            setSlice(Slice{mSliceAxis->currentIndex(), std::clamp(value, 0.0, size[mSliceAxis->currentIndex()])});
+            setSlice(
+                Slice{mSliceAxis->currentIndex(), std::clamp(value, 0.0, size[mSliceAxis->currentIndex()])});
         });
         auto* meshRow = new QHBoxLayout;
         meshRow->addWidget(new QLabel(tr("Object"), toolPanel));
@@ -397,8 +401,9 @@ void EditorWindow::buildDocks() {
                 mObject->setMesh(mesh->itemText(index));
                 return;
             }
-            const QString file = QFileDialog::getOpenFileName(this, tr("Show the design on a mesh"), QString(),
-                                                              tr("Meshes (*.obj *.ply *.stl *.off *.gltf *.glb);;All files (*)"));
+            const QString file = QFileDialog::getOpenFileName(
+                this, tr("Show the design on a mesh"), QString(),
+                tr("Meshes (*.obj *.ply *.stl *.off *.gltf *.glb);;All files (*)"));
             if (file.isEmpty()) return;
             mObject->setMesh(file);
         });
@@ -460,7 +465,8 @@ void EditorWindow::buildMenus() {
     QMenu* newMenu = file->addMenu(tr("&New design"));
     newMenu->addAction(tr("Blank &flat bath"), this, [this] { emit openEditorRequested(blankDesign(2), {}); })
         ->setShortcut(QKeySequence::New);
-    newMenu->addAction(tr("Blank &solid block"), this, [this] { emit openEditorRequested(blankDesign(3), {}); });
+    newMenu->addAction(tr("Blank &solid block"), this,
+                       [this] { emit openEditorRequested(blankDesign(3), {}); });
     newMenu->addAction(tr("&Random design"), this, &EditorWindow::startFromRandom);
     newMenu->addAction(tr("From a &picture…"), this, &EditorWindow::startFromSourceImage)
         ->setToolTip(tr("A flat design whose bath is a picture (its source)"));
@@ -473,7 +479,8 @@ void EditorWindow::buildMenus() {
     // platform theme).
     file->addAction(tr("Save &as…"), this, &EditorWindow::saveAs)
         ->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
-    file->addAction(tr("&Export image…"), this, &EditorWindow::exportImage)->setShortcut(QKeySequence(tr("Ctrl+E")));
+    file->addAction(tr("&Export image…"), this, &EditorWindow::exportImage)
+        ->setShortcut(QKeySequence(tr("Ctrl+E")));
     file->addAction(tr("Export &animation…"), this, &EditorWindow::exportAnimation)
         ->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
     file->addSeparator();
@@ -519,21 +526,23 @@ void EditorWindow::buildMenus() {
         a->setData(t.index());
         a->setToolTip(ui::toolTip(t));
         a->setShortcut(toolShortcut(t));
-        a->setObjectName(QStringLiteral("tool-") + QString::fromUtf8(toolId(t).data(), qsizetype(toolId(t).size())));
+        a->setObjectName(QStringLiteral("tool-") +
+                         QString::fromUtf8(toolId(t).data(), qsizetype(toolId(t).size())));
         mTools->addAction(a);
         bar->addAction(a);
         connect(a, &QAction::triggered, this, [this, t] { setTool(t); });
     }
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    view->addAction(tr("&Fit"), this, [this] { mCanvas->fitView(); })
-        ->setShortcut(QKeySequence(tr("0")));
+    view->addAction(tr("&Fit"), this, [this] { mCanvas->fitView(); })->setShortcut(QKeySequence(tr("0")));
     view->addAction(tr("Zoom &in"), this, [this] { mCanvas->zoomIn(); })->setShortcut(QKeySequence::ZoomIn);
     view->addAction(tr("Zoom &out"), this, [this] { mCanvas->zoomOut(); })
         ->setShortcut(QKeySequence::ZoomOut);
-    view->addAction(tr("&Compare two states"), this, [this] { mTimeline->setComparing(!mTimeline->comparing()); })
+    view->addAction(tr("&Compare two states"), this,
+                    [this] { mTimeline->setComparing(!mTimeline->comparing()); })
         ->setShortcut(QKeySequence(tr("Ctrl+K")));
-    view->addAction(tr("&Play the making"), this, [this] { mTimeline->playing() ? mTimeline->stop() : mTimeline->play(); })
+    view->addAction(tr("&Play the making"), this,
+                    [this] { mTimeline->playing() ? mTimeline->stop() : mTimeline->play(); })
         ->setShortcut(QKeySequence(Qt::Key_P));
 
     // ---- Issue 27 (fix-canvas): the repeat preview, the bath's shapes in New design.
@@ -609,32 +618,33 @@ void EditorWindow::wireDocument() {
     connect(mDocument->undoStack(), &QUndoStack::indexChanged, this, &EditorWindow::fillBranchList);
 
     // Gestures: one drag, one step.
-    connect(mCanvas, &EditorCanvas::stepsMade, this, [this](const std::vector<Operation>& ops, const QString& text) {
-        if (ops.empty()) return;
-        // Where the user works: after the selected step, else at the timeline's point.
-        const std::optional<std::size_t> at = insertionPoint();
-        const std::size_t first =
-            ops.size() == 1 ? mDocument->addStep(ops.front(), at) : mDocument->addSteps(ops, text, at);
-        const std::size_t last = first + ops.size() - 1;
-        if (ops.size() == 1)
-            selectStep(first);
-        else
-            selectStep(last);
-        // The canvas shows the design just after what was added: all of it when that is the end,
-        // else up to the new steps (the timeline says where), so new ink is seen where it went.
-        const auto rendered = renderedIndex(last);
-        const std::size_t total = stepCount(mDocument->renderedDesign());
-        if (!rendered || *rendered + 1 >= total) {
-            mTimeline->setGrowth(double(total));
-        } else {
-            mTimeline->setGrowth(double(*rendered + 1));
-            statusBar()->showMessage(
-                tr("Added as step %1 of %2; the timeline shows the design up to it (End shows all)")
-                    .arg(*rendered + 1)
-                    .arg(total),
-                6000);
-        }
-    });
+    connect(mCanvas, &EditorCanvas::stepsMade, this,
+            [this](const std::vector<Operation>& ops, const QString& text) {
+                if (ops.empty()) return;
+                // Where the user works: after the selected step, else at the timeline's point.
+                const std::optional<std::size_t> at = insertionPoint();
+                const std::size_t first = ops.size() == 1 ? mDocument->addStep(ops.front(), at)
+                                                          : mDocument->addSteps(ops, text, at);
+                const std::size_t last = first + ops.size() - 1;
+                if (ops.size() == 1)
+                    selectStep(first);
+                else
+                    selectStep(last);
+                // The canvas shows the design just after what was added: all of it when that is the end,
+                // else up to the new steps (the timeline says where), so new ink is seen where it went.
+                const auto rendered = renderedIndex(last);
+                const std::size_t total = stepCount(mDocument->renderedDesign());
+                if (!rendered || *rendered + 1 >= total) {
+                    mTimeline->setGrowth(double(total));
+                } else {
+                    mTimeline->setGrowth(double(*rendered + 1));
+                    statusBar()->showMessage(
+                        tr("Added as step %1 of %2; the timeline shows the design up to it (End shows all)")
+                            .arg(*rendered + 1)
+                            .arg(total),
+                        6000);
+                }
+            });
     connect(mCanvas, &EditorCanvas::handleDragged, this,
             [this](std::size_t rendered, const Operation& op, bool final) {
                 const auto step = documentIndex(rendered);
@@ -655,10 +665,12 @@ void EditorWindow::wireDocument() {
     connect(mSteps, &StepList::moveRequested, this, [this](std::size_t from, std::size_t to) {
         if (mDocument->moveStep(from, to)) selectStep(to);
     });
-    connect(mSteps, &StepList::mutedToggled, mDocument, qOverload<std::size_t, bool>(&EditorDocument::setMuted));
+    connect(mSteps, &StepList::mutedToggled, mDocument,
+            qOverload<std::size_t, bool>(&EditorDocument::setMuted));
     connect(mSteps, &StepList::rangeMutedToggled, mDocument,
             qOverload<std::size_t, std::size_t, bool>(&EditorDocument::setMuted));
-    connect(mSteps, &StepList::duplicateRequested, this, [this](std::size_t i) { selectStep(mDocument->duplicateStep(i)); });
+    connect(mSteps, &StepList::duplicateRequested, this,
+            [this](std::size_t i) { selectStep(mDocument->duplicateStep(i)); });
     connect(mSteps, &StepList::deleteRequested, this, [this](std::size_t i) {
         mDocument->removeStep(i);
         selectStep(std::nullopt);
@@ -875,7 +887,9 @@ void EditorWindow::setTool(EditorTool tool) {
     statusBar()->showMessage(ui::toolTip(tool), 4000);
 }
 
-EditorTool EditorWindow::tool() const { return mCanvas->tool(); }
+EditorTool EditorWindow::tool() const {
+    return mCanvas->tool();
+}
 
 void EditorWindow::setSlice(const Slice& slice) {
     mSlice = slice;
@@ -1092,14 +1106,17 @@ bool EditorWindow::mayOverwrite(const QString& file) {
                                  QMessageBox::Cancel) == QMessageBox::Yes;
 }
 
-QStringList EditorWindow::recentFiles() { return QSettings().value(RecentKey).toStringList(); }
+QStringList EditorWindow::recentFiles() {
+    return QSettings().value(RecentKey).toStringList();
+}
 
 void EditorWindow::addRecentFile(const QString& file) {
     QStringList files = recentFiles();
     const QString path = QFileInfo(file).absoluteFilePath();
     files.removeAll(path);
     files.prepend(path);
-    while (files.size() > MaxRecent) files.removeLast();
+    while (files.size() > MaxRecent)
+        files.removeLast();
     QSettings().setValue(RecentKey, files);
 }
 
@@ -1136,8 +1153,9 @@ void EditorWindow::startFromRandom() {
 }
 
 void EditorWindow::startFromSourceImage() {
-    const QString image = QFileDialog::getOpenFileName(this, tr("A picture for the bath"), QString(),
-                                                       tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.webp *.bmp)"));
+    const QString image =
+        QFileDialog::getOpenFileName(this, tr("A picture for the bath"), QString(),
+                                     tr("Images (*.png *.jpg *.jpeg *.tif *.tiff *.webp *.bmp)"));
     if (image.isEmpty()) return;
     // A new flat design whose bath is the picture. It is named by its full path and may be read
     // from there (the user chose it just now); saved beside the picture, the design renders
@@ -1178,7 +1196,8 @@ void EditorWindow::exportAnimation() {
     if (!mayOverwrite(withAnimationExtension(settings.path, settings.format))) return;
     QSettings().setValue(QStringLiteral("files/exportDir"), QFileInfo(settings.path).absolutePath());
     if (!mAnimationJob) mAnimationJob = new AnimationExportJob(this);
-    auto* progress = new QProgressDialog(tr("Writing the making of the design…"), tr("Cancel"), 0, 1000, this);
+    auto* progress =
+        new QProgressDialog(tr("Writing the making of the design…"), tr("Cancel"), 0, 1000, this);
     progress->setObjectName(QStringLiteral("animationProgress"));
     progress->setWindowModality(Qt::WindowModal);
     progress->setMinimumDuration(300);
@@ -1224,9 +1243,12 @@ bool EditorWindow::maybeKeepChanges() {
                                                   : UnsavedAnswer::Cancel;
     }
     switch (answer) {
-    case UnsavedAnswer::Save: return save();
-    case UnsavedAnswer::Discard: return true;
-    case UnsavedAnswer::Cancel: return false;
+    case UnsavedAnswer::Save:
+        return save();
+    case UnsavedAnswer::Discard:
+        return true;
+    case UnsavedAnswer::Cancel:
+        return false;
     }
     return false;
 }
@@ -1246,7 +1268,9 @@ void EditorWindow::closeEvent(QCloseEvent* event) {
 // ---- SolidObjectView -------------------------------------------------------------------------
 
 SolidObjectView::SolidObjectView(RenderService* renderer, QWidget* parent)
-    : QWidget(parent), mRenderer(renderer), mKey(nextObjectKey()) {
+    : QWidget(parent)
+    , mRenderer(renderer)
+    , mKey(nextObjectKey()) {
     setMinimumSize(200, 200);
     setToolTip(tr("The design on its object: drag to turn it"));
     connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool) {
@@ -1256,7 +1280,9 @@ SolidObjectView::SolidObjectView(RenderService* renderer, QWidget* parent)
     });
 }
 
-SolidObjectView::~SolidObjectView() { mRenderer->cancel(mKey); }
+SolidObjectView::~SolidObjectView() {
+    mRenderer->cancel(mKey);
+}
 
 void SolidObjectView::setDesign(const Genome& design) {
     // The design's own angle at first; after that the angle the user turned it to.
@@ -1299,7 +1325,8 @@ void SolidObjectView::paintEvent(QPaintEvent*) {
     }
     QSizeF size = QSizeF(mImage.size()) / devicePixelRatioF();
     size.scale(QSizeF(this->size()), Qt::KeepAspectRatio);
-    const QRectF target((width() - size.width()) / 2, (height() - size.height()) / 2, size.width(), size.height());
+    const QRectF target((width() - size.width()) / 2, (height() - size.height()) / 2, size.width(),
+                        size.height());
     p.setRenderHint(QPainter::SmoothPixmapTransform);
     p.drawImage(target, mImage);
     if (mSlice && mDesign.dimension == 3) paintSlice(p);
@@ -1319,15 +1346,17 @@ void SolidObjectView::paintSlice(QPainter& p) const {
     p.setRenderHint(QPainter::Antialiasing);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(30, 30, 30, 200));
-    p.drawRoundedRect(QRectF(origin.x() - 8.0, origin.y() - Side * 1.5, Side * 2.9, Side * 1.5 + 8.0), 6.0, 6.0);
+    p.drawRoundedRect(QRectF(origin.x() - 8.0, origin.y() - Side * 1.5, Side * 2.9, Side * 1.5 + 8.0), 6.0,
+                      6.0);
     p.setBrush(Qt::NoBrush);
     p.setPen(QPen(QColor(220, 220, 220, 200), 1.0));
-    const glm::dvec3 corner[8] = {{0, 0, 0},          {size.x, 0, 0},          {size.x, size.y, 0},
-                                  {0, size.y, 0},     {0, 0, size.z},          {size.x, 0, size.z},
-                                  {size.x, size.y, size.z}, {0, size.y, size.z}};
+    const glm::dvec3 corner[8] = {
+        {0, 0, 0},      {size.x, 0, 0},      {size.x, size.y, 0},      {0, size.y, 0},
+        {0, 0, size.z}, {size.x, 0, size.z}, {size.x, size.y, size.z}, {0, size.y, size.z}};
     constexpr int Edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                   {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-    for (const auto& e : Edges) p.drawLine(at(corner[e[0]]), at(corner[e[1]]));
+    for (const auto& e : Edges)
+        p.drawLine(at(corner[e[0]]), at(corner[e[1]]));
     // The plane: the block's extent along the two other axes, at the section's value.
     const int axis = mSlice->axis;
     const SlicePlane section = slicePlane(3, axis, mSlice->value);
@@ -1343,7 +1372,9 @@ void SolidObjectView::paintSlice(QPainter& p) const {
                tr("%1 = %2").arg(QLatin1String(axisName(axis))).arg(mSlice->value, 0, 'f', 1));
 }
 
-void SolidObjectView::resizeEvent(QResizeEvent*) { request(false); }
+void SolidObjectView::resizeEvent(QResizeEvent*) {
+    request(false);
+}
 
 void SolidObjectView::mousePressEvent(QMouseEvent* event) {
     mTurning = true;

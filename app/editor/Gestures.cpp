@@ -39,7 +39,9 @@ Operation inkDrop(Tool tool, const glm::dvec3& centre, double radius, int color,
 }
 
 /// The 2D angle of a drag, degrees clockwise on screen (design y grows downward).
-double dragAngle(const glm::dvec3& d) { return std::atan2(d.y, d.x) * 180.0 / std::numbers::pi; }
+double dragAngle(const glm::dvec3& d) {
+    return std::atan2(d.y, d.x) * 180.0 / std::numbers::pi;
+}
 
 /// A solid's stroke in the section plane: `along` the drag, `across` it (both unit, in the plane,
 /// across = plane normal x along, as a 2D angle's N is to its M).
@@ -88,7 +90,9 @@ Tool genomeTool(EditorTool tool) {
     return tool.inRegistry() ? tool.tool() : Tool::Drop;
 }
 
-bool laysInk(EditorTool tool) { return tool != EditorTool::Pick && toolSpec(genomeTool(tool)).laysInk; }
+bool laysInk(EditorTool tool) {
+    return tool != EditorTool::Pick && toolSpec(genomeTool(tool)).laysInk;
+}
 
 EditorGesture gestureOf(EditorTool tool) {
     if (tool.inRegistry()) return toolSpec(tool.tool()).editor.gesture;
@@ -305,7 +309,8 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         const double half = std::hypot(design.size.x, design.size.y);
         const int n = std::clamp(s.teeth, 2, int(MaxTeeth));
         op.teeth.clear();
-        for (int i = 0; i < n; ++i) op.teeth.push_back(-half + 2.0 * half * i / (n - 1));
+        for (int i = 0; i < n; ++i)
+            op.teeth.push_back(-half + 2.0 * half * i / (n - 1));
         ops.push_back(op);
         break;
     }
@@ -313,7 +318,8 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         // The drag spans one cell (or the cavity) from its corner; a click keeps the default size.
         Operation op = defaultOperation(made, dim, p);
         op.center = p;
-        if (stroke) op.extent = {std::max(std::abs(d.x), MinStrokeLength), std::max(std::abs(d.y), MinStrokeLength)};
+        if (stroke)
+            op.extent = {std::max(std::abs(d.x), MinStrokeLength), std::max(std::abs(d.y), MinStrokeLength)};
         op.center = {std::min(p.x, q.x), std::min(p.y, q.y), 0.0};
         if (!stroke) op.center = p;
         op.field = s.field == 1 ? FlowField::Cavity : FlowField::Cells;

@@ -64,11 +64,11 @@ struct ToolSettings {
     double lambda = editorStart(Tool::Line, ParamField::Lambda);         ///< line, comb, circle, vortex
     double wavelength = editorStart(Tool::Wave, ParamField::Wavelength); ///< wave
     double core = editorStart(Tool::Circle, ParamField::Core);           ///< circle, vortex
-    double sprayRadius = 4; ///< a sprayed droplet's radius
-    int sprayCount = 40;    ///< droplets a spray stroke lays
-    double brush = 60;      ///< how far from the stroke droplets land
-    int patternCount = 8;   ///< drops in a line, rings, scattered drops
-    int teeth = 12;         ///< stretch: teeth across the design
+    double sprayRadius = 4;                                              ///< a sprayed droplet's radius
+    int sprayCount = 40;                                                 ///< droplets a spray stroke lays
+    double brush = 60;                                            ///< how far from the stroke droplets land
+    int patternCount = 8;                                         ///< drops in a line, rings, scattered drops
+    int teeth = 12;                                               ///< stretch: teeth across the design
     double power = editorStart(Tool::Stretch, ParamField::Power); ///< stretch: tooth profile
     double speed = editorStart(Tool::Flow, ParamField::Speed);    ///< flow
     double time = editorStart(Tool::Flow, ParamField::Time);      ///< flow

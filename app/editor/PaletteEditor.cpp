@@ -24,7 +24,9 @@
 namespace marbler::ui {
 namespace {
 
-QColor toQColor(const Color& c) { return QColor(c.r, c.g, c.b); }
+QColor toQColor(const Color& c) {
+    return QColor(c.r, c.g, c.b);
+}
 Color fromQColor(const QColor& c) {
     return Color{std::uint8_t(c.red()), std::uint8_t(c.green()), std::uint8_t(c.blue())};
 }
@@ -40,7 +42,10 @@ std::size_t inkUses(const Genome& design, int index) {
 /// Double-clicks on a swatch open its colour dialog.
 class DoubleClickFilter : public QObject {
 public:
-    DoubleClickFilter(QObject* button, PaletteEditor* editor, int index) : QObject(button), mEditor(editor), mIndex(index) {}
+    DoubleClickFilter(QObject* button, PaletteEditor* editor, int index)
+        : QObject(button)
+        , mEditor(editor)
+        , mIndex(index) {}
     bool eventFilter(QObject* watched, QEvent* event) override {
         if (event->type() == QEvent::MouseButtonDblClick) {
             mEditor->editColor(mIndex);
@@ -106,7 +111,10 @@ int nearestOtherInk(const std::vector<Color>& palette, int index) {
 }
 
 PaletteEditor::PaletteEditor(QWidget* parent)
-    : QWidget(parent), mSwatches(new QHBoxLayout), mGroup(new QButtonGroup(this)), mBleed(new QDoubleSpinBox(this)) {
+    : QWidget(parent)
+    , mSwatches(new QHBoxLayout)
+    , mGroup(new QButtonGroup(this))
+    , mBleed(new QDoubleSpinBox(this)) {
     setObjectName(QStringLiteral("paletteEditor"));
     mGroup->setExclusive(true);
     auto* layout = new QVBoxLayout(this);
@@ -145,13 +153,17 @@ QToolButton* PaletteEditor::swatch(const Color& color, const QString& tip) {
 void PaletteEditor::setDesign(const Genome& design) {
     mDesign = design;
     mUpdating = true;
-    for (QToolButton* b : mButtons) delete b;
+    for (QToolButton* b : mButtons)
+        delete b;
     mButtons.clear();
     delete mBackground;
-    while (QLayoutItem* item = mSwatches->takeAt(0)) delete item;
+    while (QLayoutItem* item = mSwatches->takeAt(0))
+        delete item;
     for (std::size_t i = 0; i < design.palette.size(); ++i) {
-        QToolButton* b = swatch(design.palette[i], tr("Ink %1: click to lay it with the tools, double-click to change "
-                                                      "its colour").arg(i + 1));
+        QToolButton* b =
+            swatch(design.palette[i], tr("Ink %1: click to lay it with the tools, double-click to change "
+                                         "its colour")
+                                          .arg(i + 1));
         b->setObjectName(QStringLiteral("inkSwatch%1").arg(i));
         b->setCheckable(true);
         b->setContextMenuPolicy(Qt::ActionsContextMenu);
@@ -258,8 +270,10 @@ void PaletteEditor::editColor(int index) {
     mDialog->setObjectName(QStringLiteral("paletteColorDialog"));
     mDialog->setWindowTitle(index < 0 ? tr("Background colour") : tr("Colour of ink %1").arg(index + 1));
     auto emitColor = [this, index](const Color& c, bool dragging) {
-        if (index < 0) emit backgroundChanged(c, dragging);
-        else emit colorChanged(index, c, dragging);
+        if (index < 0)
+            emit backgroundChanged(c, dragging);
+        else
+            emit colorChanged(index, c, dragging);
     };
     connect(mDialog, &QColorDialog::currentColorChanged, this,
             [emitColor](const QColor& c) { emitColor(fromQColor(c), true); });

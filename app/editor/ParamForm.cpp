@@ -9,7 +9,6 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QStyle>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
@@ -17,6 +16,7 @@
 #include <QRegularExpression>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStyle>
 #include <QVBoxLayout>
 
 #include <glm/geometric.hpp>
@@ -42,11 +42,13 @@ QString componentName(const ParamSpec& spec, int i, int count) {
 }
 
 bool hasSlider(ParamKind kind) {
-    return kind == ParamKind::Position || kind == ParamKind::Angle || kind == ParamKind::Length
-        || kind == ParamKind::Shift || kind == ParamKind::Phase;
+    return kind == ParamKind::Position || kind == ParamKind::Angle || kind == ParamKind::Length ||
+           kind == ParamKind::Shift || kind == ParamKind::Phase;
 }
 
-bool isInteger(ParamKind kind) { return kind == ParamKind::Count; }
+bool isInteger(ParamKind kind) {
+    return kind == ParamKind::Count;
+}
 
 glm::dvec3 unitOrZero(const glm::dvec3& v) {
     const double length = glm::length(v);
@@ -59,13 +61,15 @@ void applyComponent(const ParamSpec& spec, Operation& op, int dimension, int com
     setComponent(spec, op, component, value);
     if (spec.kind != ParamKind::Direction || dimension != 3) return;
     const auto params = toolSpec(op.tool).params(dimension);
-    const bool hasNormal = std::any_of(params.begin(), params.end(), [](const ParamSpec& p) { return p.field == ParamField::Normal; });
+    const bool hasNormal = std::any_of(params.begin(), params.end(),
+                                       [](const ParamSpec& p) { return p.field == ParamField::Normal; });
     if (spec.field == ParamField::Axis) op.axis = unitOrZero(op.axis);
     if (spec.field == ParamField::Direction) op.direction = unitOrZero(op.direction);
     if (hasNormal && (spec.field == ParamField::Direction || spec.field == ParamField::Normal)) {
         // Gram-Schmidt twice, as the loader does.
         glm::dvec3 n = unitOrZero(op.normal);
-        for (int pass = 0; pass < 2; ++pass) n = unitOrZero(n - glm::dot(n, op.direction) * op.direction);
+        for (int pass = 0; pass < 2; ++pass)
+            n = unitOrZero(n - glm::dot(n, op.direction) * op.direction);
         op.normal = n;
     }
 }
@@ -167,7 +171,9 @@ struct ParamForm::Row {
     CompactSpinBox* teethSpacing = nullptr; ///< and how far apart (even)
 };
 
-ParamForm::ParamForm(QWidget* parent) : QWidget(parent), mLayout(new QFormLayout(this)) {
+ParamForm::ParamForm(QWidget* parent)
+    : QWidget(parent)
+    , mLayout(new QFormLayout(this)) {
     setObjectName(QStringLiteral("paramForm"));
     setToolTip(tr("The parameters of the selected step"));
     // Where the panel is narrow, a field goes below its label rather than off the edge.
@@ -182,7 +188,8 @@ void ParamForm::clear() {
     }
     mRows.clear();
     mShape.clear();
-    while (mLayout->rowCount() > 0) mLayout->removeRow(0);
+    while (mLayout->rowCount() > 0)
+        mLayout->removeRow(0);
 }
 
 void ParamForm::setStep(const Operation& op, int dimension, const Genome& design) {
@@ -209,10 +216,18 @@ void ParamForm::setStep(const Operation& op, int dimension, const Genome& design
 double ParamForm::sliderSpan(const ParamSpec& spec, int component, double& low) const {
     const double side = std::max({mSize.x, mSize.y, mDimension == 3 ? mSize.z : 0.0});
     switch (spec.kind) {
-    case ParamKind::Position: low = 0.0; return mSize[std::clamp(component, 0, 2)];
-    case ParamKind::Angle: low = -180.0; return 360.0;
-    case ParamKind::Phase: low = 0.0; return 360.0;
-    case ParamKind::Shift: low = -side; return 2.0 * side;
+    case ParamKind::Position:
+        low = 0.0;
+        return mSize[std::clamp(component, 0, 2)];
+    case ParamKind::Angle:
+        low = -180.0;
+        return 360.0;
+    case ParamKind::Phase:
+        low = 0.0;
+        return 360.0;
+    case ParamKind::Shift:
+        low = -side;
+        return 2.0 * side;
     default: {
         low = std::isfinite(spec.range.min) ? spec.range.min : 0.0;
         const double high = std::isfinite(spec.range.max) ? std::min(spec.range.max, side) : side;
@@ -232,8 +247,10 @@ void ParamForm::build() {
         row->box->setObjectName(QStringLiteral("param-") + key);
         QString tip = text(spec.help);
         if (spec.kind == ParamKind::Choice)
-            tip += QStringLiteral(" (") + QString::fromStdString(spec.describeChoices()) + QStringLiteral(")");
-        else if (spec.kind != ParamKind::Color && (std::isfinite(spec.range.min) || std::isfinite(spec.range.max)))
+            tip +=
+                QStringLiteral(" (") + QString::fromStdString(spec.describeChoices()) + QStringLiteral(")");
+        else if (spec.kind != ParamKind::Color &&
+                 (std::isfinite(spec.range.min) || std::isfinite(spec.range.max)))
             tip += QStringLiteral(" (") + QString::fromStdString(spec.range.describe()) + QStringLiteral(")");
         if (spec.version > 1) tip += tr(" [format version %1]").arg(spec.version);
         tip += tr("\nIn the file: \"%1\"").arg(key);
@@ -300,14 +317,16 @@ void ParamForm::build() {
                 Operation op = mOp;
                 op.teeth.clear();
                 bool ok = true;
-                const QStringList words =
-                    row->text->text().split(QRegularExpression(QStringLiteral("[\\s,;]+")), Qt::SkipEmptyParts);
+                const QStringList words = row->text->text().split(
+                    QRegularExpression(QStringLiteral("[\\s,;]+")), Qt::SkipEmptyParts);
                 for (const QString& word : words) {
                     op.teeth.push_back(word.toDouble(&ok));
                     if (!ok) break;
                 }
-                if (ok && op.teeth != mOp.teeth && valid(op)) commitOperation(*row->spec, op, false);
-                else refreshRow(*row); // no valid list: show the teeth as they are
+                if (ok && op.teeth != mOp.teeth && valid(op))
+                    commitOperation(*row->spec, op, false);
+                else
+                    refreshRow(*row); // no valid list: show the teeth as they are
             });
         } else {
             const int count = componentCount(spec, mOp, mDimension);
@@ -369,10 +388,11 @@ void ParamForm::build() {
                         const double span = sliderSpan(*row->spec, i, lowValue);
                         return lowValue + span * position / SliderSteps;
                     };
-                    connect(slider, &QSlider::valueChanged, this, [this, row, i, slider, valueOf](int position) {
-                        if (mUpdating) return;
-                        commitComponent(*row->spec, i, valueOf(position), slider->isSliderDown());
-                    });
+                    connect(slider, &QSlider::valueChanged, this,
+                            [this, row, i, slider, valueOf](int position) {
+                                if (mUpdating) return;
+                                commitComponent(*row->spec, i, valueOf(position), slider->isSliderDown());
+                            });
                     connect(slider, &QSlider::sliderReleased, this, [this, row, i, slider, valueOf] {
                         if (!mUpdating) commitComponent(*row->spec, i, valueOf(slider->value()), false, true);
                     });
@@ -400,7 +420,8 @@ void ParamForm::build() {
 }
 
 void ParamForm::refresh() {
-    for (const Row* row : mRows) refreshRow(*row);
+    for (const Row* row : mRows)
+        refreshRow(*row);
 }
 
 void ParamForm::refreshRow(const Row& row) {
@@ -427,7 +448,8 @@ void ParamForm::refreshRow(const Row& row) {
                    : tr("The mean distance between the teeth, which are unevenly spaced: "
                         "a new spacing spaces them evenly"));
     }
-    for (std::size_t i = 0; i < row.counts.size(); ++i) row.counts[i]->setValue(int(getComponent(spec, mOp, int(i))));
+    for (std::size_t i = 0; i < row.counts.size(); ++i)
+        row.counts[i]->setValue(int(getComponent(spec, mOp, int(i))));
     for (std::size_t i = 0; i < row.spins.size(); ++i) {
         const double value = getComponent(spec, mOp, int(i));
         QDoubleSpinBox* spin = row.spins[i];
@@ -438,7 +460,8 @@ void ParamForm::refreshRow(const Row& row) {
         if (i < row.sliders.size() && !row.sliders[i]->isSliderDown()) {
             double low = 0.0;
             const double span = sliderSpan(spec, int(i), low);
-            row.sliders[i]->setValue(int(std::lround(std::clamp((value - low) / span, 0.0, 1.0) * SliderSteps)));
+            row.sliders[i]->setValue(
+                int(std::lround(std::clamp((value - low) / span, 0.0, 1.0) * SliderSteps)));
         }
     }
     mUpdating = was;
@@ -498,7 +521,8 @@ bool ParamForm::valid(const Operation& op) const {
     }
 }
 
-void ParamForm::commitComponent(const ParamSpec& spec, int component, double value, bool dragging, bool endsDrag) {
+void ParamForm::commitComponent(const ParamSpec& spec, int component, double value, bool dragging,
+                                bool endsDrag) {
     if (!mHasStep || !std::isfinite(value)) return;
     const double old = getComponent(spec, mOp, component);
     // Into the parameter's own range first.
@@ -519,9 +543,12 @@ void ParamForm::commitComponent(const ParamSpec& spec, int component, double val
             if (spec.kind == ParamKind::Count) mid = good < bad ? std::floor(mid) : std::ceil(mid);
             Operation probe = mOp;
             applyComponent(spec, probe, mDimension, component, mid);
-            if (valid(probe)) good = mid;
-            else bad = mid;
-            if (mid == good && std::abs(good - bad) <= (spec.kind == ParamKind::Count ? 1.0 : 1e-9 * (1.0 + std::abs(bad))))
+            if (valid(probe))
+                good = mid;
+            else
+                bad = mid;
+            if (mid == good &&
+                std::abs(good - bad) <= (spec.kind == ParamKind::Count ? 1.0 : 1e-9 * (1.0 + std::abs(bad))))
                 break;
         }
         op = mOp;
@@ -547,15 +574,18 @@ void ParamForm::commitOperation(const ParamSpec& spec, const Operation& op, bool
     emit edited(mOp, QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size())), dragging);
     if (shapeChanged) {
         // A 3D wave's pairs have one or two numbers by its shape: rebuild once this signal is done.
-        QMetaObject::invokeMethod(this, [this] {
-            Genome g;
-            g.dimension = mDimension;
-            g.size = mSize;
-            g.palette = mPalette;
-            const Operation keep = mOp;
-            mHasStep = false;
-            setStep(keep, mDimension, g);
-        }, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                Genome g;
+                g.dimension = mDimension;
+                g.size = mSize;
+                g.palette = mPalette;
+                const Operation keep = mOp;
+                mHasStep = false;
+                setStep(keep, mDimension, g);
+            },
+            Qt::QueuedConnection);
     }
 }
 

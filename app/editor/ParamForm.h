@@ -86,7 +86,8 @@ private:
     void watch(QWidget* field);
     void setTeeth(const Row& row, int count, double spacing);
     bool valid(const Operation& op) const;
-    void commitComponent(const ParamSpec& spec, int component, double value, bool dragging, bool endsDrag = false);
+    void commitComponent(const ParamSpec& spec, int component, double value, bool dragging,
+                         bool endsDrag = false);
     void commitOperation(const ParamSpec& spec, const Operation& op, bool dragging, bool endsDrag = false);
     double sliderSpan(const ParamSpec& spec, int component, double& low) const;
 

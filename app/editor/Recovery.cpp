@@ -38,7 +38,8 @@ RecoveredDesign readRecovery(const QFileInfo& info) {
     const std::string name = path.toStdString();
     if (info.size() > static_cast<qint64>(2 * MaxFileBytes)) throw InputError(name + ": too large");
     QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) throw RuntimeFailure(name + ": cannot read: " + f.errorString().toStdString());
+    if (!f.open(QIODevice::ReadOnly))
+        throw RuntimeFailure(name + ": cannot read: " + f.errorString().toStdString());
     const QByteArray bytes = f.readAll();
     nlohmann::ordered_json root;
     try {
@@ -46,8 +47,8 @@ RecoveredDesign readRecovery(const QFileInfo& info) {
     } catch (const nlohmann::json::exception& e) {
         throw InputError(name + ": not JSON: " + e.what());
     }
-    if (!root.is_object() || root.value("format", std::string()) != RecoveryFormat || !root.contains("genome")
-        || !root["genome"].is_object())
+    if (!root.is_object() || root.value("format", std::string()) != RecoveryFormat ||
+        !root.contains("genome") || !root["genome"].is_object())
         throw InputError(name + ": not a recovery file");
     RecoveredDesign r;
     r.recoveryFile = path;
@@ -60,7 +61,8 @@ RecoveredDesign readRecovery(const QFileInfo& info) {
         r.design.baseDirectory = QFileInfo(r.originalFile).absolutePath().toStdString();
     if (!r.originalFile.isEmpty()) r.design.fileName = r.originalFile.toStdString();
     if (root.contains("saved") && root["saved"].is_string())
-        r.saved = QDateTime::fromString(QString::fromStdString(root["saved"].get<std::string>()), Qt::ISODateWithMs);
+        r.saved = QDateTime::fromString(QString::fromStdString(root["saved"].get<std::string>()),
+                                        Qt::ISODateWithMs);
     if (!r.saved.isValid()) r.saved = info.lastModified();
     r.declined = root.value("declined", false);
     return r;
@@ -74,7 +76,8 @@ EditorAutosave::EditorAutosave(EditorDocument* doc, QString folder, QObject* par
     , mFolder(std::move(folder)) {
     if (!QDir().mkpath(mFolder)) qWarning("cannot make the recovery folder %s", qPrintable(mFolder));
     const QString stamp = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss"));
-    mFile = QDir(mFolder).filePath(stamp + QLatin1Char('-') + QUuid::createUuid().toString(QUuid::Id128).left(12) + Suffix);
+    mFile = QDir(mFolder).filePath(stamp + QLatin1Char('-') +
+                                   QUuid::createUuid().toString(QUuid::Id128).left(12) + Suffix);
     mLock = lockOf(mFile);
     if (!mLock->tryLock(0)) qWarning("cannot lock the recovery file %s", qPrintable(mFile));
 
@@ -102,7 +105,8 @@ void EditorAutosave::flush() {
     }
     nlohmann::ordered_json root;
     root["format"] = RecoveryFormat;
-    root["file"] = mDoc->fileName().isEmpty() ? nlohmann::ordered_json() : nlohmann::ordered_json(mDoc->fileName().toStdString());
+    root["file"] = mDoc->fileName().isEmpty() ? nlohmann::ordered_json()
+                                              : nlohmann::ordered_json(mDoc->fileName().toStdString());
     root["saved"] = QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs).toStdString();
     root["baseDirectory"] = mDoc->design().baseDirectory;
     root["genome"] = toJson(mDoc->fileGenome());
@@ -132,13 +136,15 @@ std::vector<RecoveredDesign> pendingRecoveries(const QString& folder, QStringLis
         try {
             found.push_back(readRecovery(info));
         } catch (const std::exception& e) {
-            const QString line = QObject::tr("A recovery file was skipped: %1").arg(QString::fromStdString(e.what()));
+            const QString line =
+                QObject::tr("A recovery file was skipped: %1").arg(QString::fromStdString(e.what()));
             qWarning("%s", qPrintable(line));
             if (warnings) *warnings << line;
         }
     }
     // Locks left by editors that crashed before their first autosave.
-    for (const QFileInfo& info : dir.entryInfoList({QStringLiteral("*") + Suffix + LockSuffix}, QDir::Files)) {
+    for (const QFileInfo& info :
+         dir.entryInfoList({QStringLiteral("*") + Suffix + LockSuffix}, QDir::Files)) {
         const QString recovery = info.absoluteFilePath().chopped(LockSuffix.size());
         if (QFileInfo::exists(recovery)) continue;
         const auto lock = lockOf(recovery);
@@ -149,7 +155,9 @@ std::vector<RecoveredDesign> pendingRecoveries(const QString& folder, QStringLis
     return found;
 }
 
-bool discardRecovery(const QString& recoveryFile) { return QFile::remove(recoveryFile); }
+bool discardRecovery(const QString& recoveryFile) {
+    return QFile::remove(recoveryFile);
+}
 
 bool declineRecovery(const QString& recoveryFile) {
     QFile f(recoveryFile);

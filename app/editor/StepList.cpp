@@ -32,7 +32,9 @@ QString plural(const QString& tool, std::size_t count) {
 /// the window answers with new rows (a move it refuses leaves the list as it was).
 class StepListView : public QListWidget {
 public:
-    explicit StepListView(StepList* owner) : QListWidget(owner), mOwner(owner) {
+    explicit StepListView(StepList* owner)
+        : QListWidget(owner)
+        , mOwner(owner) {
         setDragDropMode(QAbstractItemView::InternalMove);
         setDefaultDropAction(Qt::MoveAction);
         setSelectionMode(QAbstractItemView::SingleSelection);
@@ -158,7 +160,8 @@ void StepList::setRows(const std::vector<StepRow>& rows) {
     mList->clear();
     for (std::size_t i = 0; i < rows.size(); ++i) {
         auto* item = new QListWidgetItem(mList);
-        item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable | Qt::ItemIsDragEnabled);
+        item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable |
+                       Qt::ItemIsDragEnabled);
     }
     fillFilter();
     updateTexts();
@@ -296,17 +299,21 @@ void StepList::updateVisibility() {
     }
 }
 
-std::size_t StepList::rowCount() const { return std::size_t(mList->count()); }
+std::size_t StepList::rowCount() const {
+    return std::size_t(mList->count());
+}
 
 void StepList::scrollToCurrent() {
-    if (QListWidgetItem* item = mList->currentItem()) mList->scrollToItem(item, QAbstractItemView::PositionAtCenter);
+    if (QListWidgetItem* item = mList->currentItem())
+        mList->scrollToItem(item, QAbstractItemView::PositionAtCenter);
 }
 
 void StepList::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     // Only when the row would be hidden: a resize does not move a list the user scrolled about.
     QTimer::singleShot(0, this, [this] {
-        if (QListWidgetItem* item = mList->currentItem()) mList->scrollToItem(item, QAbstractItemView::EnsureVisible);
+        if (QListWidgetItem* item = mList->currentItem())
+            mList->scrollToItem(item, QAbstractItemView::EnsureVisible);
     });
 }
 
@@ -334,7 +341,9 @@ std::optional<std::size_t> StepList::current() const {
     return std::size_t(row);
 }
 
-QListWidget* StepList::list() const { return mList; }
+QListWidget* StepList::list() const {
+    return mList;
+}
 
 void StepList::requestMove(std::size_t from, std::size_t to) {
     if (from >= rowCount() || to >= rowCount() || from == to) return;
@@ -353,7 +362,8 @@ void StepList::showMenu(const QPoint& pos) {
     if (QListWidgetItem* item = mList->itemAt(pos)) mList->setCurrentItem(item);
     if (!current()) return;
     QMenu menu(this);
-    for (QAction* action : actions()) menu.addAction(action);
+    for (QAction* action : actions())
+        menu.addAction(action);
     const std::size_t row = *current();
     if (groupOf(row)) {
         menu.addSeparator();

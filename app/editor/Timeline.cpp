@@ -50,7 +50,8 @@ Timeline::Timeline(QWidget* parent)
     mPlay->setCheckable(true);
     mPlay->setToolTip(tr("Play the making of the design, each step growing in; again to stop"));
     mCompareBox->setObjectName(QStringLiteral("compareBox"));
-    mCompareBox->setToolTip(tr("Compare two states of the making side by side: the second slider picks the other"));
+    mCompareBox->setToolTip(
+        tr("Compare two states of the making side by side: the second slider picks the other"));
     mSpeed->setObjectName(QStringLiteral("playSpeed"));
     for (double f : Speeds)
         mSpeed->addItem(tr("%1×").arg(f), f);
@@ -61,7 +62,8 @@ Timeline::Timeline(QWidget* parent)
     auto* exportButton = new QToolButton(this);
     exportButton->setObjectName(QStringLiteral("exportAnimationButton"));
     exportButton->setText(tr("Export animation…"));
-    exportButton->setToolTip(tr("Write the making of the design as a video, an animated image or PNG frames"));
+    exportButton->setToolTip(
+        tr("Write the making of the design as a video, an animated image or PNG frames"));
     mLabel->setObjectName(QStringLiteral("timelineLabel"));
     mLabel->setToolTip(tr("The step shown, of all the design's steps"));
 
@@ -116,7 +118,9 @@ Timeline::Timeline(QWidget* parent)
     setStepCount(0);
 }
 
-Timeline::~Timeline() { delete mClock; }
+Timeline::~Timeline() {
+    delete mClock;
+}
 
 void Timeline::setStepCount(std::size_t n) {
     const bool wasAtEnd = atEnd();
@@ -146,7 +150,8 @@ void Timeline::showGrowth() {
     mSlider->setValue(int(std::lround(mGrowth * PerStep)));
     mCompareSlider->setValue(int(std::lround(mCompare * PerStep)));
     mUpdating = false;
-    mLabel->setText(tr("%1 / %2").arg(QString::number(mGrowth, 'f', std::floor(mGrowth) == mGrowth ? 0 : 1)).arg(mSteps));
+    mLabel->setText(
+        tr("%1 / %2").arg(QString::number(mGrowth, 'f', std::floor(mGrowth) == mGrowth ? 0 : 1)).arg(mSteps));
     const bool on = comparing();
     emit captionsChanged(on ? caption(mGrowth) : QString(), on ? caption(mCompare) : QString());
 }
@@ -168,7 +173,9 @@ void Timeline::stop() {
     mPlay->setText(tr("Play"));
 }
 
-bool Timeline::playing() const { return mTimer->isActive(); }
+bool Timeline::playing() const {
+    return mTimer->isActive();
+}
 
 void Timeline::setPlaySpeed(double factor) {
     if (!std::isfinite(factor) || factor <= 0.0) return;
@@ -204,7 +211,9 @@ void Timeline::tick() {
     setGrowth(g);
 }
 
-bool Timeline::comparing() const { return mCompareBox->isChecked(); }
+bool Timeline::comparing() const {
+    return mCompareBox->isChecked();
+}
 
 void Timeline::setComparing(bool on) {
     mUpdating = true;

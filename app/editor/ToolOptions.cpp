@@ -85,7 +85,8 @@ QKeySequence toolShortcut(EditorTool tool) {
     return {};
 }
 
-ToolOptions::ToolOptions(QWidget* parent) : QWidget(parent) {
+ToolOptions::ToolOptions(QWidget* parent)
+    : QWidget(parent) {
     setObjectName(QStringLiteral("toolOptions"));
     mForm = new QFormLayout(this);
     const QString units = unitOf(Tool::Drop, ParamField::Radius);
@@ -232,10 +233,13 @@ void ToolOptions::setSettings(const ToolSettings& settings) {
 
 void ToolOptions::refresh() {
     mLoading = true;
-    for (const auto& load : mLoaders) load();
+    for (const auto& load : mLoaders)
+        load();
     mLoading = false;
 }
 
-void ToolOptions::changed() { emit settingsChanged(mSettings); }
+void ToolOptions::changed() {
+    emit settingsChanged(mSettings);
+}
 
 } // namespace marbler::ui

@@ -15,7 +15,9 @@
 
 namespace marbler::ui {
 
-DesignCell::DesignCell(int index, QWidget* parent) : QWidget(parent), mIndex(index) {
+DesignCell::DesignCell(int index, QWidget* parent)
+    : QWidget(parent)
+    , mIndex(index) {
     setFocusPolicy(Qt::StrongFocus);
     setAcceptDrops(true);
     setAttribute(Qt::WA_OpaquePaintEvent);
@@ -26,8 +28,9 @@ DesignCell::DesignCell(int index, QWidget* parent) : QWidget(parent), mIndex(ind
 }
 
 void DesignCell::setChange(const QString& change) {
-    const QString help = tr("Click to choose as a parent, double-click to open large, right-click for locks and "
-                            "favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.");
+    const QString help =
+        tr("Click to choose as a parent, double-click to open large, right-click for locks and "
+           "favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.");
     setToolTip(change.isEmpty() ? help : tr("Changed: %1\n\n%2").arg(change, help));
 }
 
@@ -201,16 +204,34 @@ void DesignCell::mouseDoubleClickEvent(QMouseEvent* event) {
 
 void DesignCell::keyPressEvent(QKeyEvent* event) {
     switch (event->key()) {
-    case Qt::Key_Left: emit focusMoveRequested(mIndex, -1, 0); break;
-    case Qt::Key_Right: emit focusMoveRequested(mIndex, 1, 0); break;
-    case Qt::Key_Up: emit focusMoveRequested(mIndex, 0, -1); break;
-    case Qt::Key_Down: emit focusMoveRequested(mIndex, 0, 1); break;
-    case Qt::Key_Space: emit clicked(mIndex); break;
+    case Qt::Key_Left:
+        emit focusMoveRequested(mIndex, -1, 0);
+        break;
+    case Qt::Key_Right:
+        emit focusMoveRequested(mIndex, 1, 0);
+        break;
+    case Qt::Key_Up:
+        emit focusMoveRequested(mIndex, 0, -1);
+        break;
+    case Qt::Key_Down:
+        emit focusMoveRequested(mIndex, 0, 1);
+        break;
+    case Qt::Key_Space:
+        emit clicked(mIndex);
+        break;
     case Qt::Key_Return:
-    case Qt::Key_Enter: emit openRequested(mIndex); break;
-    case Qt::Key_F: emit favouriteRequested(mIndex); break;
-    case Qt::Key_Menu: emit contextMenuRequested(mIndex, mapToGlobal(rect().center())); break;
-    default: QWidget::keyPressEvent(event); return;
+    case Qt::Key_Enter:
+        emit openRequested(mIndex);
+        break;
+    case Qt::Key_F:
+        emit favouriteRequested(mIndex);
+        break;
+    case Qt::Key_Menu:
+        emit contextMenuRequested(mIndex, mapToGlobal(rect().center()));
+        break;
+    default:
+        QWidget::keyPressEvent(event);
+        return;
     }
     event->accept();
 }
@@ -221,7 +242,8 @@ void DesignCell::contextMenuEvent(QContextMenuEvent* event) {
 
 void DesignCell::dragEnterEvent(QDragEnterEvent* event) {
     const QMimeData* mime = event->mimeData();
-    if (mime->hasFormat(QString::fromLatin1(GenomeMimeType)) || mime->hasUrls()) event->acceptProposedAction();
+    if (mime->hasFormat(QString::fromLatin1(GenomeMimeType)) || mime->hasUrls())
+        event->acceptProposedAction();
 }
 
 void DesignCell::dropEvent(QDropEvent* event) {

@@ -6,6 +6,8 @@
 #include "marbler/Repeat.h"
 #include "marbler/Sampling.h"
 #include "marbler/Vector.h"
+#include "marbler/gl/GlRenderer.h"
+#include "marbler/gl/HybridMesh.h"
 #include "ui/BakeObject.h"
 #include "ui/ErrorReport.h"
 #include "ui/GenomeClipboard.h"
@@ -13,8 +15,6 @@
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
 #include "ui/SourcePermissions.h"
-#include "marbler/gl/GlRenderer.h"
-#include "marbler/gl/HybridMesh.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -26,8 +26,8 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QLabel>
 #include <QKeyEvent>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QProgressDialog>
@@ -82,10 +82,14 @@ QImage mirrorTiled(const QImage& image) {
 
 QString exportSizeProblem(QSize pixels) {
     const std::int64_t w = pixels.width(), h = pixels.height();
-    if (w < 1 || h < 1) return QObject::tr("The image would be %1 × %2 pixels: choose a size of at least 1 pixel.").arg(w).arg(h);
+    if (w < 1 || h < 1)
+        return QObject::tr("The image would be %1 × %2 pixels: choose a size of at least 1 pixel.")
+            .arg(w)
+            .arg(h);
     if (w > MaxImageSide || h > MaxImageSide || w * h > MaxImagePixels)
-        return QObject::tr("The image would be %L1 × %L2 pixels (%L3 megapixels); Marbler renders at most %L4 pixels "
-                           "a side and %L5 megapixels. Choose a smaller size or a lower resolution.")
+        return QObject::tr(
+                   "The image would be %L1 × %L2 pixels (%L3 megapixels); Marbler renders at most %L4 pixels "
+                   "a side and %L5 megapixels. Choose a smaller size or a lower resolution.")
             .arg(w)
             .arg(h)
             .arg(double(w) * double(h) / 1e6, 0, 'f', 0)
@@ -95,7 +99,8 @@ QString exportSizeProblem(QSize pixels) {
 }
 
 ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent)
-    : QDialog(parent), mGenome(genome) {
+    : QDialog(parent)
+    , mGenome(genome) {
     setWindowTitle(tr("Export image"));
     auto* form = new QFormLayout;
     // The CLI's writers: PNG and TIFF built in, JPEG and EXR through the image module.
@@ -123,7 +128,8 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     mWidth->setDecimals(0);
     mWidth->setRange(1, 1e7);
     mWidth->setValue(mPixelWidth);
-    mWidth->setToolTip(tr("The image's width in the unit beside; the height follows the design's proportions"));
+    mWidth->setToolTip(
+        tr("The image's width in the unit beside; the height follows the design's proportions"));
     mUnit = new QComboBox(this);
     mUnit->setObjectName(QStringLiteral("exportUnit"));
     mUnit->addItem(tr("pixels"), 0.0);
@@ -138,7 +144,8 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     mDpi->setToolTip(tr("Dots per inch: turns a print size into pixels, and is written into the file"));
     mAa = new QComboBox(this);
     mAa->setObjectName(QStringLiteral("exportAa"));
-    for (const std::string& name : aaPatternNames()) mAa->addItem(QString::fromStdString(name));
+    for (const std::string& name : aaPatternNames())
+        mAa->addItem(QString::fromStdString(name));
     mAa->setCurrentText(QStringLiteral("rgss"));
     mAa->setToolTip(tr("Antialiasing pattern: more samples, smoother edges, slower"));
     mPixels = new QLabel(this);
@@ -151,16 +158,18 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     if (genome.dimension != 3) {
         mRepeat = new QCheckBox(tr("Mirror repeat tile (2 × 2): twice the width and height"), this);
         mRepeat->setObjectName(QStringLiteral("exportRepeat"));
-        mRepeat->setToolTip(tr("A seamless tile for print and textiles: the design and its mirror images 2 × 2, so "
-                               "every edge meets its own mirror image (marbler render --repeat mirror)"));
+        mRepeat->setToolTip(
+            tr("A seamless tile for print and textiles: the design and its mirror images 2 × 2, so "
+               "every edge meets its own mirror image (marbler render --repeat mirror)"));
         form->addRow(tr("&Repeat"), mRepeat);
         mTolerance = new QDoubleSpinBox(this);
         mTolerance->setObjectName(QStringLiteral("exportTolerance"));
         mTolerance->setDecimals(3);
         mTolerance->setRange(0.001, 1000.0);
         mTolerance->setValue(1.0);
-        mTolerance->setToolTip(tr("SVG: the largest distance between neighbouring vertices of an outline, in design "
-                                  "units; larger gives smaller files (marbler svg --tolerance)"));
+        mTolerance->setToolTip(
+            tr("SVG: the largest distance between neighbouring vertices of an outline, in design "
+               "units; larger gives smaller files (marbler svg --tolerance)"));
         form->addRow(tr("&Tolerance"), mTolerance);
         connect(mRepeat, &QCheckBox::toggled, this, [this] { updateSummary(); });
     }
@@ -170,7 +179,8 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
         mSolidView->setObjectName(QStringLiteral("exportSolidView"));
         mSolidView->addItem(tr("Object view (as shown)"));
         mSolidView->addItem(tr("Cross-section"));
-        mSolidView->setToolTip(tr("The design on its object, as the view shows it, or a flat cut through the block"));
+        mSolidView->setToolTip(
+            tr("The design on its object, as the view shows it, or a flat cut through the block"));
         mAxis = new QComboBox(this);
         mAxis->setObjectName(QStringLiteral("exportAxis"));
         mAxis->addItem(tr("x (a y-z plane)"));
@@ -250,7 +260,9 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     updateSummary();
 }
 
-double ExportSettingsDialog::perInch() const { return mUnit->currentData().toDouble(); }
+double ExportSettingsDialog::perInch() const {
+    return mUnit->currentData().toDouble();
+}
 
 void ExportSettingsDialog::showWidth() {
     mShowing = true;
@@ -261,20 +273,23 @@ void ExportSettingsDialog::showWidth() {
     updateSummary();
 }
 
-bool ExportSettingsDialog::isSvg() const { return extension() == QStringLiteral(".svg"); }
+bool ExportSettingsDialog::isSvg() const {
+    return extension() == QStringLiteral(".svg");
+}
 
 void ExportSettingsDialog::updateSummary() {
     // An SVG has no pixels: the raster's fields are greyed out, the tolerance is its size.
     const bool svg = isSvg();
-    for (QWidget* w : {static_cast<QWidget*>(mWidth), static_cast<QWidget*>(mUnit), static_cast<QWidget*>(mDpi),
-                       static_cast<QWidget*>(mAa)})
+    for (QWidget* w : {static_cast<QWidget*>(mWidth), static_cast<QWidget*>(mUnit),
+                       static_cast<QWidget*>(mDpi), static_cast<QWidget*>(mAa)})
         w->setEnabled(!svg);
     if (mRepeat) {
         mRepeat->setEnabled(!svg);
         mTolerance->setEnabled(svg);
     }
     if (svg) {
-        mPixels->setText(tr("Vector outlines in design units (%L1 × %L2)").arg(mGenome.size.x).arg(mGenome.size.y));
+        mPixels->setText(
+            tr("Vector outlines in design units (%L1 × %L2)").arg(mGenome.size.x).arg(mGenome.size.y));
         mPixels->setStyleSheet(QString());
         mButtons->button(QDialogButtonBox::Ok)->setEnabled(true);
         growToShowWrapped(this, mPixels);
@@ -301,10 +316,18 @@ void ExportSettingsDialog::setUnit(const QString& unit) {
     if (index >= 0) mUnit->setCurrentIndex(index);
 }
 
-QString ExportSettingsDialog::unit() const { return mUnit->currentText(); }
-double ExportSettingsDialog::widthValue() const { return mWidth->value(); }
-void ExportSettingsDialog::setWidthValue(double value) { mWidth->setValue(value); }
-void ExportSettingsDialog::setDpi(int dpi) { mDpi->setValue(dpi); }
+QString ExportSettingsDialog::unit() const {
+    return mUnit->currentText();
+}
+double ExportSettingsDialog::widthValue() const {
+    return mWidth->value();
+}
+void ExportSettingsDialog::setWidthValue(double value) {
+    mWidth->setValue(value);
+}
+void ExportSettingsDialog::setDpi(int dpi) {
+    mDpi->setValue(dpi);
+}
 
 double ExportSettingsDialog::aspect() const {
     const glm::dvec3& size = mGenome.size;
@@ -314,9 +337,13 @@ double ExportSettingsDialog::aspect() const {
     return plane.y / plane.x;
 }
 
-QString ExportSettingsDialog::extension() const { return mFormat->currentData().toString().section('/', 0, 0); }
+QString ExportSettingsDialog::extension() const {
+    return mFormat->currentData().toString().section('/', 0, 0);
+}
 
-int ExportSettingsDialog::bitsPerSample() const { return mFormat->currentData().toString().endsWith("/16") ? 16 : 8; }
+int ExportSettingsDialog::bitsPerSample() const {
+    return mFormat->currentData().toString().endsWith("/16") ? 16 : 8;
+}
 
 void ExportSettingsDialog::setFormat(const QString& extension, int bitsPerSample) {
     QString wanted = extension.toLower();
@@ -327,8 +354,12 @@ void ExportSettingsDialog::setFormat(const QString& extension, int bitsPerSample
     mFormat->setCurrentIndex(index >= 0 ? index : 0);
 }
 
-double ExportSettingsDialog::tolerance() const { return mTolerance ? mTolerance->value() : 1.0; }
-bool ExportSettingsDialog::mirrorRepeatTile() const { return mRepeat && mRepeat->isChecked() && !isSvg(); }
+double ExportSettingsDialog::tolerance() const {
+    return mTolerance ? mTolerance->value() : 1.0;
+}
+bool ExportSettingsDialog::mirrorRepeatTile() const {
+    return mRepeat && mRepeat->isChecked() && !isSvg();
+}
 void ExportSettingsDialog::setMirrorRepeatTile(bool on) {
     if (mRepeat) mRepeat->setChecked(on);
 }
@@ -356,11 +387,16 @@ QSize ExportSettingsDialog::pixels() const {
     return {std::max(1, fit(w)), std::max(1, fit(h))};
 }
 
-std::optional<double> ExportSettingsDialog::dpi() const { return double(mDpi->value()); }
-std::string ExportSettingsDialog::aa() const { return mAa->currentText().toStdString(); }
+std::optional<double> ExportSettingsDialog::dpi() const {
+    return double(mDpi->value());
+}
+std::string ExportSettingsDialog::aa() const {
+    return mAa->currentText().toStdString();
+}
 
 void ExportSettingsDialog::accept() {
-    if (const QString problem = isSvg() ? QString() : exportSizeProblem(mirrorRepeatTile() ? pixels() * 2 : pixels());
+    if (const QString problem =
+            isSvg() ? QString() : exportSizeProblem(mirrorRepeatTile() ? pixels() * 2 : pixels());
         !problem.isEmpty()) {
         reportError(this, tr("The image is too large"), problem);
         return;
@@ -372,7 +408,9 @@ void ExportSettingsDialog::accept() {
 /// drags and size changes to it.
 class DesignCanvas : public QWidget {
 public:
-    explicit DesignCanvas(DesignDialog* dialog) : QWidget(dialog), mDialog(dialog) {
+    explicit DesignCanvas(DesignDialog* dialog)
+        : QWidget(dialog)
+        , mDialog(dialog) {
         setObjectName(QStringLiteral("designView"));
         setMinimumSize(320, 320);
         setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
@@ -407,8 +445,12 @@ private:
 };
 
 DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent)
-    : QDialog(parent), mGenome(std::move(genome)), mRenderer(renderer), mMesh(mesh), mKey(nextDialogKey()),
-      mAngle(viewAngleOf(mGenome)) {
+    : QDialog(parent)
+    , mGenome(std::move(genome))
+    , mRenderer(renderer)
+    , mMesh(mesh)
+    , mKey(nextDialogKey())
+    , mAngle(viewAngleOf(mGenome)) {
     const LineageInfo info = lineageOf(mGenome);
     setWindowTitle(tr("Design %1").arg(info.name.isEmpty() ? info.id : info.name));
     const bool solid = mGenome.dimension == 3;
@@ -450,10 +492,11 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     zoomBar->addWidget(oneButton);
     zoomBar->addWidget(mZoomLabel);
     zoomBar->addStretch();
-    mSwatchButton = tool(QStringLiteral("repeatSwatch"), tr("Repeat swatch"),
-                         solid ? tr("Flat designs only: a solid has no repeat tile")
-                               : tr("Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat "
-                                    "(R)"));
+    mSwatchButton =
+        tool(QStringLiteral("repeatSwatch"), tr("Repeat swatch"),
+             solid ? tr("Flat designs only: a solid has no repeat tile")
+                   : tr("Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat "
+                        "(R)"));
     mSwatchButton->setCheckable(true);
     mSwatchButton->setEnabled(!solid);
     connect(mSwatchButton, &QToolButton::toggled, this, &DesignDialog::setRepeatSwatch);
@@ -462,7 +505,8 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     auto* save = new QPushButton(tr("&Save genome…"), this);
     save->setToolTip(tr("Save the design as a genome file (Ctrl+S)"));
     auto* exportButton = new QPushButton(tr("&Export image…"), this);
-    exportButton->setToolTip(tr("Render the design to PNG, TIFF, EXR or JPEG at any size, or a flat one to SVG (Ctrl+E)"));
+    exportButton->setToolTip(
+        tr("Render the design to PNG, TIFF, EXR or JPEG at any size, or a flat one to SVG (Ctrl+E)"));
     auto* copy = new QPushButton(tr("&Copy genome"), this);
     copy->setObjectName(QStringLiteral("copyGenome"));
     copy->setToolTip(tr("Put the design's genome on the clipboard as text, to paste into the workbench or "
@@ -501,8 +545,8 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     buttons->addWidget(copy);
     buttons->addWidget(editor);
     if (solid)
-        buttons->addWidget(makeBakeButton(this, [this] { return mGenome; }, mMesh,
-                                          [this](const QString& file) { emit fileSaved(file); }));
+        buttons->addWidget(makeBakeButton(
+            this, [this] { return mGenome; }, mMesh, [this](const QString& file) { emit fileSaved(file); }));
     buttons->addStretch();
     buttons->addWidget(close);
     auto* layout = new QVBoxLayout(this);
@@ -518,18 +562,19 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
         mSwatchButton->setChecked(true);
     }
 
-    connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool final) {
-        if (key != mKey) return;
-        // The service delivers only the newest request's results: they show its view.
-        mImageSwatch = mRequestSwatch;
-        // Tiled once here, not at each paint (the tile is fitted to half the canvas).
-        mImage = mImageSwatch ? mirrorTiled(image) : image;
-        mImageFinal = final;
-        if (mRequestRegion) mImageRegion = *mRequestRegion;
-        mImageZoom = mRequestZoom;
-        mMessage.clear();
-        mCanvas->update();
-    });
+    connect(mRenderer, &RenderService::rendered, this,
+            [this](std::uint64_t key, const QImage& image, bool final) {
+                if (key != mKey) return;
+                // The service delivers only the newest request's results: they show its view.
+                mImageSwatch = mRequestSwatch;
+                // Tiled once here, not at each paint (the tile is fitted to half the canvas).
+                mImage = mImageSwatch ? mirrorTiled(image) : image;
+                mImageFinal = final;
+                if (mRequestRegion) mImageRegion = *mRequestRegion;
+                mImageZoom = mRequestZoom;
+                mMessage.clear();
+                mCanvas->update();
+            });
     connect(mRenderer, &RenderService::failed, this, [this](std::uint64_t key, const QString& message) {
         if (key != mKey) return;
         mImage = QImage();
@@ -547,7 +592,9 @@ DesignDialog::~DesignDialog() {
     }
 }
 
-QWidget* DesignDialog::canvas() const { return mCanvas; }
+QWidget* DesignDialog::canvas() const {
+    return mCanvas;
+}
 
 QString DesignDialog::zoomText() const {
     const double percent = 100.0 * (mGenome.dimension == 3 ? mObjectZoom : mViewController.scale());
@@ -559,8 +606,12 @@ void DesignDialog::canvasResized() {
     viewChanged();
 }
 
-void DesignDialog::zoomIn() { zoomAt(std::sqrt(2.0), QRectF(mCanvas->rect()).center()); }
-void DesignDialog::zoomOut() { zoomAt(1.0 / std::sqrt(2.0), QRectF(mCanvas->rect()).center()); }
+void DesignDialog::zoomIn() {
+    zoomAt(std::sqrt(2.0), QRectF(mCanvas->rect()).center());
+}
+void DesignDialog::zoomOut() {
+    zoomAt(1.0 / std::sqrt(2.0), QRectF(mCanvas->rect()).center());
+}
 
 void DesignDialog::zoomAt(double factor, QPointF anchor) {
     if (mGenome.dimension == 3)
@@ -610,7 +661,8 @@ QRectF DesignDialog::imageTarget() const {
     // A solid's image fills the canvas (a cross-section keeps its proportions), magnified by
     // the zoom asked for since.
     const QRectF area(mCanvas->rect());
-    const QSizeF size = QSizeF(mImage.size()).scaled(area.size(), Qt::KeepAspectRatio) * (mObjectZoom / mImageZoom);
+    const QSizeF size =
+        QSizeF(mImage.size()).scaled(area.size(), Qt::KeepAspectRatio) * (mObjectZoom / mImageZoom);
     QRectF target(QPointF(0, 0), size);
     target.moveCenter(area.center());
     return target;
@@ -668,11 +720,20 @@ void DesignDialog::keyPressEvent(QKeyEvent* event) {
     // Plain keys, with or without Ctrl or the keypad (Ctrl++ is the platform's zoom).
     switch (event->key()) {
     case Qt::Key_Plus:
-    case Qt::Key_Equal: zoomIn(); return;
-    case Qt::Key_Minus: zoomOut(); return;
-    case Qt::Key_0: fitView(); return;
-    case Qt::Key_1: showOneToOne(); return;
-    default: QDialog::keyPressEvent(event);
+    case Qt::Key_Equal:
+        zoomIn();
+        return;
+    case Qt::Key_Minus:
+        zoomOut();
+        return;
+    case Qt::Key_0:
+        fitView();
+        return;
+    case Qt::Key_1:
+        showOneToOne();
+        return;
+    default:
+        QDialog::keyPressEvent(event);
     }
 }
 
@@ -707,8 +768,9 @@ void DesignDialog::canvasReleased(QMouseEvent*) {
 
 QString DesignDialog::suggestedExportFile() const {
     const QSettings settings;
-    return suggestedFile(mGenome, settings.value(QStringLiteral("files/exportDir")).toString(),
-                         settings.value(QStringLiteral("files/exportExtension"), QStringLiteral(".png")).toString());
+    return suggestedFile(
+        mGenome, settings.value(QStringLiteral("files/exportDir")).toString(),
+        settings.value(QStringLiteral("files/exportExtension"), QStringLiteral(".png")).toString());
 }
 
 void DesignDialog::exportImage() {
@@ -719,14 +781,16 @@ void DesignDialog::exportImage() {
     settings.setValue(QStringLiteral("files/exportExtension"), extension);
     settings.setValue(QStringLiteral("files/exportBits"), settingsDialog.bitsPerSample());
     const bool svg = extension == QStringLiteral(".svg");
-    QString file = askSaveFile(this, tr("Export image"), suggestedExportFile(),
-                               svg ? tr("SVG drawings (*.svg)")
-                                   : tr("Images (*%1);;All images (*.png *.tif *.tiff *.exr *.jpg *.jpeg)").arg(extension));
+    QString file = askSaveFile(
+        this, tr("Export image"), suggestedExportFile(),
+        svg ? tr("SVG drawings (*.svg)")
+            : tr("Images (*%1);;All images (*.png *.tif *.tiff *.exr *.jpg *.jpeg)").arg(extension));
     if (file.isEmpty()) return;
     // A name typed without a format gets the one chosen.
     if (QFileInfo(file).suffix().isEmpty()) file += extension;
     settings.setValue(QStringLiteral("files/exportDir"), QFileInfo(file).absolutePath());
-    settings.setValue(QStringLiteral("files/exportExtension"), QStringLiteral(".") + QFileInfo(file).suffix().toLower());
+    settings.setValue(QStringLiteral("files/exportExtension"),
+                      QStringLiteral(".") + QFileInfo(file).suffix().toLower());
 
     if (QFileInfo(file).suffix().toLower() == QStringLiteral("svg")) {
         exportSvgTo(file, settingsDialog.tolerance());
@@ -781,27 +845,28 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     Genome genome = mGenome;
     SourcePermissions::session().apply(genome);
 
-    return startExport(file, [genome, render, object, objectOnGl, file, options, tile](RenderControl& control) {
-        if (tile) {
-            // As marbler render --repeat mirror: the tile is made in memory from the whole render.
-            ExportOptions withGenome = options;
-            withGenome.genome = serializeGenome(genome);
-            const Image image = CpuRenderer(genome).render(render, &control);
-            if (control.cancelled()) throw Cancelled();
-            writeImage(mirrorRepeat(image), file.toStdString(), withGenome);
-        } else if (object) {
-            // A context of this thread's own: a GL renderer stays on the thread that made it.
-            // The window's back end decides as for the cells: the GPU shades, or GL only
-            // rasterises and the CPU kernel colours.
-            gl::GlRenderer renderer;
-            const Image image = objectOnGl ? renderer.renderMesh(genome, *object)
-                                           : gl::renderMeshHybrid(renderer, genome, *object, &control);
-            if (control.cancelled()) throw Cancelled();
-            writeImage(image, file.toStdString(), options);
-        } else {
-            renderToFile(genome, render, file.toStdString(), options, &control);
-        }
-    });
+    return startExport(
+        file, [genome, render, object, objectOnGl, file, options, tile](RenderControl& control) {
+            if (tile) {
+                // As marbler render --repeat mirror: the tile is made in memory from the whole render.
+                ExportOptions withGenome = options;
+                withGenome.genome = serializeGenome(genome);
+                const Image image = CpuRenderer(genome).render(render, &control);
+                if (control.cancelled()) throw Cancelled();
+                writeImage(mirrorRepeat(image), file.toStdString(), withGenome);
+            } else if (object) {
+                // A context of this thread's own: a GL renderer stays on the thread that made it.
+                // The window's back end decides as for the cells: the GPU shades, or GL only
+                // rasterises and the CPU kernel colours.
+                gl::GlRenderer renderer;
+                const Image image = objectOnGl ? renderer.renderMesh(genome, *object)
+                                               : gl::renderMeshHybrid(renderer, genome, *object, &control);
+                if (control.cancelled()) throw Cancelled();
+                writeImage(image, file.toStdString(), options);
+            } else {
+                renderToFile(genome, render, file.toStdString(), options, &control);
+            }
+        });
 }
 
 bool DesignDialog::exportSvgTo(const QString& file, double tolerance) {
@@ -883,9 +948,10 @@ void DesignDialog::cancelExport() {
 
 QString saveGenomeWithDialog(QWidget* parent, const Genome& genome) {
     QSettings settings;
-    const QString suggested =
-        suggestedFile(genome, settings.value(QStringLiteral("files/saveDir")).toString(), QStringLiteral(".marble.json"));
-    QString file = askSaveFile(parent, QObject::tr("Save design"), suggested, QObject::tr("Marbler genomes (*.marble.json)"));
+    const QString suggested = suggestedFile(
+        genome, settings.value(QStringLiteral("files/saveDir")).toString(), QStringLiteral(".marble.json"));
+    QString file = askSaveFile(parent, QObject::tr("Save design"), suggested,
+                               QObject::tr("Marbler genomes (*.marble.json)"));
     if (file.isEmpty()) return {};
     if (!file.endsWith(QStringLiteral(".json"))) file += QStringLiteral(".marble.json");
     settings.setValue(QStringLiteral("files/saveDir"), QFileInfo(file).absolutePath());

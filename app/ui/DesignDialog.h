@@ -176,9 +176,9 @@ private:
 QString exportSizeProblem(QSize pixels);
 
 /// The format, size and antialiasing of an exported image, in pixels or as a print size (cm, mm,
-/// inches) at a dpi; for a solid design, whether it shows the object or a cross-section. Changing the unit converts the width at the dpi, so the image keeps its
-/// pixels; changing the dpi of a print size keeps the print size. Sizes beyond the renderer's
-/// limits are refused with the reason, before any work starts.
+/// inches) at a dpi; for a solid design, whether it shows the object or a cross-section. Changing the unit
+/// converts the width at the dpi, so the image keeps its pixels; changing the dpi of a print size keeps the
+/// print size. Sizes beyond the renderer's limits are refused with the reason, before any work starts.
 class ExportSettingsDialog : public QDialog {
     Q_OBJECT
 public:
@@ -228,8 +228,8 @@ private:
     QSpinBox* mDpi = nullptr;
     QComboBox* mAa = nullptr;
     QComboBox* mFormat = nullptr;
-    QComboBox* mSolidView = nullptr;   ///< solids: object view or cross-section
-    QComboBox* mAxis = nullptr;        ///< solids: the cross-section's axis
+    QComboBox* mSolidView = nullptr;     ///< solids: object view or cross-section
+    QComboBox* mAxis = nullptr;          ///< solids: the cross-section's axis
     QDoubleSpinBox* mPosition = nullptr; ///< solids: the cross-section's position on its axis
     QLabel* mPixels = nullptr;
     QDoubleSpinBox* mTolerance = nullptr; ///< flat designs: the SVG's tolerance

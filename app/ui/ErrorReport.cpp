@@ -11,7 +11,9 @@ ErrorHandler& handler() {
 }
 } // namespace
 
-void setErrorHandler(ErrorHandler h) { handler() = std::move(h); }
+void setErrorHandler(ErrorHandler h) {
+    handler() = std::move(h);
+}
 
 void reportError(QWidget* parent, const QString& title, const QString& message) {
     if (handler()) {

@@ -22,7 +22,8 @@ OpenChooser& openChooserHook() {
 /// "design 5", "designs 1, 2 and 3": cells as the window numbers them (from 1).
 QString designList(const std::vector<int>& cells) {
     QStringList numbers;
-    for (int c : cells) numbers << QString::number(c + 1);
+    for (int c : cells)
+        numbers << QString::number(c + 1);
     if (numbers.size() == 1) return OpenPlacementDialog::tr("design %1").arg(numbers.front());
     const QString last = numbers.takeLast();
     return OpenPlacementDialog::tr("designs %1 and %2").arg(numbers.join(QStringLiteral(", ")), last);
@@ -32,27 +33,34 @@ QString designList(const std::vector<int>& cells) {
 
 OpenChoice lastOpenChoice() {
     return QSettings().value(ChoiceKey).toString() == QStringLiteral("replace") ? OpenChoice::Replace
-                                                                               : OpenChoice::NewGeneration;
+                                                                                : OpenChoice::NewGeneration;
 }
 
-bool askOpenChoice() { return QSettings().value(OpenAskKey, true).toBool(); }
+bool askOpenChoice() {
+    return QSettings().value(OpenAskKey, true).toBool();
+}
 
 void rememberOpenChoice(OpenChoice choice, bool askAgain) {
     QSettings settings;
-    settings.setValue(ChoiceKey, choice == OpenChoice::Replace ? QStringLiteral("replace") : QStringLiteral("generation"));
+    settings.setValue(ChoiceKey, choice == OpenChoice::Replace ? QStringLiteral("replace")
+                                                               : QStringLiteral("generation"));
     settings.setValue(OpenAskKey, askAgain);
 }
 
-OpenPlacementDialog::OpenPlacementDialog(const OpenQuestion& question, QWidget* parent) : QDialog(parent) {
+OpenPlacementDialog::OpenPlacementDialog(const OpenQuestion& question, QWidget* parent)
+    : QDialog(parent) {
     setWindowTitle(tr("Where do the opened designs go?"));
     const QString what = question.names.size() == 1 ? question.names.front()
                                                     : tr("%n designs", nullptr, int(question.names.size()));
-    QString text = tr("<b>Opening %1 would replace %2.</b>").arg(what.toHtmlEscaped(), designList(question.replaced));
+    QString text =
+        tr("<b>Opening %1 would replace %2.</b>").arg(what.toHtmlEscaped(), designList(question.replaced));
     if (!question.parents.empty())
-        text += QStringLiteral("<br>") + (question.parents.size() == 1
-                                              ? tr("Design %1 is a selected parent.").arg(question.parents.front() + 1)
-                                              : tr("%1 are selected parents.").arg(designList(question.parents)));
-    text += QStringLiteral("<br>") + tr("Either way the grid as it is now stays one generation back (Ctrl+Z).");
+        text += QStringLiteral("<br>") +
+                (question.parents.size() == 1
+                     ? tr("Design %1 is a selected parent.").arg(question.parents.front() + 1)
+                     : tr("%1 are selected parents.").arg(designList(question.parents)));
+    text +=
+        QStringLiteral("<br>") + tr("Either way the grid as it is now stays one generation back (Ctrl+Z).");
     auto* intro = new QLabel(text, this);
     intro->setWordWrap(true);
 
@@ -100,9 +108,13 @@ OpenPlacementDialog::OpenPlacementDialog(const OpenQuestion& question, QWidget* 
     layout->addWidget(mDontAsk);
 }
 
-bool OpenPlacementDialog::dontAskAgain() const { return mDontAsk->isChecked(); }
+bool OpenPlacementDialog::dontAskAgain() const {
+    return mDontAsk->isChecked();
+}
 
-void setOpenChooser(OpenChooser chooser) { openChooserHook() = std::move(chooser); }
+void setOpenChooser(OpenChooser chooser) {
+    openChooserHook() = std::move(chooser);
+}
 
 std::optional<OpenChoice> chooseOpenPlacement(QWidget* parent, const OpenQuestion& question) {
     if (openChooserHook()) return openChooserHook()(parent, question);

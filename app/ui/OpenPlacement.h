@@ -23,7 +23,7 @@ enum class OpenChoice {
 
 /// What is about to happen, for the question's words.
 struct OpenQuestion {
-    QStringList names;        ///< the opened designs' file (or design) names
+    QStringList names;         ///< the opened designs' file (or design) names
     std::vector<int> replaced; ///< cells whose designs "Replace" would overwrite (0-based)
     std::vector<int> parents;  ///< those of them that are selected parents
 };

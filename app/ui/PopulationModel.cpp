@@ -30,7 +30,8 @@ std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t counter) {
 
 } // namespace
 
-PopulationModel::PopulationModel(QObject* parent) : QObject(parent) {
+PopulationModel::PopulationModel(QObject* parent)
+    : QObject(parent) {
     mHistory.emplace_back();
     mHistory.back().description = tr("Empty workbench");
 }
@@ -52,9 +53,13 @@ std::vector<int> PopulationModel::selectedCells() const {
     return result;
 }
 
-int PopulationModel::selectedCount() const { return int(selectedCells().size()); }
+int PopulationModel::selectedCount() const {
+    return int(selectedCells().size());
+}
 
-void PopulationModel::toggleSelected(int index) { setSelected(index, !isSelected(index)); }
+void PopulationModel::toggleSelected(int index) {
+    setSelected(index, !isSelected(index));
+}
 
 void PopulationModel::setSelected(int index, bool selected) {
     if (index < 0 || index >= CellCount) return;
@@ -79,21 +84,29 @@ QString PopulationModel::whyNot(GeneticOperator op) const {
     const int least = minParents(op), most = maxParents(op);
     // What the operator takes, said the same way in every message.
     const QString needs = most == 0 ? tr("%1 needs %2 or more parents").arg(label).arg(least)
-                          : least == most && least == 1 ? tr("%1 needs 1 parent").arg(label)
-                                                        : tr("%1 needs exactly %2 parents").arg(label).arg(least);
-    if (mEmptyStart) return tr("%1: there are no designs yet; make a new random population or open designs").arg(needs);
+                          : least == most && least == 1
+                              ? tr("%1 needs 1 parent").arg(label)
+                              : tr("%1 needs exactly %2 parents").arg(label).arg(least);
+    if (mEmptyStart)
+        return tr("%1: there are no designs yet; make a new random population or open designs").arg(needs);
     if (n == 0)
-        return least == 1 ? tr("%1: click a design to pick it").arg(needs)
-                          : tr("%1: click %2 designs").arg(needs, least == 2 ? tr("two") : QString::number(least));
+        return least == 1
+                   ? tr("%1: click a design to pick it").arg(needs)
+                   : tr("%1: click %2 designs").arg(needs, least == 2 ? tr("two") : QString::number(least));
     if (n < least) return tr("%1: %2 is picked, click another design").arg(needs).arg(n);
     if (most > 0 && n > most) return tr("%1: %2 are picked, click one to let it go").arg(needs).arg(n);
     // Every cell selected leaves no room for offspring.
-    if (n >= CellCount) return tr("%1 has no room for offspring: every design is a parent, click one to let it go").arg(label);
+    if (n >= CellCount)
+        return tr("%1 has no room for offspring: every design is a parent, click one to let it go")
+            .arg(label);
     const int dimension = cell(selected.front())->dimension;
-    if (!std::all_of(selected.begin(), selected.end(), [&](int i) { return cell(i)->dimension == dimension; }))
-        return n == 2 ? tr("%1 needs two parents of the same kind (flat/solid): one picked design is flat, the other solid")
+    if (!std::all_of(selected.begin(), selected.end(),
+                     [&](int i) { return cell(i)->dimension == dimension; }))
+        return n == 2 ? tr("%1 needs two parents of the same kind (flat/solid): one picked design is flat, "
+                           "the other solid")
                             .arg(label)
-                      : tr("%1 needs parents of the same kind (flat/solid): the picked designs mix flat and solid ones")
+                      : tr("%1 needs parents of the same kind (flat/solid): the picked designs mix flat and "
+                           "solid ones")
                             .arg(label);
     return {};
 }
@@ -110,23 +123,26 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     request.op = op;
     request.seed = nextBreedSeed();
     request.strength = std::clamp(strength, 0.0, 1.0);
-    for (int i : selected) request.parents.push_back(*cell(i));
+    for (int i : selected)
+        request.parents.push_back(*cell(i));
     request.count = CellCount - int(selected.size());
-    if (request.count <= 0) throw InputError("every cell is a parent: deselect one to make room for offspring");
+    if (request.count <= 0)
+        throw InputError("every cell is a parent: deselect one to make room for offspring");
     // The children carry the numbers the user sees: the generation they make (as the status
     // bar counts it) and the design (cell) each goes to.
     request.generation = current().number + 1;
     for (int i = 0; i < CellCount; ++i)
         if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
     std::vector<Genome> children = breed(request);
-    if (children.size() != std::size_t(request.count)) throw RuntimeFailure("the operator made too few offspring");
+    if (children.size() != std::size_t(request.count))
+        throw RuntimeFailure("the operator made too few offspring");
 
     Generation next;
     next.selected = current().selected;
     next.parentCells = selected;
     next.description = selected.size() == 1
-        ? tr("%1 of 1 parent").arg(operatorLabel(op))
-        : tr("%1 of %2 parents").arg(operatorLabel(op)).arg(selected.size());
+                           ? tr("%1 of 1 parent").arg(operatorLabel(op))
+                           : tr("%1 of %2 parents").arg(operatorLabel(op)).arg(selected.size());
     if (mWildcard && children.size() > 1) children.back() = wildcard(request, children.back());
     std::size_t child = 0;
     for (int i = 0; i < CellCount; ++i) {
@@ -140,10 +156,13 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
 }
 
 QString PopulationModel::whyNoColourways(bool mix) const {
-    if (QString why = whyNot(mix ? GeneticOperator::Recombine : GeneticOperator::Alter); !why.isEmpty()) return why;
+    if (QString why = whyNot(mix ? GeneticOperator::Recombine : GeneticOperator::Alter); !why.isEmpty())
+        return why;
     for (int i : selectedCells())
         if (locksOf(*cell(i)).palette)
-            return tr("Design %1's palette is locked, and colourways change only the palette: unlock it first").arg(i + 1);
+            return tr("Design %1's palette is locked, and colourways change only the palette: unlock it "
+                      "first")
+                .arg(i + 1);
     return {};
 }
 
@@ -153,9 +172,11 @@ void PopulationModel::applyColourways(bool mix, double strength, const QString& 
     request.mix = mix;
     request.strength = std::clamp(strength, 0.0, 1.0);
     request.seed = nextBreedSeed();
-    for (int i : selected) request.parents.push_back(*cell(i));
+    for (int i : selected)
+        request.parents.push_back(*cell(i));
     request.count = CellCount - int(selected.size());
-    if (request.count <= 0) throw InputError("every cell is a parent: deselect one to make room for colourways");
+    if (request.count <= 0)
+        throw InputError("every cell is a parent: deselect one to make room for colourways");
     request.generation = current().number + 1;
     for (int i = 0; i < CellCount; ++i)
         if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
@@ -169,7 +190,8 @@ void PopulationModel::applyColourways(bool mix, double strength, const QString& 
                                               : tr("Colourways mixed from %1 parents").arg(selected.size());
     std::size_t child = 0;
     for (int i = 0; i < CellCount; ++i)
-        next.cells[std::size_t(i)] = current().selected[std::size_t(i)] ? current().cells[std::size_t(i)] : children[child++];
+        next.cells[std::size_t(i)] =
+            current().selected[std::size_t(i)] ? current().cells[std::size_t(i)] : children[child++];
     pushGeneration(std::move(next));
 }
 
@@ -177,12 +199,14 @@ Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& repl
     // Of the parents' family when they have one (the first parent that does), else free.
     const Family* family = nullptr;
     for (const Genome& parent : request.parents)
-        if (!family && parent.meta.is_object() && parent.meta.contains("family") && parent.meta["family"].is_string())
+        if (!family && parent.meta.is_object() && parent.meta.contains("family") &&
+            parent.meta["family"].is_string())
             family = findFamily(parent.meta["family"].get<std::string>());
     const int dimension = request.parents.front().dimension;
     if (family && family->dimension != dimension) family = nullptr;
     std::set<std::string> taken;
-    for (const Genome& parent : request.parents) taken.insert(genomeId(parent));
+    for (const Genome& parent : request.parents)
+        taken.insert(genomeId(parent));
     Genome g;
     std::uint64_t seed = 0;
     for (std::uint64_t draw = 0; draw < 16; ++draw) {
@@ -201,9 +225,12 @@ Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& repl
         if (was.contains("generation")) lineage["generation"] = was["generation"];
     }
     g.meta["lineage"] = lineage;
-    if (lineage.contains("generation") && lineage.contains("child") && g.meta.contains("name") && g.meta["name"].is_string())
+    if (lineage.contains("generation") && lineage.contains("child") && g.meta.contains("name") &&
+        g.meta["name"].is_string())
         g.meta["name"] = g.meta["name"].get<std::string>() + " (g" + lineage["generation"].dump() + " #" +
-                         std::to_string(request.childNumbers.empty() ? lineage["child"].get<int>() : request.childNumbers.back()) + ")";
+                         std::to_string(request.childNumbers.empty() ? lineage["child"].get<int>()
+                                                                     : request.childNumbers.back()) +
+                         ")";
     g.meta["id"] = genomeId(g);
     return g;
 }
@@ -213,7 +240,8 @@ void PopulationModel::newRandomPopulation(int dimension, const std::string& fami
     const Family* only = findFamily(family);
     if (only && only->dimension != dimension) only = nullptr;
     if (only)
-        next.description = tr("New %1 population").arg(QString::fromUtf8(only->name.data(), qsizetype(only->name.size())));
+        next.description =
+            tr("New %1 population").arg(QString::fromUtf8(only->name.data(), qsizetype(only->name.size())));
     else
         next.description = dimension == 3 ? tr("New random solid population") : tr("New random population");
     // Seeded by the index the new generation gets, which the placeholder does not take: the
@@ -230,7 +258,8 @@ void PopulationModel::newRandomPopulation(int dimension, const std::string& fami
             if (f.dimension == dimension) sources.push_back(&f);
         sources.push_back(nullptr);
         Pcg32 order(base, 0x6d6978666d6c7931ULL);
-        for (std::size_t i = sources.size(); i > 1; --i) std::swap(sources[i - 1], sources[order.below(std::uint32_t(i))]);
+        for (std::size_t i = sources.size(); i > 1; --i)
+            std::swap(sources[i - 1], sources[order.below(std::uint32_t(i))]);
     }
     // A new population is new: no design repeats one of the grid it replaces, or another.
     std::set<std::string> taken;
@@ -283,8 +312,8 @@ std::vector<int> PopulationModel::placeDesigns(const std::vector<Genome>& design
     return used;
 }
 
-std::vector<int> PopulationModel::startGenerationOf(const std::vector<Genome>& designs, const QString& description,
-                                                    int first) {
+std::vector<int> PopulationModel::startGenerationOf(const std::vector<Genome>& designs,
+                                                    const QString& description, int first) {
     Generation next;
     next.description = description;
     std::vector<int> used;
@@ -357,7 +386,8 @@ QString PopulationModel::generationLabel(int index) const {
 
 int PopulationModel::forwardTarget() const {
     if (mEmptyStart) return -1;
-    const int remembered = std::size_t(mCurrent) < mForwardChild.size() ? mForwardChild[std::size_t(mCurrent)] : -1;
+    const int remembered =
+        std::size_t(mCurrent) < mForwardChild.size() ? mForwardChild[std::size_t(mCurrent)] : -1;
     if (remembered >= 0) return remembered;
     const std::vector<int> next = children(mCurrent);
     return next.empty() ? -1 : next.back();
@@ -398,7 +428,8 @@ bool PopulationModel::saveSession() {
     if (mSessionFile.isEmpty() || mEmptyStart) return true;
     try {
         const QString folder = QFileInfo(mSessionFile).absolutePath();
-        if (!QDir().mkpath(folder)) throw RuntimeFailure("cannot create the session folder " + folder.toStdString());
+        if (!QDir().mkpath(folder))
+            throw RuntimeFailure("cannot create the session folder " + folder.toStdString());
         writeFileAtomically(mSessionFile.toStdString(), serializeSession(*this, &mSessionCells));
         return true;
     } catch (const std::exception& e) { // also the JSON library's (a folder name that is not UTF-8)
@@ -407,7 +438,9 @@ bool PopulationModel::saveSession() {
     }
 }
 
-void PopulationModel::autosave() { saveSession(); }
+void PopulationModel::autosave() {
+    saveSession();
+}
 
 void PopulationModel::restoreSession(SavedSession session) {
     if (session.history.empty()) return;
@@ -462,7 +495,8 @@ QStringList PopulationModel::setFavouritesFolder(const QString& folder) {
 }
 
 QString PopulationModel::favouritesTrashFolder() const {
-    return mFavouritesFolder.isEmpty() ? QString() : QDir(mFavouritesFolder).filePath(QStringLiteral(".trash"));
+    return mFavouritesFolder.isEmpty() ? QString()
+                                       : QDir(mFavouritesFolder).filePath(QStringLiteral(".trash"));
 }
 
 QStringList PopulationModel::reloadFavourites() {
@@ -475,7 +509,8 @@ QStringList PopulationModel::reloadFavourites() {
         const auto files = dir.entryInfoList({QStringLiteral("*.marble.json")}, QDir::Files, QDir::Name);
         for (const QFileInfo& info : files) {
             try {
-                mFavourites.push_back({loadGenome(info.absoluteFilePath().toStdString()), info.absoluteFilePath()});
+                mFavourites.push_back(
+                    {loadGenome(info.absoluteFilePath().toStdString()), info.absoluteFilePath()});
             } catch (const Error& e) {
                 errors << QString::fromStdString(e.what());
             }
@@ -526,10 +561,14 @@ bool PopulationModel::restoreRemovedFavourite(const QString& trashed) {
 
 QString operatorLabel(GeneticOperator op) {
     switch (op) {
-    case GeneticOperator::Alter: return PopulationModel::tr("Alter");
-    case GeneticOperator::Recombine: return PopulationModel::tr("Recombine");
-    case GeneticOperator::Swap: return PopulationModel::tr("Swap");
-    case GeneticOperator::Reinit: return PopulationModel::tr("Change initial state");
+    case GeneticOperator::Alter:
+        return PopulationModel::tr("Alter");
+    case GeneticOperator::Recombine:
+        return PopulationModel::tr("Recombine");
+    case GeneticOperator::Swap:
+        return PopulationModel::tr("Swap");
+    case GeneticOperator::Reinit:
+        return PopulationModel::tr("Change initial state");
     }
     return {};
 }
@@ -553,7 +592,8 @@ void numberGeneration(std::vector<Generation>& history, std::size_t k) {
     }
     g.number = g.parent >= 0 ? history[std::size_t(g.parent)].number + 1 : 1;
     int branches = 0;
-    for (std::size_t j = 0; j < k; ++j) branches = std::max(branches, history[j].branch);
+    for (std::size_t j = 0; j < k; ++j)
+        branches = std::max(branches, history[j].branch);
     g.branch = branches + 1;
 }
 
@@ -570,7 +610,8 @@ LineageInfo lineageOf(const Genome& genome) {
         info.id = QString::fromStdString(meta["id"].get<std::string>());
     else
         info.id = QString::fromStdString(genomeId(genome));
-    if (meta.contains("name") && meta["name"].is_string()) info.name = QString::fromStdString(meta["name"].get<std::string>());
+    if (meta.contains("name") && meta["name"].is_string())
+        info.name = QString::fromStdString(meta["name"].get<std::string>());
     if (meta.contains("family") && meta["family"].is_string())
         info.family = QString::fromStdString(meta["family"].get<std::string>());
     if (meta.contains("lineage") && meta["lineage"].is_object()) {

@@ -139,7 +139,8 @@ public:
     /// Starts a generation of only these designs, from cell `first` on, every other cell empty
     /// and nothing selected: for designs of another kind (flat or solid) than the grid's, which
     /// cannot breed with it. The grid they replace stays a generation back. Returns the cells used.
-    std::vector<int> startGenerationOf(const std::vector<Genome>& designs, const QString& description, int first = 0);
+    std::vector<int> startGenerationOf(const std::vector<Genome>& designs, const QString& description,
+                                       int first = 0);
     /// Puts one design into a given cell as a new generation.
     void setCell(int index, const Genome& genome, const QString& description);
     /// Changes the locks of a cell's design in place (not a new generation: locks are a
@@ -273,13 +274,13 @@ QString operatorLabel(const QString& name);
 /// The lineage of a design as the UI shows it, read from meta.lineage and meta.id.
 struct LineageInfo {
     QString id;
-    QString op;            ///< empty for a design that was not bred
-    QStringList parents;   ///< parent ids
+    QString op;          ///< empty for a design that was not bred
+    QStringList parents; ///< parent ids
     int generation = 0;
-    QString name;          ///< meta.name when set
-    QString family;        ///< meta.family: the pattern family it was drawn from (Families.h), kept by breeding
-    bool varied = false;   ///< a gentle variation of a result already in its generation
-    QString change;        ///< what it changed from its home parent, in words (describeChange)
+    QString name;        ///< meta.name when set
+    QString family;      ///< meta.family: the pattern family it was drawn from (Families.h), kept by breeding
+    bool varied = false; ///< a gentle variation of a result already in its generation
+    QString change;      ///< what it changed from its home parent, in words (describeChange)
 
     /// The name the UI shows: meta.name, else the first 8 characters of the id.
     QString displayName() const { return name.isEmpty() ? id.left(8) : name; }

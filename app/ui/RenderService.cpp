@@ -52,7 +52,8 @@ class RenderWorker : public QObject {
     Q_OBJECT
 public:
     RenderWorker(std::shared_ptr<RenderQueue> queue, bool glAllowed)
-        : mQueue(std::move(queue)), mGlAllowed(glAllowed) {}
+        : mQueue(std::move(queue))
+        , mGlAllowed(glAllowed) {}
 
     /// Renders until no job is left. Previews of every waiting job come before final passes,
     /// so a whole new generation appears quickly and then sharpens.
@@ -106,12 +107,15 @@ public:
                 }
             }
             // A superseded result is not worth the trip to the GUI thread.
-            if (current) emit result(key, job.ticket, image, final || job.request.previewOnly || !error.isEmpty(), error);
+            if (current)
+                emit result(key, job.ticket, image, final || job.request.previewOnly || !error.isEmpty(),
+                            error);
         }
     }
 
 signals:
-    void result(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final, const QString& error);
+    void result(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final,
+                const QString& error);
     void backendChosen(const QString& name, const QString& why, bool useGl);
 
 private:
@@ -121,8 +125,9 @@ private:
         if (mGlAllowed) choice = gl::chooseBackend(gl::probeGl(), preference);
         mUseGl = choice.useGl && glRenderer();
         if (choice.useGl && !mUseGl) choice.why = "OpenGL failed: " + mGlError;
-        const QString name = mUseGl ? QStringLiteral("OpenGL (%1)").arg(QString::fromStdString(mGl->rendererName()))
-                                    : QStringLiteral("CPU (%1 threads)").arg(cpuThreads());
+        const QString name =
+            mUseGl ? QStringLiteral("OpenGL (%1)").arg(QString::fromStdString(mGl->rendererName()))
+                   : QStringLiteral("CPU (%1 threads)").arg(cpuThreads());
         emit backendChosen(name, QString::fromStdString(choice.why), mUseGl);
     }
 
@@ -146,7 +151,8 @@ private:
         return mGl.get();
     }
 
-    QImage renderPass(const RenderRequest& request, bool final, std::shared_ptr<const CpuRenderer>& prepared) {
+    QImage renderPass(const RenderRequest& request, bool final,
+                      std::shared_ptr<const CpuRenderer>& prepared) {
         const Genome& genome = request.genome;
         RenderControl control;
         control.cancel = &mQueue->abort;
@@ -185,8 +191,8 @@ private:
             // The cross-section stands in for the object, so it takes the object's zoom, about
             // its middle.
             const double w = genome.size.x / request.zoom, h = genome.size.y / request.zoom;
-            settings.region = Region{(genome.size.x - w) / 2.0, (genome.size.y - h) / 2.0, (genome.size.x + w) / 2.0,
-                                     (genome.size.y + h) / 2.0};
+            settings.region = Region{(genome.size.x - w) / 2.0, (genome.size.y - h) / 2.0,
+                                     (genome.size.x + w) / 2.0, (genome.size.y + h) / 2.0};
         }
         settings.aa = final ? request.aa.toStdString() : std::string("none");
         if (genome.dimension == 3) settings.slice = request.slice.value_or(Slice{2, genome.size.z / 2.0});
@@ -208,11 +214,13 @@ private:
     std::string mGlError; ///< why no GL renderer could be made (made once, never retried)
 };
 
-RenderService::RenderService(Backend backend, QObject* parent) : QObject(parent) {
+RenderService::RenderService(Backend backend, QObject* parent)
+    : QObject(parent) {
     start(backend, storedPreference());
 }
 
-RenderService::RenderService(gl::BackendPreference preference, QObject* parent) : QObject(parent) {
+RenderService::RenderService(gl::BackendPreference preference, QObject* parent)
+    : QObject(parent) {
     start(Backend::Auto, preference);
 }
 
@@ -224,18 +232,20 @@ void RenderService::start(Backend backend, gl::BackendPreference preference) {
     mWorker->moveToThread(&mThread);
     connect(&mThread, &QThread::finished, mWorker, &QObject::deleteLater);
     connect(mWorker, &RenderWorker::result, this, &RenderService::onResult);
-    connect(mWorker, &RenderWorker::backendChosen, this, [this](const QString& name, const QString& why, bool useGl) {
-        mBackendName = name;
-        mBackendReason = why;
-        mUsesGl = useGl;
-        emit backendReady(name);
-    });
+    connect(mWorker, &RenderWorker::backendChosen, this,
+            [this](const QString& name, const QString& why, bool useGl) {
+                mBackendName = name;
+                mBackendReason = why;
+                mUsesGl = useGl;
+                emit backendReady(name);
+            });
     mThread.start();
     setPreference(preference);
 }
 
 gl::BackendPreference RenderService::storedPreference() {
-    const QString text = QSettings().value(QStringLiteral("view/renderer"), QStringLiteral("auto")).toString();
+    const QString text =
+        QSettings().value(QStringLiteral("view/renderer"), QStringLiteral("auto")).toString();
     return gl::parseBackendPreference(text.toStdString()).value_or(gl::BackendPreference::Auto);
 }
 
@@ -285,7 +295,10 @@ std::uint64_t RenderService::request(std::uint64_t key, RenderRequest request) {
             if (!*answer) {
                 dropJob(key);
                 QMetaObject::invokeMethod(
-                    this, [this, key, ticket, image] { onResult(key, ticket, QImage(), true, refusedSourceMessage(image)); },
+                    this,
+                    [this, key, ticket, image] {
+                        onResult(key, ticket, QImage(), true, refusedSourceMessage(image));
+                    },
                     Qt::QueuedConnection);
                 return ticket;
             }

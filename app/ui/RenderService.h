@@ -107,7 +107,8 @@ signals:
 
 private:
     void start(Backend backend, gl::BackendPreference preference);
-    void onResult(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final, const QString& error);
+    void onResult(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final,
+                  const QString& error);
     /// Hands a request to the worker.
     void enqueue(std::uint64_t key, std::uint64_t ticket, RenderRequest request);
     /// Drops the worker's job of a key (not the outstanding ticket).

@@ -39,8 +39,10 @@ QString safeFileName(const QString& name) {
     }
     result = result.simplified();
     // A leading dot hides the file; Windows drops trailing dots and spaces.
-    while (result.startsWith(QLatin1Char('.')) || result.startsWith(QLatin1Char(' '))) result.remove(0, 1);
-    while (result.endsWith(QLatin1Char('.')) || result.endsWith(QLatin1Char(' '))) result.chop(1);
+    while (result.startsWith(QLatin1Char('.')) || result.startsWith(QLatin1Char(' ')))
+        result.remove(0, 1);
+    while (result.endsWith(QLatin1Char('.')) || result.endsWith(QLatin1Char(' ')))
+        result.chop(1);
     return result;
 }
 
@@ -51,21 +53,27 @@ QString suggestedFile(const Genome& genome, const QString& folder, const QString
     return QDir(folder.isEmpty() ? QDir::currentPath() : folder).filePath(name + extension);
 }
 
-void setSaveFileAsker(SaveFileAsker asker) { askerHook() = std::move(asker); }
+void setSaveFileAsker(SaveFileAsker asker) {
+    askerHook() = std::move(asker);
+}
 
-QString askSaveFile(QWidget* parent, const QString& caption, const QString& suggested, const QString& filter) {
+QString askSaveFile(QWidget* parent, const QString& caption, const QString& suggested,
+                    const QString& filter) {
     if (askerHook()) return askerHook()(parent, caption, suggested, filter);
     return QFileDialog::getSaveFileName(parent, caption, suggested, filter);
 }
 
-void setUrlOpener(UrlOpener opener) { openerHook() = std::move(opener); }
+void setUrlOpener(UrlOpener opener) {
+    openerHook() = std::move(opener);
+}
 
 bool openUrl(const QUrl& url) {
     if (openerHook()) return openerHook()(url);
     return QDesktopServices::openUrl(url);
 }
 
-SavedFileNotice::SavedFileNotice(QWidget* parent) : QWidget(parent) {
+SavedFileNotice::SavedFileNotice(QWidget* parent)
+    : QWidget(parent) {
     setObjectName(QStringLiteral("savedFileNotice"));
     mPath = new QLabel(this);
     mPath->setObjectName(QStringLiteral("savedPath"));
@@ -96,6 +104,8 @@ void SavedFileNotice::showFile(const QString& file) {
     mHide.start();
 }
 
-QString SavedFileNotice::folder() const { return mFile.isEmpty() ? QString() : QFileInfo(mFile).absolutePath(); }
+QString SavedFileNotice::folder() const {
+    return mFile.isEmpty() ? QString() : QFileInfo(mFile).absolutePath();
+}
 
 } // namespace marbler::ui

@@ -49,7 +49,9 @@ QString defaultSessionFolder() {
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/session");
 }
 
-QString sessionFilePath(const QString& folder) { return QDir(folder).filePath(QStringLiteral("session.json")); }
+QString sessionFilePath(const QString& folder) {
+    return QDir(folder).filePath(QStringLiteral("session.json"));
+}
 
 std::string serializeSession(const PopulationModel& model, std::vector<std::string>* cellsCache) {
     // The header and each generation's small fields go through the JSON library; the designs,
@@ -66,7 +68,8 @@ std::string serializeSession(const PopulationModel& model, std::vector<std::stri
     // The label goes before the generations: lists of sessions read only the head.
     const SessionLabel& label = model.sessionLabel();
     if (!label.name.isEmpty()) header["name"] = label.name.toStdString();
-    if (label.created.isValid()) header["created"] = label.created.toUTC().toString(Qt::ISODate).toStdString();
+    if (label.created.isValid())
+        header["created"] = label.created.toUTC().toString(Qt::ISODate).toStdString();
     std::string text = header.dump();
     text.pop_back(); // the closing brace
     text += ",\"generations\":[";
@@ -124,16 +127,17 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
     }
     if (!doc.is_object()) bad(name, "", "a session is a JSON object");
     if (!doc.contains("format") || doc["format"] != FormatName) bad(name, "format", "not a Marbler session");
-    if (!doc.contains("version") || !doc["version"].is_number_integer() || doc["version"].get<long long>() < 1
-        || doc["version"].get<long long>() > SessionVersion)
+    if (!doc.contains("version") || !doc["version"].is_number_integer() ||
+        doc["version"].get<long long>() < 1 || doc["version"].get<long long>() > SessionVersion)
         bad(name, "version", "only version 1 and 2 sessions are read");
     const int version = doc["version"].get<int>();
 
     SavedSession session;
-    if (!doc.contains("seed") || !doc["seed"].is_number_unsigned()) bad(name, "seed", "must be a whole number >= 0");
+    if (!doc.contains("seed") || !doc["seed"].is_number_unsigned())
+        bad(name, "seed", "must be a whole number >= 0");
     session.seed = doc["seed"].get<std::uint64_t>();
-    if (!doc.contains("dimension") || !doc["dimension"].is_number_integer()
-        || (doc["dimension"].get<int>() != 2 && doc["dimension"].get<int>() != 3))
+    if (!doc.contains("dimension") || !doc["dimension"].is_number_integer() ||
+        (doc["dimension"].get<int>() != 2 && doc["dimension"].get<int>() != 3))
         bad(name, "dimension", "must be 2 or 3");
     session.dimension = doc["dimension"].get<int>();
     if (doc.contains("mesh")) {
@@ -149,7 +153,8 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
     if (doc.contains("created")) {
         if (!doc["created"].is_string()) bad(name, "created", "must be a date and time (ISO 8601)");
         // A time that does not parse only loses the label's date, not the session.
-        session.label.created = QDateTime::fromString(QString::fromStdString(doc["created"].get<std::string>()), Qt::ISODate);
+        session.label.created =
+            QDateTime::fromString(QString::fromStdString(doc["created"].get<std::string>()), Qt::ISODate);
     }
 
     if (!doc.contains("generations") || !doc["generations"].is_array() || doc["generations"].empty())
@@ -165,12 +170,13 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
             g.parent = int(k) - 1;
         } else {
             // Only an earlier generation can be a parent, which also rules out cycles.
-            if (!gen.contains("parent") || !gen["parent"].is_number_integer() || gen["parent"].get<long long>() < -1
-                || gen["parent"].get<long long>() >= static_cast<long long>(k))
+            if (!gen.contains("parent") || !gen["parent"].is_number_integer() ||
+                gen["parent"].get<long long>() < -1 ||
+                gen["parent"].get<long long>() >= static_cast<long long>(k))
                 bad(name, at + ".parent",
                     k == 0 ? std::string("must be -1: the first generation grows from none")
-                           : "must name an earlier generation (0 to " + std::to_string(k - 1)
-                                 + "), or be -1 for a generation that grows from none");
+                           : "must name an earlier generation (0 to " + std::to_string(k - 1) +
+                                 "), or be -1 for a generation that grows from none");
             g.parent = gen["parent"].get<int>();
         }
         if (gen.contains("description")) {
@@ -178,7 +184,8 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
             g.description = QString::fromStdString(gen["description"].get<std::string>());
         }
         g.parentCells = cellList(gen, "parents", name, at);
-        if (!gen.contains("cells") || !gen["cells"].is_array() || gen["cells"].size() != std::size_t(CellCount))
+        if (!gen.contains("cells") || !gen["cells"].is_array() ||
+            gen["cells"].size() != std::size_t(CellCount))
             bad(name, at + ".cells", "must be an array of 9 designs or nulls");
         const nlohmann::ordered_json* bases = nullptr;
         if (gen.contains("bases")) {
@@ -209,8 +216,9 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
         session.history.push_back(std::move(g));
         numberGeneration(session.history, k);
     }
-    if (!doc.contains("current") || !doc["current"].is_number_integer() || doc["current"].get<long long>() < 0
-        || doc["current"].get<long long>() >= static_cast<long long>(session.history.size()))
+    if (!doc.contains("current") || !doc["current"].is_number_integer() ||
+        doc["current"].get<long long>() < 0 ||
+        doc["current"].get<long long>() >= static_cast<long long>(session.history.size()))
         bad(name, "current", "must name one of the generations");
     session.current = doc["current"].get<int>();
     return session;
@@ -219,7 +227,8 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
 SavedSession loadSession(const QString& file) {
     const std::string name = file.toStdString();
     QFile in(file);
-    if (!in.open(QIODevice::ReadOnly)) throw RuntimeFailure("cannot read " + name + ": " + in.errorString().toStdString());
+    if (!in.open(QIODevice::ReadOnly))
+        throw RuntimeFailure("cannot read " + name + ": " + in.errorString().toStdString());
     if (in.size() > MaxSessionBytes) bad(name, "", "the file is too large to be a session");
     const QByteArray text = in.readAll();
     if (in.error() != QFileDevice::NoError)
@@ -229,7 +238,8 @@ SavedSession loadSession(const QString& file) {
 
 QString keepBadSession(const QString& file) {
     for (int n = 1; n < 1000; ++n) {
-        const QString aside = n == 1 ? file + QStringLiteral(".bad") : QStringLiteral("%1.%2.bad").arg(file).arg(n);
+        const QString aside =
+            n == 1 ? file + QStringLiteral(".bad") : QStringLiteral("%1.%2.bad").arg(file).arg(n);
         if (QFileInfo::exists(aside)) continue;
         return QFile::rename(file, aside) ? aside : QString();
     }

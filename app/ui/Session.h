@@ -37,7 +37,7 @@ struct SavedSession {
     std::vector<Generation> history; ///< at least one generation, numbered (numberGeneration)
     int current = 0;                 ///< index into history
     std::uint64_t seed = 1;
-    int dimension = 2;               ///< 2: flat, 3: solid (the kind of the current grid)
+    int dimension = 2; ///< 2: flat, 3: solid (the kind of the current grid)
     QString mesh = QStringLiteral("vase");
     SessionLabel label{}; ///< empty name, invalid time when the document has none
 };

@@ -23,7 +23,9 @@ namespace {
 const QString IdFormat = QStringLiteral("yyyyMMdd-HHmmss");
 const QString Suffix = QStringLiteral(".json");
 
-QString tr(const char* text) { return QCoreApplication::translate("marbler::ui::SessionStore", text); }
+QString tr(const char* text) {
+    return QCoreApplication::translate("marbler::ui::SessionStore", text);
+}
 
 /// Reads the members of a session document that come before its generations, and stops there:
 /// a list of sessions reads a few hundred bytes of each, however many designs it holds.
@@ -57,7 +59,9 @@ public:
         if (mDepth == 1) mKey = key;
         return !(mDepth == 1 && key == "generations"); // the head ends here
     }
-    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+        return false;
+    }
 
 private:
     bool integer(long long value) {
@@ -128,15 +132,22 @@ QString describeSession(const KeptSession& session) {
     if (session.dimension == 3) parts << tr("solid");
     if (session.dimension == 2) parts << tr("flat");
     if (session.modified.isValid())
-        parts << tr("changed %1").arg(QLocale().toString(session.modified.toLocalTime(), QStringLiteral("d MMM yyyy HH:mm")));
+        parts << tr("changed %1")
+                     .arg(QLocale().toString(session.modified.toLocalTime(),
+                                             QStringLiteral("d MMM yyyy HH:mm")));
     return parts.join(QStringLiteral(", "));
 }
 
-SessionStore::SessionStore(QString sessionFolder) : mFolder(std::move(sessionFolder)) {}
+SessionStore::SessionStore(QString sessionFolder)
+    : mFolder(std::move(sessionFolder)) {}
 
-QString SessionStore::folder() const { return QDir(mFolder).filePath(QStringLiteral("sessions")); }
+QString SessionStore::folder() const {
+    return QDir(mFolder).filePath(QStringLiteral("sessions"));
+}
 
-QString SessionStore::trashFolder() const { return QDir(folder()).filePath(QStringLiteral(".trash")); }
+QString SessionStore::trashFolder() const {
+    return QDir(folder()).filePath(QStringLiteral(".trash"));
+}
 
 KeptSession SessionStore::describe(const QString& file) {
     const QFileInfo info(file);
@@ -186,7 +197,8 @@ KeptSession SessionStore::create(int dimension, const QDateTime& now) {
     for (int n = 1;; ++n) {
         session.id = n == 1 ? base : QStringLiteral("%1-%2").arg(base).arg(n);
         session.file = QDir(folder()).filePath(session.id + Suffix);
-        if (!QFileInfo::exists(session.file) && !QFileInfo::exists(session.file + QStringLiteral(".bad"))) break;
+        if (!QFileInfo::exists(session.file) && !QFileInfo::exists(session.file + QStringLiteral(".bad")))
+            break;
     }
     session.name = defaultSessionName(dimension, now);
     session.created = now;
@@ -197,13 +209,15 @@ KeptSession SessionStore::create(int dimension, const QDateTime& now) {
 QStringList SessionStore::migrate(QStringList* problems) {
     QStringList moved;
     // session.json is the newer of the two; both keep their times, so the list orders them so.
-    for (const QString& file : {sessionFilePath(mFolder), QDir(mFolder).filePath(QStringLiteral("session.previous.json"))}) {
+    for (const QString& file :
+         {sessionFilePath(mFolder), QDir(mFolder).filePath(QStringLiteral("session.previous.json"))}) {
         if (!QFileInfo(file).isFile()) continue;
         const KeptSession head = describe(file);
         // The time it was last changed is the best known creation time of an old session.
         const KeptSession kept = create(head.dimension, head.modified);
         if (!QDir().mkpath(folder()) || !QFile::rename(file, kept.file)) {
-            if (problems) *problems << tr("%1 could not be moved to %2; it stays where it is").arg(file, kept.file);
+            if (problems)
+                *problems << tr("%1 could not be moved to %2; it stays where it is").arg(file, kept.file);
             continue;
         }
         moved << kept.id;
@@ -228,16 +242,20 @@ QString SessionStore::remove(const QString& id) {
     const std::optional<KeptSession> session = find(id);
     if (!session) throw RuntimeFailure("there is no kept session " + id.toStdString());
     const QString trashed = moveToTrash(session->file, trashFolder());
-    if (trashed.isEmpty()) throw RuntimeFailure("cannot move " + session->file.toStdString() + " to the trash");
+    if (trashed.isEmpty())
+        throw RuntimeFailure("cannot move " + session->file.toStdString() + " to the trash");
     return trashed;
 }
 
 QString SessionStore::restore(const QString& trashed) {
     const QString file = restoreFromTrash(trashed, folder());
-    if (file.isEmpty()) throw RuntimeFailure("cannot bring back " + trashed.toStdString() + " from the trash");
+    if (file.isEmpty())
+        throw RuntimeFailure("cannot bring back " + trashed.toStdString() + " from the trash");
     return QFileInfo(file).fileName().chopped(Suffix.size());
 }
 
-int SessionStore::emptyTrash(int days) { return ui::emptyTrash(trashFolder(), days); }
+int SessionStore::emptyTrash(int days) {
+    return ui::emptyTrash(trashFolder(), days);
+}
 
 } // namespace marbler::ui

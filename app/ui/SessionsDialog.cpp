@@ -19,11 +19,14 @@ constexpr int IdRole = Qt::UserRole;
 
 } // namespace
 
-SessionsDialog::SessionsDialog(WorkbenchWindow* window) : QDialog(window), mWindow(window) {
+SessionsDialog::SessionsDialog(WorkbenchWindow* window)
+    : QDialog(window)
+    , mWindow(window) {
     setWindowTitle(tr("Marbler — sessions"));
-    auto* intro = new QLabel(tr("Every breeding session is kept, however Marbler was started. Resume one to go on "
-                                "where it was left; the one being bred stays kept."),
-                             this);
+    auto* intro =
+        new QLabel(tr("Every breeding session is kept, however Marbler was started. Resume one to go on "
+                      "where it was left; the one being bred stays kept."),
+                   this);
     intro->setWordWrap(true);
 
     mList = new QTreeWidget(this);
@@ -79,7 +82,8 @@ SessionsDialog::SessionsDialog(WorkbenchWindow* window) : QDialog(window), mWind
     connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
     auto* buttons = new QHBoxLayout;
-    for (QPushButton* b : {mResume, mRename, mDelete, mUndoDelete}) buttons->addWidget(b);
+    for (QPushButton* b : {mResume, mRename, mDelete, mUndoDelete})
+        buttons->addWidget(b);
     buttons->addStretch(1);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(intro);

@@ -41,7 +41,9 @@ StartChoice lastStartChoice() {
     return choice;
 }
 
-bool askStartChoice() { return QSettings().value(StartAskKey, true).toBool(); }
+bool askStartChoice() {
+    return QSettings().value(StartAskKey, true).toBool();
+}
 
 void rememberStartChoice(const StartChoice& choice, bool askAgain) {
     QSettings settings;
@@ -50,7 +52,9 @@ void rememberStartChoice(const StartChoice& choice, bool askAgain) {
     settings.setValue(StartAskKey, askAgain);
 }
 
-StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog(parent), mChoice(defaults) {
+StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent)
+    : QDialog(parent)
+    , mChoice(defaults) {
     setWindowTitle(tr("Marbler — what to breed"));
     auto* intro = new QLabel(tr("<b>What would you like to breed?</b><br>"
                                 "Nine random designs start the first generation; pick the ones you like "
@@ -69,7 +73,8 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog
     mDontAsk = new QCheckBox(tr("&Don't ask again (the toolbar still changes it)"), this);
 
     if (defaults.resumeGeneration > 0) {
-        const QString named = defaults.resumeName.isEmpty() ? QString() : tr(" “%1”").arg(defaults.resumeName);
+        const QString named =
+            defaults.resumeName.isEmpty() ? QString() : tr(" “%1”").arg(defaults.resumeName);
         mResume = new QPushButton(tr("&Resume the last session%1 (generation %2, %3)")
                                       .arg(named)
                                       .arg(defaults.resumeGeneration)
@@ -84,7 +89,8 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog
     }
     if (!defaults.otherSessions.isEmpty()) {
         mOthers = new QComboBox(this);
-        for (const auto& [id, text] : defaults.otherSessions) mOthers->addItem(text, id);
+        for (const auto& [id, text] : defaults.otherSessions)
+            mOthers->addItem(text, id);
         mOthers->setToolTip(tr("Every session is kept; File ▸ Sessions renames and deletes them"));
         mResumeOther = new QPushButton(tr("Resume &another session:"), this);
         connect(mResumeOther, &QPushButton::clicked, this, [this] {
@@ -128,9 +134,13 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent) : QDialog
     layout->addWidget(mDontAsk);
 }
 
-bool StartDialog::dontAskAgain() const { return mDontAsk->isChecked(); }
+bool StartDialog::dontAskAgain() const {
+    return mDontAsk->isChecked();
+}
 
-void setStartChooser(StartChooser chooser) { startChooserHook() = std::move(chooser); }
+void setStartChooser(StartChooser chooser) {
+    startChooserHook() = std::move(chooser);
+}
 
 std::optional<StartChoice> chooseStart(QWidget* parent, const StartChoice& defaults) {
     if (startChooserHook()) return startChooserHook()(parent, defaults);

@@ -22,7 +22,7 @@ namespace marbler::ui {
 QStringList meshNames();
 
 struct StartChoice {
-    int dimension = 2;                   ///< 2: flat, 3: solid
+    int dimension = 2;                     ///< 2: flat, 3: solid
     QString mesh = QStringLiteral("vase"); ///< the object a solid design is shown on
     /// The answer: resume the saved session instead of a new population (the default when one
     /// is offered).

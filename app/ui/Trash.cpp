@@ -23,8 +23,10 @@ QString moveToTrash(const QString& file, const QString& trashFolder) {
     const QString name = QFileInfo(file).fileName();
     for (int n = 1; n < 1000; ++n) {
         // The same name trashed twice within a second gets a second stamp, not a collision.
-        const QString trashed = QDir(trashFolder).filePath(
-            n == 1 ? QStringLiteral("%1-%2").arg(stamp, name) : QStringLiteral("%1.%2-%3").arg(stamp).arg(n).arg(name));
+        const QString trashed =
+            QDir(trashFolder)
+                .filePath(n == 1 ? QStringLiteral("%1-%2").arg(stamp, name)
+                                 : QStringLiteral("%1.%2-%3").arg(stamp).arg(n).arg(name));
         if (QFileInfo::exists(trashed)) continue;
         return QFile::rename(file, trashed) ? trashed : QString();
     }

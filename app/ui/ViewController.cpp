@@ -58,7 +58,9 @@ void ViewController::oneToOne() {
     setScale(1.0, QPointF(mViewport.width() / 2.0, mViewport.height() / 2.0));
 }
 
-void ViewController::zoomBy(double factor, QPointF anchor) { setScale(mScale * factor, anchor); }
+void ViewController::zoomBy(double factor, QPointF anchor) {
+    setScale(mScale * factor, anchor);
+}
 
 void ViewController::setScale(double scale, QPointF anchor) {
     const QPointF fixed = toDesign(anchor);

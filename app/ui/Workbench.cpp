@@ -1,15 +1,15 @@
 #include "ui/Workbench.h"
 
+#include "editor/EditorWindow.h"
+#include "editor/Recovery.h"
+#include "marbler/Error.h"
+#include "marbler/GenomeImage.h"
 #include "ui/ErrorReport.h"
 #include "ui/RenderService.h"
 #include "ui/Session.h"
 #include "ui/SessionStore.h"
 #include "ui/StartDialog.h"
 #include "ui/WorkbenchWindow.h"
-#include "editor/EditorWindow.h"
-#include "editor/Recovery.h"
-#include "marbler/Error.h"
-#include "marbler/GenomeImage.h"
 
 #include <QApplication>
 #include <QFile>
@@ -65,16 +65,17 @@ void takeScreenshot(WorkbenchWindow& window, RenderService& service, const QStri
         QObject::connect(&service, &RenderService::becameIdle, &window, grab);
     };
     // Let the window settle at its size (the resize debounce) before breeding.
-    QObject::connect(&service, &RenderService::backendReady, &window,
-                     [breedThenGrab] { QTimer::singleShot(500, breedThenGrab); }, Qt::SingleShotConnection);
+    QObject::connect(
+        &service, &RenderService::backendReady, &window,
+        [breedThenGrab] { QTimer::singleShot(500, breedThenGrab); }, Qt::SingleShotConnection);
 }
 
 /// MARBLER_EDITOR_SCREENSHOT=FILE with a design file: open the design in the editor with its
 /// first stroke selected (its parameters in the form, its handles on the canvas), wait for every
 /// final image, save a picture of the editor window and quit. Makes the README's pictures of
 /// the editor from the real window.
-void takeEditorScreenshot(WorkbenchWindow& window, RenderService& service, const QString& design, const QString& file,
-                          int* status) {
+void takeEditorScreenshot(WorkbenchWindow& window, RenderService& service, const QString& design,
+                          const QString& file, int* status) {
     auto open = [&window, &service, design, file, status] {
         Genome g;
         try {
@@ -88,7 +89,8 @@ void takeEditorScreenshot(WorkbenchWindow& window, RenderService& service, const
         EditorWindow* editor = window.openEditor(g, design);
         editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
         // MARBLER_EDITOR_SCREENSHOT_SIZE=WxH: the window's size (a laptop's 1366x768, say).
-        const QStringList size = qEnvironmentVariable("MARBLER_EDITOR_SCREENSHOT_SIZE").split(QLatin1Char('x'));
+        const QStringList size =
+            qEnvironmentVariable("MARBLER_EDITOR_SCREENSHOT_SIZE").split(QLatin1Char('x'));
         if (size.size() == 2 && size[0].toInt() > 0 && size[1].toInt() > 0)
             editor->resize(size[0].toInt(), size[1].toInt());
         else
@@ -103,10 +105,12 @@ void takeEditorScreenshot(WorkbenchWindow& window, RenderService& service, const
             QApplication::quit();
         };
         // Grab once the renders settle (a short wait lets the docks take their sizes first).
-        QObject::connect(&service, &RenderService::becameIdle, editor, [grab] { QTimer::singleShot(700, grab); });
+        QObject::connect(&service, &RenderService::becameIdle, editor,
+                         [grab] { QTimer::singleShot(700, grab); });
     };
-    QObject::connect(&service, &RenderService::backendReady, &window, [open] { QTimer::singleShot(300, open); },
-                     Qt::SingleShotConnection);
+    QObject::connect(
+        &service, &RenderService::backendReady, &window, [open] { QTimer::singleShot(300, open); },
+        Qt::SingleShotConnection);
 }
 
 /// Seconds since this process started (the kernel's start time, so the dynamic loading before
@@ -146,10 +150,11 @@ void startSession(WorkbenchWindow& window, const StartOptions& options) {
         QStringList problems;
         store->migrate(&problems);
         if (!problems.isEmpty())
-            reportError(&window, WorkbenchWindow::tr("Cannot move the saved sessions"),
-                        WorkbenchWindow::tr("Sessions saved by an earlier Marbler could not be moved into the "
-                                            "list of kept sessions; they are left where they are.\n\n%1")
-                            .arg(problems.join(QStringLiteral("\n"))));
+            reportError(
+                &window, WorkbenchWindow::tr("Cannot move the saved sessions"),
+                WorkbenchWindow::tr("Sessions saved by an earlier Marbler could not be moved into the "
+                                    "list of kept sessions; they are left where they are.\n\n%1")
+                    .arg(problems.join(QStringLiteral("\n"))));
         // Deleted sessions can be brought back for 30 days; older ones go at start.
         store->emptyTrash(30);
         kept = store->list();
@@ -181,7 +186,8 @@ void startSession(WorkbenchWindow& window, const StartOptions& options) {
 
     if (!options.files.empty()) {
         QStringList files;
-        for (const std::string& f : options.files) files << QString::fromStdString(f);
+        for (const std::string& f : options.files)
+            files << QString::fromStdString(f);
         window.openFiles(files);
     }
     // Opened designs are generation 1; with none (no files, or none that loaded) the saved
@@ -197,7 +203,8 @@ void startSession(WorkbenchWindow& window, const StartOptions& options) {
         }
         for (const KeptSession& k : kept)
             if (!last || k.id != last->id)
-                choice.otherSessions.append({k.id, QStringLiteral("%1 — %2").arg(k.name, describeSession(k))});
+                choice.otherSessions.append(
+                    {k.id, QStringLiteral("%1 — %2").arg(k.name, describeSession(k))});
         if (options.dimension) {
             choice.dimension = *options.dimension;
         } else if (options.ask && askStartChoice()) {
@@ -232,7 +239,8 @@ void startSession(WorkbenchWindow& window, const StartOptions& options) {
     window.model()->setSessionFile(fresh.file);
     if (!kept.empty())
         window.statusBar()->showMessage(
-            WorkbenchWindow::tr("Started a new session; your previous session “%1” is kept under File ▸ Sessions")
+            WorkbenchWindow::tr(
+                "Started a new session; your previous session “%1” is kept under File ▸ Sessions")
                 .arg(kept.front().name),
             15000);
 }
@@ -259,10 +267,12 @@ int runWorkbench(int argc, char** argv) {
     QString screenshotFile = QString::fromStdString(args.screenshot);
     if (screenshotFile.isEmpty()) screenshotFile = qEnvironmentVariable("MARBLER_SCREENSHOT");
     // The editor's picture: like the window's, a fresh session with no questions.
-    const QString editorShot = args.files.empty() ? QString() : qEnvironmentVariable("MARBLER_EDITOR_SCREENSHOT");
+    const QString editorShot =
+        args.files.empty() ? QString() : qEnvironmentVariable("MARBLER_EDITOR_SCREENSHOT");
     if (!editorShot.isEmpty()) screenshotFile = editorShot;
     std::optional<unsigned long long> seed = args.seed;
-    if (!seed && !qEnvironmentVariableIsEmpty("MARBLER_SEED")) seed = qEnvironmentVariable("MARBLER_SEED").toULongLong();
+    if (!seed && !qEnvironmentVariableIsEmpty("MARBLER_SEED"))
+        seed = qEnvironmentVariable("MARBLER_SEED").toULongLong();
     StartOptions start;
     start.files = args.files;
     start.dimension = args.dimension;
@@ -277,7 +287,8 @@ int runWorkbench(int argc, char** argv) {
     if (seed) window.model()->setSessionSeed(*seed);
     int status = 0;
     if (!editorShot.isEmpty()) {
-        takeEditorScreenshot(window, service, QString::fromStdString(args.files.front()), editorShot, &status);
+        takeEditorScreenshot(window, service, QString::fromStdString(args.files.front()), editorShot,
+                             &status);
     } else if (!screenshotFile.isEmpty()) {
         window.resize(1280, 900);
         takeScreenshot(window, service, screenshotFile, &status);

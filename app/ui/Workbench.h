@@ -15,11 +15,11 @@ class WorkbenchWindow;
 /// `-style NAME`, ...), each also as `--name=value`; `--` ends the options.
 struct WorkbenchArgs {
     std::vector<std::string> files;
-    std::string screenshot;             ///< save a picture of the window and quit
+    std::string screenshot;                 ///< save a picture of the window and quit
     std::optional<unsigned long long> seed; ///< the session seed
-    std::optional<int> dimension;       ///< --solid (3) or --flat (2): skip the start choice
-    bool help = false;                  ///< --help / -h among the words
-    std::string error;                  ///< one line naming a bad option; empty when all is well
+    std::optional<int> dimension;           ///< --solid (3) or --flat (2): skip the start choice
+    bool help = false;                      ///< --help / -h among the words
+    std::string error;                      ///< one line naming a bad option; empty when all is well
 };
 
 /// Parses the words after the program name (no Qt application needed, so main() can report a

@@ -12,14 +12,14 @@ namespace marbler::ui {
 namespace {
 
 /// Qt's own options that take a value (QGuiApplication / QApplication), with one or two dashes.
-constexpr std::array QtValueOptions{"platform", "platformpluginpath", "platformtheme", "plugin", "qwindowgeometry",
-                                    "qwindowtitle", "qwindowicon", "style", "stylesheet", "session", "display",
-                                    "geometry", "title"};
+constexpr std::array QtValueOptions{
+    "platform",     "platformpluginpath", "platformtheme", "plugin",     "qwindowgeometry",
+    "qwindowtitle", "qwindowicon",        "style",         "stylesheet", "session",
+    "display",      "geometry",           "title"};
 /// Qt's own options without a value.
 constexpr std::array QtFlagOptions{"reverse", "widgetcount", "nograb", "dograb", "sync"};
 
-template <std::size_t N>
-bool contains(const std::array<const char*, N>& names, std::string_view name) {
+template <std::size_t N> bool contains(const std::array<const char*, N>& names, std::string_view name) {
     return std::any_of(names.begin(), names.end(), [&](const char* n) { return name == n; });
 }
 

@@ -29,19 +29,25 @@ void WorkbenchWindow::buildColourwayActions(QMenu* breedMenu, QToolBar* bar) {
     mColourways->setObjectName(QStringLiteral("colourwaysAction"));
     mColourways->setCheckable(true);
     mColourways->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_5));
-    mColourways->setToolTip(tr("Breed only palettes, as textile designers make colourways: with one design picked, "
-                               "fills the grid with it and eight colourways of it (Ctrl+5)"));
+    mColourways->setToolTip(
+        tr("Breed only palettes, as textile designers make colourways: with one design picked, "
+           "fills the grid with it and eight colourways of it (Ctrl+5)"));
     mColourways->setStatusTip(mColourways->toolTip());
     connect(mColourways, &QAction::toggled, this, &WorkbenchWindow::onColourwaysToggled);
-    mExportSheet = breedMenu->addAction(tr("&Export colourway sheet…"), this, [this] { exportColourwaySheet(); });
+    mExportSheet =
+        breedMenu->addAction(tr("&Export colourway sheet…"), this, [this] { exportColourwaySheet(); });
     mExportSheet->setObjectName(QStringLiteral("exportSheetAction"));
     mExportSheet->setStatusTip(tr("The grid's designs side by side in one PNG or TIFF image"));
     bar->addAction(mColourways);
 }
 
-bool WorkbenchWindow::colourwaysMode() const { return mColourways && mColourways->isChecked(); }
+bool WorkbenchWindow::colourwaysMode() const {
+    return mColourways && mColourways->isChecked();
+}
 
-void WorkbenchWindow::setColourwaysMode(bool on) { mColourways->setChecked(on); }
+void WorkbenchWindow::setColourwaysMode(bool on) {
+    mColourways->setChecked(on);
+}
 
 void WorkbenchWindow::onColourwaysToggled(bool on) {
     updateActions();
@@ -51,8 +57,10 @@ void WorkbenchWindow::onColourwaysToggled(bool on) {
     }
     const auto selected = mModel->selectedCells();
     if (selected.size() != 1 || !mModel->whyNoColourways(false).isEmpty()) {
-        statusBar()->showMessage(tr("Colourways on: Alter varies the picked design's palette, Recombine mixes the "
-                                    "parents' palettes; the structure stays"), 8000);
+        statusBar()->showMessage(
+            tr("Colourways on: Alter varies the picked design's palette, Recombine mixes the "
+               "parents' palettes; the structure stays"),
+            8000);
         return;
     }
     const QString name = lineageOf(*mModel->cell(selected.front())).displayName();
@@ -63,7 +71,8 @@ void WorkbenchWindow::onColourwaysToggled(bool on) {
         return;
     }
     statusBar()->showMessage(tr("Generation %1: %2 and eight colourways of it")
-                                 .arg(mModel->generationLabel(mModel->currentIndex()), name), 8000);
+                                 .arg(mModel->generationLabel(mModel->currentIndex()), name),
+                             8000);
 }
 
 void WorkbenchWindow::updateColourwayActions() {
@@ -75,8 +84,11 @@ void WorkbenchWindow::updateColourwayActions() {
         action->setEnabled(why.isEmpty());
         action->setToolTip(why.isEmpty() ? ready : why);
     };
-    palettes(mAlter, false, tr("Colourways of the parent: its palette varied, its structure kept; the slider sets how much"));
-    palettes(mRecombine, true, tr("Colourways whose palettes mix the parents' inks; the structure of each is kept"));
+    palettes(
+        mAlter, false,
+        tr("Colourways of the parent: its palette varied, its structure kept; the slider sets how much"));
+    palettes(mRecombine, true,
+             tr("Colourways whose palettes mix the parents' inks; the structure of each is kept"));
     for (QAction* action : {mSwap, mReinit}) {
         action->setEnabled(false);
         action->setToolTip(tr("Off in Colourways mode: %1 changes the structure, which colourways keep. Turn "
@@ -91,9 +103,13 @@ bool WorkbenchWindow::applyColourwayOperator(GeneticOperator op) {
     QString why;
     switch (op) {
     case GeneticOperator::Alter:
-    case GeneticOperator::Recombine: why = mModel->whyNoColourways(mix); break;
+    case GeneticOperator::Recombine:
+        why = mModel->whyNoColourways(mix);
+        break;
     case GeneticOperator::Swap:
-    case GeneticOperator::Reinit: why = tr("%1 is off in Colourways mode: colourways keep the structure").arg(operatorLabel(op)); break;
+    case GeneticOperator::Reinit:
+        why = tr("%1 is off in Colourways mode: colourways keep the structure").arg(operatorLabel(op));
+        break;
     }
     if (!why.isEmpty()) {
         statusBar()->showMessage(why, 5000);
@@ -105,7 +121,8 @@ bool WorkbenchWindow::applyColourwayOperator(GeneticOperator op) {
         reportError(this, tr("Cannot make colourways"), QString::fromStdString(e.what()));
         return false;
     }
-    statusBar()->showMessage(tr("Colourways: generation %1").arg(mModel->generationLabel(mModel->currentIndex())), 5000);
+    statusBar()->showMessage(
+        tr("Colourways: generation %1").arg(mModel->generationLabel(mModel->currentIndex())), 5000);
     return true;
 }
 
@@ -123,7 +140,8 @@ bool WorkbenchWindow::exportColourwaySheet(const QString& chosen) {
     }
     QString file = chosen;
     if (file.isEmpty()) {
-        file = askSaveFile(this, tr("Export colourway sheet"), suggestedFile(designs.front(), {}, QStringLiteral(" colourways.png")),
+        file = askSaveFile(this, tr("Export colourway sheet"),
+                           suggestedFile(designs.front(), {}, QStringLiteral(" colourways.png")),
                            tr("PNG image (*.png);;TIFF image (*.tif *.tiff)"));
         if (file.isEmpty()) return false;
     }
@@ -155,9 +173,12 @@ bool WorkbenchWindow::exportColourwaySheet(const QString& chosen) {
         RenderControl control;
         control.cancel = cancel.get();
         control.progress = [guard](double f) {
-            QMetaObject::invokeMethod(guard.data(), [guard, f] {
-                if (guard) guard->setValue(int(f * 1000.0));
-            }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                guard.data(),
+                [guard, f] {
+                    if (guard) guard->setValue(int(f * 1000.0));
+                },
+                Qt::QueuedConnection);
         };
         try {
             writeSheet(designs, settings, path, &control);

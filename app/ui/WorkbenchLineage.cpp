@@ -51,9 +51,11 @@ void WorkbenchWindow::updateLineage() {
     const auto addGeneration = [&](QTreeWidgetItem* container, int k) {
         const Generation& g = history[std::size_t(k)];
         QStringList parents;
-        for (int i : g.parentCells) parents << tr("design %1").arg(i + 1);
-        auto* item = new QTreeWidgetItem(container, {tr("Generation %1").arg(mModel->generationLabel(k)), g.description,
-                                                     parents.join(QStringLiteral(", ")), QString()});
+        for (int i : g.parentCells)
+            parents << tr("design %1").arg(i + 1);
+        auto* item =
+            new QTreeWidgetItem(container, {tr("Generation %1").arg(mModel->generationLabel(k)),
+                                            g.description, parents.join(QStringLiteral(", ")), QString()});
         item->setData(0, LineageGenerationRole, k);
         for (const auto& cell : g.cells)
             if (cell) mLineageGenerationItems.insert(lineageThumbnailKey(*cell), item);
@@ -87,7 +89,8 @@ void WorkbenchWindow::updateLineage() {
                 }
                 const int branch = history[std::size_t(child)].branch;
                 auto* branchItem = new QTreeWidgetItem(
-                    container, {tr("Branch %1").arg(branch), tr("from generation %1").arg(mModel->generationLabel(k))});
+                    container,
+                    {tr("Branch %1").arg(branch), tr("from generation %1").arg(mModel->generationLabel(k))});
                 branchItem->setData(0, LineageBranchRole, branch);
                 self(self, branchItem, child);
                 branchItem->setExpanded(!mCollapsedBranches.contains(branch));
@@ -107,7 +110,8 @@ void WorkbenchWindow::updateLineage() {
         branchItem->setExpanded(!mCollapsedBranches.contains(branch));
     }
     if (currentItem) {
-        for (QTreeWidgetItem* up = currentItem->parent(); up; up = up->parent()) up->setExpanded(true);
+        for (QTreeWidgetItem* up = currentItem->parent(); up; up = up->parent())
+            up->setExpanded(true);
         mLineageTree->scrollToItem(currentItem);
     }
     mLineageThumbnailTimer.start();
@@ -126,10 +130,12 @@ void WorkbenchWindow::addLineageDesign(QTreeWidgetItem* parent, int generation, 
     const Genome& g = *mModel->history()[std::size_t(generation)].cells[std::size_t(cell)];
     const LineageInfo info = lineageOf(g);
     QStringList parents;
-    for (const QString& p : info.parents) parents << p.left(8);
-    auto* item = new QTreeWidgetItem(parent, {tr("Design %1: %2").arg(cell + 1).arg(info.displayName()),
-                                              info.madeBy(), parents.join(QStringLiteral(", ")),
-                                              info.op.isEmpty() ? QString() : QString::number(info.generation)});
+    for (const QString& p : info.parents)
+        parents << p.left(8);
+    auto* item =
+        new QTreeWidgetItem(parent, {tr("Design %1: %2").arg(cell + 1).arg(info.displayName()), info.madeBy(),
+                                     parents.join(QStringLiteral(", ")),
+                                     info.op.isEmpty() ? QString() : QString::number(info.generation)});
     item->setToolTip(0, info.family.isEmpty() ? info.id : tr("%1\nFamily: %2").arg(info.id, info.family));
     item->setToolTip(1, info.change.isEmpty() ? QString() : tr("Changed: %1").arg(info.change));
     item->setToolTip(2, info.parents.join(QLatin1Char('\n')));
@@ -141,8 +147,8 @@ void WorkbenchWindow::addLineageDesign(QTreeWidgetItem* parent, int generation, 
 }
 
 QString WorkbenchWindow::lineageThumbnailKey(const Genome& genome) const {
-    return QString::fromStdString(genomeId(genome)) + QLatin1Char('/')
-         + (genome.dimension == 3 ? mMesh->currentText() : QString());
+    return QString::fromStdString(genomeId(genome)) + QLatin1Char('/') +
+           (genome.dimension == 3 ? mMesh->currentText() : QString());
 }
 
 bool WorkbenchWindow::hasLineageThumbnail(const Genome& genome) const {
@@ -187,7 +193,8 @@ void WorkbenchWindow::requestLineageThumbnails() {
         const auto& cells = history[std::size_t(generation.toInt())].cells;
         const QVariant cell = item->data(0, LineageCellRole);
         for (int i = 0; i < CellCount; ++i)
-            if (cells[std::size_t(i)] && (!cell.isValid() || cell.toInt() == i)) requestLineageThumbnail(*cells[std::size_t(i)]);
+            if (cells[std::size_t(i)] && (!cell.isValid() || cell.toInt() == i))
+                requestLineageThumbnail(*cells[std::size_t(i)]);
     }
 }
 
@@ -216,7 +223,8 @@ void WorkbenchWindow::onLineageThumbnail(std::uint64_t key, const QImage& image)
     }
     mLineageThumbnails.insert(thumbnail, new QImage(shown));
     const QPixmap icon = lineageIcon(thumbnail);
-    for (QTreeWidgetItem* item : mLineageDesignItems.values(thumbnail)) item->setIcon(0, icon);
+    for (QTreeWidgetItem* item : mLineageDesignItems.values(thumbnail))
+        item->setIcon(0, icon);
     for (QTreeWidgetItem* item : mLineageGenerationItems.values(thumbnail))
         item->setIcon(0, lineageMosaic(item->data(0, LineageGenerationRole).toInt()));
 }
@@ -251,7 +259,8 @@ void WorkbenchWindow::bringBackDesign(int generation, int cell) {
     if (generation < 0 || generation >= int(history.size()) || cell < 0 || cell >= CellCount) return;
     const auto& design = history[std::size_t(generation)].cells[std::size_t(cell)];
     if (!design) return;
-    const QString from = tr("design %1 of generation %2").arg(cell + 1).arg(mModel->generationLabel(generation));
+    const QString from =
+        tr("design %1 of generation %2").arg(cell + 1).arg(mModel->generationLabel(generation));
     if (design->dimension != mModel->populationDimension()) {
         // A solid among flat designs (or the reverse) could breed with none of them: as an
         // opened design of the other kind, it starts a generation of its own.

@@ -33,8 +33,8 @@ void WorkbenchWindow::fillRecentSessions() {
         if (session.id == current) continue;
         if (++shown > 9) break;
         QAction* action = mRecentSessions->addAction(
-            QStringLiteral("&%1 %2 — %3").arg(shown).arg(session.name, describeSession(session)),
-            this, [this, id = session.id] { resumeKeptSession(id); });
+            QStringLiteral("&%1 %2 — %3").arg(shown).arg(session.name, describeSession(session)), this,
+            [this, id = session.id] { resumeKeptSession(id); });
         action->setData(session.id);
     }
     if (shown == 0) mRecentSessions->addAction(tr("No other sessions"))->setEnabled(false);
@@ -46,7 +46,8 @@ bool WorkbenchWindow::resumeKeptSession(const QString& id) {
     if (mSessionFolder.isEmpty() || id.isEmpty() || id == currentSessionId()) return false;
     const std::optional<KeptSession> kept = SessionStore(mSessionFolder).find(id);
     if (!kept) {
-        reportError(this, tr("Cannot resume the session"), tr("There is no kept session %1 any more.").arg(id));
+        reportError(this, tr("Cannot resume the session"),
+                    tr("There is no kept session %1 any more.").arg(id));
         return false;
     }
     SavedSession saved;
@@ -63,7 +64,9 @@ bool WorkbenchWindow::resumeKeptSession(const QString& id) {
     resumeSession(std::move(saved));
     mModel->setSessionFile(kept->file);
     statusBar()->showMessage(previous.isEmpty()
-                                 ? tr("Resumed “%1” at generation %2").arg(kept->name).arg(mModel->generationLabel(mModel->currentIndex()))
+                                 ? tr("Resumed “%1” at generation %2")
+                                       .arg(kept->name)
+                                       .arg(mModel->generationLabel(mModel->currentIndex()))
                                  : tr("Resumed “%1” at generation %2; “%3” is kept under File ▸ Sessions")
                                        .arg(kept->name)
                                        .arg(mModel->generationLabel(mModel->currentIndex()))
@@ -93,7 +96,8 @@ bool WorkbenchWindow::renameSession(const QString& id, const QString& name) {
 QString WorkbenchWindow::deleteSession(const QString& id) {
     if (mSessionFolder.isEmpty() || id.isEmpty()) return {};
     if (id == currentSessionId()) {
-        statusBar()->showMessage(tr("The session being bred cannot be deleted; resume another one first"), 8000);
+        statusBar()->showMessage(tr("The session being bred cannot be deleted; resume another one first"),
+                                 8000);
         return {};
     }
     try {

@@ -1,5 +1,6 @@
 #include "ui/WorkbenchWindow.h"
 
+#include "editor/EditorWindow.h"
 #include "marbler/Error.h"
 #include "marbler/Families.h"
 #include "marbler/Generator.h"
@@ -8,7 +9,6 @@
 #include "marbler/ImageFormats.h"
 #include "marbler/Paper.h"
 #include "ui/DesignCell.h"
-#include "editor/EditorWindow.h"
 #include "ui/DesignDialog.h"
 #include "ui/ErrorReport.h"
 #include "ui/GenomeClipboard.h"
@@ -90,11 +90,12 @@ QString openFilter() {
                                "Images with a genome (*.png *.tif *.tiff);;All files (*)");
 }
 
-
 } // namespace
 
 WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
-    : QMainWindow(parent), mRenderer(renderer), mModel(new PopulationModel(this)) {
+    : QMainWindow(parent)
+    , mRenderer(renderer)
+    , mModel(new PopulationModel(this)) {
     setWindowTitle(tr("Marbler — evolution workbench"));
     mModel->setSessionSeed(QRandomGenerator::global()->generate64());
 
@@ -112,15 +113,13 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
         connect(cell, &DesignCell::contextMenuRequested, this, &WorkbenchWindow::showCellMenu);
         connect(cell, &DesignCell::focusMoveRequested, this, &WorkbenchWindow::onFocusMove);
         connect(cell, &DesignCell::orbitDragged, this, &WorkbenchWindow::onOrbit);
-        connect(cell, &DesignCell::filesDropped, this, [this](int index, const QStringList& files) {
-            openFiles(files, index);
-        });
+        connect(cell, &DesignCell::filesDropped, this,
+                [this](int index, const QStringList& files) { openFiles(files, index); });
         connect(cell, &DesignCell::genomeTextDropped, this, [this](int index, const QByteArray& json) {
             try {
                 const Genome genome = parseGenome(json.toStdString(), "dropped design");
                 const LineageInfo info = lineageOf(genome);
-                placeOpened({genome}, {info.displayName()}, index,
-                            tr("Brought back a favourite"));
+                placeOpened({genome}, {info.displayName()}, index, tr("Brought back a favourite"));
             } catch (const Error& e) {
                 reportError(this, tr("Cannot use the dropped design"), QString::fromStdString(e.what()));
             }
@@ -154,13 +153,15 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     statusBar()->addPermanentWidget(mSavedNotice);
     mTaskLabel = new QLabel(this);
     mTaskLabel->setObjectName(QStringLiteral("taskLabel"));
-    mTaskLabel->setToolTip(tr("What the window is doing. Help ▸ About Marbler says which renderer draws the designs."));
+    mTaskLabel->setToolTip(
+        tr("What the window is doing. Help ▸ About Marbler says which renderer draws the designs."));
     statusBar()->addPermanentWidget(mTaskLabel);
     // Beside the message that a favourite was removed, while it shows.
     mUndoRemove = new QPushButton(tr("Undo"), this);
     mUndoRemove->setObjectName(QStringLiteral("undoRemoveFavourite"));
-    mUndoRemove->setToolTip(tr("Put the removed favourite back (%1)")
-                                .arg(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R).toString(QKeySequence::NativeText)));
+    mUndoRemove->setToolTip(
+        tr("Put the removed favourite back (%1)")
+            .arg(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R).toString(QKeySequence::NativeText)));
     // The first of the permanent widgets (index 0 is the generation summary), left of the rest.
     statusBar()->insertPermanentWidget(1, mUndoRemove);
     mUndoRemove->hide();
@@ -205,7 +206,8 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
             mSaveFailureShown = true;
             reportError(this, tr("Cannot save the session"),
                         tr("The breeding session could not be saved, so it would not survive a crash; "
-                           "keep the designs you like as favourites.\n\n%1").arg(message));
+                           "keep the designs you like as favourites.\n\n%1")
+                            .arg(message));
         } else {
             statusBar()->showMessage(tr("The session could not be saved: %1").arg(message), 10000);
         }
@@ -213,9 +215,12 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
 
     readSettings();
     mModel->setMesh(mMesh->currentText());
-    const QStringList favouriteErrors = mModel->setFavouritesFolder(PopulationModel::defaultFavouritesFolder());
+    const QStringList favouriteErrors =
+        mModel->setFavouritesFolder(PopulationModel::defaultFavouritesFolder());
     if (!favouriteErrors.isEmpty())
-        statusBar()->showMessage(tr("Some favourites could not be read: %1").arg(favouriteErrors.join(QStringLiteral("; "))), 10000);
+        statusBar()->showMessage(
+            tr("Some favourites could not be read: %1").arg(favouriteErrors.join(QStringLiteral("; "))),
+            10000);
     updateCells();
     updateActions();
     updateLineage();
@@ -224,9 +229,12 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
 WorkbenchWindow::~WorkbenchWindow() {
     // Results for this window's keys may still arrive after it is gone; the service simply
     // has no receiver then, but the work itself is wasted, so drop it.
-    for (int i = 0; i < CellCount; ++i) mRenderer->cancel(std::uint64_t(i));
-    for (std::size_t i = 0; i < mModel->favourites().size(); ++i) mRenderer->cancel(FavouriteKeyBase + i);
-    for (auto it = mLineageRequests.cbegin(); it != mLineageRequests.cend(); ++it) mRenderer->cancel(it.key());
+    for (int i = 0; i < CellCount; ++i)
+        mRenderer->cancel(std::uint64_t(i));
+    for (std::size_t i = 0; i < mModel->favourites().size(); ++i)
+        mRenderer->cancel(FavouriteKeyBase + i);
+    for (auto it = mLineageRequests.cbegin(); it != mLineageRequests.cend(); ++it)
+        mRenderer->cancel(it.key());
 }
 
 void WorkbenchWindow::buildActions() {
@@ -244,8 +252,9 @@ void WorkbenchWindow::buildActions() {
 
     QAction* open = fileMenu->addAction(tr("&Open designs…"), this, &WorkbenchWindow::openFileDialog);
     open->setShortcut(QKeySequence::Open);
-    open->setStatusTip(tr("Load genome files, or PNG and TIFF images Marbler wrote, into the selected cells, then free "
-                          "ones; asks before replacing designs"));
+    open->setStatusTip(
+        tr("Load genome files, or PNG and TIFF images Marbler wrote, into the selected cells, then free "
+           "ones; asks before replacing designs"));
     QMenu* newDesign = fileMenu->addMenu(tr("New &design"));
     newDesign->setObjectName(QStringLiteral("newDesignMenu"));
     newDesign->setToolTipsVisible(true);
@@ -253,11 +262,16 @@ void WorkbenchWindow::buildActions() {
         ->setToolTip(tr("Make a flat design by hand in the editor, from a bare bath"));
     newDesign->addAction(tr("Blank &solid block"), this, [this] { openEditor(blankDesign(3)); })
         ->setToolTip(tr("Make a solid design by hand in the editor, from a bare block"));
-    newDesign->addAction(tr("&Random design"), this, [this] {
-        openEditor(randomGenome(QRandomGenerator::global()->generate64(), mDimension->currentData().toInt()));
-    })->setToolTip(tr("A random design of the kind chosen on the tool bar, to edit by hand"));
+    newDesign
+        ->addAction(tr("&Random design"), this,
+                    [this] {
+                        openEditor(randomGenome(QRandomGenerator::global()->generate64(),
+                                                mDimension->currentData().toInt()));
+                    })
+        ->setToolTip(tr("A random design of the kind chosen on the tool bar, to edit by hand"));
     QAction* openInEditor = fileMenu->addAction(tr("Open in &editor…"), this, [this] {
-        const QString file = QFileDialog::getOpenFileName(this, tr("Open a design in the editor"), QString(), openFilter());
+        const QString file =
+            QFileDialog::getOpenFileName(this, tr("Open a design in the editor"), QString(), openFilter());
         if (file.isEmpty()) return;
         try {
             openEditor(loadDesign(file.toStdString()), file);
@@ -272,15 +286,17 @@ void WorkbenchWindow::buildActions() {
     newRandom->setShortcut(QKeySequence::New);
     newRandom->setIconText(tr("New random"));
     newRandom->setToolTip(tr("Nine new random designs of the kind chosen beside (Ctrl+N)"));
-    QAction* picture = fileMenu->addAction(tr("&Marble a picture…"), this, &WorkbenchWindow::marblePictureDialog);
+    QAction* picture =
+        fileMenu->addAction(tr("&Marble a picture…"), this, &WorkbenchWindow::marblePictureDialog);
     picture->setObjectName(QStringLiteral("marblePictureAction"));
     picture->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
-    picture->setStatusTip(tr("Nine flat designs whose bath is a picture you pick: flows and strokes carry its colours"));
-    QAction* newPaperAction = fileMenu->addAction(tr("New marbled &paper"), this, [this] {
-        newPaper(QRandomGenerator::global()->generate64());
-    });
+    picture->setStatusTip(
+        tr("Nine flat designs whose bath is a picture you pick: flows and strokes carry its colours"));
+    QAction* newPaperAction = fileMenu->addAction(
+        tr("New marbled &paper"), this, [this] { newPaper(QRandomGenerator::global()->generate64()); });
     newPaperAction->setObjectName(QStringLiteral("newPaperAction"));
-    newPaperAction->setStatusTip(tr("A procedural marbled paper (as marbler paper makes) into the grid, to breed from"));
+    newPaperAction->setStatusTip(
+        tr("A procedural marbled paper (as marbler paper makes) into the grid, to breed from"));
     fileMenu->addSeparator();
     mSessionsAction = fileMenu->addAction(tr("&Sessions…"), this, [this] { openSessionsDialog(); });
     mSessionsAction->setStatusTip(tr("Every breeding session is kept: resume, rename or delete one"));
@@ -298,8 +314,8 @@ void WorkbenchWindow::buildActions() {
     mBack->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
     mBack->setIconText(tr("◀ Back"));
     mBack->setToolTip(tr("Back to the generation this one grew from (Ctrl+Z)"));
-    mForward = editMenu->addAction(style()->standardIcon(QStyle::SP_ArrowForward), tr("&Forward a generation"),
-                                   mModel, &PopulationModel::goForward);
+    mForward = editMenu->addAction(style()->standardIcon(QStyle::SP_ArrowForward),
+                                   tr("&Forward a generation"), mModel, &PopulationModel::goForward);
     mForward->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z));
     mForward->setIconText(tr("Forward ▶"));
     mForward->setToolTip(tr("Forward to the generation last visited or made from this one (Ctrl+Shift+Z)"));
@@ -314,11 +330,13 @@ void WorkbenchWindow::buildActions() {
     mPasteDesign->setShortcut(QKeySequence::Paste);
     mPasteDesign->setStatusTip(tr("Puts the genome on the clipboard into the grid, as File ▸ Open does"));
     editMenu->addSeparator();
-    QAction* clearSelection = editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection);
+    QAction* clearSelection =
+        editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection);
     clearSelection->setObjectName(QStringLiteral("clearSelectionAction"));
     clearSelection->setShortcut(QKeySequence(Qt::Key_Escape));
     editMenu->addSeparator();
-    mRestoreFavourite = editMenu->addAction(tr("&Restore removed favourite"), this, [this] { restoreRemovedFavourite(); });
+    mRestoreFavourite =
+        editMenu->addAction(tr("&Restore removed favourite"), this, [this] { restoreRemovedFavourite(); });
     // Ctrl+Z steps back a generation, so undoing a removal has a key of its own.
     mRestoreFavourite->setObjectName(QStringLiteral("restoreFavouriteAction"));
     mRestoreFavourite->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
@@ -354,7 +372,8 @@ void WorkbenchWindow::buildActions() {
     wildcard->setObjectName(QStringLiteral("wildcardAction"));
     wildcard->setCheckable(true);
     wildcard->setChecked(QSettings().value(QStringLiteral("breed/wildcard"), true).toBool());
-    wildcard->setStatusTip(tr("The last offspring cell of each generation is a fresh design of the parents' family"));
+    wildcard->setStatusTip(
+        tr("The last offspring cell of each generation is a fresh design of the parents' family"));
     mModel->setWildcardCell(wildcard->isChecked());
     connect(wildcard, &QAction::toggled, this, [this](bool on) {
         mModel->setWildcardCell(on);
@@ -364,20 +383,23 @@ void WorkbenchWindow::buildActions() {
     bar->addAction(mBack);
     bar->addAction(mForward);
     bar->addSeparator();
-    for (QAction* a : {mAlter, mRecombine, mSwap, mReinit}) bar->addAction(a);
+    for (QAction* a : {mAlter, mRecombine, mSwap, mReinit})
+        bar->addAction(a);
     buildColourwayActions(breedMenu, bar);
 
     mStrength = new QSlider(Qt::Horizontal, bar);
     mStrength->setObjectName(QStringLiteral("strengthSlider"));
     mStrength->setRange(0, 100);
     mStrength->setMaximumWidth(120);
-    mStrength->setToolTip(tr("How far %1 moves the strokes: 0 % barely, 100 % a lot").arg(operatorLabel(GeneticOperator::Alter)));
+    mStrength->setToolTip(tr("How far %1 moves the strokes: 0 % barely, 100 % a lot")
+                              .arg(operatorLabel(GeneticOperator::Alter)));
     // The value is always in sight, not only while the slider is dragged.
     mStrengthLabel = new QLabel(bar);
     mStrengthLabel->setObjectName(QStringLiteral("strengthLabel"));
     mStrengthLabel->setToolTip(mStrength->toolTip());
     // Wide enough for "Strength 100 %", so the toolbar does not shift as the value changes.
-    mStrengthLabel->setMinimumWidth(mStrengthLabel->fontMetrics().horizontalAdvance(tr(" Strength %1 % ").arg(100)));
+    mStrengthLabel->setMinimumWidth(
+        mStrengthLabel->fontMetrics().horizontalAdvance(tr(" Strength %1 % ").arg(100)));
     mStrengthLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     mStrengthLabel->setBuddy(mStrength);
     connect(mStrength, &QSlider::valueChanged, this,
@@ -399,14 +421,16 @@ void WorkbenchWindow::buildActions() {
     mDimension = new QComboBox(bar);
     mDimension->addItem(tr("2D designs"), 2);
     mDimension->addItem(tr("Solid designs"), 3);
-    mDimension->setToolTip(tr("What a new random population holds: flat marbling or solid (volume) marbling"));
+    mDimension->setToolTip(
+        tr("What a new random population holds: flat marbling or solid (volume) marbling"));
     bar->addWidget(mDimension);
     kindLabel->setBuddy(mDimension);
     kindLabel->setToolTip(tr("What File ▸ New random population (%1) makes")
                               .arg(newRandom->shortcut().toString(QKeySequence::NativeText)));
     mFamily = new QComboBox(bar);
     mFamily->setObjectName(QStringLiteral("familyCombo"));
-    mFamily->setToolTip(tr("The pattern family of a new random population, or a mix of the craft's families"));
+    mFamily->setToolTip(
+        tr("The pattern family of a new random population, or a mix of the craft's families"));
     bar->addWidget(mFamily);
     fillFamilies();
     connect(mDimension, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::fillFamilies);
@@ -450,7 +474,8 @@ void WorkbenchWindow::buildDocks() {
     list->setDragEnabled(true);
     list->setDragDropMode(QAbstractItemView::DragOnly);
     list->setContextMenuPolicy(Qt::CustomContextMenu);
-    list->setToolTip(tr("Designs kept aside (F on a cell). Double-click or drag one onto a cell to bring it back."));
+    list->setToolTip(
+        tr("Designs kept aside (F on a cell). Double-click or drag one onto a cell to bring it back."));
     connect(list, &QListWidget::itemDoubleClicked, this,
             [this](QListWidgetItem* item) { restoreFavourite(mFavouritesList->row(item)); });
     connect(list, &QWidget::customContextMenuRequested, this, &WorkbenchWindow::showFavouriteMenu);
@@ -469,9 +494,10 @@ void WorkbenchWindow::buildDocks() {
     mLineageTree->setIconSize(QSize(LineageIconSide, LineageIconSide));
     // A double-click goes to a generation; it must not also fold it.
     mLineageTree->setExpandsOnDoubleClick(false);
-    mLineageTree->setToolTip(tr("Every generation, branches included, and how the designs came to be. Click a "
-                                "design to select it; double-click a generation to go back to it, or a design of "
-                                "another generation to bring it back into the grid."));
+    mLineageTree->setToolTip(
+        tr("Every generation, branches included, and how the designs came to be. Click a "
+           "design to select it; double-click a generation to go back to it, or a design of "
+           "another generation to bring it back into the grid."));
     mLineageClickTimer.setSingleShot(true);
     mLineageClickTimer.setInterval(QApplication::doubleClickInterval());
     connect(&mLineageClickTimer, &QTimer::timeout, this,
@@ -508,8 +534,10 @@ void WorkbenchWindow::buildDocks() {
     connect(&mLineageThumbnailTimer, &QTimer::timeout, this, &WorkbenchWindow::requestLineageThumbnails);
     // The timer is the receiver: the dock hides as the window is destroyed, after the timer.
     const auto scheduleThumbnails = [this] { mLineageThumbnailTimer.start(); };
-    connect(mLineageTree->verticalScrollBar(), &QScrollBar::valueChanged, &mLineageThumbnailTimer, scheduleThumbnails);
-    connect(mLineageTree->verticalScrollBar(), &QScrollBar::rangeChanged, &mLineageThumbnailTimer, scheduleThumbnails);
+    connect(mLineageTree->verticalScrollBar(), &QScrollBar::valueChanged, &mLineageThumbnailTimer,
+            scheduleThumbnails);
+    connect(mLineageTree->verticalScrollBar(), &QScrollBar::rangeChanged, &mLineageThumbnailTimer,
+            scheduleThumbnails);
     connect(lineageDock, &QDockWidget::visibilityChanged, &mLineageThumbnailTimer, scheduleThumbnails);
     mLineageTree->setMinimumSize(260, 140);
     lineageDock->setWidget(mLineageTree);
@@ -535,12 +563,14 @@ void WorkbenchWindow::buildDocks() {
         connect(action, &QAction::triggered, this, [this, preference] { setRendererPreference(preference); });
         mRendererActions[std::size_t(preference)] = action;
     };
-    addChoice(gl::BackendPreference::Auto, tr("Renderer: &Automatic"),
-              tr("OpenGL on a graphics card; the CPU where OpenGL is a software rasteriser (such as llvmpipe) or "
-                 "missing, since the CPU renderer is faster there"));
-    addChoice(gl::BackendPreference::Gpu, tr("Renderer: &GPU"),
-              tr("Always render with OpenGL shaders, even on a software rasteriser (the CPU where there is no "
-                 "OpenGL at all)"));
+    addChoice(
+        gl::BackendPreference::Auto, tr("Renderer: &Automatic"),
+        tr("OpenGL on a graphics card; the CPU where OpenGL is a software rasteriser (such as llvmpipe) or "
+           "missing, since the CPU renderer is faster there"));
+    addChoice(
+        gl::BackendPreference::Gpu, tr("Renderer: &GPU"),
+        tr("Always render with OpenGL shaders, even on a software rasteriser (the CPU where there is no "
+           "OpenGL at all)"));
     addChoice(gl::BackendPreference::Cpu, tr("Renderer: &CPU"),
               tr("Always render with the CPU renderer on every core; solid objects are still rasterised by "
                  "OpenGL where it exists, and coloured by the CPU"));
@@ -598,7 +628,8 @@ void WorkbenchWindow::buildHelpMenu() {
 namespace {
 
 /// A text window with a Close button: the guide and the About box.
-QDialog* makeTextDialog(QWidget* parent, const QString& name, const QString& title, QWidget* body, QSize size) {
+QDialog* makeTextDialog(QWidget* parent, const QString& name, const QString& title, QWidget* body,
+                        QSize size) {
     auto* dialog = new QDialog(parent);
     dialog->setObjectName(name);
     dialog->setWindowTitle(title);
@@ -620,7 +651,8 @@ QDialog* WorkbenchWindow::showGuide() {
         auto* browser = new QTextBrowser;
         browser->setObjectName(QStringLiteral("guideBrowser"));
         browser->setOpenLinks(false);
-        mGuide = makeTextDialog(this, QStringLiteral("guideDialog"), tr("Marbler guide"), browser, QSize(640, 720));
+        mGuide = makeTextDialog(this, QStringLiteral("guideDialog"), tr("Marbler guide"), browser,
+                                QSize(640, 720));
     }
     // Built each time it is shown, from the actions as they are now.
     mGuide->findChild<QTextBrowser*>(QStringLiteral("guideBrowser"))->setHtml(guideHtml(*this));
@@ -648,7 +680,8 @@ QDialog* WorkbenchWindow::showAbout() {
         text->setWordWrap(true);
         text->setTextInteractionFlags(Qt::TextSelectableByMouse);
         text->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-        mAbout = makeTextDialog(this, QStringLiteral("aboutDialog"), tr("About Marbler"), text, QSize(520, 340));
+        mAbout =
+            makeTextDialog(this, QStringLiteral("aboutDialog"), tr("About Marbler"), text, QSize(520, 340));
         // The renderer may still be choosing, or change while the box is open.
         connect(mRenderer, &RenderService::backendReady, text, [this, text] { text->setText(aboutText()); });
     }
@@ -686,7 +719,8 @@ void WorkbenchWindow::readSettings() {
     if (!restoreState(settings.value(QStringLiteral("window/state")).toByteArray())) {
         // First start: docks wide enough for the lineage columns, the shelf above the lineage.
         const auto docks = findChildren<QDockWidget*>();
-        resizeDocks(QList<QDockWidget*>(docks.begin(), docks.end()), QList<int>(docks.size(), 380), Qt::Horizontal);
+        resizeDocks(QList<QDockWidget*>(docks.begin(), docks.end()), QList<int>(docks.size(), 380),
+                    Qt::Horizontal);
     }
     const int dimension = settings.value(QStringLiteral("population/dimension"), 2).toInt();
     mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
@@ -712,16 +746,24 @@ void WorkbenchWindow::closeEvent(QCloseEvent* event) {
 
 QAction* WorkbenchWindow::operatorAction(GeneticOperator op) const {
     switch (op) {
-    case GeneticOperator::Alter: return mAlter;
-    case GeneticOperator::Recombine: return mRecombine;
-    case GeneticOperator::Swap: return mSwap;
-    case GeneticOperator::Reinit: return mReinit;
+    case GeneticOperator::Alter:
+        return mAlter;
+    case GeneticOperator::Recombine:
+        return mRecombine;
+    case GeneticOperator::Swap:
+        return mSwap;
+    case GeneticOperator::Reinit:
+        return mReinit;
     }
     return nullptr;
 }
 
-double WorkbenchWindow::strength() const { return mStrength->value() / 100.0; }
-void WorkbenchWindow::setStrength(double strength) { mStrength->setValue(int(std::lround(strength * 100.0))); }
+double WorkbenchWindow::strength() const {
+    return mStrength->value() / 100.0;
+}
+void WorkbenchWindow::setStrength(double strength) {
+    mStrength->setValue(int(std::lround(strength * 100.0)));
+}
 
 void WorkbenchWindow::updateCells() {
     for (int i = 0; i < CellCount; ++i) {
@@ -757,13 +799,14 @@ void WorkbenchWindow::updateActions() {
     mForward->setEnabled(mModel->canGoForward());
     const auto& gen = mModel->current();
     if (mModel->isEmptyWorkbench()) {
-        mGenerationLabel->setText(tr("No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)"));
+        mGenerationLabel->setText(
+            tr("No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)"));
         return;
     }
     mGenerationLabel->setText(tr("Generation %1: %2 — %3 selected")
-                                 .arg(mModel->generationLabel(mModel->currentIndex()))
-                                 .arg(gen.description)
-                                 .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
+                                  .arg(mModel->generationLabel(mModel->currentIndex()))
+                                  .arg(gen.description)
+                                  .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
 }
 
 void WorkbenchWindow::updateFavourites() {
@@ -853,7 +896,8 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
 }
 
 void WorkbenchWindow::requestAllRenders() {
-    for (int i = 0; i < CellCount; ++i) requestRender(i);
+    for (int i = 0; i < CellCount; ++i)
+        requestRender(i);
     updateTask();
     if (renderingDone()) emit renderingFinished();
 }
@@ -868,7 +912,8 @@ void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool fi
         mCells[index]->setImage(image);
         mShownDesign[index] = mRequestedDesign[index];
         if (final) {
-            if (!mPendingCacheKey[index].isEmpty()) mImageCache.insert(mPendingCacheKey[index], new QImage(image));
+            if (!mPendingCacheKey[index].isEmpty())
+                mImageCache.insert(mPendingCacheKey[index], new QImage(image));
             mFinal[index] = true;
             updateTask();
             if (renderingDone()) emit renderingFinished();
@@ -881,7 +926,8 @@ void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool fi
     }
     if (key >= FavouriteKeyBase) {
         const int row = int(key - FavouriteKeyBase);
-        if (QListWidgetItem* item = mFavouritesList->item(row)) item->setIcon(QIcon(QPixmap::fromImage(image)));
+        if (QListWidgetItem* item = mFavouritesList->item(row))
+            item->setIcon(QIcon(QPixmap::fromImage(image)));
     }
 }
 
@@ -937,7 +983,10 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
         reportError(this, tr("Cannot breed"), QString::fromStdString(e.what()));
         return false;
     }
-    statusBar()->showMessage(tr("Bred generation %1 with %2").arg(mModel->generationLabel(mModel->currentIndex())).arg(operatorLabel(op)), 5000);
+    statusBar()->showMessage(tr("Bred generation %1 with %2")
+                                 .arg(mModel->generationLabel(mModel->currentIndex()))
+                                 .arg(operatorLabel(op)),
+                             5000);
     return true;
 }
 
@@ -971,14 +1020,16 @@ void WorkbenchWindow::fillFamilies() {
     const QSignalBlocker quiet(mFamily);
     mFamily->clear();
     mFamily->addItem(tr("Mixed families"), QString());
-    mFamily->setItemData(0, tr("Every cell a different family of the craft (and some free designs)"), Qt::ToolTipRole);
+    mFamily->setItemData(0, tr("Every cell a different family of the craft (and some free designs)"),
+                         Qt::ToolTipRole);
     for (const Family& f : allFamilies()) {
         if (f.dimension != dimension) continue;
         QString label = QString::fromUtf8(f.name.data(), qsizetype(f.name.size()));
         label.replace(QLatin1Char('-'), QLatin1Char(' '));
         label[0] = label[0].toUpper();
         mFamily->addItem(label, QString::fromUtf8(f.name.data(), qsizetype(f.name.size())));
-        mFamily->setItemData(mFamily->count() - 1, QString::fromUtf8(f.summary.data(), qsizetype(f.summary.size())),
+        mFamily->setItemData(mFamily->count() - 1,
+                             QString::fromUtf8(f.summary.data(), qsizetype(f.summary.size())),
                              Qt::ToolTipRole);
     }
     mFamily->setCurrentIndex(std::max(0, mFamily->findData(chosen)));
@@ -988,7 +1039,9 @@ void WorkbenchWindow::setPopulationFamily(const QString& family) {
     mFamily->setCurrentIndex(std::max(0, mFamily->findData(family)));
 }
 
-QString WorkbenchWindow::populationFamily() const { return mFamily->currentData().toString(); }
+QString WorkbenchWindow::populationFamily() const {
+    return mFamily->currentData().toString();
+}
 
 void WorkbenchWindow::newRandomPopulation(int dimension) {
     QSettings().setValue(QStringLiteral("population/dimension"), dimension);
@@ -1011,8 +1064,7 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
             // A genome file or an image that carries one: the command line's loader.
             designs.push_back(loadDesign(file.toStdString(), &warnings));
             names << QFileInfo(file).fileName();
-            if (!warnings.empty())
-                statusBar()->showMessage(QString::fromStdString(warnings.front()), 8000);
+            if (!warnings.empty()) statusBar()->showMessage(QString::fromStdString(warnings.front()), 8000);
         } catch (const Error& e) {
             errors << QString::fromStdString(e.what());
         }
@@ -1028,8 +1080,8 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
     return true;
 }
 
-std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened, const QStringList& names, int cell,
-                                              const QString& describe) {
+std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened, const QStringList& names,
+                                              int cell, const QString& describe) {
     if (opened.empty()) return {};
     // One kind per generation: flat and solid designs cannot breed together, and the grid's
     // object, previews and operators all assume one kind. The first design decides.
@@ -1046,11 +1098,12 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
         }
     }
     if (!refused.isEmpty())
-        reportError(this, tr("Some designs were not opened"),
-                    tr("A generation holds one kind of design, and %1 is %2, so these %3 designs were not opened; "
-                       "open them on their own:\n\n%4")
-                        .arg(names.value(0), kind == 3 ? tr("solid") : tr("flat"), kind == 3 ? tr("flat") : tr("solid"),
-                             refused.join(QStringLiteral("\n"))));
+        reportError(
+            this, tr("Some designs were not opened"),
+            tr("A generation holds one kind of design, and %1 is %2, so these %3 designs were not opened; "
+               "open them on their own:\n\n%4")
+                .arg(names.value(0), kind == 3 ? tr("solid") : tr("flat"),
+                     kind == 3 ? tr("flat") : tr("solid"), refused.join(QStringLiteral("\n"))));
     const QString description =
         describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
 
@@ -1080,7 +1133,8 @@ std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened,
         for (int c : question.replaced)
             if (mModel->isSelected(c)) question.parents.push_back(c);
         std::optional<OpenChoice> choice = OpenChoice::Replace;
-        if (!question.replaced.empty()) choice = askOpenChoice() ? chooseOpenPlacement(this, question) : lastOpenChoice();
+        if (!question.replaced.empty())
+            choice = askOpenChoice() ? chooseOpenPlacement(this, question) : lastOpenChoice();
         if (!choice) {
             statusBar()->showMessage(tr("Nothing opened: the grid is as it was"), 5000);
             return {};
@@ -1228,7 +1282,8 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
     QMenu menu(this);
     if (!g) {
         menu.addAction(tr("Open a design here…"), this, [this, index] {
-            const QString file = QFileDialog::getOpenFileName(this, tr("Open a design"), QString(), openFilter());
+            const QString file =
+                QFileDialog::getOpenFileName(this, tr("Open a design"), QString(), openFilter());
             if (!file.isEmpty()) openFiles({file}, index);
         });
         menu.exec(globalPos);
@@ -1337,7 +1392,8 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
         if (shown && genomeId(*shown) == id) mModel->setCellView(index, angle);
     });
     connect(dialog, &DesignDialog::fileSaved, this, &WorkbenchWindow::noteSavedFile);
-    connect(dialog, &DesignDialog::openInEditorRequested, this, [this](const Genome& design) { openEditor(design); });
+    connect(dialog, &DesignDialog::openInEditorRequested, this,
+            [this](const Genome& design) { openEditor(design); });
     connect(dialog, &DesignDialog::genomeCopied, this, [this](const QString& name) {
         statusBar()->showMessage(tr("Copied %1 to the clipboard as genome text").arg(name), 5000);
     });
@@ -1351,10 +1407,14 @@ void WorkbenchWindow::resumeSession(SavedSession session) {
     mModel->restoreSession(std::move(session));
     mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
     setMesh(mModel->mesh());
-    statusBar()->showMessage(tr("Resumed the last session at generation %1").arg(mModel->generationLabel(mModel->currentIndex())), 5000);
+    statusBar()->showMessage(
+        tr("Resumed the last session at generation %1").arg(mModel->generationLabel(mModel->currentIndex())),
+        5000);
 }
 
-QString WorkbenchWindow::mesh() const { return mMesh->currentText(); }
+QString WorkbenchWindow::mesh() const {
+    return mMesh->currentText();
+}
 
 QString designCaption(const Genome& genome) {
     const LineageInfo info = lineageOf(genome);

@@ -13,8 +13,8 @@
 #include <QHash>
 #include <QMainWindow>
 #include <QMultiHash>
-#include <QSet>
 #include <QPointer>
+#include <QSet>
 #include <QTimer>
 
 #include <array>
@@ -364,8 +364,8 @@ private:
     QAction* mAboutQtAction = nullptr;
     QPointer<QDialog> mGuide;
     QPointer<QDialog> mAbout;
-    int mRenderBatch = 0;           ///< cells in the renders under way, for "Rendering 5 of 9…"
-    bool mAnnounceBackend = false;  ///< the user switched renderer: say which one took over
+    int mRenderBatch = 0;                       ///< cells in the renders under way, for "Rendering 5 of 9…"
+    bool mAnnounceBackend = false;              ///< the user switched renderer: say which one took over
     std::array<QAction*, 3> mRendererActions{}; ///< by gl::BackendPreference
     QTimer mResizeTimer;
     bool mSaveFailureShown = false;

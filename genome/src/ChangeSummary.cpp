@@ -29,7 +29,8 @@ std::string fixed(double value, int decimals) {
     std::snprintf(text, sizeof text, "%.*f", decimals, value);
     std::string s = text;
     if (s.find('.') != std::string::npos) {
-        while (s.back() == '0') s.pop_back();
+        while (s.back() == '0')
+            s.pop_back();
         if (s.back() == '.') s.pop_back();
     }
     if (s == "-0") s = "0";
@@ -37,32 +38,38 @@ std::string fixed(double value, int decimals) {
 }
 
 /// Design units: whole units from 10 up, one decimal below.
-int lengthDecimals(double value) { return std::abs(value) >= 10.0 ? 0 : 1; }
+int lengthDecimals(double value) {
+    return std::abs(value) >= 10.0 ? 0 : 1;
+}
 
 /// "old → new", with more decimals where the rounded values would read the same.
 std::string fromTo(const std::vector<double>& from, const std::vector<double>& to, int decimals,
                    std::string_view unit = {}) {
     const auto join = [&](const std::vector<double>& values, int d) {
         std::string s;
-        for (std::size_t i = 0; i < values.size(); ++i) s += (i ? "×" : "") + fixed(values[i], d) + std::string(unit);
+        for (std::size_t i = 0; i < values.size(); ++i)
+            s += (i ? "×" : "") + fixed(values[i], d) + std::string(unit);
         return s;
     };
     int d = decimals;
-    while (d < 4 && join(from, d) == join(to, d)) ++d;
+    while (d < 4 && join(from, d) == join(to, d))
+        ++d;
     return join(from, d) + " → " + join(to, d);
 }
 
 /// A distance in design units, at least one significant figure.
 std::string distance(double d) {
     int decimals = lengthDecimals(d);
-    while (decimals < 4 && fixed(d, decimals) == "0") ++decimals;
+    while (decimals < 4 && fixed(d, decimals) == "0")
+        ++decimals;
     const std::string s = fixed(d, decimals);
     return s + (s == "1" ? " unit" : " units");
 }
 
 std::vector<double> components(const ParamSpec& spec, const Operation& op, int dimension) {
     std::vector<double> values(static_cast<std::size_t>(componentCount(spec, op, dimension)));
-    for (std::size_t i = 0; i < values.size(); ++i) values[i] = getComponent(spec, op, static_cast<int>(i));
+    for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = getComponent(spec, op, static_cast<int>(i));
     return values;
 }
 
@@ -78,8 +85,8 @@ double largestDifference(const std::vector<double>& a, const std::vector<double>
 }
 
 /// The changes of one parameter of a step that both designs have.
-void describeParameter(const ParamSpec& spec, const Operation& a, const Operation& b, int dimension, double side,
-                       const std::string& label, std::vector<Change>& out) {
+void describeParameter(const ParamSpec& spec, const Operation& a, const Operation& b, int dimension,
+                       double side, const std::string& label, std::vector<Change>& out) {
     const std::vector<double> from = components(spec, a, dimension), to = components(spec, b, dimension);
     if (from == to) return;
     const std::string key(spec.key);
@@ -87,7 +94,8 @@ void describeParameter(const ParamSpec& spec, const Operation& a, const Operatio
     switch (spec.kind) {
     case ParamKind::Position: {
         double d2 = 0.0;
-        for (std::size_t i = 0; i < from.size(); ++i) d2 += (to[i] - from[i]) * (to[i] - from[i]);
+        for (std::size_t i = 0; i < from.size(); ++i)
+            d2 += (to[i] - from[i]) * (to[i] - from[i]);
         const double d = std::sqrt(d2);
         out.push_back({label, "moved " + distance(d), d / (scale * side)});
         return;
@@ -102,19 +110,22 @@ void describeParameter(const ParamSpec& spec, const Operation& a, const Operatio
         const double turn = std::acos(std::clamp(dot / std::sqrt(na * nb), -1.0, 1.0));
         double degrees = turn * 180.0 / std::numbers::pi;
         int decimals = 0;
-        while (decimals < 4 && fixed(degrees, decimals) == "0") ++decimals;
+        while (decimals < 4 && fixed(degrees, decimals) == "0")
+            ++decimals;
         out.push_back({label, key + " turned " + fixed(degrees, decimals) + "°", turn / scale});
         return;
     }
     case ParamKind::Angle:
     case ParamKind::Phase:
-        out.push_back({label, key + " " + fromTo(from, to, 0, "°"), largestDifference(from, to, true) / scale});
+        out.push_back(
+            {label, key + " " + fromTo(from, to, 0, "°"), largestDifference(from, to, true) / scale});
         return;
     case ParamKind::Length:
     case ParamKind::Shift:
     case ParamKind::Extent: {
         double largest = 0.0;
-        for (double v : from) largest = std::max(largest, std::abs(v));
+        for (double v : from)
+            largest = std::max(largest, std::abs(v));
         out.push_back({label, key + " " + fromTo(from, to, lengthDecimals(largest)),
                        from.size() == to.size() ? largestDifference(from, to) / (scale * side) : 1.0});
         return;
@@ -124,7 +135,8 @@ void describeParameter(const ParamSpec& spec, const Operation& a, const Operatio
                        std::abs(to[0] - from[0]) / scale});
         return;
     case ParamKind::Count:
-        out.push_back({label, key + " " + fromTo(from, to, 0), std::abs(to[0] - from[0]) / std::max(1.0, from[0])});
+        out.push_back(
+            {label, key + " " + fromTo(from, to, 0), std::abs(to[0] - from[0]) / std::max(1.0, from[0])});
         return;
     case ParamKind::Color:
         out.push_back({label, "ink " + fixed(from[0] + 1.0, 0) + " → ink " + fixed(to[0] + 1.0, 0), 1.0});
@@ -137,7 +149,8 @@ void describeParameter(const ParamSpec& spec, const Operation& a, const Operatio
         return;
     case ParamKind::Teeth:
         if (from.size() != to.size())
-            out.push_back({label, key + " " + std::to_string(from.size()) + " → " + std::to_string(to.size()), 1.0});
+            out.push_back(
+                {label, key + " " + std::to_string(from.size()) + " → " + std::to_string(to.size()), 1.0});
         else {
             const double d = largestDifference(from, to);
             out.push_back({label, key + " moved up to " + distance(d), d / (scale * side)});
@@ -147,9 +160,10 @@ void describeParameter(const ParamSpec& spec, const Operation& a, const Operatio
 }
 
 /// The parameter changes of a step both designs have (the same tool).
-void describeStep(const Operation& a, const Operation& b, int dimension, double side, const std::string& label,
-                  std::vector<Change>& out) {
-    for (const ParamSpec& spec : toolSpec(a.tool).params(dimension)) describeParameter(spec, a, b, dimension, side, label, out);
+void describeStep(const Operation& a, const Operation& b, int dimension, double side,
+                  const std::string& label, std::vector<Change>& out) {
+    for (const ParamSpec& spec : toolSpec(a.tool).params(dimension))
+        describeParameter(spec, a, b, dimension, side, label, out);
 }
 
 /// "comb 2": each step's tool and its number among that tool's steps of the list.
@@ -203,15 +217,19 @@ std::string plural(Tool tool) {
 std::optional<std::vector<std::pair<std::size_t, std::size_t>>> alignSteps(const std::vector<Operation>& a,
                                                                            const std::vector<Operation>& b) {
     const std::size_t n = a.size(), m = b.size();
-    if (n == m && std::equal(a.begin(), a.end(), b.begin(), [](const Operation& x, const Operation& y) { return x.tool == y.tool; })) {
+    if (n == m && std::equal(a.begin(), a.end(), b.begin(),
+                             [](const Operation& x, const Operation& y) { return x.tool == y.tool; })) {
         std::vector<std::pair<std::size_t, std::size_t>> pairs;
-        for (std::size_t i = 0; i < n; ++i) pairs.emplace_back(i, i);
+        for (std::size_t i = 0; i < n; ++i)
+            pairs.emplace_back(i, i);
         return pairs;
     }
     if ((n + 1) * (m + 1) > 4'000'000) return std::nullopt;
     // score[i][j]: the best matching of a[i..] with b[j..], an unchanged step counting more
     // than a changed one of the same tool, so a removed comb among combs is the one gone.
-    const auto worth = [&](std::size_t i, std::size_t j) { return a[i].tool != b[j].tool ? 0 : a[i] == b[j] ? 3 : 2; };
+    const auto worth = [&](std::size_t i, std::size_t j) {
+        return a[i].tool != b[j].tool ? 0 : a[i] == b[j] ? 3 : 2;
+    };
     std::vector<int> score((n + 1) * (m + 1), 0);
     const auto at = [&](std::size_t i, std::size_t j) -> int& { return score[i * (m + 1) + j]; };
     for (std::size_t i = n; i-- > 0;)
@@ -222,9 +240,12 @@ std::optional<std::vector<std::pair<std::size_t, std::size_t>>> alignSteps(const
     std::vector<std::pair<std::size_t, std::size_t>> pairs;
     for (std::size_t i = 0, j = 0; i < n && j < m;) {
         const int w = worth(i, j);
-        if (w && at(i, j) == at(i + 1, j + 1) + w) pairs.emplace_back(i++, j++);
-        else if (at(i, j) == at(i + 1, j)) ++i;
-        else ++j;
+        if (w && at(i, j) == at(i + 1, j + 1) + w)
+            pairs.emplace_back(i++, j++);
+        else if (at(i, j) == at(i + 1, j))
+            ++i;
+        else
+            ++j;
     }
     return pairs;
 }
@@ -237,8 +258,8 @@ struct Donor {
 
 /// The stroke changes: matched strokes parameter by parameter, the strokes removed, and the
 /// strokes added (counted by tool, and by the parent that holds them when one does).
-void describeStrokes(const std::vector<Operation>& a, const std::vector<Operation>& b, int dimension, double side,
-                     const std::vector<Donor>& donors, std::vector<Change>& out) {
+void describeStrokes(const std::vector<Operation>& a, const std::vector<Operation>& b, int dimension,
+                     double side, const std::vector<Donor>& donors, std::vector<Change>& out) {
     if (a == b) return;
     for (const Donor& d : donors)
         if (!b.empty() && d.genome->operations == b) {
@@ -265,14 +286,17 @@ void describeStrokes(const std::vector<Operation>& a, const std::vector<Operatio
         if (keptNew[j]) continue;
         std::size_t from = 0;
         for (const Donor& d : donors)
-            if (std::find(d.genome->operations.begin(), d.genome->operations.end(), b[j]) != d.genome->operations.end()) {
+            if (std::find(d.genome->operations.begin(), d.genome->operations.end(), b[j]) !=
+                d.genome->operations.end()) {
                 from = d.number;
                 break;
             }
         const std::pair key{b[j].tool, from};
         auto it = std::find_if(added.begin(), added.end(), [&](const auto& e) { return e.first == key; });
-        if (it == added.end()) added.push_back({key, 1});
-        else ++it->second;
+        if (it == added.end())
+            added.push_back({key, 1});
+        else
+            ++it->second;
     }
     for (const auto& [key, count] : added) {
         const std::string_view name = toolSpec(key.first).name;
@@ -286,7 +310,8 @@ void describeStrokes(const std::vector<Operation>& a, const std::vector<Operatio
 /// "14 drops", "12 drops and 2 sprays".
 std::string countSteps(const std::vector<Operation>& steps) {
     std::array<int, ToolCount> count{};
-    for (const Operation& op : steps) ++count[static_cast<std::size_t>(op.tool)];
+    for (const Operation& op : steps)
+        ++count[static_cast<std::size_t>(op.tool)];
     std::string text;
     for (const ToolSpec& tool : allTools()) {
         const int c = count[static_cast<std::size_t>(tool.tool)];
@@ -303,22 +328,28 @@ void describeInitial(const Genome& parent, const Genome& child, double side, std
     const auto& b = child.initial;
     if (a == b) return;
     if (a.size() != b.size() ||
-        !std::equal(a.begin(), a.end(), b.begin(), [](const Operation& x, const Operation& y) { return x.tool == y.tool; })) {
+        !std::equal(a.begin(), a.end(), b.begin(),
+                    [](const Operation& x, const Operation& y) { return x.tool == y.tool; })) {
         const std::string from = countSteps(a), to = countSteps(b);
         out.push_back({"", from == to ? "new initial state" : "initial state: " + from + " → " + to, 20.0});
         return;
     }
     std::size_t changed = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) changed += a[i] == b[i] ? 0 : 1;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        changed += a[i] == b[i] ? 0 : 1;
     if (changed > 3) {
-        out.push_back({"", changed == a.size() ? "new initial state"
-                                               : "initial state: " + std::to_string(changed) + " of " +
-                                                     std::to_string(a.size()) + " inks changed",
-                       changed == a.size() ? 20.0 : 2.0 * static_cast<double>(changed) / static_cast<double>(a.size())});
+        out.push_back({"",
+                       changed == a.size() ? "new initial state"
+                                           : "initial state: " + std::to_string(changed) + " of " +
+                                                 std::to_string(a.size()) + " inks changed",
+                       changed == a.size()
+                           ? 20.0
+                           : 2.0 * static_cast<double>(changed) / static_cast<double>(a.size())});
         return;
     }
     const std::vector<std::string> labels = stepLabels(b);
-    for (std::size_t i = 0; i < a.size(); ++i) describeStep(a[i], b[i], child.dimension, side, labels[i], out);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        describeStep(a[i], b[i], child.dimension, side, labels[i], out);
 }
 
 /// The hue words a shift is named after, by the hue it moves towards.
@@ -326,9 +357,14 @@ struct HueWord {
     double hue;
     const char* word;
 };
-constexpr std::array<HueWord, 8> HueWords{{{0.0, "redder"},   {30.0, "more orange"}, {60.0, "yellower"},
-                                           {120.0, "greener"}, {180.0, "more turquoise"}, {240.0, "bluer"},
-                                           {285.0, "more violet"}, {330.0, "pinker"}}};
+constexpr std::array<HueWord, 8> HueWords{{{0.0, "redder"},
+                                           {30.0, "more orange"},
+                                           {60.0, "yellower"},
+                                           {120.0, "greener"},
+                                           {180.0, "more turquoise"},
+                                           {240.0, "bluer"},
+                                           {285.0, "more violet"},
+                                           {330.0, "pinker"}}};
 
 /// The first hue word met going from `from` by `delta` degrees (its sign the way round).
 const char* hueWord(double from, double delta) {
@@ -352,13 +388,17 @@ std::pair<std::string, double> describeColor(Color a, Color b) {
     double hue = std::fmod(y.h - x.h + 540.0, 360.0) - 180.0;
     // A grey has no hue to speak of.
     if (std::min(x.s, y.s) < 0.08 || std::min(x.l, y.l) < 0.04 || std::max(x.l, y.l) > 0.96) hue = 0.0;
-    const double weight = std::max({std::abs(hue) / 15.0, std::abs(y.l - x.l) / 0.05, std::abs(y.s - x.s) / 0.08});
+    const double weight =
+        std::max({std::abs(hue) / 15.0, std::abs(y.l - x.l) / 0.05, std::abs(y.s - x.s) / 0.08});
     if (wordA != wordB) return {": " + wordA + " → " + wordB, weight + 1.0};
     std::vector<std::pair<double, std::string>> shifts;
     if (std::abs(hue) >= 3.0) shifts.emplace_back(std::abs(hue) / 15.0, hueWord(x.h, hue));
-    if (std::abs(y.l - x.l) >= 0.02) shifts.emplace_back(std::abs(y.l - x.l) / 0.05, y.l > x.l ? "lighter" : "darker");
-    if (std::abs(y.s - x.s) >= 0.04) shifts.emplace_back(std::abs(y.s - x.s) / 0.08, y.s > x.s ? "more vivid" : "duller");
-    std::stable_sort(shifts.begin(), shifts.end(), [](const auto& p, const auto& q) { return p.first > q.first; });
+    if (std::abs(y.l - x.l) >= 0.02)
+        shifts.emplace_back(std::abs(y.l - x.l) / 0.05, y.l > x.l ? "lighter" : "darker");
+    if (std::abs(y.s - x.s) >= 0.04)
+        shifts.emplace_back(std::abs(y.s - x.s) / 0.08, y.s > x.s ? "more vivid" : "duller");
+    std::stable_sort(shifts.begin(), shifts.end(),
+                     [](const auto& p, const auto& q) { return p.first > q.first; });
     if (shifts.empty()) return {" nudged", weight};
     std::string text = " " + shifts[0].second;
     if (shifts.size() > 1) text += " and " + shifts[1].second;
@@ -369,7 +409,8 @@ void describePalette(const Genome& parent, const Genome& child, std::vector<Chan
     const auto& a = parent.palette;
     const auto& b = child.palette;
     if (a.size() != b.size())
-        out.push_back({"palette", std::to_string(a.size()) + " inks → " + std::to_string(b.size()) + " inks", 5.0});
+        out.push_back(
+            {"palette", std::to_string(a.size()) + " inks → " + std::to_string(b.size()) + " inks", 5.0});
     for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
         if (a[i] == b[i]) continue;
         auto [text, weight] = describeColor(a[i], b[i]);
@@ -383,7 +424,9 @@ void describePalette(const Genome& parent, const Genome& child, std::vector<Chan
 
 } // namespace
 
-std::string describeChange(const Genome& parent, const Genome& child) { return describeChange({parent}, 0, child); }
+std::string describeChange(const Genome& parent, const Genome& child) {
+    return describeChange({parent}, 0, child);
+}
 
 std::string describeChange(const std::vector<Genome>& parents, std::size_t home, const Genome& child) {
     const Genome& parent = parents.at(home);
@@ -391,7 +434,8 @@ std::string describeChange(const std::vector<Genome>& parents, std::size_t home,
     for (std::size_t k = 0; k < parents.size(); ++k)
         if (k != home && parents[k].dimension == child.dimension) donors.push_back({&parents[k], k + 1});
     std::vector<Change> changes;
-    const double side = std::max({child.size.x, child.size.y, child.dimension == 3 ? child.size.z : 0.0, 1.0});
+    const double side =
+        std::max({child.size.x, child.size.y, child.dimension == 3 ? child.size.z : 0.0, 1.0});
     if (parent.dimension != child.dimension) {
         changes.push_back({"", "now " + std::to_string(child.dimension) + "D", 100.0});
     } else {
@@ -407,14 +451,19 @@ std::string describeChange(const std::vector<Genome>& parents, std::size_t home,
         describeStrokes(parent.operations, child.operations, child.dimension, side, donors, changes);
     }
     if (parent.source != child.source)
-        changes.push_back({"", child.source ? (parent.source ? "new source image" : "added a source image") : "removed the source image", 20.0});
+        changes.push_back({"",
+                           child.source ? (parent.source ? "new source image" : "added a source image")
+                                        : "removed the source image",
+                           20.0});
     describePalette(parent, child, changes);
     if (parent.bleed != child.bleed)
-        changes.push_back({"", "bleed " + fromTo({parent.bleed}, {child.bleed}, 1), std::abs(child.bleed - parent.bleed) / 2.0 + 0.5});
+        changes.push_back({"", "bleed " + fromTo({parent.bleed}, {child.bleed}, 1),
+                           std::abs(child.bleed - parent.bleed) / 2.0 + 0.5});
     if (changes.empty()) return "no visible change";
 
     // The largest first; equal weights keep the design's order.
-    std::stable_sort(changes.begin(), changes.end(), [](const Change& p, const Change& q) { return p.weight > q.weight; });
+    std::stable_sort(changes.begin(), changes.end(),
+                     [](const Change& p, const Change& q) { return p.weight > q.weight; });
     const std::size_t shown = std::min(changes.size(), static_cast<std::size_t>(ChangeSummaryLimit));
     // The shown changes of one step read together ("comb 2: spacing 18 → 23, alpha 40 → 45"),
     // where its largest change stands.
@@ -433,7 +482,8 @@ std::string describeChange(const std::vector<Genome>& parents, std::size_t home,
         partLabels.push_back(c.label);
     }
     std::string text;
-    for (const std::string& part : parts) text += (text.empty() ? "" : "; ") + part;
+    for (const std::string& part : parts)
+        text += (text.empty() ? "" : "; ") + part;
     if (changes.size() > shown) text += "; and " + std::to_string(changes.size() - shown) + " more";
     return text;
 }

@@ -43,9 +43,12 @@ Hsl hslOf(Color c) {
     const double d = hi - lo;
     if (d <= 0.0) return out;
     out.s = out.l > 0.5 ? d / (2.0 - hi - lo) : d / (hi + lo);
-    if (hi == r) out.h = 60.0 * ((g - b) / d + (g < b ? 6.0 : 0.0));
-    else if (hi == g) out.h = 60.0 * ((b - r) / d + 2.0);
-    else out.h = 60.0 * ((r - g) / d + 4.0);
+    if (hi == r)
+        out.h = 60.0 * ((g - b) / d + (g < b ? 6.0 : 0.0));
+    else if (hi == g)
+        out.h = 60.0 * ((b - r) / d + 2.0);
+    else
+        out.h = 60.0 * ((r - g) / d + 4.0);
     return out;
 }
 
@@ -62,18 +65,34 @@ Color colorFromHsl(const Hsl& c) {
     const double x = chroma * (1.0 - std::abs(hm - 1.0));
     double r = 0, g = 0, b = 0;
     switch (static_cast<int>(h)) {
-    case 0: r = chroma, g = x; break;
-    case 1: r = x, g = chroma; break;
-    case 2: g = chroma, b = x; break;
-    case 3: g = x, b = chroma; break;
-    case 4: r = x, b = chroma; break;
-    default: r = chroma, b = x; break;
+    case 0:
+        r = chroma, g = x;
+        break;
+    case 1:
+        r = x, g = chroma;
+        break;
+    case 2:
+        g = chroma, b = x;
+        break;
+    case 3:
+        g = x, b = chroma;
+        break;
+    case 4:
+        r = x, b = chroma;
+        break;
+    default:
+        r = chroma, b = x;
+        break;
     }
     const double m = l - chroma / 2.0;
-    auto channel = [](double v) { return static_cast<std::uint8_t>(std::clamp(std::round(v * 255.0), 0.0, 255.0)); };
+    auto channel = [](double v) {
+        return static_cast<std::uint8_t>(std::clamp(std::round(v * 255.0), 0.0, 255.0));
+    };
     return {channel(r + m), channel(g + m), channel(b + m)};
 }
 
-Color colorFromHsl(double hue, double saturation, double lightness) { return colorFromHsl({hue, saturation, lightness}); }
+Color colorFromHsl(double hue, double saturation, double lightness) {
+    return colorFromHsl({hue, saturation, lightness});
+}
 
 } // namespace marbler

@@ -23,12 +23,14 @@ Pcg32 colourwayRng(std::uint64_t seed, int index) {
 /// out) and from the one before it, after a seeded shuffle; fewer when the pool runs out.
 std::vector<Color> orderInks(std::vector<Color> pool, int count, Color background, Pcg32& rng) {
     std::erase_if(pool, [&](Color c) { return colorDistance2(c, background) < MinInkContrast2; });
-    for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[rng.below(static_cast<std::uint32_t>(i))]);
+    for (std::size_t i = pool.size(); i > 1; --i)
+        std::swap(pool[i - 1], pool[rng.below(static_cast<std::uint32_t>(i))]);
     std::vector<Color> inks;
     while (!pool.empty() && static_cast<int>(inks.size()) < count) {
         auto next = pool.begin();
         if (!inks.empty()) {
-            next = std::find_if(pool.begin(), pool.end(), [&](Color c) { return colorDistance2(c, inks.back()) >= MinInkContrast2; });
+            next = std::find_if(pool.begin(), pool.end(),
+                                [&](Color c) { return colorDistance2(c, inks.back()) >= MinInkContrast2; });
             if (next == pool.end()) break;
         }
         inks.push_back(*next);
@@ -44,7 +46,8 @@ void widenPool(std::vector<Color>& pool, std::size_t wanted, Pcg32& rng) {
     for (int turn = 1; pool.size() < wanted + 2; ++turn)
         for (std::size_t i = 0; i < base; ++i) {
             Hsl c = hslOf(pool[i]);
-            pool.push_back(colorFromHsl(wrapHue(c.h + 47.0 * turn), c.s, std::clamp(c.l + (turn % 2 ? 0.15 : -0.15), 0.15, 0.8)));
+            pool.push_back(colorFromHsl(wrapHue(c.h + 47.0 * turn), c.s,
+                                        std::clamp(c.l + (turn % 2 ? 0.15 : -0.15), 0.15, 0.8)));
         }
 }
 
@@ -64,18 +67,22 @@ std::vector<Color> freshPalette(int count, Color& background, Pcg32& rng) {
 }
 
 /// A variation of a palette: every hue turned by one angle, values shifted, inks reordered.
-std::vector<Color> variedPalette(const std::vector<Color>& palette, Color& background, double strength, Pcg32& rng) {
+std::vector<Color> variedPalette(const std::vector<Color>& palette, Color& background, double strength,
+                                 Pcg32& rng) {
     const double turn = rng.uniform(-180.0, 180.0) * strength;
     const auto vary = [&](Color c, double value) {
         Hsl h = hslOf(c);
-        return colorFromHsl(wrapHue(h.h + turn), std::clamp(h.s + rng.uniform(-0.2, 0.2) * strength, 0.0, 1.0),
+        return colorFromHsl(wrapHue(h.h + turn),
+                            std::clamp(h.s + rng.uniform(-0.2, 0.2) * strength, 0.0, 1.0),
                             std::clamp(h.l + value, 0.05, 0.95));
     };
     background = vary(background, rng.uniform(-0.05, 0.05) * strength);
     std::vector<Color> inks;
-    for (Color c : palette) inks.push_back(vary(c, rng.uniform(-0.2, 0.2) * strength));
+    for (Color c : palette)
+        inks.push_back(vary(c, rng.uniform(-0.2, 0.2) * strength));
     if (rng.chance(strength)) {
-        for (std::size_t i = inks.size(); i > 1; --i) std::swap(inks[i - 1], inks[rng.below(static_cast<std::uint32_t>(i))]);
+        for (std::size_t i = inks.size(); i > 1; --i)
+            std::swap(inks[i - 1], inks[rng.below(static_cast<std::uint32_t>(i))]);
     }
     return inks;
 }
@@ -85,13 +92,13 @@ std::vector<Color> variedPalette(const std::vector<Color>& palette, Color& backg
 std::vector<Color> plainPalette(int count, Color& background) {
     background = {0xeb, 0xeb, 0xeb};
     std::vector<Color> inks;
-    for (int i = 0; i < count; ++i) inks.push_back(i % 2 ? Color{0x8c, 0x8c, 0x8c} : Color{0x33, 0x33, 0x33});
+    for (int i = 0; i < count; ++i)
+        inks.push_back(i % 2 ? Color{0x8c, 0x8c, 0x8c} : Color{0x33, 0x33, 0x33});
     return inks;
 }
 
 /// Draws palettes until one has `count` inks with contrast (32 tries), else the plain palette.
-template <typename Draw>
-void givePalette(Genome& g, int count, Draw draw) {
+template <typename Draw> void givePalette(Genome& g, int count, Draw draw) {
     for (int attempt = 0; attempt < 32; ++attempt) {
         Color background = g.background;
         std::vector<Color> inks = draw(background);
@@ -115,8 +122,9 @@ bool paletteHasContrast(const std::vector<Color>& palette, Color background) {
 }
 
 bool sameStructure(const Genome& a, const Genome& b) {
-    return a.dimension == b.dimension && a.size == b.size && a.initial == b.initial && a.operations == b.operations &&
-           a.source == b.source && a.bleed == b.bleed && a.palette.size() == b.palette.size();
+    return a.dimension == b.dimension && a.size == b.size && a.initial == b.initial &&
+           a.operations == b.operations && a.source == b.source && a.bleed == b.bleed &&
+           a.palette.size() == b.palette.size();
 }
 
 Genome colourwayOf(const Genome& design, double strength, Pcg32& rng) {
@@ -141,7 +149,8 @@ Genome mixedColourway(const std::vector<Genome>& parents, std::size_t home, Pcg3
         background = parents[rng.below(static_cast<std::uint32_t>(parents.size()))].background;
         std::vector<Color> wider = pool;
         std::erase_if(wider, [&](Color c) { return colorDistance2(c, background) < MinInkContrast2; });
-        if (wider.size() < static_cast<std::size_t>(count) + 2) widenPool(wider, static_cast<std::size_t>(count), rng);
+        if (wider.size() < static_cast<std::size_t>(count) + 2)
+            widenPool(wider, static_cast<std::size_t>(count), rng);
         return orderInks(std::move(wider), count, background, rng);
     });
     return g;
@@ -150,7 +159,8 @@ Genome mixedColourway(const std::vector<Genome>& parents, std::size_t home, Pcg3
 std::vector<Genome> colourways(const ColourwayRequest& request) {
     if (request.parents.empty()) throw InputError("colourways need a design");
     if (request.count < 1 || request.count > MaxChildren)
-        throw InputError("count must be between 1 and " + std::to_string(MaxChildren) + " (got " + std::to_string(request.count) + ")");
+        throw InputError("count must be between 1 and " + std::to_string(MaxChildren) + " (got " +
+                         std::to_string(request.count) + ")");
     if (!(request.strength >= 0.0 && request.strength <= 1.0))
         throw InputError("strength must be between 0 and 1 (got " + std::to_string(request.strength) + ")");
     if (!request.childNumbers.empty() && static_cast<int>(request.childNumbers.size()) != request.count)
@@ -162,7 +172,8 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
         const Genome& parent = request.parents[p];
         validateGenome(parent, "parent " + std::to_string(p + 1));
         if (locksOf(parent).palette)
-            throw InputError("parent " + std::to_string(p + 1) + ": its palette is locked; unlock it to make colourways");
+            throw InputError("parent " + std::to_string(p + 1) +
+                             ": its palette is locked; unlock it to make colourways");
         parentIds.push_back(genomeId(parent));
         taken.insert(genomeId(parent));
         generation = std::max(generation, lineageGeneration(parent));
@@ -174,17 +185,20 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
         Pcg32 rng = colourwayRng(request.seed, i);
         const std::size_t home = request.mix ? static_cast<std::size_t>(i) % request.parents.size() : 0;
         const auto draw = [&] {
-            return request.mix ? mixedColourway(request.parents, home, rng) : colourwayOf(request.parents[0], request.strength, rng);
+            return request.mix ? mixedColourway(request.parents, home, rng)
+                               : colourwayOf(request.parents[0], request.strength, rng);
         };
         Genome child = draw();
-        for (int attempt = 0; taken.count(genomeId(child)) && attempt < 16; ++attempt) child = draw();
+        for (int attempt = 0; taken.count(genomeId(child)) && attempt < 16; ++attempt)
+            child = draw();
         // A mix that keeps repeating (parents with few inks): a variation of it instead.
         for (int attempt = 0; taken.count(genomeId(child)) && attempt < 16; ++attempt)
             child = colourwayOf(request.parents[home], 0.5, rng);
         taken.insert(genomeId(child));
 
         const Genome& homeParent = request.parents[home];
-        const int number = request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
+        const int number =
+            request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
         nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
         lineage["parents"] = parentIds;
         lineage["operator"] = ColourwayOperator;

@@ -18,7 +18,6 @@ constexpr std::uint64_t FamilyPaletteStream = 0x66616d70616c3031ULL;
 constexpr std::uint64_t FamilyGroundStream = 0x66616d67726e3031ULL;
 constexpr std::uint64_t FamilyStrokeStream = 0x66616d7374723031ULL;
 
-
 // ---------------------------------------------------------------------------------------
 // Palettes of the tradition
 
@@ -51,7 +50,11 @@ constexpr std::array<Color, 7> VictorianInks{{
     {0xa3, 0x4a, 0x32}, // brick
 }};
 constexpr std::array<Color, 5> IndigoInks{{
-    {0x1b, 0x24, 0x4f}, {0x2e, 0x3f, 0x7f}, {0x4b, 0x63, 0xa6}, {0x85, 0x9b, 0xcc}, {0xc4, 0xcf, 0xe6},
+    {0x1b, 0x24, 0x4f},
+    {0x2e, 0x3f, 0x7f},
+    {0x4b, 0x63, 0xa6},
+    {0x85, 0x9b, 0xcc},
+    {0xc4, 0xcf, 0xe6},
 }};
 
 constexpr std::array<TraditionalPalette, 4> Traditions{{
@@ -79,12 +82,14 @@ std::vector<Color> familyPalette(Pcg32& rng, int count, Color& paper) {
         pool = randomPalette(rng, &paper);
     }
     // A seeded shuffle, then the order that keeps neighbours apart where the pool allows.
-    for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[rng.below(static_cast<std::uint32_t>(i))]);
+    for (std::size_t i = pool.size(); i > 1; --i)
+        std::swap(pool[i - 1], pool[rng.below(static_cast<std::uint32_t>(i))]);
     std::vector<Color> inks;
     while (!pool.empty() && static_cast<int>(inks.size()) < count) {
         auto next = pool.begin();
         if (!inks.empty()) {
-            next = std::find_if(pool.begin(), pool.end(), [&](Color c) { return colorDistance2(c, inks.back()) >= MinContrast2; });
+            next = std::find_if(pool.begin(), pool.end(),
+                                [&](Color c) { return colorDistance2(c, inks.back()) >= MinContrast2; });
             if (next == pool.end()) next = pool.begin();
         }
         inks.push_back(*next);
@@ -107,7 +112,8 @@ struct Bath {
     int inks() const { return static_cast<int>(g.palette.size()); }
     glm::dvec3 anywhere(double margin = 0.05) {
         glm::dvec3 p;
-        for (int i = 0; i < g.dimension; ++i) p[i] = tenth(ground.uniform(-margin, 1.0 + margin) * g.size[i]);
+        for (int i = 0; i < g.dimension; ++i)
+            p[i] = tenth(ground.uniform(-margin, 1.0 + margin) * g.size[i]);
         if (g.dimension == 2) p.z = 0.0;
         return p;
     }
@@ -138,7 +144,8 @@ struct Bath {
     /// rings j w (j = 1..count) the drop that ends up j-th from the centre has radius
     /// w sqrt(2j - 1): the widest first, the last (innermost) of radius w.
     void rings(const glm::dvec3& at, int count, double width, int a, int b) {
-        for (int j = count; j >= 1; --j) drop(at, width * std::sqrt(2.0 * j - 1.0), (j % 2) ? a : b);
+        for (int j = count; j >= 1; --j)
+            drop(at, width * std::sqrt(2.0 * j - 1.0), (j % 2) ? a : b);
     }
 
     /// A comb drawn across the bath at `angle` (2D), tines `spacing` apart; `offset` shifts the
@@ -151,7 +158,8 @@ struct Bath {
         op.lambda = tenth(lambda);
         // N = (-sin a, cos a): for the four directions of the craft, exact.
         const glm::dvec3 n = normalOf(angle);
-        op.center = {tenth(op.center.x + n.x * spacing * offset), tenth(op.center.y + n.y * spacing * offset), 0.0};
+        op.center = {tenth(op.center.x + n.x * spacing * offset), tenth(op.center.y + n.y * spacing * offset),
+                     0.0};
         g.operations.push_back(op);
     }
 
@@ -189,7 +197,8 @@ struct Bath {
         // Origin at the centre, teeth from one edge to the other along N whatever the angle.
         op.teeth.clear();
         const double reach = 0.75 * std::max(g.size.x, g.size.y);
-        for (double t = -reach; t <= reach; t += spacing * rng.uniform(0.85, 1.15)) op.teeth.push_back(tenth(t));
+        for (double t = -reach; t <= reach; t += spacing * rng.uniform(0.85, 1.15))
+            op.teeth.push_back(tenth(t));
         g.operations.push_back(op);
     }
 
@@ -197,10 +206,14 @@ struct Bath {
         // The four directions of the craft, without sines (exact and the same everywhere).
         const int quarter = static_cast<int>(std::round(angle / 90.0)) & 3;
         switch (quarter) {
-        case 0: return {0.0, 1.0, 0.0};
-        case 1: return {-1.0, 0.0, 0.0};
-        case 2: return {0.0, -1.0, 0.0};
-        default: return {1.0, 0.0, 0.0};
+        case 0:
+            return {0.0, 1.0, 0.0};
+        case 1:
+            return {-1.0, 0.0, 0.0};
+        case 2:
+            return {0.0, -1.0, 0.0};
+        default:
+            return {1.0, 0.0, 0.0};
         }
     }
 
@@ -208,7 +221,8 @@ struct Bath {
     double axis() { return rng.chance(0.5) ? 0.0 : 90.0; }
 
     // 3D
-    void comb3(const glm::dvec3& direction, const glm::dvec3& normal, double spacing, double alpha, double lambda) {
+    void comb3(const glm::dvec3& direction, const glm::dvec3& normal, double spacing, double alpha,
+               double lambda) {
         Operation op = defaultOperation(Tool::Comb, 3, 0.5 * g.size);
         op.direction = direction;
         op.normal = normal;
@@ -253,7 +267,9 @@ glm::dvec3 boxAxis(int index) {
 // ---------------------------------------------------------------------------------------
 // The recipes (docs/families.md says them in the craft's words)
 
-void stone(Bath& b) { b.stone(b.pick(90, 130), b.rng.uniform(0.6, 0.8), b.ground.between(22, 32)); }
+void stone(Bath& b) {
+    b.stone(b.pick(90, 130), b.rng.uniform(0.6, 0.8), b.ground.between(22, 32));
+}
 
 void gelGit(Bath& b) {
     stone(b);
@@ -278,7 +294,9 @@ double nonpareil(Bath& b) {
     return across;
 }
 
-void nonpareilOnly(Bath& b) { nonpareil(b); }
+void nonpareilOnly(Bath& b) {
+    nonpareil(b);
+}
 
 void bouquet(Bath& b) {
     double across = nonpareil(b);
@@ -294,8 +312,10 @@ void peacock(Bath& b) {
 }
 
 void frenchCurl(Bath& b) {
-    if (b.rng.chance(0.5)) nonpareil(b);
-    else gelGit(b);
+    if (b.rng.chance(0.5))
+        nonpareil(b);
+    else
+        gelGit(b);
     // Curls on a grid, each turned the other way from its neighbours, with a clean eye.
     const int n = b.rng.between(3, 5);
     const double step = 1000.0 / n;
@@ -325,7 +345,9 @@ void birdsNest(Bath& b) {
     for (int n = 0; n < nests; ++n) {
         const glm::dvec3 at = b.anywhere(-0.05);
         const int a = static_cast<int>(b.ground.below(static_cast<std::uint32_t>(inks)));
-        const int c = (a + 1 + static_cast<int>(b.ground.below(static_cast<std::uint32_t>(std::max(1, inks - 1))))) % inks;
+        const int c =
+            (a + 1 + static_cast<int>(b.ground.below(static_cast<std::uint32_t>(std::max(1, inks - 1))))) %
+            inks;
         b.rings(at, b.ground.between(3, 5), b.pick(10, 16), a, c);
         centres.emplace_back(at, b.g.initial.size());
     }
@@ -333,9 +355,10 @@ void birdsNest(Bath& b) {
     const std::vector<PreparedOp> ground = prepare(b.g);
     for (auto [at, after] : centres) {
         glm::dvec3 p = at;
-        for (std::size_t k = after; k < ground.size(); ++k) p = forwardMap(ground[k], p);
-        b.vortex({tenth(p.x), tenth(p.y), 0.0}, (b.rng.chance(0.5) ? 1.0 : -1.0) * b.pick(150, 350), b.pick(15, 25),
-                 b.pick(2, 5));
+        for (std::size_t k = after; k < ground.size(); ++k)
+            p = forwardMap(ground[k], p);
+        b.vortex({tenth(p.x), tenth(p.y), 0.0}, (b.rng.chance(0.5) ? 1.0 : -1.0) * b.pick(150, 350),
+                 b.pick(15, 25), b.pick(2, 5));
     }
 }
 
@@ -353,7 +376,8 @@ void tigerEye(Bath& b) {
     // Sprinkled drops that push nothing: the tiger-eye's small bright spots.
     const int spots = b.ground.between(60, 140);
     const int ink = b.inks() - 1;
-    for (int i = 0; i < spots; ++i) b.drop(b.anywhere(0.0), b.ground.uniform(3.0, 11.0), ink, Tool::Spray);
+    for (int i = 0; i < spots; ++i)
+        b.drop(b.anywhere(0.0), b.ground.uniform(3.0, 11.0), ink, Tool::Spray);
 }
 
 void zebra(Bath& b) {
@@ -366,7 +390,8 @@ void zebra(Bath& b) {
     const double cell = b.g.size.x / across;
     for (int i = 0; i < across; ++i)
         for (int j = 0; j < across; ++j) {
-            const glm::dvec3 at{tenth((i + b.ground.uniform(0.3, 0.7)) * cell), tenth((j + b.ground.uniform(0.3, 0.7)) * cell), 0.0};
+            const glm::dvec3 at{tenth((i + b.ground.uniform(0.3, 0.7)) * cell),
+                                tenth((j + b.ground.uniform(0.3, 0.7)) * cell), 0.0};
             const int count = b.ground.between(8, 12);
             const double outer = cell * b.ground.uniform(0.7, 0.8);
             b.rings(at, count, tenth(outer / std::sqrt(2.0 * count - 1.0)), dark, light);
@@ -380,9 +405,9 @@ void firstPaper(Bath& b) {
     // The making shown in the first mathematical marbling paper (Lu et al. 2012, fig. 1).
     stone(b);
     double s = b.pick(70, 110), alpha = b.pick(50, 90), lambda = b.pick(8, 16);
-    b.comb(180.0, s, alpha, lambda);      // right to left
-    b.comb(0.0, s, alpha, lambda, 0.5);   // and back, the teeth in between
-    b.comb(270.0, s, alpha, lambda);      // the same vertically
+    b.comb(180.0, s, alpha, lambda);    // right to left
+    b.comb(0.0, s, alpha, lambda, 0.5); // and back, the teeth in between
+    b.comb(270.0, s, alpha, lambda);    // the same vertically
     b.comb(90.0, s, alpha, lambda, 0.5);
     double fine = b.pick(25, 45);
     b.comb(180.0, fine, 0.6 * alpha, 0.6 * lambda); // two horizontal passes
@@ -425,7 +450,8 @@ void granite(Bath& b) {
     b.stone(b.pick(80, 110), 0.9, b.ground.between(220, 280), 1.0);
     const int specks = b.ground.between(1200, 1800);
     for (int i = 0; i < specks; ++i)
-        b.drop(b.anywhere(0.0), b.ground.uniform(10.0, 25.0), static_cast<int>(b.ground.below(static_cast<std::uint32_t>(b.inks()))), Tool::Spray);
+        b.drop(b.anywhere(0.0), b.ground.uniform(10.0, 25.0),
+               static_cast<int>(b.ground.below(static_cast<std::uint32_t>(b.inks()))), Tool::Spray);
     if (b.rng.chance(0.5)) b.wave3(WaveShape::Eggcrate, b.pick(10, 30), b.pick(300, 600));
 }
 
@@ -456,14 +482,17 @@ constexpr std::array<Recipe, 16> Recipes{{
 
 constexpr std::array<Family, Recipes.size()> familiesOf() {
     std::array<Family, Recipes.size()> out{};
-    for (std::size_t i = 0; i < Recipes.size(); ++i) out[i] = Recipes[i].family;
+    for (std::size_t i = 0; i < Recipes.size(); ++i)
+        out[i] = Recipes[i].family;
     return out;
 }
 constexpr std::array<Family, Recipes.size()> Families = familiesOf();
 
 } // namespace
 
-std::span<const Family> allFamilies() { return Families; }
+std::span<const Family> allFamilies() {
+    return Families;
+}
 
 const Family* findFamily(std::string_view name) {
     for (const Family& f : Families)
@@ -471,7 +500,9 @@ const Family* findFamily(std::string_view name) {
     return nullptr;
 }
 
-std::span<const TraditionalPalette> traditionalPalettes() { return Traditions; }
+std::span<const TraditionalPalette> traditionalPalettes() {
+    return Traditions;
+}
 
 Genome familyGenome(const Family& family, std::uint64_t seed) {
     const Recipe* recipe = nullptr;
@@ -487,7 +518,8 @@ Genome familyGenome(const Family& family, std::uint64_t seed) {
     Bath bath{ground, strokes, g};
     recipe->make(bath);
     // Stay within the format's limits whatever the draw.
-    if (g.initial.size() + g.operations.size() > MaxEntries) g.initial.resize(MaxEntries - g.operations.size());
+    if (g.initial.size() + g.operations.size() > MaxEntries)
+        g.initial.resize(MaxEntries - g.operations.size());
     g.meta = nlohmann::ordered_json::object();
     g.meta["name"] = randomName(seed, g);
     g.meta["seed"] = seed;

@@ -24,7 +24,6 @@ constexpr std::uint64_t Version2Stream = 0x76657273696f6e32ULL;
 constexpr double Pi = 3.141592653589793;
 constexpr double SqrtHalf = 0.7071067811865476;
 
-
 /// Cube root by Newton's method on the mantissa: std::cbrt is not required to be correctly
 /// rounded, and the generator's output must not depend on the C library.
 double cubeRoot(double x) {
@@ -32,7 +31,7 @@ double cubeRoot(double x) {
     int e = 0;
     double m = std::frexp(x, &e); // x = m 2^e, m in [0.5, 1)
     int shift = ((e % 3) + 3) % 3;
-    m = std::ldexp(m, shift);     // m in [0.5, 8)
+    m = std::ldexp(m, shift); // m in [0.5, 8)
     e -= shift;
     double y = 1.0;
     for (int i = 0; i < 40; ++i) {
@@ -46,7 +45,8 @@ double cubeRoot(double x) {
 /// A uniformly distributed unit vector, by rejection from the cube (no trigonometry).
 glm::dvec3 randomUnit(Pcg32& rng, int dimension) {
     for (;;) {
-        glm::dvec3 v(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), dimension == 3 ? rng.uniform(-1.0, 1.0) : 0.0);
+        glm::dvec3 v(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0),
+                     dimension == 3 ? rng.uniform(-1.0, 1.0) : 0.0);
         double len2 = glm::dot(v, v);
         if (len2 > 0.01 && len2 <= 1.0) return v / std::sqrt(len2);
     }
@@ -56,7 +56,9 @@ glm::dvec3 randomUnit(Pcg32& rng, int dimension) {
 // Palette
 
 /// Perceived brightness of gamma-encoded sRGB (Rec. 601 luma): good enough to judge contrast.
-double luma(Color c) { return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0; }
+double luma(Color c) {
+    return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0;
+}
 
 double distance2(Color a, Color b) {
     double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
@@ -79,7 +81,8 @@ glm::dvec3 pushBy(const glm::dvec3& p, const glm::dvec3& c, double r, int dimens
     glm::dvec3 rel = p - c;
     double len2 = glm::dot(rel, rel);
     if (!(len2 > 0.0)) return p;
-    double factor = dimension == 3 ? cubeRoot(1.0 + r * r * r / (len2 * std::sqrt(len2))) : std::sqrt(1.0 + r * r / len2);
+    double factor =
+        dimension == 3 ? cubeRoot(1.0 + r * r * r / (len2 * std::sqrt(len2))) : std::sqrt(1.0 + r * r / len2);
     return c + rel * factor;
 }
 
@@ -91,7 +94,8 @@ bool insideBox(const glm::dvec3& p, const glm::dvec3& size, int dimension) {
 
 glm::dvec3 uniformPoint(Pcg32& rng, const glm::dvec3& size, int dimension, double lo = 0.0, double hi = 1.0) {
     glm::dvec3 p(0.0);
-    for (int i = 0; i < dimension; ++i) p[i] = size[i] * rng.uniform(lo, hi);
+    for (int i = 0; i < dimension; ++i)
+        p[i] = size[i] * rng.uniform(lo, hi);
     return p;
 }
 
@@ -99,7 +103,8 @@ glm::dvec3 uniformPoint(Pcg32& rng, const glm::dvec3& size, int dimension, doubl
 /// overlaps one).
 double clearance(const std::vector<Blob>& blobs, const glm::dvec3& p, double r) {
     double best = std::numeric_limits<double>::max();
-    for (const Blob& b : blobs) best = std::min(best, glm::length(p - b.center) - b.radius - r);
+    for (const Blob& b : blobs)
+        best = std::min(best, glm::length(p - b.center) - b.radius - r);
     return best;
 }
 
@@ -125,7 +130,8 @@ Operation inkOp(Tool tool, const glm::dvec3& center, double radius, int color, i
 }
 
 glm::dvec3 tidy(glm::dvec3 p, int dimension) {
-    for (int i = 0; i < 3; ++i) p[i] = i < dimension ? tenth(p[i]) : 0.0;
+    for (int i = 0; i < 3; ++i)
+        p[i] = i < dimension ? tenth(p[i]) : 0.0;
     return p;
 }
 
@@ -138,8 +144,14 @@ struct Compass {
     double mx, my;
 };
 constexpr std::array<Compass, 8> Compass8{{
-    {0, 1, 0}, {45, SqrtHalf, SqrtHalf}, {90, 0, 1}, {135, -SqrtHalf, SqrtHalf},
-    {180, -1, 0}, {225, -SqrtHalf, -SqrtHalf}, {270, 0, -1}, {315, SqrtHalf, -SqrtHalf},
+    {0, 1, 0},
+    {45, SqrtHalf, SqrtHalf},
+    {90, 0, 1},
+    {135, -SqrtHalf, SqrtHalf},
+    {180, -1, 0},
+    {225, -SqrtHalf, -SqrtHalf},
+    {270, 0, -1},
+    {315, SqrtHalf, -SqrtHalf},
 }};
 
 /// Mostly along the bath's sides, as marblers comb; sometimes on a diagonal.
@@ -156,7 +168,9 @@ struct StrokeMaker {
 
     double len(double lo, double hi) { return tenth(side * rng.uniform(lo, hi) / 1000.0); }
     double signedLen(double lo, double hi) { return rng.chance(0.5) ? len(lo, hi) : -len(lo, hi); }
-    glm::dvec3 centreish(double spread) { return tidy(uniformPoint(rng, size, dimension, 0.5 - spread, 0.5 + spread), dimension); }
+    glm::dvec3 centreish(double spread) {
+        return tidy(uniformPoint(rng, size, dimension, 0.5 - spread, 0.5 + spread), dimension);
+    }
 
     /// A random orthonormal pair (motion, normal): often along the box's axes.
     std::pair<glm::dvec3, glm::dvec3> frame() {
@@ -212,9 +226,11 @@ struct StrokeMaker {
     }
 
     void wave() {
-        Operation op = defaultOperation(Tool::Wave, dimension, tidy(uniformPoint(rng, size, dimension), dimension));
+        Operation op =
+            defaultOperation(Tool::Wave, dimension, tidy(uniformPoint(rng, size, dimension), dimension));
         if (dimension == 2) {
-            op.angle = Compass8[static_cast<std::size_t>(compassIndex(rng))].angle + std::round(rng.uniform(-8.0, 8.0));
+            op.angle = Compass8[static_cast<std::size_t>(compassIndex(rng))].angle +
+                       std::round(rng.uniform(-8.0, 8.0));
             op.amplitude = {len(15, 80), 0.0};
             op.wavelength = {len(140, 500), 1.0};
             op.phase = {std::round(rng.uniform(0.0, 360.0)), 0.0};
@@ -286,25 +302,25 @@ struct ColorWord {
     Color color;
 };
 constexpr std::array<ColorWord, 36> ColorWords{{
-    {"Carmine", {150, 0, 24}},     {"Crimson", {196, 30, 58}},    {"Cinnabar", {227, 66, 52}},
-    {"Coral", {240, 128, 110}},    {"Rose", {215, 120, 150}},     {"Madder", {165, 40, 70}},
-    {"Russet", {128, 70, 27}},     {"Umber", {99, 81, 71}},       {"Sepia", {112, 66, 20}},
-    {"Ochre", {204, 119, 34}},     {"Amber", {230, 150, 20}},     {"Saffron", {244, 196, 48}},
-    {"Sand", {214, 190, 150}},     {"Ivory", {240, 234, 214}},    {"Olive", {128, 128, 0}},
-    {"Moss", {100, 130, 60}},      {"Sage", {150, 175, 130}},     {"Jade", {0, 168, 107}},
-    {"Malachite", {20, 110, 60}},  {"Verdigris", {67, 179, 174}}, {"Teal", {0, 128, 128}},
-    {"Azure", {40, 130, 220}},     {"Cobalt", {0, 71, 171}},      {"Lapis", {38, 97, 156}},
-    {"Indigo", {55, 45, 125}},     {"Violet", {130, 80, 180}},    {"Plum", {120, 50, 100}},
-    {"Lilac", {190, 160, 210}},    {"Slate", {112, 128, 144}},    {"Charcoal", {54, 62, 70}},
-    {"Pearl", {212, 212, 205}},    {"Ebony", {30, 28, 26}},       {"Emerald", {50, 190, 70}},
-    {"Chartreuse", {150, 215, 40}}, {"Prussian", {0, 49, 83}},    {"Spruce", {35, 88, 82}},
+    {"Carmine", {150, 0, 24}},      {"Crimson", {196, 30, 58}},    {"Cinnabar", {227, 66, 52}},
+    {"Coral", {240, 128, 110}},     {"Rose", {215, 120, 150}},     {"Madder", {165, 40, 70}},
+    {"Russet", {128, 70, 27}},      {"Umber", {99, 81, 71}},       {"Sepia", {112, 66, 20}},
+    {"Ochre", {204, 119, 34}},      {"Amber", {230, 150, 20}},     {"Saffron", {244, 196, 48}},
+    {"Sand", {214, 190, 150}},      {"Ivory", {240, 234, 214}},    {"Olive", {128, 128, 0}},
+    {"Moss", {100, 130, 60}},       {"Sage", {150, 175, 130}},     {"Jade", {0, 168, 107}},
+    {"Malachite", {20, 110, 60}},   {"Verdigris", {67, 179, 174}}, {"Teal", {0, 128, 128}},
+    {"Azure", {40, 130, 220}},      {"Cobalt", {0, 71, 171}},      {"Lapis", {38, 97, 156}},
+    {"Indigo", {55, 45, 125}},      {"Violet", {130, 80, 180}},    {"Plum", {120, 50, 100}},
+    {"Lilac", {190, 160, 210}},     {"Slate", {112, 128, 144}},    {"Charcoal", {54, 62, 70}},
+    {"Pearl", {212, 212, 205}},     {"Ebony", {30, 28, 26}},       {"Emerald", {50, 190, 70}},
+    {"Chartreuse", {150, 215, 40}}, {"Prussian", {0, 49, 83}},     {"Spruce", {35, 88, 82}},
 }};
 
 constexpr std::array<const char*, 32> Nouns{
-    "Tide", "Stone", "Quarry", "Feather", "Peacock", "Bouquet", "Nonpareil", "Chevron",
-    "Lagoon", "Ember", "Tapestry", "Current", "Agate", "Marble", "Ripple", "Whorl",
-    "Delta", "Orchard", "Harbour", "Flame", "Fern", "Shell", "Meadow", "Dune",
-    "Veil", "Spiral", "Lattice", "Estuary", "Garden", "Mosaic", "Cloud", "Wake",
+    "Tide",   "Stone",   "Quarry",   "Feather", "Peacock", "Bouquet", "Nonpareil", "Chevron",
+    "Lagoon", "Ember",   "Tapestry", "Current", "Agate",   "Marble",  "Ripple",    "Whorl",
+    "Delta",  "Orchard", "Harbour",  "Flame",   "Fern",    "Shell",   "Meadow",    "Dune",
+    "Veil",   "Spiral",  "Lattice",  "Estuary", "Garden",  "Mosaic",  "Cloud",     "Wake",
 };
 
 /// The stretch passes of a procedural marbled paper: one to three passes across the whole
@@ -325,7 +341,8 @@ void stretchPasses(StrokeMaker& make, std::vector<Operation>& out) {
         const double across = nx != 0.0 ? w : h;
         const double spacing = make.len(40, 160);
         op.teeth = {0.0};
-        while (op.teeth.back() < across) op.teeth.push_back(tenth(op.teeth.back() + spacing * rng.uniform(0.7, 1.3)));
+        while (op.teeth.back() < across)
+            op.teeth.push_back(tenth(op.teeth.back() + spacing * rng.uniform(0.7, 1.3)));
         op.shift = make.signedLen(20, 90);
         op.power = tenth(rng.uniform(0.3, 2.0));
         out.push_back(op);
@@ -402,7 +419,8 @@ int mainInk(const Genome& genome) {
     // share of each ink is what the eye sees most of.
     std::vector<double> share(genome.palette.size(), 0.0);
     for (const Operation& op : genome.initial) {
-        if (!toolSpec(op.tool).laysInk || op.color < 0 || op.color >= static_cast<int>(share.size())) continue;
+        if (!toolSpec(op.tool).laysInk || op.color < 0 || op.color >= static_cast<int>(share.size()))
+            continue;
         double r = std::max(op.radius, 1.0);
         share[static_cast<std::size_t>(op.color)] += genome.dimension == 3 ? r * r * r : r * r;
     }
@@ -428,10 +446,18 @@ std::vector<Color> randomPalette(Pcg32& rng, Color* background) {
         offsets = {0.0, step, -step, 2.0 * step, -2.0 * step, 0.5 * step};
         break;
     }
-    case 1: offsets = {0.0, 180.0, 20.0, 200.0, -20.0, 160.0}; break;  // complementary
-    case 2: offsets = {0.0, 150.0, 210.0, 15.0, 165.0, 195.0}; break;  // split-complementary
-    case 3: offsets = {0.0, 120.0, 240.0, 15.0, 135.0, 255.0}; break;  // triadic
-    default: offsets = {0.0, 0.0, 180.0, 10.0, -10.0, 0.0}; break;     // monochrome with an accent
+    case 1:
+        offsets = {0.0, 180.0, 20.0, 200.0, -20.0, 160.0};
+        break; // complementary
+    case 2:
+        offsets = {0.0, 150.0, 210.0, 15.0, 165.0, 195.0};
+        break; // split-complementary
+    case 3:
+        offsets = {0.0, 120.0, 240.0, 15.0, 135.0, 255.0};
+        break; // triadic
+    default:
+        offsets = {0.0, 0.0, 180.0, 10.0, -10.0, 0.0};
+        break; // monochrome with an accent
     }
     bool dark = rng.chance(0.3);
     double mood = rng.uniform(0.3, 0.72); // muted or vivid, for the whole palette
@@ -443,25 +469,31 @@ std::vector<Color> randomPalette(Pcg32& rng, Color* background) {
     } else if (rng.chance(0.6)) {
         bg = {rng.uniform(30.0, 50.0), rng.uniform(0.25, 0.55), rng.uniform(0.86, 0.93)}; // paper and cream
     } else {
-        bg = {wrapHue(base + 180.0 + rng.uniform(-20.0, 20.0)), rng.uniform(0.15, 0.4), rng.uniform(0.84, 0.92)};
+        bg = {wrapHue(base + 180.0 + rng.uniform(-20.0, 20.0)), rng.uniform(0.15, 0.4),
+              rng.uniform(0.84, 0.92)};
     }
     Color bgColor = colorFromHsl(bg);
 
     // Lightness spread evenly over the inks, then shuffled, so the stones differ in value too.
     std::vector<double> lightness(static_cast<std::size_t>(count));
-    for (int i = 0; i < count; ++i) lightness[static_cast<std::size_t>(i)] = lo + (hi - lo) * (i + rng.uniform(0.2, 0.8)) / count;
-    for (int i = count - 1; i > 0; --i) std::swap(lightness[static_cast<std::size_t>(i)], lightness[rng.below(static_cast<std::uint32_t>(i + 1))]);
+    for (int i = 0; i < count; ++i)
+        lightness[static_cast<std::size_t>(i)] = lo + (hi - lo) * (i + rng.uniform(0.2, 0.8)) / count;
+    for (int i = count - 1; i > 0; --i)
+        std::swap(lightness[static_cast<std::size_t>(i)],
+                  lightness[rng.below(static_cast<std::uint32_t>(i + 1))]);
 
     std::vector<Color> palette;
     for (int i = 0; i < count; ++i) {
         Hsl ink{wrapHue(base + offsets[static_cast<std::size_t>(i)] + rng.uniform(-8.0, 8.0)),
-                std::clamp(mood + rng.uniform(-0.15, 0.15), 0.2, 0.95), lightness[static_cast<std::size_t>(i)]};
+                std::clamp(mood + rng.uniform(-0.15, 0.15), 0.2, 0.95),
+                lightness[static_cast<std::size_t>(i)]};
         Color c = colorFromHsl(ink);
         // Keep every ink visible on the bath and apart from the inks before it.
         for (int attempt = 0; attempt < 8; ++attempt) {
             bool tooCloseToBath = std::abs(luma(c) - luma(bgColor)) < 0.2;
             bool tooCloseToInk = false;
-            for (Color other : palette) tooCloseToInk = tooCloseToInk || distance2(c, other) < 45.0 * 45.0;
+            for (Color other : palette)
+                tooCloseToInk = tooCloseToInk || distance2(c, other) < 45.0 * 45.0;
             if (!tooCloseToBath && !tooCloseToInk) break;
             ink.l = dark ? std::min(0.85, ink.l + 0.07) : std::max(0.15, ink.l - 0.07);
             if (tooCloseToInk) ink.h = wrapHue(ink.h + 25.0);
@@ -491,7 +523,8 @@ std::vector<Operation> randomInitial(Pcg32& rng, int dimension, const glm::dvec3
         sum += solid ? w * w * w : w * w;
     }
     const double coverage = solid ? rng.uniform(1.9, 2.5) : rng.uniform(2.0, 2.6);
-    const double scale = solid ? cubeRoot(coverage * space / (4.0 / 3.0 * Pi * sum)) : std::sqrt(coverage * space / (Pi * sum));
+    const double scale = solid ? cubeRoot(coverage * space / (4.0 / 3.0 * Pi * sum))
+                               : std::sqrt(coverage * space / (Pi * sum));
 
     std::vector<Blob> blobs;
     std::vector<Operation> ops;
@@ -505,7 +538,8 @@ std::vector<Operation> randomInitial(Pcg32& rng, int dimension, const glm::dvec3
             center = uniformPoint(rng, size, dimension, 0.3, 0.7);
         } else if (kind < 0.14) {
             // Bull's-eye: into a recent drop, which becomes a ring round the new one.
-            std::size_t j = blobs.size() - 1 - rng.below(static_cast<std::uint32_t>(std::min<std::size_t>(blobs.size(), 6)));
+            std::size_t j = blobs.size() - 1 -
+                            rng.below(static_cast<std::uint32_t>(std::min<std::size_t>(blobs.size(), 6)));
             const Blob& host = blobs[j];
             r = std::min(r, host.radius * rng.uniform(0.4, 0.8));
             center = host.center + randomUnit(rng, dimension) * (host.radius * rng.uniform(0.0, 0.12));
@@ -519,9 +553,12 @@ std::vector<Operation> randomInitial(Pcg32& rng, int dimension, const glm::dvec3
                 glm::dvec3 candidate;
                 int candidateAvoid = -1;
                 if (touching) {
-                    std::size_t j = rng.chance(0.5) ? blobs.size() - 1 - rng.below(static_cast<std::uint32_t>(std::min<std::size_t>(blobs.size(), 8)))
+                    std::size_t j = rng.chance(0.5) ? blobs.size() - 1 -
+                                                          rng.below(static_cast<std::uint32_t>(
+                                                              std::min<std::size_t>(blobs.size(), 8)))
                                                     : rng.below(static_cast<std::uint32_t>(blobs.size()));
-                    candidate = blobs[j].center + randomUnit(rng, dimension) * ((blobs[j].radius + r) * rng.uniform(0.9, 1.0));
+                    candidate = blobs[j].center +
+                                randomUnit(rng, dimension) * ((blobs[j].radius + r) * rng.uniform(0.9, 1.0));
                     candidateAvoid = blobs[j].color;
                     if (!insideBox(candidate, size, dimension)) continue;
                 } else {
@@ -540,7 +577,8 @@ std::vector<Operation> randomInitial(Pcg32& rng, int dimension, const glm::dvec3
         r = std::max(0.1, tenth(r));
         int color = pickColor(rng, paletteSize, avoid, lastColor);
         lastColor = color;
-        for (Blob& b : blobs) b.center = pushBy(b.center, center, r, dimension);
+        for (Blob& b : blobs)
+            b.center = pushBy(b.center, center, r, dimension);
         blobs.push_back({center, r, color});
         ops.push_back(inkOp(Tool::Drop, center, r, color, dimension));
     }
@@ -549,9 +587,10 @@ std::vector<Operation> randomInitial(Pcg32& rng, int dimension, const glm::dvec3
         // Ink columns run through the stones like veins through a block.
         int columns = rng.between(1, 5);
         for (int i = 0; i < columns; ++i) {
-            Operation op = inkOp(Tool::Cylinder, tidy(uniformPoint(rng, size, dimension, 0.1, 0.9), dimension),
-                                 tenth(side * rng.uniform(0.02, 0.06)),
-                                 static_cast<int>(rng.below(static_cast<std::uint32_t>(paletteSize))), dimension);
+            Operation op =
+                inkOp(Tool::Cylinder, tidy(uniformPoint(rng, size, dimension, 0.1, 0.9), dimension),
+                      tenth(side * rng.uniform(0.02, 0.06)),
+                      static_cast<int>(rng.below(static_cast<std::uint32_t>(paletteSize))), dimension);
             if (rng.chance(0.7)) {
                 op.axis = glm::dvec3(0.0);
                 op.axis[rng.below(3)] = 1.0;
@@ -595,18 +634,21 @@ std::vector<Operation> randomStrokes(Pcg32& rng, int dimension, const glm::dvec3
         break;
     case 3: { // swirled
         int circles = rng.between(1, 3);
-        for (int i = 0; i < circles; ++i) make.swirl(Tool::Circle);
+        for (int i = 0; i < circles; ++i)
+            make.swirl(Tool::Circle);
         if (rng.chance(0.5)) make.vortex(rng.chance(0.5) ? 1.0 : -1.0);
         break;
     }
     case 4: { // vortices, turning alternately
         int count = rng.between(2, 4);
         double sign = rng.chance(0.5) ? 1.0 : -1.0;
-        for (int i = 0; i < count; ++i, sign = -sign) make.vortex(sign);
+        for (int i = 0; i < count; ++i, sign = -sign)
+            make.vortex(sign);
         break;
     }
     case 5: // a stone pattern touched by a few single strokes
-        for (int i = rng.between(1, 3); i > 0; --i) make.line();
+        for (int i = rng.between(1, 3); i > 0; --i)
+            make.line();
         if (rng.chance(0.5)) make.wave();
         break;
     default: // solid only: the sphere stroke of solid marbling
@@ -627,7 +669,8 @@ std::vector<Operation> randomStrokes(Pcg32& rng, int dimension, const glm::dvec3
 }
 
 Genome randomGenome(std::uint64_t seed, int dimension) {
-    if (dimension != 2 && dimension != 3) throw InputError("dimension must be 2 or 3 (got " + std::to_string(dimension) + ")");
+    if (dimension != 2 && dimension != 3)
+        throw InputError("dimension must be 2 or 3 (got " + std::to_string(dimension) + ")");
     Genome g;
     g.dimension = dimension;
     g.size = {1000.0, 1000.0, 1000.0};
@@ -647,6 +690,5 @@ Genome randomGenome(std::uint64_t seed, int dimension) {
     g.meta["generator"] = GeneratorVersion;
     return g;
 }
-
 
 } // namespace marbler

@@ -48,11 +48,16 @@ std::string formatNumber(double value) {
 std::string describe(const Json& value) {
     std::string text;
     switch (value.type()) {
-    case Json::value_t::object: return "an object";
-    case Json::value_t::array: return "an array of " + std::to_string(value.size());
-    case Json::value_t::null: return "null";
-    case Json::value_t::number_float: return formatNumber(value.get<double>());
-    default: text = value.dump(-1, ' ', true, Json::error_handler_t::replace);
+    case Json::value_t::object:
+        return "an object";
+    case Json::value_t::array:
+        return "an array of " + std::to_string(value.size());
+    case Json::value_t::null:
+        return "null";
+    case Json::value_t::number_float:
+        return formatNumber(value.get<double>());
+    default:
+        text = value.dump(-1, ' ', true, Json::error_handler_t::replace);
     }
     if (text.size() > 40) text = text.substr(0, 37) + "...";
     return text;
@@ -81,9 +86,13 @@ glm::dvec3 unitVector(const glm::dvec3& v) {
     return scaled / glm::length(scaled);
 }
 
-bool isZero(const glm::dvec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
+bool isZero(const glm::dvec3& v) {
+    return v.x == 0.0 && v.y == 0.0 && v.z == 0.0;
+}
 
-bool nearlyUnit(const glm::dvec3& v) { return std::abs(glm::dot(v, v) - 1.0) <= UnitTolerance; }
+bool nearlyUnit(const glm::dvec3& v) {
+    return std::abs(glm::dot(v, v) - 1.0) <= UnitTolerance;
+}
 
 /// Whether two non-zero vectors are parallel (or anti-parallel) to within ParallelSine.
 bool parallel(const glm::dvec3& a, const glm::dvec3& b) {
@@ -100,25 +109,30 @@ const ParamSpec* findParam(std::span<const ParamSpec> params, ParamField field) 
 /// Walks a free-form value (meta), its recursion bounded by MaxDepth: refuses deeper nesting
 /// and non-finite numbers, which JSON cannot write back.
 void checkFreeForm(const Json& value, const std::string& where, const std::string& name, int depth) {
-    if (depth > MaxDepth) throw GenomeError(name, where, "nested deeper than " + std::to_string(MaxDepth) + " levels");
+    if (depth > MaxDepth)
+        throw GenomeError(name, where, "nested deeper than " + std::to_string(MaxDepth) + " levels");
     if (value.is_number_float() && !std::isfinite(value.get<double>()))
         throw GenomeError(name, where, "must be finite (got " + describe(value) + ")");
     if (value.is_object()) {
-        for (auto it = value.begin(); it != value.end(); ++it) checkFreeForm(*it, member(where, it.key()), name, depth + 1);
+        for (auto it = value.begin(); it != value.end(); ++it)
+            checkFreeForm(*it, member(where, it.key()), name, depth + 1);
     } else if (value.is_array()) {
-        for (std::size_t i = 0; i < value.size(); ++i) checkFreeForm(value[i], indexed(where, i), name, depth + 1);
+        for (std::size_t i = 0; i < value.size(); ++i)
+            checkFreeForm(value[i], indexed(where, i), name, depth + 1);
     }
 }
 
 /// The value rules of one entry (finite, positive, palette index, non-zero and non-parallel
 /// directions). Shared by the loader and validateGenome so both say the same thing.
-void checkOperation(const Operation& op, int dimension, int paletteSize, bool inInitial, const std::string& where,
-                    const std::string& name) {
-    if (static_cast<int>(op.tool) >= ToolCount) throw GenomeError(name, member(where, "tool"), "unknown tool");
+void checkOperation(const Operation& op, int dimension, int paletteSize, bool inInitial,
+                    const std::string& where, const std::string& name) {
+    if (static_cast<int>(op.tool) >= ToolCount)
+        throw GenomeError(name, member(where, "tool"), "unknown tool");
     const ToolSpec& tool = toolSpec(op.tool);
     if (!tool.available(dimension))
         throw GenomeError(name, member(where, "tool"),
-                          "\"" + std::string(tool.name) + "\" is not available in " + std::to_string(dimension) + "D");
+                          "\"" + std::string(tool.name) + "\" is not available in " +
+                              std::to_string(dimension) + "D");
     if (inInitial && !allowedInInitial(op.tool, dimension))
         throw GenomeError(name, member(where, "tool"),
                           "\"" + std::string(tool.name) + "\" is not allowed in initial (only " +
@@ -133,33 +147,38 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
         }
         if (spec.kind == ParamKind::Teeth) {
             if (op.teeth.size() < 2 || op.teeth.size() > MaxTeeth)
-                throw GenomeError(name, key, "must hold 2 to " + std::to_string(MaxTeeth) + " numbers (got " +
-                                                 std::to_string(op.teeth.size()) + ")");
+                throw GenomeError(name, key,
+                                  "must hold 2 to " + std::to_string(MaxTeeth) + " numbers (got " +
+                                      std::to_string(op.teeth.size()) + ")");
             for (std::size_t i = 0; i < op.teeth.size(); ++i) {
                 double value = op.teeth[i];
                 if (!std::isfinite(value))
-                    throw GenomeError(name, indexed(key, i), "must be finite (got " + formatNumber(value) + ")");
+                    throw GenomeError(name, indexed(key, i),
+                                      "must be finite (got " + formatNumber(value) + ")");
                 if (i > 0 && !(value > op.teeth[i - 1]))
-                    throw GenomeError(name, indexed(key, i), "must be greater than the tooth before it (" +
-                                                                 formatNumber(op.teeth[i - 1]) + "; got " +
-                                                                 formatNumber(value) + ")");
+                    throw GenomeError(name, indexed(key, i),
+                                      "must be greater than the tooth before it (" +
+                                          formatNumber(op.teeth[i - 1]) + "; got " + formatNumber(value) +
+                                          ")");
             }
             continue;
         }
         if (spec.kind == ParamKind::Color) {
             if (op.color < 0 || op.color >= paletteSize)
                 throw GenomeError(name, key,
-                                  "must be an index into the palette, 0 to " + std::to_string(paletteSize - 1) +
-                                      " (got " + std::to_string(op.color) + ")");
+                                  "must be an index into the palette, 0 to " +
+                                      std::to_string(paletteSize - 1) + " (got " + std::to_string(op.color) +
+                                      ")");
             continue;
         }
         int count = componentCount(spec, op, dimension);
-        bool many = spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction
-                 || spec.kind == ParamKind::Extent || (spec.pair && count == 2);
+        bool many = spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction ||
+                    spec.kind == ParamKind::Extent || (spec.pair && count == 2);
         for (int i = 0; i < count; ++i) {
             double value = getComponent(spec, op, i);
             std::string at = many ? indexed(key, static_cast<std::size_t>(i)) : key;
-            if (!std::isfinite(value)) throw GenomeError(name, at, "must be finite (got " + formatNumber(value) + ")");
+            if (!std::isfinite(value))
+                throw GenomeError(name, at, "must be finite (got " + formatNumber(value) + ")");
             if (!spec.range.contains(value))
                 throw GenomeError(name, at, spec.range.describe() + " (got " + formatNumber(value) + ")");
         }
@@ -168,17 +187,18 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
             if (isZero(v)) throw GenomeError(name, key, "must be non-zero");
         }
     }
-    if (dimension == 3 && findParam(params, ParamField::Direction) && findParam(params, ParamField::Normal)
-        && parallel(op.direction, op.normal))
+    if (dimension == 3 && findParam(params, ParamField::Direction) && findParam(params, ParamField::Normal) &&
+        parallel(op.direction, op.normal))
         throw GenomeError(name, member(where, "normal"), "must not be parallel to direction");
     if (findParam(params, ParamField::Steps) && op.steps < minimumFlowSteps(op)) {
         int needed = minimumFlowSteps(op);
-        throw GenomeError(name, member(where, "steps"),
-                          needed > MaxFlowSteps
-                              ? "cannot be enough: this speed, time and size need more than " +
-                                    std::to_string(MaxFlowSteps) + " steps (got " + std::to_string(op.steps) + ")"
-                              : "must be at least 32 |speed| time max(size) / min(size)^2 = " +
-                                    std::to_string(needed) + " (got " + std::to_string(op.steps) + ")");
+        throw GenomeError(
+            name, member(where, "steps"),
+            needed > MaxFlowSteps
+                ? "cannot be enough: this speed, time and size need more than " +
+                      std::to_string(MaxFlowSteps) + " steps (got " + std::to_string(op.steps) + ")"
+                : "must be at least 32 |speed| time max(size) / min(size)^2 = " + std::to_string(needed) +
+                      " (got " + std::to_string(op.steps) + ")");
     }
 }
 
@@ -196,7 +216,8 @@ void normalise(Operation& op, int dimension) {
     // Gram-Schmidt twice: once leaves a residue of rounding error over the sine of the angle
     // between the two, which a nearly parallel pair turns into a visibly skewed normal.
     glm::dvec3 n = unitVector(op.normal);
-    for (int pass = 0; pass < 2; ++pass) n = unitVector(n - glm::dot(n, op.direction) * op.direction);
+    for (int pass = 0; pass < 2; ++pass)
+        n = unitVector(n - glm::dot(n, op.direction) * op.direction);
     op.normal = n;
 }
 
@@ -204,7 +225,9 @@ void normalise(Operation& op, int dimension) {
 /// validateGenome.
 class Reader {
 public:
-    Reader(const std::string& name, std::vector<std::string>* warnings) : mName(name), mWarnings(warnings) {}
+    Reader(const std::string& name, std::vector<std::string>* warnings)
+        : mName(name)
+        , mWarnings(warnings) {}
 
     Genome read(const Json& root) {
         if (!root.is_object()) fail("", "must be a JSON object (got " + describe(root) + ")");
@@ -222,13 +245,15 @@ public:
                                    std::to_string(initial.size() + operations.size()) + ")");
         genome.initial.reserve(initial.size());
         for (std::size_t i = 0; i < initial.size(); ++i)
-            genome.initial.push_back(readOperation(initial[i], indexed("initial", i), genome.dimension, genome.palette.size(), true));
+            genome.initial.push_back(readOperation(initial[i], indexed("initial", i), genome.dimension,
+                                                   genome.palette.size(), true));
         genome.operations.reserve(operations.size());
         for (std::size_t i = 0; i < operations.size(); ++i)
-            genome.operations.push_back(
-                readOperation(operations[i], indexed("operations", i), genome.dimension, genome.palette.size(), false));
+            genome.operations.push_back(readOperation(operations[i], indexed("operations", i),
+                                                      genome.dimension, genome.palette.size(), false));
 
-        if (auto it = root.find("source"); it != root.end()) genome.source = readSource(*it, genome.dimension);
+        if (auto it = root.find("source"); it != root.end())
+            genome.source = readSource(*it, genome.dimension);
         if (auto it = root.find("bleed"); it != root.end()) {
             needVersion2("bleed");
             genome.bleed = readNumber(*it, "bleed");
@@ -237,8 +262,9 @@ public:
             if (!it->is_object()) fail("meta", "must be an object (got " + describe(*it) + ")");
             genome.meta = *it;
         }
-        static constexpr std::array Known{"format", "version", "dimension", "size", "background", "palette",
-                                          "initial", "operations", "source", "bleed", "meta"};
+        static constexpr std::array Known{"format",     "version", "dimension", "size",
+                                          "background", "palette", "initial",   "operations",
+                                          "source",     "bleed",   "meta"};
         for (auto it = root.begin(); it != root.end(); ++it)
             if (std::find(Known.begin(), Known.end(), it.key()) == Known.end()) warnUnknown("", it.key());
         return genome;
@@ -253,15 +279,17 @@ private:
     /// (which would ignore it) and a newer one never disagree about one file.
     void needVersion2(const std::string& where, const std::string& what = "") const {
         if (mVersion >= 2) return;
-        fail(where, (what.empty() ? std::string() : what + " ") + "needs format version 2 (the file says version " +
-                        std::to_string(mVersion) + ")");
+        fail(where, (what.empty() ? std::string() : what + " ") +
+                        "needs format version 2 (the file says version " + std::to_string(mVersion) + ")");
     }
 
     void warnUnknown(const std::string& where, const std::string& key) {
         if (!mWarnings) return;
         std::string clean;
-        for (char ch : key) clean += static_cast<unsigned char>(ch) < 0x20 ? '?' : ch;
-        mWarnings->push_back(mName + ": " + (where.empty() ? "" : where + ": ") + "unknown key \"" + clean + "\" ignored");
+        for (char ch : key)
+            clean += static_cast<unsigned char>(ch) < 0x20 ? '?' : ch;
+        mWarnings->push_back(mName + ": " + (where.empty() ? "" : where + ": ") + "unknown key \"" + clean +
+                             "\" ignored");
     }
 
     const Json& require(const Json& object, const std::string& where, std::string_view key) const {
@@ -285,7 +313,8 @@ private:
 
     void readHeader(const Json& root, Genome& genome) {
         const Json& format = require(root, "", "format");
-        if (format != "marbler-genome") fail("format", "must be \"marbler-genome\" (got " + describe(format) + ")");
+        if (format != "marbler-genome")
+            fail("format", "must be \"marbler-genome\" (got " + describe(format) + ")");
 
         const Json& version = require(root, "", "version");
         if (!integral(version)) fail("version", "must be an integer (got " + describe(version) + ")");
@@ -293,7 +322,9 @@ private:
         if (v > FormatVersion)
             fail("version", "made by a newer version of Marbler (format version " + describe(version) +
                                 "; this one reads version " + std::to_string(FormatVersion) + ")");
-        if (v < 1) fail("version", "must be 1 or " + std::to_string(FormatVersion) + " (got " + describe(version) + ")");
+        if (v < 1)
+            fail("version",
+                 "must be 1 or " + std::to_string(FormatVersion) + " (got " + describe(version) + ")");
         mVersion = static_cast<int>(v);
 
         const Json& dimension = require(root, "", "dimension");
@@ -303,9 +334,11 @@ private:
 
         const Json& size = require(root, "", "size");
         if (!size.is_array() || size.size() != static_cast<std::size_t>(genome.dimension))
-            fail("size", "must be an array of " + std::to_string(genome.dimension) + " numbers (got " + describe(size) + ")");
+            fail("size", "must be an array of " + std::to_string(genome.dimension) + " numbers (got " +
+                             describe(size) + ")");
         for (int i = 0; i < genome.dimension; ++i)
-            genome.size[i] = readNumber(size[static_cast<std::size_t>(i)], indexed("size", static_cast<std::size_t>(i)));
+            genome.size[i] =
+                readNumber(size[static_cast<std::size_t>(i)], indexed("size", static_cast<std::size_t>(i)));
     }
 
     Color readColor(const Json& value, const std::string& where) const {
@@ -321,32 +354,38 @@ private:
         if (!palette.is_array() || palette.empty() || palette.size() > MaxPaletteSize)
             fail("palette", "must be an array of 1 to " + std::to_string(MaxPaletteSize) + " colours (got " +
                                 describe(palette) + ")");
-        for (std::size_t i = 0; i < palette.size(); ++i) genome.palette.push_back(readColor(palette[i], indexed("palette", i)));
+        for (std::size_t i = 0; i < palette.size(); ++i)
+            genome.palette.push_back(readColor(palette[i], indexed("palette", i)));
     }
 
     /// Reads `count` numbers: an array when `asArray`, else one number.
-    void readComponents(const Json& value, const std::string& where, const ParamSpec& spec, Operation& op, int count,
-                        bool asArray) const {
+    void readComponents(const Json& value, const std::string& where, const ParamSpec& spec, Operation& op,
+                        int count, bool asArray) const {
         if (!asArray) {
             setComponent(spec, op, 0, readNumber(value, where));
             return;
         }
         if (!value.is_array() || value.size() != static_cast<std::size_t>(count))
-            fail(where, "must be an array of " + std::to_string(count) + " numbers (got " + describe(value) + ")");
+            fail(where,
+                 "must be an array of " + std::to_string(count) + " numbers (got " + describe(value) + ")");
         for (int i = 0; i < count; ++i)
-            setComponent(spec, op, i, readNumber(value[static_cast<std::size_t>(i)], indexed(where, static_cast<std::size_t>(i))));
+            setComponent(
+                spec, op, i,
+                readNumber(value[static_cast<std::size_t>(i)], indexed(where, static_cast<std::size_t>(i))));
     }
 
-    Operation readOperation(const Json& entry, const std::string& where, int dimension, std::size_t paletteSize,
-                            bool inInitial) {
+    Operation readOperation(const Json& entry, const std::string& where, int dimension,
+                            std::size_t paletteSize, bool inInitial) {
         if (!entry.is_object()) fail(where, "must be an object (got " + describe(entry) + ")");
         const Json& toolName = require(entry, where, "tool");
-        if (!toolName.is_string()) fail(member(where, "tool"), "must be a tool name (got " + describe(toolName) + ")");
+        if (!toolName.is_string())
+            fail(member(where, "tool"), "must be a tool name (got " + describe(toolName) + ")");
         const ToolSpec* tool = findTool(toolName.get<std::string>());
         if (!tool) fail(member(where, "tool"), "unknown tool " + describe(toolName));
         if (!tool->available(dimension))
-            fail(member(where, "tool"), describe(toolName) + " is not available in " + std::to_string(dimension) + "D (" +
-                                            (tool->in3D ? "3D" : "2D") + " only)");
+            fail(member(where, "tool"), describe(toolName) + " is not available in " +
+                                            std::to_string(dimension) + "D (" + (tool->in3D ? "3D" : "2D") +
+                                            " only)");
         if (inInitial && !allowedInInitial(tool->tool, dimension))
             fail(member(where, "tool"),
                  describe(toolName) + " is not allowed in initial (only " + initialToolsText() + ")");
@@ -361,7 +400,8 @@ private:
             if (spec.kind != ParamKind::Choice) continue;
             const Json& value = require(entry, where, spec.key);
             int index = value.is_string() ? spec.choiceIndex(value.get<std::string>()) : -1;
-            if (index < 0) fail(member(where, spec.key), spec.describeChoices() + " (got " + describe(value) + ")");
+            if (index < 0)
+                fail(member(where, spec.key), spec.describeChoices() + " (got " + describe(value) + ")");
             setComponent(spec, op, 0, index);
         }
         for (const ParamSpec& spec : params) {
@@ -374,8 +414,8 @@ private:
             switch (spec.kind) {
             case ParamKind::Teeth: {
                 if (!value.is_array() || value.size() < 2 || value.size() > MaxTeeth)
-                    fail(at, "must be an array of 2 to " + std::to_string(MaxTeeth) + " numbers (got " + describe(value) +
-                                 ")");
+                    fail(at, "must be an array of 2 to " + std::to_string(MaxTeeth) + " numbers (got " +
+                                 describe(value) + ")");
                 for (std::size_t i = 0; i < value.size(); ++i)
                     setComponent(spec, op, static_cast<int>(i), readNumber(value[i], indexed(at, i)));
                 break;
@@ -383,29 +423,38 @@ private:
             case ParamKind::Count: {
                 if (!integral(value)) fail(at, "must be an integer (got " + describe(value) + ")");
                 double n = value.get<double>();
-                if (!spec.range.contains(n)) fail(at, spec.range.describe() + " (got " + describe(value) + ")");
+                if (!spec.range.contains(n))
+                    fail(at, spec.range.describe() + " (got " + describe(value) + ")");
                 setComponent(spec, op, 0, n);
                 break;
             }
-            case ParamKind::Extent: readComponents(value, at, spec, op, count, true); break;
+            case ParamKind::Extent:
+                readComponents(value, at, spec, op, count, true);
+                break;
             case ParamKind::Position:
-            case ParamKind::Direction: readComponents(value, at, spec, op, count, true); break;
+            case ParamKind::Direction:
+                readComponents(value, at, spec, op, count, true);
+                break;
             case ParamKind::Color: {
-                if (!integral(value)) fail(at, "must be an integer palette index (got " + describe(value) + ")");
+                if (!integral(value))
+                    fail(at, "must be an integer palette index (got " + describe(value) + ")");
                 // Range-checked here, before the cast to int could overflow.
                 double index = value.get<double>();
                 if (index < 0 || index >= static_cast<double>(paletteSize))
-                    fail(at, "must be an index into the palette, 0 to " + std::to_string(paletteSize - 1) + " (got " +
-                                 describe(value) + ")");
+                    fail(at, "must be an index into the palette, 0 to " + std::to_string(paletteSize - 1) +
+                                 " (got " + describe(value) + ")");
                 op.color = static_cast<int>(index);
                 break;
             }
-            default: readComponents(value, at, spec, op, count, spec.pair && count == 2); break;
+            default:
+                readComponents(value, at, spec, op, count, spec.pair && count == 2);
+                break;
             }
         }
         for (auto it = entry.begin(); it != entry.end(); ++it) {
             if (it.key() == "tool") continue;
-            bool known = std::any_of(params.begin(), params.end(), [&](const ParamSpec& s) { return s.key == it.key(); });
+            bool known = std::any_of(params.begin(), params.end(),
+                                     [&](const ParamSpec& s) { return s.key == it.key(); });
             if (!known) warnUnknown(where, it.key());
         }
         return op;
@@ -413,7 +462,8 @@ private:
 
     SourceImage readSource(const Json& value, int dimension) {
         if (dimension != 2) fail("source", "only allowed in 2D designs");
-        if (!value.is_object()) fail("source", "must be an object {\"image\": ...} (got " + describe(value) + ")");
+        if (!value.is_object())
+            fail("source", "must be an object {\"image\": ...} (got " + describe(value) + ")");
         const Json& image = require(value, "source", "image");
         if (!image.is_string() || image.get<std::string>().empty())
             fail("source.image", "must be a file name or a data URL (got " + describe(image) + ")");
@@ -457,13 +507,16 @@ std::string explanation(const std::string& message) {
 }
 
 /// A JSON syntax error, located by nlohmann's byte count (1-based: the last byte read).
-[[noreturn]] void syntaxError(std::string_view text, const nlohmann::json::parse_error& e, const std::string& name) {
-    throw GenomeError(name, textPosition(text, e.byte == 0 ? 0 : e.byte - 1), "JSON " + explanation(e.what()));
+[[noreturn]] void syntaxError(std::string_view text, const nlohmann::json::parse_error& e,
+                              const std::string& name) {
+    throw GenomeError(name, textPosition(text, e.byte == 0 ? 0 : e.byte - 1),
+                      "JSON " + explanation(e.what()));
 }
 
 /// Any other failure of the JSON reader; a number too large for a double names itself in the
 /// message ("number overflow parsing '1e999'"), which locates it in the text.
-[[noreturn]] void readerError(std::string_view text, const nlohmann::json::exception& e, const std::string& name) {
+[[noreturn]] void readerError(std::string_view text, const nlohmann::json::exception& e,
+                              const std::string& name) {
     std::string what = explanation(e.what());
     std::string location;
     auto open = what.find('\''), close = what.rfind('\'');
@@ -488,10 +541,12 @@ Json operationJson(const Operation& op, int dimension) {
             continue; // at its default: left out, so the file stays the lowest version
         } else if (spec.kind == ParamKind::Count) {
             entry[key] = op.steps;
-        } else if (spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction || spec.kind == ParamKind::Extent
-                   || spec.kind == ParamKind::Teeth || (spec.pair && count == 2)) {
+        } else if (spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction ||
+                   spec.kind == ParamKind::Extent || spec.kind == ParamKind::Teeth ||
+                   (spec.pair && count == 2)) {
             Json values = Json::array();
-            for (int i = 0; i < count; ++i) values.push_back(number(getComponent(spec, op, i)));
+            for (int i = 0; i < count; ++i)
+                values.push_back(number(getComponent(spec, op, i)));
             entry[key] = std::move(values);
         } else {
             entry[key] = number(getComponent(spec, op, 0));
@@ -504,13 +559,14 @@ Json operationJson(const Operation& op, int dimension) {
 
 Genome parseGenome(std::string_view text, const std::string& name, std::vector<std::string>* warnings) {
     if (text.size() > MaxFileBytes)
-        throw GenomeError(name, "", "larger than " + std::to_string(MaxFileBytes / (1024 * 1024)) + " MiB (" +
-                                        std::to_string(text.size()) + " bytes)");
+        throw GenomeError(name, "",
+                          "larger than " + std::to_string(MaxFileBytes / (1024 * 1024)) + " MiB (" +
+                              std::to_string(text.size()) + " bytes)");
     Json root;
     try {
         Json::parser_callback_t refuseDeep = [](int depth, Json::parse_event_t event, Json&) {
-            if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start)
-                && depth >= MaxDepth)
+            if ((event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) &&
+                depth >= MaxDepth)
                 throw TooDeep{};
             return true;
         };
@@ -524,8 +580,10 @@ Genome parseGenome(std::string_view text, const std::string& name, std::vector<s
     }
     Genome genome = Reader(name, warnings).read(root);
     validateGenome(genome, name);
-    for (Operation& op : genome.initial) normalise(op, genome.dimension);
-    for (Operation& op : genome.operations) normalise(op, genome.dimension);
+    for (Operation& op : genome.initial)
+        normalise(op, genome.dimension);
+    for (Operation& op : genome.operations)
+        normalise(op, genome.dimension);
     return genome;
 }
 
@@ -540,8 +598,9 @@ Genome loadGenome(const std::filesystem::path& file, std::vector<std::string>* w
     // below is bounded too, in case the file grows meanwhile or is not a regular file.
     std::uintmax_t bytes = std::filesystem::file_size(file, ec);
     if (!ec && bytes > MaxFileBytes)
-        throw GenomeError(name, "", "larger than " + std::to_string(MaxFileBytes / (1024 * 1024)) + " MiB (" +
-                                        std::to_string(bytes) + " bytes)");
+        throw GenomeError(name, "",
+                          "larger than " + std::to_string(MaxFileBytes / (1024 * 1024)) + " MiB (" +
+                              std::to_string(bytes) + " bytes)");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw GenomeError(name, "", std::string("cannot read: ") + std::strerror(errno));
     std::string text;
@@ -562,27 +621,34 @@ void validateGenome(const Genome& genome, const std::string& name) {
     for (int i = 0; i < genome.dimension; ++i) {
         double side = genome.size[i];
         std::string at = indexed("size", static_cast<std::size_t>(i));
-        if (!std::isfinite(side)) throw GenomeError(name, at, "must be finite (got " + formatNumber(side) + ")");
+        if (!std::isfinite(side))
+            throw GenomeError(name, at, "must be finite (got " + formatNumber(side) + ")");
         if (!(side > 0.0)) throw GenomeError(name, at, "must be > 0 (got " + formatNumber(side) + ")");
     }
     if (genome.palette.empty() || genome.palette.size() > MaxPaletteSize)
-        throw GenomeError(name, "palette", "must hold 1 to " + std::to_string(MaxPaletteSize) + " colours (got " +
-                                               std::to_string(genome.palette.size()) + ")");
+        throw GenomeError(name, "palette",
+                          "must hold 1 to " + std::to_string(MaxPaletteSize) + " colours (got " +
+                              std::to_string(genome.palette.size()) + ")");
     if (genome.initial.size() + genome.operations.size() > MaxEntries)
-        throw GenomeError(name, "operations", "too many entries: at most " + std::to_string(MaxEntries) +
-                                                  " in initial and operations together (got " +
-                                                  std::to_string(genome.initial.size() + genome.operations.size()) + ")");
+        throw GenomeError(name, "operations",
+                          "too many entries: at most " + std::to_string(MaxEntries) +
+                              " in initial and operations together (got " +
+                              std::to_string(genome.initial.size() + genome.operations.size()) + ")");
     int paletteSize = static_cast<int>(genome.palette.size());
     for (std::size_t i = 0; i < genome.initial.size(); ++i)
         checkOperation(genome.initial[i], genome.dimension, paletteSize, true, indexed("initial", i), name);
     for (std::size_t i = 0; i < genome.operations.size(); ++i)
-        checkOperation(genome.operations[i], genome.dimension, paletteSize, false, indexed("operations", i), name);
+        checkOperation(genome.operations[i], genome.dimension, paletteSize, false, indexed("operations", i),
+                       name);
     if (genome.source) {
         if (genome.dimension != 2) throw GenomeError(name, "source", "only allowed in 2D designs");
-        if (genome.source->image.empty()) throw GenomeError(name, "source.image", "must be a file name or a data URL");
+        if (genome.source->image.empty())
+            throw GenomeError(name, "source.image", "must be a file name or a data URL");
     }
-    if (!std::isfinite(genome.bleed)) throw GenomeError(name, "bleed", "must be finite (got " + formatNumber(genome.bleed) + ")");
-    if (!(genome.bleed >= 0.0)) throw GenomeError(name, "bleed", "must be >= 0 (got " + formatNumber(genome.bleed) + ")");
+    if (!std::isfinite(genome.bleed))
+        throw GenomeError(name, "bleed", "must be finite (got " + formatNumber(genome.bleed) + ")");
+    if (!(genome.bleed >= 0.0))
+        throw GenomeError(name, "bleed", "must be >= 0 (got " + formatNumber(genome.bleed) + ")");
     if (!genome.meta.is_object()) throw GenomeError(name, "meta", "must be an object");
     checkFreeForm(genome.meta, "meta", name, 1);
 }
@@ -593,17 +659,21 @@ Json toJson(const Genome& genome) {
     root["version"] = requiredVersion(genome);
     root["dimension"] = genome.dimension;
     Json size = Json::array();
-    for (int i = 0; i < (genome.dimension == 3 ? 3 : 2); ++i) size.push_back(number(genome.size[i]));
+    for (int i = 0; i < (genome.dimension == 3 ? 3 : 2); ++i)
+        size.push_back(number(genome.size[i]));
     root["size"] = std::move(size);
     root["background"] = toHex(genome.background);
     Json palette = Json::array();
-    for (const Color& color : genome.palette) palette.push_back(toHex(color));
+    for (const Color& color : genome.palette)
+        palette.push_back(toHex(color));
     root["palette"] = std::move(palette);
     Json initial = Json::array();
-    for (const Operation& op : genome.initial) initial.push_back(operationJson(op, genome.dimension));
+    for (const Operation& op : genome.initial)
+        initial.push_back(operationJson(op, genome.dimension));
     root["initial"] = std::move(initial);
     Json operations = Json::array();
-    for (const Operation& op : genome.operations) operations.push_back(operationJson(op, genome.dimension));
+    for (const Operation& op : genome.operations)
+        operations.push_back(operationJson(op, genome.dimension));
     root["operations"] = std::move(operations);
     if (genome.source) root["source"] = Json{{"image", genome.source->image}};
     if (genome.bleed != 0.0) root["bleed"] = number(genome.bleed);

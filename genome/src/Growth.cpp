@@ -22,22 +22,29 @@ GrowthRule growthRule(Tool tool) {
     switch (tool) {
     case Tool::Drop:
     case Tool::Spray:
-    case Tool::Cylinder: return {ParamField::Radius, true};
+    case Tool::Cylinder:
+        return {ParamField::Radius, true};
     case Tool::Line:
     case Tool::Comb:
     case Tool::Circle:
     case Tool::Sphere:
-    case Tool::Vortex: return {ParamField::Alpha, false};
-    case Tool::Wave: return {ParamField::Amplitude, false};
-    case Tool::Stretch: return {ParamField::Shift, false};
-    case Tool::Flow: return {ParamField::Time, false};
+    case Tool::Vortex:
+        return {ParamField::Alpha, false};
+    case Tool::Wave:
+        return {ParamField::Amplitude, false};
+    case Tool::Stretch:
+        return {ParamField::Shift, false};
+    case Tool::Flow:
+        return {ParamField::Time, false};
     }
     throw std::logic_error("growthRule: unknown tool");
 }
 
 } // namespace
 
-std::size_t stepCount(const Genome& genome) { return genome.initial.size() + genome.operations.size(); }
+std::size_t stepCount(const Genome& genome) {
+    return genome.initial.size() + genome.operations.size();
+}
 
 Genome designAfterSteps(const Genome& genome, std::size_t steps) {
     const std::size_t count = stepCount(genome);
@@ -72,14 +79,15 @@ std::optional<Operation> grownOperation(const Operation& op, int dimension, doub
 Genome designAtGrowth(const Genome& genome, double g) {
     const std::size_t count = stepCount(genome);
     if (!(g >= 0.0 && g <= static_cast<double>(count)))
-        throw InputError("growth " + std::to_string(g) + " is outside 0 to the design's " + std::to_string(count) +
-                         " steps");
+        throw InputError("growth " + std::to_string(g) + " is outside 0 to the design's " +
+                         std::to_string(count) + " steps");
     const double whole = std::floor(g);
     const auto steps = static_cast<std::size_t>(whole);
     Genome design = designAfterSteps(genome, steps);
     if (steps == count) return design;
     const bool inInitial = steps < genome.initial.size();
-    const Operation& step = inInitial ? genome.initial[steps] : genome.operations[steps - genome.initial.size()];
+    const Operation& step =
+        inInitial ? genome.initial[steps] : genome.operations[steps - genome.initial.size()];
     if (std::optional<Operation> grown = grownOperation(step, genome.dimension, g - whole))
         (inInitial ? design.initial : design.operations).push_back(*grown);
     return design;

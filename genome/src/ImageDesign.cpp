@@ -17,7 +17,6 @@ constexpr std::uint64_t PictureFlowStream = 0x696d616765666c31ULL;
 constexpr std::uint64_t PictureStrokeStream = 0x696d616765737431ULL;
 constexpr std::uint64_t PicturePaletteStream = 0x696d616765706131ULL;
 
-
 /// The flow that carries the picture: cells over the whole bath, or one cavity filling most of
 /// it. Moves ink by about a tenth to a third of the bath, whatever the design's size.
 Operation pictureFlow(Pcg32& rng, const glm::dvec3& size) {
@@ -46,10 +45,18 @@ Operation pictureFlow(Pcg32& rng, const glm::dvec3& size) {
         const double mx = (size.x - (across ? op.extent.y : op.extent.x)) * 0.5;
         const double my = (size.y - (across ? op.extent.x : op.extent.y)) * 0.5;
         switch (edge) {
-        case 0: op.angle = 0.0, op.center = {mx, my, 0.0}; break;
-        case 1: op.angle = 90.0, op.center = {size.x - mx, my, 0.0}; break;
-        case 2: op.angle = 180.0, op.center = {size.x - mx, size.y - my, 0.0}; break;
-        default: op.angle = 270.0, op.center = {mx, size.y - my, 0.0}; break;
+        case 0:
+            op.angle = 0.0, op.center = {mx, my, 0.0};
+            break;
+        case 1:
+            op.angle = 90.0, op.center = {size.x - mx, my, 0.0};
+            break;
+        case 2:
+            op.angle = 180.0, op.center = {size.x - mx, size.y - my, 0.0};
+            break;
+        default:
+            op.angle = 270.0, op.center = {mx, size.y - my, 0.0};
+            break;
         }
         op.center = {tenth(op.center.x), tenth(op.center.y), 0.0};
         reach = side * rng.uniform(0.4, 1.0);

@@ -22,9 +22,13 @@ namespace {
 constexpr std::array<std::string_view, 4> OperatorNames{"alter", "recombine", "swap", "reinit"};
 
 /// Child i's own random stream (Random.h childRng), apart from the colourways'.
-Pcg32 bredChildRng(std::uint64_t seed, int index) { return childRng(seed, index, 0, 0x6272656564000000ULL); }
+Pcg32 bredChildRng(std::uint64_t seed, int index) {
+    return childRng(seed, index, 0, 0x6272656564000000ULL);
+}
 
-double largestSide(const Genome& g) { return std::max({g.size.x, g.size.y, g.dimension == 3 ? g.size.z : 0.0}); }
+double largestSide(const Genome& g) {
+    return std::max({g.size.x, g.size.y, g.dimension == 3 ? g.size.z : 0.0});
+}
 
 /// Reflects a value back into [lo, hi] (a mutation near an edge bounces instead of piling up).
 double reflectInto(double v, double lo, double hi) {
@@ -65,7 +69,9 @@ double keepInRange(const ParamRange& range, double v, double margin) {
 /// of their own value, teeth by a share of their mean gap, so a fine comb stays fine.
 void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool relative = false) {
     const double side = largestSide(g);
-    const auto factor = [&] { return 1.0 + std::clamp(rng.normal() * FamilyRelativeScale * strength, -0.5, 1.0); };
+    const auto factor = [&] {
+        return 1.0 + std::clamp(rng.normal() * FamilyRelativeScale * strength, -0.5, 1.0);
+    };
     const double floorLength = 1e-3 * side; // lengths stay clearly > 0
     constexpr double AngleMargin = 1e-3;    // degrees, for an angle whose range is open
     const glm::dvec3 before = op.direction, beforeNormal = op.normal;
@@ -86,13 +92,18 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool r
             break;
         case ParamKind::Direction: {
             glm::dvec3 v(0.0);
-            for (int i = 0; i < n; ++i) v[i] = getComponent(spec, op, i);
+            for (int i = 0; i < n; ++i)
+                v[i] = getComponent(spec, op, i);
             glm::dvec3 moved = v;
-            for (int i = 0; i < n; ++i) moved[i] += rng.normal() * spec.mutationScale * strength;
+            for (int i = 0; i < n; ++i)
+                moved[i] += rng.normal() * spec.mutationScale * strength;
             double len = glm::length(moved);
-            if (len > 1e-6 && std::isfinite(len)) moved /= len;
-            else moved = v; // a degenerate draw keeps the old direction
-            for (int i = 0; i < n; ++i) setComponent(spec, op, i, moved[i]);
+            if (len > 1e-6 && std::isfinite(len))
+                moved /= len;
+            else
+                moved = v; // a degenerate draw keeps the old direction
+            for (int i = 0; i < n; ++i)
+                setComponent(spec, op, i, moved[i]);
             if (spec.field == ParamField::Direction || spec.field == ParamField::Normal) hasFrame = true;
             break;
         }
@@ -110,7 +121,8 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool r
         case ParamKind::Extent:
             for (int i = 0; i < n; ++i) {
                 double v = relative ? getComponent(spec, op, i) * factor()
-                                    : getComponent(spec, op, i) + rng.normal() * spec.mutationScale * strength * side;
+                                    : getComponent(spec, op, i) +
+                                          rng.normal() * spec.mutationScale * strength * side;
                 // Lengths that must be > 0 stay clearly so.
                 setComponent(spec, op, i, keepInRange(spec.range, v, floorLength));
             }
@@ -126,8 +138,10 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool r
             // least one representable step where a hair is lost in rounding, far out).
             double scale = spec.mutationScale * strength * side;
             if (relative && op.teeth.size() > 1)
-                scale = FamilyRelativeScale * strength * (op.teeth.back() - op.teeth.front()) / static_cast<double>(op.teeth.size() - 1);
-            for (int i = 0; i < n; ++i) setComponent(spec, op, i, getComponent(spec, op, i) + rng.normal() * scale);
+                scale = FamilyRelativeScale * strength * (op.teeth.back() - op.teeth.front()) /
+                        static_cast<double>(op.teeth.size() - 1);
+            for (int i = 0; i < n; ++i)
+                setComponent(spec, op, i, getComponent(spec, op, i) + rng.normal() * scale);
             std::sort(op.teeth.begin(), op.teeth.end());
             for (std::size_t i = 1; i < op.teeth.size(); ++i) {
                 const double before = op.teeth[i - 1];
@@ -138,7 +152,8 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool r
         }
         case ParamKind::Count: // a flow's steps follow its speed, time and size, below
         case ParamKind::Color:
-        case ParamKind::Choice: break;
+        case ParamKind::Choice:
+            break;
         }
     }
     if (op.tool == Tool::Flow) {
@@ -202,12 +217,12 @@ std::string rootName(const Genome& g) {
     std::string name = "Untitled";
     if (g.meta.is_object()) {
         auto it = g.meta.find("name");
-        if (it != g.meta.end() && it->is_string() && !it->get<std::string>().empty()) name = it->get<std::string>();
+        if (it != g.meta.end() && it->is_string() && !it->get<std::string>().empty())
+            name = it->get<std::string>();
     }
     if (auto pos = name.rfind(" (g"); pos != std::string::npos && name.back() == ')') name.erase(pos);
     return name;
 }
-
 
 /// The n-th root of x >= 0 by bisection: basic operations only, so the same on every machine.
 double rootOf(double x, int n) {
@@ -215,7 +230,8 @@ double rootOf(double x, int n) {
     for (int k = 0; k < 64; ++k) {
         const double mid = 0.5 * (lo + hi);
         double p = 1.0;
-        for (int j = 0; j < n; ++j) p *= mid;
+        for (int j = 0; j < n; ++j)
+            p *= mid;
         (p < x ? lo : hi) = mid;
     }
     return 0.5 * (lo + hi);
@@ -234,7 +250,9 @@ std::array<double, 3> labOf(Color c) {
     const double y = 0.2126729 * r + 0.7151522 * g + 0.0721750 * b;
     const double z = (0.0193339 * r + 0.1191920 * g + 0.9503041 * b) / 1.08883;
     constexpr double Delta = 6.0 / 29.0;
-    const auto f = [](double t) { return t > Delta * Delta * Delta ? rootOf(t, 3) : t / (3.0 * Delta * Delta) + 4.0 / 29.0; };
+    const auto f = [](double t) {
+        return t > Delta * Delta * Delta ? rootOf(t, 3) : t / (3.0 * Delta * Delta) + 4.0 / 29.0;
+    };
     const double fx = f(x), fy = f(y), fz = f(z);
     return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
 }
@@ -253,7 +271,8 @@ Glimpse glimpseOf(const Genome& genome) {
     std::vector<std::array<double, 3>> inks;
     inks.reserve(genome.palette.size() + 1);
     inks.push_back(labOf(genome.background)); // index 0: no ink (the ground, or the source)
-    for (Color c : genome.palette) inks.push_back(labOf(c));
+    for (Color c : genome.palette)
+        inks.push_back(labOf(c));
     const std::vector<PreparedOp> ops = prepare(genome);
     constexpr int Cells = GlimpseSide * GlimpseSide;
     std::vector<int> counts(inks.size(), 0);
@@ -262,9 +281,11 @@ Glimpse glimpseOf(const Genome& genome) {
     const double z = genome.dimension == 3 ? 0.5 * genome.size.z : 0.0;
     for (int j = 0; j < GlimpseSide; ++j)
         for (int i = 0; i < GlimpseSide; ++i) {
-            const glm::dvec3 p{(i + 0.5) / GlimpseSide * genome.size.x, (j + 0.5) / GlimpseSide * genome.size.y, z};
+            const glm::dvec3 p{(i + 0.5) / GlimpseSide * genome.size.x,
+                               (j + 0.5) / GlimpseSide * genome.size.y, z};
             const int color = traceColor(ops, p);
-            const auto index = static_cast<std::size_t>(color >= 0 && color < static_cast<int>(genome.palette.size()) ? color + 1 : 0);
+            const auto index = static_cast<std::size_t>(
+                color >= 0 && color < static_cast<int>(genome.palette.size()) ? color + 1 : 0);
             ++counts[index];
             glimpse.lab.insert(glimpse.lab.end(), inks[index].begin(), inks[index].end());
         }
@@ -284,7 +305,9 @@ double meanDeltaE(const Glimpse& a, const Glimpse& b) {
     return sum / static_cast<double>(n);
 }
 
-std::string_view operatorName(GeneticOperator op) { return OperatorNames[static_cast<std::size_t>(op)]; }
+std::string_view operatorName(GeneticOperator op) {
+    return OperatorNames[static_cast<std::size_t>(op)];
+}
 
 std::optional<GeneticOperator> parseOperator(std::string_view name) {
     for (std::size_t i = 0; i < OperatorNames.size(); ++i)
@@ -298,9 +321,12 @@ int minParents(GeneticOperator op) {
 
 int maxParents(GeneticOperator op) {
     switch (op) {
-    case GeneticOperator::Recombine: return 0;
-    case GeneticOperator::Swap: return 2;
-    default: return 1;
+    case GeneticOperator::Recombine:
+        return 0;
+    case GeneticOperator::Swap:
+        return 2;
+    default:
+        return 1;
     }
 }
 
@@ -332,14 +358,18 @@ void setLocks(Genome& genome, const Locks& locks) {
     genome.meta["locks"] = value;
 }
 
-int lineageGeneration(const Genome& genome) { return generationOf(genome); }
+int lineageGeneration(const Genome& genome) {
+    return generationOf(genome);
+}
 
-nlohmann::ordered_json childMeta(const Genome& home, int generation, int number, nlohmann::ordered_json lineage) {
+nlohmann::ordered_json childMeta(const Genome& home, int generation, int number,
+                                 nlohmann::ordered_json lineage) {
     nlohmann::ordered_json meta = nlohmann::ordered_json::object();
     meta["name"] = rootName(home) + " (g" + std::to_string(generation) + " #" + std::to_string(number) + ")";
     if (home.meta.is_object())
         for (const auto& [key, value] : home.meta.items())
-            if (key != "name" && key != "seed" && key != "generator" && key != "id" && key != "lineage") meta[key] = value;
+            if (key != "name" && key != "seed" && key != "generator" && key != "id" && key != "lineage")
+                meta[key] = value;
     meta["lineage"] = std::move(lineage);
     return meta;
 }
@@ -362,17 +392,21 @@ Genome alterGenome(const Genome& parent, double strength, Pcg32& rng) {
     Genome child = parent;
     if (strength == 0.0) return child; // exactly the parent, not a renormalised copy
     Locks locks = locksOf(parent);
-    const bool relative = strength < FamilyKeepStrength && child.meta.is_object() && child.meta.contains("family");
+    const bool relative =
+        strength < FamilyKeepStrength && child.meta.is_object() && child.meta.contains("family");
     if (!locks.operations) {
-        for (Operation& op : child.operations) perturb(op, child, strength, rng, relative);
+        for (Operation& op : child.operations)
+            perturb(op, child, strength, rng, relative);
         return child;
     }
     // The strokes are locked: vary what is free instead, more gently, so the operator still
     // offers a choice.
     if (!locks.initial)
-        for (Operation& op : child.initial) perturb(op, child, 0.5 * strength, rng, relative);
+        for (Operation& op : child.initial)
+            perturb(op, child, 0.5 * strength, rng, relative);
     if (!locks.palette) {
-        for (Color& c : child.palette) c = nudgeColor(c, 24.0 * strength, rng);
+        for (Color& c : child.palette)
+            c = nudgeColor(c, 24.0 * strength, rng);
         child.background = nudgeColor(child.background, 8.0 * strength, rng);
     }
     return child;
@@ -387,11 +421,13 @@ Genome recombineGenomes(const std::vector<Genome>& parents, std::size_t home, Pc
     if (locksOf(parents[home]).operations) return child;
     const std::vector<Operation>& mine = parents[home].operations;
     bool othersDiffer = false;
-    for (const Genome& parent : parents) othersDiffer = othersDiffer || parent.operations != mine;
+    for (const Genome& parent : parents)
+        othersDiffer = othersDiffer || parent.operations != mine;
     // A child whose strokes all come from its home parent is a copy of it, which wastes a cell
     // of the population; draw again a few times while another parent has different strokes.
     std::vector<Operation> ops = crossover(parents, home, rng);
-    for (int attempt = 0; othersDiffer && ops == mine && attempt < 16; ++attempt) ops = crossover(parents, home, rng);
+    for (int attempt = 0; othersDiffer && ops == mine && attempt < 16; ++attempt)
+        ops = crossover(parents, home, rng);
     clampColors(ops, child.palette.size());
     child.operations = std::move(ops);
     capEntries(child);
@@ -417,7 +453,8 @@ static std::vector<Operation> crossover(const std::vector<Genome>& parents, std:
             holders.clear();
             for (std::size_t p = 0; p < parents.size(); ++p)
                 if (parents[p].operations.size() > k) holders.push_back(p);
-            ops.push_back(parents[holders[rng.below(static_cast<std::uint32_t>(holders.size()))]].operations[k]);
+            ops.push_back(
+                parents[holders[rng.below(static_cast<std::uint32_t>(holders.size()))]].operations[k]);
         }
     }
     return ops;
@@ -436,13 +473,15 @@ Genome reinitGenome(const Genome& parent, Pcg32& rng) {
     Genome child = parent;
     Locks locks = locksOf(parent);
     if (!locks.initial) {
-        child.initial = randomInitial(rng, child.dimension, child.size, static_cast<int>(child.palette.size()));
+        child.initial =
+            randomInitial(rng, child.dimension, child.size, static_cast<int>(child.palette.size()));
         capEntries(child);
     } else if (!locks.palette) {
         // The drops are locked: recolour them instead, with as many inks as before so every
         // colour index stays valid.
         std::vector<Color> fresh = randomPalette(rng, &child.background);
-        for (std::size_t i = 0; i < child.palette.size(); ++i) child.palette[i] = fresh[i % fresh.size()];
+        for (std::size_t i = 0; i < child.palette.size(); ++i)
+            child.palette[i] = fresh[i % fresh.size()];
     }
     return child;
 }
@@ -468,13 +507,17 @@ std::vector<Genome> breed(const BreedRequest& request) {
     const auto parentCount = static_cast<int>(request.parents.size());
     const std::string name(operatorName(op));
     if (parentCount < minParents(op) || (maxParents(op) > 0 && parentCount > maxParents(op))) {
-        std::string want = maxParents(op) == 0         ? std::to_string(minParents(op)) + " or more parents"
-                           : minParents(op) == maxParents(op) ? (minParents(op) == 1 ? std::string("one parent") : std::to_string(minParents(op)) + " parents")
-                                                              : std::to_string(minParents(op)) + " to " + std::to_string(maxParents(op)) + " parents";
+        std::string want =
+            maxParents(op) == 0 ? std::to_string(minParents(op)) + " or more parents"
+            : minParents(op) == maxParents(op)
+                ? (minParents(op) == 1 ? std::string("one parent")
+                                       : std::to_string(minParents(op)) + " parents")
+                : std::to_string(minParents(op)) + " to " + std::to_string(maxParents(op)) + " parents";
         throw InputError(name + " takes " + want + " (got " + std::to_string(parentCount) + ")");
     }
     if (request.count < 1 || request.count > MaxChildren)
-        throw InputError("count must be between 1 and " + std::to_string(MaxChildren) + " (got " + std::to_string(request.count) + ")");
+        throw InputError("count must be between 1 and " + std::to_string(MaxChildren) + " (got " +
+                         std::to_string(request.count) + ")");
     if (!(request.strength >= 0.0 && request.strength <= 1.0))
         throw InputError("strength must be between 0 and 1 (got " + std::to_string(request.strength) + ")");
     for (int p = 0; p < parentCount; ++p) {
@@ -520,14 +563,16 @@ std::vector<Genome> breed(const BreedRequest& request) {
         std::size_t home = 0;
         const auto draw = [&] {
             switch (op) {
-            case GeneticOperator::Alter: return alterGenome(request.parents[0], request.strength, rng);
+            case GeneticOperator::Alter:
+                return alterGenome(request.parents[0], request.strength, rng);
             case GeneticOperator::Recombine:
                 home = static_cast<std::size_t>(i) % request.parents.size();
                 return recombineGenomes(request.parents, home, rng);
             case GeneticOperator::Swap:
                 home = static_cast<std::size_t>(i % 2);
                 return swapGenomes(request.parents[home], request.parents[1 - home]);
-            case GeneticOperator::Reinit: return reinitGenome(request.parents[0], rng);
+            case GeneticOperator::Reinit:
+                return reinitGenome(request.parents[0], rng);
             }
             return request.parents[0];
         };
@@ -570,7 +615,8 @@ std::vector<Genome> breed(const BreedRequest& request) {
             const auto judge = [&](const Glimpse& look) {
                 Verdict verdict;
                 verdict.dull = look.dominantShare > DullShare && look.dominantShare > parentShare;
-                for (const Glimpse& other : looks) verdict.nearest = std::min(verdict.nearest, meanDeltaE(look, other));
+                for (const Glimpse& other : looks)
+                    verdict.nearest = std::min(verdict.nearest, meanDeltaE(look, other));
                 return verdict;
             };
             Glimpse look = glimpseOf(child);
@@ -595,7 +641,8 @@ std::vector<Genome> breed(const BreedRequest& request) {
         taken.insert(genomeId(child));
 
         const Genome& homeParent = request.parents[home];
-        const int number = request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
+        const int number =
+            request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
         nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
         lineage["parents"] = parentIds;
         lineage["operator"] = name;

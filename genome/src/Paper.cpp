@@ -17,22 +17,27 @@ constexpr std::uint64_t PaperDropStream = 0x7061706572647231ULL;
 constexpr std::uint64_t PaperPassStream = 0x7061706572707331ULL;
 
 constexpr double A4Area = 210.0 * 297.0;
-constexpr double A4Spacing = 28.0;   // mm between drop centres of one colour at A4
-constexpr double LayerShrink = 0.8;  // each later colour's radii, relative to the one before
-constexpr double PassShrink = 0.6;   // each later pass's shift, relative to the one before
+constexpr double A4Spacing = 28.0;       // mm between drop centres of one colour at A4
+constexpr double LayerShrink = 0.8;      // each later colour's radii, relative to the one before
+constexpr double PassShrink = 0.6;       // each later pass's shift, relative to the one before
 constexpr double LargestSide = 100000.0; // 100 m
 
 /// Rounds to a hundredth of a millimetre, so files stay readable; exact everywhere.
-double hundredth(double x) { return std::round(x * 100.0) / 100.0; }
+double hundredth(double x) {
+    return std::round(x * 100.0) / 100.0;
+}
 
 /// base^n by multiplication: std::pow is not required to be correctly rounded.
 double power(double base, int n) {
     double result = 1.0;
-    for (int i = 0; i < n; ++i) result *= base;
+    for (int i = 0; i < n; ++i)
+        result *= base;
     return result;
 }
 
-double luma(Color c) { return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0; }
+double luma(Color c) {
+    return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0;
+}
 
 double distance2(Color a, Color b) {
     double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
@@ -43,7 +48,8 @@ double distance2(Color a, Color b) {
 /// [g, 1.8 g]: a one-dimensional Poisson-disk sample (a maximal one has gaps below 2 g).
 std::vector<double> teethBetween(Pcg32& rng, double from, double to, double g) {
     std::vector<double> teeth{hundredth(from - rng.uniform(0.0, g))};
-    while (teeth.back() < to) teeth.push_back(hundredth(teeth.back() + g + hundredth(rng.uniform(0.0, 0.8 * g))));
+    while (teeth.back() < to)
+        teeth.push_back(hundredth(teeth.back() + g + hundredth(rng.uniform(0.0, 0.8 * g))));
     return teeth;
 }
 
@@ -66,8 +72,8 @@ glm::dvec2 paperRadii(double spacing, int layer) {
     return {0.4 * scale, 0.6 * scale};
 }
 
-std::vector<glm::dvec2> poissonDisk(Pcg32& rng, double x0, double y0, double x1, double y1, double minDistance,
-                                    std::size_t maxCount) {
+std::vector<glm::dvec2> poissonDisk(Pcg32& rng, double x0, double y0, double x1, double y1,
+                                    double minDistance, std::size_t maxCount) {
     std::vector<glm::dvec2> points;
     if (!(x1 > x0) || !(y1 > y0) || !(minDistance > 0.0) || maxCount == 0) return points;
     // A cell of side d / sqrt(2) holds at most one point, so a point's rivals lie within two
@@ -131,8 +137,9 @@ std::vector<glm::dvec2> poissonDisk(Pcg32& rng, double x0, double y0, double x1,
 }
 
 std::vector<Color> paperPalette(Pcg32& rng, int count, bool pastel, Color* background) {
-    Color bath = pastel ? colorFromHsl(rng.uniform(20.0, 60.0), rng.uniform(0.2, 0.5), rng.uniform(0.95, 0.975))
-                        : colorFromHsl(rng.uniform(35.0, 50.0), rng.uniform(0.3, 0.5), rng.uniform(0.88, 0.93));
+    Color bath = pastel
+                     ? colorFromHsl(rng.uniform(20.0, 60.0), rng.uniform(0.2, 0.5), rng.uniform(0.95, 0.975))
+                     : colorFromHsl(rng.uniform(35.0, 50.0), rng.uniform(0.3, 0.5), rng.uniform(0.88, 0.93));
     // Pale inks sit closer to the bath and to each other, so they are kept less far apart.
     const double minLumaGap = pastel ? 0.06 : 0.18;
     const double minInkDistance = pastel ? 40.0 : 70.0;
@@ -150,7 +157,8 @@ std::vector<Color> paperPalette(Pcg32& rng, int count, bool pastel, Color* backg
                 ink = colorFromHsl(hue, saturation, lightness);
             }
             bool apart = true;
-            for (Color other : inks) apart = apart && distance2(ink, other) >= minInkDistance * minInkDistance;
+            for (Color other : inks)
+                apart = apart && distance2(ink, other) >= minInkDistance * minInkDistance;
             if (apart) break;
         }
         inks.push_back(ink);
@@ -162,8 +170,8 @@ std::vector<Color> paperPalette(Pcg32& rng, int count, bool pastel, Color* backg
 Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     auto sizeOk = [](double v) { return std::isfinite(v) && v > 0.0 && v <= LargestSide; };
     if (!sizeOk(options.width) || !sizeOk(options.height))
-        throw InputError("a paper's width and height must be between 0 and 100 m (got " + std::to_string(options.width) +
-                         " x " + std::to_string(options.height) + " mm)");
+        throw InputError("a paper's width and height must be between 0 and 100 m (got " +
+                         std::to_string(options.width) + " x " + std::to_string(options.height) + " mm)");
     if (options.colors < 1 || options.colors > MaxPaperColors)
         throw InputError("a paper has 1 to " + std::to_string(MaxPaperColors) + " colours (got " +
                          std::to_string(options.colors) + ")");
@@ -186,7 +194,8 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     const std::size_t perColour = (MaxEntries - MaxPaperPasses) / static_cast<std::size_t>(options.colors);
     for (int layer = 0; layer < options.colors; ++layer) {
         glm::dvec2 radii = paperRadii(spacing, layer);
-        for (const glm::dvec2& p : poissonDisk(dropRng, -margin, -margin, w + margin, h + margin, spacing, perColour)) {
+        for (const glm::dvec2& p :
+             poissonDisk(dropRng, -margin, -margin, w + margin, h + margin, spacing, perColour)) {
             Operation drop;
             drop.tool = Tool::Drop;
             drop.center = {p.x, p.y, 0.0};
@@ -204,7 +213,8 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     Pcg32 passRng(seed, PaperPassStream);
     const double firstShift = spacing * passRng.uniform(0.6, 1.2);
     double reach = margin;
-    for (int pass = 0; pass < options.passes; ++pass) reach += firstShift * power(PassShrink, pass);
+    for (int pass = 0; pass < options.passes; ++pass)
+        reach += firstShift * power(PassShrink, pass);
     for (int pass = 0; pass < options.passes; ++pass) {
         const bool alongX = passRng.chance(0.5);
         const double extent = alongX ? h : w;
@@ -216,7 +226,8 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
         stretch.shift = hundredth(direction * firstShift * power(PassShrink, pass));
         stretch.power = hundredth(passRng.uniform(0.25, 0.75));
         // At most some 600 teeth, whatever the sheet's proportions (the format allows 1,000).
-        double gap = hundredth(std::max(spacing * passRng.uniform(0.35, 0.7), (extent + 2.0 * reach) / 600.0));
+        double gap =
+            hundredth(std::max(spacing * passRng.uniform(0.35, 0.7), (extent + 2.0 * reach) / 600.0));
         stretch.teeth = teethBetween(passRng, -reach, extent + reach, gap);
         g.operations.push_back(stretch);
     }

@@ -19,6 +19,8 @@ constexpr ParamSpec startingAt(ParamSpec spec, double editorValue) {
     return spec;
 }
 
+// The table keeps one row a line, to be read as a table: not reflowed.
+// clang-format off
 // Shared rows. Mutation scales: positions and lengths as a fraction of the design's largest
 // side, angles and phases in degrees.
 constexpr ParamSpec Center{"center", "Centre", F::Center, K::Position, "design units", "centre of the tool", AnyNumber, 0.0, 0.08};
@@ -139,18 +141,20 @@ constexpr std::array<ToolSpec, ToolCount> Tools{{
                 .tooltip = "Drag out a cell of a steady flow (cells or one cavity)",
                 .shortcut = 'F'}},
 }};
+// clang-format on
 
 /// A tool on the editor's tool bar has a name, a tooltip and a key; one without a gesture has none.
 constexpr bool editorRowsComplete() {
     for (const ToolSpec& tool : Tools) {
         const bool offered = tool.editor.gesture != G::None;
-        if (offered != !tool.editor.name.empty() || offered != !tool.editor.tooltip.empty()
-            || offered != (tool.editor.shortcut >= 'A' && tool.editor.shortcut <= 'Z'))
+        if (offered != !tool.editor.name.empty() || offered != !tool.editor.tooltip.empty() ||
+            offered != (tool.editor.shortcut >= 'A' && tool.editor.shortcut <= 'Z'))
             return false;
     }
     return true;
 }
-static_assert(editorRowsComplete(), "an editor gesture comes with a name, a tooltip and a capital-letter shortcut");
+static_assert(editorRowsComplete(),
+              "an editor gesture comes with a name, a tooltip and a capital-letter shortcut");
 
 constexpr bool inEnumOrder() {
     for (std::size_t i = 0; i < Tools.size(); ++i)
@@ -192,13 +196,33 @@ static_assert(versionsConsistent(), "optional parameters are exactly those newer
 
 glm::dvec3* vectorField(const ParamSpec& spec, Operation& op) {
     switch (spec.field) {
-    case F::Center: return &op.center;
-    case F::Axis: return &op.axis;
-    case F::Direction: return &op.direction;
-    case F::Normal: return &op.normal;
-    case F::Angle: case F::Radius: case F::Alpha: case F::Lambda: case F::Spacing: case F::Amplitude:
-    case F::Wavelength: case F::Phase: case F::Shape: case F::Color: case F::Core: case F::Teeth:
-    case F::Shift: case F::Power: case F::Field: case F::Size: case F::Speed: case F::Time: case F::Steps:
+    case F::Center:
+        return &op.center;
+    case F::Axis:
+        return &op.axis;
+    case F::Direction:
+        return &op.direction;
+    case F::Normal:
+        return &op.normal;
+    case F::Angle:
+    case F::Radius:
+    case F::Alpha:
+    case F::Lambda:
+    case F::Spacing:
+    case F::Amplitude:
+    case F::Wavelength:
+    case F::Phase:
+    case F::Shape:
+    case F::Color:
+    case F::Core:
+    case F::Teeth:
+    case F::Shift:
+    case F::Power:
+    case F::Field:
+    case F::Size:
+    case F::Speed:
+    case F::Time:
+    case F::Steps:
         return nullptr;
     }
     return nullptr;
@@ -206,12 +230,32 @@ glm::dvec3* vectorField(const ParamSpec& spec, Operation& op) {
 
 glm::dvec2* pairField(const ParamSpec& spec, Operation& op) {
     switch (spec.field) {
-    case F::Amplitude: return &op.amplitude;
-    case F::Wavelength: return &op.wavelength;
-    case F::Phase: return &op.phase;
-    case F::Center: case F::Axis: case F::Direction: case F::Normal: case F::Angle: case F::Radius:
-    case F::Alpha: case F::Lambda: case F::Spacing: case F::Shape: case F::Color: case F::Core: case F::Teeth:
-    case F::Shift: case F::Power: case F::Field: case F::Size: case F::Speed: case F::Time: case F::Steps:
+    case F::Amplitude:
+        return &op.amplitude;
+    case F::Wavelength:
+        return &op.wavelength;
+    case F::Phase:
+        return &op.phase;
+    case F::Center:
+    case F::Axis:
+    case F::Direction:
+    case F::Normal:
+    case F::Angle:
+    case F::Radius:
+    case F::Alpha:
+    case F::Lambda:
+    case F::Spacing:
+    case F::Shape:
+    case F::Color:
+    case F::Core:
+    case F::Teeth:
+    case F::Shift:
+    case F::Power:
+    case F::Field:
+    case F::Size:
+    case F::Speed:
+    case F::Time:
+    case F::Steps:
         return nullptr;
     }
     return nullptr;
@@ -219,21 +263,42 @@ glm::dvec2* pairField(const ParamSpec& spec, Operation& op) {
 
 double* scalarField(const ParamSpec& spec, Operation& op) {
     switch (spec.field) {
-    case F::Core: return &op.core;
-    case F::Shift: return &op.shift;
-    case F::Power: return &op.power;
-    case F::Speed: return &op.speed;
-    case F::Time: return &op.time;
-    case F::Angle: return &op.angle;
-    case F::Radius: return &op.radius;
-    case F::Alpha: return &op.alpha;
-    case F::Lambda: return &op.lambda;
-    case F::Spacing: return &op.spacing;
-    case F::Amplitude: return &op.amplitude[0];
-    case F::Wavelength: return &op.wavelength[0];
-    case F::Phase: return &op.phase[0];
-    case F::Center: case F::Axis: case F::Direction: case F::Normal: case F::Shape: case F::Color:
-    case F::Teeth: case F::Field: case F::Size: case F::Steps:
+    case F::Core:
+        return &op.core;
+    case F::Shift:
+        return &op.shift;
+    case F::Power:
+        return &op.power;
+    case F::Speed:
+        return &op.speed;
+    case F::Time:
+        return &op.time;
+    case F::Angle:
+        return &op.angle;
+    case F::Radius:
+        return &op.radius;
+    case F::Alpha:
+        return &op.alpha;
+    case F::Lambda:
+        return &op.lambda;
+    case F::Spacing:
+        return &op.spacing;
+    case F::Amplitude:
+        return &op.amplitude[0];
+    case F::Wavelength:
+        return &op.wavelength[0];
+    case F::Phase:
+        return &op.phase[0];
+    case F::Center:
+    case F::Axis:
+    case F::Direction:
+    case F::Normal:
+    case F::Shape:
+    case F::Color:
+    case F::Teeth:
+    case F::Field:
+    case F::Size:
+    case F::Steps:
         return nullptr;
     }
     return nullptr;
@@ -249,15 +314,20 @@ std::string ParamRange::describe() const {
         return text;
     };
     bool hasMin = std::isfinite(min), hasMax = std::isfinite(max);
-    if (hasMin && hasMax) return "must be in " + std::string(minOpen ? "(" : "[") + number(min) + ", " + number(max) + "]";
+    if (hasMin && hasMax)
+        return "must be in " + std::string(minOpen ? "(" : "[") + number(min) + ", " + number(max) + "]";
     if (hasMin) return std::string("must be ") + (minOpen ? "> " : ">= ") + number(min);
     if (hasMax) return "must be <= " + number(max);
     return "must be finite";
 }
 
-const ToolSpec& toolSpec(Tool tool) { return Tools[static_cast<std::size_t>(tool)]; }
+const ToolSpec& toolSpec(Tool tool) {
+    return Tools[static_cast<std::size_t>(tool)];
+}
 
-std::span<const ToolSpec> allTools() { return Tools; }
+std::span<const ToolSpec> allTools() {
+    return Tools;
+}
 
 const ToolSpec* findTool(std::string_view name) {
     for (const ToolSpec& spec : Tools)
@@ -325,7 +395,8 @@ double getComponent(const ParamSpec& spec, const Operation& op, int index) {
     if (glm::dvec3* v = vectorField(spec, mutableOp)) return (*v)[index];
     if (spec.pair) return (*pairField(spec, mutableOp))[index];
     if (spec.kind == K::Color) return op.color;
-    if (spec.kind == K::Choice) return spec.field == F::Field ? static_cast<double>(op.field) : static_cast<double>(op.shape);
+    if (spec.kind == K::Choice)
+        return spec.field == F::Field ? static_cast<double>(op.field) : static_cast<double>(op.shape);
     if (spec.kind == K::Extent) return op.extent[index];
     if (spec.kind == K::Teeth) return op.teeth[static_cast<std::size_t>(index)];
     if (spec.kind == K::Count) return op.steps;
@@ -343,8 +414,10 @@ void setComponent(const ParamSpec& spec, Operation& op, int index, double value)
         // The nearest choice: an index within the table's list.
         double last = static_cast<double>(spec.choices.size()) - 1.0;
         int index = static_cast<int>(std::clamp(std::round(value), 0.0, std::max(0.0, last)));
-        if (spec.field == F::Field) op.field = static_cast<FlowField>(index);
-        else op.shape = static_cast<WaveShape>(index);
+        if (spec.field == F::Field)
+            op.field = static_cast<FlowField>(index);
+        else
+            op.shape = static_cast<WaveShape>(index);
     } else if (spec.kind == K::Extent) {
         op.extent[index] = value;
     } else if (spec.kind == K::Teeth) {
@@ -364,15 +437,18 @@ Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center) {
     op.tool = tool;
     op.center = dimension == 3 ? center : glm::dvec3(center.x, center.y, 0.0);
     for (const ParamSpec& spec : toolSpec(tool).params(dimension)) {
-        if (spec.kind == K::Position || spec.kind == K::Direction || spec.kind == K::Choice || spec.kind == K::Teeth)
+        if (spec.kind == K::Position || spec.kind == K::Direction || spec.kind == K::Choice ||
+            spec.kind == K::Teeth)
             continue;
-        for (int i = 0; i < componentCount(spec, op, dimension); ++i) setComponent(spec, op, i, spec.defaultValue);
+        for (int i = 0; i < componentCount(spec, op, dimension); ++i)
+            setComponent(spec, op, i, spec.defaultValue);
     }
     if (tool == Tool::Stretch) {
         // Ten equal intervals across a square of twice the larger half-side about the centre,
         // so the teeth cover the design at any angle.
         double half = std::max({std::abs(center.x), std::abs(center.y), 1.0}) * std::numbers::sqrt2;
-        for (int i = 0; i <= 10; ++i) op.teeth.push_back(-half + 2.0 * half * i / 10.0);
+        for (int i = 0; i <= 10; ++i)
+            op.teeth.push_back(-half + 2.0 * half * i / 10.0);
     }
     if (tool == Tool::Flow) {
         // The cells' lattice starts at the design's corner, so the default flow is symmetric.

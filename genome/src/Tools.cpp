@@ -33,16 +33,18 @@ double waveShift(const PreparedOp& op, const glm::dvec3& p) {
     glm::dvec3 rel = p - op.c;
     if (op.dimension == 2) return op.amp[0] * std::sin(op.freq[0] * glm::dot(rel, op.n) + op.phase[0]);
     double x = glm::dot(rel, op.m), y = glm::dot(rel, op.v);
-    if (op.shape == WaveShape::Ripple) return op.amp[0] * std::sin(op.freq[0] * std::sqrt(x * x + y * y) + op.phase[0]);
-    return op.amp[0] * std::sin(op.freq[0] * x + op.phase[0]) + op.amp[1] * std::sin(op.freq[1] * y + op.phase[1]);
+    if (op.shape == WaveShape::Ripple)
+        return op.amp[0] * std::sin(op.freq[0] * std::sqrt(x * x + y * y) + op.phase[0]);
+    return op.amp[0] * std::sin(op.freq[0] * x + op.phase[0]) +
+           op.amp[1] * std::sin(op.freq[1] * y + op.phase[1]);
 }
 
 /// How circle, sphere and vortex measure the distance d of the shift, the one thing in which
 /// their turns differ.
 enum class Swirl {
-    AboutTheAxis,  ///< 3D circle: rho is the distance to the axis line, d = |rho - r|
+    AboutTheAxis,   ///< 3D circle: rho is the distance to the axis line, d = |rho - r|
     AboutTheCentre, ///< 2D circle, sphere: rho is the distance to the centre, d = |rho - r|
-    Vortex,        ///< rho is the distance to the centre, d = rho
+    Vortex,         ///< rho is the distance to the centre, d = rho
 };
 
 /// Circle, sphere and vortex: turn P about C (2D) or about the axis line through C (3D) by
@@ -69,7 +71,9 @@ glm::dvec3 swirl(const PreparedOp& op, const glm::dvec3& p, double sign, Swirl k
 }
 
 /// The circle's turn: about its centre in 2D, about its axis in 3D.
-Swirl circleSwirl(const PreparedOp& op) { return op.dimension == 3 ? Swirl::AboutTheAxis : Swirl::AboutTheCentre; }
+Swirl circleSwirl(const PreparedOp& op) {
+    return op.dimension == 3 ? Swirl::AboutTheAxis : Swirl::AboutTheCentre;
+}
 
 /// Drop (2D area law, 3D volume law) and cylinder (2D law across the axis): push P radially,
 /// `sign` +1 forward, -1 inverse; `acrossAxis` measures from the axis line instead of the centre.
@@ -147,7 +151,8 @@ glm::dvec2 flowVelocity(const PreparedOp& op, double x, double y) {
         double s = x / lx, t = y / ly;
         if (!(s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0)) return {0.0, 0.0};
         double f = 16.0 * s * s * (1.0 - s) * (1.0 - s), df = 32.0 * s * (1.0 - s) * (1.0 - 2.0 * s);
-        double g = 7.5 * t * t * (1.0 - t) * (1.0 - t) * (1.0 - t), dg = 7.5 * t * (1.0 - t) * (1.0 - t) * (2.0 - 5.0 * t);
+        double g = 7.5 * t * t * (1.0 - t) * (1.0 - t) * (1.0 - t),
+               dg = 7.5 * t * (1.0 - t) * (1.0 - t) * (2.0 - 5.0 * t);
         dpsiDy = u * f * dg;
         dpsiDx = u * (ly / lx) * df * g;
         break;
@@ -207,41 +212,65 @@ PreparedOp prepare(const Operation& op, int dimension) {
 std::vector<PreparedOp> prepare(const Genome& genome) {
     std::vector<PreparedOp> ops;
     ops.reserve(genome.initial.size() + genome.operations.size());
-    for (const Operation& op : genome.initial) ops.push_back(prepare(op, genome.dimension));
-    for (const Operation& op : genome.operations) ops.push_back(prepare(op, genome.dimension));
+    for (const Operation& op : genome.initial)
+        ops.push_back(prepare(op, genome.dimension));
+    for (const Operation& op : genome.operations)
+        ops.push_back(prepare(op, genome.dimension));
     return ops;
 }
 
 glm::dvec3 forwardMap(const PreparedOp& op, const glm::dvec3& p) {
     switch (op.tool) {
-    case Tool::Spray: return p;
-    case Tool::Drop: return push(op, p, +1.0, false);
-    case Tool::Cylinder: return push(op, p, +1.0, true);
-    case Tool::Line: return p + shiftFor(op, std::abs(glm::dot(p - op.c, op.n))) * op.m;
-    case Tool::Comb: return p + shiftFor(op, combDistance(glm::dot(p - op.c, op.n), op.spacing)) * op.m;
-    case Tool::Wave: return p + waveShift(op, p) * (op.dimension == 2 ? op.m : op.n);
-    case Tool::Circle: return swirl(op, p, +1.0, circleSwirl(op));
-    case Tool::Sphere: return swirl(op, p, +1.0, Swirl::AboutTheCentre);
-    case Tool::Vortex: return swirl(op, p, +1.0, Swirl::Vortex);
-    case Tool::Stretch: return stretch(op, p, +1.0);
-    case Tool::Flow: return flow(op, p, +1.0);
+    case Tool::Spray:
+        return p;
+    case Tool::Drop:
+        return push(op, p, +1.0, false);
+    case Tool::Cylinder:
+        return push(op, p, +1.0, true);
+    case Tool::Line:
+        return p + shiftFor(op, std::abs(glm::dot(p - op.c, op.n))) * op.m;
+    case Tool::Comb:
+        return p + shiftFor(op, combDistance(glm::dot(p - op.c, op.n), op.spacing)) * op.m;
+    case Tool::Wave:
+        return p + waveShift(op, p) * (op.dimension == 2 ? op.m : op.n);
+    case Tool::Circle:
+        return swirl(op, p, +1.0, circleSwirl(op));
+    case Tool::Sphere:
+        return swirl(op, p, +1.0, Swirl::AboutTheCentre);
+    case Tool::Vortex:
+        return swirl(op, p, +1.0, Swirl::Vortex);
+    case Tool::Stretch:
+        return stretch(op, p, +1.0);
+    case Tool::Flow:
+        return flow(op, p, +1.0);
     }
     return p;
 }
 
 glm::dvec3 inverseMap(const PreparedOp& op, const glm::dvec3& q) {
     switch (op.tool) {
-    case Tool::Spray: return q;
-    case Tool::Drop: return push(op, q, -1.0, false);
-    case Tool::Cylinder: return push(op, q, -1.0, true);
-    case Tool::Line: return q - shiftFor(op, std::abs(glm::dot(q - op.c, op.n))) * op.m;
-    case Tool::Comb: return q - shiftFor(op, combDistance(glm::dot(q - op.c, op.n), op.spacing)) * op.m;
-    case Tool::Wave: return q - waveShift(op, q) * (op.dimension == 2 ? op.m : op.n);
-    case Tool::Circle: return swirl(op, q, -1.0, circleSwirl(op));
-    case Tool::Sphere: return swirl(op, q, -1.0, Swirl::AboutTheCentre);
-    case Tool::Vortex: return swirl(op, q, -1.0, Swirl::Vortex);
-    case Tool::Stretch: return stretch(op, q, -1.0);
-    case Tool::Flow: return flow(op, q, -1.0);
+    case Tool::Spray:
+        return q;
+    case Tool::Drop:
+        return push(op, q, -1.0, false);
+    case Tool::Cylinder:
+        return push(op, q, -1.0, true);
+    case Tool::Line:
+        return q - shiftFor(op, std::abs(glm::dot(q - op.c, op.n))) * op.m;
+    case Tool::Comb:
+        return q - shiftFor(op, combDistance(glm::dot(q - op.c, op.n), op.spacing)) * op.m;
+    case Tool::Wave:
+        return q - waveShift(op, q) * (op.dimension == 2 ? op.m : op.n);
+    case Tool::Circle:
+        return swirl(op, q, -1.0, circleSwirl(op));
+    case Tool::Sphere:
+        return swirl(op, q, -1.0, Swirl::AboutTheCentre);
+    case Tool::Vortex:
+        return swirl(op, q, -1.0, Swirl::Vortex);
+    case Tool::Stretch:
+        return stretch(op, q, -1.0);
+    case Tool::Flow:
+        return flow(op, q, -1.0);
     }
     return q;
 }
@@ -249,8 +278,10 @@ glm::dvec3 inverseMap(const PreparedOp& op, const glm::dvec3& q) {
 bool insideInk(const PreparedOp& op, const glm::dvec3& p) {
     switch (op.tool) {
     case Tool::Drop:
-    case Tool::Spray: return inDisc(op, p, false);
-    case Tool::Cylinder: return inDisc(op, p, true);
+    case Tool::Spray:
+        return inDisc(op, p, false);
+    case Tool::Cylinder:
+        return inDisc(op, p, true);
     case Tool::Line:
     case Tool::Comb:
     case Tool::Wave:
@@ -258,7 +289,8 @@ bool insideInk(const PreparedOp& op, const glm::dvec3& p) {
     case Tool::Sphere:
     case Tool::Vortex:
     case Tool::Stretch:
-    case Tool::Flow: return false;
+    case Tool::Flow:
+        return false;
     }
     return false;
 }
@@ -274,12 +306,13 @@ double bleedCoverage(double e, double bleed) {
     return std::clamp(0.5 - e / bleed, 0.0, 1.0);
 }
 
-bool traceCovers(const std::vector<PreparedOp>& ops, double bleed, glm::dvec3 p, std::vector<InkCover>& covers,
-                 glm::dvec3* where) {
+bool traceCovers(const std::vector<PreparedOp>& ops, double bleed, glm::dvec3 p,
+                 std::vector<InkCover>& covers, glm::dvec3* where) {
     covers.clear();
     for (auto it = ops.rbegin(); it != ops.rend(); ++it) {
         if (it->color >= 0) {
-            double c = bleed > 0.0 ? bleedCoverage(inkEdgeDistance(*it, p), bleed) : (insideInk(*it, p) ? 1.0 : 0.0);
+            double c =
+                bleed > 0.0 ? bleedCoverage(inkEdgeDistance(*it, p), bleed) : (insideInk(*it, p) ? 1.0 : 0.0);
             if (c > 0.0) {
                 covers.push_back({it->color, c});
                 if (c >= 1.0) return true;

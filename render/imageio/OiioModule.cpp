@@ -24,7 +24,8 @@ constexpr int MaxSourceChannels = 4;
 
 bool isLinearColorSpace(const OIIO::ImageSpec& spec) {
     std::string space = spec.get_string_attribute("oiio:ColorSpace");
-    std::transform(space.begin(), space.end(), space.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(space.begin(), space.end(), space.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return space == "linear" || space == "scene_linear" || space == "lin_srgb";
 }
 
@@ -60,7 +61,8 @@ LinearRaster readRaster(OIIO::ImageInput& in, const std::string& name) {
 /// the dpi means something.
 class OiioSink final : public ImageSink {
 public:
-    explicit OiioSink(const SinkTarget& target) : mTarget(target) {
+    explicit OiioSink(const SinkTarget& target)
+        : mTarget(target) {
         mOut = OIIO::ImageOutput::create(target.displayName);
         if (!mOut) {
             OIIO::geterror(); // clear the library's message; ours says it better
@@ -70,7 +72,8 @@ public:
         const std::string& ext = target.extension;
         mFloat = ext == ".exr" || ext == ".hdr";
         mJpegDpi = target.options.dpi && (ext == ".jpg" || ext == ".jpeg");
-        OIIO::ImageSpec spec(target.width, target.height, 3, mFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
+        OIIO::ImageSpec spec(target.width, target.height, 3,
+                             mFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
         spec.attribute("oiio:ColorSpace", mFloat ? "Linear" : "sRGB");
         spec.attribute("Software", "Marbler");
         if (ext == ".jpg" || ext == ".jpeg") spec.attribute("Compression", "jpeg:95");

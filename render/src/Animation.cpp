@@ -18,10 +18,11 @@ std::string animationFrameName(int frame) {
     return name;
 }
 
-void writeAnimation(const Genome& genome, const RenderSettings& settings, const std::filesystem::path& out, int frames,
-                    double fps, const std::atomic<bool>* cancel,
+void writeAnimation(const Genome& genome, const RenderSettings& settings, const std::filesystem::path& out,
+                    int frames, double fps, const std::atomic<bool>* cancel,
                     const std::function<void(int frame, double within)>& progress) {
-    if (frames < 2) throw InputError("an animation needs at least 2 frames (got " + std::to_string(frames) + ")");
+    if (frames < 2)
+        throw InputError("an animation needs at least 2 frames (got " + std::to_string(frames) + ")");
     checkRenderSettings(genome, settings);
     const std::size_t steps = stepCount(genome);
     auto designOf = [&](int frame) { return designAtGrowth(genome, frameGrowth(steps, frame, frames)); };
@@ -53,7 +54,8 @@ void writeAnimation(const Genome& genome, const RenderSettings& settings, const 
         if (cancelled()) throw Cancelled();
     }
     std::error_code ec;
-    if (std::filesystem::exists(out, ec)) std::filesystem::remove(out, ec); // an empty folder, checked by the caller
+    if (std::filesystem::exists(out, ec))
+        std::filesystem::remove(out, ec); // an empty folder, checked by the caller
     folder.commit();
 }
 

@@ -296,9 +296,9 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                 for (std::size_t s = 0; s < perTexel; ++s, ++k) {
                     const int color = colors[k];
                     const glm::dvec3 seen = soften ? glm::dvec3(soft[k * 3], soft[k * 3 + 1], soft[k * 3 + 2])
-                                          : color >= 0 && std::size_t(color) < palette.size()
-                                              ? palette[std::size_t(color)]
-                                              : background;
+                                            : color >= 0 && std::size_t(color) < palette.size()
+                                                ? palette[std::size_t(color)]
+                                                : background;
                     sum += pattern.weights[s] * seen;
                 }
                 std::uint8_t* out = image.row(j) + std::size_t(i) * 3;

@@ -59,8 +59,8 @@ void addLathe(MeshData& mesh, const std::vector<glm::vec2>& profile, int around)
 }
 
 /// A tube of varying radius along a path (for the spout and handle of the teapot), ends closed.
-void addTube(MeshData& mesh, const std::function<glm::vec3(float)>& path, const std::function<float(float)>& radius,
-             int along, int around) {
+void addTube(MeshData& mesh, const std::function<glm::vec3(float)>& path,
+             const std::function<float(float)>& radius, int along, int around) {
     auto frame = [&](float t, glm::vec3& x, glm::vec3& y, glm::vec3& z) {
         float h = 1e-3f;
         z = glm::normalize(path(std::min(t + h, 1.0f)) - path(std::max(t - h, 0.0f)));
@@ -135,7 +135,8 @@ MeshData torus() {
         float phi = 2.0f * Pi * u, t = 2.0f * Pi * v - Pi;
         float c = std::cos(phi), s = std::sin(phi);
         n = {std::cos(t) * c, std::sin(t), std::cos(t) * s};
-        p = glm::vec3((major + minor * std::cos(t)) * c, minor * std::sin(t), (major + minor * std::cos(t)) * s);
+        p = glm::vec3((major + minor * std::cos(t)) * c, minor * std::sin(t),
+                      (major + minor * std::cos(t)) * s);
     });
     return mesh;
 }
@@ -149,20 +150,22 @@ std::vector<glm::vec2> smoothProfile(const std::vector<glm::vec2>& keys, int per
         for (int s = 0; s < perSegment; ++s) {
             float t = float(s) / float(perSegment);
             float t2 = t * t, t3 = t2 * t;
-            out.push_back(0.5f * ((2.0f * p1) + (-p0 + p2) * t + (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t2
-                                  + (-p0 + 3.0f * p1 - 3.0f * p2 + p3) * t3));
+            out.push_back(0.5f *
+                          ((2.0f * p1) + (-p0 + p2) * t + (2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) * t2 +
+                           (-p0 + 3.0f * p1 - 3.0f * p2 + p3) * t3));
         }
     }
     out.push_back(keys.back());
-    for (glm::vec2& p : out) p.x = std::max(p.x, 0.0f);
+    for (glm::vec2& p : out)
+        p.x = std::max(p.x, 0.0f);
     return out;
 }
 
 MeshData vase() {
     MeshData mesh;
-    std::vector<glm::vec2> keys = {{0.0f, -1.0f}, {0.45f, -1.0f}, {0.5f, -0.95f}, {0.62f, -0.6f}, {0.7f, -0.1f},
-                                   {0.55f, 0.35f}, {0.3f, 0.7f}, {0.28f, 0.85f}, {0.38f, 0.98f}, {0.3f, 1.0f},
-                                   {0.0f, 1.0f}};
+    std::vector<glm::vec2> keys = {{0.0f, -1.0f},  {0.45f, -1.0f}, {0.5f, -0.95f}, {0.62f, -0.6f},
+                                   {0.7f, -0.1f},  {0.55f, 0.35f}, {0.3f, 0.7f},   {0.28f, 0.85f},
+                                   {0.38f, 0.98f}, {0.3f, 1.0f},   {0.0f, 1.0f}};
     addLathe(mesh, smoothProfile(keys, 8), 96);
     return mesh;
 }
@@ -170,15 +173,12 @@ MeshData vase() {
 MeshData teapot() {
     // A lathe-turned body and lid with a tube spout and handle: teapot-like, not Newell's patches.
     MeshData mesh;
-    std::vector<glm::vec2> keys = {{0.0f, -0.75f}, {0.55f, -0.75f}, {0.85f, -0.45f}, {0.95f, -0.05f}, {0.8f, 0.35f},
-                                   {0.55f, 0.5f},  {0.5f, 0.55f},   {0.3f, 0.62f},   {0.1f, 0.7f},   {0.12f, 0.82f},
-                                   {0.0f, 0.9f}};
+    std::vector<glm::vec2> keys = {{0.0f, -0.75f}, {0.55f, -0.75f}, {0.85f, -0.45f}, {0.95f, -0.05f},
+                                   {0.8f, 0.35f},  {0.55f, 0.5f},   {0.5f, 0.55f},   {0.3f, 0.62f},
+                                   {0.1f, 0.7f},   {0.12f, 0.82f},  {0.0f, 0.9f}};
     addLathe(mesh, smoothProfile(keys, 8), 96);
     addTube(
-        mesh,
-        [](float t) {
-            return glm::vec3(0.7f + 0.75f * t, -0.2f + 0.75f * t * t + 0.1f * t, 0.0f);
-        },
+        mesh, [](float t) { return glm::vec3(0.7f + 0.75f * t, -0.2f + 0.75f * t * t + 0.1f * t, 0.0f); },
         [](float t) { return 0.2f - 0.11f * t; }, 24, 24);
     addTube(
         mesh,

@@ -73,7 +73,9 @@ struct CpuRenderer::Impl {
             if (w > 0.0) sum += w * (source ? sourceAt(t.whereX[k], t.whereY[k]) : backgroundLinear);
             return sum;
         }
-        return c >= 0 ? paletteLinear[std::size_t(c)] : source ? sourceAt(t.whereX[k], t.whereY[k]) : backgroundLinear;
+        return c >= 0   ? paletteLinear[std::size_t(c)]
+               : source ? sourceAt(t.whereX[k], t.whereY[k])
+                        : backgroundLinear;
     }
 
     /// The kernel's bleed record for a tile's outputs, or null when the genome has no bleed.
@@ -105,15 +107,15 @@ glm::dvec3 linearOf(Color c) {
 
 void checkRows(const RenderSettings& settings, int y0, int y1) {
     if (y0 < 0 || y1 > settings.height || y0 > y1)
-        throw InputError("rows " + std::to_string(y0) + ".." + std::to_string(y1) + " are outside the raster of " +
-                         std::to_string(settings.height) + " rows");
+        throw InputError("rows " + std::to_string(y0) + ".." + std::to_string(y1) +
+                         " are outside the raster of " + std::to_string(settings.height) + " rows");
 }
 
 } // namespace
 
 template <typename MakeShader>
-void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1, const RenderControl* control,
-                                  const MakeShader& makeShader) const {
+void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1,
+                                  const RenderControl* control, const MakeShader& makeShader) const {
     const AaPattern pattern = aaPattern(settings.aa);
     const SampleFrame frame = sampleFrame(shape, settings);
     const int width = settings.width;
@@ -155,9 +157,11 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
                     }
                 }
                 const int n = pixels * samples;
-                for (int k = 0; k < n; ++k) tile->id[k] = k;
+                for (int k = 0; k < n; ++k)
+                    tile->id[k] = k;
                 kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
-                                  source ? whereX.data() : nullptr, whereY.data(), layers ? &*layers : nullptr);
+                                  source ? whereX.data() : nullptr, whereY.data(),
+                                  layers ? &*layers : nullptr);
                 shade(j, i0, pixels, traced);
             }
             rowLoop.done();
@@ -167,18 +171,19 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
 }
 
 template <typename Emit>
-void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int y1, const RenderControl* control,
-                                     const Emit& emit) const {
+void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int y1,
+                                     const RenderControl* control, const Emit& emit) const {
     const AaPattern pattern = aaPattern(settings.aa);
     const int samples = static_cast<int>(pattern.offsets.size());
     const int width = settings.width;
     traceRows(settings, y0, y1, control, [&] {
         // A worker traces each of its rows whole, left to right, into its own row buffer.
         return [&, line = std::vector<double>(std::size_t(width) * 3)](int j, int i0, int pixels,
-                                                                     const Traced& traced) mutable {
+                                                                       const Traced& traced) mutable {
             for (int p = 0, k = 0; p < pixels; ++p) {
                 glm::dvec3 sum(0.0);
-                for (int s = 0; s < samples; ++s, ++k) sum += pattern.weights[s] * linearAt(traced, k);
+                for (int s = 0; s < samples; ++s, ++k)
+                    sum += pattern.weights[s] * linearAt(traced, k);
                 double* out = line.data() + std::size_t(i0 + p) * 3;
                 out[0] = sum.x;
                 out[1] = sum.y;
@@ -189,7 +194,8 @@ void CpuRenderer::Impl::renderLinear(const RenderSettings& settings, int y0, int
     });
 }
 
-CpuRenderer::CpuRenderer(const Genome& genome) : mImpl(std::make_unique<Impl>()) {
+CpuRenderer::CpuRenderer(const Genome& genome)
+    : mImpl(std::make_unique<Impl>()) {
     mImpl->dimension = genome.dimension;
     mImpl->size = genome.size;
     mImpl->shape.dimension = genome.dimension;
@@ -200,15 +206,16 @@ CpuRenderer::CpuRenderer(const Genome& genome) : mImpl(std::make_unique<Impl>())
         if (op.color >= static_cast<int>(genome.palette.size()))
             throw InputError("colour index " + std::to_string(op.color) + " is outside the palette of " +
                              std::to_string(genome.palette.size()) + " inks");
-    for (Color c : genome.palette) mImpl->paletteLinear.push_back(linearOf(c));
+    for (Color c : genome.palette)
+        mImpl->paletteLinear.push_back(linearOf(c));
     mImpl->backgroundLinear = linearOf(genome.background);
     auto encode = [](const glm::dvec3& v) {
         return std::array<std::uint8_t, 3>{encodeSrgb8(v.x), encodeSrgb8(v.y), encodeSrgb8(v.z)};
     };
-    for (const glm::dvec3& v : mImpl->paletteLinear) mImpl->paletteSrgb8.push_back(encode(v));
+    for (const glm::dvec3& v : mImpl->paletteLinear)
+        mImpl->paletteSrgb8.push_back(encode(v));
     mImpl->backgroundSrgb8 = encode(mImpl->backgroundLinear);
-    if (genome.source && genome.dimension == 2)
-        mImpl->source = decodeSourceImage(genome);
+    if (genome.source && genome.dimension == 2) mImpl->source = decodeSourceImage(genome);
     mImpl->bleed = genome.bleed;
 }
 
@@ -221,11 +228,13 @@ Genome withoutSource(Genome genome) {
 
 } // namespace
 
-CpuRenderer::CpuRenderer(const Genome& genome, LinearRaster source) : CpuRenderer(withoutSource(genome)) {
+CpuRenderer::CpuRenderer(const Genome& genome, LinearRaster source)
+    : CpuRenderer(withoutSource(genome)) {
     if (source.width < 1 || source.height < 1 ||
         source.rgb.size() != std::size_t(source.width) * std::size_t(source.height) * 3)
-        throw InputError("a source image of " + std::to_string(source.width) + " x " + std::to_string(source.height) +
-                         " pixels with " + std::to_string(source.rgb.size()) + " values");
+        throw InputError("a source image of " + std::to_string(source.width) + " x " +
+                         std::to_string(source.height) + " pixels with " + std::to_string(source.rgb.size()) +
+                         " values");
     if (genome.dimension == 2) mImpl->source = std::move(source);
 }
 
@@ -260,8 +269,8 @@ void CpuRenderer::renderRows(const RenderSettings& settings, int y0, int y1, std
                 for (int p = 0; p < pixels; ++p, out += 3) {
                     const int c = traced.colors[p];
                     if (c >= 0 || !impl.source) {
-                        const std::uint8_t* code = c >= 0 ? impl.paletteSrgb8[std::size_t(c)].data()
-                                                          : impl.backgroundSrgb8.data();
+                        const std::uint8_t* code =
+                            c >= 0 ? impl.paletteSrgb8[std::size_t(c)].data() : impl.backgroundSrgb8.data();
                         out[0] = code[0];
                         out[1] = code[1];
                         out[2] = code[2];
@@ -301,7 +310,8 @@ void CpuRenderer::renderRowsLinear(const RenderSettings& settings, int y0, int y
     const std::size_t stride = std::size_t(settings.width) * 3;
     mImpl->renderLinear(settings, y0, y1, control, [&](int j, const double* line) {
         float* out = rgb + std::size_t(j - y0) * stride;
-        for (std::size_t k = 0; k < stride; ++k) out[k] = static_cast<float>(line[k]);
+        for (std::size_t k = 0; k < stride; ++k)
+            out[k] = static_cast<float>(line[k]);
     });
 }
 
@@ -312,7 +322,8 @@ CpuKernelInfo cpuKernel() {
 
 std::vector<std::string> cpuKernelsSupported() {
     std::vector<std::string> names;
-    for (kernel::Variant v : kernel::supportedVariants()) names.emplace_back(kernel::variantName(v));
+    for (kernel::Variant v : kernel::supportedVariants())
+        names.emplace_back(kernel::variantName(v));
     return names;
 }
 
@@ -334,8 +345,8 @@ int CpuRenderer::colorIndexAt(const glm::dvec3& p) const {
     tile->z[0] = mImpl->dimension == 3 ? p.z : 0.0;
     tile->id[0] = 0;
     int color = -1;
-    kernel::traceTile(mImpl->reversed.data(), mImpl->reversed.size(), mImpl->dimension, *tile, 1, &color, nullptr,
-                      nullptr);
+    kernel::traceTile(mImpl->reversed.data(), mImpl->reversed.size(), mImpl->dimension, *tile, 1, &color,
+                      nullptr, nullptr);
     return color;
 }
 

@@ -82,9 +82,11 @@ private:
 
 class MemorySource final : public ByteSource {
 public:
-    explicit MemorySource(std::span<const unsigned char> bytes) : mBytes(bytes) {}
+    explicit MemorySource(std::span<const unsigned char> bytes)
+        : mBytes(bytes) {}
     std::size_t read(void* data, std::size_t size) override {
-        std::size_t got = mOffset >= mBytes.size() ? 0 : std::min<std::size_t>(size, mBytes.size() - std::size_t(mOffset));
+        std::size_t got =
+            mOffset >= mBytes.size() ? 0 : std::min<std::size_t>(size, mBytes.size() - std::size_t(mOffset));
         if (got) std::memcpy(data, mBytes.data() + mOffset, got);
         mOffset += got;
         return got;
@@ -160,8 +162,7 @@ void pngReadData(png_structp png, png_bytep data, size_t size) {
     if (reader->source->read(data, size) != size) png_error(png, "the file ends too early (truncated)");
 }
 
-template <typename Body>
-bool pngCall(PngReader& reader, Body body) {
+template <typename Body> bool pngCall(PngReader& reader, Body body) {
     if (setjmp(png_jmpbuf(reader.png))) return false;
     body();
     return true;
@@ -219,19 +220,22 @@ std::optional<std::string> readPngGenome(ByteSource& source, const std::string& 
     // Deflate packs a thousand bytes into one, so a small hostile file can claim gigabytes of
     // rows: past MaxScannedPixelBytes the rows are not decoded and only the chunks before the
     // image data count.
-    if (double(rowBytes) * double(height) * double(passes) > double(MaxScannedPixelBytes)) return std::nullopt;
+    if (double(rowBytes) * double(height) * double(passes) > double(MaxScannedPixelBytes))
+        return std::nullopt;
     std::vector<png_byte> row(std::max<std::size_t>(rowBytes, 1));
     png_bytep rowData = row.data();
     ok = pngCall(reader, [&] {
         for (int pass = 0; pass < passes; ++pass)
-            for (png_uint_32 y = 0; y < height; ++y) png_read_row(reader.png, rowData, nullptr);
+            for (png_uint_32 y = 0; y < height; ++y)
+                png_read_row(reader.png, rowData, nullptr);
         png_read_end(reader.png, reader.endInfo);
     });
     if (!ok) fail(reader.message);
     if (std::optional<std::string> text = genomeInText(reader.png, reader.endInfo)) return text;
     if (reader.textWarning[0] != '\0')
-        throw InputError(name + " is an image without a readable Marbler genome in it (a text chunk could not be read: " +
-                         oneLine(reader.textWarning) + ")");
+        throw InputError(
+            name + " is an image without a readable Marbler genome in it (a text chunk could not be read: " +
+            oneLine(reader.textWarning) + ")");
     return std::nullopt;
 }
 
@@ -252,36 +256,49 @@ int tiffReadError(TIFF*, void* data, const char* module, const char* format, va_
     return 1; // handled: nothing reaches the process-wide handler
 }
 
-int tiffReadWarning(TIFF*, void*, const char*, const char*, va_list) { return 1; }
+int tiffReadWarning(TIFF*, void*, const char*, const char*, va_list) {
+    return 1;
+}
 
 tmsize_t tiffRead(thandle_t handle, void* data, tmsize_t size) {
     auto* reader = static_cast<TiffReader*>(handle);
     return size < 0 ? -1 : tmsize_t(reader->source->read(data, std::size_t(size)));
 }
-tmsize_t tiffWrite(thandle_t, void*, tmsize_t) { return -1; }
+tmsize_t tiffWrite(thandle_t, void*, tmsize_t) {
+    return -1;
+}
 toff_t tiffSeek(thandle_t handle, toff_t offset, int whence) {
     ByteSource& source = *static_cast<TiffReader*>(handle)->source;
     std::uint64_t target = offset;
-    if (whence == SEEK_CUR) target = source.tell() + offset;
-    else if (whence == SEEK_END) target = source.size() + offset;
+    if (whence == SEEK_CUR)
+        target = source.tell() + offset;
+    else if (whence == SEEK_END)
+        target = source.size() + offset;
     return source.seek(target) ? target : toff_t(-1);
 }
-int tiffClose(thandle_t) { return 0; }
-toff_t tiffSize(thandle_t handle) { return static_cast<TiffReader*>(handle)->source->size(); }
-int tiffMap(thandle_t, void**, toff_t*) { return 0; }
+int tiffClose(thandle_t) {
+    return 0;
+}
+toff_t tiffSize(thandle_t handle) {
+    return static_cast<TiffReader*>(handle)->source->size();
+}
+int tiffMap(thandle_t, void**, toff_t*) {
+    return 0;
+}
 void tiffUnmap(thandle_t, void*, toff_t) {}
 
 std::optional<std::string> readTiffGenome(ByteSource& source, const std::string& name) {
     TiffReader reader;
     reader.source = &source;
-    std::unique_ptr<TIFFOpenOptions, void (*)(TIFFOpenOptions*)> options(TIFFOpenOptionsAlloc(), TIFFOpenOptionsFree);
+    std::unique_ptr<TIFFOpenOptions, void (*)(TIFFOpenOptions*)> options(TIFFOpenOptionsAlloc(),
+                                                                         TIFFOpenOptionsFree);
     if (!options) throw InputError(name + ": cannot read the TIFF: out of memory");
     TIFFOpenOptionsSetMaxSingleMemAlloc(options.get(), tmsize_t(MaxTiffAllocation));
     TIFFOpenOptionsSetErrorHandlerExtR(options.get(), tiffReadError, &reader);
     TIFFOpenOptionsSetWarningHandlerExtR(options.get(), tiffReadWarning, &reader);
     // "m": no memory mapping, every byte comes through the source.
-    TIFF* tiff = TIFFClientOpenExt(name.c_str(), "rm", &reader, tiffRead, tiffWrite, tiffSeek, tiffClose, tiffSize,
-                                   tiffMap, tiffUnmap, options.get());
+    TIFF* tiff = TIFFClientOpenExt(name.c_str(), "rm", &reader, tiffRead, tiffWrite, tiffSeek, tiffClose,
+                                   tiffSize, tiffMap, tiffUnmap, options.get());
     if (!tiff)
         throw InputError(name + ": cannot read the TIFF: " +
                          oneLine(reader.error.empty() ? "not a readable TIFF file" : reader.error));
@@ -301,7 +318,8 @@ std::optional<std::string> readTiffGenome(ByteSource& source, const std::string&
     if (TIFFGetField(tiff, TIFFTAG_IMAGEDESCRIPTION, &description) && description) {
         std::string_view text(description);
         if (text.find("\"marbler-genome\"") != std::string_view::npos &&
-            text.find_first_not_of(" \t\r\n") != std::string_view::npos && text[text.find_first_not_of(" \t\r\n")] == '{')
+            text.find_first_not_of(" \t\r\n") != std::string_view::npos &&
+            text[text.find_first_not_of(" \t\r\n")] == '{')
             return std::string(text);
     }
     if (!reader.error.empty()) throw InputError(name + ": cannot read the TIFF: " + oneLine(reader.error));
@@ -311,7 +329,8 @@ std::optional<std::string> readTiffGenome(ByteSource& source, const std::string&
 std::optional<std::string> readFromSource(ByteSource& source, ImageKind kind, const std::string& name) {
     if (kind == ImageKind::Png) return readPngGenome(source, name);
     if (kind == ImageKind::Tiff) return readTiffGenome(source, name);
-    throw InputError(name + " is a " + imageKindName(kind) + " image; only PNG and TIFF images carry a Marbler genome");
+    throw InputError(name + " is a " + imageKindName(kind) +
+                     " image; only PNG and TIFF images carry a Marbler genome");
 }
 
 // --- XMP --------------------------------------------------------------------------------------
@@ -352,21 +371,27 @@ std::string decodeXmlText(std::string_view text) {
             continue;
         }
         std::size_t semi = text.find(';', i);
-        std::string_view entity = semi == std::string_view::npos || semi - i > 12 ? std::string_view()
-                                                                                   : text.substr(i + 1, semi - i - 1);
+        std::string_view entity = semi == std::string_view::npos || semi - i > 12
+                                      ? std::string_view()
+                                      : text.substr(i + 1, semi - i - 1);
         std::uint32_t code = 0;
         bool known = true;
-        if (entity == "lt") code = '<';
-        else if (entity == "gt") code = '>';
-        else if (entity == "amp") code = '&';
-        else if (entity == "quot") code = '"';
-        else if (entity == "apos") code = '\'';
+        if (entity == "lt")
+            code = '<';
+        else if (entity == "gt")
+            code = '>';
+        else if (entity == "amp")
+            code = '&';
+        else if (entity == "quot")
+            code = '"';
+        else if (entity == "apos")
+            code = '\'';
         else if (entity.size() > 1 && entity[0] == '#') {
             const bool hex = entity[1] == 'x' || entity[1] == 'X';
             std::string_view digits = entity.substr(hex ? 2 : 1);
             known = !digits.empty();
             for (char c : digits) {
-                int v = c >= '0' && c <= '9' ? c - '0'
+                int v = c >= '0' && c <= '9'          ? c - '0'
                         : hex && c >= 'a' && c <= 'f' ? c - 'a' + 10
                         : hex && c >= 'A' && c <= 'F' ? c - 'A' + 10
                                                       : -1;
@@ -390,7 +415,9 @@ std::string decodeXmlText(std::string_view text) {
     return out;
 }
 
-bool isXmlSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool isXmlSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
 
 bool isNameChar(char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' ||
@@ -402,17 +429,21 @@ std::vector<std::string> prefixesOf(std::string_view xml) {
     std::vector<std::string> prefixes;
     for (std::size_t at = xml.find("xmlns:"); at != std::string_view::npos; at = xml.find("xmlns:", at + 6)) {
         std::size_t end = at + 6;
-        while (end < xml.size() && isNameChar(xml[end])) ++end;
+        while (end < xml.size() && isNameChar(xml[end]))
+            ++end;
         std::string prefix(xml.substr(at + 6, end - at - 6));
-        while (end < xml.size() && isXmlSpace(xml[end])) ++end;
+        while (end < xml.size() && isXmlSpace(xml[end]))
+            ++end;
         if (end >= xml.size() || xml[end] != '=') continue;
         ++end;
-        while (end < xml.size() && isXmlSpace(xml[end])) ++end;
+        while (end < xml.size() && isXmlSpace(xml[end]))
+            ++end;
         if (end >= xml.size() || (xml[end] != '"' && xml[end] != '\'')) continue;
         const char quote = xml[end];
         std::size_t close = xml.find(quote, end + 1);
         if (close == std::string_view::npos) break;
-        if (!prefix.empty() && xml.substr(end + 1, close - end - 1) == XmpNamespace) prefixes.push_back(prefix);
+        if (!prefix.empty() && xml.substr(end + 1, close - end - 1) == XmpNamespace)
+            prefixes.push_back(prefix);
     }
     return prefixes;
 }
@@ -425,27 +456,37 @@ ImageKind imageKindOf(std::span<const unsigned char> head) {
         return std::equal(magic.begin(), magic.end(), head.begin() + std::ptrdiff_t(at));
     };
     if (starts({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'})) return ImageKind::Png;
-    if (starts({'I', 'I', 42, 0}) || starts({'M', 'M', 0, 42}) || starts({'I', 'I', 43, 0}) || starts({'M', 'M', 0, 43}))
+    if (starts({'I', 'I', 42, 0}) || starts({'M', 'M', 0, 42}) || starts({'I', 'I', 43, 0}) ||
+        starts({'M', 'M', 0, 43}))
         return ImageKind::Tiff;
     if (starts({0xff, 0xd8, 0xff})) return ImageKind::Jpeg;
     if (starts({'G', 'I', 'F', '8'})) return ImageKind::Gif;
     if (starts({'R', 'I', 'F', 'F'}) && starts({'W', 'E', 'B', 'P'}, 8)) return ImageKind::Webp;
     if (starts({0x76, 0x2f, 0x31, 0x01})) return ImageKind::Exr;
-    if (starts({'B', 'M'}) && head.size() >= 14 && head[6] == 0 && head[7] == 0 && head[8] == 0 && head[9] == 0)
+    if (starts({'B', 'M'}) && head.size() >= 14 && head[6] == 0 && head[7] == 0 && head[8] == 0 &&
+        head[9] == 0)
         return ImageKind::Bmp; // "BM", then reserved bytes that are always zero
     return ImageKind::NotAnImage;
 }
 
 const char* imageKindName(ImageKind kind) {
     switch (kind) {
-    case ImageKind::NotAnImage: return "non-image";
-    case ImageKind::Png: return "PNG";
-    case ImageKind::Tiff: return "TIFF";
-    case ImageKind::Jpeg: return "JPEG";
-    case ImageKind::Gif: return "GIF";
-    case ImageKind::Webp: return "WebP";
-    case ImageKind::Exr: return "OpenEXR";
-    case ImageKind::Bmp: return "BMP";
+    case ImageKind::NotAnImage:
+        return "non-image";
+    case ImageKind::Png:
+        return "PNG";
+    case ImageKind::Tiff:
+        return "TIFF";
+    case ImageKind::Jpeg:
+        return "JPEG";
+    case ImageKind::Gif:
+        return "GIF";
+    case ImageKind::Webp:
+        return "WebP";
+    case ImageKind::Exr:
+        return "OpenEXR";
+    case ImageKind::Bmp:
+        return "BMP";
     }
     return "unknown";
 }
@@ -454,17 +495,22 @@ std::string genomeXmpPacket(const std::string& genomeText) {
     std::string escaped;
     escaped.reserve(genomeText.size() + genomeText.size() / 16);
     for (char c : genomeText) {
-        if (c == '&') escaped += "&amp;";
-        else if (c == '<') escaped += "&lt;";
-        else if (c == '>') escaped += "&gt;";
-        else escaped += c;
+        if (c == '&')
+            escaped += "&amp;";
+        else if (c == '<')
+            escaped += "&lt;";
+        else if (c == '>')
+            escaped += "&gt;";
+        else
+            escaped += c;
     }
     return std::string("<?xpacket begin=\"\xEF\xBB\xBF\" id=\"W5M0MpCehiHzreSzNTczkc9d\"?>\n"
                        "<x:xmpmeta xmlns:x=\"adobe:ns:meta/\">\n"
                        " <rdf:RDF xmlns:rdf=\"http://www.w3.org/1999/02/22-rdf-syntax-ns#\">\n"
                        "  <rdf:Description rdf:about=\"\" xmlns:") +
-           XmpPrefix + "=\"" + XmpNamespace + "\">\n   <" + XmpPrefix + ":" + XmpProperty + ">" + escaped + "</" +
-           XmpPrefix + ":" + XmpProperty + ">\n  </rdf:Description>\n </rdf:RDF>\n</x:xmpmeta>\n<?xpacket end=\"w\"?>";
+           XmpPrefix + "=\"" + XmpNamespace + "\">\n   <" + XmpPrefix + ":" + XmpProperty + ">" + escaped +
+           "</" + XmpPrefix + ":" + XmpProperty +
+           ">\n  </rdf:Description>\n </rdf:RDF>\n</x:xmpmeta>\n<?xpacket end=\"w\"?>";
 }
 
 std::optional<std::string> genomeFromXmp(std::string_view xml) {
@@ -484,10 +530,12 @@ std::optional<std::string> genomeFromXmp(std::string_view xml) {
             if (isXmlSpace(xml[at - 1])) {
                 // Attribute form, as some tools write simple properties: marbler:genome="text".
                 std::size_t eq = after;
-                while (eq < xml.size() && isXmlSpace(xml[eq])) ++eq;
+                while (eq < xml.size() && isXmlSpace(xml[eq]))
+                    ++eq;
                 if (eq >= xml.size() || xml[eq] != '=') continue;
                 std::size_t quote = eq + 1;
-                while (quote < xml.size() && isXmlSpace(xml[quote])) ++quote;
+                while (quote < xml.size() && isXmlSpace(xml[quote]))
+                    ++quote;
                 if (quote >= xml.size() || (xml[quote] != '"' && xml[quote] != '\'')) continue;
                 std::size_t close = xml.find(xml[quote], quote + 1);
                 if (close == std::string_view::npos) continue;
@@ -498,7 +546,8 @@ std::optional<std::string> genomeFromXmp(std::string_view xml) {
     return std::nullopt;
 }
 
-std::optional<std::string> readGenomeText(const std::filesystem::path& file, ImageKind kind, const std::string& name) {
+std::optional<std::string> readGenomeText(const std::filesystem::path& file, ImageKind kind,
+                                          const std::string& name) {
     FileSource source(file, name);
     return readFromSource(source, kind, name);
 }

@@ -58,7 +58,8 @@ std::vector<unsigned char> decodeBase64(std::string_view text) {
 
 ImageIoModule& imageIoModule() {
     static ImageIoModule* module = [] {
-        auto entry = reinterpret_cast<ImageIoModule* (*)()>(moduleEntry(ImageIoModuleFile, ImageIoModuleEntry));
+        auto entry =
+            reinterpret_cast<ImageIoModule* (*)()>(moduleEntry(ImageIoModuleFile, ImageIoModuleEntry));
         return entry();
     }();
     return *module;
@@ -74,10 +75,14 @@ LinearRaster decodeDataUri(const std::string& text) {
         throw InputError("source image " + name + ": only base64 data URLs are supported");
     std::string mime = header.substr(0, header.size() - 7);
     std::string extension = "png";
-    if (mime == "image/jpeg" || mime == "image/jpg") extension = "jpg";
-    else if (mime == "image/tiff") extension = "tif";
-    else if (mime == "image/bmp") extension = "bmp";
-    else if (mime == "image/x-exr") extension = "exr";
+    if (mime == "image/jpeg" || mime == "image/jpg")
+        extension = "jpg";
+    else if (mime == "image/tiff")
+        extension = "tif";
+    else if (mime == "image/bmp")
+        extension = "bmp";
+    else if (mime == "image/x-exr")
+        extension = "exr";
     std::vector<unsigned char> bytes;
     try {
         bytes = decodeBase64(std::string_view(text).substr(comma + 1));
@@ -111,10 +116,10 @@ LinearRaster decodeSourceImage(const Genome& genome) {
 
 namespace {
 
-using detail::ImageSink;
-using detail::SinkTarget;
 using detail::imageIoModule;
+using detail::ImageSink;
 using detail::openBuiltinSink;
+using detail::SinkTarget;
 
 /// Rows of a strip: several strips an image, so writing one overlaps rendering the next, and at
 /// most about two megapixels a strip, so memory stays bounded at poster sizes.
@@ -127,7 +132,8 @@ int stripRows(int width, int height) {
 /// renamed over the target only by commit(); destroyed uncommitted, it leaves nothing behind.
 class AtomicImageFile {
 public:
-    AtomicImageFile(const fs::path& file, int width, int height, const ExportOptions& options) : mFile(file) {
+    AtomicImageFile(const fs::path& file, int width, int height, const ExportOptions& options)
+        : mFile(file) {
         SinkTarget target{
             mFile.temporary().string(), lowerExtension(file), file.string(), width, height, options};
         mSink = openBuiltinSink(target);
@@ -161,7 +167,8 @@ private:
 /// write is in flight; wait() returns when it is done and rethrows what it threw.
 class StripWriter {
 public:
-    explicit StripWriter(AtomicImageFile& out) : mOut(out) {}
+    explicit StripWriter(AtomicImageFile& out)
+        : mOut(out) {}
     ~StripWriter() {
         if (mThread.joinable()) mThread.join();
     }
@@ -203,7 +210,8 @@ void writeImage(const Image& image, const fs::path& file, const ExportOptions& o
             int y1 = std::min(image.height, y0 + rows);
             strip.resize(std::size_t(y1 - y0) * std::size_t(image.width) * 3);
             const std::uint8_t* src = image.row(y0);
-            for (std::size_t k = 0; k < strip.size(); ++k) strip[k] = table[src[k]];
+            for (std::size_t k = 0; k < strip.size(); ++k)
+                strip[k] = table[src[k]];
             out.writeRows(y0, y1, strip.data());
         }
     }
@@ -227,8 +235,10 @@ void renderToFile(const Genome& genome, const RenderSettings& settings, const fs
     std::vector<std::uint8_t> bytes[2];
     std::vector<float> floats[2];
     for (int b = 0; b < 2; ++b) {
-        if (linear) floats[b].resize(stripValues);
-        else bytes[b].resize(stripValues);
+        if (linear)
+            floats[b].resize(stripValues);
+        else
+            bytes[b].resize(stripValues);
     }
     StripWriter writer(out);
     int buffer = 0;

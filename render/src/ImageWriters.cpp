@@ -14,10 +14,10 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstdint>
 #include <cmath>
 #include <csetjmp>
 #include <cstdarg>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <mutex>
@@ -61,8 +61,7 @@ void pngError(png_structp png, png_const_charp message) {
 
 void pngWarning(png_structp, png_const_charp) {}
 
-template <typename Body>
-bool pngCall(PngState& state, Body body) {
+template <typename Body> bool pngCall(PngState& state, Body body) {
     if (setjmp(png_jmpbuf(state.png))) return false;
     body();
     return true;
@@ -70,7 +69,8 @@ bool pngCall(PngState& state, Body body) {
 
 class PngSink final : public ImageSink {
 public:
-    explicit PngSink(const SinkTarget& target) : mTarget(target) {
+    explicit PngSink(const SinkTarget& target)
+        : mTarget(target) {
         mFile.handle = std::fopen(target.file.c_str(), "wb");
         if (!mFile.handle) failWrite(target, std::strerror(errno));
         mState.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &mState, pngError, pngWarning);
@@ -100,8 +100,9 @@ public:
             // "up" and "sub" filters keeps files small at several times the default's speed.
             png_set_compression_level(mState.png, 3);
             png_set_filter(mState.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_UP);
-            png_set_IHDR(mState.png, mState.info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
-                         PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+            png_set_IHDR(mState.png, mState.info, png_uint_32(width), png_uint_32(height), 8,
+                         PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
+                         PNG_FILTER_TYPE_BASE);
             png_set_sRGB(mState.png, mState.info, PNG_sRGB_INTENT_PERCEPTUAL);
             if (dpi) {
                 auto perMetre = png_uint_32(std::lround(*dpi / 0.0254));
@@ -156,7 +157,9 @@ void tiffError(const char* module, const char* format, va_list args) {
 
 class TiffSink final : public ImageSink {
 public:
-    explicit TiffSink(const SinkTarget& target) : mTarget(target), mDeep(target.options.bitsPerSample == 16) {
+    explicit TiffSink(const SinkTarget& target)
+        : mTarget(target)
+        , mDeep(target.options.bitsPerSample == 16) {
         if (target.options.bitsPerSample != 8 && target.options.bitsPerSample != 16)
             throw InputError("'" + target.displayName + "': a TIFF holds 8 or 16 bits a sample (got " +
                              std::to_string(target.options.bitsPerSample) + ")");
@@ -211,7 +214,8 @@ public:
             const auto* linear = static_cast<const float*>(rows);
             deep.resize(std::size_t(y1 - y0) * std::size_t(mTarget.width) * 3);
             for (std::size_t k = 0; k < deep.size(); ++k)
-                deep[k] = std::uint16_t(std::lround(linearToSrgb(std::clamp(double(linear[k]), 0.0, 1.0)) * 65535.0));
+                deep[k] = std::uint16_t(
+                    std::lround(linearToSrgb(std::clamp(double(linear[k]), 0.0, 1.0)) * 65535.0));
             bytes = reinterpret_cast<const unsigned char*>(deep.data());
         }
         for (int y = y0; y < y1; ++y) {
@@ -254,7 +258,8 @@ private:
 /// Binary PPM (P6): uncompressed, for pipelines and comparisons.
 class PpmSink final : public ImageSink {
 public:
-    explicit PpmSink(const SinkTarget& target) : mTarget(target) {
+    explicit PpmSink(const SinkTarget& target)
+        : mTarget(target) {
         mFile.handle = std::fopen(target.file.c_str(), "wb");
         if (!mFile.handle) failWrite(target, std::strerror(errno));
         if (std::fprintf(mFile.handle, "P6\n%d %d\n255\n", target.width, target.height) < 0)
@@ -305,11 +310,14 @@ std::string builtinImageFormats() {
     // TIFFGetVersion() is a paragraph ("LIBTIFF, Version 4.5.0\nCopyright ..."): keep the number.
     std::string tiff = TIFFGetVersion();
     std::size_t version = tiff.find("Version ");
-    tiff = version == std::string::npos ? "" : tiff.substr(version + 8, tiff.find('\n', version) - version - 8);
+    tiff =
+        version == std::string::npos ? "" : tiff.substr(version + 8, tiff.find('\n', version) - version - 8);
     return std::string("PNG (libpng ") + png_get_libpng_ver(nullptr) + "), TIFF (libtiff " + tiff + "), PPM";
 }
 
-std::string openImageIoVersion() { return detail::imageIoModule().version(); }
+std::string openImageIoVersion() {
+    return detail::imageIoModule().version();
+}
 
 std::optional<std::string> loadedOpenImageIoVersion() {
     if (!moduleLoaded(detail::ImageIoModuleFile)) return std::nullopt;

@@ -116,9 +116,9 @@ constexpr double C1 = 4.16666666666666019037e-02, C2 = -1.38888888888741095749e-
 /// Fills sinOut/cosOut for the first n angles; angles too large for the fast reduction are
 /// redone with the library (rare: near a vortex centre, or a tiny wavelength).
 [[gnu::always_inline]] inline void sinCosArray(const double* __restrict angle, double* __restrict sinOut,
-                                       double* __restrict cosOut, int n) {
+                                               double* __restrict cosOut, int n) {
     std::int64_t large = 0;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double s, c;
         sinCos(angle[i], s, c);
@@ -135,15 +135,14 @@ MARBLER_IVDEP
 }
 
 [[gnu::always_inline]] inline void sinArray(const double* __restrict angle, double* __restrict sinOut,
-                                    double* __restrict scratch, int n) {
+                                            double* __restrict scratch, int n) {
     sinCosArray(angle, sinOut, scratch, n);
 }
 
 /// Moves `count` entries from `from` down to `to` (to < from; the ranges may overlap). Copying
 /// forward in blocks is safe when moving down: a block is read before any later block's
 /// destination, which lies below that block's source, is written.
-template <typename T>
-[[gnu::always_inline]] inline void slide(T* a, int to, int from, int count) {
+template <typename T> [[gnu::always_inline]] inline void slide(T* a, int to, int from, int count) {
     constexpr int Block = 64 / sizeof(T);
     int k = 0;
     for (; k + Block <= count; k += Block) {
@@ -151,7 +150,8 @@ template <typename T>
         std::memcpy(block, a + from + k, sizeof(block));
         std::memcpy(a + to + k, block, sizeof(block));
     }
-    for (; k < count; ++k) a[to + k] = a[from + k];
+    for (; k < count; ++k)
+        a[to + k] = a[from + k];
 }
 
 /// Whether the 8 flags from i are all clear (or all set).
@@ -171,12 +171,15 @@ template <typename T>
     const std::int64_t* __restrict flag = t.flag;
     const int* __restrict id = t.id;
     int i = 0;
-    while (i + 8 <= n && noneSet8(flag + i)) i += 8;
-    while (i < n && !flag[i]) ++i;
+    while (i + 8 <= n && noneSet8(flag + i))
+        i += 8;
+    while (i < n && !flag[i])
+        ++i;
     int j = i;
     while (i < n) {
         while (i + 8 <= n && allSet8(flag + i)) {
-            for (int k = 0; k < 8; ++k) colors[id[i + k]] = color;
+            for (int k = 0; k < 8; ++k)
+                colors[id[i + k]] = color;
             i += 8;
         }
         while (i < n && flag[i]) {
@@ -184,8 +187,10 @@ template <typename T>
             ++i;
         }
         const int start = i;
-        while (i + 8 <= n && noneSet8(flag + i)) i += 8;
-        while (i < n && !flag[i]) ++i;
+        while (i + 8 <= n && noneSet8(flag + i))
+            i += 8;
+        while (i < n && !flag[i])
+            ++i;
         const int count = i - start;
         slide(t.x, j, start, count);
         slide(t.y, j, start, count);
@@ -206,7 +211,7 @@ template <typename T>
     std::int64_t* __restrict flag = t.flag;
     const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r, r2 = op.rPow;
     std::int64_t inside = 0;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy;
         double len2 = dx * dx + dy * dy;
@@ -243,8 +248,8 @@ MARBLER_IVDEP
 /// cube root as x y^2: within a few ulps of the reference. Sets `bad` for the live lanes that
 /// need the exact form: len2 not a moderate normal double, or a point outside the ink with x
 /// below 1e-30 (float's range for the guess; only a hair from the ink's edge).
-[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline __m512d dropFactor3(
-    __m512d len2, __m512d r3, __mmask8 live, __mmask8 in, __mmask8& bad) {
+[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline __m512d
+dropFactor3(__m512d len2, __m512d r3, __mmask8 live, __mmask8 in, __mmask8& bad) {
     const __m512d half = _mm512_set1_pd(0.5), one = _mm512_set1_pd(1.0);
     const __m512d hp = _mm512_mul_pd(len2, half);
     __m512d g = _mm512_maskz_rsqrt14_pd(0xFF, len2);
@@ -259,10 +264,12 @@ MARBLER_IVDEP
     bad |= live & ~in & ~_mm512_cmp_pd_mask(x, _mm512_set1_pd(1e-30), _CMP_GE_OQ);
     // Guess: the float's bits b give x^(-1/3) ~ bits magic - b/3 (b/3 in double: exact enough).
     const __m256i bits = _mm256_castps_si256(_mm512_maskz_cvtpd_ps(0xFF, x));
-    const __m256i third =
-        _mm512_maskz_cvttpd_epi32(0xFF, _mm512_mul_pd(_mm512_maskz_cvtepi32_pd(0xFF, bits), _mm512_set1_pd(1.0 / 3.0)));
-    __m512d y = _mm512_maskz_cvtps_pd(0xFF, _mm256_castsi256_ps(_mm256_sub_epi32(_mm256_set1_epi32(0x54a21d2a), third)));
-    const __m512d c1 = _mm512_set1_pd(1.0 / 3.0), c2 = _mm512_set1_pd(2.0 / 9.0), c3 = _mm512_set1_pd(14.0 / 81.0);
+    const __m256i third = _mm512_maskz_cvttpd_epi32(
+        0xFF, _mm512_mul_pd(_mm512_maskz_cvtepi32_pd(0xFF, bits), _mm512_set1_pd(1.0 / 3.0)));
+    __m512d y = _mm512_maskz_cvtps_pd(
+        0xFF, _mm256_castsi256_ps(_mm256_sub_epi32(_mm256_set1_epi32(0x54a21d2a), third)));
+    const __m512d c1 = _mm512_set1_pd(1.0 / 3.0), c2 = _mm512_set1_pd(2.0 / 9.0),
+                  c3 = _mm512_set1_pd(14.0 / 81.0);
     for (int k = 0; k < 2; ++k) {
         const __m512d y3 = _mm512_mul_pd(_mm512_mul_pd(y, y), y);
         const __m512d h = _mm512_fnmadd_pd(x, y3, one);
@@ -277,9 +284,9 @@ MARBLER_IVDEP
 /// Traces them through the drop and writes the survivors, compressed, from j; records the
 /// colour of those in the ink.
 template <int Dim>
-[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline void dropStep(
-    Tile& t, int i, int& j, __mmask8 live, __m512d cx, __m512d cy, __m512d cz, __m512d rr, __m512d r2, double r2s,
-    int color, int* __restrict colors) {
+[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline void
+dropStep(Tile& t, int i, int& j, __mmask8 live, __m512d cx, __m512d cy, __m512d cz, __m512d rr, __m512d r2,
+         double r2s, int color, int* __restrict colors) {
     const __m512d zero = _mm512_setzero_pd(), half = _mm512_set1_pd(0.5), one = _mm512_set1_pd(1.0);
     const bool full = live == 0xFF;
     __m512d px = full ? _mm512_loadu_pd(t.x + i) : _mm512_maskz_loadu_pd(live, t.x + i);
@@ -308,7 +315,8 @@ template <int Dim>
             }
             factor = _mm512_maskz_mul_pd(outside, w, g);
         } else {
-            factor = _mm512_maskz_sqrt_pd(0xFF, _mm512_maskz_max_pd(0xFF, zero, _mm512_sub_pd(one, _mm512_div_pd(r2, len2))));
+            factor = _mm512_maskz_sqrt_pd(
+                0xFF, _mm512_maskz_max_pd(0xFF, zero, _mm512_sub_pd(one, _mm512_div_pd(r2, len2))));
         }
     } else {
         __mmask8 bad;
@@ -340,7 +348,8 @@ template <int Dim>
         j += __builtin_popcount(unsigned(live));
         return;
     }
-    for (unsigned m = in; m != 0; m &= m - 1) colors[t.id[i + __builtin_ctz(m)]] = color;
+    for (unsigned m = in; m != 0; m &= m - 1)
+        colors[t.id[i + __builtin_ctz(m)]] = color;
     // Compress in registers and store whole vectors: j <= i, so the 8 slots from j lie below
     // i + 8 (within the tile) and hold nothing not yet read; those past the survivors are junk
     // beyond the new count.
@@ -373,20 +382,22 @@ __attribute__((target("avx512f,fma"))) int dropAvx512(const PreparedOp& op, Tile
 
 /// One step of lineAvx512: 8 points from i, `live` masking those past n in the last step.
 template <int Dim, bool Comb, bool Full>
-[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline void lineStep(
-    Tile& t, int i, __mmask8 live, const __m512d (&c)[3], const __m512d (&nrm)[3], const __m512d (&alm)[3],
-    __m512d s, __m512d invS, __m512d halfS, __m512d lambda) {
+[[gnu::always_inline]] __attribute__((target("avx512f,fma"))) inline void
+lineStep(Tile& t, int i, __mmask8 live, const __m512d (&c)[3], const __m512d (&nrm)[3],
+         const __m512d (&alm)[3], __m512d s, __m512d invS, __m512d halfS, __m512d lambda) {
     double* const axes[3] = {t.x, t.y, t.z};
     __m512d p[3];
     for (int a = 0; a < Dim; ++a)
         p[a] = Full ? _mm512_loadu_pd(axes[a] + i) : _mm512_maskz_loadu_pd(live, axes[a] + i);
     __m512d along = _mm512_mul_pd(_mm512_sub_pd(p[0], c[0]), nrm[0]);
-    for (int a = 1; a < Dim; ++a) along = _mm512_fmadd_pd(_mm512_sub_pd(p[a], c[a]), nrm[a], along);
+    for (int a = 1; a < Dim; ++a)
+        along = _mm512_fmadd_pd(_mm512_sub_pd(p[a], c[a]), nrm[a], along);
     __m512d d;
     // (The zero-masked forms of roundscale and rcp14: the plain ones trip GCC 12's
     // -Wmaybe-uninitialized in its own header.)
     if (Comb) {
-        const __m512d k = _mm512_maskz_roundscale_pd(0xFF, _mm512_mul_pd(along, invS), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+        const __m512d k = _mm512_maskz_roundscale_pd(0xFF, _mm512_mul_pd(along, invS),
+                                                     _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
         const __m512d rem = _mm512_fnmadd_pd(s, k, along);
         d = _mm512_sub_pd(halfS, _mm512_abs_pd(_mm512_sub_pd(rem, halfS)));
     } else {
@@ -395,28 +406,34 @@ template <int Dim, bool Comb, bool Full>
     const __m512d den = _mm512_add_pd(d, lambda);
     const __m512d one = _mm512_set1_pd(1.0);
     __m512d r = _mm512_maskz_rcp14_pd(0xFF, den);
-    for (int step = 0; step < 2; ++step) r = _mm512_fmadd_pd(r, _mm512_fnmadd_pd(den, r, one), r);
+    for (int step = 0; step < 2; ++step)
+        r = _mm512_fmadd_pd(r, _mm512_fnmadd_pd(den, r, one), r);
     for (int a = 0; a < Dim; ++a) {
         const __m512d moved = _mm512_fnmadd_pd(r, alm[a], p[a]);
-        if (Full) _mm512_storeu_pd(axes[a] + i, moved);
-        else _mm512_mask_storeu_pd(axes[a] + i, live, moved);
+        if (Full)
+            _mm512_storeu_pd(axes[a] + i, moved);
+        else
+            _mm512_mask_storeu_pd(axes[a] + i, live, moved);
     }
 }
 
 /// Line and comb with AVX-512 (see line2 and line3) without a divide, as the drops: t / s is
 /// t (1/s), 1 / (d + lambda) comes from the 14-bit reciprocal and two Newton steps, and the
-/// shift l M is that times alpha lambda M: a few ulps from the reference's quotient. d stays continuous across the tines' midlines, so where
-/// t (1/s) rounds to the other side of an integer, d still moves by an ulp or so.
+/// shift l M is that times alpha lambda M: a few ulps from the reference's quotient. d stays continuous
+/// across the tines' midlines, so where t (1/s) rounds to the other side of an integer, d still moves by an
+/// ulp or so.
 template <int Dim, bool Comb>
 __attribute__((target("avx512f,fma"))) void lineAvx512(const PreparedOp& op, Tile& t, int n) {
     const __m512d c[3] = {_mm512_set1_pd(op.c.x), _mm512_set1_pd(op.c.y), _mm512_set1_pd(op.c.z)};
     const __m512d nrm[3] = {_mm512_set1_pd(op.n.x), _mm512_set1_pd(op.n.y), _mm512_set1_pd(op.n.z)};
     const double al = op.alphaLambda;
-    const __m512d alm[3] = {_mm512_set1_pd(al * op.m.x), _mm512_set1_pd(al * op.m.y), _mm512_set1_pd(al * op.m.z)};
+    const __m512d alm[3] = {_mm512_set1_pd(al * op.m.x), _mm512_set1_pd(al * op.m.y),
+                            _mm512_set1_pd(al * op.m.z)};
     const __m512d s = _mm512_set1_pd(op.spacing), invS = _mm512_set1_pd(1.0 / op.spacing);
     const __m512d halfS = _mm512_set1_pd(0.5 * op.spacing), lambda = _mm512_set1_pd(op.lambda);
     int i = 0;
-    for (; i + 8 <= n; i += 8) lineStep<Dim, Comb, true>(t, i, 0xFF, c, nrm, alm, s, invS, halfS, lambda);
+    for (; i + 8 <= n; i += 8)
+        lineStep<Dim, Comb, true>(t, i, 0xFF, c, nrm, alm, s, invS, halfS, lambda);
     if (i < n)
         lineStep<Dim, Comb, false>(t, i, __mmask8((1u << (n - i)) - 1u), c, nrm, alm, s, invS, halfS, lambda);
 }
@@ -427,7 +444,7 @@ __attribute__((target("avx512f,fma"))) void lineAvx512(const PreparedOp& op, Til
     double* __restrict y = t.y;
     const double cx = op.c.x, cy = op.c.y, nx = op.n.x, ny = op.n.y, mx = op.m.x, my = op.m.y;
     const double al = op.alphaLambda, lambda = op.lambda, s = op.spacing;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double along = (x[i] - cx) * nx + (y[i] - cy) * ny;
         double d = comb ? combDistance(along, s) : std::abs(along);
@@ -444,10 +461,11 @@ MARBLER_IVDEP
     double* __restrict sn = t.t1;
     const double cx = op.c.x, cy = op.c.y, nx = op.n.x, ny = op.n.y, mx = op.m.x, my = op.m.y;
     const double amp = op.amp[0], freq = op.freq[0], phase = op.phase[0];
-MARBLER_IVDEP
-    for (int i = 0; i < n; ++i) arg[i] = freq * ((x[i] - cx) * nx + (y[i] - cy) * ny) + phase;
+    MARBLER_IVDEP
+    for (int i = 0; i < n; ++i)
+        arg[i] = freq * ((x[i] - cx) * nx + (y[i] - cy) * ny) + phase;
     sinArray(arg, sn, t.t2, n);
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double f = amp * sn[i];
         x[i] = x[i] - f * mx;
@@ -462,9 +480,10 @@ MARBLER_IVDEP
     double* __restrict theta = t.t0;
     double* __restrict sn = t.t1;
     double* __restrict cs = t.t2;
-    const double cx = op.c.x, cy = op.c.y, r = op.r, al = op.alphaLambda, lambda = op.lambda, core2 = op.core2;
+    const double cx = op.c.x, cy = op.c.y, r = op.r, al = op.alphaLambda, lambda = op.lambda,
+                 core2 = op.core2;
     const bool cored = core2 > 0.0;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy;
         double rho = std::sqrt(dx * dx + dy * dy);
@@ -474,7 +493,7 @@ MARBLER_IVDEP
         theta[i] = -(al / (d + lambda)) / across;
     }
     sinCosArray(theta, sn, cs, n);
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy;
         bool moves = dx * dx + dy * dy > 0.0;
@@ -505,7 +524,7 @@ enum class Push3 {
     const double ax = op.a.x, ay = op.a.y, az = op.a.z;
     std::int64_t inside = 0;
     if (push == Push3::Column) {
-MARBLER_IVDEP
+        MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
             double along = dx * ax + dy * ay + dz * az;
@@ -523,7 +542,7 @@ MARBLER_IVDEP
             z[i] = moves ? z[i] + dz * (factor - 1.0) : z[i];
         }
     } else if (push == Push3::VolumeLaw) {
-MARBLER_IVDEP
+        MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
             double len2 = dx * dx + dy * dy + dz * dz;
@@ -538,7 +557,7 @@ MARBLER_IVDEP
             z[i] = moves ? z[i] + dz * (factor - 1.0) : z[i];
         }
     } else { // spray
-MARBLER_IVDEP
+        MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
             std::int64_t in = dx * dx + dy * dy + dz * dz < rr;
@@ -556,7 +575,7 @@ MARBLER_IVDEP
     const double cx = op.c.x, cy = op.c.y, cz = op.c.z, nx = op.n.x, ny = op.n.y, nz = op.n.z;
     const double mx = op.m.x, my = op.m.y, mz = op.m.z;
     const double al = op.alphaLambda, lambda = op.lambda, s = op.spacing;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double along = (x[i] - cx) * nx + (y[i] - cy) * ny + (z[i] - cz) * nz;
         double d = comb ? combDistance(along, s) : std::abs(along);
@@ -578,7 +597,7 @@ MARBLER_IVDEP
     const double ux = op.m.x, uy = op.m.y, uz = op.m.z, vx = op.v.x, vy = op.v.y, vz = op.v.z;
     const double wx = op.n.x, wy = op.n.y, wz = op.n.z;
     const bool ripple = op.shape == WaveShape::Ripple;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
         double a = dx * ux + dy * uy + dz * uz;
@@ -593,16 +612,19 @@ MARBLER_IVDEP
     double* __restrict scratch = t.t3;
     sinArray(arg0, sn, scratch, n);
     if (ripple) {
-MARBLER_IVDEP
-        for (int i = 0; i < n; ++i) arg0[i] = op.amp[0] * sn[i];
+        MARBLER_IVDEP
+        for (int i = 0; i < n; ++i)
+            arg0[i] = op.amp[0] * sn[i];
     } else {
-MARBLER_IVDEP
-        for (int i = 0; i < n; ++i) arg0[i] = op.amp[0] * sn[i];
+        MARBLER_IVDEP
+        for (int i = 0; i < n; ++i)
+            arg0[i] = op.amp[0] * sn[i];
         sinArray(arg1, sn, scratch, n);
-MARBLER_IVDEP
-        for (int i = 0; i < n; ++i) arg0[i] = arg0[i] + op.amp[1] * sn[i];
+        MARBLER_IVDEP
+        for (int i = 0; i < n; ++i)
+            arg0[i] = arg0[i] + op.amp[1] * sn[i];
     }
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double shift = arg0[i];
         x[i] = x[i] - shift * wx;
@@ -614,7 +636,8 @@ MARBLER_IVDEP
 /// Circle (about the axis line: `cylindrical`), sphere and vortex (distance to the centre; a
 /// `vortex` has d = rho) in 3D: turn by -theta about the line through the centre along the axis
 /// (Tools.cpp rotateAbout).
-[[gnu::always_inline]] inline void swirl3(const PreparedOp& op, Tile& t, int n, bool cylindrical, bool vortex) {
+[[gnu::always_inline]] inline void swirl3(const PreparedOp& op, Tile& t, int n, bool cylindrical,
+                                          bool vortex) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
     double* __restrict z = t.z;
@@ -625,7 +648,7 @@ MARBLER_IVDEP
     const double r = op.r, al = op.alphaLambda, lambda = op.lambda, core2 = op.core2;
     const bool cored = core2 > 0.0;
     std::int64_t* __restrict moves = t.flag;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
         double rho;
@@ -644,7 +667,7 @@ MARBLER_IVDEP
         moves[i] = rho > 0.0;
     }
     sinCosArray(theta, sn, cs, n);
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
         double along = dx * ax + dy * ay + dz * az;
@@ -670,8 +693,10 @@ template <Variant V, int Dim, bool Comb>
         return;
     }
 #endif
-    if constexpr (Dim == 2) line2(op, tile, n, Comb);
-    else line3(op, tile, n, Comb);
+    if constexpr (Dim == 2)
+        line2(op, tile, n, Comb);
+    else
+        line3(op, tile, n, Comb);
 }
 
 /// The drop in `Dim` dimensions: the AVX-512 variant's hand-written form (the compaction folded
@@ -682,8 +707,10 @@ template <Variant V, int Dim>
     if constexpr (V == Variant::Avx512) return dropAvx512<Dim>(op, tile, n, colors);
 #endif
     std::int64_t inside;
-    if constexpr (Dim == 2) inside = ink2(op, tile, n, true);
-    else inside = ink3(op, tile, n, Push3::VolumeLaw);
+    if constexpr (Dim == 2)
+        inside = ink2(op, tile, n, true);
+    else
+        inside = ink3(op, tile, n, Push3::VolumeLaw);
     return inside != 0 ? compact(tile, n, Dim, op.color, colors) : n;
 }
 
@@ -708,7 +735,7 @@ template <Variant V, int Dim>
     const int top = static_cast<int>(std::bit_floor(static_cast<unsigned>(intervals)));
     const double cx = op.c.x, cy = op.c.y, nx = op.n.x, ny = op.n.y, mx = op.m.x, my = op.m.y;
     const double first = teeth[0], last = teeth[count - 1], shift = op.shift, power = op.power;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         along[i] = (x[i] - cx) * nx + (y[i] - cy) * ny;
         below[i] = 0;
@@ -716,13 +743,13 @@ MARBLER_IVDEP
     // The last tooth at or below u: the largest k < intervals with teeth[k] <= u, a halving
     // at a time over the whole tile (a gather per point and halving).
     for (int step = top; step > 0; step >>= 1) {
-MARBLER_IVDEP
+        MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             std::int64_t probe = std::min<std::int64_t>(below[i] + step, intervals - 1);
             below[i] = teeth[probe] <= along[i] ? probe : below[i];
         }
     }
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double u = along[i];
         double lo = teeth[below[i]], hi = teeth[below[i] + 1];
@@ -733,20 +760,24 @@ MARBLER_IVDEP
     }
     // Outside the teeth tau means nothing: 0 keeps the sines off a NaN or a huge angle (a pass
     // of its own: GCC 12 vectorises neither loop with the select folded into the first).
-MARBLER_IVDEP
-    for (int i = 0; i < n; ++i) arg[i] = inside[i] != 0.0 ? arg[i] : 0.0;
+    MARBLER_IVDEP
+    for (int i = 0; i < n; ++i)
+        arg[i] = inside[i] != 0.0 ? arg[i] : 0.0;
     sinArray(arg, sn, t.t2, n);
     if (power == 1.0) {
     } else if (power == 2.0) {
-MARBLER_IVDEP
-        for (int i = 0; i < n; ++i) sn[i] = sn[i] * sn[i];
+        MARBLER_IVDEP
+        for (int i = 0; i < n; ++i)
+            sn[i] = sn[i] * sn[i];
     } else if (power == 0.5) {
-MARBLER_IVDEP
-        for (int i = 0; i < n; ++i) sn[i] = std::sqrt(sn[i]);
+        MARBLER_IVDEP
+        for (int i = 0; i < n; ++i)
+            sn[i] = std::sqrt(sn[i]);
     } else {
-        for (int i = 0; i < n; ++i) sn[i] = inside[i] != 0.0 ? std::pow(sn[i], power) : 0.0;
+        for (int i = 0; i < n; ++i)
+            sn[i] = inside[i] != 0.0 ? std::pow(sn[i], power) : 0.0;
     }
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double f = inside[i] != 0.0 ? shift * sn[i] : 0.0;
         x[i] = x[i] - f * mx;
@@ -756,15 +787,16 @@ MARBLER_IVDEP
 
 /// A flow's velocity at local (px, py) (Tools.cpp flowVelocity, in its order of operations).
 template <bool Cavity>
-[[gnu::always_inline]] inline void flowVelocity2(double px, double py, double lx, double ly, double u, double piOverLx,
-                                                 double piOverLy, double& vx, double& vy) {
+[[gnu::always_inline]] inline void flowVelocity2(double px, double py, double lx, double ly, double u,
+                                                 double piOverLx, double piOverLy, double& vx, double& vy) {
     (void)piOverLx;
     (void)piOverLy;
     if constexpr (Cavity) {
         double s = px / lx, t = py / ly;
         bool in = s >= 0.0 && s <= 1.0 && t >= 0.0 && t <= 1.0;
         double f = 16.0 * s * s * (1.0 - s) * (1.0 - s), df = 32.0 * s * (1.0 - s) * (1.0 - 2.0 * s);
-        double g = 7.5 * t * t * (1.0 - t) * (1.0 - t) * (1.0 - t), dg = 7.5 * t * (1.0 - t) * (1.0 - t) * (2.0 - 5.0 * t);
+        double g = 7.5 * t * t * (1.0 - t) * (1.0 - t) * (1.0 - t),
+               dg = 7.5 * t * (1.0 - t) * (1.0 - t) * (2.0 - 5.0 * t);
         double dpsiDy = u * f * dg;
         double dpsiDx = u * (ly / lx) * df * g;
         vx = in ? dpsiDy : 0.0;
@@ -787,8 +819,7 @@ template <bool Cavity>
 /// others go on, so every point takes exactly the iterations the reference takes. The kernel's
 /// sine and cosine are good to an ulp only for |angle| <= SinCosLimit: points that could get
 /// further (a design point some 1e5 cells from the field's origin) go through the reference.
-template <bool Cavity>
-[[gnu::always_inline]] inline void flow2(const PreparedOp& op, Tile& t, int n) {
+template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp& op, Tile& t, int n) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
     double* __restrict nextX = t.t0;
@@ -811,7 +842,7 @@ template <bool Cavity>
         y[i] = py;
     }
     for (int k = 0; k < op.steps; ++k) {
-MARBLER_IVDEP
+        MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             double vx, vy;
             flowVelocity2<Cavity>(x[i], y[i], lx, ly, u, piOverLx, piOverLy, vx, vy);
@@ -822,7 +853,7 @@ MARBLER_IVDEP
         std::int64_t left = n;
         for (int iteration = 0; iteration < 100 && left != 0; ++iteration) {
             left = 0;
-MARBLER_IVDEP
+            MARBLER_IVDEP
             for (int i = 0; i < n; ++i) {
                 double vx, vy;
                 flowVelocity2<Cavity>(0.5 * (x[i] + nextX[i]), 0.5 * (y[i] + nextY[i]), lx, ly, u, piOverLx,
@@ -838,13 +869,13 @@ MARBLER_IVDEP
                 left += still;
             }
         }
-MARBLER_IVDEP
+        MARBLER_IVDEP
         for (int i = 0; i < n; ++i) {
             x[i] = nextX[i];
             y[i] = nextY[i];
         }
     }
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double px = x[i], py = y[i];
         x[i] = (cx + px * mx) + py * nx;
@@ -882,7 +913,7 @@ template <int Dim>
     const bool column = op.tool == Tool::Cylinder, volume = Dim == 3 && op.tool == Tool::Drop;
     const bool pushes = op.tool != Tool::Spray;
     std::int64_t stopped = 0;
-MARBLER_IVDEP
+    MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = Dim == 3 ? z[i] - cz : 0.0;
         if (column) {
@@ -960,9 +991,9 @@ template <int Dim>
 /// (Params.h) without its kernel fails the build (-Werror=switch). Soft: under bleed (then
 /// `bleed` is given); the hard body has none of its code.
 template <Variant V, bool Soft>
-[[gnu::always_inline]] inline std::uint64_t traceTileBody(const PreparedOp* ops, std::size_t count, int dimension,
-                                                          Tile& tile, int n, int* colors, double* whereX,
-                                                          double* whereY, const Bleed* bleed) {
+[[gnu::always_inline]] inline std::uint64_t
+traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
+              double* whereX, double* whereY, const Bleed* bleed) {
     lastVariantRun = V;
     std::uint64_t traversed = 0;
     if constexpr (Soft)
@@ -980,22 +1011,39 @@ template <Variant V, bool Soft>
                     continue;
                 }
             switch (op.tool) {
-            case Tool::Drop: n = drop<V, 2>(op, tile, n, colors); break;
+            case Tool::Drop:
+                n = drop<V, 2>(op, tile, n, colors);
+                break;
             case Tool::Spray:
                 if (ink2(op, tile, n, false) != 0) n = compact(tile, n, 2, op.color, colors);
                 break;
-            case Tool::Line: lineOrComb<V, 2, false>(op, tile, n); break;
-            case Tool::Comb: lineOrComb<V, 2, true>(op, tile, n); break;
-            case Tool::Wave: wave2(op, tile, n); break;
-            case Tool::Circle: swirl2(op, tile, n, false); break;
-            case Tool::Vortex: swirl2(op, tile, n, true); break;
-            case Tool::Stretch: stretch2(op, tile, n); break;
+            case Tool::Line:
+                lineOrComb<V, 2, false>(op, tile, n);
+                break;
+            case Tool::Comb:
+                lineOrComb<V, 2, true>(op, tile, n);
+                break;
+            case Tool::Wave:
+                wave2(op, tile, n);
+                break;
+            case Tool::Circle:
+                swirl2(op, tile, n, false);
+                break;
+            case Tool::Vortex:
+                swirl2(op, tile, n, true);
+                break;
+            case Tool::Stretch:
+                stretch2(op, tile, n);
+                break;
             case Tool::Flow:
-                if (op.field == FlowField::Cavity) flow2<true>(op, tile, n);
-                else flow2<false>(op, tile, n);
+                if (op.field == FlowField::Cavity)
+                    flow2<true>(op, tile, n);
+                else
+                    flow2<false>(op, tile, n);
                 break;
             case Tool::Cylinder:
-            case Tool::Sphere: break; // not in 2D genomes (the loader refuses them)
+            case Tool::Sphere:
+                break; // not in 2D genomes (the loader refuses them)
             }
         } else {
             if constexpr (Soft)
@@ -1004,21 +1052,36 @@ template <Variant V, bool Soft>
                     continue;
                 }
             switch (op.tool) {
-            case Tool::Drop: n = drop<V, 3>(op, tile, n, colors); break;
+            case Tool::Drop:
+                n = drop<V, 3>(op, tile, n, colors);
+                break;
             case Tool::Spray:
                 if (ink3(op, tile, n, Push3::None) != 0) n = compact(tile, n, 3, op.color, colors);
                 break;
             case Tool::Cylinder:
                 if (ink3(op, tile, n, Push3::Column) != 0) n = compact(tile, n, 3, op.color, colors);
                 break;
-            case Tool::Line: lineOrComb<V, 3, false>(op, tile, n); break;
-            case Tool::Comb: lineOrComb<V, 3, true>(op, tile, n); break;
-            case Tool::Wave: wave3(op, tile, n); break;
-            case Tool::Circle: swirl3(op, tile, n, true, false); break;
-            case Tool::Sphere: swirl3(op, tile, n, false, false); break;
-            case Tool::Vortex: swirl3(op, tile, n, false, true); break;
+            case Tool::Line:
+                lineOrComb<V, 3, false>(op, tile, n);
+                break;
+            case Tool::Comb:
+                lineOrComb<V, 3, true>(op, tile, n);
+                break;
+            case Tool::Wave:
+                wave3(op, tile, n);
+                break;
+            case Tool::Circle:
+                swirl3(op, tile, n, true, false);
+                break;
+            case Tool::Sphere:
+                swirl3(op, tile, n, false, false);
+                break;
+            case Tool::Vortex:
+                swirl3(op, tile, n, false, true);
+                break;
             case Tool::Stretch:
-            case Tool::Flow: break; // 2D only (the loader refuses them in 3D)
+            case Tool::Flow:
+                break; // 2D only (the loader refuses them in 3D)
             }
         }
     }
@@ -1046,38 +1109,47 @@ using TraceFn = std::uint64_t (*)(const PreparedOp*, std::size_t, int, Tile&, in
 // The variants. Each is the same body compiled for its instruction set; the always-inline
 // helpers above are compiled into each with that variant's vectors.
 #ifdef MARBLER_X86_VARIANTS
-__attribute__((target("arch=x86-64-v4"))) std::uint64_t traceTileAvx512(
-    const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors, double* whereX,
-    double* whereY, const Bleed* bleed) {
-    return bleed ? traceTileBody<Variant::Avx512, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
-                 : traceTileBody<Variant::Avx512, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
+__attribute__((target("arch=x86-64-v4"))) std::uint64_t
+traceTileAvx512(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
+                double* whereX, double* whereY, const Bleed* bleed) {
+    return bleed ? traceTileBody<Variant::Avx512, true>(ops, count, dimension, tile, n, colors, whereX,
+                                                        whereY, bleed)
+                 : traceTileBody<Variant::Avx512, false>(ops, count, dimension, tile, n, colors, whereX,
+                                                         whereY, nullptr);
 }
 
-__attribute__((target("arch=x86-64-v3"))) std::uint64_t traceTileAvx2(const PreparedOp* ops, std::size_t count,
-                                                                     int dimension, Tile& tile, int n, int* colors,
-                                                                     double* whereX, double* whereY,
-                                                                     const Bleed* bleed) {
-    return bleed ? traceTileBody<Variant::Avx2, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
-                 : traceTileBody<Variant::Avx2, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
+__attribute__((target("arch=x86-64-v3"))) std::uint64_t
+traceTileAvx2(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
+              double* whereX, double* whereY, const Bleed* bleed) {
+    return bleed ? traceTileBody<Variant::Avx2, true>(ops, count, dimension, tile, n, colors, whereX, whereY,
+                                                      bleed)
+                 : traceTileBody<Variant::Avx2, false>(ops, count, dimension, tile, n, colors, whereX, whereY,
+                                                       nullptr);
 }
 #endif
 
 std::uint64_t traceTileBaseline(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n,
                                 int* colors, double* whereX, double* whereY, const Bleed* bleed) {
-    return bleed ? traceTileBody<Variant::Baseline, true>(ops, count, dimension, tile, n, colors, whereX, whereY, bleed)
-                 : traceTileBody<Variant::Baseline, false>(ops, count, dimension, tile, n, colors, whereX, whereY, nullptr);
+    return bleed ? traceTileBody<Variant::Baseline, true>(ops, count, dimension, tile, n, colors, whereX,
+                                                          whereY, bleed)
+                 : traceTileBody<Variant::Baseline, false>(ops, count, dimension, tile, n, colors, whereX,
+                                                           whereY, nullptr);
 }
 
 TraceFn functionOf(Variant v) {
     switch (v) {
 #ifdef MARBLER_X86_VARIANTS
-    case Variant::Avx512: return traceTileAvx512;
-    case Variant::Avx2: return traceTileAvx2;
+    case Variant::Avx512:
+        return traceTileAvx512;
+    case Variant::Avx2:
+        return traceTileAvx2;
 #else
     case Variant::Avx512:
-    case Variant::Avx2: break;
+    case Variant::Avx2:
+        break;
 #endif
-    case Variant::Baseline: break;
+    case Variant::Baseline:
+        break;
     }
     return traceTileBaseline;
 }
@@ -1089,7 +1161,10 @@ struct Active {
     std::mutex mutex;
     Choice choice;
 
-    Active() : choice(chooseVariant(std::getenv("MARBLER_KERNEL"))) { trace = functionOf(choice.variant); }
+    Active()
+        : choice(chooseVariant(std::getenv("MARBLER_KERNEL"))) {
+        trace = functionOf(choice.variant);
+    }
 };
 
 Active& active() {
@@ -1101,9 +1176,12 @@ Active& active() {
 
 const char* variantName(Variant v) {
     switch (v) {
-    case Variant::Avx512: return "avx512";
-    case Variant::Avx2: return "avx2";
-    case Variant::Baseline: return "baseline";
+    case Variant::Avx512:
+        return "avx512";
+    case Variant::Avx2:
+        return "avx2";
+    case Variant::Baseline:
+        return "baseline";
     }
     return "baseline";
 }
@@ -1122,8 +1200,8 @@ bool cpuRuns(Variant v) {
         __builtin_cpu_init();
 #if defined(__clang__)
         // clang (14) knows no level names here: the features that the levels add.
-        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
-               __builtin_cpu_supports("bmi2");
+        return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+               __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
 #else
         return __builtin_cpu_supports("x86-64-v3") != 0;
 #endif
@@ -1138,9 +1216,12 @@ bool cpuRuns(Variant v) {
 #endif
     }();
     switch (v) {
-    case Variant::Avx512: return v4;
-    case Variant::Avx2: return v3;
-    case Variant::Baseline: return true;
+    case Variant::Avx512:
+        return v4;
+    case Variant::Avx2:
+        return v3;
+    case Variant::Baseline:
+        return true;
     }
     return false;
 #else
@@ -1155,7 +1236,9 @@ std::vector<Variant> supportedVariants() {
     return out;
 }
 
-Choice chooseVariant(const char* requested) { return chooseVariant(requested, supportedVariants()); }
+Choice chooseVariant(const char* requested) {
+    return chooseVariant(requested, supportedVariants());
+}
 
 Choice chooseVariant(const char* requested, const std::vector<Variant>& supported) {
     const Variant best = supported.front();
@@ -1165,7 +1248,8 @@ Choice chooseVariant(const char* requested, const std::vector<Variant>& supporte
     std::optional<Variant> v = variantNamed(name);
     if (!v) {
         std::string known = "auto";
-        for (Variant k : AllVariants) known += std::string(", ") + variantName(k);
+        for (Variant k : AllVariants)
+            known += std::string(", ") + variantName(k);
         return {best, setting + " is not a kernel (" + known + "); using the best this CPU runs"};
     }
     if (std::find(supported.begin(), supported.end(), *v) == supported.end())
@@ -1186,13 +1270,15 @@ void setActiveChoice(const Choice& choice) {
     a.trace = functionOf(choice.variant);
 }
 
-std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
-                        double* whereX, double* whereY, const Bleed* bleed) {
-    return active().trace.load(std::memory_order_relaxed)(ops, count, dimension, tile, n, colors, whereX, whereY,
-                                                          bleed);
+std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n,
+                        int* colors, double* whereX, double* whereY, const Bleed* bleed) {
+    return active().trace.load(std::memory_order_relaxed)(ops, count, dimension, tile, n, colors, whereX,
+                                                          whereY, bleed);
 }
 
-Variant lastVariantRunForTest() { return lastVariantRun; }
+Variant lastVariantRunForTest() {
+    return lastVariantRun;
+}
 
 void sinCosForTest(double x, double& s, double& c) {
     double angle[1] = {x}, sn[1], cs[1];
@@ -1201,6 +1287,8 @@ void sinCosForTest(double x, double& s, double& c) {
     c = cs[0];
 }
 
-double cbrtForTest(double x) { return cbrtUnit(x); }
+double cbrtForTest(double x) {
+    return cbrtUnit(x);
+}
 
 } // namespace marbler::kernel

@@ -60,8 +60,8 @@ struct Bleed {
 /// (Tools.h traceCovers): colors[] receives the ink a point stopped on (coverage 1) or -1,
 /// and bleed->weight and bleed->rgb what the inks met add up to; whereX/whereY are written
 /// for the points that reach the bath (weight > 0).
-std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n, int* colors,
-                        double* whereX, double* whereY, const Bleed* bleed = nullptr);
+std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension, Tile& tile, int n,
+                        int* colors, double* whereX, double* whereY, const Bleed* bleed = nullptr);
 
 /// The compiled variants of traceTile, best first. Avx512 (x86-64-v4) also replaces the
 /// divides and roots of drops, lines and combs by refined hardware estimates (a few ulps from

@@ -62,7 +62,9 @@ void* moduleEntry(const std::string& fileName, const std::string& entryName) {
         }
     }
     void* entry = ::dlsym(handle, entryName.c_str());
-    if (!entry) throw RuntimeFailure(fileName + " has no entry point " + entryName + " (a module of another version?)");
+    if (!entry)
+        throw RuntimeFailure(fileName + " has no entry point " + entryName +
+                             " (a module of another version?)");
     return entry;
 }
 

@@ -14,7 +14,8 @@ Image mirrorRepeat(const Image& image) {
         const std::uint8_t* source = image.row(y < h ? y : 2 * h - 1 - y);
         std::uint8_t* out = tile.row(y);
         std::copy(source, source + std::size_t(w) * 3, out);
-        for (int x = 0; x < w; ++x) std::copy(source + x * 3, source + x * 3 + 3, out + std::size_t(2 * w - 1 - x) * 3);
+        for (int x = 0; x < w; ++x)
+            std::copy(source + x * 3, source + x * 3 + 3, out + std::size_t(2 * w - 1 - x) * 3);
     }
     return tile;
 }

@@ -31,7 +31,9 @@ AaPattern grid(int n, bool checkerOnly) {
 
 } // namespace
 
-const char* axisName(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
+const char* axisName(int axis) {
+    return axis == 0 ? "x" : axis == 1 ? "y" : "z";
+}
 
 std::optional<int> parseAxis(std::string_view name) {
     if (name == "x" || name == "X") return 0;
@@ -79,7 +81,8 @@ AaPattern aaPattern(std::string_view name) {
         pattern.offsets = {{0.0, 0.0}};
         pattern.weights = {1.0};
     } else if (name == "rgss") {
-        pattern.offsets = {{1.0 / 8, 3.0 / 8}, {3.0 / 8, -1.0 / 8}, {-1.0 / 8, -3.0 / 8}, {-3.0 / 8, 1.0 / 8}};
+        pattern.offsets = {
+            {1.0 / 8, 3.0 / 8}, {3.0 / 8, -1.0 / 8}, {-1.0 / 8, -3.0 / 8}, {-3.0 / 8, 1.0 / 8}};
         pattern.weights.assign(4, 0.25);
     } else if (name == "quincunx") {
         pattern.offsets = {{0.0, 0.0}, {-0.5, -0.5}, {0.5, -0.5}, {-0.5, 0.5}, {0.5, 0.5}};
@@ -96,7 +99,8 @@ AaPattern aaPattern(std::string_view name) {
         pattern.weights.assign(8, 1.0 / 8);
     } else {
         std::string list;
-        for (const std::string& known : aaPatternNames()) list += (list.empty() ? "" : ", ") + known;
+        for (const std::string& known : aaPatternNames())
+            list += (list.empty() ? "" : ", ") + known;
         throw InputError("unknown antialiasing mode '" + std::string(name) + "' (one of " + list + ")");
     }
     pattern.name = std::string(name);
@@ -104,8 +108,8 @@ AaPattern aaPattern(std::string_view name) {
 }
 
 std::vector<std::string> aaPatternNames() {
-    return {"none", "rgss", "quincunx", "grid2", "grid3", "grid4", "grid5", "grid6", "grid7", "grid8", "checker4",
-            "rooks8"};
+    return {"none",  "rgss",  "quincunx", "grid2", "grid3",    "grid4",
+            "grid5", "grid6", "grid7",    "grid8", "checker4", "rooks8"};
 }
 
 Region effectiveRegion(const Genome& genome, const RenderSettings& settings) {
@@ -134,7 +138,8 @@ void checkRenderSettings(const Genome& genome, const RenderSettings& settings) {
         std::int64_t(settings.width) * settings.height > MaxImagePixels)
         throw InputError("image size " + size + " is too large (at most " + std::to_string(MaxImageSide) +
                          " pixels a side and " + std::to_string(MaxImagePixels) + " pixels in all)");
-    if (settings.threads < 0) throw InputError("thread count must be >= 0 (got " + std::to_string(settings.threads) + ")");
+    if (settings.threads < 0)
+        throw InputError("thread count must be >= 0 (got " + std::to_string(settings.threads) + ")");
     aaPattern(settings.aa); // throws for an unknown name
     if (genome.dimension == 3) {
         if (!settings.slice)
@@ -142,7 +147,8 @@ void checkRenderSettings(const Genome& genome, const RenderSettings& settings) {
         const Slice& s = *settings.slice;
         if (s.axis < 0 || s.axis > 2) throw InputError("slice axis must be x, y or z");
         if (!std::isfinite(s.value))
-            throw InputError(std::string("slice ") + axisName(s.axis) + "=" + number(s.value) + " is not a finite number");
+            throw InputError(std::string("slice ") + axisName(s.axis) + "=" + number(s.value) +
+                             " is not a finite number");
     } else if (settings.slice) {
         throw InputError("a slice needs a solid (3D) genome; this genome is flat (2D)");
     }
@@ -151,8 +157,8 @@ void checkRenderSettings(const Genome& genome, const RenderSettings& settings) {
         if (!std::isfinite(r.x0) || !std::isfinite(r.y0) || !std::isfinite(r.x1) || !std::isfinite(r.y1))
             throw InputError("region has a number that is not finite");
         if (!(r.x0 < r.x1) || !(r.y0 < r.y1))
-            throw InputError("region " + number(r.x0) + "," + number(r.y0) + "," + number(r.x1) + "," + number(r.y1) +
-                             " is empty (need X0 < X1 and Y0 < Y1)");
+            throw InputError("region " + number(r.x0) + "," + number(r.y0) + "," + number(r.x1) + "," +
+                             number(r.y1) + " is empty (need X0 < X1 and Y0 < Y1)");
     }
 }
 
@@ -167,7 +173,8 @@ double linearToSrgb(double c) {
 const float* srgbToLinearTable() {
     static const std::array<float, 256> table = [] {
         std::array<float, 256> t{};
-        for (int i = 0; i < 256; ++i) t[i] = static_cast<float>(srgbToLinear(i / 255.0));
+        for (int i = 0; i < 256; ++i)
+            t[i] = static_cast<float>(srgbToLinear(i / 255.0));
         return t;
     }();
     return table.data();
@@ -203,7 +210,8 @@ struct EncodeTables {
             threshold[k] = std::bit_cast<double>(hi);
         }
         threshold[256] = 2.0; // above every input that reaches the table
-        for (int b = 0; b < EncodeBuckets; ++b) bucketLevel[b] = encodeSrgb8Direct(double(b) / EncodeBuckets);
+        for (int b = 0; b < EncodeBuckets; ++b)
+            bucketLevel[b] = encodeSrgb8Direct(double(b) / EncodeBuckets);
     }
 };
 

@@ -11,30 +11,35 @@ namespace marbler {
 
 SheetLayout sheetLayout(const std::vector<Genome>& designs, const SheetSettings& settings) {
     if (designs.empty()) throw InputError("a sheet needs at least one design");
-    if (settings.columns < 1) throw InputError("a sheet needs at least one column (got " + std::to_string(settings.columns) + ")");
+    if (settings.columns < 1)
+        throw InputError("a sheet needs at least one column (got " + std::to_string(settings.columns) + ")");
     if (settings.cellWidth < 1 || settings.cellHeight < 0)
         throw InputError("a sheet's cells need a size of at least 1 pixel");
-    if (settings.gap < 0) throw InputError("a sheet's gap cannot be negative (got " + std::to_string(settings.gap) + ")");
+    if (settings.gap < 0)
+        throw InputError("a sheet's gap cannot be negative (got " + std::to_string(settings.gap) + ")");
     SheetLayout layout;
     layout.gap = settings.gap;
     layout.cellWidth = settings.cellWidth;
     const Genome& first = designs.front();
-    layout.cellHeight = settings.cellHeight > 0
-        ? settings.cellHeight
-        : std::max(1, static_cast<int>(std::lround(settings.cellWidth * first.size.y / first.size.x)));
+    layout.cellHeight =
+        settings.cellHeight > 0
+            ? settings.cellHeight
+            : std::max(1, static_cast<int>(std::lround(settings.cellWidth * first.size.y / first.size.x)));
     const int count = static_cast<int>(designs.size());
     layout.columns = std::min(settings.columns, count);
     layout.rows = (count + layout.columns - 1) / layout.columns;
     const std::int64_t width = std::int64_t(layout.columns) * (layout.cellWidth + layout.gap) + layout.gap;
     const std::int64_t height = std::int64_t(layout.rows) * (layout.cellHeight + layout.gap) + layout.gap;
     if (width > MaxImageSide || height > MaxImageSide || width * height > MaxImagePixels)
-        throw InputError("a sheet of " + std::to_string(width) + " x " + std::to_string(height) + " pixels is too large");
+        throw InputError("a sheet of " + std::to_string(width) + " x " + std::to_string(height) +
+                         " pixels is too large");
     layout.width = static_cast<int>(width);
     layout.height = static_cast<int>(height);
     return layout;
 }
 
-RenderSettings sheetCellSettings(const Genome& design, const SheetLayout& layout, const SheetSettings& settings) {
+RenderSettings sheetCellSettings(const Genome& design, const SheetLayout& layout,
+                                 const SheetSettings& settings) {
     RenderSettings render;
     render.width = layout.cellWidth;
     render.height = layout.cellHeight;
@@ -44,7 +49,8 @@ RenderSettings sheetCellSettings(const Genome& design, const SheetLayout& layout
     return render;
 }
 
-Image renderSheet(const std::vector<Genome>& designs, const SheetSettings& settings, const RenderControl* control) {
+Image renderSheet(const std::vector<Genome>& designs, const SheetSettings& settings,
+                  const RenderControl* control) {
     const SheetLayout layout = sheetLayout(designs, settings);
     Image sheet;
     sheet.width = layout.width;
@@ -61,20 +67,24 @@ Image renderSheet(const std::vector<Genome>& designs, const SheetSettings& setti
         RenderControl cell;
         if (control) {
             cell.cancel = control->cancel;
-            if (control->progress) cell.progress = [control, i, count](double f) { control->progress((static_cast<double>(i) + f) / count); };
+            if (control->progress)
+                cell.progress = [control, i, count](double f) {
+                    control->progress((static_cast<double>(i) + f) / count);
+                };
         }
         const Genome& design = designs[i];
         const Image image = CpuRenderer(design).render(sheetCellSettings(design, layout, settings), &cell);
         const int x = layout.cellX(static_cast<int>(i)), y = layout.cellY(static_cast<int>(i));
         for (int row = 0; row < image.height; ++row)
-            std::memcpy(sheet.row(y + row) + std::size_t(x) * 3, image.row(row), std::size_t(image.width) * 3);
+            std::memcpy(sheet.row(y + row) + std::size_t(x) * 3, image.row(row),
+                        std::size_t(image.width) * 3);
     }
     if (control && control->progress) control->progress(1.0);
     return sheet;
 }
 
-void writeSheet(const std::vector<Genome>& designs, const SheetSettings& settings, const std::filesystem::path& file,
-                const RenderControl* control) {
+void writeSheet(const std::vector<Genome>& designs, const SheetSettings& settings,
+                const std::filesystem::path& file, const RenderControl* control) {
     writeImage(renderSheet(designs, settings, control), file);
 }
 

@@ -25,9 +25,11 @@ void runOnThreads(int threads, std::atomic<bool>& stop, const std::function<void
         }
     };
     std::vector<std::thread> pool;
-    for (int t = 1; t < std::max(1, threads); ++t) pool.emplace_back(guarded);
+    for (int t = 1; t < std::max(1, threads); ++t)
+        pool.emplace_back(guarded);
     guarded();
-    for (std::thread& t : pool) t.join();
+    for (std::thread& t : pool)
+        t.join();
     if (failure) std::rethrow_exception(failure);
 }
 

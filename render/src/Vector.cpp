@@ -32,13 +32,19 @@ class OutlineTracer {
 public:
     OutlineTracer(const std::vector<PreparedOp>& ops, std::size_t step, const VectorOptions& options,
                   std::atomic<std::size_t>& traced, std::atomic<std::size_t>& gaps)
-        : mOps(ops), mStep(step), mCenter(ops[step].c.x, ops[step].c.y), mRadius(ops[step].r), mOptions(options),
-          mTraced(traced), mGaps(gaps) {}
+        : mOps(ops)
+        , mStep(step)
+        , mCenter(ops[step].c.x, ops[step].c.y)
+        , mRadius(ops[step].r)
+        , mOptions(options)
+        , mTraced(traced)
+        , mGaps(gaps) {}
 
     /// The circle's point at angle theta, mapped through every later step.
     glm::dvec2 at(double theta) const {
         glm::dvec3 p(mCenter.x + mRadius * std::cos(theta), mCenter.y + mRadius * std::sin(theta), 0.0);
-        for (std::size_t j = mStep + 1; j < mOps.size(); ++j) p = forwardMap(mOps[j], p);
+        for (std::size_t j = mStep + 1; j < mOps.size(); ++j)
+            p = forwardMap(mOps[j], p);
         return {p.x, p.y};
     }
 
@@ -148,7 +154,8 @@ void appendNumber(std::string& out, double value, int decimals) {
     if (ec != std::errc()) throw RuntimeFailure("a coordinate cannot be written");
     std::string_view s(text, end - text);
     if (s.find('.') != std::string_view::npos) {
-        while (s.back() == '0') s.remove_suffix(1);
+        while (s.back() == '0')
+            s.remove_suffix(1);
         if (s.back() == '.') s.remove_suffix(1);
     }
     if (s == "-0") s = "0";
@@ -159,11 +166,13 @@ void appendNumber(std::string& out, double value, int decimals) {
 
 VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
     if (genome.dimension != 2)
-        throw InputError("vector output needs a flat (2D) genome; this one is solid (3D): render a cross-section "
-                         "with marbler render --slice");
+        throw InputError(
+            "vector output needs a flat (2D) genome; this one is solid (3D): render a cross-section "
+            "with marbler render --slice");
     if (genome.source)
-        throw InputError("vector output cannot draw a source image (its marbled pixels have no outlines); render "
-                         "the design as a raster with marbler render");
+        throw InputError(
+            "vector output cannot draw a source image (its marbled pixels have no outlines); render "
+            "the design as a raster with marbler render");
     if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
         throw InputError("the tolerance must be a positive number of design units");
 
@@ -246,8 +255,10 @@ std::string toSvg(const VectorDesign& design, int decimals) {
     for (const InkOutline& outline : design.outlines) {
         out += "<path fill=\"" + toHex(design.palette.at(outline.color)) + "\" d=\"M";
         for (std::size_t k = 0; k < outline.points.size(); ++k) {
-            if (k == 1) out += 'L';
-            else if (k > 1) out += ' ';
+            if (k == 1)
+                out += 'L';
+            else if (k > 1)
+                out += ' ';
             number(outline.points[k].x);
             out += ' ';
             number(outline.points[k].y);

@@ -39,7 +39,8 @@ constexpr double MaxVideoFps = 1000.0;
 /// target by finish(); destroyed unfinished, it leaves nothing behind.
 class AtomicVideoWriter final : public VideoWriter {
 public:
-    AtomicVideoWriter(const fs::path& file, int width, int height, double fps) : mFile(file) {
+    AtomicVideoWriter(const fs::path& file, int width, int height, double fps)
+        : mFile(file) {
         detail::VideoTarget target{
             mFile.temporary().string(), lowerExtension(file), file.string(), width, height, fps};
         mWriter = detail::videoModule().openWriter(target);
@@ -74,7 +75,8 @@ LinearRaster linearRasterOfSrgb8(const std::uint8_t* rgb, int width, int height,
     static const std::vector<float> table = [] {
         std::vector<float> t(256);
         for (int v = 0; v < 256; ++v)
-            t[std::size_t(v)] = static_cast<float>(srgbToLinear(std::clamp(double(float(v) * (1.0f / 255.0f)), 0.0, 1.0)));
+            t[std::size_t(v)] =
+                static_cast<float>(srgbToLinear(std::clamp(double(float(v) * (1.0f / 255.0f)), 0.0, 1.0)));
         return t;
     }();
     LinearRaster raster;
@@ -84,7 +86,8 @@ LinearRaster linearRasterOfSrgb8(const std::uint8_t* rgb, int width, int height,
     for (int y = 0; y < height; ++y) {
         const std::uint8_t* row = rgb + std::size_t(y) * stride;
         float* out = raster.rgb.data() + std::size_t(y) * std::size_t(width) * 3;
-        for (std::size_t i = 0; i < std::size_t(width) * 3; ++i) out[i] = table[row[i]];
+        for (std::size_t i = 0; i < std::size_t(width) * 3; ++i)
+            out[i] = table[row[i]];
     }
     return raster;
 }
@@ -96,13 +99,16 @@ bool isVideoFile(const fs::path& path) {
 
 std::unique_ptr<VideoWriter> openVideoWriter(const fs::path& path, int width, int height, double fps) {
     if (!isVideoFile(path))
-        throw InputError("'" + path.string() + "': not a video format Marbler writes (use .gif, .webp, .mp4 or .webm)");
+        throw InputError("'" + path.string() +
+                         "': not a video format Marbler writes (use .gif, .webp, .mp4 or .webm)");
     if (width < 1 || height < 1 || width > MaxVideoSide || height > MaxVideoSide)
         throw InputError("'" + path.string() + "': a video of " + std::to_string(width) + " x " +
-                         std::to_string(height) + " pixels (each side from 1 to " + std::to_string(MaxVideoSide) + ")");
+                         std::to_string(height) + " pixels (each side from 1 to " +
+                         std::to_string(MaxVideoSide) + ")");
     if (!(fps > 0.0) || !(fps <= MaxVideoFps))
         throw InputError("'" + path.string() + "': a frame rate of " + std::to_string(fps) +
-                         " (it must be above 0 and at most " + std::to_string(static_cast<int>(MaxVideoFps)) + ")");
+                         " (it must be above 0 and at most " + std::to_string(static_cast<int>(MaxVideoFps)) +
+                         ")");
     return std::make_unique<AtomicVideoWriter>(path, width, height, fps);
 }
 

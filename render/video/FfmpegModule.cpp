@@ -82,7 +82,8 @@ const AVCodec* findEncoder(const FormatChoice& choice) {
 
 std::string encoderList(const FormatChoice& choice) {
     std::string names;
-    for (const char* name : choice.encoders) names += (names.empty() ? "" : ", ") + std::string(name);
+    for (const char* name : choice.encoders)
+        names += (names.empty() ? "" : ", ") + std::string(name);
     return names;
 }
 
@@ -94,12 +95,14 @@ std::string encoderList(const FormatChoice& choice) {
 /// time base of 1/fps (fps as a fraction), so the rate is exact.
 class FfmpegWriter final : public VideoWriter {
 public:
-    explicit FfmpegWriter(const VideoTarget& target) : mTarget(target) {
+    explicit FfmpegWriter(const VideoTarget& target)
+        : mTarget(target) {
         const FormatChoice choice = choiceFor(target.extension);
         const AVCodec* codec = findEncoder(choice);
         if (!codec)
-            throw RuntimeFailure("cannot write '" + target.displayName + "': this FFmpeg has no encoder for " +
-                                 target.extension + " (looked for " + encoderList(choice) + ")");
+            throw RuntimeFailure("cannot write '" + target.displayName +
+                                 "': this FFmpeg has no encoder for " + target.extension + " (looked for " +
+                                 encoderList(choice) + ")");
         AVFormatContext* format = nullptr;
         int code = avformat_alloc_output_context2(&format, nullptr, choice.muxer, target.file.c_str());
         if (code < 0 || !format) fail("no " + std::string(choice.muxer) + " muxer: " + errorText(code));
@@ -186,9 +189,9 @@ public:
             mFrame->width = mCodedWidth;
             mFrame->height = mCodedHeight;
             if (av_frame_get_buffer(mFrame.get(), 0) < 0) fail("out of memory");
-            mScale.reset(sws_getContext(mCodedWidth, mCodedHeight, AV_PIX_FMT_RGB24, mCodedWidth, mCodedHeight,
-                                        mPixelFormat, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
-                                        nullptr, nullptr));
+            mScale.reset(sws_getContext(
+                mCodedWidth, mCodedHeight, AV_PIX_FMT_RGB24, mCodedWidth, mCodedHeight, mPixelFormat,
+                SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr));
             if (!mScale) fail("no conversion from RGB to the encoder's pixels");
         }
     }
@@ -202,8 +205,8 @@ public:
             frame->height = mTarget.height;
             if (av_frame_get_buffer(frame.get(), 0) < 0) fail("out of memory");
             for (int y = 0; y < mTarget.height; ++y)
-                std::memcpy(frame->data[0] + std::size_t(y) * std::size_t(frame->linesize[0]), rgb + std::size_t(y) * stride,
-                            std::size_t(mTarget.width) * 3);
+                std::memcpy(frame->data[0] + std::size_t(y) * std::size_t(frame->linesize[0]),
+                            rgb + std::size_t(y) * stride, std::size_t(mTarget.width) * 3);
             frame->pts = mNext++;
             int code = av_buffersrc_add_frame_flags(mSource, frame.get(), AV_BUFFERSRC_FLAG_KEEP_REF);
             if (code < 0) fail("cannot queue a frame for the palette: " + errorText(code));
@@ -219,7 +222,8 @@ public:
                 const std::uint8_t* from = rgb + std::size_t(std::min(y, mTarget.height - 1)) * stride;
                 std::uint8_t* to = mPadded.data() + std::size_t(y) * rowBytes;
                 std::memcpy(to, from, std::size_t(mTarget.width) * 3);
-                for (int x = mTarget.width; x < mCodedWidth; ++x) std::memcpy(to + x * 3, from + (mTarget.width - 1) * 3, 3);
+                for (int x = mTarget.width; x < mCodedWidth; ++x)
+                    std::memcpy(to + x * 3, from + (mTarget.width - 1) * 3, 3);
             }
             source = mPadded.data();
             sourceStride = rowBytes;
@@ -270,13 +274,14 @@ private:
         mGraph.reset(avfilter_graph_alloc());
         if (!mGraph) fail("out of memory");
         char arguments[256];
-        std::snprintf(arguments, sizeof arguments, "video_size=%dx%d:pix_fmt=%d:time_base=%d/%d:pixel_aspect=1/1",
-                      mTarget.width, mTarget.height, int(AV_PIX_FMT_RGB24), mTimeBase.num, mTimeBase.den);
-        int code = avfilter_graph_create_filter(&mSource, avfilter_get_by_name("buffer"), "in", arguments, nullptr,
-                                                mGraph.get());
+        std::snprintf(arguments, sizeof arguments,
+                      "video_size=%dx%d:pix_fmt=%d:time_base=%d/%d:pixel_aspect=1/1", mTarget.width,
+                      mTarget.height, int(AV_PIX_FMT_RGB24), mTimeBase.num, mTimeBase.den);
+        int code = avfilter_graph_create_filter(&mSource, avfilter_get_by_name("buffer"), "in", arguments,
+                                                nullptr, mGraph.get());
         if (code < 0) fail("no buffer filter: " + errorText(code));
-        code = avfilter_graph_create_filter(&mSink, avfilter_get_by_name("buffersink"), "out", nullptr, nullptr,
-                                            mGraph.get());
+        code = avfilter_graph_create_filter(&mSink, avfilter_get_by_name("buffersink"), "out", nullptr,
+                                            nullptr, mGraph.get());
         if (code < 0) fail("no buffersink filter: " + errorText(code));
         AVFilterInOut* outputs = avfilter_inout_alloc();
         AVFilterInOut* inputs = avfilter_inout_alloc();
@@ -344,7 +349,8 @@ private:
 /// libswscale with the matrix and range the stream declares.
 class FfmpegReader final : public VideoReader {
 public:
-    FfmpegReader(const std::string& file, const std::string& name) : mName(name) {
+    FfmpegReader(const std::string& file, const std::string& name)
+        : mName(name) {
         AVFormatContext* format = nullptr;
         int code = avformat_open_input(&format, file.c_str(), nullptr, nullptr);
         if (code < 0) throw InputError(name + ": not a video FFmpeg reads (" + errorText(code) + ")");
@@ -366,7 +372,9 @@ public:
         if (code < 0) throw InputError(name + ": " + errorText(code));
         mCodec->thread_count = 0;
         code = avcodec_open2(mCodec.get(), codec, nullptr);
-        if (code < 0) throw InputError(name + ": cannot open its " + std::string(codec->name) + " decoder: " + errorText(code));
+        if (code < 0)
+            throw InputError(name + ": cannot open its " + std::string(codec->name) +
+                             " decoder: " + errorText(code));
         mWidth = parameters->width;
         mHeight = parameters->height;
         AVRational rate = stream->avg_frame_rate;
@@ -422,24 +430,25 @@ private:
     void convert(std::vector<std::uint8_t>& rgb) {
         const AVFrame* f = mFrame.get();
         if (f->width != mWidth || f->height != mHeight)
-            throw RuntimeFailure(mName + ": the frame size changes mid-stream (" + std::to_string(mWidth) + "x" +
-                                 std::to_string(mHeight) + " to " + std::to_string(f->width) + "x" +
+            throw RuntimeFailure(mName + ": the frame size changes mid-stream (" + std::to_string(mWidth) +
+                                 "x" + std::to_string(mHeight) + " to " + std::to_string(f->width) + "x" +
                                  std::to_string(f->height) + ")");
         const auto format = static_cast<AVPixelFormat>(f->format);
-        mScale.reset(sws_getCachedContext(mScale.release(), mWidth, mHeight, format, mWidth, mHeight, AV_PIX_FMT_RGB24,
-                                          SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr,
-                                          nullptr));
+        mScale.reset(sws_getCachedContext(
+            mScale.release(), mWidth, mHeight, format, mWidth, mHeight, AV_PIX_FMT_RGB24,
+            SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr, nullptr, nullptr));
         if (!mScale) throw RuntimeFailure(mName + ": no conversion of its pixels to RGB");
         const int matrix = f->colorspace == AVCOL_SPC_BT709 ? SWS_CS_ITU709
-                         : f->colorspace == AVCOL_SPC_BT2020_NCL || f->colorspace == AVCOL_SPC_BT2020_CL ? SWS_CS_BT2020
-                                                                                                          : SWS_CS_DEFAULT;
+                           : f->colorspace == AVCOL_SPC_BT2020_NCL || f->colorspace == AVCOL_SPC_BT2020_CL
+                               ? SWS_CS_BT2020
+                               : SWS_CS_DEFAULT;
         const bool fullRange = f->color_range == AVCOL_RANGE_JPEG || format == AV_PIX_FMT_YUVJ420P ||
                                format == AV_PIX_FMT_YUVJ422P || format == AV_PIX_FMT_YUVJ444P;
         int* inverse = nullptr;
         int* table = nullptr;
         int sourceRange = 0, destinationRange = 0, brightness = 0, contrast = 0, saturation = 0;
-        if (sws_getColorspaceDetails(mScale.get(), &inverse, &sourceRange, &table, &destinationRange, &brightness,
-                                     &contrast, &saturation) >= 0)
+        if (sws_getColorspaceDetails(mScale.get(), &inverse, &sourceRange, &table, &destinationRange,
+                                     &brightness, &contrast, &saturation) >= 0)
             sws_setColorspaceDetails(mScale.get(), sws_getCoefficients(matrix), fullRange ? 1 : 0, table,
                                      destinationRange, brightness, contrast, saturation);
         rgb.resize(std::size_t(mWidth) * std::size_t(mHeight) * 3);

@@ -24,7 +24,6 @@ namespace {
 
 using test::runMarbler;
 
-
 /// The conformance genome saved as a file for the executable.
 std::filesystem::path growthGenomeFile(const std::filesystem::path& dir) {
     const Genome genome = test::genomeOf(test::loadConformance("growth-v2.json"), "growth-v2.json");
@@ -65,7 +64,8 @@ int expectMatches(const Genome& design, const nlohmann::json& rows, const std::s
                 seenNearby = (index >= 0 ? design.palette[index] : design.background) == want;
             }
             EXPECT_TRUE(seenNearby) << what << " pixel (" << x << ", " << y << "): got " << int(got[0]) << " "
-                                    << int(got[1]) << " " << int(got[2]) << ", expected " << rows[y][x].dump();
+                                    << int(got[1]) << " " << int(got[2]) << ", expected "
+                                    << rows[y][x].dump();
             ++atEdges;
         }
     EXPECT_LE(atEdges, 2) << what;
@@ -108,7 +108,8 @@ TEST(Animate, FramesFollowTheGrowthRuleAndCarryTheirOwnDesign) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(r.err.empty()) << "no progress when stderr is not a terminal: " << r.err;
     int count = 0;
-    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(out)) ++count;
+    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(out))
+        ++count;
     EXPECT_EQ(count, 9);
     for (int f = 0; f < 9; ++f) {
         char name[32];
@@ -128,7 +129,8 @@ TEST(Animate, FramesFollowTheGrowthRuleAndCarryTheirOwnDesign) {
     EXPECT_EQ(test::readImage8(out / "frame-0008.png").rgb, test::readImage8(dir / "whole.png").rgb);
     // Nothing else beside OUT (no temporary left).
     std::set<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        names.insert(entry.path().filename().string());
     EXPECT_EQ(names, (std::set<std::string>{"frames", "growth.marble.json", "whole.png"}));
 }
 
@@ -136,23 +138,26 @@ TEST(Animate, DefaultsAndSizes) {
     const auto dir = test::outputDir("animate-defaults");
     const auto genomeFile = growthGenomeFile(dir);
     // 4 seconds at 2 frames a second; the height keeps the design's aspect.
-    auto r = runMarbler({"animate", genomeFile.string(), "-o", (dir / "a").string(), "--fps", "2", "--width", "10",
-                         "--aa", "rgss"});
+    auto r = runMarbler({"animate", genomeFile.string(), "-o", (dir / "a").string(), "--fps", "2", "--width",
+                         "10", "--aa", "rgss"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "a" / "frame-0007.png"));
     EXPECT_FALSE(std::filesystem::exists(dir / "a" / "frame-0008.png"));
     EXPECT_EQ(test::readImage8(dir / "a" / "frame-0003.png").height, 10);
     // An empty folder may stand at OUT.
     std::filesystem::create_directory(dir / "b");
-    r = runMarbler({"animate", genomeFile.string(), "-o", (dir / "b").string(), "--frames", "2", "--height", "6"});
+    r = runMarbler(
+        {"animate", genomeFile.string(), "-o", (dir / "b").string(), "--frames", "2", "--height", "6"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readImage8(dir / "b" / "frame-0001.png").width, 6);
 }
 
 /// A failure: exit 2, one stderr line that mentions `mention`, and nothing new in `dir`.
-void expectBadUsage(const std::vector<std::string>& args, const std::string& mention, const std::filesystem::path& dir) {
+void expectBadUsage(const std::vector<std::string>& args, const std::string& mention,
+                    const std::filesystem::path& dir) {
     std::set<std::filesystem::path> before;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) before.insert(entry.path());
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        before.insert(entry.path());
     auto r = runMarbler(args);
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
@@ -174,7 +179,8 @@ TEST(Animate, BadUsageExitsTwoWithOneLineAndNoOutput) {
     expectBadUsage({"animate", genome, "-o", out, "--slice", "z=5"}, "--slice", dir);
     expectBadUsage({"animate", genome, "-o", out, "--bogus"}, "--bogus", dir);
     expectBadUsage({"animate", genome}, "-o OUT", dir);
-    expectBadUsage({"animate", (dir / "missing.marble.json").string(), "-o", out}, "missing.marble.json", dir);
+    expectBadUsage({"animate", (dir / "missing.marble.json").string(), "-o", out}, "missing.marble.json",
+                   dir);
     expectBadUsage({"animate", genome, "-o", genome}, "already exists", dir);
 }
 
@@ -187,8 +193,8 @@ void expectInterruptLeavesNothing(const std::filesystem::path& dir, const std::f
     ASSERT_GE(pid, 0);
     if (pid == 0) {
         std::freopen("/dev/null", "w", stderr);
-        ::execl(MARBLER_EXECUTABLE, "marbler", "animate", genomeFile.c_str(), "-o", out.c_str(), "--frames", "5000",
-                "--width", "400", "--quiet", static_cast<char*>(nullptr));
+        ::execl(MARBLER_EXECUTABLE, "marbler", "animate", genomeFile.c_str(), "-o", out.c_str(), "--frames",
+                "5000", "--width", "400", "--quiet", static_cast<char*>(nullptr));
         ::_exit(127);
     }
     // Wait (without a time limit of our own: ctest's applies) for the temporary folder's second
@@ -212,7 +218,8 @@ void expectInterruptLeavesNothing(const std::filesystem::path& dir, const std::f
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 130);
     std::set<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.insert(entry.path().filename().string());
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        names.insert(entry.path().filename().string());
     EXPECT_EQ(names, std::set<std::string>{"growth.marble.json"}) << out;
 }
 
@@ -226,7 +233,8 @@ TEST(Animate, InterruptLeavesNothingBehind) {
 /// The mean absolute channel difference of two RGB buffers of equal size.
 double meanDifference(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
     double sum = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(int(a[i]) - int(b[i]));
+    for (std::size_t i = 0; i < a.size(); ++i)
+        sum += std::abs(int(a[i]) - int(b[i]));
     return sum / double(a.size());
 }
 
@@ -245,7 +253,8 @@ TEST_P(AnimateVideo, HoldsEveryFrameAtTheRateFromBathToDesign) {
     RenderSettings settings;
     settings.width = settings.height = 128;
     for (int f = 0; f < 6; ++f)
-        want.push_back(CpuRenderer(designAtGrowth(genome, frameGrowth(stepCount(genome), f, 6))).render(settings).rgb);
+        want.push_back(
+            CpuRenderer(designAtGrowth(genome, frameGrowth(stepCount(genome), f, 6))).render(settings).rgb);
 
     if (extension == ".webp") {
         // FFmpeg reads no animated WebP: count its frames (ANMF chunks) in the RIFF container.
@@ -269,7 +278,8 @@ TEST_P(AnimateVideo, HoldsEveryFrameAtTheRateFromBathToDesign) {
     EXPECT_NEAR(reader->fps(), 10.0, 1e-9);
     std::vector<std::vector<std::uint8_t>> frames;
     std::vector<std::uint8_t> rgb;
-    while (reader->nextFrame(rgb)) frames.push_back(rgb);
+    while (reader->nextFrame(rgb))
+        frames.push_back(rgb);
     ASSERT_EQ(frames.size(), 6u);
     // A GIF holds the design's few colours exactly. H.264 and VP9 blur the sharp ink edges and
     // halve the colour resolution (4:2:0): measured, the whole design differs by a mean 13-14
@@ -293,18 +303,19 @@ TEST(Animate, BadVideoUsageLeavesNothing) {
     const auto dir = test::outputDir("animate-video-bad");
     const std::string genome = growthGenomeFile(dir).string();
     std::filesystem::create_directory(dir / "folder.mp4");
-    expectBadUsage({"animate", genome, "-o", (dir / "folder.mp4").string(), "--frames", "2"}, "already exists", dir);
-    expectBadUsage({"animate", genome, "-o", (dir / "huge.webm").string(), "--frames", "2", "--width", "20000",
-                    "--height", "8"},
+    expectBadUsage({"animate", genome, "-o", (dir / "folder.mp4").string(), "--frames", "2"},
+                   "already exists", dir);
+    expectBadUsage({"animate", genome, "-o", (dir / "huge.webm").string(), "--frames", "2", "--width",
+                    "20000", "--height", "8"},
                    "huge.webm", dir);
 }
 
 TEST(Animate, HelpDescribesEveryOption) {
     auto r = runMarbler({"animate", "--help"});
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* option : {"-o", "--frames", "--fps", "--width", "--height", "--aa", "--slice", "--threads",
-                               "--quiet", "--progress", "frame-0000.png", ".gif", ".webp", ".mp4", ".webm",
-                               "partial design"})
+    for (const char* option :
+         {"-o", "--frames", "--fps", "--width", "--height", "--aa", "--slice", "--threads", "--quiet",
+          "--progress", "frame-0000.png", ".gif", ".webp", ".mp4", ".webm", "partial design"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
     EXPECT_NE(runMarbler({"--help"}).out.find("animate"), std::string::npos);
 }

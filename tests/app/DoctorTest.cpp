@@ -17,7 +17,8 @@ namespace {
 std::string lineValue(const std::string& out, const std::string& what) {
     const std::string key = what + ": ";
     std::size_t at = out.find("\n" + key);
-    if (at == std::string::npos) return out.rfind(key, 0) == 0 ? out.substr(key.size(), out.find('\n') - key.size()) : "";
+    if (at == std::string::npos)
+        return out.rfind(key, 0) == 0 ? out.substr(key.size(), out.find('\n') - key.size()) : "";
     at += 1 + key.size();
     return out.substr(at, out.find('\n', at) - at);
 }
@@ -48,7 +49,8 @@ TEST(Doctor, FollowsMarblerKernel) {
 
 TEST(Doctor, SaysWhyThereIsNoOpenGLWithoutADisplay) {
     test::RunResult r = test::runMarbler(
-        {"doctor"}, {{"DISPLAY", std::nullopt}, {"WAYLAND_DISPLAY", std::nullopt}, {"QT_QPA_PLATFORM", std::nullopt}});
+        {"doctor"},
+        {{"DISPLAY", std::nullopt}, {"WAYLAND_DISPLAY", std::nullopt}, {"QT_QPA_PLATFORM", std::nullopt}});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(lineValue(r.out, "OpenGL").rfind("none: ", 0), 0u) << r.out;
     EXPECT_EQ(lineValue(r.out, "window renders with").rfind("CPU: ", 0), 0u) << r.out;

@@ -21,7 +21,9 @@ namespace fs = std::filesystem;
 using test::runMarbler;
 
 std::uint32_t bigEndian(const std::string& bytes, std::size_t at) {
-    auto b = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes.at(at + i))); };
+    auto b = [&](std::size_t i) {
+        return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes.at(at + i)));
+    };
     return (b(0) << 24) | (b(1) << 16) | (b(2) << 8) | b(3);
 }
 
@@ -56,7 +58,8 @@ PngFacts pngFacts(const fs::path& file) {
 
 std::vector<std::string> filesIn(const fs::path& dir) {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -64,16 +67,16 @@ std::vector<std::string> filesIn(const fs::path& dir) {
 TEST(PaperCli, SameArgumentsGiveTheSameFilesAndOtherSeedsDiffer) {
     fs::path dir = test::outputDir("paper-same");
     auto make = [&](const std::string& name, const std::string& seed) {
-        test::RunResult r = runMarbler({"paper", "--size", "5x7cm", "--dpi", "50", "--colors", "4", "--passes", "2",
-                                        "--seed", seed, "-o", (dir / name).string()});
+        test::RunResult r = runMarbler({"paper", "--size", "5x7cm", "--dpi", "50", "--colors", "4",
+                                        "--passes", "2", "--seed", seed, "-o", (dir / name).string()});
         EXPECT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(r.err, "");
     };
     make("one.png", "77");
     make("two.png", "77");
     make("other.png", "78");
-    EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"one.marble.json", "one.png", "other.marble.json", "other.png",
-                                                      "two.marble.json", "two.png"}));
+    EXPECT_EQ(filesIn(dir), (std::vector<std::string>{"one.marble.json", "one.png", "other.marble.json",
+                                                      "other.png", "two.marble.json", "two.png"}));
     EXPECT_EQ(test::readFile(dir / "one.png"), test::readFile(dir / "two.png"));
     EXPECT_EQ(test::readFile(dir / "one.marble.json"), test::readFile(dir / "two.marble.json"));
     EXPECT_NE(test::readFile(dir / "one.png"), test::readFile(dir / "other.png"));
@@ -82,8 +85,8 @@ TEST(PaperCli, SameArgumentsGiveTheSameFilesAndOtherSeedsDiffer) {
 
 TEST(PaperCli, WritesTheLibrarysGenomeBesideAndInsideTheImage) {
     fs::path dir = test::outputDir("paper-genome");
-    test::RunResult r = runMarbler({"paper", "--size", "50x70mm", "--dpi", "40", "--pastel", "--seed", "5", "--output",
-                                    (dir / "sheet.png").string()});
+    test::RunResult r = runMarbler({"paper", "--size", "50x70mm", "--dpi", "40", "--pastel", "--seed", "5",
+                                    "--output", (dir / "sheet.png").string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     PaperOptions options;
     options.width = 50.0;
@@ -104,9 +107,11 @@ TEST(PaperCli, TheImageHasThePixelSizeAndResolutionAsked) {
         std::uint32_t width, height;
     };
     // 5 cm at 50 dpi is 98.4 pixels, 7 cm 137.8; 2 x 3 in at 30 dpi is 60 x 90.
-    for (const Case& c : {Case{"5x7cm", "50", 98, 138}, Case{"2x3in", "30", 60, 90}, Case{"30x20mm", "100", 118, 79}}) {
+    for (const Case& c :
+         {Case{"5x7cm", "50", 98, 138}, Case{"2x3in", "30", 60, 90}, Case{"30x20mm", "100", 118, 79}}) {
         fs::path file = dir / ("sheet-" + c.size + ".png");
-        test::RunResult r = runMarbler({"paper", "--size", c.size, "--dpi", c.dpi, "--seed", "1", "-o", file.string()});
+        test::RunResult r =
+            runMarbler({"paper", "--size", c.size, "--dpi", c.dpi, "--seed", "1", "-o", file.string()});
         ASSERT_EQ(r.exitCode, 0) << r.err;
         PngFacts facts = pngFacts(file);
         EXPECT_EQ(facts.width, c.width) << c.size;
@@ -124,12 +129,23 @@ TEST(PaperCli, TheImageHasThePixelSizeAndResolutionAsked) {
 TEST(PaperCli, BadOptionsExit2WithOneLineAndLeaveNoFile) {
     fs::path dir = test::outputDir("paper-bad");
     const std::string out = (dir / "sheet.png").string();
-    const std::vector<std::vector<std::string>> cases = {
-        {"--size", "0x5cm"},    {"--size", "5x7"},      {"--size", "5x7furlongs"}, {"--size", "axbcm"},
-        {"--dpi", "0"},         {"--dpi", "-300"},      {"--dpi", "many"},         {"--colors", "0"},
-        {"--colors", "17"},     {"--colors", "2.5"},    {"--passes", "-1"},        {"--passes", "11"},
-        {"--passes", "three"},  {"--seed", "-4"},       {"--bogus"},               {"stray"},
-        {"--size", "2000x2000cm", "--dpi", "1000"}};
+    const std::vector<std::vector<std::string>> cases = {{"--size", "0x5cm"},
+                                                         {"--size", "5x7"},
+                                                         {"--size", "5x7furlongs"},
+                                                         {"--size", "axbcm"},
+                                                         {"--dpi", "0"},
+                                                         {"--dpi", "-300"},
+                                                         {"--dpi", "many"},
+                                                         {"--colors", "0"},
+                                                         {"--colors", "17"},
+                                                         {"--colors", "2.5"},
+                                                         {"--passes", "-1"},
+                                                         {"--passes", "11"},
+                                                         {"--passes", "three"},
+                                                         {"--seed", "-4"},
+                                                         {"--bogus"},
+                                                         {"stray"},
+                                                         {"--size", "2000x2000cm", "--dpi", "1000"}};
     for (const std::vector<std::string>& bad : cases) {
         std::vector<std::string> args = {"paper", "--size", "5x7cm", "--dpi", "20", "--seed", "3", "-o", out};
         args.insert(args.end(), bad.begin(), bad.end());

@@ -23,7 +23,8 @@ std::string neededLibraries() {
     if (!pipe) return {};
     std::string out;
     char buffer[4096];
-    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe.get())) out.append(buffer, n);
+    while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe.get()))
+        out.append(buffer, n);
     return out;
 }
 
@@ -36,14 +37,16 @@ TEST(Startup, ExecutableLinksNeitherOpenImageIONorQtNorAssimpNorFFmpeg) {
     const std::string needed = neededLibraries();
     ASSERT_NE(needed.find("(NEEDED)"), std::string::npos) << needed;
     EXPECT_NE(needed.find("libpng16"), std::string::npos) << needed;
-    for (const char* heavy : {"OpenImageIO", "Qt6", "assimp", "libGL", "libavcodec", "libavformat", "libswscale"})
+    for (const char* heavy :
+         {"OpenImageIO", "Qt6", "assimp", "libGL", "libavcodec", "libavformat", "libswscale"})
         EXPECT_EQ(needed.find(heavy), std::string::npos) << heavy << " is linked into marbler:\n" << needed;
 }
 
 TEST(Startup, PngAndTiffRendersLoadNoModule) {
     const auto dir = test::outputDir("startup-builtin");
     for (const char* name : {"a.png", "a.tif", "a.ppm"}) {
-        test::RunResult r = runTracingLoads({"render", Example, "-o", (dir / name).string(), "--width", "32"});
+        test::RunResult r =
+            runTracingLoads({"render", Example, "-o", (dir / name).string(), "--width", "32"});
         ASSERT_EQ(r.exitCode, 0) << r.err;
         EXPECT_EQ(r.err.find("marbler-imageio.so"), std::string::npos) << name;
         EXPECT_EQ(r.err.find("libOpenImageIO"), std::string::npos) << name;
@@ -60,11 +63,13 @@ TEST(Startup, PngAndTiffRendersLoadNoModule) {
 TEST(Startup, GenomesInsideImagesAreReadWithoutAModule) {
     const auto dir = test::outputDir("startup-genome-image");
     for (const char* name : {"a.png", "a.tif"}) {
-        ASSERT_EQ(test::runMarbler({"render", Example, "-o", (dir / name).string(), "--width", "32"}).exitCode, 0);
+        ASSERT_EQ(
+            test::runMarbler({"render", Example, "-o", (dir / name).string(), "--width", "32"}).exitCode, 0);
         // libpng and libtiff alone read the genome back: no OpenImageIO, no Qt.
         for (const std::vector<std::string>& args :
              {std::vector<std::string>{"info", (dir / name).string()},
-              std::vector<std::string>{"render", (dir / name).string(), "-o", (dir / "again.png").string(), "--width", "16"}}) {
+              std::vector<std::string>{"render", (dir / name).string(), "-o", (dir / "again.png").string(),
+                                       "--width", "16"}}) {
             test::RunResult r = runTracingLoads(args);
             ASSERT_EQ(r.exitCode, 0) << r.err;
             EXPECT_EQ(r.err.find("marbler-imageio.so"), std::string::npos) << args[0] << " " << name;
@@ -95,8 +100,9 @@ TEST(Startup, ABrokenModuleIsAClearFailureThatWritesNothing) {
     EXPECT_NE(r.err.find("cannot load " + (dir / "marbler-imageio.so").string()), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "a.exr"));
     // The built-in formats do not need it.
-    test::RunResult png = test::runMarbler({"render", Example, "-o", (dir / "a.png").string(), "--width", "16"},
-                                           {{"MARBLER_MODULE_DIR", dir.string()}});
+    test::RunResult png =
+        test::runMarbler({"render", Example, "-o", (dir / "a.png").string(), "--width", "16"},
+                         {{"MARBLER_MODULE_DIR", dir.string()}});
     EXPECT_EQ(png.exitCode, 0) << png.err;
 }
 

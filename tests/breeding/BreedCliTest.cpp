@@ -21,23 +21,28 @@ using test::runMarbler;
 std::vector<std::string> filesIn(const fs::path& dir) {
     std::vector<std::string> names;
     if (!fs::exists(dir)) return names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
 
-int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+int lineCount(const std::string& text) {
+    return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
 
 /// Two random parents written by the executable itself.
 struct Parents {
     fs::path dir, a, b, solid;
-    explicit Parents(const std::string& name) : dir(test::outputDir(name)) {
+    explicit Parents(const std::string& name)
+        : dir(test::outputDir(name)) {
         a = dir / "a.marble.json";
         b = dir / "b.marble.json";
         solid = dir / "solid.marble.json";
         EXPECT_EQ(runMarbler({"random", "--dimension", "2", "--seed", "1", "-o", a.string()}).exitCode, 0);
         EXPECT_EQ(runMarbler({"random", "--dimension", "2", "--seed", "2", "-o", b.string()}).exitCode, 0);
-        EXPECT_EQ(runMarbler({"random", "--dimension", "3", "--seed", "3", "-o", solid.string()}).exitCode, 0);
+        EXPECT_EQ(runMarbler({"random", "--dimension", "3", "--seed", "3", "-o", solid.string()}).exitCode,
+                  0);
     }
 };
 
@@ -46,8 +51,10 @@ TEST(RandomVerb, SameSeedGivesByteIdenticalFiles) {
     for (const char* dimension : {"2", "3"}) {
         fs::path one = dir / (std::string("one-") + dimension + ".marble.json");
         fs::path two = dir / (std::string("two-") + dimension + ".marble.json");
-        test::RunResult r1 = runMarbler({"random", "--dimension", dimension, "--seed", "31337", "-o", one.string()});
-        test::RunResult r2 = runMarbler({"random", "--seed=31337", "--dimension=" + std::string(dimension), "--output", two.string()});
+        test::RunResult r1 =
+            runMarbler({"random", "--dimension", dimension, "--seed", "31337", "-o", one.string()});
+        test::RunResult r2 = runMarbler(
+            {"random", "--seed=31337", "--dimension=" + std::string(dimension), "--output", two.string()});
         ASSERT_EQ(r1.exitCode, 0) << r1.err;
         ASSERT_EQ(r2.exitCode, 0) << r2.err;
         std::string text = test::readFile(one);
@@ -57,7 +64,8 @@ TEST(RandomVerb, SameSeedGivesByteIdenticalFiles) {
         EXPECT_NO_THROW(loadGenome(one));
     }
     fs::path other = dir / "other.marble.json";
-    ASSERT_EQ(runMarbler({"random", "--dimension", "2", "--seed", "31338", "-o", other.string()}).exitCode, 0);
+    ASSERT_EQ(runMarbler({"random", "--dimension", "2", "--seed", "31338", "-o", other.string()}).exitCode,
+              0);
     EXPECT_NE(test::readFile(other), test::readFile(dir / "one-2.marble.json"));
 }
 
@@ -65,10 +73,10 @@ TEST(RandomVerb, BadUsageExitsWithTwoAndOneLine) {
     fs::path dir = test::outputDir("random-bad");
     fs::path out = dir / "x.marble.json";
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
-             {"random", "--dimension", "2", "-o", out.string()},                      // no seed
-             {"random", "--dimension", "4", "--seed", "1", "-o", out.string()},       // bad dimension
-             {"random", "--dimension", "2", "--seed", "-5", "-o", out.string()},      // negative seed
-             {"random", "--dimension", "2", "--seed", "1"},                           // no output
+             {"random", "--dimension", "2", "-o", out.string()},                 // no seed
+             {"random", "--dimension", "4", "--seed", "1", "-o", out.string()},  // bad dimension
+             {"random", "--dimension", "2", "--seed", "-5", "-o", out.string()}, // negative seed
+             {"random", "--dimension", "2", "--seed", "1"},                      // no output
              {"random", "--dimension", "2", "--seed", "1", "--colour", "red", "-o", out.string()},
          }) {
         test::RunResult r = runMarbler(args);
@@ -81,14 +89,17 @@ TEST(RandomVerb, BadUsageExitsWithTwoAndOneLine) {
 TEST(RandomVerb, HelpDescribesEveryOption) {
     test::RunResult r = runMarbler({"random", "--help"});
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* option : {"--dimension", "--seed", "-o"}) EXPECT_NE(r.out.find(option), std::string::npos) << option;
+    for (const char* option : {"--dimension", "--seed", "-o"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 
 TEST(BreedVerb, WritesReproducibleChildren) {
     Parents parents("breed-children");
     fs::path out1 = parents.dir / "first", out2 = parents.dir / "second" / "nested";
-    test::RunResult r1 = runMarbler({"breed", "alter", parents.a.string(), "--seed", "5", "-o", out1.string()});
-    test::RunResult r2 = runMarbler({"breed", "alter", parents.a.string(), "--seed", "5", "-o", out2.string()});
+    test::RunResult r1 =
+        runMarbler({"breed", "alter", parents.a.string(), "--seed", "5", "-o", out1.string()});
+    test::RunResult r2 =
+        runMarbler({"breed", "alter", parents.a.string(), "--seed", "5", "-o", out2.string()});
     ASSERT_EQ(r1.exitCode, 0) << r1.err;
     ASSERT_EQ(r2.exitCode, 0) << r2.err;
     std::vector<std::string> names = filesIn(out1);
@@ -112,7 +123,8 @@ TEST(BreedVerb, WritesReproducibleChildren) {
     EXPECT_EQ(test::readFile(out1 / "child-03.marble.json"), serializeGenome(children[2]));
 
     fs::path other = parents.dir / "other";
-    ASSERT_EQ(runMarbler({"breed", "alter", parents.a.string(), "--seed", "6", "-o", other.string()}).exitCode, 0);
+    ASSERT_EQ(
+        runMarbler({"breed", "alter", parents.a.string(), "--seed", "6", "-o", other.string()}).exitCode, 0);
     EXPECT_NE(test::readFile(other / "child-01.marble.json"), test::readFile(out1 / "child-01.marble.json"));
 }
 
@@ -127,18 +139,20 @@ TEST(BreedVerb, ChildrenElsewhereEmbedTheirParentsSourceImage) {
     parent.source = SourceImage{"paper.png"};
     saveGenome(parent, root / "parent" / "p.marble.json");
     for (const fs::path& dir : {root / "kids", root / "parent" / "beside"}) {
-        auto r = runMarbler({"breed", "alter", (root / "parent" / "p.marble.json").string(), "--seed", "3", "--count",
-                             "2", "-o", dir.string()});
+        auto r = runMarbler({"breed", "alter", (root / "parent" / "p.marble.json").string(), "--seed", "3",
+                             "--count", "2", "-o", dir.string()});
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const Genome child = loadGenome(dir / "child-01.marble.json");
         ASSERT_TRUE(child.source);
-        EXPECT_TRUE(child.source->image.starts_with("data:image/png;base64,")) << child.source->image.substr(0, 40);
-        r = runMarbler({"render", (dir / "child-01.marble.json").string(), "-o", (dir / "c.png").string(), "--width", "16"});
+        EXPECT_TRUE(child.source->image.starts_with("data:image/png;base64,"))
+            << child.source->image.substr(0, 40);
+        r = runMarbler({"render", (dir / "child-01.marble.json").string(), "-o", (dir / "c.png").string(),
+                        "--width", "16"});
         EXPECT_EQ(r.exitCode, 0) << r.err;
     }
     // Beside the parent the path still holds.
-    auto r = runMarbler({"breed", "alter", (root / "parent" / "p.marble.json").string(), "--seed", "3", "--count", "1",
-                         "-o", (root / "parent").string()});
+    auto r = runMarbler({"breed", "alter", (root / "parent" / "p.marble.json").string(), "--seed", "3",
+                         "--count", "1", "-o", (root / "parent").string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(loadGenome(root / "parent" / "child-01.marble.json").source->image, "paper.png");
 }
@@ -151,7 +165,8 @@ TEST(BreedVerb, EveryOperatorWithCountAndStrength) {
     };
     std::vector<Case> cases{
         {{"breed", "alter", parents.a.string(), "--seed", "1", "--count", "3", "--strength", "0.2"}, 3},
-        {{"breed", "recombine", parents.a.string(), parents.b.string(), parents.a.string(), "--seed", "2"}, 8},
+        {{"breed", "recombine", parents.a.string(), parents.b.string(), parents.a.string(), "--seed", "2"},
+         8},
         {{"breed", "swap", parents.a.string(), parents.b.string(), "--seed", "3", "--count", "2"}, 2},
         {{"breed", "reinit", parents.solid.string(), "--seed", "4", "--count", "1"}, 1},
     };
@@ -198,7 +213,8 @@ TEST(BreedVerb, NoTwoChildrenAreEqual) {
             std::vector<std::string> names = filesIn(out);
             ASSERT_EQ(names.size(), std::size_t(count));
             for (const std::string& name : names)
-                EXPECT_TRUE(ids.insert(genomeId(loadGenome(out / name))).second) << name << " repeats a design";
+                EXPECT_TRUE(ids.insert(genomeId(loadGenome(out / name))).second)
+                    << name << " repeats a design";
         }
 }
 
@@ -222,7 +238,8 @@ TEST(BreedVerb, BadInputExitsWithTwoAndWritesNothing) {
         {{"breed", "recombine", parents.a.string(), "--seed", "1"}, "recombine"},
         {{"breed", "alter", broken.string(), "--seed", "1"}, broken.string()},
         {{"breed", "recombine", parents.a.string(), invalid.string(), "--seed", "1"}, "initial[0].radius"},
-        {{"breed", "alter", (parents.dir / "missing.marble.json").string(), "--seed", "1"}, "missing.marble.json"},
+        {{"breed", "alter", (parents.dir / "missing.marble.json").string(), "--seed", "1"},
+         "missing.marble.json"},
         {{"breed", "swap", parents.a.string(), parents.solid.string(), "--seed", "1"}, "dimension"},
         {{"breed", "alter", parents.a.string(), "--seed", "1", "--strength", "2"}, "strength"},
         {{"breed", "alter", parents.a.string(), "--seed", "1", "--count", "0"}, "count"},
@@ -239,7 +256,9 @@ TEST(BreedVerb, BadInputExitsWithTwoAndWritesNothing) {
     }
     // Without -o, and with -o naming a file.
     EXPECT_EQ(runMarbler({"breed", "alter", parents.a.string(), "--seed", "1"}).exitCode, 2);
-    EXPECT_EQ(runMarbler({"breed", "alter", parents.a.string(), "--seed", "1", "-o", parents.b.string()}).exitCode, 2);
+    EXPECT_EQ(
+        runMarbler({"breed", "alter", parents.a.string(), "--seed", "1", "-o", parents.b.string()}).exitCode,
+        2);
     EXPECT_EQ(test::readFile(parents.b), serializeGenome(randomGenome(2, 2)));
 }
 

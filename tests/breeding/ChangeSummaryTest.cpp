@@ -21,7 +21,9 @@ Operation drop(double x, double y, double radius, int color) {
     return op;
 }
 
-Operation stroke(Tool tool) { return defaultOperation(tool, 2, {500.0, 500.0, 0.0}); }
+Operation stroke(Tool tool) {
+    return defaultOperation(tool, 2, {500.0, 500.0, 0.0});
+}
 
 /// Three inks, three drops, then comb, wave, comb, vortex.
 Genome base() {
@@ -95,10 +97,13 @@ TEST(ChangeSummary, InitialState) {
     b.initial.push_back(drop(100, 100, 30, 1));
     EXPECT_EQ(describeChange(a, b), "initial state: 3 drops → 4 drops");
     b = base();
-    for (Operation& op : b.initial) op.center.x += 40.0;
+    for (Operation& op : b.initial)
+        op.center.x += 40.0;
     b.initial.push_back(drop(100, 100, 30, 1));
-    for (std::size_t i = 0; i < 4; ++i) a.initial.push_back(drop(100.0 * i, 50, 20, 0));
-    for (std::size_t i = 0; i < 4; ++i) b.initial.insert(b.initial.end() - 1, drop(100.0 * i + 3, 50, 20, 0));
+    for (std::size_t i = 0; i < 4; ++i)
+        a.initial.push_back(drop(100.0 * i, 50, 20, 0));
+    for (std::size_t i = 0; i < 4; ++i)
+        b.initial.insert(b.initial.end() - 1, drop(100.0 * i + 3, 50, 20, 0));
     b.initial.pop_back();
     EXPECT_EQ(describeChange(a, b), "new initial state");
 }
@@ -120,24 +125,26 @@ TEST(ChangeSummary, Palette) {
     EXPECT_EQ(describeChange(a, b), "palette: ink 2 lighter");
     b = base();
     b.palette[0] = {0xe8, 0xa8, 0x20};
-    EXPECT_EQ(describeChange(a, b), "palette: ink 1: " + colorWord(a.palette[0]) + " → " + colorWord(b.palette[0]));
+    EXPECT_EQ(describeChange(a, b),
+              "palette: ink 1: " + colorWord(a.palette[0]) + " → " + colorWord(b.palette[0]));
     b = base();
     b.background = {0x40, 0x40, 0x48};
     b.bleed = 2.5;
-    EXPECT_EQ(describeChange(a, b), "background: " + colorWord(a.background) + " → " + colorWord(b.background) + "; bleed 0 → 2.5");
+    EXPECT_EQ(describeChange(a, b),
+              "background: " + colorWord(a.background) + " → " + colorWord(b.background) + "; bleed 0 → 2.5");
 }
 
 TEST(ChangeSummary, LargestFirstAndTheRestCounted) {
     Genome a = base(), b = base();
-    b.operations[0].spacing = 28.0;   // 10 units: half a mutation scale (0.02 of 1000)
-    b.operations[0].alpha = 61.0;     // 1 unit of 30
-    b.operations[1].angle = 50.0;     // two scales of 25°
-    b.operations[3].lambda = 22.0;    // one scale (0.01 of 1000)
-    b.operations[3].alpha = 150.0;    // three scales of 30
-    b.operations[2].center.y += 4.0;  // 4 of 80
+    b.operations[0].spacing = 28.0;  // 10 units: half a mutation scale (0.02 of 1000)
+    b.operations[0].alpha = 61.0;    // 1 unit of 30
+    b.operations[1].angle = 50.0;    // two scales of 25°
+    b.operations[3].lambda = 22.0;   // one scale (0.01 of 1000)
+    b.operations[3].alpha = 150.0;   // three scales of 30
+    b.operations[2].center.y += 4.0; // 4 of 80
     b.palette[1] = {0xd6, 0x50, 0x44};
-    EXPECT_EQ(describeChange(a, b),
-              "vortex 1: alpha 60 → 150, lambda 12 → 22; wave 1: angle 0° → 50°; palette: ink 2 lighter; and 3 more");
+    EXPECT_EQ(describeChange(a, b), "vortex 1: alpha 60 → 150, lambda 12 → 22; wave 1: angle 0° → 50°; "
+                                    "palette: ink 2 lighter; and 3 more");
 }
 
 TEST(ChangeSummary, BredChildrenRecordTheirChange) {

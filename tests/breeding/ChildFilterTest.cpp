@@ -17,7 +17,8 @@ namespace {
 
 using namespace marbler;
 
-BreedRequest request(GeneticOperator op, std::vector<Genome> parents, std::uint64_t seed, int count, double strength) {
+BreedRequest request(GeneticOperator op, std::vector<Genome> parents, std::uint64_t seed, int count,
+                     double strength) {
     BreedRequest r;
     r.op = op;
     r.parents = std::move(parents);
@@ -43,7 +44,9 @@ Genome edgeOfDull() {
     return g;
 }
 
-int redrawsOf(const Genome& child) { return child.meta["lineage"].value("redraws", 0); }
+int redrawsOf(const Genome& child) {
+    return child.meta["lineage"].value("redraws", 0);
+}
 
 bool dull(const Glimpse& look, const Glimpse& parent) {
     return look.dominantShare > DullShare && look.dominantShare > parent.dominantShare;
@@ -83,7 +86,8 @@ TEST(ChildFilter, DullChildrenAreDrawnAgain) {
     int plainDull = 0, plain = 0;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
         Pcg32 rng(seed, 1);
-        for (int k = 0; k < 8; ++k, ++plain) plainDull += dull(glimpseOf(alterGenome(parent, 0.2, rng)), parentLook);
+        for (int k = 0; k < 8; ++k, ++plain)
+            plainDull += dull(glimpseOf(alterGenome(parent, 0.2, rng)), parentLook);
     }
     EXPECT_GT(plainDull, plain / 5) << "the parent should give dull children without the filter";
     // Bred, a child is dull only where every redraw was dull too.
@@ -121,7 +125,8 @@ TEST(ChildFilter, NearDuplicatesAreDrawnAgainReproducibly) {
             redrawn += redraws > 0;
             const Glimpse look = glimpseOf(child);
             double nearest = 1e9;
-            for (const Glimpse& other : looks) nearest = std::min(nearest, meanDeltaE(look, other));
+            for (const Glimpse& other : looks)
+                nearest = std::min(nearest, meanDeltaE(look, other));
             // Either the child stands apart from its parent and earlier siblings, or the whole
             // budget was spent looking for one that does.
             if (nearest < NearDuplicateDeltaE) {
@@ -135,12 +140,14 @@ TEST(ChildFilter, NearDuplicatesAreDrawnAgainReproducibly) {
         // The same seed gives the same children, redraws and all.
         const std::vector<Genome> again = breed(gentle);
         ASSERT_EQ(again.size(), children.size());
-        for (std::size_t i = 0; i < children.size(); ++i) EXPECT_EQ(serializeGenome(again[i]), serializeGenome(children[i]));
+        for (std::size_t i = 0; i < children.size(); ++i)
+            EXPECT_EQ(serializeGenome(again[i]), serializeGenome(children[i]));
         // Asking for fewer keeps the first ones (a child sees only the siblings before it).
         BreedRequest fewer = gentle;
         fewer.count = 3;
         const std::vector<Genome> first = breed(fewer);
-        for (std::size_t i = 0; i < first.size(); ++i) EXPECT_EQ(serializeGenome(first[i]), serializeGenome(children[i]));
+        for (std::size_t i = 0; i < first.size(); ++i)
+            EXPECT_EQ(serializeGenome(first[i]), serializeGenome(children[i]));
     }
 }
 
@@ -150,7 +157,8 @@ TEST(ChildFilter, ChildrenThatPassAreNotRedrawnAndSwapIsNotFiltered) {
     for (const Genome& child : breed(request(GeneticOperator::Swap, {a, b}, 3, 6, 0.5)))
         EXPECT_FALSE(child.meta["lineage"].contains("redraws"));
     int redrawn = 0;
-    for (const Genome& child : breed(request(GeneticOperator::Reinit, {a}, 3, 8, 0.5))) redrawn += redrawsOf(child) > 0;
+    for (const Genome& child : breed(request(GeneticOperator::Reinit, {a}, 3, 8, 0.5)))
+        redrawn += redrawsOf(child) > 0;
     EXPECT_LE(redrawn, 2);
 }
 

@@ -1,8 +1,8 @@
 // Colourways (marbler/Colourways.h): a design's structure kept exactly and only its palette
 // and background changed, reproducibly from the seed, varied, and every palette readable.
 
-#include "marbler/ChangeSummary.h"
 #include "marbler/Colourways.h"
+#include "marbler/ChangeSummary.h"
 #include "marbler/Error.h"
 #include "marbler/Families.h"
 #include "marbler/Generator.h"
@@ -18,15 +18,18 @@ namespace {
 
 std::vector<Genome> designs() {
     std::vector<Genome> out;
-    for (std::uint64_t seed : {1u, 2u, 3u}) out.push_back(randomGenome(seed, 2));
+    for (std::uint64_t seed : {1u, 2u, 3u})
+        out.push_back(randomGenome(seed, 2));
     out.push_back(randomGenome(4, 3));
-    for (const Family& f : allFamilies()) out.push_back(familyGenome(f, 7));
+    for (const Family& f : allFamilies())
+        out.push_back(familyGenome(f, 7));
     return out;
 }
 
 std::string palettes(const Genome& g) {
     std::string s = toHex(g.background);
-    for (Color c : g.palette) s += " " + toHex(c);
+    for (Color c : g.palette)
+        s += " " + toHex(c);
     return s;
 }
 
@@ -53,7 +56,8 @@ TEST(Colourways, KeepTheStructureExactlyAndChangeThePalette) {
                 const std::string change = c.meta["lineage"].value("change", "");
                 EXPECT_EQ(change, describeChange(design, c));
                 EXPECT_NE(change, "no visible change");
-                for (const char* stroke : {"drop", "comb", "wave", "vortex", "initial state", "added", "removed"})
+                for (const char* stroke :
+                     {"drop", "comb", "wave", "vortex", "initial state", "added", "removed"})
                     EXPECT_EQ(change.find(stroke), std::string::npos) << change;
             }
         }
@@ -66,15 +70,18 @@ TEST(Colourways, AreReproducibleFromTheSeed) {
     request.seed = 99;
     const auto a = colourways(request), b = colourways(request);
     ASSERT_EQ(a.size(), 8u);
-    for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        EXPECT_EQ(a[i], b[i]);
     request.count = 3; // asking for fewer keeps the first ones
     const auto c = colourways(request);
-    for (std::size_t i = 0; i < c.size(); ++i) EXPECT_EQ(palettes(c[i]), palettes(a[i]));
+    for (std::size_t i = 0; i < c.size(); ++i)
+        EXPECT_EQ(palettes(c[i]), palettes(a[i]));
     request.count = 8;
     request.seed = 100;
     const auto d = colourways(request);
     int same = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) same += palettes(a[i]) == palettes(d[i]);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        same += palettes(a[i]) == palettes(d[i]);
     EXPECT_LT(same, 2);
 }
 
@@ -90,11 +97,14 @@ TEST(Colourways, AreVariedAndNeverRepeatADesign) {
             request.mix = mix;
             request.seed = 5;
             std::set<std::string> seen;
-            for (const Genome& p : request.parents) seen.insert(genomeId(p));
+            for (const Genome& p : request.parents)
+                seen.insert(genomeId(p));
             std::set<std::string> backgrounds;
             for (const Genome& c : colourways(request)) {
                 EXPECT_TRUE(seen.insert(genomeId(c)).second) << "a repeated design";
-                EXPECT_TRUE(sameStructure(c, request.parents[std::size_t(c.meta["lineage"]["child"].get<int>() - 1) % request.parents.size()]));
+                EXPECT_TRUE(
+                    sameStructure(c, request.parents[std::size_t(c.meta["lineage"]["child"].get<int>() - 1) %
+                                                     request.parents.size()]));
                 backgrounds.insert(palettes(c));
             }
             EXPECT_EQ(backgrounds.size(), 8u);
@@ -131,13 +141,15 @@ TEST(Colourways, MixedPalettesComeFromTheParents) {
     std::vector<Genome> parents{colourwayOf(design, 1.0, rng), colourwayOf(design, 1.0, rng)};
     std::set<std::string> inks;
     for (const Genome& p : parents)
-        for (Color c : p.palette) inks.insert(toHex(c));
+        for (Color c : p.palette)
+            inks.insert(toHex(c));
     int fromParents = 0, total = 0;
     for (int i = 0; i < 20; ++i) {
         Genome c = mixedColourway(parents, std::size_t(i % 2), rng);
         EXPECT_TRUE(sameStructure(c, design));
         EXPECT_TRUE(c.background == parents[0].background || c.background == parents[1].background);
-        for (Color ink : c.palette) fromParents += inks.count(toHex(ink)), ++total;
+        for (Color ink : c.palette)
+            fromParents += inks.count(toHex(ink)), ++total;
     }
     EXPECT_GT(fromParents, total / 2);
 }

@@ -43,7 +43,9 @@ std::vector<const Operation*> opsOf(const Genome& g, Tool tool) {
 std::vector<const Operation*> opsOf(Genome&&, Tool) = delete;
 
 /// Whether two 2D angles point opposite ways (a pass and its return).
-bool opposite(double a, double b) { return std::abs(std::fmod(std::abs(a - b), 360.0) - 180.0) < 1e-9; }
+bool opposite(double a, double b) {
+    return std::abs(std::fmod(std::abs(a - b), 360.0) - 180.0) < 1e-9;
+}
 
 /// The gel-git of a design: two combs of equal spacing drawn opposite ways, the second's tines
 /// half a spacing from the first's. Returns the index of the first, or -1.
@@ -51,7 +53,8 @@ int gelGitAt(const Genome& g) {
     for (std::size_t i = 0; i + 1 < g.operations.size(); ++i) {
         const Operation& a = g.operations[i];
         const Operation& b = g.operations[i + 1];
-        if (a.tool == Tool::Comb && b.tool == Tool::Comb && opposite(a.angle, b.angle) && a.spacing == b.spacing)
+        if (a.tool == Tool::Comb && b.tool == Tool::Comb && opposite(a.angle, b.angle) &&
+            a.spacing == b.spacing)
             return static_cast<int>(i);
     }
     return -1;
@@ -65,7 +68,8 @@ double bareShare(const Genome& g) {
     int bare = 0;
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-            const glm::dvec3 p{(i + 0.5) / n * g.size.x, (j + 0.5) / n * g.size.y, g.dimension == 3 ? g.size.z / 2.0 : 0.0};
+            const glm::dvec3 p{(i + 0.5) / n * g.size.x, (j + 0.5) / n * g.size.y,
+                               g.dimension == 3 ? g.size.z / 2.0 : 0.0};
             if (traceColor(ops, p) < 0) ++bare;
         }
     return double(bare) / (n * n);
@@ -85,8 +89,9 @@ TEST(Families, TwelveFlatAndThreeSolidFamiliesWithUniqueNames) {
     EXPECT_GE(flat, 12);
     EXPECT_GE(solid, 3);
     EXPECT_EQ(findFamily("no-such-family"), nullptr);
-    for (const char* required : {"stone", "gel-git", "chevron", "nonpareil", "bouquet", "peacock", "french-curl",
-                                 "spanish-wave", "birds-nest", "shawl", "tiger-eye", "zebra", "first-paper"})
+    for (const char* required :
+         {"stone", "gel-git", "chevron", "nonpareil", "bouquet", "peacock", "french-curl", "spanish-wave",
+          "birds-nest", "shawl", "tiger-eye", "zebra", "first-paper"})
         EXPECT_NE(findFamily(required), nullptr) << required;
 }
 
@@ -140,10 +145,11 @@ TEST(Families, CombedFamiliesHaveTheirGelGitAndWhatFollows) {
             const Operation& pass = g.operations[std::size_t(at)];
             const Operation& back = g.operations[std::size_t(at) + 1];
             // The return's tines lie between the first's: its origin half a spacing along N.
-            const double u = std::fmod(std::abs(glm::dot(back.center - pass.center,
-                                                         glm::dvec3(-std::sin(pass.angle * std::numbers::pi / 180),
-                                                                    std::cos(pass.angle * std::numbers::pi / 180), 0.0))),
-                                       pass.spacing);
+            const double u =
+                std::fmod(std::abs(glm::dot(back.center - pass.center,
+                                            glm::dvec3(-std::sin(pass.angle * std::numbers::pi / 180),
+                                                       std::cos(pass.angle * std::numbers::pi / 180), 0.0))),
+                          pass.spacing);
             EXPECT_NEAR(u, 0.5 * pass.spacing, 0.11) << name << " seed " << seed;
         }
         // A nonpareil's fine comb comes after the gel-git and across it.
@@ -168,7 +174,8 @@ TEST(Families, CombedFamiliesHaveTheirGelGitAndWhatFollows) {
         EXPECT_TRUE(opposite(second.angle, peacock.operations[fine].angle)) << "the peacock comb goes back";
         EXPECT_GT(second.spacing, peacock.operations[fine].spacing);
         const Genome chevron = make("chevron", seed);
-        EXPECT_GT(chevron.operations.back().spacing, chevron.operations.front().spacing) << "one wide pass across";
+        EXPECT_GT(chevron.operations.back().spacing, chevron.operations.front().spacing)
+            << "one wide pass across";
     }
 }
 
@@ -178,7 +185,8 @@ TEST(Families, CurlsNestsBandsSpotsAndStripes) {
         const Genome curl = make("french-curl", seed);
         const auto curls = opsOf(curl, Tool::Vortex);
         ASSERT_GE(curls.size(), 9u);
-        for (const Operation* v : curls) EXPECT_GT(v->core, 0.0) << "a clean eye (format version 2)";
+        for (const Operation* v : curls)
+            EXPECT_GT(v->core, 0.0) << "a clean eye (format version 2)";
         EXPECT_LT(curls[0]->alpha * curls[1]->alpha, 0.0);
         EXPECT_EQ(requiredVersion(curl), 2);
         // Bird's nest: a cored curl per nest.
@@ -191,15 +199,17 @@ TEST(Families, CurlsNestsBandsSpotsAndStripes) {
         EXPECT_GE(bands[0]->teeth.size(), 10u);
         // Tiger-eye: many small sprays over the stone.
         const Genome tiger = make("tiger-eye", seed);
-        const auto sprays = std::count_if(tiger.initial.begin(), tiger.initial.end(),
-                                          [](const Operation& op) { return op.tool == Tool::Spray && op.radius < 12.0; });
+        const auto sprays =
+            std::count_if(tiger.initial.begin(), tiger.initial.end(),
+                          [](const Operation& op) { return op.tool == Tool::Spray && op.radius < 12.0; });
         EXPECT_GE(sprays, 60);
         // Zebra: bull's-eyes, drops one in another at one centre, two inks alternating.
         const Genome zebra = make("zebra", seed);
         int alternations = 0;
         for (std::size_t i = 1; i < zebra.initial.size(); ++i)
-            if (zebra.initial[i].center == zebra.initial[i - 1].center && zebra.initial[i].color != zebra.initial[i - 1].color
-                && zebra.initial[i].radius < zebra.initial[i - 1].radius)
+            if (zebra.initial[i].center == zebra.initial[i - 1].center &&
+                zebra.initial[i].color != zebra.initial[i - 1].color &&
+                zebra.initial[i].radius < zebra.initial[i - 1].radius)
                 ++alternations;
         EXPECT_GE(alternations, 30);
         // The first paper's making: two comb pairs (across, then down), two passes, a wave.
@@ -234,13 +244,15 @@ TEST(Families, InksStandApartFromTheirNeighboursAndThePaper) {
     // palette mostly does. Over many seeds nearly every design reads.
     auto distance = [](Color a, Color b) {
         double rm = (a.r + b.r) / 2.0, dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-        return std::sqrt((2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg + (2.0 + (255.0 - rm) / 256.0) * db * db);
+        return std::sqrt((2.0 + rm / 256.0) * dr * dr + 4.0 * dg * dg +
+                         (2.0 + (255.0 - rm) / 256.0) * db * db);
     };
     int readable = 0, total = 0;
     for (std::uint64_t seed = 1; seed <= 200; ++seed) {
         const Genome g = make("stone", seed);
         bool ok = true;
-        for (std::size_t i = 1; i < g.palette.size(); ++i) ok = ok && distance(g.palette[i], g.palette[i - 1]) >= 90.0;
+        for (std::size_t i = 1; i < g.palette.size(); ++i)
+            ok = ok && distance(g.palette[i], g.palette[i - 1]) >= 90.0;
         readable += ok;
         ++total;
     }
@@ -266,12 +278,14 @@ TEST(FamiliesCli, ListsFamiliesAndWritesOne) {
         listed.insert(line.substr(0, line.find(' ')));
         start = end + 1;
     }
-    for (const Family& f : allFamilies()) EXPECT_TRUE(listed.count(std::string(f.name))) << f.name << " listed, name first";
+    for (const Family& f : allFamilies())
+        EXPECT_TRUE(listed.count(std::string(f.name))) << f.name << " listed, name first";
     EXPECT_EQ(listed.size(), allFamilies().size());
 
     const fs::path dir = test::outputDir("families-cli");
     const fs::path out = dir / "nonpareil.marble.json";
-    const test::RunResult made = runMarbler({"random", "--family", "nonpareil", "--seed", "5", "-o", out.string()});
+    const test::RunResult made =
+        runMarbler({"random", "--family", "nonpareil", "--seed", "5", "-o", out.string()});
     ASSERT_EQ(made.exitCode, 0) << made.err;
     EXPECT_EQ(loadGenome(out), make("nonpareil", 5));
     EXPECT_EQ(test::readFile(out), serializeGenome(make("nonpareil", 5)));
@@ -283,13 +297,15 @@ TEST(FamiliesCli, BadFamilyOrDimensionIsOneLineAndExit2) {
     fs::remove(out);
     for (const std::vector<std::string>& args :
          {std::vector<std::string>{"random", "--family", "paisley", "--seed", "1", "-o", out.string()},
-          std::vector<std::string>{"random", "--family", "veined", "--dimension", "2", "--seed", "1", "-o", out.string()}}) {
+          std::vector<std::string>{"random", "--family", "veined", "--dimension", "2", "--seed", "1", "-o",
+                                   out.string()}}) {
         const test::RunResult run = runMarbler(args);
         EXPECT_EQ(run.exitCode, 2);
         EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
         EXPECT_FALSE(fs::exists(out));
     }
-    EXPECT_NE(runMarbler({"random", "--family", "paisley", "--seed", "1", "-o", out.string()}).err.find("nonpareil"),
+    EXPECT_NE(runMarbler({"random", "--family", "paisley", "--seed", "1", "-o", out.string()})
+                  .err.find("nonpareil"),
               std::string::npos)
         << "the message names the families";
 }
@@ -300,7 +316,8 @@ TEST(Families, InkCoversTheBathLeavingLittleBarePaper) {
     // bare). The flat families' stone grounds leave about a fifth of the paper showing.
     for (const Family& family : allFamilies()) {
         double worst = 0.0;
-        for (std::uint64_t seed = 1; seed <= 4; ++seed) worst = std::max(worst, bareShare(make(family.name, seed)));
+        for (std::uint64_t seed = 1; seed <= 4; ++seed)
+            worst = std::max(worst, bareShare(make(family.name, seed)));
         EXPECT_LE(worst, 0.3) << family.name << ": " << worst;
     }
 }

@@ -19,11 +19,14 @@
 namespace marbler {
 namespace {
 
-double luma(Color c) { return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0; }
+double luma(Color c) {
+    return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0;
+}
 
 int countTool(const std::vector<Operation>& ops, Tool tool) {
     int n = 0;
-    for (const Operation& op : ops) n += op.tool == tool ? 1 : 0;
+    for (const Operation& op : ops)
+        n += op.tool == tool ? 1 : 0;
     return n;
 }
 
@@ -65,12 +68,14 @@ TEST(Generator, MatchesTheCommittedDesigns) {
         std::uint64_t seed;
         int version;
     };
-    for (const Pinned& pinned : {Pinned{2, 7, 1}, Pinned{3, 7, 1}, Pinned{2, 12, 2}, Pinned{2, 38, 2}, Pinned{2, 55, 2}}) {
+    for (const Pinned& pinned :
+         {Pinned{2, 7, 1}, Pinned{3, 7, 1}, Pinned{2, 12, 2}, Pinned{2, 38, 2}, Pinned{2, 55, 2}}) {
         std::filesystem::path file = test::dataDir() / "breeding" /
                                      ("random-" + std::to_string(pinned.dimension) + "d-seed-" +
                                       std::to_string(pinned.seed) + ".marble.json");
         Genome expected = loadGenome(file);
-        EXPECT_EQ(serializeGenome(randomGenome(pinned.seed, pinned.dimension)), serializeGenome(expected)) << file;
+        EXPECT_EQ(serializeGenome(randomGenome(pinned.seed, pinned.dimension)), serializeGenome(expected))
+            << file;
         EXPECT_EQ(requiredVersion(expected), pinned.version) << file;
     }
 }
@@ -82,7 +87,8 @@ TEST(Generator, DifferentSeedsGiveDifferentDesigns) {
             Genome g = randomGenome(seed, dimension);
             texts.insert(serializeGenome(g));
             std::string palette;
-            for (Color c : g.palette) palette += toHex(c);
+            for (Color c : g.palette)
+                palette += toHex(c);
             palettes.insert(palette);
             names.insert(g.meta["name"].get<std::string>());
         }
@@ -118,7 +124,8 @@ TEST(Generator, ManySeedsAreValidAndShapedLikeMarbling) {
             EXPECT_LE(g.initial.size() + g.operations.size(), 320u);
             for (const Operation& op : g.operations) {
                 EXPECT_TRUE(toolSpec(op.tool).movesInk);
-                if (dimension == 3 && (op.tool == Tool::Comb || op.tool == Tool::Line || op.tool == Tool::Wave)) {
+                if (dimension == 3 &&
+                    (op.tool == Tool::Comb || op.tool == Tool::Line || op.tool == Tool::Wave)) {
                     EXPECT_NEAR(glm::length(op.direction), 1.0, 1e-12);
                     EXPECT_NEAR(glm::length(op.normal), 1.0, 1e-12);
                     EXPECT_NEAR(glm::dot(op.direction, op.normal), 0.0, 1e-12);
@@ -195,7 +202,8 @@ TEST(Generator, StrokeFamiliesAllAppear) {
     for (int dimension : {2, 3}) {
         std::set<Tool> seen;
         for (std::uint64_t seed = 0; seed < 200; ++seed)
-            for (const Operation& op : randomGenome(seed, dimension).operations) seen.insert(op.tool);
+            for (const Operation& op : randomGenome(seed, dimension).operations)
+                seen.insert(op.tool);
         EXPECT_TRUE(seen.count(Tool::Comb));
         EXPECT_TRUE(seen.count(Tool::Wave));
         EXPECT_TRUE(seen.count(Tool::Circle));
@@ -287,7 +295,8 @@ TEST(Generator, FlatDesignsSometimesHaveVersionTwosTouches) {
     EXPECT_LT(cored, 0.5 * swirling);
     EXPECT_EQ(fields.size(), 2u);
     EXPECT_GT(teeth.size(), 0.9 * 2 * stretched) << "the passes' teeth differ from design to design";
-    for (std::uint64_t seed = 0; seed < 60; ++seed) EXPECT_EQ(requiredVersion(randomGenome(seed, 3)), 1) << seed;
+    for (std::uint64_t seed = 0; seed < 60; ++seed)
+        EXPECT_EQ(requiredVersion(randomGenome(seed, 3)), 1) << seed;
 }
 
 TEST(Generator, RejectsOtherDimensions) {
@@ -301,7 +310,8 @@ TEST(Generator, PartsUseTheirOwnStreams) {
     Pcg32 c(9), d(9);
     EXPECT_EQ(randomInitial(c, 2, {1000, 1000, 1000}, 4), randomInitial(d, 2, {1000, 1000, 1000}, 4));
     Pcg32 e(9);
-    for (const Operation& op : randomInitial(e, 3, {1000, 1000, 1000}, 2)) EXPECT_LT(op.color, 2);
+    for (const Operation& op : randomInitial(e, 3, {1000, 1000, 1000}, 2))
+        EXPECT_LT(op.color, 2);
 }
 
 // Names follow the colours: "Umber Marble" for a blue and yellow design told the user the
@@ -326,7 +336,8 @@ TEST(Generator, NamesComeFromThePalette) {
             std::vector<double> share(g.palette.size(), 0.0);
             for (const Operation& op : g.initial)
                 if (toolSpec(op.tool).laysInk) share[std::size_t(op.color)] += std::pow(op.radius, dimension);
-            for (double v : share) best = std::max(best, v);
+            for (double v : share)
+                best = std::max(best, v);
             mine = share[std::size_t(ink)];
             EXPECT_GE(mine, 0.999 * best) << name << " seed " << seed;
         }

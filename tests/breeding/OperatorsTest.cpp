@@ -1,9 +1,9 @@
 // The genetic operators: what each keeps and exchanges, locks, reproducibility and lineage.
 
+#include "marbler/Operators.h"
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
-#include "marbler/Operators.h"
 #include "marbler/Params.h"
 #include "marbler/Random.h"
 
@@ -21,7 +21,8 @@ namespace {
 
 std::vector<Tool> toolsOf(const std::vector<Operation>& ops) {
     std::vector<Tool> tools;
-    for (const Operation& op : ops) tools.push_back(op.tool);
+    for (const Operation& op : ops)
+        tools.push_back(op.tool);
     return tools;
 }
 
@@ -48,8 +49,8 @@ double scaledDistance(const Genome& a, const Genome& b) {
         for (const ParamSpec& spec : toolSpec(x.tool).params(a.dimension)) {
             if (spec.mutationScale == 0.0) continue;
             double unit = spec.kind == ParamKind::Angle || spec.kind == ParamKind::Phase ? spec.mutationScale
-                        : spec.kind == ParamKind::Direction                             ? spec.mutationScale
-                                                                                        : spec.mutationScale * side;
+                          : spec.kind == ParamKind::Direction                            ? spec.mutationScale
+                                                              : spec.mutationScale * side;
             for (int i = 0; i < componentCount(spec, x, a.dimension); ++i) {
                 sum += std::abs(getComponent(spec, y, i) - getComponent(spec, x, i)) / unit;
                 ++n;
@@ -123,14 +124,17 @@ TEST_P(Operators, NoTwoChildrenAreEqual) {
     for (const Case& k : cases)
         for (std::uint64_t seed : {1ull, 2ull, 3ull})
             for (int count = 1; count <= 9; count += test::fullOrSanitized(1, 4)) {
-                SCOPED_TRACE(std::string(k.what) + ", seed " + std::to_string(seed) + ", count " + std::to_string(count));
+                SCOPED_TRACE(std::string(k.what) + ", seed " + std::to_string(seed) + ", count " +
+                             std::to_string(count));
                 std::vector<Genome> children = breed(request(k.op, k.parents, seed, count, k.strength));
                 ASSERT_EQ(children.size(), std::size_t(count));
                 std::set<std::string> ids;
-                for (const Genome& p : k.parents) ids.insert(genomeId(p));
+                for (const Genome& p : k.parents)
+                    ids.insert(genomeId(p));
                 const std::size_t parentIds = ids.size();
                 for (const Genome& child : children) {
-                    EXPECT_TRUE(ids.insert(genomeId(child)).second) << "a child repeats a design of its generation";
+                    EXPECT_TRUE(ids.insert(genomeId(child)).second)
+                        << "a child repeats a design of its generation";
                     EXPECT_NO_THROW(validateGenome(child, "child"));
                 }
                 EXPECT_EQ(ids.size(), parentIds + children.size());
@@ -159,7 +163,8 @@ TEST_P(Operators, ChildrenCarryTheGenerationAndNumbersTheyAreGiven) {
 TEST_P(Operators, SwapClampsColourIndicesToTheHomePalette) {
     Genome a = parent(1), b = parent(2);
     a.palette.resize(2);
-    for (Operation& op : a.initial) op.color %= 2;
+    for (Operation& op : a.initial)
+        op.color %= 2;
     Operation drop = defaultOperation(Tool::Drop, dimension(), {500, 500, 500});
     drop.color = static_cast<int>(b.palette.size()) - 1;
     b.operations.push_back(drop);
@@ -176,7 +181,8 @@ TEST_P(Operators, ReinitKeepsOperationsAndDrawsANewInitialState) {
         EXPECT_EQ(child.operations, p.operations);
         EXPECT_EQ(child.palette, p.palette);
         EXPECT_NE(child.initial, p.initial);
-        for (const Operation& op : child.initial) EXPECT_LT(op.color, static_cast<int>(p.palette.size()));
+        for (const Operation& op : child.initial)
+            EXPECT_LT(op.color, static_cast<int>(p.palette.size()));
         initials.insert(serializeGenome(child));
     }
     EXPECT_EQ(initials.size(), children.size()); // each child its own pattern
@@ -218,8 +224,10 @@ TEST_P(Operators, AlterKeepsEveryParameterOfEveryToolInItsTablesRange) {
         for (const ParamSpec& param : spec.params(dimension())) {
             if (param.kind == ParamKind::Choice || param.kind == ParamKind::Color) continue;
             for (int i = 0; i < componentCount(param, op, dimension()); ++i) {
-                if (std::isfinite(param.range.min)) setComponent(param, op, i, param.range.min + 1e-3);
-                else if (std::isfinite(param.range.max)) setComponent(param, op, i, param.range.max);
+                if (std::isfinite(param.range.min))
+                    setComponent(param, op, i, param.range.min + 1e-3);
+                else if (std::isfinite(param.range.max))
+                    setComponent(param, op, i, param.range.max);
             }
         }
         // A flow's steps have a bound of their own, which depends on the other numbers: at its
@@ -242,7 +250,8 @@ TEST_P(Operators, AlterKeepsEveryParameterOfEveryToolInItsTablesRange) {
                     double v = getComponent(param, op, i);
                     ASSERT_TRUE(std::isfinite(v)) << what << " generation " << generation;
                     ASSERT_TRUE(param.range.contains(v))
-                        << what << "[" << i << "] = " << v << " " << param.range.describe() << ", generation " << generation;
+                        << what << "[" << i << "] = " << v << " " << param.range.describe() << ", generation "
+                        << generation;
                 }
             }
         }
@@ -287,7 +296,8 @@ Genome versionTwoDesign(std::uint64_t seed) {
 Genome versionOneDesign(std::uint64_t seed) {
     Genome g = randomGenome(seed, 2);
     std::erase_if(g.operations, [](const Operation& op) { return toolSpec(op.tool).version > 1; });
-    for (Operation& op : g.operations) op.core = 0.0;
+    for (Operation& op : g.operations)
+        op.core = 0.0;
     g.operations.push_back(defaultOperation(Tool::Vortex, 2, {400, 600, 0}));
     g.bleed = 0.0;
     return g;
@@ -298,13 +308,15 @@ TEST(OperatorsVersionTwo, AlteredDesignsStayValidVersionTwoAndReproducible) {
         const Genome p = versionTwoDesign(seed);
         ASSERT_NO_THROW(validateGenome(p, "parent"));
         for (double strength : {0.1, 0.5, 1.0}) {
-            const std::vector<Genome> children = breed(request(GeneticOperator::Alter, {p}, seed, 6, strength));
+            const std::vector<Genome> children =
+                breed(request(GeneticOperator::Alter, {p}, seed, 6, strength));
             const std::vector<Genome> again = breed(request(GeneticOperator::Alter, {p}, seed, 6, strength));
-            const std::vector<Genome> other = breed(request(GeneticOperator::Alter, {p}, seed + 100, 6, strength));
+            const std::vector<Genome> other =
+                breed(request(GeneticOperator::Alter, {p}, seed + 100, 6, strength));
             for (std::size_t i = 0; i < children.size(); ++i) {
                 const Genome& child = children[i];
-                SCOPED_TRACE("seed " + std::to_string(seed) + " strength " + std::to_string(strength) + " child " +
-                             std::to_string(i));
+                SCOPED_TRACE("seed " + std::to_string(seed) + " strength " + std::to_string(strength) +
+                             " child " + std::to_string(i));
                 ASSERT_NO_THROW(validateGenome(child, "child"));
                 EXPECT_EQ(requiredVersion(child), 2);
                 EXPECT_EQ(child.bleed, p.bleed);
@@ -337,13 +349,15 @@ TEST(OperatorsVersionTwo, AlteredVersionOneDesignsStayVersionOne) {
         for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, seed, 6, 1.0))) {
             EXPECT_EQ(requiredVersion(child), 1) << "seed " << seed;
             EXPECT_EQ(child.bleed, 0.0);
-            for (const Operation& op : child.operations) EXPECT_EQ(op.core, 0.0);
+            for (const Operation& op : child.operations)
+                EXPECT_EQ(op.core, 0.0);
         }
     }
     // A solid design too: its cores stay 0.
     const Genome solid = randomGenome(3, 3);
     ASSERT_EQ(requiredVersion(solid), 1);
-    for (const Genome& child : breed(request(GeneticOperator::Alter, {solid}, 3, 4, 1.0))) EXPECT_EQ(requiredVersion(child), 1);
+    for (const Genome& child : breed(request(GeneticOperator::Alter, {solid}, 3, 4, 1.0)))
+        EXPECT_EQ(requiredVersion(child), 1);
 }
 
 TEST(OperatorsVersionTwo, RecombineAndSwapCarryWholeStrokes) {
@@ -362,7 +376,8 @@ TEST(OperatorsVersionTwo, RecombineAndSwapCarryWholeStrokes) {
             // Every stroke is one of a parent's, whole: a flow keeps its steps, a stretch its teeth.
             bool found = false;
             for (const Genome* parent : {&a, &b})
-                for (const Operation& q : parent->operations) found = found || q == op;
+                for (const Operation& q : parent->operations)
+                    found = found || q == op;
             EXPECT_TRUE(found);
             withFlow += op.tool == Tool::Flow ? 1 : 0;
         }
@@ -403,8 +418,10 @@ TEST_P(Operators, StrongerAlterationMovesFurtherOnAverage) {
     double weak = 0.0, strong = 0.0;
     for (std::uint64_t seed = 0; seed < 10; ++seed) {
         Genome p = parent(seed + 50);
-        for (const Genome& c : breed(request(GeneticOperator::Alter, {p}, seed, 8, 0.1))) weak += scaledDistance(p, c);
-        for (const Genome& c : breed(request(GeneticOperator::Alter, {p}, seed, 8, 0.8))) strong += scaledDistance(p, c);
+        for (const Genome& c : breed(request(GeneticOperator::Alter, {p}, seed, 8, 0.1)))
+            weak += scaledDistance(p, c);
+        for (const Genome& c : breed(request(GeneticOperator::Alter, {p}, seed, 8, 0.8)))
+            strong += scaledDistance(p, c);
     }
     // Gaussian steps scale with strength: about eight times further, allowing for the clamps.
     EXPECT_GT(strong, 4.0 * weak);
@@ -425,7 +442,8 @@ TEST_P(Operators, RecombineOnlyUsesTheParentsOperations) {
             for (const Operation& op : child.operations) {
                 bool found = false;
                 for (const Genome& p : some)
-                    for (const Operation& q : p.operations) found = found || q == op;
+                    for (const Operation& q : p.operations)
+                        found = found || q == op;
                 EXPECT_TRUE(found) << "child " << i << " has a stroke no parent has";
             }
             EXPECT_NO_THROW(validateGenome(child, "child"));
@@ -439,8 +457,10 @@ TEST_P(Operators, RecombineMixesStrokesOfBothParents) {
     for (const Genome& child : breed(request(GeneticOperator::Recombine, {a, b}, 5, 20))) {
         bool fromA = false, fromB = false;
         for (const Operation& op : child.operations) {
-            for (const Operation& q : a.operations) fromA = fromA || q == op;
-            for (const Operation& q : b.operations) fromB = fromB || q == op;
+            for (const Operation& q : a.operations)
+                fromA = fromA || q == op;
+            for (const Operation& q : b.operations)
+                fromB = fromB || q == op;
         }
         mixed += fromA && fromB ? 1 : 0;
     }
@@ -456,7 +476,8 @@ TEST_P(Operators, RecombineNeverCopiesTheHomeParent) {
         b.operations.resize(std::min<std::size_t>(b.operations.size(), 2));
         ASSERT_NE(a.operations, b.operations);
         for (const Genome& child : breed(request(GeneticOperator::Recombine, {a, b}, seed, 8))) {
-            EXPECT_NE(child.operations, child.initial == a.initial ? a.operations : b.operations) << "seed " << seed;
+            EXPECT_NE(child.operations, child.initial == a.initial ? a.operations : b.operations)
+                << "seed " << seed;
         }
     }
 }
@@ -511,7 +532,8 @@ TEST_P(Operators, AlterWithLockedOperationsVariesWhatIsFree) {
         EXPECT_EQ(toolsOf(child.initial), toolsOf(p.initial));
     }
     setLocks(p, {true, true, true});
-    for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, 4, 2, 0.8))) EXPECT_EQ(genomeId(child), genomeId(p));
+    for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, 4, 2, 0.8)))
+        EXPECT_EQ(genomeId(child), genomeId(p));
 }
 
 TEST_P(Operators, ReinitWithLockedInitialStateRecolours) {
@@ -528,7 +550,8 @@ TEST_P(Operators, ReinitWithLockedInitialStateRecolours) {
 TEST_P(Operators, SeedsReproduceAndChildrenAreIndependentOfCount) {
     Genome a = parent(40), b = parent(41);
     for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Reinit}) {
-        std::vector<Genome> parents = op == GeneticOperator::Recombine ? std::vector<Genome>{a, b} : std::vector<Genome>{a};
+        std::vector<Genome> parents =
+            op == GeneticOperator::Recombine ? std::vector<Genome>{a, b} : std::vector<Genome>{a};
         std::vector<Genome> first = breed(request(op, parents, 1234, 6));
         std::vector<Genome> again = breed(request(op, parents, 1234, 6));
         std::vector<Genome> fewer = breed(request(op, parents, 1234, 3));
@@ -541,7 +564,8 @@ TEST_P(Operators, SeedsReproduceAndChildrenAreIndependentOfCount) {
             }
         }
         int same = 0;
-        for (std::size_t i = 0; i < first.size(); ++i) same += genomeId(first[i]) == genomeId(other[i]) ? 1 : 0;
+        for (std::size_t i = 0; i < first.size(); ++i)
+            same += genomeId(first[i]) == genomeId(other[i]) ? 1 : 0;
         EXPECT_LT(same, 3) << operatorName(op);
     }
 }
@@ -601,10 +625,13 @@ TEST_P(Operators, BadRequestsAreInputErrors) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Dimensions, Operators, ::testing::Values(2, 3),
-                         [](const ::testing::TestParamInfo<int>& info) { return std::to_string(info.param) + "D"; });
+                         [](const ::testing::TestParamInfo<int>& info) {
+                             return std::to_string(info.param) + "D";
+                         });
 
 TEST(OperatorNames, RoundTrip) {
-    for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Swap, GeneticOperator::Reinit})
+    for (GeneticOperator op :
+         {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Swap, GeneticOperator::Reinit})
         EXPECT_EQ(parseOperator(operatorName(op)), op);
     EXPECT_FALSE(parseOperator("mutate"));
     EXPECT_EQ(minParents(GeneticOperator::Recombine), 2);

@@ -17,7 +17,9 @@
 
 namespace marbler::test {
 
-std::filesystem::path dataDir() { return MARBLER_TEST_DATA; }
+std::filesystem::path dataDir() {
+    return MARBLER_TEST_DATA;
+}
 
 std::filesystem::path outputDir(const std::string& name) {
     std::filesystem::path dir = std::filesystem::path(MARBLER_TEST_OUTPUT) / name;
@@ -26,11 +28,17 @@ std::filesystem::path outputDir(const std::string& name) {
     return dir;
 }
 
-std::string examplePath(const std::string& name) { return (dataDir() / "examples" / name).string(); }
+std::string examplePath(const std::string& name) {
+    return (dataDir() / "examples" / name).string();
+}
 
-Genome loadExample(const std::string& name) { return loadGenome(dataDir() / "examples" / name); }
+Genome loadExample(const std::string& name) {
+    return loadGenome(dataDir() / "examples" / name);
+}
 
-std::size_t lineCount(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+std::size_t lineCount(const std::string& text) {
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
 
 std::string readFile(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -47,7 +55,9 @@ void writeFile(const std::filesystem::path& file, const std::string& text) {
     if (!out) throw std::runtime_error("cannot write " + file.string());
 }
 
-RunResult runMarbler(const std::vector<std::string>& args) { return runMarbler(args, {}); }
+RunResult runMarbler(const std::vector<std::string>& args) {
+    return runMarbler(args, {});
+}
 
 RunResult runMarbler(const std::vector<std::string>& args, const std::vector<EnvChange>& env) {
     // Capture through files rather than pipes: no risk of a full pipe blocking the child.
@@ -65,14 +75,17 @@ RunResult runMarbler(const std::vector<std::string>& args, const std::vector<Env
         ::dup2(out, 1);
         ::dup2(err, 2);
         for (const auto& [name, value] : env) {
-            if (value) ::setenv(name.c_str(), value->c_str(), 1);
-            else ::unsetenv(name.c_str());
+            if (value)
+                ::setenv(name.c_str(), value->c_str(), 1);
+            else
+                ::unsetenv(name.c_str());
         }
         std::vector<char*> argv;
         std::string exe = MARBLER_EXECUTABLE;
         argv.push_back(exe.data());
         std::vector<std::string> copy = args;
-        for (std::string& a : copy) argv.push_back(a.data());
+        for (std::string& a : copy)
+            argv.push_back(a.data());
         argv.push_back(nullptr);
         ::execv(exe.c_str(), argv.data());
         ::_exit(127);
@@ -111,7 +124,8 @@ void expectEveryRegistryTool(const std::set<std::string>& seen, const std::strin
             EXPECT_TRUE(seen.count(tool)) << what << " " << tool;
             for (const ParamSpec& param : spec.params(dimension))
                 for (std::string_view choice : param.choices) {
-                    const std::string chosen = tool + " " + std::string(param.key) + "=" + std::string(choice);
+                    const std::string chosen =
+                        tool + " " + std::string(param.key) + "=" + std::string(choice);
                     EXPECT_TRUE(seen.count(chosen)) << what << " " << chosen;
                 }
         }

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <optional>
 #include <set>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace marbler::test {
@@ -23,8 +23,7 @@ inline constexpr bool Sanitized = false;
 /// `full` in the release build, `reduced` under the sanitiser: for a test that repeats the same
 /// work many times, so that every case of it still runs under the sanitiser, on less of it. The
 /// release build runs it in full.
-template <class T>
-constexpr T fullOrSanitized(T full, T reduced) {
+template <class T> constexpr T fullOrSanitized(T full, T reduced) {
     return Sanitized ? reduced : full;
 }
 

@@ -7,8 +7,8 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
 
-#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -20,7 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path genomeData() { return test::dataDir() / "genome"; }
+fs::path genomeData() {
+    return test::dataDir() / "genome";
+}
 
 /// Each file of tests/data/genome/invalid and the substring its error must contain: the file
 /// name, the JSON location and the rule.
@@ -34,7 +36,8 @@ const InvalidCase InvalidCases[] = {
     {"not-an-object", ": must be a JSON object (got an array of 3)"},
     {"format-wrong", "format: must be \"marbler-genome\" (got \"marbler-genom\")"},
     {"format-missing", "format: missing"},
-    {"version-newer", "version: made by a newer version of Marbler (format version 3; this one reads version 2)"},
+    {"version-newer",
+     "version: made by a newer version of Marbler (format version 3; this one reads version 2)"},
     {"version-fraction", "version: must be an integer (got 1.5)"},
     {"dimension-four", "dimension: must be 2 or 3 (got 4)"},
     {"size-negative", "size[1]: must be > 0 (got -800)"},
@@ -81,7 +84,8 @@ const InvalidCase InvalidCases[] = {
     {"teeth-too-many", "operations[5].teeth: must be an array of 2 to 1000 numbers (got an array of 1001)"},
     {"teeth-not-array", "operations[5].teeth: must be an array of 2 to 1000 numbers (got 100)"},
     {"teeth-not-number", "operations[5].teeth[1]: must be a number (got \"100\")"},
-    {"teeth-not-increasing", "operations[5].teeth[2]: must be greater than the tooth before it (100; got 100)"},
+    {"teeth-not-increasing",
+     "operations[5].teeth[2]: must be greater than the tooth before it (100; got 100)"},
     {"teeth-decreasing", "operations[5].teeth[5]: must be greater than the tooth before it (600; got -800)"},
     {"shift-missing", "operations[5].shift: missing"},
     {"shift-as-string", "operations[5].shift: must be a number (got \"40\")"},
@@ -97,8 +101,10 @@ const InvalidCase InvalidCases[] = {
     {"steps-fraction", "operations[6].steps: must be an integer (got 64.5)"},
     {"steps-zero", "operations[6].steps: must be in [1, 10000] (got 0)"},
     {"steps-too-many", "operations[6].steps: must be in [1, 10000] (got 10001)"},
-    {"steps-too-few", "operations[6].steps: must be at least 32 |speed| time max(size) / min(size)^2 = 16 (got 15)"},
-    {"steps-impossible", "operations[6].steps: cannot be enough: this speed, time and size need more than 10000 steps"},
+    {"steps-too-few",
+     "operations[6].steps: must be at least 32 |speed| time max(size) / min(size)^2 = 16 (got 15)"},
+    {"steps-impossible",
+     "operations[6].steps: cannot be enough: this speed, time and size need more than 10000 steps"},
     {"core-negative", "operations[4].core: must be >= 0 (got -1)"},
     {"core-as-string", "operations[3].core: must be a number (got \"25\")"},
     {"bleed-negative", "bleed: must be >= 0 (got -0.5)"},
@@ -264,17 +270,21 @@ TEST(GenomeIO, NearlyParallelNormalIsMadeOrthogonal) {
 
 TEST(GenomeIO, RoundTripsExactly) {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(test::dataDir() / "examples")) files.push_back(entry.path());
-    for (const auto& entry : fs::directory_iterator(genomeData() / "valid")) files.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(test::dataDir() / "examples"))
+        files.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(genomeData() / "valid"))
+        files.push_back(entry.path());
     std::vector<Genome> genomes;
-    for (const fs::path& file : files) genomes.push_back(loadGenome(file));
+    for (const fs::path& file : files)
+        genomes.push_back(loadGenome(file));
     // The examples hold a version-2 design (marbled-paper), so the tests that iterate them
     // meet stretch, flow, a core and a bleed.
-    EXPECT_TRUE(std::any_of(genomes.begin(), genomes.end(), [](const Genome& g) { return requiredVersion(g) == 2; }));
+    EXPECT_TRUE(
+        std::any_of(genomes.begin(), genomes.end(), [](const Genome& g) { return requiredVersion(g) == 2; }));
     for (const char* name : {"probes-0", "probes-1", "probes-2", "probes-3", "probes-4", "probes-v2-stretch",
                              "probes-v2-core", "probes-v2-flow"}) {
-        nlohmann::ordered_json probes =
-            nlohmann::ordered_json::parse(test::readFile(test::dataDir() / "conformance" / (std::string(name) + ".json")));
+        nlohmann::ordered_json probes = nlohmann::ordered_json::parse(
+            test::readFile(test::dataDir() / "conformance" / (std::string(name) + ".json")));
         genomes.push_back(parseGenome(probes["genome"].dump(), name));
     }
     genomes.push_back(smallGenome());
@@ -296,8 +306,9 @@ TEST(GenomeIO, SerialisedFormIsStableAndClean) {
     ASSERT_FALSE(text.empty());
     EXPECT_EQ(text.back(), '\n');
     // Top-level and entry key order.
-    std::vector<std::string> order = {"\"format\"", "\"version\"", "\"dimension\"", "\"size\"",  "\"background\"",
-                                      "\"palette\"", "\"initial\"", "\"operations\"", "\"source\"", "\"meta\""};
+    std::vector<std::string> order = {"\"format\"",     "\"version\"", "\"dimension\"", "\"size\"",
+                                      "\"background\"", "\"palette\"", "\"initial\"",   "\"operations\"",
+                                      "\"source\"",     "\"meta\""};
     std::size_t last = 0;
     for (const std::string& key : order) {
         std::size_t at = text.find(key);
@@ -307,7 +318,8 @@ TEST(GenomeIO, SerialisedFormIsStableAndClean) {
     }
     nlohmann::ordered_json json = nlohmann::ordered_json::parse(text);
     std::vector<std::string> combKeys;
-    for (auto it = json["operations"][0].begin(); it != json["operations"][0].end(); ++it) combKeys.push_back(it.key());
+    for (auto it = json["operations"][0].begin(); it != json["operations"][0].end(); ++it)
+        combKeys.push_back(it.key());
     EXPECT_EQ(combKeys, (std::vector<std::string>{"tool", "origin", "angle", "alpha", "lambda", "spacing"}));
     // Integral doubles are written as integers, others in shortest form; 2D sizes have 2 numbers.
     EXPECT_NE(text.find("\"spacing\": 80\n"), std::string::npos) << text;
@@ -342,7 +354,9 @@ TEST(GenomeIO, ValidateGenomeChecksInMemory) {
     expectError(bad, "mem: initial[0].color: must be an index into the palette, 0 to 1 (got 2)");
     bad = g;
     bad.initial.push_back(defaultOperation(Tool::Vortex, 2, {1, 1, 0}));
-    expectError(bad, "mem: initial[1].tool: \"vortex\" is not allowed in initial (only drop, spray and, in 3D, cylinder)");
+    expectError(
+        bad,
+        "mem: initial[1].tool: \"vortex\" is not allowed in initial (only drop, spray and, in 3D, cylinder)");
     bad = g;
     bad.operations.push_back(defaultOperation(Tool::Sphere, 2, {1, 1, 0}));
     expectError(bad, "mem: operations[1].tool: \"sphere\" is not available in 2D");
@@ -386,7 +400,8 @@ TEST(GenomeIO, ValidateGenomeChecksVersionTwoInMemory) {
     expectError(bad, "mem: operations[5].teeth: must hold 2 to 1000 numbers (got 1)");
     bad = g;
     bad.operations[5].teeth.assign(1001, 0.0);
-    for (std::size_t i = 0; i < bad.operations[5].teeth.size(); ++i) bad.operations[5].teeth[i] = double(i);
+    for (std::size_t i = 0; i < bad.operations[5].teeth.size(); ++i)
+        bad.operations[5].teeth[i] = double(i);
     expectError(bad, "mem: operations[5].teeth: must hold 2 to 1000 numbers (got 1001)");
     bad.operations[5].teeth.pop_back();
     EXPECT_NO_THROW(validateGenome(bad, "mem")) << "1,000 teeth are allowed";
@@ -413,7 +428,9 @@ TEST(GenomeIO, ValidateGenomeChecksVersionTwoInMemory) {
     expectError(bad, "mem: operations[6].time: must be > 0 (got 0)");
     bad = g;
     bad.operations[6].steps = 15;
-    expectError(bad, "mem: operations[6].steps: must be at least 32 |speed| time max(size) / min(size)^2 = 16 (got 15)");
+    expectError(
+        bad,
+        "mem: operations[6].steps: must be at least 32 |speed| time max(size) / min(size)^2 = 16 (got 15)");
     bad.operations[6].steps = 16;
     EXPECT_NO_THROW(validateGenome(bad, "mem")) << "exactly the fewest steps are enough";
     bad = g;
@@ -453,7 +470,8 @@ TEST(GenomeIO, WriterWritesTheLowestVersion) {
     g.bleed = 0.0;
     EXPECT_EQ(serializeGenome(g), oldText);
     for (const char* name : {"base-2d", "base-3d", "edge-3d"}) {
-        std::string text = serializeGenome(loadGenome(genomeData() / "valid" / (std::string(name) + ".marble.json")));
+        std::string text =
+            serializeGenome(loadGenome(genomeData() / "valid" / (std::string(name) + ".marble.json")));
         EXPECT_NE(text.find("\n  \"version\": 1,\n"), std::string::npos) << name;
         EXPECT_EQ(text.find("core"), std::string::npos) << name;
         EXPECT_EQ(text.find("bleed"), std::string::npos) << name;
@@ -501,8 +519,8 @@ TEST(GenomeIO, VersionTwoRoundTripsExactly) {
         if (g.dimension == 3) continue; // its vectors are normalised on loading
         // What the file says survives: the same JSON, key for key, as the file (whose numbers
         // are all written in their shortest form), meta aside.
-        nlohmann::ordered_json written = nlohmann::ordered_json::parse(text), original =
-            nlohmann::ordered_json::parse(test::readFile(file));
+        nlohmann::ordered_json written = nlohmann::ordered_json::parse(text),
+                               original = nlohmann::ordered_json::parse(test::readFile(file));
         EXPECT_EQ(written["operations"], original["operations"]) << name;
         EXPECT_EQ(written["bleed"], original["bleed"]) << name;
     }
@@ -581,7 +599,8 @@ TEST(GenomeIO, SaveAndLoad) {
     saveGenome(small, dir / "a.marble.json");
     EXPECT_EQ(loadGenome(dir / "a.marble.json"), small);
     std::vector<fs::path> left;
-    for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename());
+    for (const auto& entry : fs::directory_iterator(dir))
+        left.push_back(entry.path().filename());
     EXPECT_EQ(left, std::vector<fs::path>{"a.marble.json"});
 }
 
@@ -634,7 +653,8 @@ TEST(Registry, EveryToolIsFoundByItsNameAndSavesAndLoadsInEveryDimension) {
             // Every choice of its choice parameters (a wave's shapes) goes through a file.
             std::vector<int> choices{0};
             for (const ParamSpec& param : spec.params(dimension))
-                for (std::size_t k = 1; k < param.choices.size(); ++k) choices.push_back(int(k));
+                for (std::size_t k = 1; k < param.choices.size(); ++k)
+                    choices.push_back(int(k));
             for (int choice : choices) {
                 Genome g;
                 g.dimension = dimension;
@@ -645,7 +665,8 @@ TEST(Registry, EveryToolIsFoundByItsNameAndSavesAndLoadsInEveryDimension) {
                 (allowedInInitial(spec.tool, dimension) ? g.initial : g.operations).push_back(op);
                 // (A ripple keeps the egg-crate's second numbers in memory, unsaved: compare files.)
                 std::string file = serializeGenome(g);
-                EXPECT_EQ(serializeGenome(parseGenome(file, "mem")), file) << spec.name << " " << dimension << "D choice " << choice;
+                EXPECT_EQ(serializeGenome(parseGenome(file, "mem")), file)
+                    << spec.name << " " << dimension << "D choice " << choice;
             }
         }
     }
@@ -654,15 +675,18 @@ TEST(Registry, EveryToolIsFoundByItsNameAndSavesAndLoadsInEveryDimension) {
 TEST(Registry, InkLayingToolsAreTheInitialStateAndPushForms) {
     for (const ToolSpec& spec : allTools()) {
         for (int dimension : {2, 3}) {
-            EXPECT_EQ(allowedInInitial(spec.tool, dimension), spec.laysInk && spec.available(dimension)) << spec.name;
+            EXPECT_EQ(allowedInInitial(spec.tool, dimension), spec.laysInk && spec.available(dimension))
+                << spec.name;
             if (!spec.available(dimension)) continue;
-            bool push = spec.form(dimension) == ShaderForm::PushArea || spec.form(dimension) == ShaderForm::PushVolume;
+            bool push = spec.form(dimension) == ShaderForm::PushArea ||
+                        spec.form(dimension) == ShaderForm::PushVolume;
             // The shader's push form is the only one with an ink test (tools.glsl).
             if (spec.laysInk) {
                 EXPECT_TRUE(push) << spec.name;
             }
             bool hasColor = false;
-            for (const ParamSpec& param : spec.params(dimension)) hasColor = hasColor || param.kind == ParamKind::Color;
+            for (const ParamSpec& param : spec.params(dimension))
+                hasColor = hasColor || param.kind == ParamKind::Color;
             EXPECT_EQ(hasColor, spec.laysInk) << spec.name << " " << dimension << "D";
         }
     }
@@ -674,16 +698,19 @@ TEST(Registry, DefaultsLieInTheirRanges) {
         for (int dimension : {2, 3}) {
             if (!spec.available(dimension)) continue;
             Operation op = defaultOperation(spec.tool, dimension, {500, 500, 500});
-            ASSERT_NO_THROW(validateGenome([&] {
-                Genome g;
-                g.dimension = dimension;
-                g.palette = {Color{}};
-                (allowedInInitial(spec.tool, dimension) ? g.initial : g.operations).push_back(op);
-                return g;
-            }(), "defaults")) << spec.name;
+            ASSERT_NO_THROW(validateGenome(
+                [&] {
+                    Genome g;
+                    g.dimension = dimension;
+                    g.palette = {Color{}};
+                    (allowedInInitial(spec.tool, dimension) ? g.initial : g.operations).push_back(op);
+                    return g;
+                }(),
+                "defaults"))
+                << spec.name;
             for (const ParamSpec& param : spec.params(dimension)) {
-                if (param.kind == ParamKind::Choice || param.kind == ParamKind::Position
-                    || param.kind == ParamKind::Direction || param.kind == ParamKind::Color)
+                if (param.kind == ParamKind::Choice || param.kind == ParamKind::Position ||
+                    param.kind == ParamKind::Direction || param.kind == ParamKind::Color)
                     continue;
                 EXPECT_TRUE(param.range.contains(param.defaultValue)) << spec.name << "." << param.key;
                 EXPECT_GE(param.mutationScale, 0.0) << spec.name << "." << param.key;

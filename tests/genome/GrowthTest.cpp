@@ -1,10 +1,10 @@
 // The making of a design (genome-format.md): the design after K steps, each tool's growth within
 // a step, and the frames' growth; every grown design is a valid genome.
 
+#include "marbler/Growth.h"
 #include "TestUtil.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
-#include "marbler/Growth.h"
 #include "marbler/Params.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +15,8 @@ namespace marbler {
 namespace {
 
 Genome growthGenome() {
-    nlohmann::json file = nlohmann::json::parse(test::readFile(test::dataDir() / "conformance" / "growth-v2.json"));
+    nlohmann::json file =
+        nlohmann::json::parse(test::readFile(test::dataDir() / "conformance" / "growth-v2.json"));
     return parseGenome(file.at("genome").dump(), "growth-v2.json");
 }
 
@@ -34,7 +35,8 @@ TEST(Growth, StepsKeepTheFirstEntriesOfInitialThenOperations) {
     Genome some = designAfterSteps(genome, 3);
     ASSERT_EQ(some.initial.size(), 3u);
     EXPECT_TRUE(some.operations.empty());
-    for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(some.initial[i], genome.initial[i]);
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_EQ(some.initial[i], genome.initial[i]);
 
     EXPECT_EQ(designAfterSteps(genome, ink).initial, genome.initial);
     Genome later = designAfterSteps(genome, ink + 2);
@@ -51,7 +53,8 @@ std::vector<double> grownComponents(const Operation& op, int dimension, ParamFie
     std::vector<double> values;
     for (const ParamSpec& spec : toolSpec(op.tool).params(dimension))
         if (spec.field == field)
-            for (int i = 0; i < componentCount(spec, op, dimension); ++i) values.push_back(getComponent(spec, op, i));
+            for (int i = 0; i < componentCount(spec, op, dimension); ++i)
+                values.push_back(getComponent(spec, op, i));
     return values;
 }
 
@@ -88,10 +91,18 @@ TEST(Growth, EveryToolOfTheRegistryGrowsAsTheSpecSays) {
                 case Tool::Comb:
                 case Tool::Circle:
                 case Tool::Sphere:
-                case Tool::Vortex: field = ParamField::Alpha; break;
-                case Tool::Wave: field = ParamField::Amplitude; break;
-                case Tool::Stretch: field = ParamField::Shift; break;
-                case Tool::Flow: field = ParamField::Time; break;
+                case Tool::Vortex:
+                    field = ParamField::Alpha;
+                    break;
+                case Tool::Wave:
+                    field = ParamField::Amplitude;
+                    break;
+                case Tool::Stretch:
+                    field = ParamField::Shift;
+                    break;
+                case Tool::Flow:
+                    field = ParamField::Time;
+                    break;
                 }
                 std::optional<Operation> grown = grownOperation(op, dimension, s);
                 ASSERT_TRUE(grown);
@@ -124,7 +135,8 @@ TEST(Growth, FramesRunFromTheBareBathToTheDesign) {
     EXPECT_EQ(frameGrowth(69, 8, 9), 69.0);
     EXPECT_EQ(frameGrowth(69, 3, 9), 69.0 * 3 / 8);
     EXPECT_EQ(frameGrowth(7, 99, 100), 7.0);
-    for (int f = 1; f < 100; ++f) EXPECT_GT(frameGrowth(7, f, 100), frameGrowth(7, f - 1, 100));
+    for (int f = 1; f < 100; ++f)
+        EXPECT_GT(frameGrowth(7, f, 100), frameGrowth(7, f - 1, 100));
 }
 
 TEST(Growth, PartialStepsGrowInPlaceAndStayValidGenomes) {
@@ -171,7 +183,8 @@ TEST(Growth, FlowsAndSolidsStayValidAsTheyGrow) {
     flow.steps = minimumFlowSteps(flow);
     flat.operations.push_back(flow);
     flat.operations.push_back(defaultOperation(Tool::Stretch, 2, {500.0, 500.0, 0.0}));
-    for (double g = 0.0; g <= 3.0; g += 0.125) EXPECT_NO_THROW(validateGenome(designAtGrowth(flat, g), "flat")) << g;
+    for (double g = 0.0; g <= 3.0; g += 0.125)
+        EXPECT_NO_THROW(validateGenome(designAtGrowth(flat, g), "flat")) << g;
     EXPECT_DOUBLE_EQ(designAtGrowth(flat, 1.25).operations[0].time, flow.time * 0.25);
 
     Genome solid;
@@ -180,7 +193,8 @@ TEST(Growth, FlowsAndSolidsStayValidAsTheyGrow) {
     solid.initial.push_back(defaultOperation(Tool::Cylinder, 3, {500.0, 500.0, 500.0}));
     solid.initial.push_back(defaultOperation(Tool::Drop, 3, {300.0, 500.0, 500.0}));
     solid.operations.push_back(defaultOperation(Tool::Wave, 3, {500.0, 500.0, 500.0}));
-    for (double g = 0.0; g <= 3.0; g += 0.125) EXPECT_NO_THROW(validateGenome(designAtGrowth(solid, g), "solid")) << g;
+    for (double g = 0.0; g <= 3.0; g += 0.125)
+        EXPECT_NO_THROW(validateGenome(designAtGrowth(solid, g), "solid")) << g;
     Genome half = designAtGrowth(solid, 1.125);
     EXPECT_NEAR(half.initial[1].radius, solid.initial[1].radius * 0.5, 1e-12);
 }

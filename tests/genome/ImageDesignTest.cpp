@@ -1,9 +1,9 @@
 // Designs that marble a picture (marbler/ImageDesign.h): valid, reproducible, the picture as
 // the bath with no ink on it, a flow that carries it, and the picture's shape kept.
 
+#include "marbler/ImageDesign.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
-#include "marbler/ImageDesign.h"
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
 
@@ -17,7 +17,8 @@ using namespace marbler;
 namespace {
 
 const Operation* flowOf(const Genome& g) {
-    auto it = std::find_if(g.operations.begin(), g.operations.end(), [](const Operation& op) { return op.tool == Tool::Flow; });
+    auto it = std::find_if(g.operations.begin(), g.operations.end(),
+                           [](const Operation& op) { return op.tool == Tool::Flow; });
     return it == g.operations.end() ? nullptr : &*it;
 }
 

@@ -15,7 +15,6 @@ std::string genomeFile(const std::string& folder, const std::string& name) {
     return (test::dataDir() / "genome" / folder / (name + ".marble.json")).string();
 }
 
-
 } // namespace
 
 TEST(InfoVerb, SummarisesAValidGenome) {
@@ -26,7 +25,8 @@ TEST(InfoVerb, SummarisesAValidGenome) {
     EXPECT_NE(run.out.find("file:       " + file + "\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("dimension:  2\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("size:       1000 x 1000\n"), std::string::npos) << run.out;
-    EXPECT_NE(run.out.find("palette:    4 colours: #1f3b5a #b8412c #e0b44c #2e6e5e\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("palette:    4 colours: #1f3b5a #b8412c #e0b44c #2e6e5e\n"), std::string::npos)
+        << run.out;
     EXPECT_NE(run.out.find("background: #f3ecdc\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("initial:    5 (drop 5)\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("operations: 4 (comb 2, wave 1, vortex 1)\n"), std::string::npos) << run.out;
@@ -62,7 +62,8 @@ TEST(InfoVerb, SummarisesASolidGenome) {
     EXPECT_NE(run.out.find("dimension:  3\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("size:       1000 x 1000 x 600\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("initial:    2 (drop 1, cylinder 1)\n"), std::string::npos) << run.out;
-    EXPECT_NE(run.out.find("operations: 7 (line 1, comb 1, wave 2, circle 1, sphere 1, vortex 1)\n"), std::string::npos)
+    EXPECT_NE(run.out.find("operations: 7 (line 1, comb 1, wave 2, circle 1, sphere 1, vortex 1)\n"),
+              std::string::npos)
         << run.out;
 }
 
@@ -71,14 +72,16 @@ TEST(InfoVerb, WarnsAboutUnknownKeysButSucceeds) {
     test::RunResult run = test::runMarbler({"info", file});
     EXPECT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(test::lineCount(run.err), 3) << run.err;
-    EXPECT_NE(run.err.find("marbler info: warning: " + file + ": unknown key \"comment\" ignored\n"), std::string::npos)
+    EXPECT_NE(run.err.find("marbler info: warning: " + file + ": unknown key \"comment\" ignored\n"),
+              std::string::npos)
         << run.err;
     EXPECT_NE(run.out.find("source:     paper.png\n"), std::string::npos) << run.out;
 }
 
 TEST(InfoVerb, BadGenomeGivesOneLineAndExit2) {
-    for (const char* name : {"radius-negative", "syntax-error", "nested-too-deep", "version-newer", "normal-parallel",
-                             "v1-stretch", "v1-bleed", "steps-too-few", "teeth-not-increasing"}) {
+    for (const char* name :
+         {"radius-negative", "syntax-error", "nested-too-deep", "version-newer", "normal-parallel",
+          "v1-stretch", "v1-bleed", "steps-too-few", "teeth-not-increasing"}) {
         std::string file = genomeFile("invalid", name);
         test::RunResult run = test::runMarbler({"info", file});
         EXPECT_EQ(run.exitCode, 2) << name;
@@ -87,12 +90,16 @@ TEST(InfoVerb, BadGenomeGivesOneLineAndExit2) {
         EXPECT_TRUE(run.err.starts_with("marbler info: " + file + ": ")) << run.err;
     }
     std::string file = genomeFile("invalid", "radius-negative");
-    EXPECT_EQ(test::runMarbler({"info", file}).err, "marbler info: " + file + ": operations[3].radius: must be > 0 (got -2)\n");
+    EXPECT_EQ(test::runMarbler({"info", file}).err,
+              "marbler info: " + file + ": operations[3].radius: must be > 0 (got -2)\n");
 }
 
 TEST(InfoVerb, BadUsage) {
-    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
-             {"info"}, {"info", "a.json", "b.json"}, {"info", "--bogus", "a.json"}, {"info", "/no/such/file.marble.json"}}) {
+    for (const std::vector<std::string>& args :
+         std::vector<std::vector<std::string>>{{"info"},
+                                               {"info", "a.json", "b.json"},
+                                               {"info", "--bogus", "a.json"},
+                                               {"info", "/no/such/file.marble.json"}}) {
         test::RunResult run = test::runMarbler(args);
         EXPECT_EQ(run.exitCode, 2) << args.back();
         EXPECT_EQ(test::lineCount(run.err), 1) << run.err;

@@ -10,10 +10,10 @@
 #include "marbler/Random.h"
 #include "marbler/Tools.h"
 
-#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
@@ -30,7 +30,8 @@ Json readJson(const std::string& name) {
 
 glm::dvec3 point(const Json& values) {
     glm::dvec3 p(0.0);
-    for (std::size_t i = 0; i < values.size() && i < 3; ++i) p[static_cast<int>(i)] = values[i].get<double>();
+    for (std::size_t i = 0; i < values.size() && i < 3; ++i)
+        p[static_cast<int>(i)] = values[i].get<double>();
     return p;
 }
 
@@ -42,8 +43,9 @@ struct MapsFile {
 constexpr MapsFile MapsFiles[] = {{"maps.json", 1}, {"maps-v2.json", 2}};
 
 /// The colour probe files of both versions.
-constexpr const char* ProbeFiles[] = {"probes-0.json", "probes-1.json", "probes-2.json", "probes-3.json", "probes-4.json",
-                                      "probes-v2-stretch.json", "probes-v2-core.json", "probes-v2-flow.json"};
+constexpr const char* ProbeFiles[] = {"probes-0.json",       "probes-1.json",      "probes-2.json",
+                                      "probes-3.json",       "probes-4.json",      "probes-v2-stretch.json",
+                                      "probes-v2-core.json", "probes-v2-flow.json"};
 
 /// A genome of the given dimension that holds one operation, as the loader would see it. The
 /// palette is as large as the format allows so that any colour index of the data is valid.
@@ -52,7 +54,8 @@ Json wrap(const Json& op, int dimension, int version) {
     genome["size"] = dimension == 3 ? Json::array({1000, 1000, 1000}) : Json::array({1000, 1000});
     genome["background"] = "#000000";
     genome["palette"] = Json::array();
-    for (int i = 0; i < 16; ++i) genome["palette"].push_back("#102030");
+    for (int i = 0; i < 16; ++i)
+        genome["palette"].push_back("#102030");
     const ToolSpec* tool = findTool(op["tool"].get<std::string>());
     bool initial = tool && allowedInInitial(tool->tool, dimension);
     genome["initial"] = initial ? Json::array({op}) : Json::array();
@@ -105,7 +108,8 @@ TEST(Maps, VersionTwoCasesNeedVersionTwo) {
     Json maps = readJson("maps-v2.json");
     for (const Json& entry : maps["cases"]) {
         int dimension = entry["dimension"].get<int>();
-        EXPECT_THROW(parseGenome(wrap(entry["op"], dimension, 1).dump(), "maps-v2.json"), GenomeError) << entry["op"].dump();
+        EXPECT_THROW(parseGenome(wrap(entry["op"], dimension, 1).dump(), "maps-v2.json"), GenomeError)
+            << entry["op"].dump();
     }
 }
 
@@ -117,7 +121,8 @@ TEST(Maps, ConformanceCasesCoverEveryToolOfTheRegistry) {
     Json cases = Json::array();
     for (const MapsFile& file : MapsFiles) {
         const Json maps = readJson(file.name);
-        for (const Json& entry : maps["cases"]) cases.push_back(entry);
+        for (const Json& entry : maps["cases"])
+            cases.push_back(entry);
     }
     for (int dimension : {2, 3}) {
         for (const ToolSpec& spec : allTools()) {
@@ -126,25 +131,26 @@ TEST(Maps, ConformanceCasesCoverEveryToolOfTheRegistry) {
             int count = 0;
             for (const Json& entry : cases)
                 if (entry["dimension"] == dimension && entry["op"]["tool"] == name) ++count;
-            EXPECT_GE(count, 2) << "the maps files have no conformance cases for " << spec.name << " in " << dimension << "D";
+            EXPECT_GE(count, 2) << "the maps files have no conformance cases for " << spec.name << " in "
+                                << dimension << "D";
             for (const ParamSpec& param : spec.params(dimension)) {
                 const std::string key(param.key);
                 for (std::string_view choice : param.choices) {
                     bool seen = false;
                     for (const Json& entry : cases)
-                        seen = seen || (entry["dimension"] == dimension && entry["op"]["tool"] == name
-                                        && entry["op"].value(key, std::string()) == choice);
-                    EXPECT_TRUE(seen) << "the maps files have no " << spec.name << " with " << param.key << " \"" << choice
-                                      << "\" in " << dimension << "D";
+                        seen = seen || (entry["dimension"] == dimension && entry["op"]["tool"] == name &&
+                                        entry["op"].value(key, std::string()) == choice);
+                    EXPECT_TRUE(seen) << "the maps files have no " << spec.name << " with " << param.key
+                                      << " \"" << choice << "\" in " << dimension << "D";
                 }
                 if (!param.optional) continue;
                 bool seen = false;
                 for (const Json& entry : cases)
-                    seen = seen || (entry["dimension"] == dimension && entry["op"]["tool"] == name
-                                    && entry["op"].contains(key) && entry["op"][key].is_number()
-                                    && entry["op"][key].get<double>() != param.defaultValue);
-                EXPECT_TRUE(seen) << "the maps files have no " << spec.name << " with a " << param.key << " in " << dimension
-                                  << "D";
+                    seen = seen || (entry["dimension"] == dimension && entry["op"]["tool"] == name &&
+                                    entry["op"].contains(key) && entry["op"][key].is_number() &&
+                                    entry["op"][key].get<double>() != param.defaultValue);
+                EXPECT_TRUE(seen) << "the maps files have no " << spec.name << " with a " << param.key
+                                  << " in " << dimension << "D";
             }
         }
     }
@@ -159,7 +165,8 @@ TEST(Maps, ConformanceProbes) {
         ASSERT_GT(probes.size(), 100u) << name;
         int mismatches = 0;
         for (const Json& probe : probes) {
-            glm::dvec3 p(probe[0].get<double>(), probe[1].get<double>(), genome.dimension == 3 ? probe[2].get<double>() : 0.0);
+            glm::dvec3 p(probe[0].get<double>(), probe[1].get<double>(),
+                         genome.dimension == 3 ? probe[2].get<double>() : 0.0);
             int expected = probe[static_cast<std::size_t>(genome.dimension)].get<int>();
             int got = traceColor(ops, p);
             if (got != expected && ++mismatches <= 5)
@@ -177,7 +184,8 @@ TEST(Maps, TraceStepNamesTheInksStep) {
         Genome genome = parseGenome(data["genome"].dump(), name);
         std::vector<PreparedOp> ops = prepare(genome);
         for (const Json& probe : data["probes"]) {
-            glm::dvec3 p(probe[0].get<double>(), probe[1].get<double>(), genome.dimension == 3 ? probe[2].get<double>() : 0.0);
+            glm::dvec3 p(probe[0].get<double>(), probe[1].get<double>(),
+                         genome.dimension == 3 ? probe[2].get<double>() : 0.0);
             TracedInk ink = traceStep(ops, p);
             ASSERT_EQ(ink.color, traceColor(ops, p)) << name;
             if (ink.color < 0) {
@@ -225,23 +233,56 @@ Operation randomOperation(Pcg32& rng, Tool tool, int dimension) {
         for (int i = 0; i < componentCount(spec, op, dimension); ++i) {
             double value = 0.0;
             switch (spec.field) {
-            case ParamField::Center: value = rng.uniform(0, 1000); break;
-            case ParamField::Angle: value = rng.uniform(0, 360); break;
-            case ParamField::Radius: value = rng.uniform(20, 200); break;
-            case ParamField::Alpha: value = rng.uniform(-100, 100); break;
-            case ParamField::Lambda: value = rng.uniform(5, 60); break;
-            case ParamField::Spacing: value = rng.uniform(30, 150); break;
-            case ParamField::Amplitude: value = rng.uniform(-40, 40); break;
-            case ParamField::Wavelength: value = rng.uniform(100, 500); break;
-            case ParamField::Phase: value = rng.uniform(0, 360); break;
-            case ParamField::Core: value = rng.chance(0.5) ? 0.0 : rng.uniform(1, 80); break;
-            case ParamField::Teeth: value = -600.0 + 1800.0 * (i + rng.uniform(0.1, 0.9)) / componentCount(spec, op, dimension); break;
-            case ParamField::Shift: value = rng.uniform(-100, 100); break;
-            case ParamField::Power: value = rng.uniform(0.25, 2.5); break;
-            case ParamField::Size: value = rng.uniform(150, 600); break;
-            case ParamField::Speed: value = rng.uniform(-60, 60); break;
-            case ParamField::Time: value = rng.uniform(0.5, 5); break;
-            default: continue; // directions, shape, colour, steps: below or as defaulted
+            case ParamField::Center:
+                value = rng.uniform(0, 1000);
+                break;
+            case ParamField::Angle:
+                value = rng.uniform(0, 360);
+                break;
+            case ParamField::Radius:
+                value = rng.uniform(20, 200);
+                break;
+            case ParamField::Alpha:
+                value = rng.uniform(-100, 100);
+                break;
+            case ParamField::Lambda:
+                value = rng.uniform(5, 60);
+                break;
+            case ParamField::Spacing:
+                value = rng.uniform(30, 150);
+                break;
+            case ParamField::Amplitude:
+                value = rng.uniform(-40, 40);
+                break;
+            case ParamField::Wavelength:
+                value = rng.uniform(100, 500);
+                break;
+            case ParamField::Phase:
+                value = rng.uniform(0, 360);
+                break;
+            case ParamField::Core:
+                value = rng.chance(0.5) ? 0.0 : rng.uniform(1, 80);
+                break;
+            case ParamField::Teeth:
+                value = -600.0 + 1800.0 * (i + rng.uniform(0.1, 0.9)) / componentCount(spec, op, dimension);
+                break;
+            case ParamField::Shift:
+                value = rng.uniform(-100, 100);
+                break;
+            case ParamField::Power:
+                value = rng.uniform(0.25, 2.5);
+                break;
+            case ParamField::Size:
+                value = rng.uniform(150, 600);
+                break;
+            case ParamField::Speed:
+                value = rng.uniform(-60, 60);
+                break;
+            case ParamField::Time:
+                value = rng.uniform(0.5, 5);
+                break;
+            default:
+                continue; // directions, shape, colour, steps: below or as defaulted
             }
             setComponent(spec, op, i, value);
         }
@@ -268,9 +309,12 @@ bool smoothAt(const PreparedOp& op, const glm::dvec3& p) {
     constexpr double Margin = 1e-2;
     glm::dvec3 rel = p - op.c;
     switch (op.tool) {
-    case Tool::Drop: return glm::length(rel) > 0.5 * op.r;
-    case Tool::Cylinder: return glm::length(rel - glm::dot(rel, op.a) * op.a) > 0.5 * op.r;
-    case Tool::Line: return std::abs(glm::dot(rel, op.n)) > Margin;
+    case Tool::Drop:
+        return glm::length(rel) > 0.5 * op.r;
+    case Tool::Cylinder:
+        return glm::length(rel - glm::dot(rel, op.a) * op.a) > 0.5 * op.r;
+    case Tool::Line:
+        return std::abs(glm::dot(rel, op.n)) > Margin;
     case Tool::Comb: {
         double t = glm::dot(rel, op.n), half = 0.5 * op.spacing;
         double m = t - half * std::floor(t / half);
@@ -280,8 +324,10 @@ bool smoothAt(const PreparedOp& op, const glm::dvec3& p) {
         double rho = op.dimension == 3 ? glm::length(rel - glm::dot(rel, op.a) * op.a) : glm::length(rel);
         return rho > 20.0 && std::abs(rho - op.r) > Margin;
     }
-    case Tool::Sphere: return glm::length(rel) > 20.0 && std::abs(glm::length(rel) - op.r) > Margin;
-    case Tool::Vortex: return glm::length(rel) > 20.0;
+    case Tool::Sphere:
+        return glm::length(rel) > 20.0 && std::abs(glm::length(rel) - op.r) > Margin;
+    case Tool::Vortex:
+        return glm::length(rel) > 20.0;
     case Tool::Stretch: {
         // Away from the teeth, where |sin|^p with p < 1 has no derivative.
         double u = glm::dot(rel, op.n);
@@ -297,7 +343,8 @@ bool smoothAt(const PreparedOp& op, const glm::dvec3& p) {
         return std::min({std::abs(x), std::abs(x - op.size[0]), std::abs(y), std::abs(y - op.size[1])}) > 1.0;
     }
     case Tool::Spray:
-    case Tool::Wave: return true; // smooth everywhere
+    case Tool::Wave:
+        return true; // smooth everywhere
     }
     return true;
 }
@@ -345,10 +392,10 @@ TEST(Maps, InverseUndoesForwardAndKeepsMeasure) {
             int checked = 0;
             for (int trial = 0; trial < 40; ++trial) {
                 PreparedOp op = prepare(randomOperation(rng, spec.tool, dimension), dimension);
-                int kind = op.core2 > 0.0 ? 0
-                         : op.tool == Tool::Stretch ? 1
-                         : op.tool == Tool::Flow    ? (op.field == FlowField::Cells ? 2 : 3)
-                                                    : -1;
+                int kind = op.core2 > 0.0             ? 0
+                           : op.tool == Tool::Stretch ? 1
+                           : op.tool == Tool::Flow    ? (op.field == FlowField::Cells ? 2 : 3)
+                                                      : -1;
                 for (int i = 0; i < 50; ++i) {
                     glm::dvec3 p(rng.uniform(-200, 1200), rng.uniform(-200, 1200),
                                  dimension == 3 ? rng.uniform(-200, 1200) : 0.0);
@@ -359,12 +406,13 @@ TEST(Maps, InverseUndoesForwardAndKeepsMeasure) {
                     glm::dvec3 q = forwardMap(op, p);
                     glm::dvec3 back = inverseMap(op, q);
                     double tolerance = roundTripTolerance(op, p);
-                    ASSERT_LE(glm::length(back - p), tolerance)
-                        << spec.name << " " << dimension << "D at (" << p.x << ", " << p.y << ", " << p.z << ")";
-                    if (op.tool == Tool::Flow) worstFlow = std::max(worstFlow, glm::length(back - p) / tolerance);
+                    ASSERT_LE(glm::length(back - p), tolerance) << spec.name << " " << dimension << "D at ("
+                                                                << p.x << ", " << p.y << ", " << p.z << ")";
+                    if (op.tool == Tool::Flow)
+                        worstFlow = std::max(worstFlow, glm::length(back - p) / tolerance);
                     double det = jacobianDeterminant(op, p, dimension);
-                    ASSERT_NEAR(det, 1.0, 1e-6)
-                        << spec.name << " " << dimension << "D at (" << p.x << ", " << p.y << ", " << p.z << ")";
+                    ASSERT_NEAR(det, 1.0, 1e-6) << spec.name << " " << dimension << "D at (" << p.x << ", "
+                                                << p.y << ", " << p.z << ")";
                     ++checked;
                     if (kind >= 0 && glm::length(q - p) > 1e-3) ++moved[kind];
                 }
@@ -372,7 +420,8 @@ TEST(Maps, InverseUndoesForwardAndKeepsMeasure) {
             EXPECT_GT(checked, 1000) << spec.name << " " << dimension << "D";
         }
     }
-    for (int kind = 0; kind < 4; ++kind) EXPECT_GT(moved[kind], 300) << movedWhat[kind];
+    for (int kind = 0; kind < 4; ++kind)
+        EXPECT_GT(moved[kind], 300) << movedWhat[kind];
     std::printf("flow round trips: worst error %.3g of the tolerance\n", worstFlow);
 }
 

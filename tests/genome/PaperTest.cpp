@@ -1,8 +1,8 @@
 // The procedural marbled paper (marbler/Paper.h): its recipe, its spacing rule, determinism.
 
+#include "marbler/Paper.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
-#include "marbler/Paper.h"
 #include "marbler/Tools.h"
 
 #include <glm/geometric.hpp>
@@ -14,7 +14,9 @@
 namespace marbler {
 namespace {
 
-double luma(Color c) { return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0; }
+double luma(Color c) {
+    return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0;
+}
 
 PaperOptions sheet(double width, double height, int colors = 5, int passes = 3, bool pastel = false) {
     PaperOptions options;
@@ -72,7 +74,8 @@ TEST(PaperGenome, HasTheRecipeDropsByColourShrinkingThenWeakeningStretchPassesAn
                 EXPECT_LE(op.radius, radii.y + 0.005);
                 ++perColour[static_cast<std::size_t>(op.color)];
             }
-            for (int count : perColour) EXPECT_GT(count, 10);
+            for (int count : perColour)
+                EXPECT_GT(count, 10);
             // Each later colour's range lies below the one before.
             for (int layer = 1; layer < colors; ++layer) {
                 EXPECT_LT(paperRadii(spacing, layer).y, paperRadii(spacing, layer - 1).y);
@@ -181,7 +184,8 @@ TEST(PaperGenome, PoissonDiskSamplingIsDenseAndKeepsItsDistance) {
         EXPECT_LE(points[i].x, 200.0);
         EXPECT_GE(points[i].y, 0.0);
         EXPECT_LE(points[i].y, 100.0);
-        for (std::size_t j = i + 1; j < points.size(); ++j) EXPECT_GE(glm::length(points[i] - points[j]), d);
+        for (std::size_t j = i + 1; j < points.size(); ++j)
+            EXPECT_GE(glm::length(points[i] - points[j]), d);
     }
     // Bridson's sampling leaves no disc of radius 2d empty: a dense cover (about 0.7 per d^2),
     // far above what a sparse accept-reject would keep.
@@ -189,7 +193,8 @@ TEST(PaperGenome, PoissonDiskSamplingIsDenseAndKeepsItsDistance) {
     for (double x = 0; x <= 200; x += 5)
         for (double y = 0; y <= 100; y += 5) {
             double nearest = 1e300;
-            for (const glm::dvec2& p : points) nearest = std::min(nearest, glm::length(p - glm::dvec2(x, y)));
+            for (const glm::dvec2& p : points)
+                nearest = std::min(nearest, glm::length(p - glm::dvec2(x, y)));
             EXPECT_LT(nearest, 2.0 * d) << x << ", " << y;
         }
     Pcg32 capped(9);
@@ -198,9 +203,9 @@ TEST(PaperGenome, PoissonDiskSamplingIsDenseAndKeepsItsDistance) {
 
 TEST(PaperGenome, TheSpacingRuleGrowsWithTheFourthRootOfTheArea) {
     EXPECT_DOUBLE_EQ(paperSpacing(210, 297, 5), 28.0);
-    EXPECT_NEAR(paperSpacing(420, 594, 5), 28.0 * std::sqrt(2.0), 1e-9);  // A2
+    EXPECT_NEAR(paperSpacing(420, 594, 5), 28.0 * std::sqrt(2.0), 1e-9);            // A2
     EXPECT_NEAR(paperSpacing(148, 210, 5), 28.0 / std::sqrt(std::sqrt(2.0)), 0.05); // A5
-    EXPECT_NEAR(paperSpacing(105, 148, 5), 28.0 / std::sqrt(2.0), 0.05);  // A6
+    EXPECT_NEAR(paperSpacing(105, 148, 5), 28.0 / std::sqrt(2.0), 0.05);            // A6
     // Drops a colour grow with the side, not the area: about twice as many at A2 as at A4.
     auto countOf = [](double w, double h) { return paperGenome(11, sheet(w, h, 1, 0)).initial.size(); };
     double a6 = countOf(105, 148), a4 = countOf(210, 297), a2 = countOf(420, 594);
@@ -212,7 +217,8 @@ TEST(PaperGenome, HugeOrThinSheetsStayWithinTheFormatsLimits) {
     for (auto [w, h] : {std::pair{10000.0, 10000.0}, std::pair{100000.0, 10.0}}) {
         Genome g = paperGenome(3, sheet(w, h, MaxPaperColors, MaxPaperPasses));
         EXPECT_LE(g.initial.size() + g.operations.size(), MaxEntries);
-        for (const Operation& op : g.operations) EXPECT_LE(op.teeth.size(), MaxTeeth);
+        for (const Operation& op : g.operations)
+            EXPECT_LE(op.teeth.size(), MaxTeeth);
         EXPECT_NO_THROW(validateGenome(g, "huge"));
     }
 }
@@ -224,9 +230,11 @@ TEST(PaperGenome, PastelRecoloursTheSameShapesWithPaleInksOnAWhiteBath) {
     EXPECT_EQ(random.operations, pastel.operations);
     EXPECT_NE(random.palette, pastel.palette);
     EXPECT_GT(luma(pastel.background), 0.9);
-    for (Color ink : pastel.palette) EXPECT_GT(luma(ink), 0.5);
+    for (Color ink : pastel.palette)
+        EXPECT_GT(luma(ink), 0.5);
     // Random inks are kept visible on their cream bath.
-    for (Color ink : random.palette) EXPECT_GE(std::abs(luma(ink) - luma(random.background)), 0.1);
+    for (Color ink : random.palette)
+        EXPECT_GE(std::abs(luma(ink) - luma(random.background)), 0.1);
 }
 
 TEST(PaperGenome, BadOptionsAreRefused) {

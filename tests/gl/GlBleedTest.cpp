@@ -5,8 +5,8 @@
 #include "GlTestUtil.h"
 #include "TestUtil.h"
 #include "marbler/GenomeIO.h"
-#include "marbler/gl/HybridMesh.h"
 #include "marbler/Tools.h"
+#include "marbler/gl/HybridMesh.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -18,7 +18,9 @@
 namespace marbler {
 namespace {
 
-glm::dvec3 linear(Color c) { return {srgbToLinear(c.r / 255.0), srgbToLinear(c.g / 255.0), srgbToLinear(c.b / 255.0)}; }
+glm::dvec3 linear(Color c) {
+    return {srgbToLinear(c.r / 255.0), srgbToLinear(c.g / 255.0), srgbToLinear(c.b / 255.0)};
+}
 
 /// The bleed colour rule at p, in linear light: c0 ink0 + (1 - c0)(c1 ink1 + ... (bath)).
 glm::dvec3 bleedColour(const Genome& genome, const std::vector<PreparedOp>& ops, const glm::dvec3& p,
@@ -27,7 +29,8 @@ glm::dvec3 bleedColour(const Genome& genome, const std::vector<PreparedOp>& ops,
     traceCovers(ops, genome.bleed, p, covers);
     glm::dvec3 colour = linear(genome.background); // a full cover, last, replaces it
     for (auto it = covers.rbegin(); it != covers.rend(); ++it) {
-        colour = it->coverage * linear(genome.palette[std::size_t(it->color)]) + (1.0 - it->coverage) * colour;
+        colour =
+            it->coverage * linear(genome.palette[std::size_t(it->color)]) + (1.0 - it->coverage) * colour;
         if (it->coverage < 1.0) *partial += 1.0;
     }
     return colour;
@@ -53,8 +56,9 @@ double expectMatchesScalarBleed(const Genome& genome, RenderSettings settings, c
             for (int c = 0; c < 3; ++c) {
                 if (std::abs(int(got[c]) - int(encodeSrgb8(colour[c]))) <= 2) continue;
                 if (off++ == 0)
-                    first = "(" + std::to_string(x) + ", " + std::to_string(y) + ") channel " + std::to_string(c) + ": "
-                        + std::to_string(got[c]) + " for " + std::to_string(encodeSrgb8(colour[c]));
+                    first = "(" + std::to_string(x) + ", " + std::to_string(y) + ") channel " +
+                            std::to_string(c) + ": " + std::to_string(got[c]) + " for " +
+                            std::to_string(encodeSrgb8(colour[c]));
                 break;
             }
         }
@@ -149,7 +153,8 @@ TEST_F(GlBleed, MeshShadingMatchesTheScalarRule) {
     genome.size = {800, 800, 800};
     genome.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}};
     genome.bleed = 40;
-    genome.initial = {drop({300, 420, 500}, 260, 0), drop({520, 380, 560}, 200, 1), drop({430, 520, 620}, 110, 2)};
+    genome.initial = {drop({300, 420, 500}, 260, 0), drop({520, 380, 560}, 200, 1),
+                      drop({430, 520, 620}, 110, 2)};
     Operation vortex;
     vortex.tool = Tool::Vortex;
     vortex.center = {400, 400, 400};
@@ -172,12 +177,14 @@ TEST_F(GlBleed, MeshShadingMatchesTheScalarRule) {
     for (int y = 0; y < settings.height; ++y) {
         for (int x = 0; x < settings.width; ++x) {
             // The G-buffer's rows run bottom to top.
-            const float* position = buffer.positions.data() + (std::size_t(settings.height - 1 - y) * settings.width + x) * 4;
+            const float* position =
+                buffer.positions.data() + (std::size_t(settings.height - 1 - y) * settings.width + x) * 4;
             glm::dvec3 colour = linear(settings.clearColor);
             if (position[3] > 0.0f) {
                 ++covered;
                 double partlyCovered = 0.0;
-                colour = bleedColour(genome, ops, buffer.reference + glm::dvec3(position[0], position[1], position[2]),
+                colour = bleedColour(genome, ops,
+                                     buffer.reference + glm::dvec3(position[0], position[1], position[2]),
                                      &partlyCovered);
                 partial += partlyCovered > 0.0 ? 1.0 : 0.0;
             }
@@ -221,7 +228,8 @@ TEST_F(GlBleed, SourceDesignsTakeEveryVariant) {
     const Image soft = test::glRenderer()->render(genome, settings);
     ASSERT_EQ(soft.rgb.size(), hard.rgb.size());
     std::size_t off = 0;
-    for (std::size_t i = 0; i < hard.rgb.size(); ++i) off += std::abs(int(hard.rgb[i]) - int(soft.rgb[i])) > 2;
+    for (std::size_t i = 0; i < hard.rgb.size(); ++i)
+        off += std::abs(int(hard.rgb[i]) - int(soft.rgb[i])) > 2;
     EXPECT_LE(off, hard.rgb.size() / 500) << off << " channels differ";
 }
 

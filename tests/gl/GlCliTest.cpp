@@ -14,14 +14,17 @@
 namespace marbler {
 namespace {
 
-std::string solidGenome() { return (test::dataDir() / "examples" / "slate-block.marble.json").string(); }
+std::string solidGenome() {
+    return (test::dataDir() / "examples" / "slate-block.marble.json").string();
+}
 
 TEST(GlCli, GpuRenderWritesNothingOnStderr) {
     MARBLER_REQUIRE_GL_OR_SKIP();
     std::filesystem::path dir = test::outputDir("gl-cli-gpu");
     std::string out = (dir / "flat.png").string();
-    test::RunResult run = test::runMarbler(
-        {"render", (test::dataDir() / "examples" / "five-stones.marble.json").string(), "--gpu", "--width", "96", "-o", out});
+    test::RunResult run =
+        test::runMarbler({"render", (test::dataDir() / "examples" / "five-stones.marble.json").string(),
+                          "--gpu", "--width", "96", "-o", out});
     EXPECT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(run.err, "");
     EXPECT_TRUE(std::filesystem::exists(out));
@@ -49,8 +52,8 @@ TEST(GlCli, CutRenderDiffersFromTheWholeObject) {
     MARBLER_REQUIRE_GL_OR_SKIP();
     std::filesystem::path dir = test::outputDir("gl-cli-cut");
     std::string whole = (dir / "whole.png").string(), cut = (dir / "cut.png").string();
-    const std::vector<std::string> common = {"render", solidGenome(), "--mesh", "sphere", "--view", "30,20",
-                                             "--width", "96", "--supersample", "1"};
+    const std::vector<std::string> common = {"render", solidGenome(), "--mesh", "sphere",        "--view",
+                                             "30,20",  "--width",     "96",     "--supersample", "1"};
     std::vector<std::string> args = common;
     args.insert(args.end(), {"-o", whole});
     test::RunResult run = test::runMarbler(args);
@@ -67,7 +70,8 @@ TEST(GlCli, CutRenderDiffersFromTheWholeObject) {
     ASSERT_EQ(a.rgb.size(), b.rgb.size());
     std::size_t differing = 0;
     for (std::size_t i = 0; i < a.rgb.size(); i += 3)
-        if (!std::equal(a.rgb.begin() + long(i), a.rgb.begin() + long(i + 3), b.rgb.begin() + long(i))) ++differing;
+        if (!std::equal(a.rgb.begin() + long(i), a.rgb.begin() + long(i + 3), b.rgb.begin() + long(i)))
+            ++differing;
     EXPECT_GT(differing, a.rgb.size() / 3 / 20) << "the cut should change a good part of the picture";
 }
 
@@ -84,7 +88,8 @@ TEST(GlCli, CutNeedsMeshAndAPlane) {
     };
     expectUsage({"render", solidGenome(), "--slice", "z=500", "--cut", "0,0,1,500", "-o", out});
     expectUsage({"render", solidGenome(), "--mesh", "sphere", "--view", "0,0", "--cut", "0,0,1", "-o", out});
-    expectUsage({"render", solidGenome(), "--mesh", "sphere", "--view", "0,0", "--cut", "0,0,0,5", "-o", out});
+    expectUsage(
+        {"render", solidGenome(), "--mesh", "sphere", "--view", "0,0", "--cut", "0,0,0,5", "-o", out});
 }
 
 } // namespace

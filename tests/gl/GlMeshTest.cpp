@@ -37,18 +37,21 @@ TEST(Meshes, BuiltinsAreClosedAndWoundOutward) {
         ASSERT_FALSE(mesh.indices.empty()) << name;
         EXPECT_EQ(mesh.indices.size() % 3, 0u) << name;
         EXPECT_EQ(mesh.positions.size(), mesh.normals.size()) << name;
-        for (std::uint32_t i : mesh.indices) ASSERT_LT(i, mesh.positions.size()) << name;
+        for (std::uint32_t i : mesh.indices)
+            ASSERT_LT(i, mesh.positions.size()) << name;
         EXPECT_GT(signedVolume(mesh), 0.0) << name << " winds inward";
     }
     EXPECT_NEAR(signedVolume(gl::builtinMesh("cube")), 8.0, 1e-9);
     EXPECT_NEAR(signedVolume(gl::builtinMesh("sphere")), 4.0 / 3.0 * std::numbers::pi, 0.02);
-    EXPECT_NEAR(signedVolume(gl::builtinMesh("torus")), 2.0 * std::numbers::pi * std::numbers::pi * 0.16, 0.01);
+    EXPECT_NEAR(signedVolume(gl::builtinMesh("torus")), 2.0 * std::numbers::pi * std::numbers::pi * 0.16,
+                0.01);
     EXPECT_THROW(gl::builtinMesh("dodecahedron"), InputError);
 }
 
 TEST(Meshes, FilesLoadThroughAssimp) {
     std::filesystem::path dir = test::outputDir("gl-mesh-files");
-    test::writeFile(dir / "tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+    test::writeFile(dir / "tetra.obj",
+                    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
     gl::MeshData mesh = gl::loadMesh((dir / "tetra.obj").string());
     EXPECT_EQ(mesh.indices.size(), 12u);
     EXPECT_NEAR(signedVolume(mesh), 1.0 / 6.0, 1e-6);
@@ -169,7 +172,9 @@ TEST_F(GlMesh, CubeFacesMeetWithoutSeams) {
         return p ? cpu.colorIndexAt(*p) : -2;
     };
     auto colourOf = [&](int index) {
-        Color c = index == -2 ? s.clearColor : index < 0 ? mGenome.background : mGenome.palette[std::size_t(index)];
+        Color c = index == -2 ? s.clearColor
+                  : index < 0 ? mGenome.background
+                              : mGenome.palette[std::size_t(index)];
         return c;
     };
     int checked = 0, mismatched = 0, unexplained = 0;
@@ -180,7 +185,8 @@ TEST_F(GlMesh, CubeFacesMeetWithoutSeams) {
             ++checked;
             Color want = colourOf(index);
             const std::uint8_t* got = image.row(y) + x * 3;
-            if (std::abs(got[0] - want.r) <= 2 && std::abs(got[1] - want.g) <= 2 && std::abs(got[2] - want.b) <= 2)
+            if (std::abs(got[0] - want.r) <= 2 && std::abs(got[1] - want.g) <= 2 &&
+                std::abs(got[2] - want.b) <= 2)
                 continue;
             ++mismatched;
             // Allowed only where the ray cast a fraction of a pixel away sees something else.

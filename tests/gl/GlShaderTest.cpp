@@ -23,7 +23,8 @@ TEST(ShaderSource, EveryShaderIncludesTheOneToolsFile) {
 }
 
 TEST(ShaderSource, IncludesExpandOnceAndCyclesThrow) {
-    std::map<std::string, std::string> files = {{"a", "A\n#include \"b\"\n"}, {"b", "B\n"}, {"c", "#include \"c\"\n"}};
+    std::map<std::string, std::string> files = {
+        {"a", "A\n#include \"b\"\n"}, {"b", "B\n"}, {"c", "#include \"c\"\n"}};
     auto load = [&](const std::string& n) { return files.at(n); };
     EXPECT_EQ(gl::expandIncludes("#include \"a\"\n#include \"b\"\nmain\n", load), "A\nB\nmain\n");
     EXPECT_THROW(gl::expandIncludes("#include \"c\"\n", load), RuntimeFailure);

@@ -26,11 +26,11 @@ Image loadPng(const std::filesystem::path& file);
 
 /// Skips the test (with the reason) when no GL context can be made, or fails it when
 /// MARBLER_REQUIRE_GL=1 (CI, where the GL tests must really run).
-#define MARBLER_REQUIRE_GL_OR_SKIP()                                                                  \
-    do {                                                                                              \
-        std::string glWhy;                                                                            \
-        if (!::marbler::gl::GlRenderer::available(&glWhy)) {                                         \
-            if (::marbler::test::glRequired()) FAIL() << "MARBLER_REQUIRE_GL=1 but no GL: " << glWhy; \
-            GTEST_SKIP() << "no OpenGL context: " << glWhy;                                           \
-        }                                                                                             \
+#define MARBLER_REQUIRE_GL_OR_SKIP()                                                                         \
+    do {                                                                                                     \
+        std::string glWhy;                                                                                   \
+        if (!::marbler::gl::GlRenderer::available(&glWhy)) {                                                 \
+            if (::marbler::test::glRequired()) FAIL() << "MARBLER_REQUIRE_GL=1 but no GL: " << glWhy;        \
+            GTEST_SKIP() << "no OpenGL context: " << glWhy;                                                  \
+        }                                                                                                    \
     } while (false)

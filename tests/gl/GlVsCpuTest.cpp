@@ -90,7 +90,8 @@ std::vector<NamedGenome> version2Genomes() {
     Genome stretched = dropsOnABath();
     stretched.operations.push_back(stretch({0, 800}, 180, {0, 90, 250, 400, 530, 700, 800}, 70, 2.0));
     std::vector<double> many;
-    for (int k = 0; k <= 300; ++k) many.push_back(-50.0 + 4.3 * k + 1.1 * std::sin(k));
+    for (int k = 0; k <= 300; ++k)
+        many.push_back(-50.0 + 4.3 * k + 1.1 * std::sin(k));
     stretched.operations.push_back(stretch({1200, 0}, 90, many, -9, 0.5));
     stretched.operations.push_back(swirl(Tool::Vortex, {420, 380, 0}, 0, 400, 50, 0));
     out.push_back({"v2-stretch-2d", stretched});
@@ -109,7 +110,8 @@ std::vector<NamedGenome> version2Genomes() {
     solid.dimension = 3;
     solid.size = {800, 800, 800};
     solid.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}};
-    const double drops[4][4] = {{330, 400, 400, 250}, {480, 380, 420, 170}, {420, 470, 380, 110}, {400, 300, 400, 80}};
+    const double drops[4][4] = {
+        {330, 400, 400, 250}, {480, 380, 420, 170}, {420, 470, 380, 110}, {400, 300, 400, 80}};
     for (int k = 0; k < 4; ++k) {
         Operation drop;
         drop.tool = Tool::Drop;
@@ -135,7 +137,8 @@ std::vector<NamedGenome> sampleGenomes() {
         if (entry.path().string().ends_with(".marble.json"))
             out.push_back({entry.path().filename().string(), loadGenome(entry.path())});
     for (int k = 0; k < 5; ++k) {
-        std::filesystem::path file = test::dataDir() / "conformance" / ("probes-" + std::to_string(k) + ".json");
+        std::filesystem::path file =
+            test::dataDir() / "conformance" / ("probes-" + std::to_string(k) + ".json");
         if (!std::filesystem::exists(file)) continue;
         auto json = nlohmann::json::parse(test::readFile(file));
         out.push_back({file.filename().string(), parseGenome(json.at("genome").dump(), file.string())});
@@ -149,7 +152,8 @@ std::vector<NamedGenome> sampleGenomes() {
         for (int dimension : {2, 3})
             out.push_back({"random-" + std::to_string(seed) + "-" + std::to_string(dimension) + "d",
                            randomGenome(seed, dimension)});
-    std::sort(out.begin(), out.end(), [](const NamedGenome& a, const NamedGenome& b) { return a.name < b.name; });
+    std::sort(out.begin(), out.end(),
+              [](const NamedGenome& a, const NamedGenome& b) { return a.name < b.name; });
     return out;
 }
 
@@ -162,19 +166,21 @@ int maxChannelDiff(const Image& a, const Image& b, std::size_t pixel) {
 
 /// Whether pixel (x, y) touches an ink boundary: a neighbour of another CPU colour, or samples
 /// of different inks.
-bool atInkBoundary(const Genome& genome, const CpuRenderer& cpu, const RenderSettings& settings, const Image& ref,
-                   int x, int y) {
+bool atInkBoundary(const Genome& genome, const CpuRenderer& cpu, const RenderSettings& settings,
+                   const Image& ref, int x, int y) {
     const std::uint8_t* centre = ref.rgb.data() + (std::size_t(y) * ref.width + x) * 3;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
             int nx = x + dx, ny = y + dy;
             if (nx < 0 || ny < 0 || nx >= ref.width || ny >= ref.height) continue;
-            if (!std::equal(centre, centre + 3, ref.rgb.data() + (std::size_t(ny) * ref.width + nx) * 3)) return true;
+            if (!std::equal(centre, centre + 3, ref.rgb.data() + (std::size_t(ny) * ref.width + nx) * 3))
+                return true;
         }
     SampleFrame frame = sampleFrame(genome, settings);
     AaPattern aa = aaPattern(settings.aa);
     std::set<int> inks;
-    for (const glm::dvec2& o : aa.offsets) inks.insert(cpu.colorIndexAt(frame.at(x, y, o.x, o.y)));
+    for (const glm::dvec2& o : aa.offsets)
+        inks.insert(cpu.colorIndexAt(frame.at(x, y, o.x, o.y)));
     return inks.size() > 1;
 }
 
@@ -193,17 +199,22 @@ void expectMatchesCpu(const Genome& genome, const RenderSettings& settings, cons
             if (maxChannelDiff(expected, actual, std::size_t(y) * expected.width + x) <= 2) continue;
             ++off;
             if (!atInkBoundary(genome, cpu, settings, expected, x, y)) {
-                if (unexplained++ == 0) firstUnexplained = "(" + std::to_string(x) + ", " + std::to_string(y) + ")";
+                if (unexplained++ == 0)
+                    firstUnexplained = "(" + std::to_string(x) + ", " + std::to_string(y) + ")";
             }
         }
     }
     bool ok = double(off) <= 0.005 * double(pixels) && unexplained == 0;
-    EXPECT_LE(double(off), 0.005 * double(pixels)) << label << ": " << off << " of " << pixels << " pixels differ by > 2";
-    EXPECT_EQ(unexplained, 0u) << label << ": pixels differ away from ink boundaries, first at " << firstUnexplained;
+    EXPECT_LE(double(off), 0.005 * double(pixels))
+        << label << ": " << off << " of " << pixels << " pixels differ by > 2";
+    EXPECT_EQ(unexplained, 0u) << label << ": pixels differ away from ink boundaries, first at "
+                               << firstUnexplained;
     if (!ok) {
         std::filesystem::path dir = test::outputDir("gl-vs-cpu");
         std::string stem = label;
-        std::replace_if(stem.begin(), stem.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+        std::replace_if(
+            stem.begin(), stem.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
+            '_');
         test::savePng(expected, dir / (stem + "-cpu.png"));
         test::savePng(actual, dir / (stem + "-gl.png"));
         ADD_FAILURE() << "images saved in " << dir;
@@ -214,7 +225,8 @@ TEST(GlVsCpuCoverage, SampleGenomesHoldEveryToolOfTheRegistry) {
     // The shaders are held to the CPU renderer on the sample genomes, so a tool they lack
     // would go unchecked: a new tool without a sample fails here, with or without GL.
     std::set<std::string> seen;
-    for (const NamedGenome& g : sampleGenomes()) test::addToolsUsed(g.genome, seen);
+    for (const NamedGenome& g : sampleGenomes())
+        test::addToolsUsed(g.genome, seen);
     test::expectEveryRegistryTool(seen, "no sample genome holds");
 }
 
@@ -337,7 +349,8 @@ void writeGradient(const std::filesystem::path& file, int width, int height) {
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
             for (int c = 0; c < 3; ++c) {
-                const float t = (float(x) + float(y) * float(width) + float(c) * 0.37f) / float(width * height);
+                const float t =
+                    (float(x) + float(y) * float(width) + float(c) * 0.37f) / float(width * height);
                 pixels[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(c)] =
                     exr ? 0.003f + 1.5f * t * t : 0.1f + 0.8f * t;
             }
@@ -378,7 +391,8 @@ TEST_F(GlVsCpu, BadSourcesAreRefusedAlike) {
     settings.height = 8;
     for (const std::string& image :
          {std::string("data:image/png;base64,iVBORw0KGgo!!AAAA"), std::string("data:image/png,plain"),
-          std::string("data:image/png;base64,AAAA"), std::string("no-such.png"), std::string("../escape.png")}) {
+          std::string("data:image/png;base64,AAAA"), std::string("no-such.png"),
+          std::string("../escape.png")}) {
         genome.source = SourceImage{image};
         std::string cpuError, glError;
         try {

@@ -75,8 +75,9 @@ TEST(BakeCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     expectFailure({"bake", solid, "--slices", "w", "-o", (dir / "s").string()}, 2, "'w'", dir);
     expectFailure({"bake", solid, "--slices", "z", "--count", "0", "-o", (dir / "s").string()}, 2, "--count",
                   dir);
-    expectFailure({"bake", test::examplePath("five-stones.marble.json"), "--slices", "z", "-o", (dir / "s").string()},
-                  2, "five-stones", dir);
+    expectFailure(
+        {"bake", test::examplePath("five-stones.marble.json"), "--slices", "z", "-o", (dir / "s").string()},
+        2, "five-stones", dir);
     // Not the input's fault: exit 1, the file named.
     expectFailure(
         {"bake", solid, "--mesh", "cube", "-o", (dir / "no" / "cube.glb").string(), "--texture", "64"}, 1,

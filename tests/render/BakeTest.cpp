@@ -22,7 +22,6 @@
 namespace marbler {
 namespace {
 
-
 std::array<std::uint8_t, 3> bytesOf(Color c) {
     return {c.r, c.g, c.b};
 }
@@ -100,9 +99,12 @@ void expectTexelsHoldTheDesign(const Genome& genome, const std::string& meshName
                     // Soft edges: the composited colour (rounded to 8 bits once, in either order).
                     double rgb[3];
                     reference.linearColorsAt(&q.x, &q.y, &q.z, 1, rgb);
-                    for (int k = 0; k < 3; ++k) expected[std::size_t(k)] = encodeSrgb8(std::clamp(rgb[k], 0.0, 1.0));
+                    for (int k = 0; k < 3; ++k)
+                        expected[std::size_t(k)] = encodeSrgb8(std::clamp(rgb[k], 0.0, 1.0));
                     same = true;
-                    for (int k = 0; k < 3; ++k) same = same && std::abs(int(got[std::size_t(k)]) - int(expected[std::size_t(k)])) <= 1;
+                    for (int k = 0; k < 3; ++k)
+                        same =
+                            same && std::abs(int(got[std::size_t(k)]) - int(expected[std::size_t(k)])) <= 1;
                 } else {
                     const int index = reference.colorIndexAt(q);
                     expected = bytesOf(index >= 0 ? genome.palette[std::size_t(index)] : genome.background);
@@ -127,7 +129,8 @@ TEST(Bake, TexelsHoldTheSoftEdgesOfABleed) {
 }
 
 TEST(Bake, TexelsHoldTheSolidAtTheirSurfacePoints) {
-    expectTexelsHoldTheDesign(test::loadExample("slate-block.marble.json"), "sphere", test::fullOrSanitized(1024, 512));
+    expectTexelsHoldTheDesign(test::loadExample("slate-block.marble.json"), "sphere",
+                              test::fullOrSanitized(1024, 512));
     // The same code on another mesh: in the release build only.
     if (!test::Sanitized) expectTexelsHoldTheDesign(test::loadExample("slate-block.marble.json"), "teapot");
 }

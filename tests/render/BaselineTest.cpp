@@ -26,7 +26,9 @@ struct BaselineCase {
     std::optional<Region> region;
 };
 
-std::ostream& operator<<(std::ostream& out, const BaselineCase& c) { return out << c.name; }
+std::ostream& operator<<(std::ostream& out, const BaselineCase& c) {
+    return out << c.name;
+}
 
 std::vector<BaselineCase> cases() {
     return {
@@ -71,8 +73,8 @@ TEST_P(Baseline, RenderMatchesTheCommittedImage) {
         writeImage(actual, baseline);
         GTEST_SKIP() << "baseline rewritten: " << baseline;
     }
-    ASSERT_TRUE(std::filesystem::exists(baseline)) << "no baseline " << baseline
-                                                   << " (run with MARBLER_UPDATE_BASELINES=1 to make it)";
+    ASSERT_TRUE(std::filesystem::exists(baseline))
+        << "no baseline " << baseline << " (run with MARBLER_UPDATE_BASELINES=1 to make it)";
     Image expected = test::readImage8(baseline);
     test::ImageDiff diff = test::compareImages(actual, expected, 2);
     if (!(diff.shareWithin >= 0.995)) {
@@ -84,18 +86,19 @@ TEST_P(Baseline, RenderMatchesTheCommittedImage) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Render, Baseline, ::testing::ValuesIn(cases()),
-                         [](const auto& info) {
-                             std::string name = info.param.name;
-                             for (char& ch : name)
-                                 if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                             return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Render, Baseline, ::testing::ValuesIn(cases()), [](const auto& info) {
+    std::string name = info.param.name;
+    for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+    return name;
+});
 
 TEST(Baseline, EveryToolAndPatternIsCovered) {
     std::set<std::string> patterns;
-    for (const BaselineCase& c : cases()) patterns.insert(c.aa);
-    for (const std::string& name : aaPatternNames()) EXPECT_TRUE(patterns.count(name)) << name;
+    for (const BaselineCase& c : cases())
+        patterns.insert(c.aa);
+    for (const std::string& name : aaPatternNames())
+        EXPECT_TRUE(patterns.count(name)) << name;
     // Every tool of the registry, in every dimension it exists in, with every choice of its
     // choice parameters (a wave's shapes): a new tool without a baseline fails here.
     std::set<std::string> seen;

@@ -58,8 +58,8 @@ int mismatches(const Image& image, const nlohmann::json& rows, const std::string
             for (int c = 0; c < 3; ++c)
                 if (std::abs(int(got[c]) - want[c].get<int>()) > 2) {
                     ++bad;
-                    std::printf("  %s pixel (%d, %d): got %d %d %d, expected %s\n", what.c_str(), x, y, got[0], got[1],
-                                got[2], want.dump().c_str());
+                    std::printf("  %s pixel (%d, %d): got %d %d %d, expected %s\n", what.c_str(), x, y,
+                                got[0], got[1], got[2], want.dump().c_str());
                     break;
                 }
         }

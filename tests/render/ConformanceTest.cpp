@@ -37,15 +37,16 @@ TEST_P(ProbeFile, EveryProbeMatchesInTheKernelTheReferenceAndARender) {
         if (dim == 3) settings.slice = Slice{2, p.z};
         Image image = renderer.render(settings);
         Color want = expected >= 0 ? genome.palette[expected] : genome.background;
-        EXPECT_EQ((Color{image.rgb[0], image.rgb[1], image.rgb[2]}), want) << name << " pixel at " << probe.dump();
+        EXPECT_EQ((Color{image.rgb[0], image.rgb[1], image.rgb[2]}), want)
+            << name << " pixel at " << probe.dump();
         ++checked;
     }
     EXPECT_GT(checked, 100);
 }
 
 INSTANTIATE_TEST_SUITE_P(Conformance, ProbeFile,
-                         ::testing::Values("probes-0", "probes-1", "probes-2", "probes-3", "probes-4", "probes-v2-stretch",
-                                           "probes-v2-core", "probes-v2-flow"),
+                         ::testing::Values("probes-0", "probes-1", "probes-2", "probes-3", "probes-4",
+                                           "probes-v2-stretch", "probes-v2-core", "probes-v2-flow"),
                          [](const auto& info) {
                              std::string name = info.param;
                              for (char& c : name)
@@ -77,8 +78,8 @@ TEST(Conformance, AntialiasedRendersMatchWithinTwoLevels) {
                 for (int c = 0; c < 3; ++c)
                     if (std::abs(int(got[c]) - want[c].get<int>()) > 2) {
                         ++mismatches;
-                        std::printf("  %s pixel (%d, %d): got %d %d %d, expected %s\n", name.c_str(), x, y, got[0],
-                                    got[1], got[2], want.dump().c_str());
+                        std::printf("  %s pixel (%d, %d): got %d %d %d, expected %s\n", name.c_str(), x, y,
+                                    got[0], got[1], got[2], want.dump().c_str());
                         break;
                     }
             }

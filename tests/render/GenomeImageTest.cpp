@@ -2,12 +2,12 @@
 // and gives it back equal; images without one, of another kind, broken or hostile are refused
 // with one clear line; the verbs take such images wherever they take a genome.
 
+#include "marbler/GenomeImage.h"
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
-#include "marbler/GenomeImage.h"
 
 #include <gtest/gtest.h>
 #include <tiffio.h>
@@ -20,7 +20,6 @@ namespace marbler {
 namespace {
 
 namespace fs = std::filesystem;
-
 
 std::vector<unsigned char> bytesOf(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -51,18 +50,21 @@ Genome tiny() {
 /// A PNG chunk: length, type, data, CRC.
 void appendChunk(std::vector<unsigned char>& png, const std::string& type, const std::string& data) {
     const auto n = std::uint32_t(data.size());
-    for (int shift : {24, 16, 8, 0}) png.push_back(static_cast<unsigned char>(n >> shift));
+    for (int shift : {24, 16, 8, 0})
+        png.push_back(static_cast<unsigned char>(n >> shift));
     const std::string body = type + data;
     png.insert(png.end(), body.begin(), body.end());
-    const std::uint32_t crc = std::uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size())));
-    for (int shift : {24, 16, 8, 0}) png.push_back(static_cast<unsigned char>(crc >> shift));
+    const std::uint32_t crc =
+        std::uint32_t(crc32(0, reinterpret_cast<const Bytef*>(body.data()), uInt(body.size())));
+    for (int shift : {24, 16, 8, 0})
+        png.push_back(static_cast<unsigned char>(crc >> shift));
 }
 
 std::string deflate(const std::string& data) {
     uLongf size = compressBound(uLong(data.size()));
     std::string out(size, '\0');
-    compress2(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(data.data()), uLong(data.size()),
-              Z_BEST_SPEED);
+    compress2(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(data.data()),
+              uLong(data.size()), Z_BEST_SPEED);
     out.resize(size);
     return out;
 }
@@ -73,9 +75,11 @@ std::vector<unsigned char> handMadePng(const std::vector<std::pair<std::string, 
                                        const std::vector<std::pair<std::string, std::string>>& after) {
     std::vector<unsigned char> png{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     appendChunk(png, "IHDR", std::string("\0\0\0\2\0\0\0\2\x08\x02\0\0\0", 13));
-    for (const auto& [type, data] : before) appendChunk(png, type, data);
+    for (const auto& [type, data] : before)
+        appendChunk(png, type, data);
     appendChunk(png, "IDAT", deflate(std::string(2 * (1 + 2 * 3), '\0')));
-    for (const auto& [type, data] : after) appendChunk(png, type, data);
+    for (const auto& [type, data] : after)
+        appendChunk(png, type, data);
     appendChunk(png, "IEND", "");
     return png;
 }
@@ -89,7 +93,8 @@ std::string itxt(const std::string& keyword, const std::string& text, bool compr
 
 TEST(GenomeImage, EveryPngAndTiffGivesItsGenomeBack) {
     const fs::path dir = test::outputDir("genome-image-roundtrip");
-    for (const Genome& g : {tiny(), test::loadExample("five-stones.marble.json"), test::loadExample("flame-comb-vortex.marble.json")}) {
+    for (const Genome& g : {tiny(), test::loadExample("five-stones.marble.json"),
+                            test::loadExample("flame-comb-vortex.marble.json")}) {
         const std::string canonical = serializeGenome(g);
         for (const char* ext : {".png", ".tif", ".tiff"}) {
             const fs::path file = dir / (g.meta.value("name", std::string("x")).substr(0, 4) + ext);
@@ -122,7 +127,8 @@ TEST(GenomeImage, ShortGenomesStayReadableLongOnesAreDeflated) {
     EXPECT_FALSE(fileHolds(dir / "long.png", serializeGenome(big)));
     EXPECT_EQ(loadDesign(dir / "long.png"), big);
     // Deflated, the long genome takes less room than its text.
-    EXPECT_LT(fs::file_size(dir / "long.png"), fs::file_size(dir / "short.png") + serializeGenome(big).size());
+    EXPECT_LT(fs::file_size(dir / "long.png"),
+              fs::file_size(dir / "short.png") + serializeGenome(big).size());
 }
 
 TEST(GenomeImage, WriteImageCarriesTheGenomeItIsGiven) {
@@ -159,8 +165,8 @@ TEST(GenomeImage, ErrorsInAnEmbeddedGenomeNameTheImageAndTheLocation) {
             loadDesign(file);
             ADD_FAILURE() << file << " loaded";
         } catch (const GenomeError& e) {
-            EXPECT_EQ(std::string(e.what()),
-                      file.string() + ": genome in " + kind + " metadata: initial[0].radius: must be > 0 (got -2)");
+            EXPECT_EQ(std::string(e.what()), file.string() + ": genome in " + kind +
+                                                 " metadata: initial[0].radius: must be > 0 (got -2)");
         }
     }
 }
@@ -170,7 +176,8 @@ TEST(GenomeImage, TextAfterTheImageDataAndOlderTextChunksAreFound) {
     const std::string text = serializeGenome(g);
     // Moved behind the pixels, as other programs may do when they save the file again.
     for (bool compressed : {false, true}) {
-        std::vector<unsigned char> png = handMadePng({}, {{"iTXt", itxt(PngGenomeKeyword, text, compressed)}});
+        std::vector<unsigned char> png =
+            handMadePng({}, {{"iTXt", itxt(PngGenomeKeyword, text, compressed)}});
         std::optional<std::string> found = readGenomeText(png, ImageKind::Png, "after.png");
         ASSERT_TRUE(found);
         EXPECT_EQ(*found, text);
@@ -180,8 +187,11 @@ TEST(GenomeImage, TextAfterTheImageDataAndOlderTextChunksAreFound) {
     latin.meta["name"] = "Caf\xc3\xa9";
     std::string latinText = serializeGenome(latin);
     latinText.replace(latinText.find("Caf\xc3\xa9"), 5, "Caf\xe9");
-    std::vector<unsigned char> png = handMadePng({{"tEXt", std::string(PngGenomeKeyword) + '\0' + latinText}}, {});
-    EXPECT_EQ(parseEmbeddedGenome(*readGenomeText(png, ImageKind::Png, "latin.png"), ImageKind::Png, "latin.png"), latin);
+    std::vector<unsigned char> png =
+        handMadePng({{"tEXt", std::string(PngGenomeKeyword) + '\0' + latinText}}, {});
+    EXPECT_EQ(
+        parseEmbeddedGenome(*readGenomeText(png, ImageKind::Png, "latin.png"), ImageKind::Png, "latin.png"),
+        latin);
     // Other text is not a genome.
     png = handMadePng({{"iTXt", itxt("Comment", text, false)}}, {});
     EXPECT_FALSE(readGenomeText(png, ImageKind::Png, "comment.png"));
@@ -192,14 +202,17 @@ TEST(GenomeImage, XmpInTheFormsOtherToolsWrite) {
     EXPECT_EQ(genomeFromXmp(genomeXmpPacket(text)), text);
     // Another prefix, the attribute form, entities for every special character.
     const std::string attribute =
-        std::string("<x:xmpmeta xmlns:x='adobe:ns:meta/'><rdf:RDF><rdf:Description xmlns:ns1 = '") + XmpNamespace +
-        "' ns1:genome=\"{&quot;a&quot;: &#x3C;1&#62;, &amp;&apos;\"/></rdf:RDF></x:xmpmeta>";
+        std::string("<x:xmpmeta xmlns:x='adobe:ns:meta/'><rdf:RDF><rdf:Description xmlns:ns1 = '") +
+        XmpNamespace + "' ns1:genome=\"{&quot;a&quot;: &#x3C;1&#62;, &amp;&apos;\"/></rdf:RDF></x:xmpmeta>";
     EXPECT_EQ(genomeFromXmp(attribute), std::string("{\"a\": <1>, &'"));
-    const std::string cdata = std::string("<r xmlns:m=\"") + XmpNamespace + "\"><m:genome><![CDATA[{<&>}]]></m:genome></r>";
+    const std::string cdata =
+        std::string("<r xmlns:m=\"") + XmpNamespace + "\"><m:genome><![CDATA[{<&>}]]></m:genome></r>";
     EXPECT_EQ(genomeFromXmp(cdata), std::string("{<&>}"));
     // The property of another namespace, or no property, is no genome.
-    EXPECT_FALSE(genomeFromXmp("<r xmlns:marbler=\"http://example.com/\"><marbler:genome>{}</marbler:genome></r>"));
-    EXPECT_FALSE(genomeFromXmp(std::string("<r xmlns:m=\"") + XmpNamespace + "\"><m:genomes>{}</m:genomes></r>"));
+    EXPECT_FALSE(
+        genomeFromXmp("<r xmlns:marbler=\"http://example.com/\"><marbler:genome>{}</marbler:genome></r>"));
+    EXPECT_FALSE(
+        genomeFromXmp(std::string("<r xmlns:m=\"") + XmpNamespace + "\"><m:genomes>{}</m:genomes></r>"));
     EXPECT_FALSE(genomeFromXmp(""));
 }
 
@@ -251,7 +264,8 @@ TEST(GenomeImage, OtherImageKindsAreRefusedByName) {
         ADD_FAILURE() << "a JPEG loaded";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
-                  (dir / "photo.jpg").string() + " is a JPEG image; only PNG and TIFF images carry a Marbler genome");
+                  (dir / "photo.jpg").string() +
+                      " is a JPEG image; only PNG and TIFF images carry a Marbler genome");
     }
     // A file named as an image that is not one says both what it is not.
     test::writeFile(dir / "fake.png", "not an image");
@@ -259,7 +273,8 @@ TEST(GenomeImage, OtherImageKindsAreRefusedByName) {
         loadDesign(dir / "fake.png");
         ADD_FAILURE() << "fake.png loaded";
     } catch (const InputError& e) {
-        EXPECT_TRUE(std::string(e.what()).starts_with((dir / "fake.png").string() + " is not a PNG image")) << e.what();
+        EXPECT_TRUE(std::string(e.what()).starts_with((dir / "fake.png").string() + " is not a PNG image"))
+            << e.what();
     }
     // A genome file is still a genome file, whatever it is called.
     test::writeFile(dir / "genome.png", serializeGenome(tiny()));
@@ -294,12 +309,14 @@ TEST(GenomeImage, TruncatedAndDamagedImagesAreRefused) {
     const std::vector<unsigned char> tif = bytesOf(dir / "a.tif");
     // The PNG's genome chunk ends where the image data begins.
     const std::string idat = "IDAT";
-    const std::size_t idatAt = std::size_t(std::search(png.begin(), png.end(), idat.begin(), idat.end()) - png.begin());
+    const std::size_t idatAt =
+        std::size_t(std::search(png.begin(), png.end(), idat.begin(), idat.end()) - png.begin());
     expectEveryTruncationSafe(png, ImageKind::Png, g, idatAt - 4);
     const std::string packetEnd = "</x:xmpmeta>";
     const auto packetAt = std::search(tif.begin(), tif.end(), packetEnd.begin(), packetEnd.end());
     ASSERT_NE(packetAt, tif.end());
-    expectEveryTruncationSafe(tif, ImageKind::Tiff, g, std::size_t(packetAt - tif.begin()) + packetEnd.size());
+    expectEveryTruncationSafe(tif, ImageKind::Tiff, g,
+                              std::size_t(packetAt - tif.begin()) + packetEnd.size());
 
     // A damaged byte inside the genome's chunk fails its CRC.
     std::vector<unsigned char> damaged = png;
@@ -312,7 +329,8 @@ TEST(GenomeImage, TruncatedAndDamagedImagesAreRefused) {
         loadDesign(dir / "damaged.png");
         ADD_FAILURE() << "a damaged genome chunk was read";
     } catch (const InputError& e) {
-        EXPECT_TRUE(std::string(e.what()).starts_with((dir / "damaged.png").string() + ": cannot read the PNG: "))
+        EXPECT_TRUE(
+            std::string(e.what()).starts_with((dir / "damaged.png").string() + ": cannot read the PNG: "))
             << e.what();
     }
 }
@@ -321,20 +339,24 @@ TEST(GenomeImage, HugeChunksAreRefusedBeforeTheyAreRead) {
     // A chunk that claims 2 GiB, in a file of a few bytes.
     std::vector<unsigned char> png = handMadePng({}, {});
     std::vector<unsigned char> huge(png.begin(), png.begin() + 33); // signature and IHDR
-    for (unsigned char b : {0x7f, 0xff, 0xff, 0xf0}) huge.push_back(b);
-    for (char c : std::string("iTXt")) huge.push_back(static_cast<unsigned char>(c));
+    for (unsigned char b : {0x7f, 0xff, 0xff, 0xf0})
+        huge.push_back(b);
+    for (char c : std::string("iTXt"))
+        huge.push_back(static_cast<unsigned char>(c));
     huge.resize(huge.size() + 64, 'x');
     EXPECT_THROW(readGenomeText(huge, ImageKind::Png, "huge.png"), InputError);
 
     // A deflated genome that inflates past the 16 MiB limit: said, not allocated without end.
-    const std::string bomb = std::string("{\"format\": \"marbler-genome\", \"x\": \"") + std::string(2 * MaxFileBytes, 'a') + "\"}";
+    const std::string bomb = std::string("{\"format\": \"marbler-genome\", \"x\": \"") +
+                             std::string(2 * MaxFileBytes, 'a') + "\"}";
     png = handMadePng({{"iTXt", itxt(PngGenomeKeyword, bomb, true)}}, {});
     ASSERT_LT(png.size(), std::size_t(1) << 20);
     try {
         readGenomeText(png, ImageKind::Png, "bomb.png");
         ADD_FAILURE() << "the bomb was read";
     } catch (const InputError& e) {
-        EXPECT_TRUE(std::string(e.what()).starts_with("bomb.png is an image without a readable Marbler genome"))
+        EXPECT_TRUE(
+            std::string(e.what()).starts_with("bomb.png is an image without a readable Marbler genome"))
             << e.what();
     }
 
@@ -364,11 +386,11 @@ TEST(GenomeImage, HugeChunksAreRefusedBeforeTheyAreRead) {
 
 // --- the verbs ---------------------------------------------------------------------------------
 
-
 TEST(GenomeImageCli, VerbsTakeImagesThatCarryGenomes) {
     const fs::path dir = test::outputDir("genome-image-cli");
     const std::string genome = (test::dataDir() / "examples" / "five-stones.marble.json").string();
-    auto r = test::runMarbler({"render", genome, "-o", (dir / "design.png").string(), "--width", "64", "--quiet"});
+    auto r =
+        test::runMarbler({"render", genome, "-o", (dir / "design.png").string(), "--width", "64", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     r = test::runMarbler({"render", genome, "-o", (dir / "design.tif").string(), "--width", "64", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -380,19 +402,22 @@ TEST(GenomeImageCli, VerbsTakeImagesThatCarryGenomes) {
         EXPECT_TRUE(r.err.empty()) << r.err;
     }
     // An image renders like its genome, and the new image carries the same genome on.
-    r = test::runMarbler({"render", (dir / "design.png").string(), "-o", (dir / "again.png").string(), "--width", "64"});
+    r = test::runMarbler(
+        {"render", (dir / "design.png").string(), "-o", (dir / "again.png").string(), "--width", "64"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readImage8(dir / "again.png").rgb, test::readImage8(dir / "design.png").rgb);
     EXPECT_EQ(serializeGenome(loadDesign(dir / "again.png")), serializeGenome(loadGenome(genome)));
-    r = test::runMarbler({"render", (dir / "design.tif").string(), "-o", (dir / "again.tif").string(), "--width", "64"});
+    r = test::runMarbler(
+        {"render", (dir / "design.tif").string(), "-o", (dir / "again.tif").string(), "--width", "64"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(loadDesign(dir / "again.tif"), loadGenome(genome));
 
     // Parents of breed may be images too: the same children as from the genome file.
-    r = test::runMarbler({"breed", "alter", (dir / "design.png").string(), "--seed", "3", "--count", "2", "-o",
-                          (dir / "from-image").string()});
+    r = test::runMarbler({"breed", "alter", (dir / "design.png").string(), "--seed", "3", "--count", "2",
+                          "-o", (dir / "from-image").string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    r = test::runMarbler({"breed", "alter", genome, "--seed", "3", "--count", "2", "-o", (dir / "from-file").string()});
+    r = test::runMarbler(
+        {"breed", "alter", genome, "--seed", "3", "--count", "2", "-o", (dir / "from-file").string()});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readFile(dir / "from-image" / "child-01.marble.json"),
               test::readFile(dir / "from-file" / "child-01.marble.json"));
@@ -423,7 +448,8 @@ TEST(GenomeImageCli, PlainBrokenAndForeignImagesAreBadInputOnOneLine) {
             auto r = test::runMarbler(args);
             EXPECT_EQ(r.exitCode, 2) << verb << " " << file;
             EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
-            EXPECT_EQ(r.err.find(std::string("marbler ") + verb + ": " + (dir / message).string()), 0u) << r.err;
+            EXPECT_EQ(r.err.find(std::string("marbler ") + verb + ": " + (dir / message).string()), 0u)
+                << r.err;
         }
         EXPECT_FALSE(fs::exists(dir / "out.png"));
     }

@@ -14,11 +14,14 @@
 namespace marbler {
 namespace {
 
-Genome example() { return loadGenome(test::dataDir() / "examples" / "five-stones.marble.json"); }
+Genome example() {
+    return loadGenome(test::dataDir() / "examples" / "five-stones.marble.json");
+}
 
 std::size_t filesIn(const std::filesystem::path& dir) {
     std::size_t count = 0;
-    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++count;
+    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir))
+        ++count;
     return count;
 }
 
@@ -59,7 +62,8 @@ TEST(ImageFiles, EveryFormatRoundTripsWithItsResolution) {
                 std::vector<float> linear(std::size_t(150) * 90 * 3);
                 ASSERT_TRUE(exr->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, linear.data()));
                 for (std::size_t k = 0; k < linear.size(); k += 97)
-                    EXPECT_NEAR(linear[k], srgbToLinear(image.rgb[k] / 255.0), 2e-3) << file << " value " << k;
+                    EXPECT_NEAR(linear[k], srgbToLinear(image.rgb[k] / 255.0), 2e-3)
+                        << file << " value " << k;
             } else {
                 test::ImageDiff diff = test::compareImages(back, image, lossy ? 40 : 0);
                 EXPECT_GE(diff.shareWithin, lossy ? 0.95 : 1.0) << file;

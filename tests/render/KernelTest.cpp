@@ -62,7 +62,8 @@ TEST(KernelMath, CubeRootOnTheUnitInterval) {
 /// A random operation of any tool allowed in `dimension`, with parameters drawn around the
 /// parameter tables' defaults.
 Operation randomOperation(Pcg32& rng, Tool tool, int dimension) {
-    glm::dvec3 center(rng.uniform(0, 1000), rng.uniform(0, 1000), dimension == 3 ? rng.uniform(0, 1000) : 0.0);
+    glm::dvec3 center(rng.uniform(0, 1000), rng.uniform(0, 1000),
+                      dimension == 3 ? rng.uniform(0, 1000) : 0.0);
     Operation op = defaultOperation(tool, dimension, center);
     auto unit = [&] {
         glm::dvec3 v(rng.normal(), rng.normal(), rng.normal());
@@ -90,7 +91,8 @@ Operation randomOperation(Pcg32& rng, Tool tool, int dimension) {
     if (tool == Tool::Stretch) {
         op.teeth = {rng.uniform(-300, 300)};
         const int teeth = 2 + static_cast<int>(rng.below(12));
-        while (int(op.teeth.size()) < teeth) op.teeth.push_back(op.teeth.back() + rng.uniform(20, 200));
+        while (int(op.teeth.size()) < teeth)
+            op.teeth.push_back(op.teeth.back() + rng.uniform(20, 200));
         op.shift = rng.uniform(-80, 80);
         const double powers[] = {1.0, 2.0, 0.5, rng.uniform(0.2, 3.0)};
         op.power = powers[rng.below(4)];
@@ -119,14 +121,17 @@ bool exactTool(Tool tool, int dimension) {
     case Tool::Spray:
     case Tool::Line:
     case Tool::Comb:
-    case Tool::Cylinder: return true;
-    case Tool::Drop: return dimension == 2;
+    case Tool::Cylinder:
+        return true;
+    case Tool::Drop:
+        return dimension == 2;
     case Tool::Wave:
     case Tool::Circle:
     case Tool::Sphere:
     case Tool::Vortex:
     case Tool::Stretch:
-    case Tool::Flow: return false;
+    case Tool::Flow:
+        return false;
     }
     return false;
 }
@@ -153,7 +158,8 @@ TEST_P(KernelVsReference, EveryToolMovesPointsLikeTheReference) {
             const int n = 300 + trial; // not a multiple of the vector width
             std::vector<glm::dvec3> points;
             for (int i = 0; i < n; ++i) {
-                glm::dvec3 p(rng.uniform(-200, 1200), rng.uniform(-200, 1200), dim == 3 ? rng.uniform(-200, 1200) : 0.0);
+                glm::dvec3 p(rng.uniform(-200, 1200), rng.uniform(-200, 1200),
+                             dim == 3 ? rng.uniform(-200, 1200) : 0.0);
                 if (i == 0) p = op.c; // the centre itself stays
                 points.push_back(p);
                 tile->x[i] = p.x;
@@ -173,7 +179,8 @@ TEST_P(KernelVsReference, EveryToolMovesPointsLikeTheReference) {
                 ASSERT_EQ(tile->id[k], i);
                 glm::dvec3 want = inverseMap(op, p);
                 glm::dvec3 got(tile->x[k], tile->y[k], dim == 3 ? tile->z[k] : 0.0);
-                double tolerance = exact ? 0.0 : 1e-9 * (1.0 + std::abs(want.x) + std::abs(want.y) + std::abs(want.z));
+                double tolerance =
+                    exact ? 0.0 : 1e-9 * (1.0 + std::abs(want.x) + std::abs(want.y) + std::abs(want.z));
                 ASSERT_NEAR(got.x, want.x, tolerance) << toolSpec(tool).name << " point " << i;
                 ASSERT_NEAR(got.y, want.y, tolerance) << toolSpec(tool).name << " point " << i;
                 ASSERT_NEAR(got.z, want.z, tolerance) << toolSpec(tool).name << " point " << i;
@@ -193,10 +200,13 @@ TEST_P(KernelVsReference, RandomGenomesGiveTheReferenceColours) {
         g.dimension = dim;
         g.palette = {{10, 20, 30}, {200, 10, 10}, {10, 200, 10}, {10, 10, 200}};
         for (int i = 0; i < 25; ++i) {
-            Tool tool = dim == 3 && rng.chance(0.2) ? Tool::Cylinder : rng.chance(0.8) ? Tool::Drop : Tool::Spray;
+            Tool tool = dim == 3 && rng.chance(0.2) ? Tool::Cylinder
+                        : rng.chance(0.8)           ? Tool::Drop
+                                                    : Tool::Spray;
             g.initial.push_back(randomOperation(rng, tool, dim));
         }
-        for (int i = 0; i < 10; ++i) g.operations.push_back(randomOperation(rng, tools[rng.below(std::uint32_t(tools.size()))], dim));
+        for (int i = 0; i < 10; ++i)
+            g.operations.push_back(randomOperation(rng, tools[rng.below(std::uint32_t(tools.size()))], dim));
         CpuRenderer renderer(g);
         std::vector<PreparedOp> ops = prepare(g);
         for (int k = 0; k < 2000; ++k) {
@@ -204,8 +214,8 @@ TEST_P(KernelVsReference, RandomGenomesGiveTheReferenceColours) {
             int want = traceColor(ops, p), got = renderer.colorIndexAt(p);
             if (want != got) {
                 ++mismatches;
-                std::printf("  genome %d point (%.17g, %.17g, %.17g): kernel %d, reference %d\n", genomeIndex, p.x,
-                            p.y, p.z, got, want);
+                std::printf("  genome %d point (%.17g, %.17g, %.17g): kernel %d, reference %d\n", genomeIndex,
+                            p.x, p.y, p.z, got, want);
             }
             ++total;
         }
@@ -215,9 +225,11 @@ TEST_P(KernelVsReference, RandomGenomesGiveTheReferenceColours) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, KernelVsReference,
-                         ::testing::Combine(::testing::ValuesIn(cpuKernelsSupported()), ::testing::Values(2, 3)),
+                         ::testing::Combine(::testing::ValuesIn(cpuKernelsSupported()),
+                                            ::testing::Values(2, 3)),
                          [](const auto& info) {
-                             return std::get<0>(info.param) + "_" + std::to_string(std::get<1>(info.param)) + "D";
+                             return std::get<0>(info.param) + "_" + std::to_string(std::get<1>(info.param)) +
+                                    "D";
                          });
 
 /// The variant a traceTile call of `renderer` runs on this thread.
@@ -233,14 +245,18 @@ protected:
         if (const char* old = std::getenv("MARBLER_KERNEL")) mOld = old;
     }
     void TearDown() override {
-        if (mOld) ::setenv("MARBLER_KERNEL", mOld->c_str(), 1);
-        else ::unsetenv("MARBLER_KERNEL");
+        if (mOld)
+            ::setenv("MARBLER_KERNEL", mOld->c_str(), 1);
+        else
+            ::unsetenv("MARBLER_KERNEL");
         setCpuKernelForTesting("");
     }
     /// Sets MARBLER_KERNEL (null: unset) and has the kernel read it again.
     static void use(const char* value) {
-        if (value) ::setenv("MARBLER_KERNEL", value, 1);
-        else ::unsetenv("MARBLER_KERNEL");
+        if (value)
+            ::setenv("MARBLER_KERNEL", value, 1);
+        else
+            ::unsetenv("MARBLER_KERNEL");
         setCpuKernelForTesting("");
     }
 
@@ -260,7 +276,8 @@ TEST(KernelSelection, TheSupportedVariantsAreKnownBestFirstAndEndWithBaseline) {
         last = static_cast<int>(*v);
     }
     std::printf("  this CPU runs:");
-    for (const std::string& name : names) std::printf(" %s", name.c_str());
+    for (const std::string& name : names)
+        std::printf(" %s", name.c_str());
     std::printf("\n");
 }
 
@@ -356,7 +373,8 @@ TEST(KernelSelection, EveryVariantRendersTheSameImage) {
         setCpuKernelForTesting(name);
         const Image got = renderer.render(settings);
         int differ = 0;
-        for (std::size_t k = 0; k < got.rgb.size(); ++k) differ += got.rgb[k] != want.rgb[k];
+        for (std::size_t k = 0; k < got.rgb.size(); ++k)
+            differ += got.rgb[k] != want.rgb[k];
         // The kernels' own sine and cube root and the AVX-512 drops differ from the exact forms
         // by ulps: only a sample on an ink boundary could change, moving a channel by a level
         // or so through the average.

@@ -15,8 +15,9 @@ using test::runMarbler;
 
 TEST(RenderCli, ProgressIsOneLineRewrittenThenClearedAndQuietSaysNothing) {
     const auto dir = test::outputDir("cli-progress");
-    const std::vector<std::string> render{"render", test::examplePath("five-stones.marble.json"), "-o",
-                                          (dir / "a.png").string(), "--width", "400"};
+    const std::vector<std::string> render{"render",  test::examplePath("five-stones.marble.json"),
+                                          "-o",      (dir / "a.png").string(),
+                                          "--width", "400"};
     std::vector<std::string> args = render;
     args.push_back("--progress");
     auto r = runMarbler(args);
@@ -41,37 +42,38 @@ TEST(RenderCli, ProgressIsOneLineRewrittenThenClearedAndQuietSaysNothing) {
 
 TEST(RenderCli, DefaultSizeAndAspect) {
     const auto dir = test::outputDir("cli-sizes");
-    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "a.png").string(), "--threads", "2"});
+    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o",
+                         (dir / "a.png").string(), "--threads", "2"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image a = test::readImage8(dir / "a.png");
     EXPECT_EQ(a.width, 1024);
     EXPECT_EQ(a.height, 1024);
 
-    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "b.png").string(), "--width", "300",
-                    "--region", "0,0,1000,500"});
+    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "b.png").string(),
+                    "--width", "300", "--region", "0,0,1000,500"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image b = test::readImage8(dir / "b.png");
     EXPECT_EQ(b.width, 300);
     EXPECT_EQ(b.height, 150);
 
-    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "c.tif").string(), "--height", "100",
-                    "--region=0,0,1000,500", "--aa", "rgss"});
+    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "c.tif").string(),
+                    "--height", "100", "--region=0,0,1000,500", "--aa", "rgss"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image c = test::readImage8(dir / "c.tif");
     EXPECT_EQ(c.width, 200);
     EXPECT_EQ(c.height, 100);
 
     // A y slice of the solid example covers x-z.
-    r = runMarbler({"render", test::examplePath("slate-block.marble.json"), "-o", (dir / "d.png").string(), "--width", "64",
-                    "--slice", "y=500"});
+    r = runMarbler({"render", test::examplePath("slate-block.marble.json"), "-o", (dir / "d.png").string(),
+                    "--width", "64", "--slice", "y=500"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readImage8(dir / "d.png").height, 64);
 }
 
 TEST(RenderCli, PrintSizeAndDpiSetThePixels) {
     const auto dir = test::outputDir("cli-print");
-    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "p.png").string(), "--size",
-                         "10x5cm", "--dpi", "254", "--quiet"});
+    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o",
+                         (dir / "p.png").string(), "--size", "10x5cm", "--dpi", "254", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     auto in = OIIO::ImageInput::open((dir / "p.png").string());
     ASSERT_TRUE(in);
@@ -79,12 +81,12 @@ TEST(RenderCli, PrintSizeAndDpiSetThePixels) {
     EXPECT_EQ(in->spec().height, 500);
     EXPECT_NEAR(in->spec().get_float_attribute("XResolution"), 254.0f, 0.05f);
     in->close();
-    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "q.png").string(), "--size", "2x1in",
-                    "--dpi", "50"});
+    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "q.png").string(),
+                    "--size", "2x1in", "--dpi", "50"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readImage8(dir / "q.png").width, 100);
-    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "r.png").string(), "--size", "20x10mm",
-                    "--dpi", "127"});
+    r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", (dir / "r.png").string(),
+                    "--size", "20x10mm", "--dpi", "127"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(test::readImage8(dir / "r.png").width, 100);
 }
@@ -106,8 +108,10 @@ TEST(RenderCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     const std::string out = (dir / "out.png").string();
     const std::string good = test::examplePath("five-stones.marble.json");
     test::writeFile(dir.parent_path() / "broken.marble.json", "{\"format\": \"marbler-genome\", ");
-    expectFailure({"render", (dir.parent_path() / "broken.marble.json").string(), "-o", out}, 2, "broken.marble.json", out);
-    expectFailure({"render", (dir.parent_path() / "absent.marble.json").string(), "-o", out}, 2, "absent.marble.json", out);
+    expectFailure({"render", (dir.parent_path() / "broken.marble.json").string(), "-o", out}, 2,
+                  "broken.marble.json", out);
+    expectFailure({"render", (dir.parent_path() / "absent.marble.json").string(), "-o", out}, 2,
+                  "absent.marble.json", out);
     expectFailure({"render", good, "-o", out, "--frobnicate"}, 2, "--frobnicate", out);
     expectFailure({"render", good, "-o", out, "--width", "1000000", "--height", "1000000"}, 2, "width", out);
     expectFailure({"render", good, "-o", out, "--width", "60000", "--height", "60000"}, 2, "too large", out);
@@ -146,7 +150,8 @@ TEST(RenderCli, EveryVerbRefusesABadSliceInTheSameWords) {
 TEST(RenderCli, UnwritableFolderExitsOne) {
     const auto dir = test::outputDir("cli-unwritable");
     const auto out = dir / "no" / "such" / "folder" / "out.png";
-    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", out.string(), "--width", "16"});
+    auto r = runMarbler(
+        {"render", test::examplePath("five-stones.marble.json"), "-o", out.string(), "--width", "16"});
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_EQ(test::lineCount(r.err), 1u) << r.err;
     EXPECT_NE(r.err.find("out.png"), std::string::npos) << r.err;
@@ -156,7 +161,8 @@ TEST(RenderCli, UnwritableFolderExitsOne) {
 TEST(RenderCli, GpuEitherRendersOrSaysWhyNot) {
     const auto dir = test::outputDir("cli-gpu");
     const auto out = dir / "gpu.png";
-    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", out.string(), "--width", "32", "--gpu"});
+    auto r = runMarbler({"render", test::examplePath("five-stones.marble.json"), "-o", out.string(),
+                         "--width", "32", "--gpu"});
     if (r.exitCode == 0) {
         EXPECT_EQ(test::readImage8(out).width, 32);
     } else {
@@ -169,11 +175,11 @@ TEST(RenderCli, GpuEitherRendersOrSaysWhyNot) {
 TEST(RenderCli, MirrorRepeatWrapsWithoutASeam) {
     const auto dir = test::outputDir("cli-repeat");
     const std::string genome = test::examplePath("flame-comb-vortex.marble.json");
-    auto r = runMarbler({"render", genome, "-o", (dir / "design.png").string(), "--width", "96", "--height", "64",
-                         "--aa", "rgss", "--region", "100,200,700,600"});
+    auto r = runMarbler({"render", genome, "-o", (dir / "design.png").string(), "--width", "96", "--height",
+                         "64", "--aa", "rgss", "--region", "100,200,700,600"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    r = runMarbler({"render", genome, "-o", (dir / "tile.png").string(), "--width", "96", "--height", "64", "--aa",
-                    "rgss", "--region", "100,200,700,600", "--repeat", "mirror"});
+    r = runMarbler({"render", genome, "-o", (dir / "tile.png").string(), "--width", "96", "--height", "64",
+                    "--aa", "rgss", "--region", "100,200,700,600", "--repeat", "mirror"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     Image design = test::readImage8(dir / "design.png");
     Image tile = test::readImage8(dir / "tile.png");
@@ -195,11 +201,14 @@ TEST(RenderCli, MirrorRepeatWrapsWithoutASeam) {
         }
     // Wrapping: the last column meets the first, the last row the first, with equal pixels, so
     // laid side by side or one under another the tiles show no seam.
-    for (int y = 0; y < th; ++y) EXPECT_EQ(px(tile, tw - 1, y), px(tile, 0, y)) << y;
-    for (int x = 0; x < tw; ++x) EXPECT_EQ(px(tile, x, th - 1), px(tile, x, 0)) << x;
+    for (int y = 0; y < th; ++y)
+        EXPECT_EQ(px(tile, tw - 1, y), px(tile, 0, y)) << y;
+    for (int x = 0; x < tw; ++x)
+        EXPECT_EQ(px(tile, x, th - 1), px(tile, x, 0)) << x;
     // The design itself does not wrap: its opposite edges differ, which is why the mirrors are needed.
     int differing = 0;
-    for (int y = 0; y < h; ++y) differing += px(design, w - 1, y) != px(design, 0, y);
+    for (int y = 0; y < h; ++y)
+        differing += px(design, w - 1, y) != px(design, 0, y);
     EXPECT_GT(differing, 0);
 
     // With --size and --dpi each quarter has the print size.
@@ -213,16 +222,17 @@ TEST(RenderCli, MirrorRepeatWrapsWithoutASeam) {
     const std::string out = (dir / "bad" / "out.png").string();
     std::filesystem::create_directories(dir / "bad");
     expectFailure({"render", genome, "-o", out, "--repeat", "straight"}, 2, "--repeat", out);
-    expectFailure({"render", genome, "-o", out, "--repeat", "mirror", "--width", "40000", "--height", "40000"}, 2,
-                  "--repeat", out);
+    expectFailure(
+        {"render", genome, "-o", out, "--repeat", "mirror", "--width", "40000", "--height", "40000"}, 2,
+        "--repeat", out);
 }
 
 TEST(RenderCli, HelpDescribesEveryOption) {
     auto r = runMarbler({"render", "--help"});
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* option : {"-o", "--width", "--height", "--aa", "--region", "--slice", "--dpi", "--size", "--gpu",
-                               "--mesh", "--view", "--supersample", "--threads", "--quiet", "rooks8", "checker4",
-                               "--repeat mirror"})
+    for (const char* option :
+         {"-o", "--width", "--height", "--aa", "--region", "--slice", "--dpi", "--size", "--gpu", "--mesh",
+          "--view", "--supersample", "--threads", "--quiet", "rooks8", "checker4", "--repeat mirror"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 

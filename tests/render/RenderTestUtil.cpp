@@ -31,7 +31,8 @@ Image readImage8(const std::filesystem::path& file) {
         throw std::runtime_error("cannot read " + file.string() + ": " + in->geterror());
     image.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t p = 0; p < std::size_t(spec.width) * spec.height; ++p)
-        for (int c = 0; c < 3; ++c) image.rgb[p * 3 + c] = all[p * spec.nchannels + (spec.nchannels >= 3 ? c : 0)];
+        for (int c = 0; c < 3; ++c)
+            image.rgb[p * 3 + c] = all[p * spec.nchannels + (spec.nchannels >= 3 ? c : 0)];
     return image;
 }
 
@@ -44,7 +45,8 @@ ImageDiff compareImages(const Image& a, const Image& b, int tolerance) {
     std::size_t within = 0, pixels = std::size_t(a.width) * a.height;
     for (std::size_t p = 0; p < pixels; ++p) {
         int worst = 0;
-        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.rgb[p * 3 + c]) - int(b.rgb[p * 3 + c])));
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::abs(int(a.rgb[p * 3 + c]) - int(b.rgb[p * 3 + c])));
         diff.maxDifference = std::max(diff.maxDifference, worst);
         within += worst <= tolerance;
     }

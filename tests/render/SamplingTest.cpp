@@ -22,7 +22,8 @@ TEST(AaPattern, EveryPatternOfTheSpec) {
         AaPattern p = aaPattern(name);
         ASSERT_EQ(p.offsets.size(), p.weights.size()) << name;
         double sum = 0;
-        for (double w : p.weights) sum += w;
+        for (double w : p.weights)
+            sum += w;
         EXPECT_NEAR(sum, 1.0, 1e-15) << name;
         for (const glm::dvec2& o : p.offsets) {
             EXPECT_LE(std::abs(o.x), 0.5) << name;
@@ -47,7 +48,8 @@ TEST(AaPattern, EveryPatternOfTheSpec) {
     AaPattern c = aaPattern("checker4");
     ASSERT_EQ(c.offsets.size(), 8u);
     for (const glm::dvec2& o : c.offsets) {
-        int i = static_cast<int>(std::lround((o.x + 0.5) * 4 - 0.5)), j = static_cast<int>(std::lround((o.y + 0.5) * 4 - 0.5));
+        int i = static_cast<int>(std::lround((o.x + 0.5) * 4 - 0.5)),
+            j = static_cast<int>(std::lround((o.y + 0.5) * 4 - 0.5));
         EXPECT_EQ((i + j) % 2, 0);
     }
     AaPattern r = aaPattern("rooks8");
@@ -231,7 +233,9 @@ Genome dotGenome(glm::dvec2 center, double radius) {
     return g;
 }
 
-bool white(const Image& image, int x, int y) { return image.row(y)[x * 3] == 255; }
+bool white(const Image& image, int x, int y) {
+    return image.row(y)[x * 3] == 255;
+}
 
 TEST(Render, RegionPlacesThePixels) {
     Genome g = dotGenome({250, 250}, 100);
@@ -266,11 +270,11 @@ TEST(Render, SlicesSeeTheRightPlane) {
     EXPECT_FALSE(white(z, 29, 19)); // transposed
     s.slice = Slice{1, 300};
     Image y = renderer.render(s);
-    EXPECT_TRUE(white(y, 19, 39));  // (195, c, 395): columns x, rows z
+    EXPECT_TRUE(white(y, 19, 39)); // (195, c, 395): columns x, rows z
     EXPECT_FALSE(white(y, 39, 19));
     s.slice = Slice{0, 200};
     Image x = renderer.render(s);
-    EXPECT_TRUE(white(x, 29, 39));  // (c, 295, 395): columns y, rows z
+    EXPECT_TRUE(white(x, 29, 39)); // (c, 295, 395): columns y, rows z
     EXPECT_FALSE(white(x, 39, 29));
     s.slice = Slice{2, 500}; // beyond the dot
     EXPECT_FALSE(white(renderer.render(s), 19, 29));
@@ -294,7 +298,8 @@ TEST(Render, ThreadCountDoesNotChangeTheImage) {
     EXPECT_TRUE(std::equal(rows.begin(), rows.end(), one.row(20)));
     std::vector<float> linear(rows.size());
     renderer.renderRowsLinear(s, 20, 30, linear.data());
-    for (std::size_t k = 0; k < rows.size(); ++k) ASSERT_EQ(encodeSrgb8(linear[k]), rows[k]);
+    for (std::size_t k = 0; k < rows.size(); ++k)
+        ASSERT_EQ(encodeSrgb8(linear[k]), rows[k]);
 }
 
 TEST(Render, ProgressReachesOneAndCancelStops) {
@@ -340,7 +345,8 @@ TEST(Render, SourceImageIsStretchedOverTheDesign) {
         for (int j = 0; j < 2; ++j)
             for (int i = 0; i < 4; ++i)
                 for (int c = 0; c < 3; ++c)
-                    EXPECT_EQ(image.row(2 * j)[2 * i * 3 + c], expected[j][i][c]) << name << " pixel " << i << "," << j;
+                    EXPECT_EQ(image.row(2 * j)[2 * i * 3 + c], expected[j][i][c])
+                        << name << " pixel " << i << "," << j;
         // Between two centres: the average in linear light.
         double mid = (srgbToLinear(200 / 255.0) + srgbToLinear(30 / 255.0)) / 2;
         EXPECT_EQ(image.row(0)[1 * 3], encodeSrgb8(mid)) << name;
@@ -374,7 +380,8 @@ std::string pngHeaderOnly(std::uint32_t width, std::uint32_t height) {
         std::uint32_t crc = 0xffffffffu;
         for (unsigned char b : bytes) {
             crc ^= b;
-            for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+            for (int k = 0; k < 8; ++k)
+                crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
         }
         return ~crc;
     };

@@ -28,14 +28,17 @@ std::vector<Genome> colourwaySet(int count) {
     request.seed = 4;
     request.count = count - 1;
     std::vector<Genome> out{design};
-    for (Genome& g : colourways(request)) out.push_back(std::move(g));
+    for (Genome& g : colourways(request))
+        out.push_back(std::move(g));
     return out;
 }
 
 /// Whether a cell of the sheet holds exactly `image`.
 bool cellEquals(const Image& sheet, int x, int y, const Image& image) {
     for (int row = 0; row < image.height; ++row)
-        if (std::memcmp(sheet.row(y + row) + std::size_t(x) * 3, image.row(row), std::size_t(image.width) * 3) != 0) return false;
+        if (std::memcmp(sheet.row(y + row) + std::size_t(x) * 3, image.row(row),
+                        std::size_t(image.width) * 3) != 0)
+            return false;
     return true;
 }
 
@@ -61,7 +64,9 @@ TEST(Sheet, EachCellIsARenderOfItsDesignWithTheGapAround) {
         const Image image = CpuRenderer(designs[std::size_t(i)]).render(cell);
         EXPECT_TRUE(cellEquals(sheet, layout.cellX(i), layout.cellY(i), image)) << "cell " << i;
         for (int y = 0; y < 40; ++y)
-            for (int x = 0; x < 48; ++x) inCell[std::size_t(layout.cellY(i) + y) * std::size_t(sheet.width) + std::size_t(layout.cellX(i) + x)] = true;
+            for (int x = 0; x < 48; ++x)
+                inCell[std::size_t(layout.cellY(i) + y) * std::size_t(sheet.width) +
+                       std::size_t(layout.cellX(i) + x)] = true;
     }
     // The cells differ (colourways), and everything outside them is the sheet's colour.
     const Image first = CpuRenderer(designs[0]).render(sheetCellSettings(designs[0], layout, settings));
@@ -111,7 +116,8 @@ TEST(Sheet, ReportsProgressAndIsCancelled) {
     renderSheet(designs, settings, &control);
     ASSERT_FALSE(seen.empty());
     EXPECT_EQ(seen.back(), 1.0);
-    for (double f : seen) EXPECT_TRUE(f >= 0.0 && f <= 1.0);
+    for (double f : seen)
+        EXPECT_TRUE(f >= 0.0 && f <= 1.0);
     EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), [](double f) { return f > 0.4 && f < 0.9; }));
 
     std::atomic<bool> cancel{true};

@@ -27,7 +27,7 @@ struct SourceFolders {
     SourceFolders() {
         // A folder of each test's own: ctest runs the cases of this file side by side.
         root = test::outputDir(std::string("source-paths-") +
-                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(root);
         design = root / "design";
         outside = root / "private";
@@ -49,7 +49,6 @@ struct SourceFolders {
         return file;
     }
 };
-
 
 TEST(SourcePath, LocatesEveryKindOfSource) {
     SourceFolders f;

@@ -74,7 +74,8 @@ std::vector<std::vector<glm::dvec2>> parsePaths(const std::string& svg) {
         EXPECT_EQ(*p, '\0') << "unparsed path data";
         EXPECT_EQ(numbers.size() % 2, 0u);
         std::vector<glm::dvec2> points;
-        for (std::size_t k = 0; k + 1 < numbers.size(); k += 2) points.emplace_back(numbers[k], numbers[k + 1]);
+        for (std::size_t k = 0; k + 1 < numbers.size(); k += 2)
+            points.emplace_back(numbers[k], numbers[k + 1]);
         paths.push_back(std::move(points));
     }
     return paths;
@@ -139,7 +140,8 @@ TEST(Svg, RasterisedSvgMatchesTheAntialiasedRender) {
         EXPECT_LT(mean, 5.0) << "mean absolute difference";
         EXPECT_LT(share, 0.05) << "share of pixels off by more than 40 levels";
         EXPECT_LT(wrongShare, 0.0005) << "share of pixels off by more than 128 levels";
-        if (mean >= 5.0 || share >= 0.05 || wrongShare >= 0.0005) writeImage(raster, dir / (g.name + "-raster.png"));
+        if (mean >= 5.0 || share >= 0.05 || wrongShare >= 0.0005)
+            writeImage(raster, dir / (g.name + "-raster.png"));
     }
     // Every ink-laying and every moving 2D tool took part.
     for (const ToolSpec& spec : allTools())
@@ -170,7 +172,8 @@ TEST(Svg, NeighbouringVerticesAreWithinTheTolerance) {
             if (tolerance < 1.0 && g.name != "five-stones" && g.name != "drops-combs-2d") continue;
             SCOPED_TRACE(g.name + " at " + std::to_string(tolerance));
             const auto svg = dir / (g.name + ".svg");
-            auto r = runMarbler({"svg", g.file.string(), "-o", svg.string(), "--tolerance", std::to_string(tolerance)});
+            auto r = runMarbler(
+                {"svg", g.file.string(), "-o", svg.string(), "--tolerance", std::to_string(tolerance)});
             ASSERT_EQ(r.exitCode, 0) << r.err;
             auto paths = parsePaths(test::readFile(svg));
             VectorOptions options;
@@ -211,7 +214,8 @@ TEST(Svg, VerticesLieOnTheTrueBoundary) {
             EXPECT_EQ(outline.color, ink.color);
             for (std::size_t k = 0; k < outline.points.size(); k += 7) {
                 glm::dvec3 p(outline.points[k], 0.0);
-                for (std::size_t j = ops.size(); j-- > outline.step + 1;) p = inverseMap(ops[j], p);
+                for (std::size_t j = ops.size(); j-- > outline.step + 1;)
+                    p = inverseMap(ops[j], p);
                 worst = std::max(worst, std::abs(glm::distance(p, ink.c) - ink.r));
             }
         }
@@ -222,20 +226,23 @@ TEST(Svg, VerticesLieOnTheTrueBoundary) {
 TEST(Svg, LaterInksCoverEarlierOnesInStackingOrder) {
     // A drop inside a drop makes a ring; a spray covers without moving; a comb drags them all.
     const auto dir = test::outputDir("svg-stacking");
-    Genome genome = parseGenome(R"({"format": "marbler-genome", "version": 1, "dimension": 2, "size": [400, 200],
+    Genome genome =
+        parseGenome(R"({"format": "marbler-genome", "version": 1, "dimension": 2, "size": [400, 200],
         "background": "#ffffff", "palette": ["#ff0000", "#0000ff", "#00ff00"],
         "initial": [{"tool": "drop", "center": [200, 100], "radius": 60, "color": 0},
                     {"tool": "drop", "center": [200, 100], "radius": 30, "color": 1},
                     {"tool": "spray", "center": [260, 100], "radius": 25, "color": 2}],
         "operations": [{"tool": "line", "origin": [0, 100], "angle": 0, "alpha": 40, "lambda": 20}]})",
-                                "stack");
+                    "stack");
     VectorDesign design = traceDesign(genome);
     ASSERT_EQ(design.outlines.size(), 3u);
-    for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(design.outlines[k].step, k);
+    for (std::size_t k = 0; k < 3; ++k)
+        EXPECT_EQ(design.outlines[k].step, k);
     // The first drop's outline was pushed out to the area law's radius sqrt(60^2 + 30^2) before
     // the line; the line moves points along x only, so its top and bottom keep their height.
     double top = 1e9;
-    for (const glm::dvec2& p : design.outlines[0].points) top = std::min(top, p.y);
+    for (const glm::dvec2& p : design.outlines[0].points)
+        top = std::min(top, p.y);
     EXPECT_NEAR(top, 100.0 - std::sqrt(60.0 * 60.0 + 30.0 * 30.0), 0.05);
     // The spray moved nothing: the blue drop's outline is a circle shifted by the line only.
     auto file = dir / "stack.marble.json";
@@ -245,7 +252,8 @@ TEST(Svg, LaterInksCoverEarlierOnesInStackingOrder) {
     std::string svg = test::readFile(dir / "stack.svg");
     EXPECT_NE(svg.find(R"(viewBox="0 0 400 200")"), std::string::npos);
     EXPECT_NE(svg.find(R"(<rect x="0" y="0" width="400" height="200" fill="#ffffff"/>)"), std::string::npos);
-    std::size_t red = svg.find("#ff0000\" d="), blue = svg.find("#0000ff\" d="), green = svg.find("#00ff00\" d=");
+    std::size_t red = svg.find("#ff0000\" d="), blue = svg.find("#0000ff\" d="),
+                green = svg.find("#00ff00\" d=");
     ASSERT_NE(green, std::string::npos);
     EXPECT_LT(red, blue);
     EXPECT_LT(blue, green);
@@ -260,9 +268,9 @@ TEST(Svg, LaterInksCoverEarlierOnesInStackingOrder) {
     CpuRenderer renderer(genome);
     for (int x : {150, 200, 240, 290, 330, 380}) {
         int k = renderer.colorIndexAt({x + 0.5, 100.5, 0.0});
-        std::array<int, 3> expected = k < 0 ? std::array<int, 3>{255, 255, 255}
-                                            : std::array<int, 3>{genome.palette[k].r, genome.palette[k].g,
-                                                                 genome.palette[k].b};
+        std::array<int, 3> expected =
+            k < 0 ? std::array<int, 3>{255, 255, 255}
+                  : std::array<int, 3>{genome.palette[k].r, genome.palette[k].g, genome.palette[k].b};
         EXPECT_EQ(at(x, 100), expected) << "x = " << x << ", ink " << k;
     }
 }
@@ -270,10 +278,11 @@ TEST(Svg, LaterInksCoverEarlierOnesInStackingOrder) {
 TEST(Svg, NearlyStraightRunsLoseTheirInnerVertices) {
     // A drop of radius 2 at tolerance 10: its 64 initial samples are 0.2 apart, and a run of
     // them bends less than a tenth of a unit (T/100) from its chord for about 0.9 units.
-    Genome genome = parseGenome(R"({"format": "marbler-genome", "version": 1, "dimension": 2, "size": [100, 100],
+    Genome genome =
+        parseGenome(R"({"format": "marbler-genome", "version": 1, "dimension": 2, "size": [100, 100],
         "background": "#ffffff", "palette": ["#000000"], "initial": [{"tool": "drop", "center": [50, 50], "radius": 2, "color": 0}],
         "operations": []})",
-                                "small");
+                    "small");
     VectorOptions options;
     options.tolerance = 10.0;
     VectorDesign simplified = traceDesign(genome, options);
@@ -337,9 +346,11 @@ TEST(Svg, SimplifyReplacesOnlyStraightRuns) {
     VectorOptions options;
     options.straightChord = 16.0;
     std::size_t vertices = 0;
-    for (const auto& path : parsePaths(test::readFile(svg))) vertices += path.size();
-    EXPECT_EQ(vertices, traceDesign(loadGenome(test::dataDir() / "examples" / "five-stones.marble.json"), options)
-                            .vertexCount);
+    for (const auto& path : parsePaths(test::readFile(svg)))
+        vertices += path.size();
+    EXPECT_EQ(vertices,
+              traceDesign(loadGenome(test::dataDir() / "examples" / "five-stones.marble.json"), options)
+                  .vertexCount);
 }
 
 /// A failure: the exit status, one stderr line that mentions `mention`, and no output file.
@@ -369,8 +380,8 @@ TEST(SvgCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     expectFailure({"svg", good, "-o", out, "--frobnicate"}, 2, "--frobnicate", out);
     expectFailure({"svg", good, "-o", (dir / "out.png").string()}, 2, "out.png", dir / "out.png");
     expectFailure({"svg", good}, 2, "-o", out);
-    expectFailure({"svg", (dir.parent_path() / "absent.marble.json").string(), "-o", out}, 2, "absent.marble.json",
-                  out);
+    expectFailure({"svg", (dir.parent_path() / "absent.marble.json").string(), "-o", out}, 2,
+                  "absent.marble.json", out);
 }
 
 TEST(SvgCli, UnwritableFolderExitsOne) {

@@ -52,14 +52,17 @@ fs::path writeGenome(const fs::path& dir, const std::string& source) {
     return file;
 }
 
-std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+std::string firstLine(const std::string& text) {
+    return text.substr(0, text.find('\n'));
+}
 
 TEST(VideoCli, EveryFrameIsTheRenderWithThatFrameAsTheSource) {
     const fs::path dir = test::outputDir("video-cli-frames");
     const fs::path in = writeInput(dir / "in.mp4", 25.0);
     const fs::path genomeFile = writeGenome(dir, "frame.png");
-    test::RunResult r = test::runMarbler({"video", genomeFile.string(), in.string(), "-o", (dir / "out").string(),
-                                          "--width", "96", "--aa", "rgss", "--progress"});
+    test::RunResult r =
+        test::runMarbler({"video", genomeFile.string(), in.string(), "-o", (dir / "out").string(), "--width",
+                          "96", "--aa", "rgss", "--progress"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // Progress names each frame on one line rewritten in place, blanked at the end.
     EXPECT_NE(r.err.find("\rmarbling frame " + std::to_string(InFrames)), std::string::npos) << r.err;
@@ -118,15 +121,17 @@ TEST(VideoCli, AVideoOutKeepsTheInputsRateAndWidth) {
     const fs::path in = writeInput(dir / "in.webm", 20.0);
     const fs::path genomeFile = writeGenome(dir, "unused.png");
     for (const char* name : {"out.mp4", "out.gif"}) {
-        test::RunResult r = test::runMarbler({"video", genomeFile.string(), in.string(), "-o", (dir / name).string()});
+        test::RunResult r =
+            test::runMarbler({"video", genomeFile.string(), in.string(), "-o", (dir / name).string()});
         ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
         auto out = openVideoReader(dir / name);
-        EXPECT_EQ(out->width(), InWidth) << name;  // default: the input's width
+        EXPECT_EQ(out->width(), InWidth) << name;      // default: the input's width
         EXPECT_EQ(out->height(), InWidth / 2) << name; // the design's aspect, 2:1
         EXPECT_NEAR(out->fps(), 20.0, 1e-9) << name;
         std::vector<std::uint8_t> rgb;
         int count = 0;
-        while (out->nextFrame(rgb)) ++count;
+        while (out->nextFrame(rgb))
+            ++count;
         EXPECT_EQ(count, InFrames) << name;
     }
 }
@@ -156,7 +161,8 @@ TEST(VideoCli, BadInputGivesOneLineAndExit2) {
         EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
     }
     // Nothing is left behind: no output folder or file of any refused run.
-    for (const char* name : {"a", "b", "c", "d.avi", "e"}) EXPECT_FALSE(fs::exists(dir / name)) << name;
+    for (const char* name : {"a", "b", "c", "d.avi", "e"})
+        EXPECT_FALSE(fs::exists(dir / name)) << name;
 }
 
 } // namespace

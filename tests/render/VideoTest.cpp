@@ -2,9 +2,9 @@
 // machine's FFmpeg encodes and read back (animated WebP, which FFmpeg 5 cannot decode, by
 // libwebp's own decoder), the exact frame rate, and nothing left behind on failure.
 
+#include "marbler/Video.h"
 #include "TestUtil.h"
 #include "marbler/Error.h"
-#include "marbler/Video.h"
 
 #include <gtest/gtest.h>
 
@@ -26,11 +26,13 @@ using Rgb = std::array<int, 3>;
 
 /// Frame k: its left half one colour, its right half another, every colour distinct.
 Rgb leftColour(int k) {
-    static const Rgb colours[Frames] = {{220, 30, 40}, {30, 200, 60}, {40, 60, 210}, {230, 210, 40}, {200, 40, 200}, {250, 250, 250}};
+    static const Rgb colours[Frames] = {{220, 30, 40},  {30, 200, 60},  {40, 60, 210},
+                                        {230, 210, 40}, {200, 40, 200}, {250, 250, 250}};
     return colours[k];
 }
 Rgb rightColour(int k) {
-    static const Rgb colours[Frames] = {{20, 20, 20}, {120, 120, 120}, {40, 200, 210}, {160, 90, 30}, {90, 30, 120}, {60, 140, 90}};
+    static const Rgb colours[Frames] = {{20, 20, 20},  {120, 120, 120}, {40, 200, 210},
+                                        {160, 90, 30}, {90, 30, 120},   {60, 140, 90}};
     return colours[k];
 }
 
@@ -39,7 +41,9 @@ std::vector<std::uint8_t> frame(int k, int width = Width, int height = Height) {
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             Rgb c = x < width / 2 ? leftColour(k) : rightColour(k);
-            for (int i = 0; i < 3; ++i) rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(i)] = std::uint8_t(c[i]);
+            for (int i = 0; i < 3; ++i)
+                rgb[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(i)] =
+                    std::uint8_t(c[i]);
         }
     return rgb;
 }
@@ -63,15 +67,19 @@ Rgb pixel(const std::vector<std::uint8_t>& rgb, int width, int x, int y) {
 void expectNear(const Rgb& got, const Rgb& want, int tolerance, const std::string& where) {
     for (int i = 0; i < 3; ++i)
         EXPECT_LE(std::abs(got[std::size_t(i)] - want[std::size_t(i)]), tolerance)
-            << where << " channel " << i << ": got " << got[std::size_t(i)] << ", want " << want[std::size_t(i)];
+            << where << " channel " << i << ": got " << got[std::size_t(i)] << ", want "
+            << want[std::size_t(i)];
 }
 
 /// Checks the middle of each half of each frame (away from the edge between them, which chroma
 /// subsampling and dithering blur).
-void expectFrameColours(int k, const std::vector<std::uint8_t>& rgb, int width, int tolerance, const std::string& what) {
+void expectFrameColours(int k, const std::vector<std::uint8_t>& rgb, int width, int tolerance,
+                        const std::string& what) {
     for (int y : {8, 24, 40}) {
-        expectNear(pixel(rgb, width, 12, y), leftColour(k), tolerance, what + " frame " + std::to_string(k) + " left");
-        expectNear(pixel(rgb, width, 52, y), rightColour(k), tolerance, what + " frame " + std::to_string(k) + " right");
+        expectNear(pixel(rgb, width, 12, y), leftColour(k), tolerance,
+                   what + " frame " + std::to_string(k) + " left");
+        expectNear(pixel(rgb, width, 52, y), rightColour(k), tolerance,
+                   what + " frame " + std::to_string(k) + " right");
     }
 }
 
@@ -83,7 +91,8 @@ TEST_P(VideoRoundTrip, FramesSizeRateAndColoursSurvive) {
     const fs::path file = dir / ("six" + extension);
     writeFrames(file, 25.0);
     ASSERT_TRUE(fs::exists(file));
-    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "a temporary file is left";
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1)
+        << "a temporary file is left";
 
     auto reader = openVideoReader(file);
     EXPECT_EQ(reader->width(), Width);
@@ -118,7 +127,7 @@ TEST(Video, AnimatedWebpHoldsEveryFrame) {
     ASSERT_TRUE(WebPAnimDecoderOptionsInit(&options));
     options.color_mode = MODE_RGBA;
     std::unique_ptr<WebPAnimDecoder, void (*)(WebPAnimDecoder*)> decoder(WebPAnimDecoderNew(&data, &options),
-                                                                          WebPAnimDecoderDelete);
+                                                                         WebPAnimDecoderDelete);
     ASSERT_TRUE(decoder);
     WebPAnimInfo info;
     ASSERT_TRUE(WebPAnimDecoderGetInfo(decoder.get(), &info));
@@ -134,7 +143,8 @@ TEST(Video, AnimatedWebpHoldsEveryFrame) {
         EXPECT_EQ(timestamp - previous, 40) << "frame " << count;
         previous = timestamp;
         std::vector<std::uint8_t> rgb;
-        for (int p = 0; p < Width * Height; ++p) rgb.insert(rgb.end(), rgba + p * 4, rgba + p * 4 + 3);
+        for (int p = 0; p < Width * Height; ++p)
+            rgb.insert(rgb.end(), rgba + p * 4, rgba + p * 4 + 3);
         if (count < Frames) expectFrameColours(count, rgb, Width, 10, ".webp");
         ++count;
     }
@@ -208,8 +218,10 @@ TEST(Video, UnfinishedOrFailedWritesLeaveNothing) {
 }
 
 TEST(Video, FormatsAreToldByExtension) {
-    for (const char* name : {"a.gif", "a.WEBP", "b.mp4", "c.Webm"}) EXPECT_TRUE(isVideoFile(name)) << name;
-    for (const char* name : {"a.png", "a.avi", "mp4", "a.mp4.json"}) EXPECT_FALSE(isVideoFile(name)) << name;
+    for (const char* name : {"a.gif", "a.WEBP", "b.mp4", "c.Webm"})
+        EXPECT_TRUE(isVideoFile(name)) << name;
+    for (const char* name : {"a.png", "a.avi", "mp4", "a.mp4.json"})
+        EXPECT_FALSE(isVideoFile(name)) << name;
 }
 
 TEST(Video, ReadingWhatIsNoVideoIsBadInput) {

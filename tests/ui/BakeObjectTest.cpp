@@ -23,7 +23,6 @@
 namespace marbler::ui {
 namespace {
 
-
 class BakeObjectTest : public ::testing::Test {
 protected:
     void SetUp() override {

@@ -70,13 +70,15 @@ TEST_F(ColourwaysUiTest, BreedingInTheModeKeepsTheStructure) {
     model().setSelected(3, true);
     ASSERT_TRUE(mWindow->operatorAction(GeneticOperator::Alter)->isEnabled());
     mWindow->operatorAction(GeneticOperator::Alter)->trigger();
-    for (int c = 0; c < CellCount; ++c) EXPECT_TRUE(sameStructure(*model().cell(c), design)) << "alter, cell " << c;
+    for (int c = 0; c < CellCount; ++c)
+        EXPECT_TRUE(sameStructure(*model().cell(c), design)) << "alter, cell " << c;
     model().setSelected(5, true);
     EXPECT_FALSE(mWindow->operatorAction(GeneticOperator::Swap)->isEnabled());
     ASSERT_TRUE(mWindow->operatorAction(GeneticOperator::Recombine)->isEnabled());
     EXPECT_TRUE(mWindow->applyOperator(GeneticOperator::Recombine));
     EXPECT_FALSE(mWindow->applyOperator(GeneticOperator::Swap));
-    for (int c = 0; c < CellCount; ++c) EXPECT_TRUE(sameStructure(*model().cell(c), design)) << "recombine, cell " << c;
+    for (int c = 0; c < CellCount; ++c)
+        EXPECT_TRUE(sameStructure(*model().cell(c), design)) << "recombine, cell " << c;
 
     // Leaving the mode: ordinary breeding, which moves the strokes.
     mWindow->setColourwaysMode(false);
@@ -85,7 +87,8 @@ TEST_F(ColourwaysUiTest, BreedingInTheModeKeepsTheStructure) {
     model().setSelected(0, true);
     ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Alter));
     int moved = 0;
-    for (int c = 1; c < CellCount; ++c) moved += model().cell(c)->operations != design.operations;
+    for (int c = 1; c < CellCount; ++c)
+        moved += model().cell(c)->operations != design.operations;
     EXPECT_GT(moved, 0);
 }
 
@@ -99,7 +102,8 @@ TEST_F(ColourwaysUiTest, TheSessionKeepsAColourwayGeneration) {
     const SavedSession saved = loadSession(file);
     ASSERT_EQ(saved.history.size(), model().history().size());
     const Generation& back = saved.history[std::size_t(saved.current)];
-    for (int c = 0; c < CellCount; ++c) EXPECT_EQ(*back.cells[std::size_t(c)], *model().cell(c)) << "cell " << c;
+    for (int c = 0; c < CellCount; ++c)
+        EXPECT_EQ(*back.cells[std::size_t(c)], *model().cell(c)) << "cell " << c;
 }
 
 TEST_F(ColourwaysUiTest, ExportsTheSheetThroughTheFileQuestion) {
@@ -123,7 +127,8 @@ TEST_F(ColourwaysUiTest, ExportsTheSheetThroughTheFileQuestion) {
     EXPECT_EQ(mWindow->savedFileNotice()->file(), file);
 
     std::vector<Genome> designs;
-    for (int c = 0; c < CellCount; ++c) designs.push_back(*model().cell(c));
+    for (int c = 0; c < CellCount; ++c)
+        designs.push_back(*model().cell(c));
     SheetSettings settings;
     settings.cellWidth = 40;
     settings.gap = 4;
@@ -135,7 +140,8 @@ TEST_F(ColourwaysUiTest, ExportsTheSheetThroughTheFileQuestion) {
     ASSERT_EQ(image.width(), expected.width);
     ASSERT_EQ(image.height(), expected.height);
     for (int y = 0; y < image.height(); ++y)
-        ASSERT_EQ(std::memcmp(image.constScanLine(y), expected.row(y), std::size_t(expected.width) * 3), 0) << "row " << y;
+        ASSERT_EQ(std::memcmp(image.constScanLine(y), expected.row(y), std::size_t(expected.width) * 3), 0)
+            << "row " << y;
 
     // Cancelled by the question: nothing is started.
     setSaveFileAsker([](QWidget*, const QString&, const QString&, const QString&) { return QString(); });

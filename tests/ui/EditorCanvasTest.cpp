@@ -3,6 +3,7 @@
 // at any zoom, a solid's chosen cross-section) and the tool panel (ToolOptions.h).
 
 #include "editor/EditorCanvas.h"
+#include "WaitFor.h"
 #include "editor/Gestures.h"
 #include "editor/ToolOptions.h"
 #include "marbler/CpuRenderer.h"
@@ -10,14 +11,13 @@
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
 #include "ui/RenderService.h"
-#include "WaitFor.h"
 
 #include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QTest>
 
-#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
@@ -58,7 +58,9 @@ void expectValid(const Genome& design, const std::vector<Operation>& ops, const 
     EXPECT_NO_THROW(validateGenome(withSteps(design, ops), what)) << what;
 }
 
-double dist(glm::dvec3 a, glm::dvec3 b) { return glm::length(a - b); }
+double dist(glm::dvec3 a, glm::dvec3 b) {
+    return glm::length(a - b);
+}
 
 TEST(GesturesTest, EachFlatToolMakesWhatItsDragSays) {
     const Genome g = flatDesign();
@@ -103,8 +105,10 @@ TEST(GesturesTest, EachFlatToolMakesWhatItsDragSays) {
 
     auto rings = gestureSteps(EditorTool::DropRings, s, a, b, g);
     ASSERT_EQ(int(rings.size()), s.patternCount);
-    for (const Operation& op : rings) EXPECT_EQ(op.center, a);
-    EXPECT_NEAR(rings[0].radius * std::sqrt(double(s.patternCount)), 500.0, 1e-9) << "the last ring ends at the drag";
+    for (const Operation& op : rings)
+        EXPECT_EQ(op.center, a);
+    EXPECT_NEAR(rings[0].radius * std::sqrt(double(s.patternCount)), 500.0, 1e-9)
+        << "the last ring ends at the drag";
     EXPECT_NE(rings[0].color, rings[1].color);
 
     auto scatter = gestureSteps(EditorTool::DropScatter, s, a, b, g);
@@ -163,7 +167,9 @@ TEST(GesturesTest, EachFlatToolMakesWhatItsDragSays) {
     EXPECT_TRUE(gestureSteps(EditorTool::Pick, s, a, b, g).empty());
     for (EditorTool tool : AllTools) {
         auto ops = gestureSteps(tool, s, a, b, g);
-        if (tool != EditorTool::Pick) { EXPECT_FALSE(ops.empty()) << toolId(tool); }
+        if (tool != EditorTool::Pick) {
+            EXPECT_FALSE(ops.empty()) << toolId(tool);
+        }
         expectValid(g, ops, "flat gesture");
         expectValid(g, gestureSteps(tool, s, a, a, g), "flat click");
     }
@@ -194,7 +200,8 @@ TEST(GesturesTest, SolidToolsWorkInTheSectionPlane) {
     ASSERT_EQ(circle.size(), 1u);
     EXPECT_NEAR(dist(circle[0].axis, {0, 1, 0}), 0.0, 1e-12);
     auto scatter = gestureSteps(EditorTool::DropScatter, s, a, b, g, 1);
-    for (const Operation& op : scatter) EXPECT_DOUBLE_EQ(op.center.y, 200.0) << "drops stay on the plane";
+    for (const Operation& op : scatter)
+        EXPECT_DOUBLE_EQ(op.center.y, 200.0) << "drops stay on the plane";
     auto rings = gestureSteps(EditorTool::DropRings, s, a, b, g, 1);
     ASSERT_FALSE(rings.empty());
     EXPECT_NEAR(rings[0].radius * std::cbrt(double(rings.size())), 300.0, 1e-9) << "the volume law";
@@ -229,7 +236,9 @@ TEST(ToolOptionsTest, ShowsTheToolsRowsAndEditsItsSettings) {
         EXPECT_FALSE(toolTip(tool).isEmpty());
         EXPECT_FALSE(toolShortcut(tool).isEmpty());
         for (EditorTool other : AllTools)
-            if (other != tool) { EXPECT_NE(toolShortcut(tool), toolShortcut(other)); }
+            if (other != tool) {
+                EXPECT_NE(toolShortcut(tool), toolShortcut(other));
+            }
     }
 }
 
@@ -241,9 +250,10 @@ TEST(RenderServiceSliceTest, RendersTheCrossSectionAsked) {
     g.initial[0].center = {300, 200, 100};
     RenderService service(RenderService::Backend::Cpu);
     QImage final;
-    QObject::connect(&service, &RenderService::rendered, [&](std::uint64_t, const QImage& image, bool isFinal) {
-        if (isFinal) final = image;
-    });
+    QObject::connect(&service, &RenderService::rendered,
+                     [&](std::uint64_t, const QImage& image, bool isFinal) {
+                         if (isFinal) final = image;
+                     });
     RenderRequest request;
     request.genome = g;
     request.size = QSize(256, 256);
@@ -390,8 +400,9 @@ TEST_F(CanvasTest, HandlesMoveTheSelectedStep) {
     const Genome g = flatDesign();
     mCanvas->setDesign(g);
     std::vector<std::tuple<std::size_t, Operation, bool>> moved;
-    QObject::connect(mCanvas.get(), &EditorCanvas::handleDragged,
-                     [&](std::size_t i, const Operation& op, bool final) { moved.emplace_back(i, op, final); });
+    QObject::connect(
+        mCanvas.get(), &EditorCanvas::handleDragged,
+        [&](std::size_t i, const Operation& op, bool final) { moved.emplace_back(i, op, final); });
     auto handle = [&](EditorCanvas::Handle which) {
         for (const auto& [h, point] : mCanvas->handlePoints())
             if (h == which) return point.toPoint();
@@ -463,7 +474,9 @@ TEST_F(CanvasTest, PickNamesTheInkAndItsStep) {
     EXPECT_EQ(picked[0].first, 2);
     EXPECT_EQ(picked[0].second, std::optional<std::size_t>(1));
     EXPECT_EQ(picked[1].first, firstColor);
-    if (firstColor == 1) { EXPECT_EQ(picked[1].second, std::optional<std::size_t>(0)); }
+    if (firstColor == 1) {
+        EXPECT_EQ(picked[1].second, std::optional<std::size_t>(0));
+    }
     EXPECT_EQ(picked[2].first, -1) << "the bath";
     EXPECT_FALSE(picked[2].second);
     EXPECT_TRUE(mMade.empty());

@@ -4,10 +4,10 @@
 // recovery (Recovery.h).
 
 #include "editor/EditorDocument.h"
+#include "WaitFor.h"
 #include "editor/Recovery.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
-#include "WaitFor.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -72,18 +72,22 @@ struct Snapshot {
 
 Snapshot snapshot(const EditorDocument& doc) {
     Snapshot s{doc.design(), doc.renderedDesign(), {}};
-    for (std::size_t i = 0; i < doc.stepCount(); ++i) s.muted.push_back(doc.isMuted(i));
+    for (std::size_t i = 0; i < doc.stepCount(); ++i)
+        s.muted.push_back(doc.isMuted(i));
     return s;
 }
 
 void expectSame(const Snapshot& a, const Snapshot& b, const std::string& where) {
-    EXPECT_TRUE(a.design == b.design) << where << ": design\n" << serializeGenome(a.design) << "\nvs\n"
+    EXPECT_TRUE(a.design == b.design) << where << ": design\n"
+                                      << serializeGenome(a.design) << "\nvs\n"
                                       << serializeGenome(b.design);
     EXPECT_TRUE(a.rendered == b.rendered) << where << ": rendered design";
     EXPECT_EQ(a.muted, b.muted) << where << ": muted flags";
 }
 
-std::string text(const QString& s) { return s.toStdString(); }
+std::string text(const QString& s) {
+    return s.toStdString();
+}
 
 } // namespace
 
@@ -135,7 +139,8 @@ TEST(EditorDocument, UndoAndRedoRestoreTheExactGenomeAcrossEveryKindOfEdit) {
     record();
     doc.setMuted(8, true);
     record();
-    EXPECT_EQ(doc.renderedDesign().initial.size() + doc.renderedDesign().operations.size(), doc.stepCount() - 2);
+    EXPECT_EQ(doc.renderedDesign().initial.size() + doc.renderedDesign().operations.size(),
+              doc.stepCount() - 2);
     doc.setPaletteColor(1, {0x11, 0x22, 0x33});
     record();
     EXPECT_EQ(doc.addPaletteColor({0xaa, 0, 0}), 3);
@@ -262,13 +267,16 @@ TEST(EditorDocument, ADragMergesIntoOneUndoStep) {
     EXPECT_EQ(stack.count(), 4);
 
     // A palette drag and a background drag merge the same way.
-    for (std::uint8_t r : {0x20, 0x40, 0x60}) doc.setPaletteColor(0, {r, 0, 0}, 9);
+    for (std::uint8_t r : {0x20, 0x40, 0x60})
+        doc.setPaletteColor(0, {r, 0, 0}, 9);
     EXPECT_EQ(stack.count(), 5);
     EXPECT_EQ(text(stack.text(4)), "Ink 1: #1f3b5a → #600000");
-    for (std::uint8_t g : {0x20, 0x40}) doc.setBackground({0, g, 0}, 9);
+    for (std::uint8_t g : {0x20, 0x40})
+        doc.setBackground({0, g, 0}, 9);
     EXPECT_EQ(stack.count(), 6) << "the same id on another target does not merge";
 
-    while (stack.canUndo()) stack.undo();
+    while (stack.canUndo())
+        stack.undo();
     EXPECT_TRUE(doc.design() == original);
 }
 
@@ -278,7 +286,8 @@ TEST(EditorDocument, ADragThatEndsWhereItBeganLeavesNoStepAndNoChange) {
     EditorDocument doc(original);
     QUndoStack& stack = *doc.undoStack();
     const Color first = original.palette[0];
-    for (Color c : {Color{0x20, 0, 0}, Color{0x40, 0, 0}, first}) doc.setPaletteColor(0, c, 11);
+    for (Color c : {Color{0x20, 0, 0}, Color{0x40, 0, 0}, first})
+        doc.setPaletteColor(0, c, 11);
     EXPECT_EQ(stack.count(), 0) << (stack.count() ? text(stack.text(0)) : std::string());
     EXPECT_FALSE(doc.isModified());
     EXPECT_TRUE(doc.design() == original);
@@ -315,7 +324,8 @@ TEST(EditorDocument, MutedStepsRoundTripThroughAFile) {
     EXPECT_TRUE(reopened.design() == doc.design()) << serializeGenome(reopened.design());
     EXPECT_TRUE(reopened.renderedDesign() == doc.renderedDesign());
     EXPECT_TRUE(reopened.fileGenome() == file);
-    for (std::size_t i = 0; i < doc.stepCount(); ++i) EXPECT_EQ(reopened.isMuted(i), doc.isMuted(i)) << "step " << i;
+    for (std::size_t i = 0; i < doc.stepCount(); ++i)
+        EXPECT_EQ(reopened.isMuted(i), doc.isMuted(i)) << "step " << i;
     EXPECT_FALSE(reopened.isModified());
     EXPECT_EQ(reopened.undoStack()->count(), 0);
 }
@@ -327,7 +337,8 @@ TEST(EditorDocument, SaveIsAtomicAndAFailedSaveChangesNothing) {
     const QString path = dir.filePath(QStringLiteral("design.marble.json"));
     QString error;
     ASSERT_TRUE(doc.saveAs(path, &error)) << text(error);
-    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("design.marble.json")})
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+              QStringList{QStringLiteral("design.marble.json")})
         << "no temporary left";
     QFile f(path);
     ASSERT_TRUE(f.open(QIODevice::ReadOnly));
@@ -357,7 +368,8 @@ TEST(EditorDocument, SaveIsAtomicAndAFailedSaveChangesNothing) {
     error.clear();
     EXPECT_FALSE(doc.saveAs(dir.filePath(QStringLiteral("folder")), &error));
     expectUnchanged("folder target");
-    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("design.marble.json")});
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+              QStringList{QStringLiteral("design.marble.json")});
     // A design the format refuses is not written.
     Operation bad = doc.step(0);
     bad.color = 9;
@@ -436,7 +448,8 @@ TEST(EditorRecovery, TheRecoveredDesignIsTheOneBeingEdited) {
     EditorDocument recovered(found[0].design);
     EXPECT_TRUE(recovered.design() == doc.design()) << serializeGenome(recovered.design());
     EXPECT_TRUE(recovered.renderedDesign() == doc.renderedDesign());
-    for (std::size_t i = 0; i < doc.stepCount(); ++i) EXPECT_EQ(recovered.isMuted(i), doc.isMuted(i)) << "step " << i;
+    for (std::size_t i = 0; i < doc.stepCount(); ++i)
+        EXPECT_EQ(recovered.isMuted(i), doc.isMuted(i)) << "step " << i;
     recovered.markModified();
     EXPECT_TRUE(recovered.isModified()) << "its changes never reached the file";
 
@@ -461,7 +474,8 @@ TEST(EditorRecovery, ACorruptRecoveryFileIsSkipped) {
         f.write(bytes);
     };
     writeText(QStringLiteral("a.recovery.json"), "{ not json");
-    writeText(QStringLiteral("b.recovery.json"), R"({"format": "marbler-recovery", "genome": {"format": "marbler-genome"}})");
+    writeText(QStringLiteral("b.recovery.json"),
+              R"({"format": "marbler-recovery", "genome": {"format": "marbler-genome"}})");
     writeText(QStringLiteral("c.recovery.json"), R"([1, 2, 3])");
     writeText(QStringLiteral("d.recovery.json"), "");
     QStringList warnings;
@@ -470,7 +484,8 @@ TEST(EditorRecovery, ACorruptRecoveryFileIsSkipped) {
     EXPECT_TRUE(found[0].design == doc.fileGenome());
     EXPECT_EQ(warnings.size(), 4) << text(warnings.join('\n'));
     EXPECT_TRUE(warnings.join('\n').contains(QStringLiteral("a.recovery.json")));
-    EXPECT_TRUE(QFileInfo::exists(QDir(folder).filePath(QStringLiteral("a.recovery.json")))) << "left for the user";
+    EXPECT_TRUE(QFileInfo::exists(QDir(folder).filePath(QStringLiteral("a.recovery.json"))))
+        << "left for the user";
     EXPECT_TRUE(pendingRecoveries(QDir(folder).filePath(QStringLiteral("missing"))).empty());
 }
 
@@ -520,10 +535,12 @@ TEST(EditorDocument, AFoldedGroupIsMutedAsOneEdit) {
     EditorDocument doc(sample());
     doc.setMuted(1, 4, true);
     EXPECT_EQ(doc.undoStack()->count(), 1);
-    for (std::size_t i = 0; i < doc.stepCount(); ++i) EXPECT_EQ(doc.isMuted(i), i >= 1 && i <= 4) << i;
+    for (std::size_t i = 0; i < doc.stepCount(); ++i)
+        EXPECT_EQ(doc.isMuted(i), i >= 1 && i <= 4) << i;
     EXPECT_EQ(text(doc.undoStack()->text(0)), "Mute steps 2–5");
     doc.undoStack()->undo();
-    for (std::size_t i = 0; i < doc.stepCount(); ++i) EXPECT_FALSE(doc.isMuted(i)) << i;
+    for (std::size_t i = 0; i < doc.stepCount(); ++i)
+        EXPECT_FALSE(doc.isMuted(i)) << i;
     doc.setMuted(3, 9, true); // past the end: nothing
     EXPECT_EQ(doc.undoStack()->count(), 1);
 }

@@ -68,7 +68,9 @@ bool validStep(const Genome& design, const Operation& op, std::string* why = nul
     }
 }
 
-QString keyOf(const ParamSpec& spec) { return QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size())); }
+QString keyOf(const ParamSpec& spec) {
+    return QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size()));
+}
 
 /// Whether `a` and `b` hold the same value of `spec`.
 bool sameParam(const ParamSpec& spec, const Operation& a, const Operation& b, int dimension) {
@@ -93,7 +95,8 @@ void changeWidget(ParamForm& form, const ParamSpec& spec, const Operation& op) {
         auto* text = form.findChild<QLineEdit*>(QStringLiteral("edit-%1-0").arg(key));
         ASSERT_NE(text, nullptr);
         QStringList words;
-        for (double t : op.teeth) words << QString::number(t * 0.5);
+        for (double t : op.teeth)
+            words << QString::number(t * 0.5);
         text->setText(words.join(QStringLiteral(", ")));
         emit text->editingFinished();
         return;
@@ -144,9 +147,10 @@ TEST(ParamForm, OneWidgetPerParameterAndEachEditChangesExactlyThatParameter) {
             ASSERT_TRUE(validStep(design, original));
             ParamForm form;
             std::vector<Edit> edits;
-            QObject::connect(&form, &ParamForm::edited, [&](const Operation& op, const QString& key, bool dragging) {
-                edits.push_back({op, key, dragging});
-            });
+            QObject::connect(&form, &ParamForm::edited,
+                             [&](const Operation& op, const QString& key, bool dragging) {
+                                 edits.push_back({op, key, dragging});
+                             });
             form.setStep(original, dimension, design);
             const auto params = tool.params(dimension);
             EXPECT_EQ(form.findChildren<QWidget*>(QRegularExpression(QStringLiteral("^param-"))).size(),
@@ -155,7 +159,8 @@ TEST(ParamForm, OneWidgetPerParameterAndEachEditChangesExactlyThatParameter) {
                 SCOPED_TRACE(std::string(spec.key));
                 QWidget* box = form.findChild<QWidget*>(QStringLiteral("param-") + keyOf(spec));
                 ASSERT_NE(box, nullptr);
-                EXPECT_TRUE(box->toolTip().startsWith(QString::fromUtf8(spec.help.data(), qsizetype(spec.help.size()))));
+                EXPECT_TRUE(box->toolTip().startsWith(
+                    QString::fromUtf8(spec.help.data(), qsizetype(spec.help.size()))));
                 edits.clear();
                 form.setStep(original, dimension, design);
                 changeWidget(form, spec, original);
@@ -176,9 +181,11 @@ TEST(ParamForm, OneWidgetPerParameterAndEachEditChangesExactlyThatParameter) {
                 EXPECT_FALSE(sameParam(spec, e.op, original, dimension)) << "the edit changed nothing";
                 for (const ParamSpec& other : params) {
                     // Turning a direction turns its normal with it.
-                    const bool turned = spec.field == ParamField::Direction && other.field == ParamField::Normal;
+                    const bool turned =
+                        spec.field == ParamField::Direction && other.field == ParamField::Normal;
                     if (&other != &spec && !turned) {
-                        EXPECT_TRUE(sameParam(other, e.op, original, dimension)) << "also changed " << other.key;
+                        EXPECT_TRUE(sameParam(other, e.op, original, dimension))
+                            << "also changed " << other.key;
                     }
                 }
             }
@@ -245,12 +252,14 @@ TEST(ParamForm, ASliderDragEmitsDraggingEditsThenAFinalOne) {
     slider->setValue(450);
     slider->setSliderDown(false);
     ASSERT_EQ(edits.size(), 4u);
-    for (std::size_t i = 0; i < 3; ++i) EXPECT_TRUE(edits[i].dragging) << i;
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_TRUE(edits[i].dragging) << i;
     EXPECT_FALSE(edits.back().dragging);
     EXPECT_LT(edits[0].op.radius, edits[1].op.radius);
     EXPECT_EQ(edits.back().op.radius, edits[2].op.radius);
     EXPECT_NE(edits.back().op.radius, drop.radius);
-    for (const Edit& e : edits) EXPECT_EQ(e.key, QStringLiteral("radius"));
+    for (const Edit& e : edits)
+        EXPECT_EQ(e.key, QStringLiteral("radius"));
 }
 
 TEST(StepList, KeysMenuChecksAndDragsAskForChanges) {
@@ -387,7 +396,8 @@ TEST(Timeline, ScrubsPlaysAndCompares) {
     ASSERT_GE(played.size(), 3u);
     EXPECT_EQ(played.front(), 0.0);
     EXPECT_EQ(played.back(), 3.0);
-    for (std::size_t i = 1; i < played.size(); ++i) EXPECT_LE(played[i - 1], played[i]);
+    for (std::size_t i = 1; i < played.size(); ++i)
+        EXPECT_LE(played[i - 1], played[i]);
     EXPECT_TRUE(timeline.atEnd());
 
     QSignalSpy compare(&timeline, &Timeline::compareChanged);
@@ -428,7 +438,8 @@ Genome animatedDesign() {
 /// The mean absolute difference of two RGB images of the same size, per channel.
 double meanDifference(const std::uint8_t* a, const std::uint8_t* b, std::size_t bytes) {
     double sum = 0;
-    for (std::size_t i = 0; i < bytes; ++i) sum += std::abs(int(a[i]) - int(b[i]));
+    for (std::size_t i = 0; i < bytes; ++i)
+        sum += std::abs(int(a[i]) - int(b[i]));
     return sum / double(bytes);
 }
 
@@ -498,7 +509,8 @@ TEST(AnimationExport, GifHoldsEveryFrameFromBathToDesign) {
     ASSERT_EQ(reader->height(), 40);
     std::vector<std::vector<std::uint8_t>> frames;
     std::vector<std::uint8_t> rgb;
-    while (reader->nextFrame(rgb)) frames.push_back(rgb);
+    while (reader->nextFrame(rgb))
+        frames.push_back(rgb);
     ASSERT_EQ(frames.size(), 5u);
     RenderSettings render;
     render.width = 48;
@@ -517,7 +529,8 @@ TEST(AnimationExport, CancelLeavesNoFile) {
     for (AnimationFormat format : {AnimationFormat::Gif, AnimationFormat::PngFrames}) {
         AnimationExportSettings settings;
         settings.format = format;
-        settings.path = dir.filePath(format == AnimationFormat::Gif ? QStringLiteral("long.gif") : QStringLiteral("long"));
+        settings.path = dir.filePath(format == AnimationFormat::Gif ? QStringLiteral("long.gif")
+                                                                    : QStringLiteral("long"));
         settings.width = 400;
         settings.height = 400;
         settings.frames = 2000;
@@ -530,8 +543,12 @@ TEST(AnimationExport, CancelLeavesNoFile) {
         MARBLER_WAIT(finished.count() == 1, 30000);
         EXPECT_FALSE(finished.last().at(0).toBool());
         EXPECT_TRUE(finished.last().at(1).toString().isEmpty()) << "a cancel is no error";
-        EXPECT_TRUE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden).isEmpty())
-            << QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden).join(' ').toStdString();
+        EXPECT_TRUE(
+            QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden).isEmpty())
+            << QDir(dir.path())
+                   .entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden)
+                   .join(' ')
+                   .toStdString();
     }
 }
 
@@ -574,9 +591,12 @@ TEST(AnimationExport, AFramesFolderMustBeNewOrEmptyAndTheDialogSaysWhatToWrite) 
     format->setCurrentIndex(format->findData(int(AnimationFormat::WebM)));
     path->setText(dir.filePath(QStringLiteral("typed")));
     EXPECT_EQ(dialog.settings().path, dir.filePath(QStringLiteral("typed.webm")));
-    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/b.GIF"), AnimationFormat::Gif), QStringLiteral("a/b.GIF"));
-    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/b.gif"), AnimationFormat::Mp4), QStringLiteral("a/b.gif.mp4"));
-    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/frames"), AnimationFormat::PngFrames), QStringLiteral("a/frames"));
+    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/b.GIF"), AnimationFormat::Gif),
+              QStringLiteral("a/b.GIF"));
+    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/b.gif"), AnimationFormat::Mp4),
+              QStringLiteral("a/b.gif.mp4"));
+    EXPECT_EQ(withAnimationExtension(QStringLiteral("a/frames"), AnimationFormat::PngFrames),
+              QStringLiteral("a/frames"));
 }
 
 namespace {

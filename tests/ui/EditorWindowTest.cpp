@@ -2,18 +2,18 @@
 // and redo from the keyboard, a past step edited from the form, the timeline's ends, the
 // unsaved-changes question, Save, Send to grid, and the recovery of an autosaved design.
 
+#include "editor/EditorWindow.h"
 #include "UiTestSupport.h"
 #include "WaitFor.h"
 #include "editor/EditorCanvas.h"
 #include "editor/EditorDocument.h"
-#include "editor/EditorWindow.h"
 #include "editor/ParamForm.h"
 #include "editor/Recovery.h"
 #include "editor/StepList.h"
 #include "editor/Timeline.h"
 #include "marbler/Generator.h"
-#include "marbler/GenomeImage.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/GenomeImage.h"
 #include "marbler/Growth.h"
 #include "marbler/Params.h"
 #include "ui/DesignDialog.h"
@@ -23,8 +23,8 @@
 #include <QAbstractButton>
 #include <QFileInfo>
 #include <QListWidget>
-#include <QStatusBar>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -40,7 +40,9 @@ using namespace marbler::ui;
 namespace {
 
 /// Genomes compared as their file text, so a failure shows what differs.
-std::string text(const Genome& g) { return serializeGenome(g); }
+std::string text(const Genome& g) {
+    return serializeGenome(g);
+}
 
 class EditorWindowTest : public test::EditorTest {
 protected:
@@ -51,7 +53,8 @@ protected:
         const QPoint b = canvas->toWidget(glm::dvec3(to, z)).toPoint();
         QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, a);
         if (a != b) {
-            for (int i = 1; i <= 4; ++i) QTest::mouseMove(canvas, a + (b - a) * i / 4);
+            for (int i = 1; i <= 4; ++i)
+                QTest::mouseMove(canvas, a + (b - a) * i / 4);
         }
         QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, b);
     }
@@ -228,7 +231,8 @@ TEST_F(EditorWindowTest, ARecoveredAutosaveIsTheDesignThatWasBeingEdited) {
     const QString folder = QFileInfo(second).absolutePath();
     delete back;
     const auto again = pendingRecoveries(folder);
-    const auto it = std::find_if(again.begin(), again.end(), [&](const RecoveredDesign& r) { return r.recoveryFile == second; });
+    const auto it = std::find_if(again.begin(), again.end(),
+                                 [&](const RecoveredDesign& r) { return r.recoveryFile == second; });
     ASSERT_NE(it, again.end());
     EXPECT_EQ(text(EditorDocument(it->design).design()), text(edited));
     EXPECT_TRUE(discardRecovery(it->recoveryFile));
@@ -283,7 +287,7 @@ TEST_F(EditorWindowTest, APickedInkIsTheInkTheToolsLay) {
     const double inside = 0.5 * editor->document()->step(0).radius; // off the centre's handle
     drag(canvas, {500.0, 400.0 + inside}, {500.0, 400.0 + inside});
     EXPECT_EQ(canvas->toolSettings().color, 0) << "the picked ink is the one the tools lay next; "
-                                                << editor->statusBar()->currentMessage().toStdString();
+                                               << editor->statusBar()->currentMessage().toStdString();
     editor->setTool(Tool::Drop);
     drag(canvas, {200.0, 200.0}, {200.0, 200.0});
     ASSERT_EQ(editor->document()->stepCount(), 2u);
@@ -295,7 +299,8 @@ TEST_F(EditorWindowTest, TheSelectedStepStaysInViewAsTheListIsResized) {
     // A long design opened on its last step: the step list shows that row, and still does when
     // the window (so the list's dock) is made smaller.
     Genome design = blankDesign(2);
-    for (int i = 0; i < 120; ++i) design.initial.push_back(defaultOperation(Tool::Drop, 2, {5.0 * i, 400.0, 0.0}));
+    for (int i = 0; i < 120; ++i)
+        design.initial.push_back(defaultOperation(Tool::Drop, 2, {5.0 * i, 400.0, 0.0}));
     auto* editor = new EditorWindow(design, mService.get(), {}, mWindow.get(), mRecovery.path());
     editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Discard);
     editor->selectStep(119);
@@ -304,7 +309,9 @@ TEST_F(EditorWindowTest, TheSelectedStepStaysInViewAsTheListIsResized) {
     ASSERT_TRUE(QTest::qWaitForWindowExposed(editor));
     QListWidget* view = editor->findChild<StepList*>()->list();
     ASSERT_EQ(view->currentRow(), 119);
-    const auto inView = [view] { return view->viewport()->rect().contains(view->visualItemRect(view->item(119)).center()); };
+    const auto inView = [view] {
+        return view->viewport()->rect().contains(view->visualItemRect(view->item(119)).center());
+    };
     MARBLER_WAIT(inView(), 5000);
     // The window made smaller under it (the row was centred in the taller list): still in view.
     editor->resize(1200, 420);

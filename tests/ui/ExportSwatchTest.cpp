@@ -50,7 +50,6 @@ struct ExportSwatchTest : test::WindowTest {
     QTemporaryDir dir;
 };
 
-
 /// The vertices of every path in an SVG written by toSvg ("M x yLx y x y …Z").
 std::size_t pathVertices(const std::string& svg) {
     std::size_t count = 0;
@@ -253,7 +252,8 @@ TEST_F(ExportSwatchTest, SwatchShowsTheWholeDesignTiledAndIsRemembered) {
     }
     // A solid has no repeat: the toggle is off and greyed out, whatever was remembered.
     QSettings().setValue(QStringLiteral("view/repeatSwatch"), true);
-    DesignDialog solid(test::loadExample("slate-block.marble.json"), mService.get(), QStringLiteral("sphere"));
+    DesignDialog solid(test::loadExample("slate-block.marble.json"), mService.get(),
+                       QStringLiteral("sphere"));
     EXPECT_FALSE(solid.repeatSwatch());
     EXPECT_FALSE(solid.findChild<QToolButton*>(QStringLiteral("repeatSwatch"))->isEnabled());
 }

@@ -19,12 +19,14 @@ namespace {
 
 class FamilyTest : public test::WindowTest {
 protected:
-    FamilyTest() : test::WindowTest(false) {}
+    FamilyTest()
+        : test::WindowTest(false) {}
     QComboBox* combo() const { return mWindow->findChild<QComboBox*>(QStringLiteral("familyCombo")); }
     std::set<std::string> familiesInGrid() {
         std::set<std::string> found;
         for (int c = 0; c < CellCount; ++c)
-            if (const Genome* g = model().cell(c)) found.insert(g->meta.value("family", std::string("(free)")));
+            if (const Genome* g = model().cell(c))
+                found.insert(g->meta.value("family", std::string("(free)")));
         return found;
     }
 };
@@ -34,7 +36,8 @@ protected:
 TEST_F(FamilyTest, AMixedPopulationShowsADifferentFamilyInEveryCell) {
     mWindow->setPopulationFamily(QString());
     mWindow->newRandomPopulation(2);
-    EXPECT_EQ(familiesInGrid().size(), std::size_t(CellCount)) << "nine cells, nine families (one may be free)";
+    EXPECT_EQ(familiesInGrid().size(), std::size_t(CellCount))
+        << "nine cells, nine families (one may be free)";
     for (const std::string& family : familiesInGrid()) {
         if (family == "(free)") continue;
         EXPECT_EQ(findFamily(family)->dimension, 2) << family;
@@ -54,7 +57,8 @@ TEST_F(FamilyTest, OneFamilyChosenInTheToolBarAndRemembered) {
     ASSERT_NE(families, nullptr);
     mWindow->newRandomPopulation(2); // the kind box now says flat
     int flat = 0;
-    for (const Family& f : allFamilies()) flat += f.dimension == 2;
+    for (const Family& f : allFamilies())
+        flat += f.dimension == 2;
     EXPECT_EQ(families->count(), flat + 1) << "Mixed families and every flat family";
     mWindow->setPopulationFamily(QStringLiteral("peacock"));
     EXPECT_EQ(mWindow->populationFamily(), QStringLiteral("peacock"));

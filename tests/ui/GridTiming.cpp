@@ -58,7 +58,8 @@ Genome designWithOperations(std::uint64_t seed, std::size_t count, int dimension
 int timeZoom(int steps, int side) {
     RenderService service;
     WorkbenchWindow window(&service);
-    const std::vector<int> cells = window.model()->placeDesigns({designWithOperations(7, 100, 2)}, QStringLiteral("timing"));
+    const std::vector<int> cells =
+        window.model()->placeDesigns({designWithOperations(7, 100, 2)}, QStringLiteral("timing"));
     DesignDialog* dialog = cells.empty() ? nullptr : window.openDesign(cells.front());
     if (!dialog) return 1;
     dialog->canvas()->setFixedSize(side, side);
@@ -67,8 +68,10 @@ int timeZoom(int steps, int side) {
     clock.start();
     const auto waitFinal = [&] {
         while (!dialog->imageIsFinal())
-            if (clock.elapsed() > 120000) return false;
-            else QApplication::processEvents(QEventLoop::AllEvents, 5);
+            if (clock.elapsed() > 120000)
+                return false;
+            else
+                QApplication::processEvents(QEventLoop::AllEvents, 5);
         return true;
     };
     if (!waitFinal()) return 1;
@@ -80,7 +83,8 @@ int timeZoom(int steps, int side) {
         const double standIn = double(clock.nsecsElapsed()) / 1e6;
         if (!waitFinal()) return 1;
         times.push_back(double(clock.nsecsElapsed()) / 1e6);
-        std::printf("zoom %s: stand-in %.1f ms, sharp %.1f ms\n", qPrintable(dialog->zoomText()), standIn, times.back());
+        std::printf("zoom %s: stand-in %.1f ms, sharp %.1f ms\n", qPrintable(dialog->zoomText()), standIn,
+                    times.back());
     }
     std::sort(times.begin(), times.end());
     std::printf("median: sharp %.1f ms after a zoom step\n", times[times.size() / 2]);
@@ -96,7 +100,8 @@ int main(int argc, char** argv) {
         QStringLiteral("MarblerTiming-%1").arg(QCoreApplication::applicationPid()));
     QApplication::setApplicationName(QStringLiteral("MarblerTiming"));
     if (argc > 1 && std::string(argv[1]) == "zoom") {
-        const int status = timeZoom(argc > 2 ? std::max(1, std::atoi(argv[2])) : 8, argc > 3 ? std::atoi(argv[3]) : 900);
+        const int status =
+            timeZoom(argc > 2 ? std::max(1, std::atoi(argv[2])) : 8, argc > 3 ? std::atoi(argv[3]) : 900);
         QSettings().clear();
         return status;
     }

@@ -5,6 +5,8 @@
 
 #include "TestUtil.h"
 
+#include "UiTestSupport.h"
+#include "WaitFor.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/ImageFormats.h"
@@ -17,8 +19,6 @@
 #include "ui/RenderService.h"
 #include "ui/SavedFiles.h"
 #include "ui/WorkbenchWindow.h"
-#include "UiTestSupport.h"
-#include "WaitFor.h"
 
 #include <QAction>
 #include <QApplication>
@@ -26,8 +26,8 @@
 #include <QDialog>
 #include <QDir>
 #include <QDoubleSpinBox>
-#include <QFileInfo>
 #include <QFile>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
@@ -138,7 +138,8 @@ TEST_F(HelpTest, SavedGenomeShowsItsPathAndShowInFolderOpensItsFolder) {
 
     EXPECT_TRUE(notice->isVisible());
     EXPECT_EQ(notice->file(), QFileInfo(file).absoluteFilePath());
-    EXPECT_TRUE(notice->pathLabel()->text().contains(QDir::toNativeSeparators(QFileInfo(file).absoluteFilePath())))
+    EXPECT_TRUE(
+        notice->pathLabel()->text().contains(QDir::toNativeSeparators(QFileInfo(file).absoluteFilePath())))
         << notice->pathLabel()->text().toStdString();
     EXPECT_TRUE(notice->isVisibleTo(mWindow->statusBar()));
 
@@ -158,7 +159,8 @@ TEST_F(HelpTest, SavedGenomeShowsItsPathAndShowInFolderOpensItsFolder) {
 }
 
 TEST_F(HelpTest, FileNamesOfferedAreTheDesignsNameMadeSafe) {
-    EXPECT_EQ(safeFileName(QStringLiteral("Slate block: stones / a \"vortex\"?")), QStringLiteral("Slate block stones a vortex"));
+    EXPECT_EQ(safeFileName(QStringLiteral("Slate block: stones / a \"vortex\"?")),
+              QStringLiteral("Slate block stones a vortex"));
     EXPECT_EQ(safeFileName(QStringLiteral("Cobalt Tide (g3 #7)")), QStringLiteral("Cobalt Tide (g3 #7)"));
     EXPECT_EQ(safeFileName(QStringLiteral("..hidden. ")), QStringLiteral("hidden"));
     EXPECT_EQ(safeFileName(QStringLiteral("<>|*")), QString());
@@ -174,11 +176,13 @@ TEST_F(HelpTest, FileNamesOfferedAreTheDesignsNameMadeSafe) {
         return chosen;
     });
     const QString written = saveGenomeWithDialog(mWindow.get(), slate);
-    EXPECT_EQ(offered, QDir(mFiles.path()).filePath(QStringLiteral(
-                           "Slate block stones combed twice, egg-crate wave, a sphere stroke and a tilted vortex.marble.json")));
+    EXPECT_EQ(offered, QDir(mFiles.path())
+                           .filePath(QStringLiteral("Slate block stones combed twice, egg-crate wave, a "
+                                                    "sphere stroke and a tilted vortex.marble.json")));
     EXPECT_EQ(written, chosen + QStringLiteral(".marble.json"));
     EXPECT_EQ(loadGenome(written.toStdString()), slate);
-    EXPECT_EQ(QSettings().value(QStringLiteral("files/saveDir")).toString(), mFiles.filePath(QStringLiteral("sub")));
+    EXPECT_EQ(QSettings().value(QStringLiteral("files/saveDir")).toString(),
+              mFiles.filePath(QStringLiteral("sub")));
 
     // A design without a name is offered under its short id.
     Genome unnamed = slate;
@@ -190,16 +194,19 @@ TEST_F(HelpTest, FileNamesOfferedAreTheDesignsNameMadeSafe) {
 TEST_F(HelpTest, ExportOffersTheDesignsNameInTheLastFolderAndFormat) {
     Errors errors;
     showWindow();
-    model().placeDesigns({loadGenome(example("five-stones.marble.json").toStdString())}, QStringLiteral("Opened"));
+    model().placeDesigns({loadGenome(example("five-stones.marble.json").toStdString())},
+                         QStringLiteral("Opened"));
     const int cell = 0;
     ASSERT_EQ(lineageOf(*model().cell(cell)).name, QStringLiteral("Five stones, combed and swirled"));
     DesignDialog* dialog = mWindow->openDesign(cell);
     ASSERT_NE(dialog, nullptr);
     // The first time: PNG, in the current folder.
-    EXPECT_EQ(dialog->suggestedExportFile(), QDir::current().filePath(QStringLiteral("Five stones, combed and swirled.png")));
+    EXPECT_EQ(dialog->suggestedExportFile(),
+              QDir::current().filePath(QStringLiteral("Five stones, combed and swirled.png")));
     QSettings().setValue(QStringLiteral("files/exportDir"), mFiles.path());
     QSettings().setValue(QStringLiteral("files/exportExtension"), QStringLiteral(".tif"));
-    EXPECT_EQ(dialog->suggestedExportFile(), QDir(mFiles.path()).filePath(QStringLiteral("Five stones, combed and swirled.tif")));
+    EXPECT_EQ(dialog->suggestedExportFile(),
+              QDir(mFiles.path()).filePath(QStringLiteral("Five stones, combed and swirled.tif")));
 
     // The whole way through the Export button: settings accepted at a small size, a name typed
     // without a format; the format offered is used, and folder and format are remembered.
@@ -249,7 +256,8 @@ TEST_F(HelpTest, F1OpensTheGuideWhichListsEveryShortcutOfTheWindow) {
     EXPECT_EQ(mWindow->guideAction()->shortcut(), QKeySequence(QKeySequence::HelpContents));
     QTest::keyClick(mWindow.get(), Qt::Key_F1);
     QDialog* guide = nullptr;
-    MARBLER_WAIT((guide = mWindow->findChild<QDialog*>(QStringLiteral("guideDialog"))) && guide->isVisible(), 5000);
+    MARBLER_WAIT((guide = mWindow->findChild<QDialog*>(QStringLiteral("guideDialog"))) && guide->isVisible(),
+                 5000);
     auto* browser = guide->findChild<QTextBrowser*>(QStringLiteral("guideBrowser"));
     ASSERT_NE(browser, nullptr);
     const QString text = browser->toPlainText();
@@ -366,7 +374,8 @@ TEST_F(HelpTest, StatusBarSpeaksOfTheTask) {
     // The generation's summary stays under passing messages.
     auto* generation = mWindow->findChild<QLabel*>(QStringLiteral("generationLabel"));
     ASSERT_NE(generation, nullptr);
-    EXPECT_TRUE(generation->text().startsWith(QStringLiteral("Generation 2: Alter"))) << generation->text().toStdString();
+    EXPECT_TRUE(generation->text().startsWith(QStringLiteral("Generation 2: Alter")))
+        << generation->text().toStdString();
 }
 
 // Opening designs into the grid.
@@ -510,7 +519,8 @@ TEST_F(HelpTest, FlatDesignIntoSolidGridStartsAGenerationOfItsKind) {
     EXPECT_TRUE(mWindow->operatorAction(GeneticOperator::Recombine)->isEnabled());
     EXPECT_TRUE(mWindow->operatorAction(GeneticOperator::Swap)->isEnabled());
     ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Swap));
-    for (int i = 0; i < CellCount; ++i) EXPECT_EQ(model().cell(i)->dimension, 2);
+    for (int i = 0; i < CellCount; ++i)
+        EXPECT_EQ(model().cell(i)->dimension, 2);
 
     // Back through the flat generations to the solid grid, intact.
     model().goTo(int(generations) - 1);
@@ -521,7 +531,8 @@ TEST_F(HelpTest, FlatDesignIntoSolidGridStartsAGenerationOfItsKind) {
     // A new generation grown from the solid grid (a branch beside the flat ones: history is a tree).
     EXPECT_EQ(model().current().parent, int(generations) - 1);
     ASSERT_EQ(errors.messages.size(), 1);
-    EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("five-stones.marble.json"))) << errors.messages.front().toStdString();
+    EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("five-stones.marble.json")))
+        << errors.messages.front().toStdString();
     for (int i = 0; i < CellCount; ++i)
         if (model().cell(i)) {
             EXPECT_EQ(model().cell(i)->dimension, 3);
@@ -533,7 +544,8 @@ TEST_F(HelpTest, DisabledOperatorsSayWhy) {
     const auto tip = [this](Op op) { return mWindow->operatorAction(op)->toolTip(); };
     for (Op op : {Op::Alter, Op::Recombine, Op::Swap, Op::Reinit}) {
         EXPECT_FALSE(mWindow->operatorAction(op)->isEnabled());
-        EXPECT_TRUE(tip(op).startsWith(operatorLabel(op) + QStringLiteral(" needs"))) << tip(op).toStdString();
+        EXPECT_TRUE(tip(op).startsWith(operatorLabel(op) + QStringLiteral(" needs")))
+            << tip(op).toStdString();
         EXPECT_TRUE(tip(op).contains(QStringLiteral("click"))) << tip(op).toStdString();
     }
     EXPECT_EQ(tip(Op::Recombine), QStringLiteral("Recombine needs 2 or more parents: click two designs"));
@@ -542,12 +554,15 @@ TEST_F(HelpTest, DisabledOperatorsSayWhy) {
     // The tooltips follow the selection as it changes.
     QTest::mouseClick(mWindow->cell(0), Qt::LeftButton);
     EXPECT_TRUE(mWindow->operatorAction(Op::Alter)->isEnabled());
-    EXPECT_TRUE(tip(Op::Alter).contains(QStringLiteral("Ctrl+1"))) << "the ready tooltip is back: " << tip(Op::Alter).toStdString();
-    EXPECT_EQ(tip(Op::Swap), QStringLiteral("Swap needs exactly 2 parents: 1 is picked, click another design"));
+    EXPECT_TRUE(tip(Op::Alter).contains(QStringLiteral("Ctrl+1")))
+        << "the ready tooltip is back: " << tip(Op::Alter).toStdString();
+    EXPECT_EQ(tip(Op::Swap),
+              QStringLiteral("Swap needs exactly 2 parents: 1 is picked, click another design"));
     QTest::mouseClick(mWindow->cell(1), Qt::LeftButton);
     QTest::mouseClick(mWindow->cell(2), Qt::LeftButton);
     EXPECT_EQ(tip(Op::Alter), QStringLiteral("Alter needs 1 parent: 3 are picked, click one to let it go"));
-    EXPECT_EQ(tip(Op::Swap), QStringLiteral("Swap needs exactly 2 parents: 3 are picked, click one to let it go"));
+    EXPECT_EQ(tip(Op::Swap),
+              QStringLiteral("Swap needs exactly 2 parents: 3 are picked, click one to let it go"));
     EXPECT_TRUE(mWindow->operatorAction(Op::Recombine)->isEnabled());
 
     // A grid that mixes kinds (an older session could hold one): Swap says so.
@@ -556,7 +571,8 @@ TEST_F(HelpTest, DisabledOperatorsSayWhy) {
     model().setSelected(0, true);
     model().setSelected(1, true);
     EXPECT_FALSE(mWindow->operatorAction(Op::Swap)->isEnabled());
-    EXPECT_TRUE(tip(Op::Swap).startsWith(QStringLiteral("Swap needs two parents of the same kind (flat/solid)")))
+    EXPECT_TRUE(
+        tip(Op::Swap).startsWith(QStringLiteral("Swap needs two parents of the same kind (flat/solid)")))
         << tip(Op::Swap).toStdString();
     EXPECT_TRUE(tip(Op::Recombine).contains(QStringLiteral("same kind"))) << tip(Op::Recombine).toStdString();
     // The status bar says the same when the operator is asked for anyway.
@@ -564,7 +580,8 @@ TEST_F(HelpTest, DisabledOperatorsSayWhy) {
     EXPECT_EQ(mWindow->statusBar()->currentMessage(), tip(Op::Swap));
 
     // Every design a parent: no room.
-    for (int i = 0; i < CellCount; ++i) model().setSelected(i, true);
+    for (int i = 0; i < CellCount; ++i)
+        model().setSelected(i, true);
     EXPECT_TRUE(tip(Op::Recombine).contains(QStringLiteral("no room"))) << tip(Op::Recombine).toStdString();
 }
 

@@ -3,6 +3,8 @@
 // the tree (and still reads version 1 lines), and the lineage dock shows the tree with
 // thumbnails rendered off the GUI thread.
 
+#include "UiTestSupport.h"
+#include "WaitFor.h"
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
@@ -11,8 +13,6 @@
 #include "ui/RenderService.h"
 #include "ui/Session.h"
 #include "ui/WorkbenchWindow.h"
-#include "UiTestSupport.h"
-#include "WaitFor.h"
 
 #include <QAction>
 #include <QApplication>
@@ -41,7 +41,8 @@ namespace {
 /// The genomes of the grid as text, for exact comparisons of whole generations.
 std::vector<std::string> snapshot(const PopulationModel& model) {
     std::vector<std::string> result;
-    for (int i = 0; i < CellCount; ++i) result.push_back(model.cell(i) ? serializeGenome(*model.cell(i)) : "");
+    for (int i = 0; i < CellCount; ++i)
+        result.push_back(model.cell(i) ? serializeGenome(*model.cell(i)) : "");
     return result;
 }
 
@@ -49,11 +50,12 @@ std::vector<std::string> snapshot(const PopulationModel& model) {
 std::vector<std::string> treeSnapshot(const std::vector<Generation>& history) {
     std::vector<std::string> result;
     for (const Generation& g : history) {
-        std::string text = std::to_string(g.parent) + "|" + std::to_string(g.number) + "|" + std::to_string(g.branch)
-                         + "|" + g.description.toStdString() + "|";
+        std::string text = std::to_string(g.parent) + "|" + std::to_string(g.number) + "|" +
+                           std::to_string(g.branch) + "|" + g.description.toStdString() + "|";
         for (int i = 0; i < CellCount; ++i) {
             text += g.selected[std::size_t(i)] ? "S" : "-";
-            text += g.cells[std::size_t(i)] ? serializeGenome(*g.cells[std::size_t(i)]) : std::string("(empty)");
+            text +=
+                g.cells[std::size_t(i)] ? serializeGenome(*g.cells[std::size_t(i)]) : std::string("(empty)");
         }
         result.push_back(text);
     }
@@ -66,7 +68,8 @@ bool iconHasDetail(const QIcon& icon, QRect area = {}) {
     if (area.isNull()) area = image.rect();
     std::set<QRgb> colours;
     for (int y = area.top(); y <= area.bottom(); ++y)
-        for (int x = area.left(); x <= area.right(); ++x) colours.insert(image.pixel(x, y));
+        for (int x = area.left(); x <= area.right(); ++x)
+            colours.insert(image.pixel(x, y));
     return colours.size() > 1;
 }
 
@@ -80,7 +83,8 @@ bool waitFor(const std::function<bool()>& condition, int timeoutMs = 5000) {
 QTreeWidgetItem* generationItem(QTreeWidget* tree, int generation) {
     for (QTreeWidgetItemIterator it(tree); *it; ++it) {
         const QVariant g = (*it)->data(0, WorkbenchWindow::LineageGenerationRole);
-        if (g.isValid() && g.toInt() == generation && !(*it)->data(0, WorkbenchWindow::LineageCellRole).isValid())
+        if (g.isValid() && g.toInt() == generation &&
+            !(*it)->data(0, WorkbenchWindow::LineageCellRole).isValid())
             return *it;
     }
     return nullptr;
@@ -106,7 +110,8 @@ void doubleClickItem(QTreeWidget* tree, QTreeWidgetItem* item) {
 /// The texts of column 0 of an item's children.
 QStringList childTexts(const QTreeWidgetItem* item) {
     QStringList texts;
-    for (int i = 0; i < item->childCount(); ++i) texts << item->child(i)->text(0);
+    for (int i = 0; i < item->childCount(); ++i)
+        texts << item->child(i)->text(0);
     return texts;
 }
 
@@ -134,7 +139,6 @@ protected:
         grids.push_back(snapshot(model()));
         ASSERT_EQ(model().history().size(), 5u);
     }
-
 };
 
 TEST_F(HistoryTreeTest, BreedingAfterBackKeepsTheOldBranch) {
@@ -189,7 +193,8 @@ TEST_F(HistoryTreeTest, BackForwardAndGoToAcrossBranchesRestoreExactDesigns) {
     EXPECT_EQ(m.generationLabel(3), QStringLiteral("3 (branch 2)"));
     EXPECT_EQ(m.generationLabel(4), QStringLiteral("2 (branch 3)"));
     for (std::size_t k = 0; k < grids.size(); ++k)
-        for (std::size_t j = 0; j < k; ++j) ASSERT_NE(grids[k], grids[j]) << k << " and " << j;
+        for (std::size_t j = 0; j < k; ++j)
+            ASSERT_NE(grids[k], grids[j]) << k << " and " << j;
 
     QAction* back = mWindow->backAction();
     QAction* forward = mWindow->forwardAction();
@@ -258,8 +263,9 @@ TEST_F(HistoryTreeTest, SessionRoundTripKeepsTheTree) {
 std::string sessionText(int version, const std::vector<std::string>& parents, int current = 0) {
     const std::string cells =
         "[" + serializeGenome(randomGenome(3, 2)) + ",null,null,null,null,null,null,null,null]";
-    std::string text = R"({"format":"marbler-session","version":)" + std::to_string(version)
-                     + R"(,"seed":5,"dimension":2,"current":)" + std::to_string(current) + R"(,"generations":[)";
+    std::string text = R"({"format":"marbler-session","version":)" + std::to_string(version) +
+                       R"(,"seed":5,"dimension":2,"current":)" + std::to_string(current) +
+                       R"(,"generations":[)";
     for (std::size_t k = 0; k < parents.size(); ++k) {
         if (k > 0) text += ',';
         text += "{" + parents[k] + R"("description":"g)" + std::to_string(k) + R"(","cells":)" + cells + "}";
@@ -295,22 +301,25 @@ TEST(HistorySessionTest, BadParentsAreNamedWhereTheyAre) {
         return std::string("(no error)");
     };
     EXPECT_EQ(fails(sessionText(2, {R"("parent":-1,)", R"("parent":0,)", R"("parent":0,)"})), "(no error)");
-    const std::string later =
-        "s.json: generations[1].parent: must name an earlier generation (0 to 0), or be -1 for a generation that "
-        "grows from none";
+    const std::string later = "s.json: generations[1].parent: must name an earlier generation (0 to 0), or "
+                              "be -1 for a generation that "
+                              "grows from none";
     EXPECT_EQ(fails(sessionText(2, {R"("parent":-1,)", R"("parent":5,)"})), later);
     EXPECT_EQ(fails(sessionText(2, {R"("parent":-1,)", R"("parent":1,)"})), later) << "itself: a cycle";
     EXPECT_EQ(fails(sessionText(2, {R"("parent":-1,)", R"("parent":-2,)"})), later);
     EXPECT_EQ(fails(sessionText(2, {R"("parent":-1,)", R"("parent":"0",)"})), later);
     EXPECT_EQ(fails(sessionText(2, {R"("parent":-1,)", ""})), later) << "version 2 names every parent";
-    EXPECT_EQ(fails(sessionText(2, {R"("parent":-1,)", R"("parent":0,)", R"("parent":2,)"})),
-              "s.json: generations[2].parent: must name an earlier generation (0 to 1), or be -1 for a generation "
-              "that grows from none");
+    EXPECT_EQ(
+        fails(sessionText(2, {R"("parent":-1,)", R"("parent":0,)", R"("parent":2,)"})),
+        "s.json: generations[2].parent: must name an earlier generation (0 to 1), or be -1 for a generation "
+        "that grows from none");
     EXPECT_EQ(fails(sessionText(2, {R"("parent":0,)"})),
               "s.json: generations[0].parent: must be -1: the first generation grows from none");
-    EXPECT_EQ(fails(sessionText(3, {R"("parent":-1,)"})), "s.json: version: only version 1 and 2 sessions are read");
+    EXPECT_EQ(fails(sessionText(3, {R"("parent":-1,)"})),
+              "s.json: version: only version 1 and 2 sessions are read");
     // A second root is a new start: its own branch.
-    const SavedSession s = parseSession(sessionText(2, {R"("parent":-1,)", R"("parent":0,)", R"("parent":-1,)"}), "s");
+    const SavedSession s =
+        parseSession(sessionText(2, {R"("parent":-1,)", R"("parent":0,)", R"("parent":-1,)"}), "s");
     EXPECT_EQ(s.history[2].number, 1);
     EXPECT_EQ(s.history[2].branch, 2);
 }
@@ -322,9 +331,10 @@ TEST_F(HistoryTreeTest, LineageShowsBranchesAndDoubleClickGoesBack) {
     QTreeWidgetItem* generations = tree->topLevelItem(1);
     ASSERT_EQ(generations->text(0), QStringLiteral("Generations"));
     // Each branch follows the generation it grew from, its generations nested inside it.
-    EXPECT_EQ(childTexts(generations), (QStringList{QStringLiteral("Generation 1"), QStringLiteral("Branch 3"),
-                                                    QStringLiteral("Generation 2"), QStringLiteral("Branch 2"),
-                                                    QStringLiteral("Generation 3")}));
+    EXPECT_EQ(childTexts(generations),
+              (QStringList{QStringLiteral("Generation 1"), QStringLiteral("Branch 3"),
+                           QStringLiteral("Generation 2"), QStringLiteral("Branch 2"),
+                           QStringLiteral("Generation 3")}));
     EXPECT_EQ(generations->child(1)->text(1), QStringLiteral("from generation 1"));
     EXPECT_EQ(childTexts(generations->child(1)), QStringList{QStringLiteral("Generation 2 (branch 3)")});
     EXPECT_EQ(childTexts(generations->child(3)), QStringList{QStringLiteral("Generation 3 (branch 2)")});
@@ -355,7 +365,8 @@ TEST_F(HistoryTreeTest, LineageDesignsSelectAndComeBack) {
         if (!item) return nullptr;
         item->setExpanded(true); // designs are listed when a generation is first opened
         for (int i = 0; i < item->childCount(); ++i)
-            if (item->child(i)->data(0, WorkbenchWindow::LineageCellRole).toInt() == cell) return item->child(i);
+            if (item->child(i)->data(0, WorkbenchWindow::LineageCellRole).toInt() == cell)
+                return item->child(i);
         return nullptr;
     };
 
@@ -369,9 +380,12 @@ TEST_F(HistoryTreeTest, LineageDesignsSelectAndComeBack) {
     EXPECT_EQ(model().currentIndex(), 5);
     EXPECT_EQ(model().current().parent, 4);
     EXPECT_TRUE(model().current().parentCells.empty()) << "put in, not bred";
-    EXPECT_EQ(model().current().description, QStringLiteral("Brought back design 5 of generation 3 (branch 2)"));
-    EXPECT_EQ(serializeGenome(*model().cell(0)), grids[3][4]) << "into the first cell, nothing being selected";
-    for (int i = 1; i < CellCount; ++i) EXPECT_EQ(serializeGenome(*model().cell(i)), grids[4][std::size_t(i)]);
+    EXPECT_EQ(model().current().description,
+              QStringLiteral("Brought back design 5 of generation 3 (branch 2)"));
+    EXPECT_EQ(serializeGenome(*model().cell(0)), grids[3][4])
+        << "into the first cell, nothing being selected";
+    for (int i = 1; i < CellCount; ++i)
+        EXPECT_EQ(serializeGenome(*model().cell(i)), grids[4][std::size_t(i)]);
     mWindow->backAction()->trigger();
     EXPECT_EQ(snapshot(model()), grids[4]);
 
@@ -403,21 +417,24 @@ TEST_F(HistoryTreeTest, LineageThumbnailsArriveForWhatIsInView) {
     ASSERT_EQ(branch3->text(0), QStringLiteral("Branch 3"));
     branch3->setExpanded(false); // generation 4's own designs are out of view
     const QIcon blankMosaic = generationItem(tree, 2)->icon(0);
-    EXPECT_FALSE(iconHasDetail(blankMosaic, QRect(0, 0, 14, 14))) << "nothing is rendered before the window shows";
+    EXPECT_FALSE(iconHasDetail(blankMosaic, QRect(0, 0, 14, 14)))
+        << "nothing is rendered before the window shows";
 
     mWindow->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
     tree->scrollToItem(generationItem(tree, 2));
     // The current generation in view: its nine thumbnails arrive.
     const auto& cells = model().history()[2].cells;
-    for (const auto& cell : cells) ASSERT_TRUE(waitFor([&] { return mWindow->hasLineageThumbnail(*cell); }, 60000));
+    for (const auto& cell : cells)
+        ASSERT_TRUE(waitFor([&] { return mWindow->hasLineageThumbnail(*cell); }, 60000));
     ASSERT_TRUE(waitFor([&] { return mService->idle(); }, 60000));
     QTreeWidgetItem* item = generationItem(tree, 2);
     ASSERT_NE(item, nullptr);
     EXPECT_TRUE(iconHasDetail(item->icon(0), QRect(0, 0, 14, 14))) << "the mosaic's first tile";
     EXPECT_TRUE(iconHasDetail(item->icon(0), QRect(30, 30, 14, 14))) << "the mosaic's last tile";
     ASSERT_EQ(tree->topLevelItem(0)->childCount(), CellCount);
-    EXPECT_TRUE(iconHasDetail(tree->topLevelItem(0)->child(0)->icon(0))) << "a current design's own thumbnail";
+    EXPECT_TRUE(iconHasDetail(tree->topLevelItem(0)->child(0)->icon(0)))
+        << "a current design's own thumbnail";
 
     // Generation 4's children (all but its parent cell 7) were not rendered while folded away.
     const auto& hidden = model().history()[4].cells;

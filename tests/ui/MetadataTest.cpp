@@ -6,6 +6,8 @@
 
 #include "TestUtil.h"
 
+#include "UiTestSupport.h"
+#include "WaitFor.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
@@ -17,8 +19,6 @@
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
 #include "ui/WorkbenchWindow.h"
-#include "UiTestSupport.h"
-#include "WaitFor.h"
 
 #include <QAction>
 #include <QApplication>
@@ -42,17 +42,18 @@ namespace {
 
 std::vector<std::string> gridText(const PopulationModel& model) {
     std::vector<std::string> result;
-    for (int i = 0; i < CellCount; ++i) result.push_back(model.cell(i) ? serializeGenome(*model.cell(i)) : "");
+    for (int i = 0; i < CellCount; ++i)
+        result.push_back(model.cell(i) ? serializeGenome(*model.cell(i)) : "");
     return result;
 }
-
 
 class MetadataTest : public test::WindowTest {
 protected:
     void SetUp() override {
         ASSERT_TRUE(mFiles.isValid());
         WindowTest::SetUp();
-        setOpenChooser([](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
+        setOpenChooser(
+            [](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
         setErrorHandler([this](QWidget*, const QString& title, const QString& message) {
             mErrors << title + QStringLiteral(": ") + message;
         });
@@ -204,8 +205,8 @@ TEST_F(MetadataTest, BadClipboardTextIsSaidOnTheStatusBarAndChangesNothing) {
 
     QApplication::clipboard()->setText(QStringLiteral("a shopping list, not a design"));
     EXPECT_FALSE(mWindow->pasteDesign());
-    EXPECT_TRUE(status().startsWith(
-        QStringLiteral("Nothing pasted: the clipboard holds no Marbler design (clipboard: line 1, column 1: JSON")))
+    EXPECT_TRUE(status().startsWith(QStringLiteral(
+        "Nothing pasted: the clipboard holds no Marbler design (clipboard: line 1, column 1: JSON")))
         << status().toStdString();
 
     // A genome that breaks a rule names its place.
@@ -213,7 +214,8 @@ TEST_F(MetadataTest, BadClipboardTextIsSaidOnTheStatusBarAndChangesNothing) {
     bad.replace(bad.find("\"radius\": "), 10, "\"radius\": -");
     QApplication::clipboard()->setText(QString::fromStdString(bad));
     EXPECT_FALSE(mWindow->pasteDesign());
-    EXPECT_TRUE(status().contains(QStringLiteral("clipboard: initial[0].radius: must be > 0"))) << status().toStdString();
+    EXPECT_TRUE(status().contains(QStringLiteral("clipboard: initial[0].radius: must be > 0")))
+        << status().toStdString();
 
     QApplication::clipboard()->clear();
     EXPECT_FALSE(mWindow->pasteDesign());

@@ -1,11 +1,11 @@
 // File ▸ New marbled paper: the generator of `marbler paper` as a starting point in the window.
 
+#include "UiTestSupport.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Paper.h"
 #include "ui/OpenPlacement.h"
 #include "ui/PopulationModel.h"
 #include "ui/WorkbenchWindow.h"
-#include "UiTestSupport.h"
 
 #include <QAction>
 
@@ -21,7 +21,8 @@ protected:
     void SetUp() override {
         WindowTest::SetUp();
         // Placing over designs asks where they go; answered without a modal dialog.
-        setOpenChooser([](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
+        setOpenChooser(
+            [](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
     }
     void TearDown() override {
         setOpenChooser({});
@@ -31,7 +32,8 @@ protected:
     std::vector<int> paperCells() {
         std::vector<int> cells;
         for (int i = 0; i < CellCount; ++i)
-            if (model().cell(i) && model().cell(i)->meta.value("generator", std::string()) == PaperGeneratorVersion)
+            if (model().cell(i) &&
+                model().cell(i)->meta.value("generator", std::string()) == PaperGeneratorVersion)
                 cells.push_back(i);
         return cells;
     }

@@ -26,18 +26,21 @@ namespace {
 
 class PictureTest : public test::WindowTest {
 protected:
-    PictureTest() : test::WindowTest(false) {}
+    PictureTest()
+        : test::WindowTest(false) {}
 
     /// A 64 x 32 picture of four coloured bands in a folder of this test's own.
     QString picture() {
-        const fs::path folder = test::outputDir(std::string("ui-picture-") +
-                                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        const fs::path folder = test::outputDir(
+            std::string("ui-picture-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(folder);
         fs::create_directories(folder);
         QImage image(64, 32, QImage::Format_RGB32);
-        const QColor bands[] = {QColor(200, 30, 40), QColor(30, 160, 60), QColor(40, 60, 200), QColor(230, 200, 40)};
+        const QColor bands[] = {QColor(200, 30, 40), QColor(30, 160, 60), QColor(40, 60, 200),
+                                QColor(230, 200, 40)};
         for (int y = 0; y < image.height(); ++y)
-            for (int x = 0; x < image.width(); ++x) image.setPixelColor(x, y, bands[x / 16]);
+            for (int x = 0; x < image.width(); ++x)
+                image.setPixelColor(x, y, bands[x / 16]);
         const QString file = QString::fromStdString((folder / "bands.png").string());
         EXPECT_TRUE(image.save(file));
         return file;
@@ -69,7 +72,8 @@ TEST_F(PictureTest, NineDesignsMarbleThePictureFromItsOwnFolder) {
                                 [](const Operation& op) { return op.tool == Tool::Flow; }));
     }
     EXPECT_NE(*model().cell(0), *model().cell(1)) << "nine different designs";
-    while (!mWindow->renderingDone() || finished.isEmpty()) ASSERT_TRUE(finished.wait(120000));
+    while (!mWindow->renderingDone() || finished.isEmpty())
+        ASSERT_TRUE(finished.wait(120000));
     EXPECT_EQ(asked, 0) << "a picture in the design's own folder needs no permission";
     // The cells show the picture carried by the flow: its saturated bands, not the pale bath.
     const QImage plain = mWindow->cell(0)->image();
@@ -78,9 +82,11 @@ TEST_F(PictureTest, NineDesignsMarbleThePictureFromItsOwnFolder) {
     for (int y = 0; y < plain.height(); y += 4)
         for (int x = 0; x < plain.width(); x += 4) {
             const QColor c = plain.pixelColor(x, y);
-            if (std::max({c.red(), c.green(), c.blue()}) - std::min({c.red(), c.green(), c.blue()}) > 100) ++bandColoured;
+            if (std::max({c.red(), c.green(), c.blue()}) - std::min({c.red(), c.green(), c.blue()}) > 100)
+                ++bandColoured;
         }
-    EXPECT_GT(bandColoured, (plain.width() / 4) * (plain.height() / 4) / 2) << "the picture's colours fill the bath";
+    EXPECT_GT(bandColoured, (plain.width() / 4) * (plain.height() / 4) / 2)
+        << "the picture's colours fill the bath";
     setExternalSourceAsker({});
 }
 
@@ -97,9 +103,12 @@ TEST_F(PictureTest, APictureThatCannotBeReadIsReportedAndChangesNothing) {
     EXPECT_TRUE(mWindow->marblePicture(QString::fromStdString(broken.string())).empty());
     EXPECT_TRUE(mWindow->marblePicture(QString::fromStdString((folder / "missing.png").string())).empty());
     ASSERT_EQ(errors.messages.size(), 2);
-    EXPECT_TRUE(errors.messages[0].contains(QStringLiteral("broken.png"))) << errors.messages[0].toStdString();
-    EXPECT_TRUE(errors.messages[1].contains(QStringLiteral("no such file"))) << errors.messages[1].toStdString();
-    for (int c = 0; c < CellCount; ++c) EXPECT_EQ(model().cell(c), nullptr);
+    EXPECT_TRUE(errors.messages[0].contains(QStringLiteral("broken.png")))
+        << errors.messages[0].toStdString();
+    EXPECT_TRUE(errors.messages[1].contains(QStringLiteral("no such file")))
+        << errors.messages[1].toStdString();
+    for (int c = 0; c < CellCount; ++c)
+        EXPECT_EQ(model().cell(c), nullptr);
 }
 
 TEST_F(PictureTest, TheFileMenuOffersIt) {

@@ -4,6 +4,8 @@
 
 #include "TestUtil.h"
 
+#include "UiTestSupport.h"
+#include "WaitFor.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "ui/ErrorReport.h"
@@ -16,8 +18,6 @@
 #include "ui/Trash.h"
 #include "ui/Workbench.h"
 #include "ui/WorkbenchWindow.h"
-#include "UiTestSupport.h"
-#include "WaitFor.h"
 
 #include <QAction>
 #include <QApplication>
@@ -51,7 +51,8 @@ namespace {
 std::vector<std::string> designs(const PopulationModel& model) {
     std::vector<std::string> result;
     for (const Generation& g : model.history())
-        for (const auto& cell : g.cells) result.push_back(cell ? serializeGenome(*cell) : std::string("(empty)"));
+        for (const auto& cell : g.cells)
+            result.push_back(cell ? serializeGenome(*cell) : std::string("(empty)"));
     return result;
 }
 
@@ -121,9 +122,10 @@ TEST_F(SessionsTest, StartingWithAKindOrFilesKeepsTheLastSessionResumable) {
         startSession(window, solid);
         EXPECT_EQ(window.model()->populationDimension(), 3);
         EXPECT_NE(window.model()->sessionFile(), bredFile);
-        EXPECT_EQ(window.statusBar()->currentMessage(),
-                  QStringLiteral("Started a new session; your previous session “%1” is kept under File ▸ Sessions")
-                      .arg(bredName));
+        EXPECT_EQ(
+            window.statusBar()->currentMessage(),
+            QStringLiteral("Started a new session; your previous session “%1” is kept under File ▸ Sessions")
+                .arg(bredName));
         EXPECT_TRUE(window.model()->sessionLabel().name.startsWith(QStringLiteral("Solid session, ")));
     }
     // `marbler a.marble.json`: another new one.
@@ -155,7 +157,8 @@ TEST_F(SessionsTest, StartingWithAKindOrFilesKeepsTheLastSessionResumable) {
     EXPECT_EQ(asked, 2);
     EXPECT_EQ(offered.resumeGeneration, 1);
     ASSERT_EQ(offered.otherSessions.size(), 2);
-    EXPECT_TRUE(offered.otherSessions.back().second.startsWith(bredName + QStringLiteral(" — generation %1").arg(generations + 1)))
+    EXPECT_TRUE(offered.otherSessions.back().second.startsWith(
+        bredName + QStringLiteral(" — generation %1").arg(generations + 1)))
         << offered.otherSessions.back().second.toStdString();
     EXPECT_EQ(designs(*window.model()), bred);
     EXPECT_EQ(window.model()->currentIndex(), generations);
@@ -204,7 +207,8 @@ TEST_F(SessionsTest, TheSingleSessionLayoutMigratesIntoTheStore) {
     ASSERT_TRUE(window.resumeKeptSession(kept[1].id));
     EXPECT_EQ(designs(*window.model()), previous);
     EXPECT_EQ(window.model()->populationDimension(), 3);
-    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("is kept under File ▸ Sessions")));
+    EXPECT_TRUE(
+        window.statusBar()->currentMessage().contains(QStringLiteral("is kept under File ▸ Sessions")));
 
     // A second start migrates nothing more.
     QStringList problems;
@@ -375,7 +379,8 @@ TEST_F(SessionsTest, StartDialogOffersTheOtherKeptSessions) {
                            {QStringLiteral("b"), QStringLiteral("Old one — generation 9, flat")}};
     StartDialog dialog(offer);
     ASSERT_NE(dialog.resumeButton(), nullptr);
-    EXPECT_TRUE(dialog.resumeButton()->text().contains(QStringLiteral("“Vases for Anna” (generation 4, solid)")))
+    EXPECT_TRUE(
+        dialog.resumeButton()->text().contains(QStringLiteral("“Vases for Anna” (generation 4, solid)")))
         << dialog.resumeButton()->text().toStdString();
     ASSERT_NE(dialog.otherSessionsBox(), nullptr);
     EXPECT_EQ(dialog.otherSessionsBox()->count(), 2);
@@ -431,12 +436,14 @@ TEST_F(SessionsTest, RemovedFavouriteCanBeRestoredAndItsFileComesBack) {
     ASSERT_EQ(window.model()->favourites().size(), 2u);
     EXPECT_EQ(window.favouritesList()->count(), 2);
     const auto& favourites = window.model()->favourites();
-    const auto back = std::find_if(favourites.begin(), favourites.end(), [&](const Favourite& f) { return f.file == file; });
+    const auto back = std::find_if(favourites.begin(), favourites.end(),
+                                   [&](const Favourite& f) { return f.file == file; });
     ASSERT_NE(back, favourites.end());
     EXPECT_EQ(back->genome, genome);
     EXPECT_FALSE(window.undoRemoveButton()->isVisibleTo(&window));
     EXPECT_FALSE(window.restoreFavouriteAction()->isEnabled());
-    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("is back on the favourites shelf")));
+    EXPECT_TRUE(
+        window.statusBar()->currentMessage().contains(QStringLiteral("is back on the favourites shelf")));
 
     // Edit ▸ Restore removed favourite (Ctrl+Shift+R) brings back the last removed first.
     const QString first = favourites[0].file;
@@ -456,8 +463,10 @@ TEST_F(SessionsTest, RemovedFavouriteCanBeRestoredAndItsFileComesBack) {
 TEST_F(SessionsTest, TrashOlderThanThirtyDaysIsEmptiedAtStart) {
     const QString trash = QDir(mFavourites.path()).filePath(QStringLiteral(".trash"));
     ASSERT_TRUE(QDir().mkpath(trash));
-    const QString stamp = QDateTime::currentDateTimeUtc().addDays(-31).toString(QStringLiteral("yyyyMMdd'T'HHmmss'Z'"));
-    const QString recent = QDateTime::currentDateTimeUtc().addDays(-29).toString(QStringLiteral("yyyyMMdd'T'HHmmss'Z'"));
+    const QString stamp =
+        QDateTime::currentDateTimeUtc().addDays(-31).toString(QStringLiteral("yyyyMMdd'T'HHmmss'Z'"));
+    const QString recent =
+        QDateTime::currentDateTimeUtc().addDays(-29).toString(QStringLiteral("yyyyMMdd'T'HHmmss'Z'"));
     test::writeFile(QDir(trash).filePath(stamp + QStringLiteral("-old.marble.json")).toStdString(), "{}");
     test::writeFile(QDir(trash).filePath(recent + QStringLiteral("-recent.marble.json")).toStdString(), "{}");
     test::writeFile(QDir(trash).filePath(QStringLiteral("mine.txt")).toStdString(), "not trashed by Marbler");
@@ -469,14 +478,18 @@ TEST_F(SessionsTest, TrashOlderThanThirtyDaysIsEmptiedAtStart) {
     // Sessions' trash too, at each start of a session.
     const QString sessionsTrash = store().trashFolder();
     ASSERT_TRUE(QDir().mkpath(sessionsTrash));
-    test::writeFile(QDir(sessionsTrash).filePath(stamp + QStringLiteral("-20261001-101010.json")).toStdString(), "{}");
-    test::writeFile(QDir(sessionsTrash).filePath(recent + QStringLiteral("-20261101-101010.json")).toStdString(), "{}");
+    test::writeFile(
+        QDir(sessionsTrash).filePath(stamp + QStringLiteral("-20261001-101010.json")).toStdString(), "{}");
+    test::writeFile(
+        QDir(sessionsTrash).filePath(recent + QStringLiteral("-20261101-101010.json")).toStdString(), "{}");
     answerNew(2);
     WorkbenchWindow window(&service);
     startSession(window, options);
-    EXPECT_EQ(QDir(sessionsTrash).entryList(QDir::Files), QStringList{recent + QStringLiteral("-20261101-101010.json")});
+    EXPECT_EQ(QDir(sessionsTrash).entryList(QDir::Files),
+              QStringList{recent + QStringLiteral("-20261101-101010.json")});
     // A restored file gets its name back, with no stamp.
-    EXPECT_EQ(originalTrashName(recent + QStringLiteral(".2-20261101-101010.json")), QStringLiteral("20261101-101010.json"));
+    EXPECT_EQ(originalTrashName(recent + QStringLiteral(".2-20261101-101010.json")),
+              QStringLiteral("20261101-101010.json"));
 }
 
 } // namespace

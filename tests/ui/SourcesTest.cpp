@@ -44,8 +44,8 @@ struct Folders {
     fs::path design, outside;
     Folders() {
         // A folder of each test's own: ctest runs the cases of this file side by side.
-        const fs::path root = test::outputDir(std::string("ui-sources-") +
-                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        const fs::path root = test::outputDir(
+            std::string("ui-sources-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(root);
         design = root / "design";
         outside = root / "private";

@@ -53,12 +53,15 @@ ErrorCapture::ErrorCapture() {
     });
 }
 
-ErrorCapture::~ErrorCapture() { ui::setErrorHandler({}); }
+ErrorCapture::~ErrorCapture() {
+    ui::setErrorHandler({});
+}
 
 void dropFiles(QWidget* target, const QStringList& files) {
     QMimeData mime;
     QList<QUrl> urls;
-    for (const QString& f : files) urls << QUrl::fromLocalFile(f);
+    for (const QString& f : files)
+        urls << QUrl::fromLocalFile(f);
     mime.setUrls(urls);
     const QPoint pos = target->rect().center();
     QDragEnterEvent enter(pos, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
@@ -72,15 +75,16 @@ void dropFiles(QWidget* target, const QStringList& files) {
 
 int main(int argc, char** argv) {
     // Headless by default: with no display, Qt's offscreen platform (the CPU fallback renders).
-    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")
-        && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+        qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     // Keep the user's settings and data out of the tests.
     QStandardPaths::setTestModeEnabled(true);
     QApplication app(argc, argv);
     // ctest runs test cases as parallel processes: each process gets settings of its own, so
     // one test's remembered choices never leak into another running beside it.
-    QApplication::setOrganizationName(QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
+    QApplication::setOrganizationName(
+        QStringLiteral("MarblerTest-%1").arg(QCoreApplication::applicationPid()));
     QApplication::setApplicationName(QStringLiteral("MarblerTest"));
     ::testing::InitGoogleTest(&argc, argv);
     int status = RUN_ALL_TESTS();

@@ -21,7 +21,8 @@ namespace marbler::test {
 /// seed 42; `populate`: with a first random flat population.
 class WindowTest : public ::testing::Test {
 protected:
-    explicit WindowTest(bool populate = true) : mPopulate(populate) {}
+    explicit WindowTest(bool populate = true)
+        : mPopulate(populate) {}
     void SetUp() override;
     void TearDown() override;
     ui::PopulationModel& model() { return *mWindow->model(); }

@@ -2,6 +2,8 @@
 // the view angle a solid design carries in meta.view, and solid objects framed to fill their
 // cell. Runs in ui_workbench_test, whose main (WorkbenchTest.cpp) sets up the application.
 
+#include "UiTestSupport.h"
+#include "WaitFor.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
@@ -15,8 +17,6 @@
 #include "ui/Session.h"
 #include "ui/ViewController.h"
 #include "ui/WorkbenchWindow.h"
-#include "UiTestSupport.h"
-#include "WaitFor.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -40,7 +40,9 @@ void expectSamePoint(QPointF a, QPointF b, double tolerance = 1e-6) {
     EXPECT_NEAR(a.y(), b.y(), tolerance);
 }
 
-double regionWidth(const Region& r) { return r.x1 - r.x0; }
+double regionWidth(const Region& r) {
+    return r.x1 - r.x0;
+}
 
 TEST(ViewControllerTest, ZoomKeepsTheAnchoredPointFitShowsAllAndPanMoves) {
     ViewController view;
@@ -116,7 +118,8 @@ TEST(ViewAngleTest, KeptInMetaViewAndReadBackFromFiles) {
 
 class ViewTest : public test::WindowTest {
 protected:
-    ViewTest() : WindowTest(/*populate=*/false) {}
+    ViewTest()
+        : WindowTest(/*populate=*/false) {}
     /// Opens a cell large and waits for its final image.
     DesignDialog* openAndRender(int cell) {
         DesignDialog* dialog = mWindow->openDesign(cell);
@@ -125,13 +128,12 @@ protected:
         [&] { MARBLER_WAIT(dialog->imageIsFinal(), 120000); }();
         return dialog->imageIsFinal() ? dialog : nullptr;
     }
-
 };
 
 /// A wheel turn over a widget: `notches` of 120.
 void wheel(QWidget* target, QPointF pos, int notches, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
-    QWheelEvent event(pos, target->mapToGlobal(pos), QPoint(), QPoint(0, 120 * notches), Qt::NoButton, modifiers,
-                      Qt::NoScrollPhase, false);
+    QWheelEvent event(pos, target->mapToGlobal(pos), QPoint(), QPoint(0, 120 * notches), Qt::NoButton,
+                      modifiers, Qt::NoScrollPhase, false);
     QApplication::sendEvent(target, &event);
 }
 
@@ -212,7 +214,8 @@ TEST_F(ViewTest, KeysAndButtonsFitShowOneToOneAndZoom) {
                      Button{"zoomOneToOne", "(1)"}}) {
         auto* button = dialog->findChild<QToolButton*>(QString::fromLatin1(b.name));
         ASSERT_NE(button, nullptr) << b.name;
-        EXPECT_TRUE(button->toolTip().contains(QString::fromLatin1(b.key))) << button->toolTip().toStdString();
+        EXPECT_TRUE(button->toolTip().contains(QString::fromLatin1(b.key)))
+            << button->toolTip().toStdString();
     }
     dialog->findChild<QToolButton*>(QStringLiteral("zoomIn"))->click();
     EXPECT_NEAR(view.scale(), fitted * std::sqrt(2.0), 1e-9);
@@ -327,7 +330,8 @@ TEST_F(ViewTest, LargeViewTurnsTheDesignAndZoomsTheObject) {
     settings.aa = "rgss";
     settings.slice = Slice{2, g.size.z / 2.0};
     const double w = g.size.x / std::sqrt(2.0), h = g.size.y / std::sqrt(2.0);
-    settings.region = Region{(g.size.x - w) / 2.0, (g.size.y - h) / 2.0, (g.size.x + w) / 2.0, (g.size.y + h) / 2.0};
+    settings.region =
+        Region{(g.size.x - w) / 2.0, (g.size.y - h) / 2.0, (g.size.x + w) / 2.0, (g.size.y + h) / 2.0};
     EXPECT_EQ(magnified, toQImage(CpuRenderer(g).render(settings)));
     EXPECT_EQ(dialog->image().size(), magnified.size());
     EXPECT_NE(dialog->image(), magnified);
@@ -370,11 +374,12 @@ TEST(SolidFramingTest, EveryObjectFillsItsCellOnGlAndTheCpuPath) {
                 settings.pitch = angle.pitch;
                 settings.supersample = 1;
                 const auto [w, h] = coverage(renderer.renderMesh(genome, settings), settings.clearColor);
-                const std::string what = name + " at " + std::to_string(size.width()) + "x"
-                                         + std::to_string(size.height()) + ", yaw " + std::to_string(angle.yaw);
+                const std::string what = name + " at " + std::to_string(size.width()) + "x" +
+                                         std::to_string(size.height()) + ", yaw " + std::to_string(angle.yaw);
                 EXPECT_GE(std::max(w, h), 0.8) << what << ": " << w << " x " << h;
                 EXPECT_LT(std::max(w, h), 0.99) << what << ": a margin stays";
-                const auto [hw, hh] = coverage(gl::renderMeshHybrid(renderer, genome, settings), settings.clearColor);
+                const auto [hw, hh] =
+                    coverage(gl::renderMeshHybrid(renderer, genome, settings), settings.clearColor);
                 EXPECT_NEAR(hw, w, 0.03) << what << " on the CPU path";
                 EXPECT_NEAR(hh, h, 0.03) << what << " on the CPU path";
             }

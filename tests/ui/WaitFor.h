@@ -9,15 +9,15 @@
 #include <gtest/gtest.h>
 
 /// Waits up to `timeoutMs` for `condition`; a fatal gtest failure naming it when it never holds.
-#define MARBLER_WAIT(condition, timeoutMs)                                                         \
-    ASSERT_TRUE(QTest::qWaitFor([&]() -> bool { return bool(condition); }, timeoutMs))           \
+#define MARBLER_WAIT(condition, timeoutMs)                                                                   \
+    ASSERT_TRUE(QTest::qWaitFor([&]() -> bool { return bool(condition); }, timeoutMs))                       \
         << "waited " << (timeoutMs) << " ms for: " #condition
 
 /// Waits up to `timeoutMs` for `actual == expected`, then asserts it (printing both values).
-#define MARBLER_WAIT_EQ(actual, expected, timeoutMs)                                               \
-    do {                                                                                          \
-        (void)QTest::qWaitFor([&]() -> bool { return (actual) == (expected); }, timeoutMs);       \
-        ASSERT_EQ(actual, expected) << "after waiting " << (timeoutMs) << " ms";                  \
+#define MARBLER_WAIT_EQ(actual, expected, timeoutMs)                                                         \
+    do {                                                                                                     \
+        (void)QTest::qWaitFor([&]() -> bool { return (actual) == (expected); }, timeoutMs);                  \
+        ASSERT_EQ(actual, expected) << "after waiting " << (timeoutMs) << " ms";                             \
     } while (false)
 
 // Qt's waits would pass silently under gtest (see above): using one is a compile error here.
@@ -27,5 +27,6 @@
 #undef QTRY_COMPARE_WITH_TIMEOUT
 #define QTRY_VERIFY(...) static_assert(false, "use MARBLER_WAIT: QTRY_VERIFY passes silently under gtest")
 #define QTRY_VERIFY_WITH_TIMEOUT(...) static_assert(false, "use MARBLER_WAIT")
-#define QTRY_COMPARE(...) static_assert(false, "use MARBLER_WAIT_EQ: QTRY_COMPARE passes silently under gtest")
+#define QTRY_COMPARE(...)                                                                                    \
+    static_assert(false, "use MARBLER_WAIT_EQ: QTRY_COMPARE passes silently under gtest")
 #define QTRY_COMPARE_WITH_TIMEOUT(...) static_assert(false, "use MARBLER_WAIT_EQ")

@@ -17,7 +17,8 @@ namespace {
 
 class WildcardTest : public test::WindowTest {
 protected:
-    WildcardTest() : test::WindowTest(false) {}
+    WildcardTest()
+        : test::WindowTest(false) {}
     QAction* toggle() const { return mWindow->findChild<QAction*>(QStringLiteral("wildcardAction")); }
 };
 
@@ -33,7 +34,8 @@ TEST_F(WildcardTest, TheLastOffspringCellIsAFreshDesignOfTheParentsFamily) {
     model().setSelected(0, true);
     const std::string parentId = genomeId(*model().cell(0));
     ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Alter));
-    for (int i = 1; i < CellCount - 1; ++i) EXPECT_EQ(lineageOf(*model().cell(i)).op, QStringLiteral("alter")) << i;
+    for (int i = 1; i < CellCount - 1; ++i)
+        EXPECT_EQ(lineageOf(*model().cell(i)).op, QStringLiteral("alter")) << i;
     const Genome& wild = *model().cell(CellCount - 1);
     const LineageInfo info = lineageOf(wild);
     EXPECT_EQ(info.op, QStringLiteral("wildcard"));
@@ -44,7 +46,8 @@ TEST_F(WildcardTest, TheLastOffspringCellIsAFreshDesignOfTheParentsFamily) {
     EXPECT_NO_THROW(validateGenome(wild, "wildcard"));
     EXPECT_NE(genomeId(wild), parentId);
     // Not an alteration of the parent: a nonpareil drawn from a seed of its own.
-    const Genome drawn = familyGenome(*findFamily("nonpareil"), wild.meta["lineage"]["seed"].get<std::uint64_t>());
+    const Genome drawn =
+        familyGenome(*findFamily("nonpareil"), wild.meta["lineage"]["seed"].get<std::uint64_t>());
     EXPECT_EQ(genomeId(drawn), genomeId(wild));
 }
 

@@ -3,6 +3,8 @@
 
 #include "TestUtil.h"
 
+#include "UiTestSupport.h"
+#include "WaitFor.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
@@ -21,8 +23,6 @@
 #include "ui/StartDialog.h"
 #include "ui/Workbench.h"
 #include "ui/WorkbenchWindow.h"
-#include "UiTestSupport.h"
-#include "WaitFor.h"
 
 #include <QAction>
 #include <QApplication>
@@ -69,7 +69,8 @@ namespace {
 /// The genomes of the grid as text, for exact comparisons of whole generations.
 std::vector<std::string> snapshot(const PopulationModel& model) {
     std::vector<std::string> result;
-    for (int i = 0; i < CellCount; ++i) result.push_back(model.cell(i) ? serializeGenome(*model.cell(i)) : "");
+    for (int i = 0; i < CellCount; ++i)
+        result.push_back(model.cell(i) ? serializeGenome(*model.cell(i)) : "");
     return result;
 }
 
@@ -79,7 +80,8 @@ protected:
         WindowTest::SetUp();
         // Opening over designs asks where they go; these tests answer "replace" without a
         // modal dialog (tests/ui/HelpTest.cpp tests the question itself).
-        setOpenChooser([](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
+        setOpenChooser(
+            [](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
     }
     void TearDown() override {
         setOpenChooser({});
@@ -105,7 +107,8 @@ TEST(PopulationModelTest, OpenedDesignsAreGenerationOne) {
     PopulationModel model;
     EXPECT_TRUE(model.isEmptyWorkbench());
     EXPECT_FALSE(model.canGoBack());
-    const auto used = model.placeDesigns({randomGenome(3, 2), randomGenome(4, 2)}, QStringLiteral("Opened two"));
+    const auto used =
+        model.placeDesigns({randomGenome(3, 2), randomGenome(4, 2)}, QStringLiteral("Opened two"));
     EXPECT_EQ(used, (std::vector<int>{0, 1}));
     EXPECT_FALSE(model.isEmptyWorkbench());
     ASSERT_EQ(model.history().size(), 1u);
@@ -195,7 +198,8 @@ TEST_F(WorkbenchTest, OperatorKeepsParentsAndFillsNineCells) {
             continue;
         }
         EXPECT_EQ(info.op, QStringLiteral("recombine"));
-        EXPECT_TRUE(info.parents.contains(QString::fromStdString(idA)) || info.parents.contains(QString::fromStdString(idB)));
+        EXPECT_TRUE(info.parents.contains(QString::fromStdString(idA)) ||
+                    info.parents.contains(QString::fromStdString(idB)));
     }
     EXPECT_EQ(model().history().size(), 2u) << "the random population is generation 1, the offspring 2";
 }
@@ -270,7 +274,8 @@ TEST_F(WorkbenchTest, SavedFavouriteLoadsAgain) {
 }
 
 TEST_F(WorkbenchTest, OpenFileLoadsIntoSelectedCell) {
-    const QString file = QString::fromStdString((test::dataDir() / "examples" / "five-stones.marble.json").string());
+    const QString file =
+        QString::fromStdString((test::dataDir() / "examples" / "five-stones.marble.json").string());
     model().setSelected(7, true);
     ASSERT_TRUE(mWindow->openFiles({file}));
     EXPECT_EQ(*model().cell(7), loadGenome(file.toStdString()));
@@ -280,12 +285,14 @@ TEST_F(WorkbenchTest, BadFileShowsErrorAndKeepsPopulation) {
     ErrorCapture errors;
     const auto before = snapshot(model());
     const std::size_t generations = model().history().size();
-    const QString bad = QString::fromStdString((test::dataDir() / "ui" / "negative-radius.marble.json").string());
+    const QString bad =
+        QString::fromStdString((test::dataDir() / "ui" / "negative-radius.marble.json").string());
 
     EXPECT_FALSE(mWindow->openFiles({bad}));
     ASSERT_EQ(errors.messages.size(), 1);
     EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("negative-radius.marble.json")));
-    EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("radius"))) << errors.messages.front().toStdString();
+    EXPECT_TRUE(errors.messages.front().contains(QStringLiteral("radius")))
+        << errors.messages.front().toStdString();
     EXPECT_EQ(snapshot(model()), before);
     EXPECT_EQ(model().history().size(), generations);
 
@@ -299,7 +306,8 @@ TEST_F(WorkbenchTest, BadFileShowsErrorAndKeepsPopulation) {
 }
 
 TEST_F(WorkbenchTest, DroppedGoodFileReplacesThatCell) {
-    const QString file = QString::fromStdString((test::dataDir() / "examples" / "slate-block.marble.json").string());
+    const QString file =
+        QString::fromStdString((test::dataDir() / "examples" / "slate-block.marble.json").string());
     mWindow->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
     dropFiles(mWindow->cell(8), {file});
@@ -351,9 +359,11 @@ TEST_F(WorkbenchTest, EveryOperatorFillsTheGridWithDistinctDesigns) {
         for (int parents = minParents(op); parents <= most; ++parents) {
             SCOPED_TRACE(std::string(operatorName(op)) + " of " + std::to_string(parents) + " parents");
             model().clearSelection();
-            for (int i = 0; i < parents; ++i) model().setSelected(i, true);
+            for (int i = 0; i < parents; ++i)
+                model().setSelected(i, true);
             ASSERT_TRUE(mWindow->applyOperator(op));
-            EXPECT_EQ(distinctDesigns(model()).size(), std::size_t(CellCount)) << "two cells hold the same design";
+            EXPECT_EQ(distinctDesigns(model()).size(), std::size_t(CellCount))
+                << "two cells hold the same design";
             model().goBack();
         }
     }
@@ -367,7 +377,9 @@ TEST_F(WorkbenchTest, EveryOperatorFillsTheGridWithDistinctDesigns) {
     // The lineage says which children are variations.
     int varied = 0;
     for (int i = 0; i < mWindow->lineageTree()->topLevelItem(0)->childCount(); ++i)
-        varied += mWindow->lineageTree()->topLevelItem(0)->child(i)->text(1) == QStringLiteral("Swap, varied") ? 1 : 0;
+        varied += mWindow->lineageTree()->topLevelItem(0)->child(i)->text(1) == QStringLiteral("Swap, varied")
+                      ? 1
+                      : 0;
     EXPECT_EQ(varied, CellCount - 2 - 2 - 1) << "two parents, two swaps, a wildcard, the rest varied";
 }
 
@@ -379,13 +391,15 @@ TEST(PopulationModelTest, EveryNewRandomPopulationIsNew) {
     ASSERT_EQ(seen.size(), std::size_t(CellCount));
     for (int round = 0; round < 3; ++round) {
         model.newRandomPopulation(2);
-        for (const std::string& id : distinctDesigns(model)) EXPECT_TRUE(seen.insert(id).second) << "round " << round;
+        for (const std::string& id : distinctDesigns(model))
+            EXPECT_TRUE(seen.insert(id).second) << "round " << round;
     }
     // Back to the first and new again: new against the grid it replaces as well.
     model.goTo(0);
     const std::set<std::string> first = distinctDesigns(model);
     model.newRandomPopulation(2);
-    for (const std::string& id : distinctDesigns(model)) EXPECT_EQ(first.count(id), 0u);
+    for (const std::string& id : distinctDesigns(model))
+        EXPECT_EQ(first.count(id), 0u);
     EXPECT_EQ(distinctDesigns(model).size(), std::size_t(CellCount));
 }
 
@@ -406,14 +420,16 @@ TEST_F(WorkbenchTest, GenerationsAndOperatorsAreNamedAlikeEverywhere) {
     for (int i = 0; i < CellCount; ++i) {
         SCOPED_TRACE("design " + std::to_string(i + 1));
         const QString caption = mWindow->cell(i)->caption();
-        const QString row = designs->child(i)->text(0) + designs->child(i)->text(1) + designs->child(i)->text(3);
+        const QString row =
+            designs->child(i)->text(0) + designs->child(i)->text(1) + designs->child(i)->text(3);
         EXPECT_FALSE(caption.contains(QStringLiteral("reinit")) || row.contains(QStringLiteral("reinit")));
         EXPECT_TRUE(designs->child(i)->text(0).startsWith(QStringLiteral("Design %1: ").arg(i + 1)));
         if (i == 4) continue; // the parent, from generation 1
         // A child of generation 2 in design 7 is called "(g2 #7)", as the status bar counts.
         EXPECT_TRUE(caption.contains(QStringLiteral("(g2 #%1)").arg(i + 1))) << caption.toStdString();
         // The last offspring cell is the wildcard (WildcardTest.cpp), and says so.
-        const QString madeBy = i == CellCount - 1 ? QStringLiteral("Wildcard") : QStringLiteral("Change initial state");
+        const QString madeBy =
+            i == CellCount - 1 ? QStringLiteral("Wildcard") : QStringLiteral("Change initial state");
         EXPECT_TRUE(caption.contains(madeBy)) << caption.toStdString();
         EXPECT_EQ(designs->child(i)->text(1), madeBy);
         EXPECT_EQ(designs->child(i)->text(3), QStringLiteral("2"));
@@ -433,13 +449,15 @@ TEST_F(WorkbenchTest, LockMarkerIsDrawnNotAnEmoji) {
     EXPECT_TRUE(cell->isLocked());
     const QRect marker = cell->lockMarkerRect();
     ASSERT_FALSE(marker.isEmpty());
-    for (QChar ch : cell->caption()) EXPECT_FALSE(ch.isSurrogate()) << "no emoji (or other astral character) in the caption";
+    for (QChar ch : cell->caption())
+        EXPECT_FALSE(ch.isSurrogate()) << "no emoji (or other astral character) in the caption";
     const QImage after = cell->grab().toImage();
     const qreal dpr = after.devicePixelRatio();
     int changed = 0;
     for (int y = marker.top(); y <= marker.bottom(); ++y)
         for (int x = marker.left(); x <= marker.right(); ++x)
-            changed += after.pixel(int(x * dpr), int(y * dpr)) != before.pixel(int(x * dpr), int(y * dpr)) ? 1 : 0;
+            changed +=
+                after.pixel(int(x * dpr), int(y * dpr)) != before.pixel(int(x * dpr), int(y * dpr)) ? 1 : 0;
     EXPECT_GT(changed, marker.width() * marker.height() / 5) << "a padlock is drawn where the marker goes";
     model().setCellLocks(2, Locks{});
     EXPECT_FALSE(cell->isLocked());
@@ -475,11 +493,13 @@ TEST_F(WorkbenchTest, LargeDesignSavesGenomeAtomically) {
     // Saving again replaces the file whole; no temporary is left beside it.
     ASSERT_TRUE(dialog->saveTo(file));
     EXPECT_EQ(loadGenome(file.toStdString()), *model().cell(3));
-    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("kept.marble.json")});
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+              QStringList{QStringLiteral("kept.marble.json")});
     // A folder that does not exist is reported, and nothing is written.
     EXPECT_FALSE(dialog->saveTo(dir.filePath(QStringLiteral("no/such/folder/x.marble.json"))));
     EXPECT_EQ(errors.messages.size(), 1);
-    EXPECT_TRUE(errors.messages.isEmpty() || errors.messages.front().startsWith(QStringLiteral("Cannot save the design")));
+    EXPECT_TRUE(errors.messages.isEmpty() ||
+                errors.messages.front().startsWith(QStringLiteral("Cannot save the design")));
 }
 
 TEST_F(WorkbenchTest, LargeDesignExportsImageAtTheChosenSize) {
@@ -500,7 +520,8 @@ TEST_F(WorkbenchTest, LargeDesignExportsImageAtTheChosenSize) {
     EXPECT_TRUE(errors.messages.isEmpty());
     QImageReader reader(file);
     EXPECT_EQ(reader.size(), QSize(96, 60));
-    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{QStringLiteral("export.png")})
+    EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+              QStringList{QStringLiteral("export.png")})
         << "no temporary file remains";
 }
 
@@ -511,7 +532,8 @@ TEST_F(WorkbenchTest, CancelledExportLeavesNoFile) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     QSignalSpy finished(dialog, &DesignDialog::exportFinished);
-    ASSERT_TRUE(dialog->exportTo(dir.filePath(QStringLiteral("big.png")), QSize(6000, 6000), QStringLiteral("grid4")));
+    ASSERT_TRUE(dialog->exportTo(dir.filePath(QStringLiteral("big.png")), QSize(6000, 6000),
+                                 QStringLiteral("grid4")));
     dialog->cancelExport();
     MARBLER_WAIT_EQ(finished.size(), 1, 120000);
     EXPECT_FALSE(finished.front().at(1).toBool());
@@ -566,7 +588,9 @@ TEST_F(WorkbenchTest, ExportRefusesSizesBeyondTheRenderersLimits) {
     settings.setWidthValue(2048.0); // 614,400 px a side
     auto* ok = settings.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
     EXPECT_FALSE(ok->isEnabled());
-    EXPECT_TRUE(settings.findChild<QLabel*>(QStringLiteral("exportPixels"))->text().contains(QStringLiteral("at most")));
+    EXPECT_TRUE(settings.findChild<QLabel*>(QStringLiteral("exportPixels"))
+                    ->text()
+                    .contains(QStringLiteral("at most")));
     settings.setWidthValue(10.0);
     EXPECT_TRUE(ok->isEnabled());
 
@@ -601,7 +625,8 @@ TEST_F(WorkbenchTest, ExportSettingsTabOrderReachesEveryField) {
         QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
     }
     for (const char* field : {"exportWidth", "exportUnit", "exportDpi", "exportAa"})
-        EXPECT_TRUE(reached.contains(QString::fromLatin1(field))) << field << " is not reached: " << reached.join(',').toStdString();
+        EXPECT_TRUE(reached.contains(QString::fromLatin1(field)))
+            << field << " is not reached: " << reached.join(',').toStdString();
     EXPECT_EQ(reached.mid(0, 4), (QStringList{QStringLiteral("exportWidth"), QStringLiteral("exportUnit"),
                                               QStringLiteral("exportDpi"), QStringLiteral("exportAa")}));
 }
@@ -618,7 +643,8 @@ TEST_F(WorkbenchTest, ExportErrorIsNeverCoveredByAStaleProgressBox) {
     });
     QTemporaryDir dir;
     QSignalSpy finished(dialog, &DesignDialog::exportFinished);
-    ASSERT_TRUE(dialog->exportTo(dir.filePath(QStringLiteral("no/such/folder/x.png")), QSize(64, 64), QStringLiteral("none")));
+    ASSERT_TRUE(dialog->exportTo(dir.filePath(QStringLiteral("no/such/folder/x.png")), QSize(64, 64),
+                                 QStringLiteral("none")));
     // As after a long export: the progress box is up when the failure arrives.
     auto* box = dialog->findChild<QProgressDialog*>(QStringLiteral("exportProgress"));
     ASSERT_NE(box, nullptr);
@@ -629,7 +655,8 @@ TEST_F(WorkbenchTest, ExportErrorIsNeverCoveredByAStaleProgressBox) {
     EXPECT_FALSE(finished.front().at(2).toString().isEmpty());
     EXPECT_FALSE(progressVisibleAtError) << "the progress box covered the error";
     QTest::qWait(400); // past the box's minimum duration: it must not come back
-    for (QProgressDialog* b : dialog->findChildren<QProgressDialog*>()) EXPECT_FALSE(b->isVisible());
+    for (QProgressDialog* b : dialog->findChildren<QProgressDialog*>())
+        EXPECT_FALSE(b->isVisible());
     dialog->close();
 }
 
@@ -707,7 +734,8 @@ TEST_F(StartChoiceTest, SolidChoiceBreedsSolidGenomesOnTheChosenObject) {
     // Breeding keeps to solids.
     window.model()->setSelected(0, true);
     ASSERT_TRUE(window.applyOperator(GeneticOperator::Alter));
-    for (int i = 0; i < CellCount; ++i) EXPECT_EQ(window.model()->cell(i)->dimension, 3);
+    for (int i = 0; i < CellCount; ++i)
+        EXPECT_EQ(window.model()->cell(i)->dimension, 3);
 
     // The next start offers the last choice.
     WorkbenchWindow next(&service);
@@ -722,7 +750,8 @@ TEST_F(StartChoiceTest, FlatChoiceBreedsFlatGenomes) {
     WorkbenchWindow window(&service);
     startSession(window, {});
     EXPECT_EQ(asked, 1);
-    for (int i = 0; i < CellCount; ++i) EXPECT_EQ(window.model()->cell(i)->dimension, 2);
+    for (int i = 0; i < CellCount; ++i)
+        EXPECT_EQ(window.model()->cell(i)->dimension, 2);
 }
 
 TEST_F(StartChoiceTest, ForcedDimensionFilesAndDontAskSkipTheQuestion) {
@@ -805,13 +834,15 @@ TEST_F(StartChoiceTest, TheObjectBoxListsEveryBuiltInObjectDefaultFirst) {
 std::vector<std::string> historySnapshot(const PopulationModel& model) {
     std::vector<std::string> result;
     for (const Generation& g : model.history()) {
-        std::string text = std::to_string(g.parent) + "|" + std::to_string(g.number) + "|" + std::to_string(g.branch)
-                         + "|" + g.description.toStdString() + "|";
-        for (int p : g.parentCells) text += std::to_string(p) + ",";
+        std::string text = std::to_string(g.parent) + "|" + std::to_string(g.number) + "|" +
+                           std::to_string(g.branch) + "|" + g.description.toStdString() + "|";
+        for (int p : g.parentCells)
+            text += std::to_string(p) + ",";
         text += "|";
         for (int i = 0; i < CellCount; ++i) {
             text += g.selected[std::size_t(i)] ? "S" : "-";
-            text += g.cells[std::size_t(i)] ? serializeGenome(*g.cells[std::size_t(i)]) : std::string("(empty)");
+            text +=
+                g.cells[std::size_t(i)] ? serializeGenome(*g.cells[std::size_t(i)]) : std::string("(empty)");
         }
         result.push_back(text);
     }
@@ -934,7 +965,8 @@ TEST_F(SessionTest, NotResumingKeepsTheOldSession) {
     startSession(window, options);
     EXPECT_EQ(window.model()->cell(0)->dimension, 3);
     EXPECT_NE(window.model()->sessionFile(), firstFile) << "a new session has a file of its own";
-    EXPECT_EQ(folderEntries(sessionsFolder()).size(), 2) << folderEntries(sessionsFolder()).join(' ').toStdString();
+    EXPECT_EQ(folderEntries(sessionsFolder()).size(), 2)
+        << folderEntries(sessionsFolder()).join(' ').toStdString();
     const SavedSession previous = loadSession(firstFile);
     ASSERT_EQ(previous.history.size(), 1u);
     EXPECT_EQ(serializeGenome(*previous.history[0].cells[0]), first[0]);
@@ -985,7 +1017,8 @@ TEST_F(SessionTest, EveryChangeIsSavedAtomically) {
     expectSaved("breeding after going back (a new branch beside the old one)");
     window.newRandomPopulation(2);
     expectSaved("a new random population");
-    const QString design = QString::fromStdString((test::dataDir() / "examples" / "five-stones.marble.json").string());
+    const QString design =
+        QString::fromStdString((test::dataDir() / "examples" / "five-stones.marble.json").string());
     ASSERT_TRUE(window.openFiles({design}, 2));
     expectSaved("an opened file");
     dropFiles(window.cell(7), {design});
@@ -1072,7 +1105,8 @@ TEST_F(SessionTest, BadSessionDocumentsThrowInputErrors) {
     const std::string genome = serializeGenome(randomGenome(3, 2));
     const std::string cells = "[" + genome + ",null,null,null,null,null,null,null,null]";
     const std::string good = R"({"format":"marbler-session","version":1,"seed":5,"dimension":2,"current":0,)"
-                             R"("generations":[{"cells":)" + cells + "}]}";
+                             R"("generations":[{"cells":)" +
+                             cells + "}]}";
     EXPECT_EQ(fails(good), "(no error)");
     const SavedSession s = parseSession(good, "s.json");
     EXPECT_EQ(s.seed, 5u);
@@ -1133,8 +1167,9 @@ TEST_F(StartChoiceTest, StartDialogOffersToResumeASavedSession) {
 // The window's command line.
 
 TEST(WorkbenchArgsTest, HiddenOptionsAndFiles) {
-    const std::vector<std::string> words{"a.marble.json", "--seed", "17", "--screenshot=shot.png", "--solid",
-                                         "-platform", "offscreen", "-reverse", "--", "--odd-name.json"};
+    const std::vector<std::string> words{
+        "a.marble.json", "--seed",   "17", "--screenshot=shot.png", "--solid", "-platform",
+        "offscreen",     "-reverse", "--", "--odd-name.json"};
     const WorkbenchArgs args = parseWorkbenchArgs(words);
     EXPECT_EQ(args.error, "");
     EXPECT_EQ(args.files, (std::vector<std::string>{"a.marble.json", "--odd-name.json"}));
@@ -1153,7 +1188,8 @@ TEST(WorkbenchArgsTest, BadOptionsAreNamedOnOneLine) {
     EXPECT_EQ(error({"--seed", "x3"}), "marbler: --seed needs a whole number, not 'x3'");
     EXPECT_EQ(error({"--screenshot"}), "marbler: --screenshot needs a value");
     EXPECT_EQ(error({"--solid=yes"}), "marbler: unknown option --solid=yes (see marbler --help)");
-    for (const std::string& e : {error({"--bogus"}), error({"--seed"})}) EXPECT_EQ(e.find('\n'), std::string::npos);
+    for (const std::string& e : {error({"--bogus"}), error({"--seed"})})
+        EXPECT_EQ(e.find('\n'), std::string::npos);
 }
 
 TEST_F(WorkbenchTest, WindowRendersEveryCellOnTheCpu) {
@@ -1161,8 +1197,10 @@ TEST_F(WorkbenchTest, WindowRendersEveryCellOnTheCpu) {
     mWindow->show();
     QSignalSpy finished(mWindow.get(), &WorkbenchWindow::renderingFinished);
     // Resizing restarts renders after a debounce; wait until all nine have final images.
-    while (!mWindow->renderingDone() || finished.isEmpty()) ASSERT_TRUE(finished.wait(120000));
-    for (int i = 0; i < CellCount; ++i) EXPECT_FALSE(mWindow->cell(i)->image().isNull()) << "cell " << i;
+    while (!mWindow->renderingDone() || finished.isEmpty())
+        ASSERT_TRUE(finished.wait(120000));
+    for (int i = 0; i < CellCount; ++i)
+        EXPECT_FALSE(mWindow->cell(i)->image().isNull()) << "cell " << i;
 }
 
 // The render service on its own.
@@ -1185,10 +1223,13 @@ TEST(RenderServiceTest, GuiThreadRunsWhileALargeRenderIsInFlight) {
 
     // Work queued on the GUI thread after the request: a posted call and a repeating timer.
     bool postedRan = false, finalBeforePosted = false;
-    QMetaObject::invokeMethod(&service, [&] {
-        postedRan = true;
-        finalBeforePosted = finalArrived;
-    }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        &service,
+        [&] {
+            postedRan = true;
+            finalBeforePosted = finalArrived;
+        },
+        Qt::QueuedConnection);
     int ticks = 0;
     QTimer timer;
     QObject::connect(&timer, &QTimer::timeout, [&] { ++ticks; });
@@ -1210,13 +1251,14 @@ TEST(RenderServiceTest, NewerRequestSupersedesOlder) {
     QSignalSpy idle(&service, &RenderService::becameIdle);
     QImage finalImage;
     int finals = 0;
-    QObject::connect(&service, &RenderService::rendered, [&](std::uint64_t key, const QImage& image, bool final) {
-        EXPECT_EQ(key, 7u);
-        if (final) {
-            finalImage = image;
-            ++finals;
-        }
-    });
+    QObject::connect(&service, &RenderService::rendered,
+                     [&](std::uint64_t key, const QImage& image, bool final) {
+                         EXPECT_EQ(key, 7u);
+                         if (final) {
+                             finalImage = image;
+                             ++finals;
+                         }
+                     });
     RenderRequest first;
     first.genome = a;
     first.size = QSize(64, 64);
@@ -1246,7 +1288,8 @@ TEST(RenderServiceTest, GlRendersSolidOnAnObject) {
     QSignalSpy ready(&service, &RenderService::backendReady);
     ASSERT_TRUE(ready.wait(60000));
     EXPECT_TRUE(service.usesGl());
-    EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("OpenGL"))) << service.backendName().toStdString();
+    EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("OpenGL")))
+        << service.backendName().toStdString();
     QSignalSpy idle(&service, &RenderService::becameIdle);
     QImage finalImage;
     QObject::connect(&service, &RenderService::rendered, [&](std::uint64_t, const QImage& image, bool final) {
@@ -1263,7 +1306,8 @@ TEST(RenderServiceTest, GlRendersSolidOnAnObject) {
     const QRgb corner = finalImage.pixel(0, 0);
     bool varied = false;
     for (int y = 0; y < finalImage.height() && !varied; ++y)
-        for (int x = 0; x < finalImage.width() && !varied; ++x) varied = finalImage.pixel(x, y) != corner;
+        for (int x = 0; x < finalImage.width() && !varied; ++x)
+            varied = finalImage.pixel(x, y) != corner;
     EXPECT_TRUE(varied);
 }
 
@@ -1306,7 +1350,8 @@ TEST(RenderServiceTest, CpuChoiceShowsSolidsOnTheirObjectLikeGl) {
     QSignalSpy ready(&service, &RenderService::backendReady);
     ASSERT_TRUE(ready.wait(60000));
     EXPECT_FALSE(service.usesGl());
-    EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("CPU"))) << service.backendName().toStdString();
+    EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("CPU")))
+        << service.backendName().toStdString();
     QSignalSpy idle(&service, &RenderService::becameIdle);
     QImage preview, finalImage;
     QObject::connect(&service, &RenderService::rendered, [&](std::uint64_t, const QImage& image, bool final) {
@@ -1340,14 +1385,17 @@ TEST(RenderServiceTest, EnvironmentOverridesThePreference) {
     ASSERT_TRUE(ready.wait(60000));
     EXPECT_EQ(service.preference(), gl::BackendPreference::Gpu);
     EXPECT_FALSE(service.usesGl());
-    EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("CPU"))) << service.backendName().toStdString();
+    EXPECT_TRUE(service.backendName().startsWith(QStringLiteral("CPU")))
+        << service.backendName().toStdString();
     EXPECT_TRUE(service.backendReason().contains(QStringLiteral("CPU renderer was asked for")))
         << service.backendReason().toStdString();
     // The window's menu shows what the environment forces, and cannot change it.
     WorkbenchWindow window(&service);
     EXPECT_TRUE(window.rendererAction(gl::BackendPreference::Cpu)->isChecked());
     EXPECT_FALSE(window.rendererAction(gl::BackendPreference::Gpu)->isEnabled());
-    EXPECT_TRUE(window.rendererAction(gl::BackendPreference::Gpu)->toolTip().contains(QStringLiteral("MARBLER_RENDERER")));
+    EXPECT_TRUE(window.rendererAction(gl::BackendPreference::Gpu)
+                    ->toolTip()
+                    .contains(QStringLiteral("MARBLER_RENDERER")));
 }
 
 TEST_F(WorkbenchTest, AboutNamesTheBackEndNotTheStatusBar) {
@@ -1390,7 +1438,8 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
     window.model()->setSessionSeed(3);
     window.newRandomPopulation(2);
     QSignalSpy finished(&window, &WorkbenchWindow::renderingFinished);
-    while (!window.renderingDone()) ASSERT_TRUE(finished.wait(120000));
+    while (!window.renderingDone())
+        ASSERT_TRUE(finished.wait(120000));
 
     // Automatic: the GPU only where OpenGL is hardware.
     const gl::GlProbe probe = gl::probeGl();
@@ -1413,12 +1462,15 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
         EXPECT_EQ(QSettings().value(QStringLiteral("view/renderer")).toString().toStdString(),
                   gl::backendPreferenceName(preference));
         EXPECT_EQ(service.usesGl(), preference == gl::BackendPreference::Gpu);
-        const QString expected = preference == gl::BackendPreference::Gpu ? QStringLiteral("Rendering with OpenGL")
-                                                                          : QStringLiteral("Rendering on the CPU");
-        EXPECT_TRUE(window.rendererDescription().startsWith(expected)) << window.rendererDescription().toStdString();
+        const QString expected = preference == gl::BackendPreference::Gpu
+                                     ? QStringLiteral("Rendering with OpenGL")
+                                     : QStringLiteral("Rendering on the CPU");
+        EXPECT_TRUE(window.rendererDescription().startsWith(expected))
+            << window.rendererDescription().toStdString();
         EXPECT_TRUE(window.statusBar()->currentMessage().startsWith(expected))
             << window.statusBar()->currentMessage().toStdString();
-        while (!window.renderingDone() || finished.isEmpty()) ASSERT_TRUE(finished.wait(120000));
+        while (!window.renderingDone() || finished.isEmpty())
+            ASSERT_TRUE(finished.wait(120000));
         EXPECT_FALSE(window.cell(0)->image().isNull());
         EXPECT_EQ(window.cell(0)->image().size(), before.size());
     }

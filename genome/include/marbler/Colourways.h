@@ -43,8 +43,8 @@ Genome mixedColourway(const std::vector<Genome>& parents, std::size_t home, Pcg3
 
 struct ColourwayRequest {
     std::vector<Genome> parents;
-    bool mix = false;        ///< false: colourwayOf parents[0]; true: mixedColourway of all
-    double strength = 1.0;   ///< colourwayOf's strength
+    bool mix = false;      ///< false: colourwayOf parents[0]; true: mixedColourway of all
+    double strength = 1.0; ///< colourwayOf's strength
     std::uint64_t seed = 0;
     int count = 8;
     /// As BreedRequest (Operators.h): the generation children record and their names' numbers.

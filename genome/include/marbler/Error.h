@@ -45,7 +45,8 @@ public:
 /// Work stopped because the caller asked it to (a cancel button, a closed window).
 class Cancelled : public Error {
 public:
-    Cancelled() : Error("cancelled") {}
+    Cancelled()
+        : Error("cancelled") {}
 };
 
 } // namespace marbler

@@ -18,7 +18,19 @@
 namespace marbler {
 
 /// Every tool of the format, in the order of the registry (Params.h), which a static_assert holds.
-enum class Tool : std::uint8_t { Drop, Spray, Cylinder, Line, Comb, Wave, Circle, Sphere, Vortex, Stretch, Flow };
+enum class Tool : std::uint8_t {
+    Drop,
+    Spray,
+    Cylinder,
+    Line,
+    Comb,
+    Wave,
+    Circle,
+    Sphere,
+    Vortex,
+    Stretch,
+    Flow
+};
 inline constexpr int ToolCount = 11;
 
 /// The two shapes of a 3D wave.
@@ -37,20 +49,20 @@ struct Color {
 /// dimension (see the parameter tables); the others keep their defaults and are not saved.
 struct Operation {
     Tool tool = Tool::Drop;
-    glm::dvec3 center{0.0};             ///< `center` or `origin`
-    glm::dvec3 axis{0.0, 0.0, 1.0};     ///< 3D `axis` of cylinder, circle, sphere, vortex (unit)
+    glm::dvec3 center{0.0};              ///< `center` or `origin`
+    glm::dvec3 axis{0.0, 0.0, 1.0};      ///< 3D `axis` of cylinder, circle, sphere, vortex (unit)
     glm::dvec3 direction{1.0, 0.0, 0.0}; ///< 3D `direction` of line, comb, wave (unit)
-    glm::dvec3 normal{0.0, 1.0, 0.0};   ///< 3D `normal`, unit and orthogonal to `direction`
-    double angle = 0.0;                 ///< 2D direction, degrees, clockwise on screen
+    glm::dvec3 normal{0.0, 1.0, 0.0};    ///< 3D `normal`, unit and orthogonal to `direction`
+    double angle = 0.0;                  ///< 2D direction, degrees, clockwise on screen
     double radius = 1.0;
-    double alpha = 0.0;                 ///< largest shift
-    double lambda = 1.0;                ///< sharpness
-    double spacing = 1.0;               ///< distance between the tines of a comb
-    glm::dvec2 amplitude{0.0};          ///< wave; 2D and ripple use [0]
+    double alpha = 0.0;        ///< largest shift
+    double lambda = 1.0;       ///< sharpness
+    double spacing = 1.0;      ///< distance between the tines of a comb
+    glm::dvec2 amplitude{0.0}; ///< wave; 2D and ripple use [0]
     glm::dvec2 wavelength{1.0};
-    glm::dvec2 phase{0.0};              ///< degrees
+    glm::dvec2 phase{0.0}; ///< degrees
     WaveShape shape = WaveShape::Eggcrate;
-    int color = 0;                      ///< palette index of an ink-laying tool
+    int color = 0; ///< palette index of an ink-laying tool
     // Version 2.
     double core = 0.0;                  ///< circle, sphere, vortex: finite centre c >= 0
     std::vector<double> teeth;          ///< stretch: tooth positions along N, increasing
@@ -80,7 +92,7 @@ struct Genome {
     std::vector<Operation> initial;    ///< drops, sprays and (3D) cylinders, applied first
     std::vector<Operation> operations; ///< strokes applied after `initial`
     std::optional<SourceImage> source;
-    double bleed = 0.0;                ///< version 2: soft ink edges, width in design units
+    double bleed = 0.0; ///< version 2: soft ink edges, width in design units
     nlohmann::ordered_json meta = nlohmann::ordered_json::object();
 
     /// The folder relative paths of `source` are resolved against (the genome file's folder);
@@ -95,9 +107,9 @@ struct Genome {
     bool allowExternalSource = false;
 
     friend bool operator==(const Genome& a, const Genome& b) {
-        return a.dimension == b.dimension && a.size == b.size && a.background == b.background
-            && a.palette == b.palette && a.initial == b.initial && a.operations == b.operations
-            && a.source == b.source && a.bleed == b.bleed && a.meta == b.meta;
+        return a.dimension == b.dimension && a.size == b.size && a.background == b.background &&
+               a.palette == b.palette && a.initial == b.initial && a.operations == b.operations &&
+               a.source == b.source && a.bleed == b.bleed && a.meta == b.meta;
     }
 };
 

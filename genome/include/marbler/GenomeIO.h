@@ -15,7 +15,8 @@ namespace marbler {
 /// Parses genome text. `name` is how errors and warnings name the source (a file name).
 /// Warnings (unknown keys, skipped) are appended to `warnings` when given.
 /// Throws GenomeError.
-Genome parseGenome(std::string_view text, const std::string& name, std::vector<std::string>* warnings = nullptr);
+Genome parseGenome(std::string_view text, const std::string& name,
+                   std::vector<std::string>* warnings = nullptr);
 
 /// Loads a genome file (at most MaxFileBytes). Sets Genome::baseDirectory to its folder.
 /// Throws GenomeError (also for a file that cannot be read).

@@ -30,11 +30,11 @@ inline constexpr int MaxPaperPasses = 10;
 
 /// What a paper is made of. Sizes in millimetres.
 struct PaperOptions {
-    double width = 210.0;  ///< A4 by default
+    double width = 210.0; ///< A4 by default
     double height = 297.0;
-    int colors = 5;        ///< 1 to MaxPaperColors inks, one layer of drops each
-    int passes = 3;        ///< 0 to MaxPaperPasses stretch passes
-    bool pastel = false;   ///< pale, soft inks on a white bath instead of random ones
+    int colors = 5;      ///< 1 to MaxPaperColors inks, one layer of drops each
+    int passes = 3;      ///< 0 to MaxPaperPasses stretch passes
+    bool pastel = false; ///< pale, soft inks on a white bath instead of random ones
 };
 
 /// The smallest distance between two drop centres of one colour, in millimetres, for a sheet of
@@ -55,8 +55,8 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options);
 /// sampling, candidates drawn in the annulus [d, 2d] by rejection), each coordinate rounded
 /// to a hundredth before the distance is checked, in the order they were accepted; at most
 /// `maxCount` of them.
-std::vector<glm::dvec2> poissonDisk(Pcg32& rng, double x0, double y0, double x1, double y1, double minDistance,
-                                    std::size_t maxCount);
+std::vector<glm::dvec2> poissonDisk(Pcg32& rng, double x0, double y0, double x1, double y1,
+                                    double minDistance, std::size_t maxCount);
 
 /// The inks of a paper and its bath: random (any hue, vivid to muted, on a cream bath) or
 /// pastel (pale and soft, on a white bath), each ink kept apart from the others and the bath.

@@ -35,9 +35,29 @@ enum class ParamKind : std::uint8_t {
 
 /// Which field of Operation a parameter lives in.
 enum class ParamField : std::uint8_t {
-    Center, Axis, Direction, Normal, Angle, Radius, Alpha, Lambda, Spacing,
-    Amplitude, Wavelength, Phase, Shape, Color,
-    Core, Teeth, Shift, Power, Field, Size, Speed, Time, Steps, // version 2
+    Center,
+    Axis,
+    Direction,
+    Normal,
+    Angle,
+    Radius,
+    Alpha,
+    Lambda,
+    Spacing,
+    Amplitude,
+    Wavelength,
+    Phase,
+    Shape,
+    Color,
+    Core,
+    Teeth,
+    Shift,
+    Power,
+    Field,
+    Size,
+    Speed,
+    Time,
+    Steps, // version 2
 };
 
 /// The values a parameter may take: [min, max], or (min, max] where `minOpen`.
@@ -60,7 +80,7 @@ inline constexpr ParamRange NonNegativeNumber{0.0, std::numeric_limits<double>::
 
 /// One row of a tool's parameter table.
 struct ParamSpec {
-    std::string_view key;  ///< JSON key
+    std::string_view key; ///< JSON key
     /// The word the editor shows for it, in its parameter form and its tool panel alike ("Shift"
     /// for a stroke's alpha): one vocabulary, read from here by both.
     std::string_view label;
@@ -138,7 +158,7 @@ struct ToolSpec {
     /// Lays ink (drop, spray, cylinder): has a colour, is seen where a point lies in it, and is
     /// the only kind of tool `initial` holds.
     bool laysInk;
-    bool movesInk;         ///< everything but spray
+    bool movesInk; ///< everything but spray
     ShaderForm form2D, form3D;
     std::span<const ParamSpec> params2D;
     std::span<const ParamSpec> params3D;

@@ -2,8 +2,8 @@
 /// A small, explicitly seeded random engine (PCG32, O'Neill 2014) with its own distributions,
 /// so that a seed gives the same genome with every compiler and standard library.
 
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 
 namespace marbler {
 
@@ -45,7 +45,9 @@ public:
     }
 
     /// Uniform integer in [lo, hi] (inclusive).
-    int between(int lo, int hi) { return lo + static_cast<int>(below(static_cast<std::uint32_t>(hi - lo + 1))); }
+    int between(int lo, int hi) {
+        return lo + static_cast<int>(below(static_cast<std::uint32_t>(hi - lo + 1)));
+    }
 
     /// True with probability p.
     bool chance(double p) { return uniform() < p; }
@@ -81,6 +83,8 @@ inline Pcg32 childRng(std::uint64_t seed, int index, std::uint64_t salt, std::ui
 
 /// Rounds to a tenth so generated files stay readable; only basic operations, so the result is
 /// the same everywhere.
-inline double tenth(double x) { return std::round(x * 10.0) / 10.0; }
+inline double tenth(double x) {
+    return std::round(x * 10.0) / 10.0;
+}
 
 } // namespace marbler

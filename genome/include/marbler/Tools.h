@@ -22,24 +22,24 @@ struct PreparedOp {
     int dimension = 2;
     WaveShape shape = WaveShape::Eggcrate;
     ShaderForm form = ShaderForm::PushArea; ///< the tool's form in this dimension (Params.h)
-    int color = -1;         ///< palette index for ink-laying tools, else -1
-    glm::dvec3 c{0.0};      ///< center or origin
-    glm::dvec3 m{1, 0, 0};  ///< motion direction M (line, comb, wave 2D), wave 3D u
-    glm::dvec3 n{0, 1, 0};  ///< normal N (line, comb, wave 2D), wave 3D shift direction w
-    glm::dvec3 v{0, 0, 1};  ///< wave 3D second axis v = w x u
-    glm::dvec3 a{0, 0, 1};  ///< rotation or column axis (unit)
-    double r = 0.0;         ///< radius
-    double rPow = 0.0;      ///< r^d of the push: r^2 (2D drop, cylinder), r^3 (3D drop)
-    double alphaLambda = 0; ///< alpha * lambda
+    int color = -1;                         ///< palette index for ink-laying tools, else -1
+    glm::dvec3 c{0.0};                      ///< center or origin
+    glm::dvec3 m{1, 0, 0};                  ///< motion direction M (line, comb, wave 2D), wave 3D u
+    glm::dvec3 n{0, 1, 0};                  ///< normal N (line, comb, wave 2D), wave 3D shift direction w
+    glm::dvec3 v{0, 0, 1};                  ///< wave 3D second axis v = w x u
+    glm::dvec3 a{0, 0, 1};                  ///< rotation or column axis (unit)
+    double r = 0.0;                         ///< radius
+    double rPow = 0.0;                      ///< r^d of the push: r^2 (2D drop, cylinder), r^3 (3D drop)
+    double alphaLambda = 0;                 ///< alpha * lambda
     double lambda = 1.0;
     double spacing = 1.0;
     double amp[2] = {0, 0};
-    double freq[2] = {0, 0}; ///< 2 pi / wavelength
+    double freq[2] = {0, 0};  ///< 2 pi / wavelength
     double phase[2] = {0, 0}; ///< radians
     // Version 2.
-    double core2 = 0.0;      ///< core^2 of a circle, sphere or vortex (0: the version-1 turn)
-    double shift = 0.0;      ///< stretch: largest shift
-    double power = 1.0;      ///< stretch: tooth profile exponent
+    double core2 = 0.0;        ///< core^2 of a circle, sphere or vortex (0: the version-1 turn)
+    double shift = 0.0;        ///< stretch: largest shift
+    double power = 1.0;        ///< stretch: tooth profile exponent
     std::vector<double> teeth; ///< stretch: tooth positions along n
     FlowField field = FlowField::Cells;
     double size[2] = {1, 1}; ///< flow: Lx, Ly
@@ -94,13 +94,15 @@ double bleedCoverage(double e, double bleed);
 /// whose point is stored in `where`. Returns whether it stopped on an ink. The colour is
 /// c0 ink0 + (1 - c0)(c1 ink1 + (1 - c1)(... bath)) in linear light. With bleed 0 it meets at
 /// most one ink, the one traceColor returns.
-bool traceCovers(const std::vector<PreparedOp>& ops, double bleed, glm::dvec3 p, std::vector<InkCover>& covers,
-                 glm::dvec3* where = nullptr);
+bool traceCovers(const std::vector<PreparedOp>& ops, double bleed, glm::dvec3 p,
+                 std::vector<InkCover>& covers, glm::dvec3* where = nullptr);
 
 /// The velocity of a flow at local coordinates (x, y) (along its M and N), in those coordinates.
 glm::dvec2 flowVelocity(const PreparedOp& op, double x, double y);
 
 /// The distance-dependent shift l = alpha * lambda / (d + lambda).
-inline double shiftFor(const PreparedOp& op, double d) { return op.alphaLambda / (d + op.lambda); }
+inline double shiftFor(const PreparedOp& op, double d) {
+    return op.alphaLambda / (d + op.lambda);
+}
 
 } // namespace marbler

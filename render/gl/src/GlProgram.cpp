@@ -11,11 +11,16 @@ namespace {
 
 const char* stageName(GLenum type) {
     switch (type) {
-    case GL_VERTEX_SHADER: return "vertex";
-    case GL_FRAGMENT_SHADER: return "fragment";
-    case GL_COMPUTE_SHADER: return "compute";
-    case GL_GEOMETRY_SHADER: return "geometry";
-    default: return "shader";
+    case GL_VERTEX_SHADER:
+        return "vertex";
+    case GL_FRAGMENT_SHADER:
+        return "fragment";
+    case GL_COMPUTE_SHADER:
+        return "compute";
+    case GL_GEOMETRY_SHADER:
+        return "geometry";
+    default:
+        return "shader";
     }
 }
 
@@ -39,11 +44,13 @@ std::string programLog(QOpenGLFunctions_4_3_Core& gl, GLuint program) {
 
 } // namespace
 
-GLuint buildProgram(QOpenGLFunctions_4_3_Core& gl, const std::string& name, const std::vector<ShaderStage>& stages) {
+GLuint buildProgram(QOpenGLFunctions_4_3_Core& gl, const std::string& name,
+                    const std::vector<ShaderStage>& stages) {
     GLuint program = gl.glCreateProgram();
     std::vector<GLuint> shaders;
     auto cleanup = [&] {
-        for (GLuint s : shaders) gl.glDeleteShader(s);
+        for (GLuint s : shaders)
+            gl.glDeleteShader(s);
     };
     for (const ShaderStage& stage : stages) {
         GLuint shader = gl.glCreateShader(stage.type);
@@ -57,9 +64,9 @@ GLuint buildProgram(QOpenGLFunctions_4_3_Core& gl, const std::string& name, cons
             std::string log = shaderLog(gl, shader);
             cleanup();
             gl.glDeleteProgram(program);
-            throw RuntimeFailure("GL: the " + std::string(stageName(stage.type)) + " shader of " + name
-                                 + " does not compile:\n" + log + "\n--- assembled source ---\n"
-                                 + numberLines(stage.source));
+            throw RuntimeFailure("GL: the " + std::string(stageName(stage.type)) + " shader of " + name +
+                                 " does not compile:\n" + log + "\n--- assembled source ---\n" +
+                                 numberLines(stage.source));
         }
         gl.glAttachShader(program, shader);
     }
@@ -70,21 +77,26 @@ GLuint buildProgram(QOpenGLFunctions_4_3_Core& gl, const std::string& name, cons
         std::string log = programLog(gl, program);
         std::string sources;
         for (const ShaderStage& stage : stages)
-            sources += "--- " + std::string(stageName(stage.type)) + " source ---\n" + numberLines(stage.source);
+            sources +=
+                "--- " + std::string(stageName(stage.type)) + " source ---\n" + numberLines(stage.source);
         cleanup();
         gl.glDeleteProgram(program);
         throw RuntimeFailure("GL: program " + name + " does not link:\n" + log + "\n" + sources);
     }
-    for (GLuint s : shaders) gl.glDetachShader(program, s);
+    for (GLuint s : shaders)
+        gl.glDetachShader(program, s);
     cleanup();
     return program;
 }
 
-GlProgram::GlProgram(QOpenGLFunctions_4_3_Core& gl, const std::string& name, const std::vector<ShaderStage>& stages)
+GlProgram::GlProgram(QOpenGLFunctions_4_3_Core& gl, const std::string& name,
+                     const std::vector<ShaderStage>& stages)
     : mGl(&gl)
     , mId(buildProgram(gl, name, stages)) {}
 
-GLint GlProgram::uniform(const char* name) const { return mGl->glGetUniformLocation(mId, name); }
+GLint GlProgram::uniform(const char* name) const {
+    return mGl->glGetUniformLocation(mId, name);
+}
 
 void GlProgram::release() {
     if (mGl && mId) mGl->glDeleteProgram(mId);

@@ -17,7 +17,8 @@ struct ShaderStage {
 };
 
 /// Compiles and links; `name` names the program in errors. Returns the program object.
-GLuint buildProgram(QOpenGLFunctions_4_3_Core& gl, const std::string& name, const std::vector<ShaderStage>& stages);
+GLuint buildProgram(QOpenGLFunctions_4_3_Core& gl, const std::string& name,
+                    const std::vector<ShaderStage>& stages);
 
 /// A linked program and the uniform locations it was asked for, so a render looks them up once.
 class GlProgram {

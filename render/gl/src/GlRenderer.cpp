@@ -133,9 +133,9 @@ ContextParts makeContext(std::string& why) {
         if (!parts.surface->isValid() || !parts.context->makeCurrent(parts.surface.get())) continue;
         auto [major, minor] = parts.context->format().version();
         if (major * 10 + minor < 43) {
-            why = "OpenGL 4.3 is needed (shader storage buffers); the driver gives " + std::to_string(major) + "."
-                + std::to_string(minor) + " ("
-                + reinterpret_cast<const char*>(parts.context->functions()->glGetString(GL_RENDERER)) + ")";
+            why = "OpenGL 4.3 is needed (shader storage buffers); the driver gives " + std::to_string(major) +
+                  "." + std::to_string(minor) + " (" +
+                  reinterpret_cast<const char*>(parts.context->functions()->glGetString(GL_RENDERER)) + ")";
             continue;
         }
         parts.gl = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_4_3_Core>(parts.context.get());
@@ -146,8 +146,8 @@ ContextParts makeContext(std::string& why) {
         why = "the OpenGL 4.3 core functions cannot be resolved";
     }
     if (why.empty())
-        why = "no OpenGL context can be made on the \"" + QGuiApplication::platformName().toStdString()
-            + "\" platform";
+        why = "no OpenGL context can be made on the \"" + QGuiApplication::platformName().toStdString() +
+              "\" platform";
     return {};
 }
 
@@ -173,7 +173,8 @@ void tearDownAtExit() {
         std::lock_guard lock(live.mutex);
         pending.swap(live.teardown);
     }
-    for (auto& [key, teardown] : pending) teardown();
+    for (auto& [key, teardown] : pending)
+        teardown();
 }
 
 void registerExitHandler() {
@@ -203,22 +204,28 @@ GlProbe probeOnce() {
 }
 
 glm::vec3 linearColor(Color c) {
-    return {float(srgbToLinear(c.r / 255.0)), float(srgbToLinear(c.g / 255.0)), float(srgbToLinear(c.b / 255.0))};
+    return {float(srgbToLinear(c.r / 255.0)), float(srgbToLinear(c.g / 255.0)),
+            float(srgbToLinear(c.b / 255.0))};
 }
 
 /// The checks of a mesh render's settings; returns the unit cutting-plane normal and offset.
-void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal, double& cutOffset) {
+void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal,
+                       double& cutOffset) {
     if (genome.dimension != 3) throw InputError("a mesh render needs a solid (3D) genome");
-    if (settings.width < 1 || settings.height < 1 || settings.width > MaxMeshSide || settings.height > MaxMeshSide)
-        throw InputError("mesh render size must be 1 to " + std::to_string(MaxMeshSide) + " pixels a side (got "
-                         + std::to_string(settings.width) + "x" + std::to_string(settings.height) + ")");
+    if (settings.width < 1 || settings.height < 1 || settings.width > MaxMeshSide ||
+        settings.height > MaxMeshSide)
+        throw InputError("mesh render size must be 1 to " + std::to_string(MaxMeshSide) +
+                         " pixels a side (got " + std::to_string(settings.width) + "x" +
+                         std::to_string(settings.height) + ")");
     int n = settings.supersample;
-    if (n != 1 && n != 3 && n != 5) throw InputError("supersample must be 1, 3 or 5 (got " + std::to_string(n) + ")");
+    if (n != 1 && n != 3 && n != 5)
+        throw InputError("supersample must be 1, 3 or 5 (got " + std::to_string(n) + ")");
     if (!(settings.fovY > 1.0 && settings.fovY < 170.0))
         throw InputError("the field of view must lie between 1 and 170 degrees");
-    if (!std::isfinite(settings.yaw) || !std::isfinite(settings.pitch) || !(settings.distance >= 0.0)
-        || !std::isfinite(settings.distance) || !(settings.zoom > 0.0) || !std::isfinite(settings.zoom))
-        throw InputError("the camera needs finite yaw and pitch, a distance of 0 or more and a positive zoom");
+    if (!std::isfinite(settings.yaw) || !std::isfinite(settings.pitch) || !(settings.distance >= 0.0) ||
+        !std::isfinite(settings.distance) || !(settings.zoom > 0.0) || !std::isfinite(settings.zoom))
+        throw InputError(
+            "the camera needs finite yaw and pitch, a distance of 0 or more and a positive zoom");
     cutNormal = glm::dvec3(0.0);
     cutOffset = 0.0;
     if (settings.cut) {
@@ -234,7 +241,8 @@ void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::
 struct GBufferTargets {
     QOpenGLFunctions_4_3_Core* gl = nullptr;
     GLuint textures[2] = {0, 0}, depth = 0, fbo = 0;
-    explicit GBufferTargets(QOpenGLFunctions_4_3_Core* functions) : gl(functions) {}
+    explicit GBufferTargets(QOpenGLFunctions_4_3_Core* functions)
+        : gl(functions) {}
     GBufferTargets(const GBufferTargets&) = delete;
     GBufferTargets& operator=(const GBufferTargets&) = delete;
     ~GBufferTargets() {
@@ -286,7 +294,8 @@ struct GlRenderer::Impl {
     std::vector<glm::dvec3> meshPoints;
 
     void makeCurrent() {
-        if (!parts.context->makeCurrent(parts.surface.get())) throw RuntimeFailure("GL: the context cannot be made current");
+        if (!parts.context->makeCurrent(parts.surface.get()))
+            throw RuntimeFailure("GL: the context cannot be made current");
     }
 
     GLint limit(GLenum name) const {
@@ -300,9 +309,10 @@ struct GlRenderer::Impl {
     /// image is sampled and the version-2 features. Sixteen raster variants at most, each
     /// compiled on first use, so compiling costs nothing per genome.
     static std::string withDefines(std::string source, int dimension, bool hasSource, Features features) {
-        std::string defines = "#define MARBLER_DIMENSION " + std::to_string(dimension) + "\n#define MARBLER_HAS_SOURCE "
-            + (hasSource ? "1" : "0") + "\n#define MARBLER_VERSION2 " + (features.version2 ? "1" : "0")
-            + "\n#define MARBLER_BLEED " + (features.bleed ? "1" : "0") + "\n";
+        std::string defines = "#define MARBLER_DIMENSION " + std::to_string(dimension) +
+                              "\n#define MARBLER_HAS_SOURCE " + (hasSource ? "1" : "0") +
+                              "\n#define MARBLER_VERSION2 " + (features.version2 ? "1" : "0") +
+                              "\n#define MARBLER_BLEED " + (features.bleed ? "1" : "0") + "\n";
         source.insert(source.find('\n') + 1, defines);
         return source;
     }
@@ -312,22 +322,26 @@ struct GlRenderer::Impl {
         if (!program.id())
             program = GlProgram(*gl, "raster",
                                 {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
-                                 {GL_FRAGMENT_SHADER, withDefines(assembledShader("raster.frag"), dimension, hasSource, features)}});
+                                 {GL_FRAGMENT_SHADER, withDefines(assembledShader("raster.frag"), dimension,
+                                                                  hasSource, features)}});
         return program;
     }
 
     void buildMesh() {
         if (!gbuffer.id())
-            gbuffer = GlProgram(*gl, "gbuffer", {{GL_VERTEX_SHADER, assembledShader("gbuffer.vert")},
-                                                 {GL_FRAGMENT_SHADER, assembledShader("gbuffer.frag")}});
+            gbuffer = GlProgram(*gl, "gbuffer",
+                                {{GL_VERTEX_SHADER, assembledShader("gbuffer.vert")},
+                                 {GL_FRAGMENT_SHADER, assembledShader("gbuffer.frag")}});
     }
 
     /// Pass 2 of a mesh render, the colour rule per sample.
     GlProgram& buildShading(Features features) {
         GlProgram& program = mesh[features.index()];
         if (!program.id())
-            program = GlProgram(*gl, "mesh", {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
-                                              {GL_FRAGMENT_SHADER, withDefines(assembledShader("mesh.frag"), 3, false, features)}});
+            program = GlProgram(
+                *gl, "mesh",
+                {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
+                 {GL_FRAGMENT_SHADER, withDefines(assembledShader("mesh.frag"), 3, false, features)}});
         return program;
     }
 
@@ -340,14 +354,17 @@ struct GlRenderer::Impl {
         std::vector<float>& teeth = packedOps.teeth;
         if (packed.empty()) packed.assign(PackedOpFloats, 0.0f); // a bound buffer may not be empty
         if (teeth.empty()) teeth.assign(1, 0.0f);
-        if (packed.size() / 4 > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE))
-            || teeth.size() > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE)))
-            throw RuntimeFailure("GL: " + std::to_string(ops.size()) + " operations exceed this driver's buffer texture limit");
+        if (packed.size() / 4 > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE)) ||
+            teeth.size() > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE)))
+            throw RuntimeFailure("GL: " + std::to_string(ops.size()) +
+                                 " operations exceed this driver's buffer texture limit");
         // Unit 3 holds the records and unit 4 the teeth: 0 and 1 hold the mesh G-buffer, 2 the
         // source image.
-        auto bindBuffer = [this](GLuint buffer, GLuint texture, GLenum unit, GLenum format, const std::vector<float>& data) {
+        auto bindBuffer = [this](GLuint buffer, GLuint texture, GLenum unit, GLenum format,
+                                 const std::vector<float>& data) {
             gl->glBindBuffer(GL_TEXTURE_BUFFER, buffer);
-            gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_STREAM_DRAW);
+            gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
+                             GL_STREAM_DRAW);
             gl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
             gl->glActiveTexture(unit);
             gl->glBindTexture(GL_TEXTURE_BUFFER, texture);
@@ -387,13 +404,14 @@ struct GlRenderer::Impl {
     void checkFramebuffer(const char* what) {
         GLenum status = gl->glCheckFramebufferStatus(GL_FRAMEBUFFER);
         if (status != GL_FRAMEBUFFER_COMPLETE)
-            throw RuntimeFailure(std::string("GL: the ") + what + " framebuffer is incomplete (status 0x"
-                                 + std::to_string(status) + ")");
+            throw RuntimeFailure(std::string("GL: the ") + what + " framebuffer is incomplete (status 0x" +
+                                 std::to_string(status) + ")");
     }
 
     void checkErrors(const char* where) {
         GLenum error = gl->glGetError();
-        if (error != GL_NO_ERROR) throw RuntimeFailure(std::string("GL error ") + std::to_string(error) + " in " + where);
+        if (error != GL_NO_ERROR)
+            throw RuntimeFailure(std::string("GL error ") + std::to_string(error) + " in " + where);
     }
 
     void loadMeshToGpu(const std::string& name) {
@@ -422,7 +440,8 @@ struct GlRenderer::Impl {
         }
         gl->glBindVertexArray(meshVao);
         gl->glBindBuffer(GL_ARRAY_BUFFER, meshVbo);
-        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(),
+                         GL_STATIC_DRAW);
         gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshIbo);
         gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(data.indices.size() * sizeof(std::uint32_t)),
                          data.indices.data(), GL_STATIC_DRAW);
@@ -466,12 +485,14 @@ struct GlRenderer::Impl {
                          double cutOffset, GBufferTargets& targets);
 
     void release() {
-        for (GlProgram& program : raster) program.release();
+        for (GlProgram& program : raster)
+            program.release();
         if (opTexture) gl->glDeleteTextures(1, &opTexture);
         if (teethTexture) gl->glDeleteTextures(1, &teethTexture);
         if (teethBuffer) gl->glDeleteBuffers(1, &teethBuffer);
         gbuffer.release();
-        for (GlProgram& program : mesh) program.release();
+        for (GlProgram& program : mesh)
+            program.release();
         if (emptyVao) gl->glDeleteVertexArrays(1, &emptyVao);
         if (opBuffer) gl->glDeleteBuffers(1, &opBuffer);
         if (sourceTexture) gl->glDeleteTextures(1, &sourceTexture);
@@ -657,7 +678,6 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
     return image;
 }
 
-
 Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings) {
     glm::dvec3 cutNormal;
     double cutOffset = 0.0;
@@ -705,14 +725,16 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
 
         std::vector<std::uint8_t> rgba(std::size_t(settings.width) * std::size_t(settings.height) * 4);
         gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
-        gl->glReadPixels(0, 0, settings.width, settings.height, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, rgba.data());
+        gl->glReadPixels(0, 0, settings.width, settings.height, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE,
+                         rgba.data());
         d.checkErrors("the shading pass");
         image.width = settings.width;
         image.height = settings.height;
         image.rgb.resize(std::size_t(image.width) * std::size_t(image.height) * 3);
         for (int y = 0; y < image.height; ++y) {
             // GL's first row is the bottom of the view.
-            const std::uint8_t* in = rgba.data() + std::size_t(image.height - 1 - y) * std::size_t(image.width) * 4;
+            const std::uint8_t* in =
+                rgba.data() + std::size_t(image.height - 1 - y) * std::size_t(image.width) * 4;
             std::uint8_t* out = image.row(y);
             for (int x = 0; x < image.width; ++x) {
                 out[x * 3 + 0] = in[x * 4 + 0];
@@ -759,16 +781,17 @@ MeshGBuffer GlRenderer::renderMeshGBuffer(const Genome& genome, const MeshSettin
     return result;
 }
 
-MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings& settings, const glm::dvec3& cutNormal,
-                                       double cutOffset, GBufferTargets& targets) {
+MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings& settings,
+                                       const glm::dvec3& cutNormal, double cutOffset,
+                                       GBufferTargets& targets) {
     Impl& d = *this;
     const int n = settings.supersample;
     d.buildMesh();
     d.loadMeshToGpu(settings.mesh);
     int gw = settings.width * n, gh = settings.height * n;
     if (gw > d.limit(GL_MAX_TEXTURE_SIZE) || gh > d.limit(GL_MAX_TEXTURE_SIZE))
-        throw InputError("mesh render too large for this GPU at " + std::to_string(n) + "x" + std::to_string(n)
-                         + " supersampling");
+        throw InputError("mesh render too large for this GPU at " + std::to_string(n) + "x" +
+                         std::to_string(n) + " supersampling");
 
     // Fit: the largest uniform scale that keeps the object inside the design box, centred in it.
     // Its positions are then design coordinates, relative to the box centre (the reference).
@@ -831,7 +854,8 @@ MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings&
     frame[0][0] = frame[1][1] = frameScale;
     frame[3][0] = -frameScale * frameX;
     frame[3][1] = -frameScale * frameY;
-    glm::dmat4 projection = frame * glm::perspective(glm::radians(settings.fovY), aspect, nearPlane, farPlane);
+    glm::dmat4 projection =
+        frame * glm::perspective(glm::radians(settings.fovY), aspect, nearPlane, farPlane);
     glm::mat4 viewProjection(projection * lookAt);
     // A key light above and to the left of the camera.
     view.light = glm::normalize(toEye * 0.9 + cameraUp * 0.6 - right * 0.45);

@@ -102,8 +102,10 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
                 const std::size_t s = sampleOf[std::size_t(k)];
                 const int c = colors[std::size_t(k)];
                 const glm::dvec3 albedo =
-                    soften ? glm::dvec3(soft[std::size_t(k) * 3], soft[std::size_t(k) * 3 + 1], soft[std::size_t(k) * 3 + 2])
-                           : c >= 0 ? palette[std::size_t(c)] : background;
+                    soften   ? glm::dvec3(soft[std::size_t(k) * 3], soft[std::size_t(k) * 3 + 1],
+                                          soft[std::size_t(k) * 3 + 2])
+                    : c >= 0 ? palette[std::size_t(c)]
+                             : background;
                 const float* p = &g.positions[s * 4];
                 const float* nv = &g.normals[s * 4];
                 const auto x = std::size_t((s % std::size_t(gw)) / std::size_t(n));

@@ -10,16 +10,17 @@ namespace marbler::gl {
 
 MeshData loadMesh(const std::string& file) {
     Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(file, aiProcess_Triangulate | aiProcess_GenSmoothNormals
-                                                       | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices
-                                                       | aiProcess_SortByPType);
+    const aiScene* scene = importer.ReadFile(
+        file, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+                  aiProcess_PreTransformVertices | aiProcess_SortByPType);
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
         throw InputError(file + ": cannot load mesh: " + importer.GetErrorString());
     MeshData mesh;
     // Texture coordinates only when every mesh has them: a mix would leave some faces without.
     bool everyMeshHasUvs = true;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m)
-        if ((scene->mMeshes[m]->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) && !scene->mMeshes[m]->HasTextureCoords(0))
+        if ((scene->mMeshes[m]->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) &&
+            !scene->mMeshes[m]->HasTextureCoords(0))
             everyMeshHasUvs = false;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh* in = scene->mMeshes[m];
@@ -39,7 +40,8 @@ MeshData loadMesh(const std::string& file) {
         for (unsigned f = 0; f < in->mNumFaces; ++f) {
             const aiFace& face = in->mFaces[f];
             if (face.mNumIndices != 3) continue;
-            for (unsigned k = 0; k < 3; ++k) mesh.indices.push_back(base + face.mIndices[k]);
+            for (unsigned k = 0; k < 3; ++k)
+                mesh.indices.push_back(base + face.mIndices[k]);
         }
     }
     if (mesh.indices.empty()) throw InputError(file + ": cannot load mesh: no triangles in the file");

@@ -7,10 +7,10 @@ namespace marbler::gl {
 namespace {
 
 // The registry's shader forms are the classes of tools.glsl (its "Record layout").
-static_assert(static_cast<int>(ShaderForm::PushArea) == 0 && static_cast<int>(ShaderForm::PushVolume) == 1
-              && static_cast<int>(ShaderForm::Shift) == 2 && static_cast<int>(ShaderForm::WaveShift) == 3
-              && static_cast<int>(ShaderForm::Turn) == 4 && static_cast<int>(ShaderForm::Stretch) == 5
-              && static_cast<int>(ShaderForm::Flow) == 6);
+static_assert(static_cast<int>(ShaderForm::PushArea) == 0 && static_cast<int>(ShaderForm::PushVolume) == 1 &&
+              static_cast<int>(ShaderForm::Shift) == 2 && static_cast<int>(ShaderForm::WaveShift) == 3 &&
+              static_cast<int>(ShaderForm::Turn) == 4 && static_cast<int>(ShaderForm::Stretch) == 5 &&
+              static_cast<int>(ShaderForm::Flow) == 6);
 
 /// One record's coefficients besides its centre, ink and form (see tools.glsl).
 struct Coefficients {
@@ -90,14 +90,20 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
             k.radius = op.r;
             k.p5[0] = op.rPow;
             break;
-        case Tool::Spray: k.radius = op.r; break; // a push of strength 0: moves nothing
+        case Tool::Spray:
+            k.radius = op.r;
+            break; // a push of strength 0: moves nothing
         case Tool::Cylinder:
             k.projected = op.a;
             k.radius = op.r;
             k.p5[0] = op.rPow;
             break;
-        case Tool::Line: shiftCoefficients(op, 0.0, k); break;
-        case Tool::Comb: shiftCoefficients(op, op.spacing, k); break;
+        case Tool::Line:
+            shiftCoefficients(op, 0.0, k);
+            break;
+        case Tool::Comb:
+            shiftCoefficients(op, op.spacing, k);
+            break;
         case Tool::Wave:
             if (flat) {
                 k.direction = op.m;
@@ -115,9 +121,15 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
             k.p6[0] = op.phase[0];
             k.p6[1] = op.phase[1];
             break;
-        case Tool::Circle: turnCoefficients(op, flat ? glm::dvec3(0.0) : op.a, op.r, k); break;
-        case Tool::Sphere: turnCoefficients(op, glm::dvec3(0.0), op.r, k); break;
-        case Tool::Vortex: turnCoefficients(op, glm::dvec3(0.0), 0.0, k); break; // d = rho
+        case Tool::Circle:
+            turnCoefficients(op, flat ? glm::dvec3(0.0) : op.a, op.r, k);
+            break;
+        case Tool::Sphere:
+            turnCoefficients(op, glm::dvec3(0.0), op.r, k);
+            break;
+        case Tool::Vortex:
+            turnCoefficients(op, glm::dvec3(0.0), 0.0, k);
+            break; // d = rho
         case Tool::Stretch:
             // Teeth are distances along N from the origin, which the shader measures from the
             // origin too: they need no reference.
@@ -127,9 +139,12 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
             k.p5[1] = op.power;
             k.p5[2] = double(packed.teeth.size());
             k.p5[3] = double(op.teeth.size());
-            for (double t : op.teeth) packed.teeth.push_back(float(t));
+            for (double t : op.teeth)
+                packed.teeth.push_back(float(t));
             break;
-        case Tool::Flow: flowCoefficients(op, k); break;
+        case Tool::Flow:
+            flowCoefficients(op, k);
+            break;
         }
         put(c, inks ? op.r * op.r : -1.0);
         put(k.projected, inks ? op.color : -1);

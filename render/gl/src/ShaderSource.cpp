@@ -9,7 +9,9 @@
 #include <vector>
 
 // Resources of a static library are not registered until something asks for them.
-static void initShaderResources() { Q_INIT_RESOURCE(marbler_shaders); }
+static void initShaderResources() {
+    Q_INIT_RESOURCE(marbler_shaders);
+}
 
 namespace marbler::gl {
 namespace {
@@ -46,12 +48,14 @@ std::string expand(const std::string& source, const std::function<std::string(co
 std::string shaderFile(const std::string& name) {
     initShaderResources();
     QFile file(QStringLiteral(":/marbler/shaders/") + QString::fromStdString(name));
-    if (!file.open(QIODevice::ReadOnly)) throw RuntimeFailure("GLSL: no shader file \"" + name + "\" in the library");
+    if (!file.open(QIODevice::ReadOnly))
+        throw RuntimeFailure("GLSL: no shader file \"" + name + "\" in the library");
     QByteArray bytes = file.readAll();
     return std::string(bytes.constData(), std::size_t(bytes.size()));
 }
 
-std::string expandIncludes(const std::string& source, const std::function<std::string(const std::string&)>& load) {
+std::string expandIncludes(const std::string& source,
+                           const std::function<std::string(const std::string&)>& load) {
     std::vector<std::string> stack;
     std::set<std::string> done;
     return expand(source, load, stack, done);

@@ -23,8 +23,8 @@ std::string animationFrameName(int frame);
 /// file there, a folder replaces only an empty folder (the caller checks). `progress(frame,
 /// within)` is called from the rendering threads; `cancel` stops between and within frames.
 /// Throws InputError, RuntimeFailure, Cancelled.
-void writeAnimation(const Genome& genome, const RenderSettings& settings, const std::filesystem::path& out, int frames,
-                    double fps, const std::atomic<bool>* cancel = nullptr,
+void writeAnimation(const Genome& genome, const RenderSettings& settings, const std::filesystem::path& out,
+                    int frames, double fps, const std::atomic<bool>* cancel = nullptr,
                     const std::function<void(int frame, double within)>& progress = {});
 
 } // namespace marbler

@@ -61,12 +61,14 @@ public:
     /// that find their own sample points (an object's surface, shaded by the GL back end on the
     /// CPU). Safe to call from many threads at once.
     /// Both follow the hard colour rule: a genome's `bleed` is not applied (see linearColorsAt).
-    void colorIndicesAt(const double* x, const double* y, const double* z, std::size_t count, int* colors) const;
+    void colorIndicesAt(const double* x, const double* y, const double* z, std::size_t count,
+                        int* colors) const;
 
     /// The linear colours seen at `count` design points (z is ignored in 2D): rgb[3k .. 3k+2]
     /// for (x[k], y[k], z[k]), the ink, source or background, with the soft edges of a genome's
     /// `bleed` composited in linear light. Safe to call from many threads at once.
-    void linearColorsAt(const double* x, const double* y, const double* z, std::size_t count, double* rgb) const;
+    void linearColorsAt(const double* x, const double* y, const double* z, std::size_t count,
+                        double* rgb) const;
 
 private:
     struct Impl;

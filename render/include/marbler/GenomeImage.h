@@ -53,7 +53,8 @@ std::optional<std::string> genomeFromXmp(std::string_view packet);
 /// when the image is readable but carries none. `name` is how messages name the image.
 /// Throws InputError when the image cannot be read (truncated, corrupt, a chunk or tag over
 /// the size limit), naming it.
-std::optional<std::string> readGenomeText(const std::filesystem::path& file, ImageKind kind, const std::string& name);
+std::optional<std::string> readGenomeText(const std::filesystem::path& file, ImageKind kind,
+                                          const std::string& name);
 std::optional<std::string> readGenomeText(std::span<const unsigned char> bytes, ImageKind kind,
                                           const std::string& name);
 

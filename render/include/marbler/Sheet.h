@@ -16,11 +16,11 @@ namespace marbler {
 struct SheetSettings {
     int columns = 3;
     int cellWidth = 600;
-    int cellHeight = 0;          ///< 0: from the first design's aspect
-    int gap = 24;                ///< pixels between cells and around them
+    int cellHeight = 0; ///< 0: from the first design's aspect
+    int gap = 24;       ///< pixels between cells and around them
     Color paper{0xff, 0xff, 0xff};
-    std::string aa = "none";     ///< the cells' antialiasing (Sampling.h)
-    int threads = 0;             ///< 0: every core
+    std::string aa = "none"; ///< the cells' antialiasing (Sampling.h)
+    int threads = 0;         ///< 0: every core
 };
 
 /// The layout of a sheet of `count` designs: its size and where cell i's top left corner is.
@@ -34,15 +34,17 @@ struct SheetLayout {
 SheetLayout sheetLayout(const std::vector<Genome>& designs, const SheetSettings& settings);
 
 /// The cell settings a design of the sheet is rendered with.
-RenderSettings sheetCellSettings(const Genome& design, const SheetLayout& layout, const SheetSettings& settings);
+RenderSettings sheetCellSettings(const Genome& design, const SheetLayout& layout,
+                                 const SheetSettings& settings);
 
 /// Renders the sheet: the designs one after another, each on every core. Progress runs over
 /// the whole sheet. Throws InputError (a design's source image), Cancelled.
-Image renderSheet(const std::vector<Genome>& designs, const SheetSettings& settings, const RenderControl* control = nullptr);
+Image renderSheet(const std::vector<Genome>& designs, const SheetSettings& settings,
+                  const RenderControl* control = nullptr);
 
 /// Renders the sheet and writes it atomically (writeImage: PNG, TIFF, ...). The file carries no
 /// genome: a sheet is not the image of one design, so opening it as a design would mislead.
-void writeSheet(const std::vector<Genome>& designs, const SheetSettings& settings, const std::filesystem::path& file,
-                const RenderControl* control = nullptr);
+void writeSheet(const std::vector<Genome>& designs, const SheetSettings& settings,
+                const std::filesystem::path& file, const RenderControl* control = nullptr);
 
 } // namespace marbler

@@ -57,8 +57,8 @@ struct VectorOptions {
 
 /// The outline of one ink in the finished design.
 struct InkOutline {
-    std::size_t step = 0; ///< the ink's step: an index into initial, then operations
-    int color = 0;        ///< palette index
+    std::size_t step = 0;           ///< the ink's step: an index into initial, then operations
+    int color = 0;                  ///< palette index
     std::vector<glm::dvec2> points; ///< a closed polygon (the last point joins the first)
 };
 
@@ -67,12 +67,12 @@ struct VectorDesign {
     double width = 0.0, height = 0.0; ///< the design space
     Color background;
     std::vector<Color> palette;
-    std::vector<InkOutline> outlines; ///< oldest first: later outlines cover earlier ones
-    std::size_t vertexCount = 0;      ///< of every outline together
+    std::vector<InkOutline> outlines;  ///< oldest first: later outlines cover earlier ones
+    std::size_t vertexCount = 0;       ///< of every outline together
     std::size_t droppedAsStraight = 0; ///< vertices removed by simplification
-    std::size_t outlinesOutside = 0;  ///< inks pushed wholly out of the design space, left out
-    std::size_t gapsAtDepthCap = 0;   ///< gaps wider than the tolerance at VectorOptions::maxDepth
-    double bleed = 0.0; ///< the genome's soft edges, drawn as their hard middles (see above)
+    std::size_t outlinesOutside = 0;   ///< inks pushed wholly out of the design space, left out
+    std::size_t gapsAtDepthCap = 0;    ///< gaps wider than the tolerance at VectorOptions::maxDepth
+    double bleed = 0.0;                ///< the genome's soft edges, drawn as their hard middles (see above)
 };
 
 /// Traces every ink of a flat genome, on every core. Throws InputError for a solid (3D) genome, for a genome

@@ -34,7 +34,8 @@ bool isVideoFile(const std::filesystem::path& path);
 /// Opens a writer of `width` x `height` frames at `fps` frames a second (loads the video module
 /// on first use). Throws InputError for an extension it does not write, RuntimeFailure when the
 /// module or an encoder is missing or the file cannot be opened.
-std::unique_ptr<VideoWriter> openVideoWriter(const std::filesystem::path& path, int width, int height, double fps);
+std::unique_ptr<VideoWriter> openVideoWriter(const std::filesystem::path& path, int width, int height,
+                                             double fps);
 
 /// Reads the frames of a video (any format FFmpeg reads), one at a time.
 class VideoReader {

@@ -13,17 +13,23 @@ using namespace marbler;
 
 Genome design(int which) {
     switch (which) {
-    case 0: return randomGenome(7, 2);
-    case 1: return randomGenome(7, 3);
-    default: return familyGenome(*findFamily("nonpareil"), 7);
+    case 0:
+        return randomGenome(7, 2);
+    case 1:
+        return randomGenome(7, 3);
+    default:
+        return familyGenome(*findFamily("nonpareil"), 7);
     }
 }
 
-const char* label(int which) { return which == 0 ? "random 2D" : which == 1 ? "random 3D" : "nonpareil"; }
+const char* label(int which) {
+    return which == 0 ? "random 2D" : which == 1 ? "random 3D" : "nonpareil";
+}
 
 void BM_Glimpse(benchmark::State& state) {
     const Genome g = design(static_cast<int>(state.range(0)));
-    for (auto _ : state) benchmark::DoNotOptimize(glimpseOf(g));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(glimpseOf(g));
     state.SetLabel(label(static_cast<int>(state.range(0))));
 }
 BENCHMARK(BM_Glimpse)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
@@ -39,9 +45,11 @@ void BM_BreedEight(benchmark::State& state) {
     std::uint64_t seed = 0;
     for (auto _ : state) {
         request.seed = ++seed;
-        for (const Genome& child : breed(request)) redraws += child.meta["lineage"].value("redraws", 0);
+        for (const Genome& child : breed(request))
+            redraws += child.meta["lineage"].value("redraws", 0);
     }
-    state.SetLabel(std::string(label(static_cast<int>(state.range(0)))) + (state.range(1) == 0 ? ", alter" : ", reinit"));
+    state.SetLabel(std::string(label(static_cast<int>(state.range(0)))) +
+                   (state.range(1) == 0 ? ", alter" : ", reinit"));
     state.counters["redraws/child"] = benchmark::Counter(redraws / 8.0, benchmark::Counter::kAvgIterations);
 }
 BENCHMARK(BM_BreedEight)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond);

@@ -87,14 +87,28 @@ void runRenderer(benchmark::State& state, const Case& c, int threads) {
     state.counters["threads"] = settings.threads;
 }
 
-int allThreads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+int allThreads() {
+    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
 
-void BM_Flame2D_OneThread(benchmark::State& state) { runRenderer(state, flameCase(), 1); }
-void BM_Flame2D_AllThreads(benchmark::State& state) { runRenderer(state, flameCase(), allThreads()); }
-void BM_DropComb2D_OneThread(benchmark::State& state) { runRenderer(state, dropCombCase(), 1); }
-void BM_DropComb2D_TwoThreads(benchmark::State& state) { runRenderer(state, dropCombCase(), 2); }
-void BM_SlateSlice3D_OneThread(benchmark::State& state) { runRenderer(state, slateSliceCase(), 1); }
-void BM_SlateSlice3D_AllThreads(benchmark::State& state) { runRenderer(state, slateSliceCase(), allThreads()); }
+void BM_Flame2D_OneThread(benchmark::State& state) {
+    runRenderer(state, flameCase(), 1);
+}
+void BM_Flame2D_AllThreads(benchmark::State& state) {
+    runRenderer(state, flameCase(), allThreads());
+}
+void BM_DropComb2D_OneThread(benchmark::State& state) {
+    runRenderer(state, dropCombCase(), 1);
+}
+void BM_DropComb2D_TwoThreads(benchmark::State& state) {
+    runRenderer(state, dropCombCase(), 2);
+}
+void BM_SlateSlice3D_OneThread(benchmark::State& state) {
+    runRenderer(state, slateSliceCase(), 1);
+}
+void BM_SlateSlice3D_AllThreads(benchmark::State& state) {
+    runRenderer(state, slateSliceCase(), allThreads());
+}
 
 /// The tile kernel alone, on one thread: the samples of the render (one row per tile, as the
 /// renderer fills them) traced with no sampling set-up, no colour averaging and no sRGB
@@ -121,16 +135,21 @@ void kernelOnly(benchmark::State& state, const Case& c) {
             std::memcpy(tile->x, xs.data() + at, sizeof(double) * std::size_t(width));
             std::memcpy(tile->y, ys.data() + at, sizeof(double) * std::size_t(width));
             std::memcpy(tile->z, zs.data() + at, sizeof(double) * std::size_t(width));
-            for (int k = 0; k < width; ++k) tile->id[k] = k;
-            traversed += kernel::traceTile(ops.data(), ops.size(), c.genome.dimension, *tile, width, colors.data(),
-                                           nullptr, nullptr);
+            for (int k = 0; k < width; ++k)
+                tile->id[k] = k;
+            traversed += kernel::traceTile(ops.data(), ops.size(), c.genome.dimension, *tile, width,
+                                           colors.data(), nullptr, nullptr);
         }
         benchmark::DoNotOptimize(colors.data());
     }
     state.counters["sample_ops_per_s"] = benchmark::Counter(double(traversed), benchmark::Counter::kIsRate);
 }
-void BM_Flame2D_KernelOnly(benchmark::State& state) { kernelOnly(state, flameCase()); }
-void BM_SlateSlice3D_KernelOnly(benchmark::State& state) { kernelOnly(state, slateSliceCase()); }
+void BM_Flame2D_KernelOnly(benchmark::State& state) {
+    kernelOnly(state, flameCase());
+}
+void BM_SlateSlice3D_KernelOnly(benchmark::State& state) {
+    kernelOnly(state, slateSliceCase());
+}
 
 /// The samples of a render (pixel centres, no antialiasing) as arrays, in blocks of the SoA
 /// probe's size, shared out to `threads` workers block by block, as the renderer shares rows.
@@ -153,19 +172,21 @@ struct SampleBlocks {
     std::size_t count(std::size_t block) const { return std::min(probe::BlockSize, size() - begin(block)); }
 
     /// Calls work(block) for every block, on `threads` threads; returns the sum of its results.
-    template <typename Work>
-    std::uint64_t forEachBlock(int threads, const Work& work) const {
+    template <typename Work> std::uint64_t forEachBlock(int threads, const Work& work) const {
         std::atomic<std::size_t> next{0};
         std::atomic<std::uint64_t> total{0};
         auto worker = [&] {
             std::uint64_t sum = 0;
-            for (std::size_t b; (b = next.fetch_add(1)) < blocks;) sum += work(b);
+            for (std::size_t b; (b = next.fetch_add(1)) < blocks;)
+                sum += work(b);
             total += sum;
         };
         std::vector<std::thread> pool;
-        for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+        for (int t = 1; t < threads; ++t)
+            pool.emplace_back(worker);
         worker();
-        for (std::thread& t : pool) t.join();
+        for (std::thread& t : pool)
+            t.join();
         return total;
     }
 };
@@ -181,8 +202,12 @@ struct ProbeAndKernel {
     std::vector<int> probeColors, kernelColors;
 
     explicit ProbeAndKernel(const Case& c)
-        : ops(prepare(c.genome)), samples(c), x(samples.size()), y(samples.size()), probeColors(samples.size()),
-          kernelColors(samples.size()) {
+        : ops(prepare(c.genome))
+        , samples(c)
+        , x(samples.size())
+        , y(samples.size())
+        , probeColors(samples.size())
+        , kernelColors(samples.size()) {
         std::reverse(ops.begin(), ops.end());
     }
     bool probeHandles() const { return probe::handles(ops.data(), ops.size()); }
@@ -204,13 +229,15 @@ struct ProbeAndKernel {
         std::uint64_t traversed = samples.forEachBlock(threads, [&](std::size_t b) {
             thread_local std::unique_ptr<kernel::Tile> tile = std::make_unique<kernel::Tile>();
             std::uint64_t sum = 0;
-            for (std::size_t at = samples.begin(b), end = at + samples.count(b); at < end; at += kernel::TileSize) {
+            for (std::size_t at = samples.begin(b), end = at + samples.count(b); at < end;
+                 at += kernel::TileSize) {
                 const int n = static_cast<int>(std::min<std::size_t>(kernel::TileSize, end - at));
                 std::memcpy(tile->x, samples.x.data() + at, sizeof(double) * std::size_t(n));
                 std::memcpy(tile->y, samples.y.data() + at, sizeof(double) * std::size_t(n));
-                for (int k = 0; k < n; ++k) tile->id[k] = k;
-                sum += kernel::traceTile(ops.data(), ops.size(), 2, *tile, n, kernelColors.data() + at, nullptr,
-                                         nullptr);
+                for (int k = 0; k < n; ++k)
+                    tile->id[k] = k;
+                sum += kernel::traceTile(ops.data(), ops.size(), 2, *tile, n, kernelColors.data() + at,
+                                         nullptr, nullptr);
             }
             return sum;
         });
@@ -222,7 +249,8 @@ struct ProbeAndKernel {
     /// rounds as genome-format.md writes it, not as the reference does).
     int colourMismatches() const {
         int mismatches = 0;
-        for (std::size_t k = 0; k < samples.size(); ++k) mismatches += probeColors[k] != kernelColors[k];
+        for (std::size_t k = 0; k < samples.size(); ++k)
+            mismatches += probeColors[k] != kernelColors[k];
         return mismatches;
     }
 };
@@ -233,7 +261,8 @@ void soaProbe(benchmark::State& state, const Case& c, int threads) {
         state.SkipWithError("the probe handles 2D drops and combs only");
         return;
     }
-    for (auto _ : state) work.probePass(threads);
+    for (auto _ : state)
+        work.probePass(threads);
     work.kernelPass(1);
     state.counters["sample_ops_per_s"] =
         benchmark::Counter(work.probeSampleOps() * double(state.iterations()), benchmark::Counter::kIsRate);
@@ -245,10 +274,12 @@ void soaProbe(benchmark::State& state, const Case& c, int threads) {
 void kernelOnBlocks(benchmark::State& state, const Case& c, int threads) {
     ProbeAndKernel work(c);
     std::uint64_t traversed = 0;
-    for (auto _ : state) traversed += work.kernelPass(threads);
+    for (auto _ : state)
+        traversed += work.kernelPass(threads);
     state.counters["sample_ops_per_s"] = benchmark::Counter(double(traversed), benchmark::Counter::kIsRate);
     state.counters["ops_per_sample"] =
-        double(traversed) / (double(work.samples.size()) * double(std::max<benchmark::IterationCount>(1, state.iterations())));
+        double(traversed) /
+        (double(work.samples.size()) * double(std::max<benchmark::IterationCount>(1, state.iterations())));
     state.counters["threads"] = threads;
     state.SetLabel(cpuKernel().name);
 }
@@ -284,12 +315,24 @@ void kernelVsProbe(benchmark::State& state, const Case& c, int threads) {
     state.SetLabel(cpuKernel().name);
 }
 
-void BM_DropComb2D_SoaProbe_OneThread(benchmark::State& state) { soaProbe(state, dropCombCase(), 1); }
-void BM_DropComb2D_SoaProbe_TwoThreads(benchmark::State& state) { soaProbe(state, dropCombCase(), 2); }
-void BM_DropComb2D_Kernel_OneThread(benchmark::State& state) { kernelOnBlocks(state, dropCombCase(), 1); }
-void BM_DropComb2D_Kernel_TwoThreads(benchmark::State& state) { kernelOnBlocks(state, dropCombCase(), 2); }
-void BM_DropComb2D_KernelVsProbe_OneThread(benchmark::State& state) { kernelVsProbe(state, dropCombCase(), 1); }
-void BM_DropComb2D_KernelVsProbe_TwoThreads(benchmark::State& state) { kernelVsProbe(state, dropCombCase(), 2); }
+void BM_DropComb2D_SoaProbe_OneThread(benchmark::State& state) {
+    soaProbe(state, dropCombCase(), 1);
+}
+void BM_DropComb2D_SoaProbe_TwoThreads(benchmark::State& state) {
+    soaProbe(state, dropCombCase(), 2);
+}
+void BM_DropComb2D_Kernel_OneThread(benchmark::State& state) {
+    kernelOnBlocks(state, dropCombCase(), 1);
+}
+void BM_DropComb2D_Kernel_TwoThreads(benchmark::State& state) {
+    kernelOnBlocks(state, dropCombCase(), 2);
+}
+void BM_DropComb2D_KernelVsProbe_OneThread(benchmark::State& state) {
+    kernelVsProbe(state, dropCombCase(), 1);
+}
+void BM_DropComb2D_KernelVsProbe_TwoThreads(benchmark::State& state) {
+    kernelVsProbe(state, dropCombCase(), 2);
+}
 
 /// The per-pixel scalar loop the tile kernel replaces: the reference traceColor per sample.
 void scalarBaseline(benchmark::State& state, const Case& c) {
@@ -298,14 +341,19 @@ void scalarBaseline(benchmark::State& state, const Case& c) {
     for (auto _ : state) {
         long sum = 0;
         for (int j = 0; j < c.settings.height; ++j)
-            for (int i = 0; i < c.settings.width; ++i) sum += traceColor(ops, frame.at(i, j, 0.0, 0.0));
+            for (int i = 0; i < c.settings.width; ++i)
+                sum += traceColor(ops, frame.at(i, j, 0.0, 0.0));
         benchmark::DoNotOptimize(sum);
     }
     state.counters["sample_ops_per_s"] =
         benchmark::Counter(double(c.sampleOps) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
-void BM_Flame2D_ScalarReference(benchmark::State& state) { scalarBaseline(state, flameCase()); }
-void BM_SlateSlice3D_ScalarReference(benchmark::State& state) { scalarBaseline(state, slateSliceCase()); }
+void BM_Flame2D_ScalarReference(benchmark::State& state) {
+    scalarBaseline(state, flameCase());
+}
+void BM_SlateSlice3D_ScalarReference(benchmark::State& state) {
+    scalarBaseline(state, slateSliceCase());
+}
 
 /// One flow (version 2) alone, on one thread: the cost of one implicit midpoint step per sample
 /// (its fixed-point iterations included), for the tile kernel and for the scalar reference, on
@@ -338,7 +386,8 @@ void flowKernel(benchmark::State& state, FlowField field) {
         benchmark::DoNotOptimize(tile->x);
         samples += kernel::TileSize;
     }
-    state.counters["sample_steps_per_s"] = benchmark::Counter(double(samples) * op.steps, benchmark::Counter::kIsRate);
+    state.counters["sample_steps_per_s"] =
+        benchmark::Counter(double(samples) * op.steps, benchmark::Counter::kIsRate);
     state.counters["ns_per_sample_step"] = benchmark::Counter(
         double(samples) * op.steps, benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
         benchmark::Counter::OneK::kIs1000);
@@ -355,15 +404,24 @@ void flowReference(benchmark::State& state, FlowField field) {
         }
         samples += kernel::TileSize;
     }
-    state.counters["sample_steps_per_s"] = benchmark::Counter(double(samples) * op.steps, benchmark::Counter::kIsRate);
+    state.counters["sample_steps_per_s"] =
+        benchmark::Counter(double(samples) * op.steps, benchmark::Counter::kIsRate);
     state.counters["ns_per_sample_step"] = benchmark::Counter(
         double(samples) * op.steps, benchmark::Counter::kIsRate | benchmark::Counter::kInvert,
         benchmark::Counter::OneK::kIs1000);
 }
-void BM_FlowCells_Kernel(benchmark::State& state) { flowKernel(state, FlowField::Cells); }
-void BM_FlowCells_ScalarReference(benchmark::State& state) { flowReference(state, FlowField::Cells); }
-void BM_FlowCavity_Kernel(benchmark::State& state) { flowKernel(state, FlowField::Cavity); }
-void BM_FlowCavity_ScalarReference(benchmark::State& state) { flowReference(state, FlowField::Cavity); }
+void BM_FlowCells_Kernel(benchmark::State& state) {
+    flowKernel(state, FlowField::Cells);
+}
+void BM_FlowCells_ScalarReference(benchmark::State& state) {
+    flowReference(state, FlowField::Cells);
+}
+void BM_FlowCavity_Kernel(benchmark::State& state) {
+    flowKernel(state, FlowField::Cavity);
+}
+void BM_FlowCavity_ScalarReference(benchmark::State& state) {
+    flowReference(state, FlowField::Cavity);
+}
 
 /// The bleed test design (tests/data/render/bleed-2d) rendered on one thread at 512 x 410 with
 /// its bleed and with bleed 0: what soft edges cost (every ink met is composited, and a point
@@ -383,8 +441,12 @@ const Case& bleedCase(bool soft) {
     }();
     return soft ? bled : hard;
 }
-void BM_Bleed2D_Hard_OneThread(benchmark::State& state) { runRenderer(state, bleedCase(false), 1); }
-void BM_Bleed2D_Soft_OneThread(benchmark::State& state) { runRenderer(state, bleedCase(true), 1); }
+void BM_Bleed2D_Hard_OneThread(benchmark::State& state) {
+    runRenderer(state, bleedCase(false), 1);
+}
+void BM_Bleed2D_Soft_OneThread(benchmark::State& state) {
+    runRenderer(state, bleedCase(true), 1);
+}
 
 // Real time: the renderer's own threads do the work, so the calling thread's CPU time would
 // overstate the rate.

@@ -78,8 +78,12 @@ void BM_EditorDragFrame(benchmark::State& state, bool dragging) {
     state.counters["height"] = canvas.image().height();
 }
 
-BENCHMARK_CAPTURE(BM_EditorDragFrame, coarse_while_dragging, true)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_EditorDragFrame, sharp_after_release, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_EditorDragFrame, coarse_while_dragging, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_EditorDragFrame, sharp_after_release, false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 } // namespace
 

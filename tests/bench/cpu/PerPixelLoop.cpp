@@ -75,9 +75,11 @@ using namespace marbler;
             break;
         }
         case Tool::Cylinder:
-        case Tool::Sphere: break; // 3D only
+        case Tool::Sphere:
+            break; // 3D only
         case Tool::Stretch:
-        case Tool::Flow: break; // version 2: not in the benchmark's genomes
+        case Tool::Flow:
+            break; // version 2: not in the benchmark's genomes
         }
     }
     return -1;
@@ -86,9 +88,9 @@ using namespace marbler;
 /// Rows first, first + step, ... of the image. Compiled for AVX-512, AVX2 and baseline x86-64
 /// (the loader picks), as `marbler render`'s kernel is, so the comparison gives the plain loop
 /// the same instructions.
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void renderRows(
-    const Genome& genome, const std::vector<PreparedOp>& ops, int width, int height, int first, int step,
-    std::uint8_t* rgb) {
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void
+renderRows(const Genome& genome, const std::vector<PreparedOp>& ops, int width, int height, int first,
+           int step, std::uint8_t* rgb) {
     const double su = genome.size.x / width, sv = genome.size.y / height;
     for (int j = first; j < height; j += step) {
         std::uint8_t* out = rgb + std::size_t(j) * std::size_t(width) * 3;
@@ -110,11 +112,13 @@ int run(int argc, char** argv) {
     }
     const Genome genome = loadGenome(argv[1]);
     if (genome.dimension != 2 || genome.source)
-        throw InputError(std::string(argv[1]) + ": perpixel_render draws 2D genomes without a source image only");
+        throw InputError(std::string(argv[1]) +
+                         ": perpixel_render draws 2D genomes without a source image only");
     const int width = std::atoi(argv[3]);
     const int height = static_cast<int>(std::round(width / (genome.size.x / genome.size.y)));
     if (width < 1 || width > 65536 || height < 1 || height > 65536)
-        throw InputError(std::string("WIDTH: '") + argv[3] + "' is not a width from 1 to 65536 (or the height is not)");
+        throw InputError(std::string("WIDTH: '") + argv[3] +
+                         "' is not a width from 1 to 65536 (or the height is not)");
 
     std::vector<PreparedOp> ops = prepare(genome);
     std::reverse(ops.begin(), ops.end());
@@ -122,9 +126,11 @@ int run(int argc, char** argv) {
     auto rows = [&](int first, int step) { renderRows(genome, ops, width, height, first, step, rgb.data()); };
     const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(rows, t, threads);
+    for (int t = 1; t < threads; ++t)
+        pool.emplace_back(rows, t, threads);
     rows(0, threads);
-    for (std::thread& t : pool) t.join();
+    for (std::thread& t : pool)
+        t.join();
 
     std::FILE* file = std::fopen(argv[2], "wb");
     if (!file) throw RuntimeFailure(std::string("cannot write ") + argv[2]);

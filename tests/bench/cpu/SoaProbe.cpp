@@ -12,7 +12,8 @@ namespace marbler::probe {
 namespace {
 
 /// Inverse 2D drop: the ink test, then the push; points already coloured keep their colour.
-[[gnu::always_inline]] inline void drop(const PreparedOp& op, double* __restrict x, double* __restrict y, int* __restrict colors, std::size_t n) {
+[[gnu::always_inline]] inline void drop(const PreparedOp& op, double* __restrict x, double* __restrict y,
+                                        int* __restrict colors, std::size_t n) {
     const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r, r2 = op.rPow;
     const int color = op.color;
     for (std::size_t i = 0; i < n; ++i) {
@@ -26,7 +27,8 @@ namespace {
 }
 
 /// Inverse 2D comb: shift back along M by l(d), d the distance to the nearest tine.
-[[gnu::always_inline]] inline void comb(const PreparedOp& op, double* __restrict x, double* __restrict y, std::size_t n) {
+[[gnu::always_inline]] inline void comb(const PreparedOp& op, double* __restrict x, double* __restrict y,
+                                        std::size_t n) {
     const double cx = op.c.x, cy = op.c.y, nx = op.n.x, ny = op.n.y, mx = op.m.x, my = op.m.y;
     const double al = op.alphaLambda, lambda = op.lambda, s = op.spacing;
     for (std::size_t i = 0; i < n; ++i) {
@@ -39,12 +41,14 @@ namespace {
     }
 }
 
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void traceBlock(
-    const PreparedOp* ops, std::size_t count, double* x, double* y, int* colors, std::size_t n) {
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void
+traceBlock(const PreparedOp* ops, std::size_t count, double* x, double* y, int* colors, std::size_t n) {
     std::fill(colors, colors + n, -1);
     for (std::size_t k = 0; k < count; ++k) {
-        if (ops[k].tool == Tool::Drop) drop(ops[k], x, y, colors, n);
-        else comb(ops[k], x, y, n);
+        if (ops[k].tool == Tool::Drop)
+            drop(ops[k], x, y, colors, n);
+        else
+            comb(ops[k], x, y, n);
     }
 }
 

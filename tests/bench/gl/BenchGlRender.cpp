@@ -25,7 +25,8 @@ Genome makeGenome(int entries, int dimension) {
     genome.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}, {0x2e, 0x6e, 0x5e}};
     Pcg32 rng(2024);
     auto point = [&] {
-        return glm::dvec3(rng.uniform(0, 1000), rng.uniform(0, 1000), dimension == 3 ? rng.uniform(0, 1000) : 0.0);
+        return glm::dvec3(rng.uniform(0, 1000), rng.uniform(0, 1000),
+                          dimension == 3 ? rng.uniform(0, 1000) : 0.0);
     };
     for (int k = 0; k < entries / 2; ++k) {
         Operation drop;
@@ -80,7 +81,8 @@ Genome makeVersion2Genome(int entries, double bleed) {
         if (k % 10 == 3) {
             op.tool = Tool::Stretch;
             op.teeth.clear();
-            for (int t = 0; t < 12; ++t) op.teeth.push_back(-800.0 + t * 130.0 + rng.uniform(0, 40));
+            for (int t = 0; t < 12; ++t)
+                op.teeth.push_back(-800.0 + t * 130.0 + rng.uniform(0, 40));
             op.shift = rng.uniform(-60, 60);
             op.power = rng.uniform(0.5, 3.0);
         }
@@ -118,7 +120,9 @@ void BM_Version2Design1024(benchmark::State& state) {
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-const char* aaName(int64_t index) { return index ? "rgss" : "none"; }
+const char* aaName(int64_t index) {
+    return index ? "rgss" : "none";
+}
 
 void BM_Design1024(benchmark::State& state) {
     gl::GlRenderer* gl = renderer(state);
@@ -140,12 +144,14 @@ void BM_Thumbnails3x3(benchmark::State& state) {
     gl::GlRenderer* gl = renderer(state);
     if (!gl) return;
     std::vector<Genome> genomes;
-    for (int k = 0; k < 9; ++k) genomes.push_back(makeGenome(int(state.range(0)), 2));
+    for (int k = 0; k < 9; ++k)
+        genomes.push_back(makeGenome(int(state.range(0)), 2));
     RenderSettings settings;
     settings.width = settings.height = 256;
     settings.aa = aaName(state.range(1));
     for (auto _ : state) {
-        for (const Genome& genome : genomes) benchmark::DoNotOptimize(gl->render(genome, settings).rgb.data());
+        for (const Genome& genome : genomes)
+            benchmark::DoNotOptimize(gl->render(genome, settings).rgb.data());
         gl->finish();
     }
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
@@ -167,9 +173,21 @@ void BM_Mesh512(benchmark::State& state) {
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-BENCHMARK(BM_Design1024)->ArgsProduct({{10, 100, 1000}, {0, 1}})->ArgNames({"ops", "rgss"})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Thumbnails3x3)->ArgsProduct({{10, 100, 1000}, {0, 1}})->ArgNames({"ops", "rgss"})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Version2Design1024)->ArgsProduct({{100}, {0, 1}, {0, 10}})->ArgNames({"ops", "v2tools", "bleed"})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Design1024)
+    ->ArgsProduct({{10, 100, 1000}, {0, 1}})
+    ->ArgNames({"ops", "rgss"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Thumbnails3x3)
+    ->ArgsProduct({{10, 100, 1000}, {0, 1}})
+    ->ArgNames({"ops", "rgss"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Version2Design1024)
+    ->ArgsProduct({{100}, {0, 1}, {0, 10}})
+    ->ArgNames({"ops", "v2tools", "bleed"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_Mesh512)->Arg(100)->ArgName("ops")->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace

@@ -37,16 +37,16 @@ struct MeshSettings {
     /// Magnification of the image about the view's centre (the framed object's centre), by
     /// narrowing the frustum: the eye stays where it is, outside the object.
     double zoom = 1.0;
-    bool lighting = true;            ///< false: the marbling's own colours, unlit (tests, flat previews)
-    int supersample = 3;             ///< 1, 3 or 5 (n x n)
+    bool lighting = true; ///< false: the marbling's own colours, unlit (tests, flat previews)
+    int supersample = 3;  ///< 1, 3 or 5 (n x n)
     std::optional<CutPlane> cut;
     Color clearColor{0x2b, 0x2b, 0x2b};
     int threads = 0; ///< CPU workers when the CPU shades the samples (renderMeshHybrid); 0: every core
 };
 
 /// The first pass of a mesh render, read back: per sample of the n x n supersampled raster
-/// (width * n by height * n, rows bottom to top as GL reads them), where the object is seen, for a caller that
-/// colours the samples itself (the CPU kernel, where the GL is a software rasteriser).
+/// (width * n by height * n, rows bottom to top as GL reads them), where the object is seen, for a caller
+/// that colours the samples itself (the CPU kernel, where the GL is a software rasteriser).
 struct MeshGBuffer {
     int width = 0, height = 0; ///< the output raster
     int supersample = 1;       ///< n

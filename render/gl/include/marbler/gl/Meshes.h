@@ -8,9 +8,9 @@
 
 namespace marbler::gl {
 
-using marbler::MeshData;
 using marbler::builtinMesh;
 using marbler::builtinMeshNames;
+using marbler::MeshData;
 
 /// Reads OBJ, STL, PLY, glTF and whatever else assimp knows, every mesh of the scene merged
 /// with its node transforms applied, with the first set of texture coordinates when every mesh

@@ -14,7 +14,8 @@ std::string shaderFile(const std::string& name);
 
 /// Expands `#include "name"` lines (recursively; a file includes at most once per source, and a
 /// cycle throws RuntimeFailure). `load` provides the text of a named file.
-std::string expandIncludes(const std::string& source, const std::function<std::string(const std::string&)>& load);
+std::string expandIncludes(const std::string& source,
+                           const std::function<std::string(const std::string&)>& load);
 
 /// A shipped shader with its includes expanded.
 std::string assembledShader(const std::string& name);
