@@ -14,6 +14,7 @@ cd "$(dirname "$0")"
 # openimageio-tools and Qt 5 are installed.
 PACKAGES=(
     build-essential cmake ninja-build pkg-config
+    clang-format git                             # the format check, first in ./dev.sh test
     clang libclang-rt-14-dev                     # the fuzzer build (fuzz/run.sh)
     qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libgl1-mesa-dev libgl1-mesa-dri libegl1
     libglm-dev nlohmann-json3-dev
@@ -61,6 +62,20 @@ run_ctest() {
         ctest --test-dir "$dir" --output-on-failure -j "$JOBS" "$@"
 }
 
+# The tree stays as the committed .clang-format writes it: every tracked C++ source checked,
+# in a second or two, before anything is built.
+check_format() {
+    echo "== format (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | head -1))"
+    local bad
+    bad=$(git ls-files '*.cpp' '*.h' | grep -v '^tests/data/' | xargs clang-format --dry-run 2>&1 |
+        grep -o '^[^:]*\.\(cpp\|h\):' | sort -u | tr -d ':') || true
+    if [ -n "$bad" ]; then
+        echo "not formatted with .clang-format (run: clang-format -i FILE):" >&2
+        echo "$bad" >&2
+        exit 1
+    fi
+}
+
 case "${1:-}" in
 start)
     install_missing
@@ -70,6 +85,7 @@ start)
     ;;
 test)
     install_missing
+    check_format
     echo "== release build and tests"
     build build
     run_ctest build
