@@ -471,28 +471,21 @@ void EditorCanvas::drawCaption(QPainter& p) const {
 void EditorCanvas::drawStepOutline(QPainter& painter, const Operation& op) const {
     const QPointF c = toWidget(op.center);
     const double scale = mView.scale() / devicePixelRatioF(); // widget pixels a design unit
-    switch (op.tool) {
-    case Tool::Drop:
-    case Tool::Spray:
-    case Tool::Cylinder:
-    case Tool::Circle:
-    case Tool::Sphere: {
+    switch (toolSpec(op.tool).outline) {
+    case StepOutline::Radius: {
         const double r = op.radius * scale;
         painter.drawEllipse(c, r, r);
         break;
     }
-    case Tool::Vortex: {
+    case StepOutline::Alpha: {
         const double r = std::abs(op.alpha) * scale;
         painter.drawEllipse(c, r, r);
         break;
     }
-    case Tool::Flow:
+    case StepOutline::Extent:
         painter.drawRect(QRectF(c, QSizeF(op.extent.x * scale, op.extent.y * scale)));
         break;
-    case Tool::Line:
-    case Tool::Comb:
-    case Tool::Wave:
-    case Tool::Stretch:
+    case StepOutline::None:
         break; // strokes across the whole design: the handles say enough
     }
 }

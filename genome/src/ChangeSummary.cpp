@@ -182,34 +182,9 @@ std::string withArticle(std::string_view name) {
     return (vowel ? "an " : "a ") + std::string(name);
 }
 
-/// "combs", "stretches", "vortices": spelled out per tool (no rule covers English), and a
-/// switch with no default, so a new tool does not build until it has its plural.
+/// "combs", "stretches", "vortices": the registry spells each out (no rule covers English).
 std::string plural(Tool tool) {
-    switch (tool) {
-    case Tool::Drop:
-        return "drops";
-    case Tool::Spray:
-        return "sprays";
-    case Tool::Cylinder:
-        return "cylinders";
-    case Tool::Line:
-        return "lines";
-    case Tool::Comb:
-        return "combs";
-    case Tool::Wave:
-        return "waves";
-    case Tool::Circle:
-        return "circles";
-    case Tool::Sphere:
-        return "spheres";
-    case Tool::Vortex:
-        return "vortices";
-    case Tool::Stretch:
-        return "stretches";
-    case Tool::Flow:
-        return "flows";
-    }
-    return std::string(toolSpec(tool).name) + "s";
+    return std::string(toolSpec(tool).plural);
 }
 
 /// The pairs of steps matched by the longest common run of their tools; nothing when

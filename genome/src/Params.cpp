@@ -79,63 +79,63 @@ using SF = ShaderForm;
 /// The registry, in the order of enum Tool. The editor's words stay as its tool bar has always
 /// shown them; cylinder and sphere have no gesture (made in the step form only).
 constexpr std::array<ToolSpec, ToolCount> Tools{{
-    {.tool = Tool::Drop, .name = "drop", .in2D = true, .in3D = true, .laysInk = true, .movesInk = true,
-     .form2D = SF::PushArea, .form3D = SF::PushVolume, .params2D = Ink, .params3D = Ink,
+    {.tool = Tool::Drop, .name = "drop", .plural = "drops", .in2D = true, .in3D = true, .laysInk = true, .movesInk = true,
+     .form2D = SF::PushArea, .form3D = SF::PushVolume, .params2D = Ink, .params3D = Ink, .outline = StepOutline::Radius,
      .editor = {.gesture = G::Drop,
                 .name = "Drop",
                 .tooltip = "Click to drop ink of the current colour; drag to set its radius. A drop in a drop "
                            "pushes the older ink into a ring",
                 .shortcut = 'D'}},
-    {.tool = Tool::Spray, .name = "spray", .in2D = true, .in3D = true, .laysInk = true, .movesInk = false,
-     .form2D = SF::PushArea, .form3D = SF::PushArea, .params2D = Ink, .params3D = Ink,
+    {.tool = Tool::Spray, .name = "spray", .plural = "sprays", .in2D = true, .in3D = true, .laysInk = true, .movesInk = false,
+     .form2D = SF::PushArea, .form3D = SF::PushArea, .params2D = Ink, .params3D = Ink, .outline = StepOutline::Radius,
      .editor = {.gesture = G::Spray,
                 .name = "Spray",
                 .tooltip = "Drag a brush that sprinkles small droplets along its path",
                 .shortcut = 'S'}},
-    {.tool = Tool::Cylinder, .name = "cylinder", .in2D = false, .in3D = true, .laysInk = true, .movesInk = true,
-     .form2D = SF::PushArea, .form3D = SF::PushArea, .params2D = {}, .params3D = Cylinder3,
+    {.tool = Tool::Cylinder, .name = "cylinder", .plural = "cylinders", .in2D = false, .in3D = true, .laysInk = true, .movesInk = true,
+     .form2D = SF::PushArea, .form3D = SF::PushArea, .params2D = {}, .params3D = Cylinder3, .outline = StepOutline::Radius,
      .editor = {}}, // no gesture: made in the step form only
-    {.tool = Tool::Line, .name = "line", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+    {.tool = Tool::Line, .name = "line", .plural = "lines", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
      .form2D = SF::Shift, .form3D = SF::Shift, .params2D = Line2, .params3D = Line3,
      .editor = {.gesture = G::Stroke,
                 .name = "Line",
                 .tooltip = "Drag a stylus through the ink: the drag's direction and length",
                 .shortcut = 'N'}},
-    {.tool = Tool::Comb, .name = "comb", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+    {.tool = Tool::Comb, .name = "comb", .plural = "combs", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
      .form2D = SF::Shift, .form3D = SF::Shift, .params2D = Comb2, .params3D = Comb3,
      .editor = {.gesture = G::Stroke,
                 .name = "Comb",
                 .tooltip = "Drag a comb through the ink: the drag's direction and length",
                 .shortcut = 'C'}},
-    {.tool = Tool::Wave, .name = "wave", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+    {.tool = Tool::Wave, .name = "wave", .plural = "waves", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
      .form2D = SF::WaveShift, .form3D = SF::WaveShift, .params2D = Wave2, .params3D = Wave3,
      .editor = {.gesture = G::Wave,
                 .name = "Wave",
                 .tooltip = "Drag a wavy comb: the drag gives its direction and amplitude",
                 .shortcut = 'W'}},
-    {.tool = Tool::Circle, .name = "circle", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
-     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = Circle2, .params3D = Circle3,
+    {.tool = Tool::Circle, .name = "circle", .plural = "circles", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = Circle2, .params3D = Circle3, .outline = StepOutline::Radius,
      .editor = {.gesture = G::Ring,
                 .name = "Circle",
                 .tooltip = "Drag from the centre: a circular stroke of that radius",
                 .shortcut = 'O'}},
-    {.tool = Tool::Sphere, .name = "sphere", .in2D = false, .in3D = true, .laysInk = false, .movesInk = true,
-     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = {}, .params3D = Circle3,
+    {.tool = Tool::Sphere, .name = "sphere", .plural = "spheres", .in2D = false, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = {}, .params3D = Circle3, .outline = StepOutline::Radius,
      .editor = {}}, // no gesture: made in the step form only
-    {.tool = Tool::Vortex, .name = "vortex", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
-     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = Vortex2, .params3D = Vortex3,
+    {.tool = Tool::Vortex, .name = "vortex", .plural = "vortices", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
+     .form2D = SF::Turn, .form3D = SF::Turn, .params2D = Vortex2, .params3D = Vortex3, .outline = StepOutline::Alpha,
      .editor = {.gesture = G::Swirl,
                 .name = "Vortex",
                 .tooltip = "Drag from the centre: a swirl, the drag's length its strength",
                 .shortcut = 'V'}},
-    {.tool = Tool::Stretch, .name = "stretch", .in2D = true, .in3D = false, .laysInk = false, .movesInk = true,
+    {.tool = Tool::Stretch, .name = "stretch", .plural = "stretches", .in2D = true, .in3D = false, .laysInk = false, .movesInk = true,
      .form2D = SF::Stretch, .form3D = SF::Stretch, .params2D = Stretch2, .params3D = {}, .version = 2,
      .editor = {.gesture = G::Teeth,
                 .name = "Stretch",
                 .tooltip = "Drag to stretch the ink between teeth across the design",
                 .shortcut = 'T'}},
-    {.tool = Tool::Flow, .name = "flow", .in2D = true, .in3D = false, .laysInk = false, .movesInk = true,
-     .form2D = SF::Flow, .form3D = SF::Flow, .params2D = Flow2, .params3D = {}, .version = 2,
+    {.tool = Tool::Flow, .name = "flow", .plural = "flows", .in2D = true, .in3D = false, .laysInk = false, .movesInk = true,
+     .form2D = SF::Flow, .form3D = SF::Flow, .params2D = Flow2, .params3D = {}, .outline = StepOutline::Extent, .version = 2,
      .editor = {.gesture = G::Cell,
                 .name = "Flow",
                 .tooltip = "Drag out a cell of a steady flow (cells or one cavity)",
@@ -182,6 +182,13 @@ constexpr bool everyParamLabelled() {
     return true;
 }
 static_assert(everyParamLabelled(), "every parameter has a label");
+
+constexpr bool everyToolHasAPlural() {
+    for (const ToolSpec& spec : Tools)
+        if (spec.plural.empty()) return false;
+    return true;
+}
+static_assert(everyToolHasAPlural(), "every tool has its English plural");
 
 /// Exactly the parameters newer than their tool are optional: a file of the tool's own version
 /// says all of the tool's parameters, a newer parameter may be left out of an older tool.

@@ -142,6 +142,14 @@ enum class EditorGesture : std::uint8_t {
     Cell,   ///< the drag spans one cell (or the cavity) of a steady flow
 };
 
+/// How the editor outlines a step of a tool on its canvas (while it is made or selected).
+enum class StepOutline : std::uint8_t {
+    None,   ///< a stroke across the whole design: its handles say enough
+    Radius, ///< a circle of its radius about its centre
+    Alpha,  ///< a circle of |alpha| about its centre (a vortex's reach)
+    Extent, ///< the box of its extent from its origin (a flow's cell)
+};
+
 /// How the editor offers a tool: its gesture and its tool bar button's words and key.
 struct EditorSpec {
     EditorGesture gesture = EditorGesture::None;
@@ -153,7 +161,8 @@ struct EditorSpec {
 /// One entry of the registry.
 struct ToolSpec {
     Tool tool;
-    std::string_view name; ///< as in JSON
+    std::string_view name;   ///< as in JSON
+    std::string_view plural; ///< in English, for what changed ("3 vortices added")
     bool in2D, in3D;
     /// Lays ink (drop, spray, cylinder): has a colour, is seen where a point lies in it, and is
     /// the only kind of tool `initial` holds.
@@ -162,6 +171,8 @@ struct ToolSpec {
     ShaderForm form2D, form3D;
     std::span<const ParamSpec> params2D;
     std::span<const ParamSpec> params3D;
+    /// How the editor's canvas outlines one of its steps.
+    StepOutline outline = StepOutline::None;
     /// The format version that introduced the tool.
     int version = 1;
     /// The editor's gesture, name, tooltip and shortcut.
