@@ -21,12 +21,6 @@ namespace marbler::ui {
 
 namespace {
 
-/// Render keys of their own, far from the grid's cell keys.
-std::uint64_t nextCanvasKey() {
-    static std::atomic<std::uint64_t> next{0xED170000'00000000ULL};
-    return next++;
-}
-
 /// How near (widget pixels) a press must come to a handle to take it.
 constexpr double HandleReach = 9.0;
 /// The length (widget pixels) of a direction handle's arm.
@@ -48,7 +42,7 @@ bool hasRadius(Tool tool) {
 EditorCanvas::EditorCanvas(RenderService* renderer, QWidget* parent)
     : QWidget(parent)
     , mRenderer(renderer)
-    , mKey(nextCanvasKey()) {
+    , mKey(renderer->newKey()) {
     setObjectName(QStringLiteral("editorCanvas"));
     setMinimumSize(240, 240);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);

@@ -1,6 +1,7 @@
 // The editor window: the document wired to the canvas, the panels and the history.
 
 #include "editor/EditorWindow.h"
+#include "marbler/Mesh.h"
 
 #include "editor/AnimationExport.h"
 #include "editor/BathSizes.h"
@@ -79,12 +80,6 @@ constexpr int StepsPanelWidth = 360;
 /// The tool panel's width: the widest tool's options but for long words (they scroll).
 constexpr int ToolPanelWidth = 230;
 constexpr int MaxRecent = 10;
-
-/// Keys of the solid object views, apart from the grid's, the large views' and the canvases'.
-std::uint64_t nextObjectKey() {
-    static std::uint64_t next = 3'000'000;
-    return next++;
-}
 
 QString designFilter() {
     return EditorWindow::tr("Designs (*.marble.json *.json *.png *.tif *.tiff);;All files (*)");
@@ -1172,7 +1167,7 @@ void EditorWindow::startFromSourceImage() {
 void EditorWindow::exportImage() {
     // The large view exports at print size, in vector form and on objects; it opens on the design.
     auto* dialog = new DesignDialog(mDocument->renderedDesign(), mRenderer,
-                                    mObject ? mObject->mesh() : QStringLiteral("vase"), this);
+                                    mObject ? mObject->mesh() : QString::fromLatin1(DefaultMesh), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &DesignDialog::fileSaved, this, &EditorWindow::fileSaved);
     // It is open in this editor already.
@@ -1270,7 +1265,7 @@ void EditorWindow::closeEvent(QCloseEvent* event) {
 SolidObjectView::SolidObjectView(RenderService* renderer, QWidget* parent)
     : QWidget(parent)
     , mRenderer(renderer)
-    , mKey(nextObjectKey()) {
+    , mKey(renderer->newKey()) {
     setMinimumSize(200, 200);
     setToolTip(tr("The design on its object: drag to turn it"));
     connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool) {

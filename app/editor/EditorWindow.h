@@ -13,6 +13,7 @@
 #include "editor/EditorDocument.h"
 #include "editor/Gestures.h"
 #include "marbler/Genome.h"
+#include "marbler/Mesh.h"
 #include "marbler/Sampling.h"
 #include "ui/SavedFiles.h"
 #include "ui/ViewController.h"
@@ -249,7 +250,7 @@ private:
     RenderService* mRenderer;
     std::uint64_t mKey;
     Genome mDesign;
-    QString mMesh = QStringLiteral("vase");
+    QString mMesh = QString::fromLatin1(DefaultMesh);
     ViewAngle mAngle;
     QImage mImage;
     QPointF mLast;

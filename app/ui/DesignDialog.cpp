@@ -49,12 +49,6 @@ namespace marbler::ui {
 
 namespace {
 
-/// Large views get keys of their own, far from the grid's and the shelf's.
-std::uint64_t nextDialogKey() {
-    static std::uint64_t next = 1'000'000;
-    return next++;
-}
-
 /// Grows `dialog` so that the word-wrapped `label` shows all its lines. A top-level window is
 /// laid out for the text its wrapped labels had when shown; a longer text (Export image's line
 /// with Mirror repeat ticked) would otherwise be clipped to the old height.
@@ -449,7 +443,7 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     , mGenome(std::move(genome))
     , mRenderer(renderer)
     , mMesh(mesh)
-    , mKey(nextDialogKey())
+    , mKey(renderer->newKey())
     , mAngle(viewAngleOf(mGenome)) {
     const LineageInfo info = lineageOf(mGenome);
     setWindowTitle(tr("Design %1").arg(info.name.isEmpty() ? info.id : info.name));

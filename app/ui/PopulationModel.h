@@ -4,6 +4,7 @@
 /// the favourites shelf. No widgets here, so the breeding logic is tested without a window.
 
 #include "marbler/Genome.h"
+#include "marbler/Mesh.h"
 #include "marbler/Operators.h"
 #include "ui/ViewController.h"
 
@@ -258,7 +259,7 @@ private:
     QString mSessionFile;
     /// Each generation's designs as session text (serializeSession); empty: to be made.
     std::vector<std::string> mSessionCells;
-    QString mMesh = QStringLiteral("vase");
+    QString mMesh = QString::fromLatin1(DefaultMesh);
     SessionLabel mSessionLabel;
     QStringList mRemovedFavourites;
 };

@@ -15,6 +15,7 @@
 /// refused one fails with a message saying so.
 
 #include "marbler/Genome.h"
+#include "marbler/Mesh.h"
 #include "marbler/Sampling.h"
 #include "marbler/gl/Backend.h"
 
@@ -44,7 +45,7 @@ struct RenderRequest {
     /// Solid (3D) genomes are shown on this object, seen from this orbit, framed and then
     /// magnified by `zoom` (gl::MeshSettings; without GL their middle cross-section is
     /// magnified as much).
-    QString mesh = QStringLiteral("vase");
+    QString mesh = QString::fromLatin1(DefaultMesh);
     double yaw = 30.0, pitch = 20.0;
     double zoom = 1.0;
     /// Only the fast pass (while the user drags an object around).
@@ -81,6 +82,12 @@ public:
     void setPreference(gl::BackendPreference preference);
     /// The preference asked for (before the environment's override).
     gl::BackendPreference preference() const { return mPreference; }
+
+    /// Keys below this are the workbench's own, in fixed ranges (its cells, favourites and
+    /// lineage thumbnails); newKey() hands out the ones above, so no two views share a key.
+    static constexpr std::uint64_t ViewKeyBase = std::uint64_t(1) << 48;
+    /// A key no other view has: a large view, an editor's canvas or its object view.
+    std::uint64_t newKey() { return mNextKey++; }
 
     /// Queues a request for a key (superseding any unfinished one); returns its ticket.
     std::uint64_t request(std::uint64_t key, RenderRequest request);
@@ -133,6 +140,7 @@ private:
     QHash<std::uint64_t, std::uint64_t> mOutstanding;
     std::uint64_t mNextTicket = 1;
     QString mBackendName;
+    std::uint64_t mNextKey = ViewKeyBase; ///< newKey's next (the GUI thread's only)
     QString mBackendReason;
     bool mUsesGl = false;
     bool mGlAllowed = true;

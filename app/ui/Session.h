@@ -21,6 +21,7 @@
 /// (ISO 8601) label the session in the list of kept sessions (SessionStore.h); both are optional,
 /// as is `generation`, the current generation's number as the window shows it (for that list).
 
+#include "marbler/Mesh.h"
 #include "ui/PopulationModel.h"
 
 #include <QString>
@@ -38,7 +39,7 @@ struct SavedSession {
     int current = 0;                 ///< index into history
     std::uint64_t seed = 1;
     int dimension = 2; ///< 2: flat, 3: solid (the kind of the current grid)
-    QString mesh = QStringLiteral("vase");
+    QString mesh = QString::fromLatin1(DefaultMesh);
     SessionLabel label{}; ///< empty name, invalid time when the document has none
 };
 

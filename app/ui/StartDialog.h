@@ -4,6 +4,8 @@
 /// others stay kept). Asked when the workbench opens with no genome files,
 /// unless the user ticked "don't ask again"; the toolbar's kind box changes it later.
 
+#include "marbler/Mesh.h"
+
 #include <QDialog>
 #include <QString>
 #include <QStringList>
@@ -22,8 +24,8 @@ namespace marbler::ui {
 QStringList meshNames();
 
 struct StartChoice {
-    int dimension = 2;                     ///< 2: flat, 3: solid
-    QString mesh = QStringLiteral("vase"); ///< the object a solid design is shown on
+    int dimension = 2;                               ///< 2: flat, 3: solid
+    QString mesh = QString::fromLatin1(DefaultMesh); ///< the object a solid design is shown on
     /// The answer: resume the saved session instead of a new population (the default when one
     /// is offered).
     bool resume = false;

@@ -1,4 +1,5 @@
 #include "ui/WorkbenchWindow.h"
+#include "marbler/Mesh.h"
 
 #include "editor/EditorWindow.h"
 #include "marbler/Error.h"
@@ -726,7 +727,8 @@ void WorkbenchWindow::readSettings() {
     mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
     setPopulationFamily(settings.value(QStringLiteral("population/family")).toString());
     mStrength->setValue(settings.value(QStringLiteral("breed/strength"), 50).toInt());
-    const QString mesh = settings.value(QStringLiteral("view/mesh"), QStringLiteral("vase")).toString();
+    const QString mesh =
+        settings.value(QStringLiteral("view/mesh"), QString::fromLatin1(DefaultMesh)).toString();
     if (mMesh->findText(mesh) >= 0) mMesh->setCurrentText(mesh);
 }
 
@@ -907,6 +909,7 @@ bool WorkbenchWindow::renderingDone() const {
 }
 
 void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool final) {
+    if (key >= RenderService::ViewKeyBase) return; // a view's of its own (large view, editor)
     if (key < std::uint64_t(CellCount)) {
         const auto index = std::size_t(key);
         mCells[index]->setImage(image);

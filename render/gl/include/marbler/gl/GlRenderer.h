@@ -4,6 +4,7 @@
 /// in the implementation (pimpl), so users of this header need only QtGui's QImage-free API.
 
 #include "marbler/Genome.h"
+#include "marbler/Mesh.h"
 #include "marbler/Sampling.h"
 
 #include <memory>
@@ -23,7 +24,7 @@ struct CutPlane {
 /// How a solid genome is shown on an object.
 struct MeshSettings {
     int width = 512, height = 512;
-    std::string mesh = "vase"; ///< a built-in name (builtinMeshNames()) or a file path
+    std::string mesh = DefaultMesh; ///< a built-in name (builtinMeshNames()) or a file path
     /// Orbit camera about the design box centre, +y up: the eye sits at
     /// centre + D * (cos pitch sin yaw, sin pitch, cos pitch cos yaw), looking at the centre.
     double yaw = 30.0, pitch = 20.0; ///< degrees
