@@ -1,0 +1,110 @@
+// The one way a window runs long work (BackgroundJob.h): the outcome told once, after the box has
+// gone; Cancel stops the work; a closed owner cancels and waits instead of leaving a thread.
+
+#include "ui/BackgroundJob.h"
+
+#include "WaitFor.h"
+#include "marbler/CpuRenderer.h"
+#include "marbler/Error.h"
+
+#include <QProgressDialog>
+#include <QWidget>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <optional>
+#include <thread>
+
+namespace marbler::ui {
+namespace {
+
+/// Work that runs until cancelled, saying how far it is.
+void untilCancelled(const RenderControl& control, std::atomic<bool>& started) {
+    started = true;
+    for (int i = 0; !control.cancelled(); ++i) {
+        control.progress(std::min(0.99, i / 1000.0));
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    throw Cancelled();
+}
+
+TEST(BackgroundJob, TellsDoneOnceAfterTheBoxHasGone) {
+    QWidget window;
+    std::optional<JobOutcome> outcome;
+    int calls = 0;
+    bool boxGone = false;
+    BackgroundJob* job = BackgroundJob::start(
+        &window,
+        {&window, QStringLiteral("Working…"), QStringLiteral("jobProgress")},
+        [](const RenderControl& control) { control.progress(1.0); },
+        [&](const JobOutcome& o) {
+            ++calls;
+            outcome = o;
+            boxGone = window.findChild<QProgressDialog*>(QStringLiteral("jobProgress")) == nullptr;
+        });
+    ASSERT_NE(job->progressBox(), nullptr);
+    MARBLER_WAIT(outcome.has_value(), 10000);
+    EXPECT_TRUE(outcome->done());
+    EXPECT_TRUE(boxGone);
+    QCoreApplication::processEvents();
+    EXPECT_EQ(calls, 1);
+}
+
+TEST(BackgroundJob, SaysWhatWentWrong) {
+    QWidget window;
+    std::optional<JobOutcome> outcome;
+    BackgroundJob::start(
+        &window, {&window, QStringLiteral("Working…")},
+        [](const RenderControl&) { throw RuntimeFailure("disk full while writing x.png"); },
+        [&](const JobOutcome& o) { outcome = o; });
+    MARBLER_WAIT(outcome.has_value(), 10000);
+    EXPECT_TRUE(outcome->failed());
+    EXPECT_EQ(outcome->error, QStringLiteral("disk full while writing x.png"));
+}
+
+TEST(BackgroundJob, CancelInTheBoxStopsTheWork) {
+    QWidget window;
+    std::atomic<bool> started = false;
+    std::optional<JobOutcome> outcome;
+    JobBox box(&window, QStringLiteral("Working…"));
+    box.minimumDurationMs = 0;
+    BackgroundJob* job = BackgroundJob::start(
+        &window, box,
+        [&](const RenderControl& control) { untilCancelled(control, started); },
+        [&](const JobOutcome& o) { outcome = o; });
+    MARBLER_WAIT(started.load(), 10000);
+    emit job->progressBox()->canceled(); // what the box's Cancel button says
+    MARBLER_WAIT(outcome.has_value(), 10000);
+    EXPECT_TRUE(outcome->cancelled());
+    EXPECT_TRUE(outcome->error.isEmpty());
+}
+
+TEST(BackgroundJob, AClosedOwnerCancelsAndWaitsWithoutTellingAnyone) {
+    std::atomic<bool> started = false;
+    std::atomic<bool> returned = false;
+    bool told = false;
+    {
+        QWidget window;
+        BackgroundJob::start(
+            &window, {&window, QStringLiteral("Working…")},
+            [&](const RenderControl& control) {
+                try {
+                    untilCancelled(control, started);
+                } catch (...) {
+                    returned = true;
+                    throw;
+                }
+            },
+            [&](const JobOutcome&) { told = true; });
+        MARBLER_WAIT(started.load(), 10000);
+    }
+    // The window's end waited for the work: it has returned, and nothing was told.
+    EXPECT_TRUE(returned.load());
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(told);
+}
+
+} // namespace
+} // namespace marbler::ui
