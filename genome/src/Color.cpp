@@ -29,6 +29,15 @@ std::optional<Color> parseHexColor(const std::string& text) {
     return Color{channels[0], channels[1], channels[2]};
 }
 
+double rgbDistance2(Color a, Color b) {
+    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+    return dr * dr + dg * dg + db * db;
+}
+
+double lumaOf(Color c) {
+    return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0;
+}
+
 double colorDistance2(Color a, Color b) {
     double rm = (a.r + b.r) / 2.0;
     double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;

@@ -130,6 +130,10 @@ std::optional<Color> parseHexColor(const std::string& text);
 /// How far apart two colours look, squared: the "redmean" distance (RGB weighted by how red the
 /// pair is, after Riemersma). Only basic operations, so the same on every machine.
 double colorDistance2(Color a, Color b);
+/// The plain squared distance of two colours in RGB (0 to 3 * 255²).
+double rgbDistance2(Color a, Color b);
+/// The luma of an sRGB colour, 0 to 1 (Rec. 601 weights on the encoded values).
+double lumaOf(Color c);
 
 /// Hue (degrees, [0, 360)), saturation and lightness (0 to 1) of an sRGB colour.
 struct Hsl {

@@ -56,15 +56,6 @@ glm::dvec3 randomUnit(Pcg32& rng, int dimension) {
 // Palette
 
 /// Perceived brightness of gamma-encoded sRGB (Rec. 601 luma): good enough to judge contrast.
-double luma(Color c) {
-    return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0;
-}
-
-double distance2(Color a, Color b) {
-    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-    return dr * dr + dg * dg + db * db;
-}
-
 // ---------------------------------------------------------------------------------------
 // Drops
 
@@ -490,10 +481,10 @@ std::vector<Color> randomPalette(Pcg32& rng, Color* background) {
         Color c = colorFromHsl(ink);
         // Keep every ink visible on the bath and apart from the inks before it.
         for (int attempt = 0; attempt < 8; ++attempt) {
-            bool tooCloseToBath = std::abs(luma(c) - luma(bgColor)) < 0.2;
+            bool tooCloseToBath = std::abs(lumaOf(c) - lumaOf(bgColor)) < 0.2;
             bool tooCloseToInk = false;
             for (Color other : palette)
-                tooCloseToInk = tooCloseToInk || distance2(c, other) < 45.0 * 45.0;
+                tooCloseToInk = tooCloseToInk || rgbDistance2(c, other) < 45.0 * 45.0;
             if (!tooCloseToBath && !tooCloseToInk) break;
             ink.l = dark ? std::min(0.85, ink.l + 0.07) : std::max(0.15, ink.l - 0.07);
             if (tooCloseToInk) ink.h = wrapHue(ink.h + 25.0);

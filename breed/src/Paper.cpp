@@ -35,15 +35,6 @@ double power(double base, int n) {
     return result;
 }
 
-double luma(Color c) {
-    return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0;
-}
-
-double distance2(Color a, Color b) {
-    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
-    return dr * dr + dg * dg + db * db;
-}
-
 /// Tooth positions from at most one gap below `from` until one at or past `to`, with gaps in
 /// [g, 1.8 g]: a one-dimensional Poisson-disk sample (a maximal one has gaps below 2 g).
 std::vector<double> teethBetween(Pcg32& rng, double from, double to, double g) {
@@ -152,13 +143,13 @@ std::vector<Color> paperPalette(Pcg32& rng, int count, bool pastel, Color* backg
             double lightness = pastel ? rng.uniform(0.7, 0.84) : rng.uniform(0.22, 0.62);
             ink = colorFromHsl(hue, saturation, lightness);
             // Darker until it shows on the bath (a light yellow barely does).
-            while (std::abs(luma(ink) - luma(bath)) < minLumaGap && lightness > 0.1) {
+            while (std::abs(lumaOf(ink) - lumaOf(bath)) < minLumaGap && lightness > 0.1) {
                 lightness -= 0.04;
                 ink = colorFromHsl(hue, saturation, lightness);
             }
             bool apart = true;
             for (Color other : inks)
-                apart = apart && distance2(ink, other) >= minInkDistance * minInkDistance;
+                apart = apart && rgbDistance2(ink, other) >= minInkDistance * minInkDistance;
             if (apart) break;
         }
         inks.push_back(ink);
