@@ -7,6 +7,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Mesh.h"
+#include "marbler/RenderToFile.h"
 #include "marbler/Sampling.h"
 
 #include "WindowModule.h"

@@ -6,6 +6,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Paper.h"
+#include "marbler/RenderToFile.h"
 
 #include <cmath>
 #include <filesystem>

@@ -6,6 +6,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Growth.h"
+#include "marbler/RenderToFile.h"
 #include "marbler/Repeat.h"
 #include "marbler/Sampling.h"
 

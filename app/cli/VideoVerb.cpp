@@ -5,6 +5,7 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ImageFile.h"
 #include "marbler/SourceDecoder.h"
 #include "marbler/Video.h"
 

@@ -5,6 +5,7 @@
 #include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
 #include "marbler/Growth.h"
+#include "marbler/RenderToFile.h"
 #include "marbler/Video.h"
 
 #include <cstdio>

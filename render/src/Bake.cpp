@@ -9,6 +9,7 @@
 
 #include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
+#include "marbler/ImageFile.h"
 #include "marbler/ImageFormats.h"
 #include "marbler/Threads.h"
 

@@ -1,8 +1,8 @@
 #include "marbler/CpuRenderer.h"
 
-#include "ImageData.h"
 #include "Kernel.h"
 #include "marbler/Error.h"
+#include "marbler/SourceDecoder.h"
 #include "marbler/Threads.h"
 #include "marbler/Tools.h"
 
@@ -25,7 +25,7 @@ struct CpuRenderer::Impl {
     /// encodeSrgb8 of paletteLinear and backgroundLinear.
     std::vector<std::array<std::uint8_t, 3>> paletteSrgb8;
     std::array<std::uint8_t, 3> backgroundSrgb8{};
-    std::optional<detail::LinearRaster> source;
+    std::optional<LinearRaster> source;
     double bleed = 0.0; ///< the genome's soft ink edges (0: hard)
     /// The genome's dimension and size only: what the sampling functions read.
     Genome shape;
@@ -34,7 +34,7 @@ struct CpuRenderer::Impl {
     /// clamped to the edge pixels inside the design space; the background outside it.
     glm::dvec3 sourceAt(double x, double y) const {
         if (!(x >= 0.0 && x <= size.x && y >= 0.0 && y <= size.y)) return backgroundLinear;
-        const detail::LinearRaster& img = *source;
+        const LinearRaster& img = *source;
         double u = x * img.width / size.x - 0.5, v = y * img.height / size.y - 0.5;
         double fu = std::floor(u), fv = std::floor(v);
         double tu = u - fu, tv = v - fv;

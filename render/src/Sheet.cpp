@@ -1,4 +1,5 @@
 #include "marbler/Sheet.h"
+#include "marbler/ImageFile.h"
 
 #include "marbler/Error.h"
 

@@ -69,29 +69,6 @@ private:
 
 } // namespace
 
-LinearRaster linearRasterOfSrgb8(const std::uint8_t* rgb, int width, int height, std::size_t stride) {
-    // As the image module decodes an 8-bit file: OpenImageIO converts a byte v to the float
-    // v * (1.0f / 255), which is then sRGB-decoded in double precision.
-    static const std::vector<float> table = [] {
-        std::vector<float> t(256);
-        for (int v = 0; v < 256; ++v)
-            t[std::size_t(v)] =
-                static_cast<float>(srgbToLinear(std::clamp(double(float(v) * (1.0f / 255.0f)), 0.0, 1.0)));
-        return t;
-    }();
-    LinearRaster raster;
-    raster.width = width;
-    raster.height = height;
-    raster.rgb.resize(std::size_t(width) * std::size_t(height) * 3);
-    for (int y = 0; y < height; ++y) {
-        const std::uint8_t* row = rgb + std::size_t(y) * stride;
-        float* out = raster.rgb.data() + std::size_t(y) * std::size_t(width) * 3;
-        for (std::size_t i = 0; i < std::size_t(width) * 3; ++i)
-            out[i] = table[row[i]];
-    }
-    return raster;
-}
-
 bool isVideoFile(const fs::path& path) {
     const std::string extension = lowerExtension(path);
     return extension == ".gif" || extension == ".webp" || extension == ".mp4" || extension == ".webm";

@@ -6,6 +6,7 @@
 #include "TestUtil.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ImageFile.h"
 #include "marbler/Params.h"
 
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
 #include "marbler/CpuRenderer.h"
+#include "marbler/ImageFile.h"
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
 

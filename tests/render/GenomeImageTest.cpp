@@ -8,6 +8,7 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/RenderToFile.h"
 
 #include <gtest/gtest.h>
 #include <tiffio.h>

@@ -5,6 +5,7 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/RenderToFile.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -7,6 +7,7 @@
 
 #include "marbler/CpuRenderer.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ImageFile.h"
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
 #include "marbler/Vector.h"

@@ -8,6 +8,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
+#include "marbler/ImageFile.h"
 #include "marbler/Video.h"
 
 #include <gtest/gtest.h>

@@ -92,28 +92,4 @@ std::vector<std::string> cpuKernelsSupported();
 /// that this CPU cannot run.
 void setCpuKernelForTesting(const std::string& name);
 
-/// Output options of a render to a file.
-struct ExportOptions {
-    std::optional<double> dpi; ///< written into the file's resolution when set
-    /// The genome the image shows, as canonical genome JSON (serializeGenome), carried in the
-    /// file's metadata by PNG and TIFF (marbler/GenomeImage.h says where); empty: none.
-    /// renderToFile fills it from the genome it renders when left empty.
-    std::string genome;
-    /// Bits a sample of a TIFF: 8, or 16 (sRGB encoded from the linear average, for print work
-    /// that grades the image further). Other formats have a depth of their own (EXR: half float).
-    int bitsPerSample = 8;
-};
-
-/// Renders in strips of rows and writes them progressively to `file` (format by extension:
-/// PNG, TIFF, EXR, JPEG, ...), atomically: a temporary file is renamed over `file` only when
-/// complete; on failure or cancel nothing is left behind. Throws InputError, RuntimeFailure,
-/// Cancelled.
-void renderToFile(const Genome& genome, const RenderSettings& settings, const std::filesystem::path& file,
-                  const ExportOptions& options = {}, const RenderControl* control = nullptr);
-
-/// Writes an in-memory image atomically (format by extension). The image knows no genome, so
-/// the caller puts the design's into `options.genome` for PNG and TIFF to carry it. Throws
-/// InputError for an unknown extension, RuntimeFailure for I/O failures.
-void writeImage(const Image& image, const std::filesystem::path& file, const ExportOptions& options = {});
-
 } // namespace marbler

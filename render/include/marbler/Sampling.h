@@ -4,6 +4,7 @@
 /// and the GL back end so both sample the same points.
 
 #include "marbler/Genome.h"
+#include "marbler/Image.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -123,21 +124,5 @@ inline constexpr std::int64_t MaxImagePixels = std::int64_t(1) << 31;
 /// Throws InputError when the settings ask for an empty or absurd raster, a bad region or a
 /// missing/bad slice.
 void checkRenderSettings(const Genome& genome, const RenderSettings& settings);
-
-/// sRGB transfer functions on [0, 1].
-double srgbToLinear(double c);
-double linearToSrgb(double c);
-/// A table of the 256 linear values of 8-bit sRGB.
-const float* srgbToLinearTable();
-/// Linear [0, 1] to 8-bit sRGB, rounded to nearest.
-std::uint8_t encodeSrgb8(double linear);
-
-/// An 8-bit sRGB raster, rows top to bottom, 3 channels interleaved.
-struct Image {
-    int width = 0, height = 0;
-    std::vector<std::uint8_t> rgb;
-    std::uint8_t* row(int y) { return rgb.data() + std::size_t(y) * std::size_t(width) * 3; }
-    const std::uint8_t* row(int y) const { return rgb.data() + std::size_t(y) * std::size_t(width) * 3; }
-};
 
 } // namespace marbler

@@ -1,6 +1,6 @@
 #pragma once
-/// Internal to render/: what the decoding of source images needs (decodeSourceImage, in
-/// ImageIO.cpp, is the public entry).
+/// Internal to render/image: what the decoding of source images needs (decodeSourceImage, in
+/// SourceDecoder.cpp, is the public entry).
 
 #include "marbler/Genome.h"
 #include "marbler/SourceDecoder.h"

@@ -1,13 +1,13 @@
-// The image formats render/ writes itself: PNG (libpng), TIFF (libtiff) and binary PPM. They
+// The image formats written without OpenImageIO: PNG (libpng), TIFF (libtiff) and binary PPM. They
 // are the everyday formats of Marbler's renders, and these libraries load in a millisecond
 // where OpenImageIO's dependencies take a third of a second (see ImageSink.h).
 
 #include "ImageSink.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeImage.h"
+#include "marbler/Image.h"
 #include "marbler/ImageFormats.h"
 #include "marbler/Modules.h"
-#include "marbler/Sampling.h"
 
 #include <png.h>
 #include <tiffio.h>
@@ -287,6 +287,15 @@ private:
 
 } // namespace
 
+ImageIoModule& imageIoModule() {
+    static ImageIoModule* module = [] {
+        auto entry =
+            reinterpret_cast<ImageIoModule* (*)()>(moduleEntry(ImageIoModuleFile, ImageIoModuleEntry));
+        return entry();
+    }();
+    return *module;
+}
+
 std::unique_ptr<ImageSink> openBuiltinSink(const SinkTarget& target) {
     const std::string& ext = target.extension;
     if (ext == ".png") return std::make_unique<PngSink>(target);
@@ -296,33 +305,3 @@ std::unique_ptr<ImageSink> openBuiltinSink(const SinkTarget& target) {
 }
 
 } // namespace marbler::detail
-
-namespace marbler {
-
-std::string lowerExtension(const std::filesystem::path& file) {
-    std::string extension = file.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
-
-std::string builtinImageFormats() {
-    // TIFFGetVersion() is a paragraph ("LIBTIFF, Version 4.5.0\nCopyright ..."): keep the number.
-    std::string tiff = TIFFGetVersion();
-    std::size_t version = tiff.find("Version ");
-    tiff =
-        version == std::string::npos ? "" : tiff.substr(version + 8, tiff.find('\n', version) - version - 8);
-    return std::string("PNG (libpng ") + png_get_libpng_ver(nullptr) + "), TIFF (libtiff " + tiff + "), PPM";
-}
-
-std::string openImageIoVersion() {
-    return detail::imageIoModule().version();
-}
-
-std::optional<std::string> loadedOpenImageIoVersion() {
-    if (!moduleLoaded(detail::ImageIoModuleFile)) return std::nullopt;
-    // Loaded already, so this copy's handle is a cheap dlopen of the same object.
-    return detail::imageIoModule().version();
-}
-
-} // namespace marbler

@@ -1,6 +1,6 @@
 // marbler-imageio.so: the one file of Marbler that sees OpenImageIO. Loaded on first use by
-// render/src/ImageIO.cpp for the formats render/ does not write itself (EXR, JPEG, ...) and to
-// decode source images.
+// render/image (ImageFile.cpp, SourceDecoder.cpp) for the formats it does not write itself
+// (EXR, JPEG, ...) and to decode source images.
 
 #include "ImageSink.h"
 #include "marbler/Error.h"

@@ -2,11 +2,11 @@
 /// Internal to render/: where image files are written and read. PNG, TIFF and PPM are written
 /// here directly with libpng and libtiff (small libraries that load in a millisecond); every
 /// other format, and the decoding of source images, goes through OpenImageIO in the module
-/// marbler-imageio.so (render/imageio), loaded on first use because OpenImageIO's own
+/// marbler-imageio.so (render/image/imageio), loaded on first use because OpenImageIO's own
 /// dependencies take longer to load than most renders take to run.
 
 #include "ImageData.h"
-#include "marbler/CpuRenderer.h"
+#include "marbler/ImageFile.h"
 
 #include <cstddef>
 #include <memory>
