@@ -6,7 +6,7 @@
 #include "marbler/gl/Backend.h"
 #include "marbler/gl/GlRenderer.h"
 #include "marbler/gl/Meshes.h"
-#include "ui/Workbench.h"
+#include "workbench/Workbench.h"
 
 #include <QSettings>
 #include <QString>

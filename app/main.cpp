@@ -4,7 +4,7 @@
 #include "WindowModule.h"
 #include "cli/Cli.h"
 #include "marbler/Error.h"
-#include "ui/Workbench.h"
+#include "workbench/Workbench.h"
 
 #include <cstdlib>
 #include <iostream>

@@ -5,8 +5,8 @@
 /// given and says what the user did through its signals; the editor window applies them.
 
 #include "editor/Gestures.h"
-#include "ui/RenderService.h"
-#include "ui/ViewController.h"
+#include "shared/RenderService.h"
+#include "shared/ViewController.h"
 
 #include "marbler/Sampling.h"
 

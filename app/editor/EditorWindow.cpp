@@ -19,12 +19,13 @@
 #include "marbler/GenomeImage.h"
 #include "marbler/Growth.h"
 #include "marbler/Params.h"
-#include "ui/DesignDialog.h"
-#include "ui/ErrorReport.h"
-#include "ui/Help.h"
-#include "ui/PopulationModel.h"
-#include "ui/RenderService.h"
-#include "ui/StartDialog.h"
+#include "marbler/RenderToFile.h"
+#include "shared/DesignDialog.h"
+#include "shared/ErrorReport.h"
+#include "shared/Help.h"
+#include "shared/Lineage.h"
+#include "shared/RenderService.h"
+#include "shared/StartDialog.h"
 
 #include <QAbstractSpinBox>
 #include <QActionGroup>

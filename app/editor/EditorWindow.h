@@ -15,8 +15,8 @@
 #include "marbler/Genome.h"
 #include "marbler/Mesh.h"
 #include "marbler/Sampling.h"
-#include "ui/SavedFiles.h"
-#include "ui/ViewController.h"
+#include "shared/SavedFiles.h"
+#include "shared/ViewController.h"
 
 #include <QImage>
 #include <QMainWindow>

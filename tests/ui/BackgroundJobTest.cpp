@@ -1,7 +1,7 @@
 // The one way a window runs long work (BackgroundJob.h): the outcome told once, after the box has
 // gone; Cancel stops the work; a closed owner cancels and waits instead of leaving a thread.
 
-#include "ui/BackgroundJob.h"
+#include "shared/BackgroundJob.h"
 
 #include "WaitFor.h"
 #include "marbler/CpuRenderer.h"

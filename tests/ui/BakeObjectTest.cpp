@@ -1,14 +1,14 @@
 // "Bake onto object…" in the large view: offered for solid designs only, it writes the object
 // the design is shown on as glTF binary with the baked texture, and reports a bad format.
 
-#include "ui/BakeObject.h"
+#include "shared/BakeObject.h"
 #include "TestUtil.h"
 #include "WaitFor.h"
 #include "marbler/GenomeIO.h"
-#include "ui/DesignDialog.h"
-#include "ui/ErrorReport.h"
-#include "ui/RenderService.h"
-#include "ui/SavedFiles.h"
+#include "shared/DesignDialog.h"
+#include "shared/ErrorReport.h"
+#include "shared/RenderService.h"
+#include "shared/SavedFiles.h"
 
 #include <QApplication>
 #include <QDir>

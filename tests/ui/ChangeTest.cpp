@@ -3,7 +3,7 @@
 
 #include "UiTestSupport.h"
 #include "marbler/ChangeSummary.h"
-#include "ui/DesignCell.h"
+#include "workbench/DesignCell.h"
 
 #include <QTreeWidget>
 

@@ -7,8 +7,8 @@
 
 #include "marbler/Colourways.h"
 #include "marbler/Sheet.h"
-#include "ui/SavedFiles.h"
-#include "ui/Session.h"
+#include "shared/SavedFiles.h"
+#include "workbench/Session.h"
 
 #include <QAction>
 #include <QDir>

@@ -10,7 +10,7 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
-#include "ui/RenderService.h"
+#include "shared/RenderService.h"
 
 #include <QDoubleSpinBox>
 #include <QSpinBox>

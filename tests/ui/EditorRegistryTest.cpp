@@ -9,7 +9,7 @@
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
-#include "ui/RenderService.h"
+#include "shared/RenderService.h"
 
 #include <QAction>
 #include <QDoubleSpinBox>

@@ -9,7 +9,7 @@
 #include "editor/PaletteEditor.h"
 #include "editor/Timeline.h"
 #include "marbler/Params.h"
-#include "ui/RenderService.h"
+#include "shared/RenderService.h"
 
 #include <QAction>
 #include <QMenu>

@@ -16,9 +16,9 @@
 #include "marbler/GenomeImage.h"
 #include "marbler/Growth.h"
 #include "marbler/Params.h"
-#include "ui/DesignDialog.h"
-#include "ui/OpenPlacement.h"
-#include "ui/SavedFiles.h"
+#include "shared/DesignDialog.h"
+#include "shared/SavedFiles.h"
+#include "workbench/OpenPlacement.h"
 
 #include <QAbstractButton>
 #include <QFileInfo>

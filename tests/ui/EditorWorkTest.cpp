@@ -19,7 +19,8 @@
 #include "marbler/GenomeImage.h"
 #include "marbler/Growth.h"
 #include "marbler/Params.h"
-#include "ui/SavedFiles.h"
+#include "marbler/RenderToFile.h"
+#include "shared/SavedFiles.h"
 
 #include <QAbstractSpinBox>
 #include <QAction>

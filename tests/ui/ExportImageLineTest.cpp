@@ -2,7 +2,7 @@
 // the render it is made from, is shown whole, not cut off at the line's first height.
 
 #include "TestUtil.h"
-#include "ui/DesignDialog.h"
+#include "shared/DesignDialog.h"
 
 #include <QCheckBox>
 #include <QLabel>

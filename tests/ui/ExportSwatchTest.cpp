@@ -8,8 +8,8 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Vector.h"
-#include "ui/DesignDialog.h"
-#include "ui/RenderService.h"
+#include "shared/DesignDialog.h"
+#include "shared/RenderService.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -14,11 +14,11 @@
 
 #include "marbler/Generator.h"
 #include "marbler/Random.h"
-#include "ui/DesignCell.h"
-#include "ui/DesignDialog.h"
-#include "ui/PopulationModel.h"
-#include "ui/RenderService.h"
-#include "ui/WorkbenchWindow.h"
+#include "shared/DesignDialog.h"
+#include "shared/RenderService.h"
+#include "workbench/DesignCell.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/WorkbenchWindow.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

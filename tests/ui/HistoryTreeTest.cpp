@@ -8,11 +8,11 @@
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
-#include "ui/DesignCell.h"
-#include "ui/PopulationModel.h"
-#include "ui/RenderService.h"
-#include "ui/Session.h"
-#include "ui/WorkbenchWindow.h"
+#include "shared/RenderService.h"
+#include "workbench/DesignCell.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/Session.h"
+#include "workbench/WorkbenchWindow.h"
 
 #include <QAction>
 #include <QApplication>

@@ -12,13 +12,14 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
-#include "ui/DesignCell.h"
-#include "ui/DesignDialog.h"
-#include "ui/ErrorReport.h"
-#include "ui/OpenPlacement.h"
-#include "ui/PopulationModel.h"
-#include "ui/RenderService.h"
-#include "ui/WorkbenchWindow.h"
+#include "marbler/RenderToFile.h"
+#include "shared/DesignDialog.h"
+#include "shared/ErrorReport.h"
+#include "shared/RenderService.h"
+#include "workbench/DesignCell.h"
+#include "workbench/OpenPlacement.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/WorkbenchWindow.h"
 
 #include <QAction>
 #include <QApplication>

@@ -3,9 +3,9 @@
 #include "UiTestSupport.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Paper.h"
-#include "ui/OpenPlacement.h"
-#include "ui/PopulationModel.h"
-#include "ui/WorkbenchWindow.h"
+#include "workbench/OpenPlacement.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/WorkbenchWindow.h"
 
 #include <QAction>
 

@@ -4,9 +4,9 @@
 #include "TestUtil.h"
 #include "UiTestSupport.h"
 #include "WaitFor.h"
-#include "ui/DesignCell.h"
-#include "ui/OpenPlacement.h"
-#include "ui/SourcePermissions.h"
+#include "shared/SourcePermissions.h"
+#include "workbench/DesignCell.h"
+#include "workbench/OpenPlacement.h"
 
 #include <QAction>
 #include <QColor>

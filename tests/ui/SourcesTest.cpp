@@ -8,14 +8,14 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/gl/GlRenderer.h"
 #include "marbler/gl/HybridMesh.h"
-#include "ui/DesignCell.h"
-#include "ui/DesignDialog.h"
-#include "ui/ErrorReport.h"
-#include "ui/OpenPlacement.h"
-#include "ui/PopulationModel.h"
-#include "ui/RenderService.h"
-#include "ui/SourcePermissions.h"
-#include "ui/WorkbenchWindow.h"
+#include "shared/DesignDialog.h"
+#include "shared/ErrorReport.h"
+#include "shared/RenderService.h"
+#include "shared/SourcePermissions.h"
+#include "workbench/DesignCell.h"
+#include "workbench/OpenPlacement.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/WorkbenchWindow.h"
 
 #include <QApplication>
 #include <QComboBox>

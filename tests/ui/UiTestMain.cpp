@@ -3,7 +3,7 @@
 #include "UiTestSupport.h"
 
 #include "editor/EditorWindow.h"
-#include "ui/ErrorReport.h"
+#include "shared/ErrorReport.h"
 
 #include <QApplication>
 #include <QDir>

@@ -2,9 +2,9 @@
 /// What the window tests share (UiTestMain.cpp, linked into every window test): the test main,
 /// a window fixture, error capture and a drop of files as the platform makes it.
 
-#include "ui/PopulationModel.h"
-#include "ui/RenderService.h"
-#include "ui/WorkbenchWindow.h"
+#include "shared/RenderService.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/WorkbenchWindow.h"
 
 #include <QStringList>
 #include <QTemporaryDir>

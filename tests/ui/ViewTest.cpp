@@ -10,13 +10,13 @@
 #include "marbler/gl/GlRenderer.h"
 #include "marbler/gl/HybridMesh.h"
 #include "marbler/gl/Meshes.h"
-#include "ui/DesignCell.h"
-#include "ui/DesignDialog.h"
-#include "ui/PopulationModel.h"
-#include "ui/RenderService.h"
-#include "ui/Session.h"
-#include "ui/ViewController.h"
-#include "ui/WorkbenchWindow.h"
+#include "shared/DesignDialog.h"
+#include "shared/RenderService.h"
+#include "shared/ViewController.h"
+#include "workbench/DesignCell.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/Session.h"
+#include "workbench/WorkbenchWindow.h"
 
 #include <QApplication>
 #include <QLabel>

@@ -8,7 +8,7 @@
 #include "marbler/Genome.h"
 #include "marbler/Params.h"
 #include "marbler/Random.h"
-#include "ui/RenderService.h"
+#include "shared/RenderService.h"
 
 #include <QApplication>
 #include <QEventLoop>

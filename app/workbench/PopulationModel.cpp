@@ -1,0 +1,586 @@
+#include "workbench/PopulationModel.h"
+
+#include "marbler/Colourways.h"
+#include "marbler/Error.h"
+#include "marbler/Families.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeIO.h"
+#include "workbench/Session.h"
+#include "workbench/Trash.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QStandardPaths>
+
+#include <algorithm>
+#include <set>
+
+namespace marbler::ui {
+
+namespace {
+
+/// SplitMix64: turns (session seed, counter) into well-spread seeds, so neighbouring
+/// generations do not get neighbouring seeds.
+std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t counter) {
+    std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (counter + 1);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+} // namespace
+
+PopulationModel::PopulationModel(QObject* parent)
+    : QObject(parent) {
+    mHistory.emplace_back();
+    mHistory.back().description = tr("Empty workbench");
+}
+
+const Genome* PopulationModel::cell(int index) const {
+    if (index < 0 || index >= CellCount) return nullptr;
+    const auto& c = current().cells[std::size_t(index)];
+    return c ? &*c : nullptr;
+}
+
+bool PopulationModel::isSelected(int index) const {
+    return index >= 0 && index < CellCount && current().selected[std::size_t(index)];
+}
+
+std::vector<int> PopulationModel::selectedCells() const {
+    std::vector<int> result;
+    for (int i = 0; i < CellCount; ++i)
+        if (isSelected(i)) result.push_back(i);
+    return result;
+}
+
+int PopulationModel::selectedCount() const {
+    return int(selectedCells().size());
+}
+
+void PopulationModel::toggleSelected(int index) {
+    setSelected(index, !isSelected(index));
+}
+
+void PopulationModel::setSelected(int index, bool selected) {
+    if (index < 0 || index >= CellCount) return;
+    if (selected && !cell(index)) return;
+    auto& flag = currentMutable().selected[std::size_t(index)];
+    if (flag == selected) return;
+    flag = selected;
+    emit selectionChanged();
+}
+
+void PopulationModel::clearSelection() {
+    auto& sel = currentMutable().selected;
+    if (std::none_of(sel.begin(), sel.end(), [](bool b) { return b; })) return;
+    sel.fill(false);
+    emit selectionChanged();
+}
+
+QString PopulationModel::whyNot(GeneticOperator op) const {
+    const QString label = operatorLabel(op);
+    const auto selected = selectedCells();
+    const int n = int(selected.size());
+    const int least = minParents(op), most = maxParents(op);
+    // What the operator takes, said the same way in every message.
+    const QString needs = most == 0 ? tr("%1 needs %2 or more parents").arg(label).arg(least)
+                          : least == most && least == 1
+                              ? tr("%1 needs 1 parent").arg(label)
+                              : tr("%1 needs exactly %2 parents").arg(label).arg(least);
+    if (mEmptyStart)
+        return tr("%1: there are no designs yet; make a new random population or open designs").arg(needs);
+    if (n == 0)
+        return least == 1
+                   ? tr("%1: click a design to pick it").arg(needs)
+                   : tr("%1: click %2 designs").arg(needs, least == 2 ? tr("two") : QString::number(least));
+    if (n < least) return tr("%1: %2 is picked, click another design").arg(needs).arg(n);
+    if (most > 0 && n > most) return tr("%1: %2 are picked, click one to let it go").arg(needs).arg(n);
+    // Every cell selected leaves no room for offspring.
+    if (n >= CellCount)
+        return tr("%1 has no room for offspring: every design is a parent, click one to let it go")
+            .arg(label);
+    const int dimension = cell(selected.front())->dimension;
+    if (!std::all_of(selected.begin(), selected.end(),
+                     [&](int i) { return cell(i)->dimension == dimension; }))
+        return n == 2 ? tr("%1 needs two parents of the same kind (flat/solid): one picked design is flat, "
+                           "the other solid")
+                            .arg(label)
+                      : tr("%1 needs parents of the same kind (flat/solid): the picked designs mix flat and "
+                           "solid ones")
+                            .arg(label);
+    return {};
+}
+
+std::uint64_t PopulationModel::nextBreedSeed() const {
+    // The new generation's index: in a session without branches it is the generation's
+    // position, as before branches existed, and it never repeats.
+    return mixSeed(mSessionSeed, std::uint64_t(mHistory.size()));
+}
+
+void PopulationModel::apply(GeneticOperator op, double strength) {
+    const auto selected = selectedCells();
+    BreedRequest request;
+    request.op = op;
+    request.seed = nextBreedSeed();
+    request.strength = std::clamp(strength, 0.0, 1.0);
+    for (int i : selected)
+        request.parents.push_back(*cell(i));
+    request.count = CellCount - int(selected.size());
+    if (request.count <= 0)
+        throw InputError("every cell is a parent: deselect one to make room for offspring");
+    // The children carry the numbers the user sees: the generation they make (as the status
+    // bar counts it) and the design (cell) each goes to.
+    request.generation = current().number + 1;
+    for (int i = 0; i < CellCount; ++i)
+        if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
+    std::vector<Genome> children = breed(request);
+    if (children.size() != std::size_t(request.count))
+        throw RuntimeFailure("the operator made too few offspring");
+
+    Generation next;
+    next.selected = current().selected;
+    next.parentCells = selected;
+    next.description = selected.size() == 1
+                           ? tr("%1 of 1 parent").arg(operatorLabel(op))
+                           : tr("%1 of %2 parents").arg(operatorLabel(op)).arg(selected.size());
+    if (mWildcard && children.size() > 1) children.back() = wildcard(request, children.back());
+    std::size_t child = 0;
+    for (int i = 0; i < CellCount; ++i) {
+        if (current().selected[std::size_t(i)]) {
+            next.cells[std::size_t(i)] = current().cells[std::size_t(i)];
+        } else {
+            next.cells[std::size_t(i)] = children[child++];
+        }
+    }
+    pushGeneration(std::move(next));
+}
+
+QString PopulationModel::whyNoColourways(bool mix) const {
+    if (QString why = whyNot(mix ? GeneticOperator::Recombine : GeneticOperator::Alter); !why.isEmpty())
+        return why;
+    for (int i : selectedCells())
+        if (locksOf(*cell(i)).palette)
+            return tr("Design %1's palette is locked, and colourways change only the palette: unlock it "
+                      "first")
+                .arg(i + 1);
+    return {};
+}
+
+void PopulationModel::applyColourways(bool mix, double strength, const QString& description) {
+    const auto selected = selectedCells();
+    ColourwayRequest request;
+    request.mix = mix;
+    request.strength = std::clamp(strength, 0.0, 1.0);
+    request.seed = nextBreedSeed();
+    for (int i : selected)
+        request.parents.push_back(*cell(i));
+    request.count = CellCount - int(selected.size());
+    if (request.count <= 0)
+        throw InputError("every cell is a parent: deselect one to make room for colourways");
+    request.generation = current().number + 1;
+    for (int i = 0; i < CellCount; ++i)
+        if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
+    std::vector<Genome> children = colourways(request);
+
+    Generation next;
+    next.selected = current().selected;
+    next.parentCells = selected;
+    next.description = !description.isEmpty() ? description
+                       : selected.size() == 1 ? tr("Colourways of 1 parent")
+                                              : tr("Colourways mixed from %1 parents").arg(selected.size());
+    std::size_t child = 0;
+    for (int i = 0; i < CellCount; ++i)
+        next.cells[std::size_t(i)] =
+            current().selected[std::size_t(i)] ? current().cells[std::size_t(i)] : children[child++];
+    pushGeneration(std::move(next));
+}
+
+Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& replaced) const {
+    // Of the parents' family when they have one (the first parent that does), else free.
+    const Family* family = nullptr;
+    for (const Genome& parent : request.parents)
+        if (!family && parent.meta.is_object() && parent.meta.contains("family") &&
+            parent.meta["family"].is_string())
+            family = findFamily(parent.meta["family"].get<std::string>());
+    const int dimension = request.parents.front().dimension;
+    if (family && family->dimension != dimension) family = nullptr;
+    std::set<std::string> taken;
+    for (const Genome& parent : request.parents)
+        taken.insert(genomeId(parent));
+    Genome g;
+    std::uint64_t seed = 0;
+    for (std::uint64_t draw = 0; draw < 16; ++draw) {
+        seed = mixSeed(request.seed, 0x77696c64ULL + draw) & 0xffffffffULL;
+        g = family ? familyGenome(*family, seed) : randomGenome(seed, dimension);
+        if (!taken.count(genomeId(g))) break;
+    }
+    // The wildcard takes the cell's place in the lineage: its name, generation and number, and
+    // an operator of its own so the tree and tooltips can say what it is.
+    nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
+    lineage["operator"] = "wildcard";
+    lineage["seed"] = seed;
+    if (replaced.meta.contains("lineage") && replaced.meta["lineage"].is_object()) {
+        const auto& was = replaced.meta["lineage"];
+        if (was.contains("child")) lineage["child"] = was["child"];
+        if (was.contains("generation")) lineage["generation"] = was["generation"];
+    }
+    g.meta["lineage"] = lineage;
+    if (lineage.contains("generation") && lineage.contains("child") && g.meta.contains("name") &&
+        g.meta["name"].is_string())
+        g.meta["name"] = g.meta["name"].get<std::string>() + " (g" + lineage["generation"].dump() + " #" +
+                         std::to_string(request.childNumbers.empty() ? lineage["child"].get<int>()
+                                                                     : request.childNumbers.back()) +
+                         ")";
+    g.meta["id"] = genomeId(g);
+    return g;
+}
+
+void PopulationModel::newRandomPopulation(int dimension, const std::string& family) {
+    Generation next;
+    const Family* only = findFamily(family);
+    if (only && only->dimension != dimension) only = nullptr;
+    if (only)
+        next.description =
+            tr("New %1 population").arg(QString::fromUtf8(only->name.data(), qsizetype(only->name.size())));
+    else
+        next.description = dimension == 3 ? tr("New random solid population") : tr("New random population");
+    // Seeded by the index the new generation gets, which the placeholder does not take: the
+    // first population and every later one draw from different seeds.
+    const std::size_t number = mEmptyStart ? 0 : mHistory.size();
+    const std::uint64_t base = mixSeed(mSessionSeed, std::uint64_t(number) * 1000003ULL);
+    // What each cell is drawn from: the family asked for, or the dimension's families and the
+    // free generator (nullptr) in a seeded order, so a mixed grid shows the craft's range.
+    std::vector<const Family*> sources;
+    if (only) {
+        sources.push_back(only);
+    } else {
+        for (const Family& f : allFamilies())
+            if (f.dimension == dimension) sources.push_back(&f);
+        sources.push_back(nullptr);
+        Pcg32 order(base, 0x6d6978666d6c7931ULL);
+        for (std::size_t i = sources.size(); i > 1; --i)
+            std::swap(sources[i - 1], sources[order.below(std::uint32_t(i))]);
+    }
+    // A new population is new: no design repeats one of the grid it replaces, or another.
+    std::set<std::string> taken;
+    for (const auto& c : current().cells)
+        if (c) taken.insert(genomeId(*c));
+    std::uint64_t draw = 0;
+    for (int i = 0; i < CellCount; ++i) {
+        for (;;) {
+            const std::uint64_t seed = mixSeed(base, draw++) & 0xffffffffULL;
+            const Family* source = sources[std::size_t(i) % sources.size()];
+            Genome g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
+            if (!taken.insert(genomeId(g)).second && draw < 1000) continue;
+            if (!g.meta.contains("seed")) g.meta["seed"] = seed;
+            next.cells[std::size_t(i)] = std::move(g);
+            break;
+        }
+    }
+    pushGeneration(std::move(next));
+}
+
+std::vector<int> PopulationModel::placementCells(std::size_t count, Placement placement) const {
+    std::vector<int> order;
+    const auto take = [&](auto&& wanted) {
+        for (int i = 0; i < CellCount; ++i)
+            if (wanted(i) && std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
+    };
+    if (placement == Placement::IntoSelected) {
+        take([&](int i) { return isSelected(i); });
+        take([&](int i) { return !cell(i); });
+        take([](int) { return true; });
+    } else {
+        take([&](int i) { return !cell(i); });
+        take([&](int i) { return !isSelected(i); });
+    }
+    if (order.size() > count) order.resize(count);
+    return order;
+}
+
+std::vector<int> PopulationModel::placeDesigns(const std::vector<Genome>& designs, const QString& description,
+                                               Placement placement) {
+    const std::vector<int> used = placementCells(designs.size(), placement);
+    Generation next = current();
+    next.description = description;
+    next.parentCells.clear(); // opened designs were not bred from the previous parents
+    for (std::size_t k = 0; k < used.size(); ++k) {
+        next.cells[std::size_t(used[k])] = designs[k];
+        next.selected[std::size_t(used[k])] = false;
+    }
+    if (!used.empty()) pushGeneration(std::move(next));
+    return used;
+}
+
+std::vector<int> PopulationModel::startGenerationOf(const std::vector<Genome>& designs,
+                                                    const QString& description, int first) {
+    Generation next;
+    next.description = description;
+    std::vector<int> used;
+    first = std::clamp(first, 0, CellCount - 1);
+    for (std::size_t k = 0; k < designs.size() && k < std::size_t(CellCount); ++k) {
+        const int index = (first + int(k)) % CellCount;
+        next.cells[std::size_t(index)] = designs[k];
+        used.push_back(index);
+    }
+    if (!used.empty()) pushGeneration(std::move(next));
+    return used;
+}
+
+void PopulationModel::setCell(int index, const Genome& genome, const QString& description) {
+    if (index < 0 || index >= CellCount) return;
+    Generation next = current();
+    next.description = description;
+    next.parentCells.clear(); // an opened design was not bred from the previous parents
+    next.cells[std::size_t(index)] = genome;
+    next.selected[std::size_t(index)] = false;
+    pushGeneration(std::move(next));
+}
+
+void PopulationModel::setCellLocks(int index, const Locks& locks) {
+    if (!cell(index)) return;
+    setLocks(*currentMutable().cells[std::size_t(index)], locks);
+    if (std::size_t(mCurrent) < mSessionCells.size()) mSessionCells[std::size_t(mCurrent)].clear();
+    emit cellChanged(index);
+    autosave();
+}
+
+void PopulationModel::setCellView(int index, const ViewAngle& view) {
+    if (!cell(index)) return;
+    setViewAngle(*currentMutable().cells[std::size_t(index)], view);
+    if (std::size_t(mCurrent) < mSessionCells.size()) mSessionCells[std::size_t(mCurrent)].clear();
+    emit cellChanged(index);
+    autosave();
+}
+
+void PopulationModel::pushGeneration(Generation generation) {
+    if (mEmptyStart) {
+        // The first designs replace the empty placeholder: they are generation 1.
+        mEmptyStart = false;
+        mHistory.clear();
+        mSessionCells.clear();
+        mForwardChild.clear();
+        generation.parent = -1;
+    } else {
+        generation.parent = mCurrent;
+    }
+    mHistory.push_back(std::move(generation));
+    numberGeneration(mHistory, mHistory.size() - 1);
+    mForwardChild.resize(mHistory.size(), -1);
+    setCurrent(int(mHistory.size()) - 1);
+    currentGenerationChanged();
+}
+
+std::vector<int> PopulationModel::children(int index) const {
+    std::vector<int> result;
+    for (std::size_t k = 0; k < mHistory.size(); ++k)
+        if (mHistory[k].parent == index && index >= 0) result.push_back(int(k));
+    return result;
+}
+
+QString PopulationModel::generationLabel(int index) const {
+    if (index < 0 || index >= int(mHistory.size())) return {};
+    const Generation& g = mHistory[std::size_t(index)];
+    return g.branch == 1 ? QString::number(g.number) : tr("%1 (branch %2)").arg(g.number).arg(g.branch);
+}
+
+int PopulationModel::forwardTarget() const {
+    if (mEmptyStart) return -1;
+    const int remembered =
+        std::size_t(mCurrent) < mForwardChild.size() ? mForwardChild[std::size_t(mCurrent)] : -1;
+    if (remembered >= 0) return remembered;
+    const std::vector<int> next = children(mCurrent);
+    return next.empty() ? -1 : next.back();
+}
+
+void PopulationModel::setCurrent(int index) {
+    mCurrent = index;
+    // Every generation on the way from the root was visited on the way here.
+    for (int k = index; mHistory[std::size_t(k)].parent >= 0; k = mHistory[std::size_t(k)].parent)
+        mForwardChild[std::size_t(mHistory[std::size_t(k)].parent)] = k;
+}
+
+void PopulationModel::goBack() {
+    if (!canGoBack()) return;
+    setCurrent(current().parent);
+    currentGenerationChanged();
+}
+
+void PopulationModel::goForward() {
+    const int next = forwardTarget();
+    if (next < 0) return;
+    setCurrent(next);
+    currentGenerationChanged();
+}
+
+void PopulationModel::goTo(int index) {
+    if (mEmptyStart || index < 0 || index >= int(mHistory.size()) || index == mCurrent) return;
+    setCurrent(index);
+    currentGenerationChanged();
+}
+
+void PopulationModel::setSessionFile(const QString& file) {
+    mSessionFile = file;
+    autosave();
+}
+
+bool PopulationModel::saveSession() {
+    if (mSessionFile.isEmpty() || mEmptyStart) return true;
+    try {
+        const QString folder = QFileInfo(mSessionFile).absolutePath();
+        if (!QDir().mkpath(folder))
+            throw RuntimeFailure("cannot create the session folder " + folder.toStdString());
+        writeFileAtomically(mSessionFile.toStdString(), serializeSession(*this, &mSessionCells));
+        return true;
+    } catch (const std::exception& e) { // also the JSON library's (a folder name that is not UTF-8)
+        emit sessionSaveFailed(QString::fromStdString(e.what()));
+        return false;
+    }
+}
+
+void PopulationModel::autosave() {
+    saveSession();
+}
+
+void PopulationModel::restoreSession(SavedSession session) {
+    if (session.history.empty()) return;
+    mHistory = std::move(session.history);
+    mSessionCells.clear();
+    for (std::size_t k = 0; k < mHistory.size(); ++k) {
+        // A parent that is not an earlier generation would make a cycle: a root instead.
+        int& parent = mHistory[k].parent;
+        if (parent < -1 || parent >= int(k)) parent = -1;
+        numberGeneration(mHistory, k);
+    }
+    mForwardChild.assign(mHistory.size(), -1);
+    setCurrent(std::clamp(session.current, 0, int(mHistory.size()) - 1));
+    mSessionSeed = session.seed;
+    mMesh = session.mesh;
+    mSessionLabel = session.label;
+    mEmptyStart = false;
+    currentGenerationChanged();
+}
+
+void PopulationModel::setSessionLabel(const SessionLabel& label) {
+    if (label == mSessionLabel) return;
+    mSessionLabel = label;
+    autosave();
+}
+
+void PopulationModel::setMesh(const QString& mesh) {
+    if (mesh == mMesh) return;
+    mMesh = mesh;
+    autosave();
+}
+
+int PopulationModel::populationDimension() const {
+    for (const auto& c : current().cells)
+        if (c) return c->dimension;
+    return 2;
+}
+
+QString PopulationModel::defaultFavouritesFolder() {
+    const QByteArray env = qgetenv("MARBLER_FAVOURITES_DIR");
+    if (!env.isEmpty()) return QString::fromLocal8Bit(env);
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/favourites");
+}
+
+QStringList PopulationModel::setFavouritesFolder(const QString& folder) {
+    mFavouritesFolder = folder;
+    mRemovedFavourites.clear();
+    // Removed favourites stay restorable for 30 days; older ones are deleted when the folder is
+    // set, which is at each start of the window.
+    if (!folder.isEmpty()) emptyTrash(favouritesTrashFolder(), 30);
+    return reloadFavourites();
+}
+
+QString PopulationModel::favouritesTrashFolder() const {
+    return mFavouritesFolder.isEmpty() ? QString()
+                                       : QDir(mFavouritesFolder).filePath(QStringLiteral(".trash"));
+}
+
+QStringList PopulationModel::reloadFavourites() {
+    mFavourites.clear();
+    QStringList errors;
+    QDir dir(mFavouritesFolder);
+    if (!mFavouritesFolder.isEmpty() && dir.exists()) {
+        // Files only, and not hidden ones: the trash (.trash) and an atomic write's temporary
+        // are not favourites.
+        const auto files = dir.entryInfoList({QStringLiteral("*.marble.json")}, QDir::Files, QDir::Name);
+        for (const QFileInfo& info : files) {
+            try {
+                mFavourites.push_back(
+                    {loadGenome(info.absoluteFilePath().toStdString()), info.absoluteFilePath()});
+            } catch (const Error& e) {
+                errors << QString::fromStdString(e.what());
+            }
+        }
+    }
+    emit favouritesChanged();
+    return errors;
+}
+
+void PopulationModel::addFavourite(const Genome& genome) {
+    if (mFavouritesFolder.isEmpty()) throw RuntimeFailure("no favourites folder is set");
+    if (!QDir().mkpath(mFavouritesFolder))
+        throw RuntimeFailure("cannot create the favourites folder " + mFavouritesFolder.toStdString());
+    const QString id = QString::fromStdString(genomeId(genome));
+    const QString file = QDir(mFavouritesFolder).filePath(id + QStringLiteral(".marble.json"));
+    // The same design kept twice stays one favourite (the file name is its content id).
+    for (const auto& f : mFavourites)
+        if (QFileInfo(f.file) == QFileInfo(file)) return;
+    saveGenome(genome, file.toStdString());
+    mFavourites.push_back({genome, file});
+    emit favouritesChanged();
+}
+
+QString PopulationModel::removeFavourite(int index) {
+    if (index < 0 || index >= int(mFavourites.size())) return {};
+    const QString file = mFavourites[std::size_t(index)].file;
+    const QString trashed = moveToTrash(file, favouritesTrashFolder());
+    if (trashed.isEmpty())
+        throw RuntimeFailure("cannot move " + file.toStdString() + " to the favourites' trash " +
+                             favouritesTrashFolder().toStdString());
+    mFavourites.erase(mFavourites.begin() + index);
+    mRemovedFavourites << trashed;
+    emit favouritesChanged();
+    return trashed;
+}
+
+bool PopulationModel::restoreRemovedFavourite(const QString& trashed) {
+    const QString file = restoreFromTrash(trashed, mFavouritesFolder);
+    mRemovedFavourites.removeAll(trashed);
+    if (file.isEmpty()) {
+        emit favouritesChanged(); // the list of removed ones changed
+        // Kept anew meanwhile (a favourite's file is named by its content): it is on the shelf.
+        return QFileInfo::exists(QDir(mFavouritesFolder).filePath(originalTrashName(trashed)));
+    }
+    reloadFavourites(); // in its place in name order, as the next start shows it
+    return true;
+}
+
+void numberGeneration(std::vector<Generation>& history, std::size_t k) {
+    Generation& g = history[k];
+    const bool firstChild = std::none_of(history.begin(), history.begin() + std::ptrdiff_t(k),
+                                         [&](const Generation& other) { return other.parent == g.parent; });
+    if (g.parent >= 0 && firstChild) {
+        const Generation& parent = history[std::size_t(g.parent)];
+        g.number = parent.number + 1;
+        g.branch = parent.branch;
+        return;
+    }
+    g.number = g.parent >= 0 ? history[std::size_t(g.parent)].number + 1 : 1;
+    int branches = 0;
+    for (std::size_t j = 0; j < k; ++j)
+        branches = std::max(branches, history[j].branch);
+    g.branch = branches + 1;
+}
+
+void PopulationModel::currentGenerationChanged() {
+    emit populationChanged();
+    emit selectionChanged();
+    emit historyChanged();
+    autosave();
+}
+
+} // namespace marbler::ui

@@ -1,0 +1,249 @@
+#include "workbench/Session.h"
+
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
+#include "shared/StartDialog.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QStandardPaths>
+
+#include <nlohmann/json.hpp>
+
+namespace marbler::ui {
+
+namespace {
+
+constexpr const char* FormatName = "marbler-session";
+/// Version 2 records each generation's parent (history is a tree); version 1, a line of
+/// generations, is still read.
+constexpr int SessionVersion = 2;
+/// A session larger than this is not read (it would be thousands of generations of big designs).
+constexpr qint64 MaxSessionBytes = 512LL * 1024 * 1024;
+
+[[noreturn]] void bad(const std::string& name, const std::string& location, const std::string& what) {
+    throw GenomeError(name, location, what);
+}
+
+/// A list of cell indices (0..8) at `key`, or empty when absent.
+std::vector<int> cellList(const nlohmann::ordered_json& object, const char* key, const std::string& name,
+                          const std::string& location) {
+    std::vector<int> result;
+    if (!object.contains(key)) return result;
+    const auto& list = object[key];
+    if (!list.is_array()) bad(name, location + "." + key, "must be an array of cell numbers");
+    for (const auto& v : list) {
+        if (!v.is_number_integer() || v.get<int>() < 0 || v.get<int>() >= CellCount)
+            bad(name, location + "." + key, "cell numbers are 0 to 8");
+        result.push_back(v.get<int>());
+    }
+    return result;
+}
+
+} // namespace
+
+QString defaultSessionFolder() {
+    const QByteArray env = qgetenv("MARBLER_SESSION_DIR");
+    if (!env.isEmpty()) return QString::fromLocal8Bit(env);
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/session");
+}
+
+QString sessionFilePath(const QString& folder) {
+    return QDir(folder).filePath(QStringLiteral("session.json"));
+}
+
+std::string serializeSession(const PopulationModel& model, std::vector<std::string>* cellsCache) {
+    // The header and each generation's small fields go through the JSON library; the designs,
+    // the bulk of the text, are spliced in from the cache.
+    nlohmann::ordered_json header;
+    header["format"] = FormatName;
+    header["version"] = SessionVersion;
+    header["seed"] = model.sessionSeed();
+    header["current"] = model.currentIndex();
+    // The number the window shows for the current generation, for lists that read only the head.
+    if (!model.isEmptyWorkbench()) header["generation"] = model.current().number;
+    header["dimension"] = model.populationDimension();
+    header["mesh"] = model.mesh().toStdString();
+    // The label goes before the generations: lists of sessions read only the head.
+    const SessionLabel& label = model.sessionLabel();
+    if (!label.name.isEmpty()) header["name"] = label.name.toStdString();
+    if (label.created.isValid())
+        header["created"] = label.created.toUTC().toString(Qt::ISODate).toStdString();
+    std::string text = header.dump();
+    text.pop_back(); // the closing brace
+    text += ",\"generations\":[";
+
+    const auto& history = model.history();
+    std::vector<std::string> local;
+    std::vector<std::string>& cache = cellsCache ? *cellsCache : local;
+    cache.resize(history.size());
+    for (std::size_t k = 0; k < history.size(); ++k) {
+        const Generation& g = history[k];
+        nlohmann::ordered_json gen;
+        gen["description"] = g.description.toStdString();
+        gen["parent"] = g.parent;
+        gen["parents"] = g.parentCells;
+        std::vector<int> selected;
+        for (int i = 0; i < CellCount; ++i)
+            if (g.selected[std::size_t(i)]) selected.push_back(i);
+        gen["selected"] = selected;
+        std::string& cells = cache[k];
+        if (cells.empty()) {
+            nlohmann::ordered_json fragment;
+            auto& list = fragment["cells"] = nlohmann::ordered_json::array();
+            nlohmann::ordered_json bases = nlohmann::ordered_json::array();
+            bool anyBase = false;
+            for (const auto& cell : g.cells) {
+                list.push_back(cell ? toJson(*cell) : nlohmann::ordered_json());
+                anyBase = anyBase || (cell && !cell->baseDirectory.empty());
+                if (cell && !cell->baseDirectory.empty())
+                    bases.push_back(cell->baseDirectory);
+                else
+                    bases.push_back(nullptr);
+            }
+            if (anyBase) fragment["bases"] = std::move(bases);
+            cells = fragment.dump();
+            cells = cells.substr(1, cells.size() - 2); // the members, without braces
+        }
+        if (k > 0) text += ',';
+        std::string small = gen.dump();
+        small.back() = ',';
+        text += small;
+        text += cells;
+        text += '}';
+    }
+    // Compact: the document is rewritten after every change and read only by resume.
+    text += "]}\n";
+    return text;
+}
+
+SavedSession parseSession(std::string_view text, const std::string& name) {
+    nlohmann::ordered_json doc;
+    try {
+        doc = nlohmann::ordered_json::parse(text);
+    } catch (const nlohmann::ordered_json::exception& e) {
+        bad(name, "", std::string("not valid JSON (") + e.what() + ")");
+    }
+    if (!doc.is_object()) bad(name, "", "a session is a JSON object");
+    if (!doc.contains("format") || doc["format"] != FormatName) bad(name, "format", "not a Marbler session");
+    if (!doc.contains("version") || !doc["version"].is_number_integer() ||
+        doc["version"].get<long long>() < 1 || doc["version"].get<long long>() > SessionVersion)
+        bad(name, "version", "only version 1 and 2 sessions are read");
+    const int version = doc["version"].get<int>();
+
+    SavedSession session;
+    if (!doc.contains("seed") || !doc["seed"].is_number_unsigned())
+        bad(name, "seed", "must be a whole number >= 0");
+    session.seed = doc["seed"].get<std::uint64_t>();
+    if (!doc.contains("dimension") || !doc["dimension"].is_number_integer() ||
+        (doc["dimension"].get<int>() != 2 && doc["dimension"].get<int>() != 3))
+        bad(name, "dimension", "must be 2 or 3");
+    session.dimension = doc["dimension"].get<int>();
+    if (doc.contains("mesh")) {
+        if (!doc["mesh"].is_string()) bad(name, "mesh", "must be a string");
+        const QString mesh = QString::fromStdString(doc["mesh"].get<std::string>());
+        if (meshNames().contains(mesh)) session.mesh = mesh; // an unknown object falls back to the vase
+    }
+
+    if (doc.contains("name")) {
+        if (!doc["name"].is_string()) bad(name, "name", "must be a string");
+        session.label.name = QString::fromStdString(doc["name"].get<std::string>());
+    }
+    if (doc.contains("created")) {
+        if (!doc["created"].is_string()) bad(name, "created", "must be a date and time (ISO 8601)");
+        // A time that does not parse only loses the label's date, not the session.
+        session.label.created =
+            QDateTime::fromString(QString::fromStdString(doc["created"].get<std::string>()), Qt::ISODate);
+    }
+
+    if (!doc.contains("generations") || !doc["generations"].is_array() || doc["generations"].empty())
+        bad(name, "generations", "must be a non-empty array");
+    const auto& generations = doc["generations"];
+    for (std::size_t k = 0; k < generations.size(); ++k) {
+        const std::string at = "generations[" + std::to_string(k) + "]";
+        const auto& gen = generations[k];
+        if (!gen.is_object()) bad(name, at, "must be an object");
+        Generation g;
+        if (version == 1) {
+            // Version 1 sessions were a line: each generation grew from the one before.
+            g.parent = int(k) - 1;
+        } else {
+            // Only an earlier generation can be a parent, which also rules out cycles.
+            if (!gen.contains("parent") || !gen["parent"].is_number_integer() ||
+                gen["parent"].get<long long>() < -1 ||
+                gen["parent"].get<long long>() >= static_cast<long long>(k))
+                bad(name, at + ".parent",
+                    k == 0 ? std::string("must be -1: the first generation grows from none")
+                           : "must name an earlier generation (0 to " + std::to_string(k - 1) +
+                                 "), or be -1 for a generation that grows from none");
+            g.parent = gen["parent"].get<int>();
+        }
+        if (gen.contains("description")) {
+            if (!gen["description"].is_string()) bad(name, at + ".description", "must be a string");
+            g.description = QString::fromStdString(gen["description"].get<std::string>());
+        }
+        g.parentCells = cellList(gen, "parents", name, at);
+        if (!gen.contains("cells") || !gen["cells"].is_array() ||
+            gen["cells"].size() != std::size_t(CellCount))
+            bad(name, at + ".cells", "must be an array of 9 designs or nulls");
+        const nlohmann::ordered_json* bases = nullptr;
+        if (gen.contains("bases")) {
+            bases = &gen["bases"];
+            if (!bases->is_array() || bases->size() != std::size_t(CellCount))
+                bad(name, at + ".bases", "must be an array of 9 folders or nulls");
+        }
+        bool any = false;
+        for (int i = 0; i < CellCount; ++i) {
+            const auto& cell = gen["cells"][std::size_t(i)];
+            if (cell.is_null()) continue;
+            const std::string cellAt = at + ".cells[" + std::to_string(i) + "]";
+            // The genome's own reader checks every rule of the format.
+            Genome genome = parseGenome(cell.dump(), name + ": " + cellAt);
+            if (bases) {
+                const auto& base = (*bases)[std::size_t(i)];
+                if (base.is_string())
+                    genome.baseDirectory = base.get<std::string>();
+                else if (!base.is_null())
+                    bad(name, at + ".bases[" + std::to_string(i) + "]", "must be a folder name or null");
+            }
+            g.cells[std::size_t(i)] = std::move(genome);
+            any = true;
+        }
+        if (!any) bad(name, at + ".cells", "a generation holds at least one design");
+        for (int i : cellList(gen, "selected", name, at))
+            if (g.cells[std::size_t(i)]) g.selected[std::size_t(i)] = true;
+        session.history.push_back(std::move(g));
+        numberGeneration(session.history, k);
+    }
+    if (!doc.contains("current") || !doc["current"].is_number_integer() ||
+        doc["current"].get<long long>() < 0 ||
+        doc["current"].get<long long>() >= static_cast<long long>(session.history.size()))
+        bad(name, "current", "must name one of the generations");
+    session.current = doc["current"].get<int>();
+    return session;
+}
+
+SavedSession loadSession(const QString& file) {
+    const std::string name = file.toStdString();
+    QFile in(file);
+    if (!in.open(QIODevice::ReadOnly))
+        throw RuntimeFailure("cannot read " + name + ": " + in.errorString().toStdString());
+    if (in.size() > MaxSessionBytes) bad(name, "", "the file is too large to be a session");
+    const QByteArray text = in.readAll();
+    if (in.error() != QFileDevice::NoError)
+        throw RuntimeFailure("cannot read " + name + ": " + in.errorString().toStdString());
+    return parseSession(std::string_view(text.constData(), std::size_t(text.size())), name);
+}
+
+QString keepBadSession(const QString& file) {
+    for (int n = 1; n < 1000; ++n) {
+        const QString aside =
+            n == 1 ? file + QStringLiteral(".bad") : QStringLiteral("%1.%2.bad").arg(file).arg(n);
+        if (QFileInfo::exists(aside)) continue;
+        return QFile::rename(file, aside) ? aside : QString();
+    }
+    return {};
+}
+
+} // namespace marbler::ui

@@ -1,0 +1,68 @@
+#pragma once
+/// The breeding session on disk: every generation's nine designs, the current generation, the
+/// session seed, the population's kind and the object solid designs are shown on. The model
+/// writes it (atomically) after every change of the population, so a crash or a closed window
+/// loses nothing; the next start offers to resume it.
+///
+/// One JSON document per session, kept in the session folder's store (SessionStore.h):
+///
+///     {"format": "marbler-session", "version": 2, "seed": 42, "current": 1, "generation": 2,
+///      "dimension": 2, "mesh": "vase", "name": "Flat session, 2 Dec 2026 14:05",
+///      "created": "2026-12-02T14:05:12Z",
+///      "generations": [{"description": "...", "parent": 0, "parents": [4], "selected": [4],
+///                       "cells": [GENOME, null, ...], "bases": ["/dir", null, ...]}, ...]}
+///
+/// where `parent` is the index of the generation this one grew from (always an earlier one; -1
+/// for the first), `parents` the cells whose designs it was bred from, GENOME a genome document
+/// exactly as a genome file holds it (marbler::toJson, read back with marbler::parseGenome, so
+/// every rule of the genome format is checked on resume), and `bases` the folders relative
+/// source images resolve against (absent when none). Version 1 documents, which have no
+/// `parent` (each generation grew from the one before), are still read. `name` and `created`
+/// (ISO 8601) label the session in the list of kept sessions (SessionStore.h); both are optional,
+/// as is `generation`, the current generation's number as the window shows it (for that list).
+
+#include "marbler/Mesh.h"
+#include "workbench/PopulationModel.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace marbler::ui {
+
+/// A session read back from disk.
+struct SavedSession {
+    std::vector<Generation> history; ///< at least one generation, numbered (numberGeneration)
+    int current = 0;                 ///< index into history
+    std::uint64_t seed = 1;
+    int dimension = 2; ///< 2: flat, 3: solid (the kind of the current grid)
+    QString mesh = QString::fromLatin1(DefaultMesh);
+    SessionLabel label{}; ///< empty name, invalid time when the document has none
+};
+
+/// The session folder: $MARBLER_SESSION_DIR when set, else the app data folder's "session".
+QString defaultSessionFolder();
+/// The single session file of a folder before sessions were kept (`session.json`), which
+/// SessionStore::migrate() moves into the store.
+QString sessionFilePath(const QString& folder);
+
+/// The session document of a model's history (see above). The designs of a generation do not
+/// change once bred, so their text can be kept between saves: `cellsCache` (when given) holds
+/// one fragment per generation, and empty entries are filled; the model clears the entries of
+/// the generations it changes.
+std::string serializeSession(const PopulationModel& model, std::vector<std::string>* cellsCache = nullptr);
+/// Parses a session document; `name` names the source in errors. Throws InputError (or
+/// GenomeError naming the generation and cell) for anything that breaks the format.
+SavedSession parseSession(std::string_view text, const std::string& name);
+/// Reads and parses a session file. Throws InputError/GenomeError as parseSession, and
+/// RuntimeFailure when the file cannot be read.
+SavedSession loadSession(const QString& file);
+
+/// Moves a bad session file aside (`NAME.json.bad`, or `.2.bad`, ... when taken) so that a
+/// fresh session can start without destroying it. Returns the new name, empty when it failed.
+QString keepBadSession(const QString& file);
+
+} // namespace marbler::ui
