@@ -10,18 +10,14 @@
 #include "editor/PaletteEditor.h"
 #include "editor/ParamForm.h"
 #include "editor/Recovery.h"
+#include "editor/SectionControls.h"
 #include "editor/StepList.h"
 #include "editor/Timeline.h"
 #include "editor/ToolOptions.h"
-#include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
-#include "marbler/Generator.h"
-#include "marbler/GenomeIO.h"
-#include "marbler/GenomeImage.h"
 #include "marbler/Growth.h"
 #include "marbler/Params.h"
 #include "ui/DesignDialog.h"
-#include "ui/ErrorReport.h"
 #include "ui/Help.h"
 #include "ui/PopulationModel.h"
 #include "ui/RenderService.h"
@@ -31,43 +27,26 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
-#include <QDir>
 #include <QDockWidget>
-#include <QFileDialog>
-#include <QFileInfo>
-#include <QHBoxLayout>
-#include <QImageReader>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
-#include <QMessageBox>
-#include <QMouseEvent>
-#include <QPainter>
-#include <QProgressDialog>
-#include <QPushButton>
-#include <QRandomGenerator>
 #include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
-#include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTextBrowser>
-#include <QThread>
 #include <QToolBar>
 #include <QUndoView>
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <functional>
-#include <span>
 #include <utility>
 
 namespace marbler::ui {
@@ -253,65 +232,12 @@ void EditorWindow::buildDocks() {
     toolLayout->setContentsMargins(4, 4, 4, 4);
     toolLayout->addWidget(mToolOptions);
     if (dimension == 3) {
-        // The cross-section: its axis and where along it.
-        auto* row = new QHBoxLayout;
-        row->addWidget(new QLabel(tr("Section"), toolPanel));
-        mSliceAxis = new QComboBox(toolPanel);
-        mSliceAxis->setObjectName(QStringLiteral("sliceAxis"));
-        mSliceAxis->addItems({tr("x"), tr("y"), tr("z")});
-        mSliceAxis->setCurrentIndex(mSlice.axis);
-        mSliceAxis->setToolTip(
-            tr("The axis the cross-section is cut across; clicks on it place the 3D tools"));
-        row->addWidget(mSliceAxis);
-        toolLayout->addLayout(row);
-        mSlicePosition = new QSlider(Qt::Horizontal, toolPanel);
-        mSlicePosition->setObjectName(QStringLiteral("slicePosition"));
-        mSlicePosition->setRange(0, 1000);
-        mSlicePosition->setValue(500);
-        mSlicePosition->setToolTip(tr("Where along its axis the cross-section is cut (PgUp / PgDn move it)"));
-        // Where the section is, as a number too (design units along its axis).
-        mSliceValue = new QDoubleSpinBox(toolPanel);
-        mSliceValue->setObjectName(QStringLiteral("sliceValue"));
-        mSliceValue->setDecimals(1);
-        mSliceValue->setToolTip(tr("Where the cross-section is cut, in design units along its axis"));
-        auto* positionRow = new QHBoxLayout;
-        positionRow->addWidget(mSlicePosition, 1);
-        positionRow->addWidget(mSliceValue);
-        toolLayout->addLayout(positionRow);
-        const auto sliceChanged = [this] {
-            if (mSliceUpdating) return;
-            const glm::dvec3 size = mDocument->design().size;
-            const int axis = mSliceAxis->currentIndex();
-            setSlice(Slice{axis, size[axis] * mSlicePosition->value() / 1000.0});
-        };
-        connect(mSliceAxis, &QComboBox::currentIndexChanged, this, sliceChanged);
-        connect(mSlicePosition, &QSlider::valueChanged, this, sliceChanged);
-        connect(mSliceValue, &QDoubleSpinBox::valueChanged, this, [this](double value) {
-            if (mSliceUpdating) return;
-            const glm::dvec3 size = mDocument->design().size;
-            setSlice(
-                Slice{mSliceAxis->currentIndex(), std::clamp(value, 0.0, size[mSliceAxis->currentIndex()])});
-        });
-        auto* meshRow = new QHBoxLayout;
-        meshRow->addWidget(new QLabel(tr("Object"), toolPanel));
-        auto* mesh = new QComboBox(toolPanel);
-        mesh->setObjectName(QStringLiteral("objectMesh"));
-        mesh->addItems(meshNames());
-        mesh->addItem(tr("Mesh file…"));
-        mesh->setToolTip(tr("The object the design is shown on (drag the object to turn it)"));
-        meshRow->addWidget(mesh);
-        toolLayout->addLayout(meshRow);
-        connect(mesh, &QComboBox::activated, this, [this, mesh](int index) {
-            if (index < int(meshNames().size())) {
-                mObject->setMesh(mesh->itemText(index));
-                return;
-            }
-            const QString file = QFileDialog::getOpenFileName(
-                this, tr("Show the design on a mesh"), QString(),
-                tr("Meshes (*.obj *.ply *.stl *.off *.gltf *.glb);;All files (*)"));
-            if (file.isEmpty()) return;
-            mObject->setMesh(file);
-        });
+        mSection = new SectionControls([this] { return mDocument->design().size; }, mSlice, toolPanel);
+        mSection->setObjectName(QStringLiteral("sectionControls"));
+        toolLayout->addWidget(mSection);
+        connect(mSection, &SectionControls::sliceChosen, this, &EditorWindow::setSlice);
+        connect(mSection, &SectionControls::meshChosen, this,
+                [this](const QString& mesh) { mObject->setMesh(mesh); });
     }
     toolLayout->addStretch();
     // As the form: the options of the tool chosen scroll in a panel of their own width, so that
@@ -729,17 +655,8 @@ void EditorWindow::setSlice(const Slice& slice) {
     mCanvas->setSlice(slice);
     mCompare->setSlice(slice);
     if (mObject) mObject->setSlice(slice);
-    if (mSliceValue) {
-        // The number and the slider say where it is, whichever moved it.
-        mSliceUpdating = true;
-        const double extent = mDocument->design().size[slice.axis];
-        mSliceAxis->setCurrentIndex(slice.axis);
-        mSliceValue->setRange(0.0, extent);
-        mSliceValue->setValue(slice.value);
-        mSliceValue->setPrefix(tr("%1 = ").arg(QLatin1String(axisName(slice.axis))));
-        if (extent > 0.0) mSlicePosition->setValue(int(std::lround(slice.value / extent * 1000.0)));
-        mSliceUpdating = false;
-    }
+    // The number and the slider say where it is, whichever moved it.
+    if (mSection) mSection->showSlice(slice);
 }
 
 void EditorWindow::updateTitle() {

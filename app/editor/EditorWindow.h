@@ -30,17 +30,10 @@
 #include <memory>
 #include <optional>
 
-class QAction;
 class QActionGroup;
-class QComboBox;
 class QDialog;
-class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
-class QMenu;
-class QPainter;
-class QSlider;
-class QSplitter;
 class QUndoView;
 
 namespace marbler::ui {
@@ -48,6 +41,7 @@ namespace marbler::ui {
 class EditorAutosave;
 class EditorExports;
 class HistoryDock;
+class SectionControls;
 class EditorCanvas;
 class ParamForm;
 class PaletteEditor;
@@ -172,10 +166,7 @@ private:
     EditorExports* mExports = nullptr;
     ToolOptions* mToolOptions = nullptr;
     SolidObjectView* mObject = nullptr;
-    QComboBox* mSliceAxis = nullptr;
-    QSlider* mSlicePosition = nullptr;
-    QDoubleSpinBox* mSliceValue = nullptr;
-    bool mSliceUpdating = false; ///< the slice's widgets are being set to it (no feedback)
+    SectionControls* mSection = nullptr; ///< a solid's section and object (none for a flat design)
     QActionGroup* mTools = nullptr;
     QLabel* mStatus = nullptr;
     ToolSettings mToolSettings;

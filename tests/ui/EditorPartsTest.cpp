@@ -9,18 +9,22 @@
 #include "editor/EditorFiles.h"
 #include "editor/EditorWindow.h"
 #include "editor/HistoryDock.h"
+#include "editor/SectionControls.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/Params.h"
 
+#include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
 #include <QListWidget>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -172,4 +176,26 @@ TEST(EditorParts, AnAnimationShowsItsProgressBoxOverTheWindowAndItsCancelWritesN
     EXPECT_FALSE(job.running());
     EXPECT_EQ(window.findChild<QProgressDialog*>(QStringLiteral("animationProgress")), nullptr);
     EXPECT_TRUE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden).isEmpty());
+}
+
+TEST(EditorParts, TheSectionControlsSayWhereTheSectionIsAndWhatTheUserChose) {
+    SectionControls controls([] { return glm::dvec3(1000.0, 800.0, 600.0); }, Slice{2, 300.0});
+    QSignalSpy chosen(&controls, &SectionControls::sliceChosen);
+    controls.showSlice(Slice{1, 200.0});
+    auto* axis = controls.findChild<QComboBox*>(QStringLiteral("sliceAxis"));
+    auto* position = controls.findChild<QSlider*>(QStringLiteral("slicePosition"));
+    auto* value = controls.findChild<QDoubleSpinBox*>(QStringLiteral("sliceValue"));
+    ASSERT_TRUE(axis && position && value);
+    EXPECT_EQ(axis->currentText(), QStringLiteral("y"));
+    EXPECT_EQ(value->text(), QStringLiteral("y = 200.0"));
+    EXPECT_EQ(position->value(), 250) << "200 of 800";
+    EXPECT_TRUE(chosen.isEmpty()) << "showing a section is no choice";
+
+    position->setValue(500);
+    ASSERT_EQ(chosen.count(), 1);
+    const auto slice = chosen.last().at(0).value<Slice>();
+    EXPECT_EQ(slice.axis, 1);
+    EXPECT_DOUBLE_EQ(slice.value, 400.0);
+    value->setValue(900.0); // past the block: held to its side
+    EXPECT_DOUBLE_EQ(chosen.last().at(0).value<Slice>().value, 800.0);
 }
