@@ -3,7 +3,9 @@
 #include "editor/AnimationExport.h"
 
 #include "marbler/Animation.h"
+#include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
+#include "shared/BackgroundJob.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -19,8 +21,10 @@
 #include <QSpinBox>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 
 namespace marbler::ui {
 
@@ -182,64 +186,63 @@ AnimationExportSettings AnimationExportDialog::settings() const {
     return s;
 }
 
-AnimationExportJob::AnimationExportJob(QObject* parent)
-    : QObject(parent) {}
-
-AnimationExportJob::~AnimationExportJob() {
-    if (mCancel) mCancel->store(true);
-    if (mThread.joinable()) mThread.join();
-}
-
-bool AnimationExportJob::start(const Genome& design, const AnimationExportSettings& settings) {
-    if (mRunning) return false;
-    if (mThread.joinable()) mThread.join();
-    mRunning = true;
-    mCancel = std::make_shared<std::atomic<bool>>(false);
+void writeAnimationExport(const Genome& design, const AnimationExportSettings& settings,
+                          const RenderControl& control) {
     RenderSettings render;
     render.width = settings.width;
     render.height = settings.height;
     render.slice = settings.slice;
     const std::filesystem::path out = withAnimationExtension(settings.path, settings.format).toStdString();
     const bool frames = settings.format == AnimationFormat::PngFrames;
-    mThread = std::thread([this, design, render, out, frames, count = settings.frames, fps = settings.fps,
-                           cancel = mCancel] {
-        bool ok = false;
-        QString error;
-        try {
-            std::error_code ec;
-            if (std::filesystem::exists(out, ec)) {
-                const bool dir = std::filesystem::is_directory(out, ec);
-                if (frames ? !dir || !std::filesystem::is_empty(out, ec) : dir)
-                    throw InputError(out.string() +
-                                     ": already exists; choose a new or empty folder for PNG frames");
-            }
-            auto last = std::make_shared<std::atomic<int>>(-1);
-            writeAnimation(
-                design, render, out, count, fps, cancel.get(), [this, last, count](int frame, double within) {
-                    const int permille = int((frame + within) / count * 1000.0);
-                    if (last->exchange(permille) == permille) return;
-                    QMetaObject::invokeMethod(
-                        this, [this, permille] { emit progress(permille / 1000.0); }, Qt::QueuedConnection);
-                });
-            ok = true;
-        } catch (const Cancelled&) {
-        } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
-        }
-        QMetaObject::invokeMethod(
-            this,
-            [this, ok, error] {
-                if (mThread.joinable()) mThread.join();
-                mRunning = false;
-                emit finished(ok, error);
-            },
-            Qt::QueuedConnection);
-    });
+    std::error_code ec;
+    if (std::filesystem::exists(out, ec)) {
+        const bool dir = std::filesystem::is_directory(out, ec);
+        if (frames ? !dir || !std::filesystem::is_empty(out, ec) : dir)
+            throw InputError(out.string() + ": already exists; choose a new or empty folder for PNG frames");
+    }
+    const int count = settings.frames;
+    writeAnimation(design, render, out, count, settings.fps, control.cancel,
+                   [&control, count](int frame, double within) {
+                       if (control.progress) control.progress((frame + within) / count);
+                   });
+}
+
+AnimationExportJob::AnimationExportJob(QObject* parent)
+    : QObject(parent) {}
+
+AnimationExportJob::~AnimationExportJob() {
+    // Before the QObject goes: the thread may still tell this object its progress.
+    delete mJob;
+}
+
+bool AnimationExportJob::start(const Genome& design, const AnimationExportSettings& settings) {
+    if (mJob) return false;
+    // Progress is told in thousandths, each once, as the frames' threads reach it.
+    auto last = std::make_shared<std::atomic<int>>(-1);
+    mJob = BackgroundJob::start(
+        this,
+        JobBox(qobject_cast<QWidget*>(parent()), tr("Writing the making of the design…"),
+               QStringLiteral("animationProgress")),
+        [this, design, settings, last](const RenderControl& control) {
+            RenderControl told = control;
+            told.progress = [this, &control, last](double fraction) {
+                if (control.progress) control.progress(fraction);
+                const int permille = int(fraction * 1000.0);
+                if (last->exchange(permille) == permille) return;
+                QMetaObject::invokeMethod(
+                    this, [this, permille] { emit progress(permille / 1000.0); }, Qt::QueuedConnection);
+            };
+            writeAnimationExport(design, settings, told);
+        },
+        [this](const JobOutcome& outcome) {
+            mJob = nullptr;
+            emit finished(outcome.done(), outcome.error);
+        });
     return true;
 }
 
 void AnimationExportJob::cancel() {
-    if (mCancel) mCancel->store(true);
+    if (mJob) mJob->cancel();
 }
 
 } // namespace marbler::ui

@@ -10,17 +10,20 @@
 #include <QObject>
 #include <QString>
 
-#include <atomic>
-#include <memory>
 #include <optional>
-#include <thread>
 
 class QComboBox;
 class QDoubleSpinBox;
 class QLineEdit;
 class QSpinBox;
 
+namespace marbler {
+struct RenderControl;
+}
+
 namespace marbler::ui {
+
+class BackgroundJob;
 
 /// The formats of Export animation.
 enum class AnimationFormat { PngFrames, Gif, WebP, Mp4, WebM };
@@ -63,7 +66,15 @@ private:
     std::optional<Slice> mSlice;
 };
 
-/// Writes one animation on a thread of its own. Lives on the GUI thread; its signals arrive there.
+/// Writes the making of `design` as `settings` say, on the calling thread: the folder of frames
+/// must be new or empty; `control` cancels it and hears how far it is. Throws InputError,
+/// RuntimeFailure, Cancelled (nothing is left at the path then).
+void writeAnimationExport(const Genome& design, const AnimationExportSettings& settings,
+                          const RenderControl& control);
+
+/// Writes one animation as a BackgroundJob (BackgroundJob.h): its progress box
+/// ("animationProgress") is modal to the parent when the parent is a widget. Lives on the GUI
+/// thread; its signals arrive there.
 class AnimationExportJob : public QObject {
     Q_OBJECT
 public:
@@ -75,7 +86,7 @@ public:
     /// Stops the job; nothing is left at the path. finished(false, "") follows.
     void cancel();
     /// Whether a job is writing (until finished is emitted).
-    bool running() const { return mRunning; }
+    bool running() const { return mJob != nullptr; }
 
 signals:
     /// Done so far, 0 to 1.
@@ -84,9 +95,7 @@ signals:
     void finished(bool ok, const QString& error);
 
 private:
-    std::thread mThread;
-    std::shared_ptr<std::atomic<bool>> mCancel;
-    bool mRunning = false;
+    BackgroundJob* mJob = nullptr; ///< the job writing now (a child), null between jobs
 };
 
 } // namespace marbler::ui

@@ -149,7 +149,7 @@ void EditorCanvas::requestRender(const Genome& genome, bool previewOnly) {
     }
     if (!window || genome.size.x <= 0) {
         mRenderer->cancel(mKey);
-        mImage = QImage();
+        mShown.image = QImage();
         update();
         return;
     }
@@ -159,17 +159,17 @@ void EditorCanvas::requestRender(const Genome& genome, bool previewOnly) {
     request.size = window->pixels.size();
     request.previewOnly = previewOnly;
     if (genome.dimension == 3) request.slice = mSlice;
-    mRequestRegion = request.region;
-    mImageFinal = false;
+    mShown.requested = request.region;
+    mShown.final = false;
     mRenderer->request(mKey, std::move(request));
 }
 
 void EditorCanvas::onRendered(std::uint64_t key, const QImage& image, bool final) {
     if (key != mKey) return;
-    mImage = image;
-    if (mRequestRegion) mImageRegion = *mRequestRegion;
+    mShown.image = image;
+    if (mShown.requested) mShown.region = *mShown.requested;
     // A preview-only request's single pass comes as final, but it is still the coarse one.
-    mImageFinal = final && !mDragging && mDrag == Drag::None;
+    mShown.final = final && !mDragging && mDrag == Drag::None;
     update();
 }
 
@@ -424,12 +424,12 @@ Genome EditorCanvas::withReplaced(const Operation& op) const {
 void EditorCanvas::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.fillRect(rect(), palette().color(QPalette::Window).darker(115));
-    if (!mImage.isNull()) {
-        const QRectF r = mView.toViewport(mImageRegion);
+    if (!mShown.image.isNull()) {
+        const QRectF r = mView.toViewport(mShown.region);
         const double ratio = devicePixelRatioF();
         p.setRenderHint(QPainter::SmoothPixmapTransform);
         if (mRepeat == RepeatPreview::Off) {
-            p.drawImage(QRectF(r.topLeft() / ratio, r.size() / ratio), mImage);
+            p.drawImage(QRectF(r.topLeft() / ratio, r.size() / ratio), mShown.image);
         } else {
             const QSizeF plane = planeSize();
             for (int j = -1; j <= 1; ++j)
@@ -439,7 +439,8 @@ void EditorCanvas::paintEvent(QPaintEvent*) {
                     const QRectF t = mView.toViewport(tile);
                     const bool mirror = mRepeat == RepeatPreview::Mirror;
                     p.drawImage(QRectF(t.topLeft() / ratio, t.size() / ratio),
-                                mirror && (i != 0 || j != 0) ? mImage.mirrored(i != 0, j != 0) : mImage);
+                                mirror && (i != 0 || j != 0) ? mShown.image.mirrored(i != 0, j != 0)
+                                                             : mShown.image);
                 }
         }
     }

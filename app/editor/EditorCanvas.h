@@ -4,6 +4,7 @@
 /// move the selected step, and the ink picker. It knows no document: it shows the design it is
 /// given and says what the user did through its signals; the editor window applies them.
 
+#include "editor/CanvasImage.h"
 #include "editor/Gestures.h"
 #include "shared/RenderService.h"
 #include "shared/ViewController.h"
@@ -61,8 +62,8 @@ public:
 
     /// The image shown now, whether it is the sharp final one, and the steps of the gesture in
     /// progress (tests).
-    const QImage& image() const { return mImage; }
-    bool imageFinal() const { return mImageFinal; }
+    const QImage& image() const { return mShown.image; }
+    bool imageFinal() const { return mShown.final; }
     const std::vector<Operation>& pendingSteps() const { return mPending; }
     /// A caption drawn at the canvas's top left (the compare panes say which state each shows:
     /// "Step 12 of 40", "Now"); none when empty.
@@ -135,10 +136,7 @@ private:
     QString mCaption;
     RepeatPreview mRepeat = RepeatPreview::Off;
 
-    QImage mImage;
-    Region mImageRegion;
-    std::optional<Region> mRequestRegion;
-    bool mImageFinal = false;
+    CanvasImage mShown;
 
     enum class Drag { None, Gesture, Pan, Handle };
     Drag mDrag = Drag::None;

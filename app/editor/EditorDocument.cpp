@@ -690,4 +690,39 @@ bool EditorDocument::removePaletteColor(int index, int replacement) {
     return true;
 }
 
+// ---- Issue 22 (editor): numbering and drag merging.
+
+std::optional<std::size_t> EditorDocument::documentIndex(std::size_t rendered) const {
+    std::size_t seen = 0;
+    for (std::size_t i = 0; i < stepCount(); ++i) {
+        if (isMuted(i)) continue;
+        if (seen == rendered) return i;
+        ++seen;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::size_t> EditorDocument::renderedIndex(std::size_t step) const {
+    if (step >= stepCount() || isMuted(step)) return std::nullopt;
+    std::size_t rendered = 0;
+    for (std::size_t i = 0; i < step; ++i)
+        if (!isMuted(i)) ++rendered;
+    return rendered;
+}
+
+int EditorDocument::mergeFor(bool dragging) {
+    if (dragging) {
+        if (!mDragMerge.active) {
+            mDragMerge.active = true;
+            mDragMerge.id = mDragMerge.next++;
+        }
+        return mDragMerge.id;
+    }
+    if (mDragMerge.active) {
+        mDragMerge.active = false; // the release closes the drag's step
+        return mDragMerge.id;
+    }
+    return -1;
+}
+
 } // namespace marbler::ui

@@ -169,6 +169,28 @@ public:
     bool removePaletteColor(int index, int replacement = -1);
     /// How many steps (muted ones too) lay ink `index`.
     std::size_t inkUseCount(int index) const;
+
+    // ---- Issue 22 (editor): the numbering of rendered steps and the merging of a drag's edits,
+    // the document's own, moved here from the editor window.
+
+    /// The document step of a rendered (unmuted) step, if there is one.
+    std::optional<std::size_t> documentIndex(std::size_t rendered) const;
+    /// The rendered index of a document step (nullopt: muted or out of range).
+    std::optional<std::size_t> renderedIndex(std::size_t step) const;
+    /// The merge id of an edit: one id from the press of a drag to its release (its last edit
+    /// included), -1 for an edit made at once.
+    int mergeFor(bool dragging);
+    /// Whether a drag's edits are being merged now (from its press to its release).
+    bool dragActive() const { return mDragMerge.active; }
+
+private:
+    /// One drag, one undo step: the id its edits share.
+    struct DragMerge {
+        bool active = false;
+        int id = 0;
+        int next = 1;
+    };
+    DragMerge mDragMerge;
 };
 
 } // namespace marbler::ui

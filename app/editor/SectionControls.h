@@ -1,0 +1,47 @@
+#pragma once
+/// The tool panel's controls of a solid design (EditorWindow.h): the cross-section the canvas
+/// shows (its axis, and where along it by a slider and a number) and the object the design is
+/// shown on. They say what the user chose; the window sets the section everywhere.
+
+#include "marbler/Sampling.h"
+
+#include <QString>
+#include <QWidget>
+
+#include <glm/vec3.hpp>
+
+#include <functional>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QSlider;
+
+namespace marbler::ui {
+
+class SectionControls : public QWidget {
+    Q_OBJECT
+public:
+    /// Showing `slice` of a block whose size `size` tells (asked at each change).
+    SectionControls(std::function<glm::dvec3()> size, const Slice& slice, QWidget* parent = nullptr);
+    /// Shows `slice` in the axis box, the slider and the number, whichever moved it (no
+    /// sliceChosen follows).
+    void showSlice(const Slice& slice);
+
+signals:
+    /// The user moved the section.
+    void sliceChosen(const marbler::Slice& slice);
+    /// The user chose an object: a built-in mesh's name or a mesh file.
+    void meshChosen(const QString& mesh);
+
+private:
+    void chooseMesh(int index);
+
+    std::function<glm::dvec3()> mSize;
+    QComboBox* mAxis;
+    QSlider* mPosition;
+    QDoubleSpinBox* mValue;
+    QComboBox* mMesh;
+    bool mUpdating = false; ///< the widgets are being set to a slice (no feedback)
+};
+
+} // namespace marbler::ui

@@ -1,0 +1,145 @@
+// A solid design on its object (SolidObjectView.h).
+
+#include "editor/SolidObjectView.h"
+
+#include "shared/RenderService.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPolygonF>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace marbler::ui {
+
+SolidObjectView::SolidObjectView(RenderService* renderer, QWidget* parent)
+    : QWidget(parent)
+    , mRenderer(renderer)
+    , mKey(renderer->newKey()) {
+    setMinimumSize(200, 200);
+    setToolTip(tr("The design on its object: drag to turn it"));
+    connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool) {
+        if (key != mKey) return;
+        mImage = image;
+        update();
+    });
+}
+
+SolidObjectView::~SolidObjectView() {
+    mRenderer->cancel(mKey);
+}
+
+void SolidObjectView::setDesign(const Genome& design) {
+    // The design's own angle at first; after that the angle the user turned it to.
+    if (mDesign.dimension != 3) mAngle = viewAngleOf(design);
+    mDesign = design;
+    request(false);
+}
+
+void SolidObjectView::setSlice(const Slice& slice) {
+    mSlice = slice;
+    update();
+}
+
+void SolidObjectView::setMesh(const QString& mesh) {
+    mMesh = mesh;
+    request(false);
+}
+
+void SolidObjectView::request(bool previewOnly) {
+    if (mDesign.dimension != 3 || width() < 8 || height() < 8) return;
+    RenderRequest r;
+    r.genome = mDesign;
+    setViewAngle(r.genome, mAngle);
+    const qreal dpr = devicePixelRatioF();
+    const int side = int(std::min(width(), height()) * dpr);
+    r.size = QSize(side, side);
+    r.mesh = mMesh;
+    r.yaw = mAngle.yaw;
+    r.pitch = mAngle.pitch;
+    r.previewOnly = previewOnly;
+    mRenderer->request(mKey, std::move(r));
+}
+
+void SolidObjectView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), palette().window());
+    if (mImage.isNull()) {
+        p.drawText(rect(), Qt::AlignCenter, tr("Rendering…"));
+        return;
+    }
+    QSizeF size = QSizeF(mImage.size()) / devicePixelRatioF();
+    size.scale(QSizeF(this->size()), Qt::KeepAspectRatio);
+    const QRectF target((width() - size.width()) / 2, (height() - size.height()) / 2, size.width(),
+                        size.height());
+    p.setRenderHint(QPainter::SmoothPixmapTransform);
+    p.drawImage(target, mImage);
+    if (mSlice && mDesign.dimension == 3) paintSlice(p);
+}
+
+void SolidObjectView::paintSlice(QPainter& p) const {
+    // The block in an oblique view in the corner, the section a plane through it: where the
+    // canvas cuts, at a glance, whatever the object's shape.
+    const glm::dvec3 size = mDesign.size;
+    const double extent = std::max({size.x, size.y, size.z, 1e-9});
+    constexpr double Side = 64.0;
+    const QPointF origin(12.0, height() - 14.0);
+    const auto at = [&](glm::dvec3 q) {
+        q /= extent;
+        return origin + QPointF((q.x + 0.5 * q.z) * Side, -(q.y + 0.35 * q.z) * Side);
+    };
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(30, 30, 30, 200));
+    p.drawRoundedRect(QRectF(origin.x() - 8.0, origin.y() - Side * 1.5, Side * 2.9, Side * 1.5 + 8.0), 6.0,
+                      6.0);
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(QColor(220, 220, 220, 200), 1.0));
+    const glm::dvec3 corner[8] = {
+        {0, 0, 0},      {size.x, 0, 0},      {size.x, size.y, 0},      {0, size.y, 0},
+        {0, 0, size.z}, {size.x, 0, size.z}, {size.x, size.y, size.z}, {0, size.y, size.z}};
+    constexpr int Edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    for (const auto& e : Edges)
+        p.drawLine(at(corner[e[0]]), at(corner[e[1]]));
+    // The plane: the block's extent along the two other axes, at the section's value.
+    const int axis = mSlice->axis;
+    const SlicePlane section = slicePlane(3, axis, mSlice->value);
+    const glm::dvec2 span = section.extent(size);
+    QPolygonF plane;
+    for (const auto& [ua, ub] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
+        plane << at(section.fromPlane({ua * span.x, ub * span.y}));
+    p.setPen(QPen(QColor(255, 170, 40), 1.5));
+    p.setBrush(QColor(255, 170, 40, 90));
+    p.drawPolygon(plane);
+    p.setPen(QColor(235, 235, 235));
+    p.drawText(QPointF(origin.x() + Side * 1.55, origin.y() - 2.0),
+               tr("%1 = %2").arg(QLatin1String(axisName(axis))).arg(mSlice->value, 0, 'f', 1));
+}
+
+void SolidObjectView::resizeEvent(QResizeEvent*) {
+    request(false);
+}
+
+void SolidObjectView::mousePressEvent(QMouseEvent* event) {
+    mTurning = true;
+    mLast = event->position();
+}
+
+void SolidObjectView::mouseMoveEvent(QMouseEvent* event) {
+    if (!mTurning) return;
+    const QPointF d = event->position() - mLast;
+    mLast = event->position();
+    mAngle = mAngle.dragged(d.x(), d.y());
+    request(true);
+}
+
+void SolidObjectView::mouseReleaseEvent(QMouseEvent*) {
+    if (!mTurning) return;
+    mTurning = false;
+    request(false);
+}
+
+} // namespace marbler::ui
