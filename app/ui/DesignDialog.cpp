@@ -711,24 +711,10 @@ void DesignDialog::setRepeatSwatch(bool on) {
 }
 
 void DesignDialog::keyPressEvent(QKeyEvent* event) {
-    // Plain keys, with or without Ctrl or the keypad (Ctrl++ is the platform's zoom).
-    switch (event->key()) {
-    case Qt::Key_Plus:
-    case Qt::Key_Equal:
-        zoomIn();
+    if (ViewController::handleKey(event, {[this] { zoomIn(); }, [this] { zoomOut(); }, [this] { fitView(); },
+                                          [this] { showOneToOne(); }}))
         return;
-    case Qt::Key_Minus:
-        zoomOut();
-        return;
-    case Qt::Key_0:
-        fitView();
-        return;
-    case Qt::Key_1:
-        showOneToOne();
-        return;
-    default:
-        QDialog::keyPressEvent(event);
-    }
+    QDialog::keyPressEvent(event);
 }
 
 void DesignDialog::canvasPressed(QMouseEvent* event) {
