@@ -8,6 +8,7 @@
 #include "marbler/Vector.h"
 #include "marbler/gl/GlRenderer.h"
 #include "marbler/gl/HybridMesh.h"
+#include "ui/BackgroundJob.h"
 #include "ui/BakeObject.h"
 #include "ui/ErrorReport.h"
 #include "ui/GenomeClipboard.h"
@@ -579,11 +580,8 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
 
 DesignDialog::~DesignDialog() {
     mRenderer->cancel(mKey);
-    // Closing the view stops its export; renderToFile leaves no partial file.
-    if (mExportThread) {
-        mExportCancel->store(true);
-        mExportThread->wait();
-    }
+    // Closing the view stops its export and waits for it; renderToFile leaves no partial file.
+    delete mExport;
 }
 
 QWidget* DesignDialog::canvas() const {
@@ -794,7 +792,7 @@ bool DesignDialog::saveTo(const QString& file) {
 
 bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi,
                             std::optional<SolidExport> solid, int bitsPerSample, bool mirrorRepeatTile) {
-    if (mExportCancel) return false;
+    if (mExport) return false;
     const bool tile = mirrorRepeatTile && mGenome.dimension != 3;
     if (const QString problem = exportSizeProblem(tile ? pixels * 2 : pixels); !problem.isEmpty()) {
         reportError(this, tr("Cannot export the image"), problem);
@@ -826,7 +824,7 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     SourcePermissions::session().apply(genome);
 
     return startExport(
-        file, [genome, render, object, objectOnGl, file, options, tile](RenderControl& control) {
+        file, [genome, render, object, objectOnGl, file, options, tile](const RenderControl& control) {
             if (tile) {
                 // As marbler render --repeat mirror: the tile is made in memory from the whole render.
                 ExportOptions withGenome = options;
@@ -850,12 +848,12 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
 }
 
 bool DesignDialog::exportSvgTo(const QString& file, double tolerance) {
-    if (mExportCancel) return false;
+    if (mExport) return false;
     VectorOptions options;
     options.tolerance = tolerance;
     return startExport(
         file,
-        [genome = mGenome, options, file](RenderControl& control) {
+        [genome = mGenome, options, file](const RenderControl& control) {
             // The same steps as marbler svg, so the files are byte for byte the same. Tracing
             // cannot be interrupted; a cancel during it leaves no file.
             const VectorDesign design = traceDesign(genome, options);
@@ -865,65 +863,24 @@ bool DesignDialog::exportSvgTo(const QString& file, double tolerance) {
         true);
 }
 
-bool DesignDialog::startExport(const QString& file, std::function<void(RenderControl&)> job, bool busy) {
-    if (mExportCancel) return false;
-    // The export runs on its own thread; the dialog polls its progress so the worker never
-    // touches a widget.
-    auto cancel = std::make_shared<std::atomic<bool>>(false);
-    mExportCancel = cancel;
-    auto progress = std::make_shared<std::atomic<double>>(0.0);
-    auto error = std::make_shared<QString>();
-    QThread* thread = QThread::create([job = std::move(job), cancel, progress, error] {
-        RenderControl control;
-        control.cancel = cancel.get();
-        control.progress = [progress](double p) { progress->store(p, std::memory_order_relaxed); };
-        try {
-            job(control);
-        } catch (const Cancelled&) {
-        } catch (const std::exception& e) {
-            *error = QString::fromStdString(e.what());
-        }
-    });
-    thread->setParent(this);
-    mExportThread = thread;
-    auto* dialog = new QProgressDialog(tr("Exporting %1…").arg(QFileInfo(file).fileName()), tr("Cancel"), 0,
-                                       busy ? 0 : 1000, this);
-    dialog->setObjectName(QStringLiteral("exportProgress"));
-    dialog->setWindowModality(Qt::WindowModal);
-    dialog->setMinimumDuration(300);
-    dialog->setAutoReset(false);
-    dialog->setAutoClose(false);
-    auto* poll = new QTimer(dialog);
-    connect(poll, &QTimer::timeout, dialog, [dialog, progress, busy] {
-        // A busy box (range 0 to 0) still needs setValue to show itself past its minimum duration.
-        dialog->setValue(busy ? 0 : int(progress->load() * 999));
-    });
-    connect(dialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
-    connect(thread, &QThread::finished, this, [this, thread, dialog, poll, cancel, error, file] {
-        // The progress box goes before any message: a stale one must never cover an error,
-        // and its poll must not show it again (setValue shows a box past its minimum duration).
-        poll->stop();
-        dialog->reset();
-        dialog->hide();
-        dialog->deleteLater();
-        thread->deleteLater();
-        mExportCancel.reset();
-        mExportThread = nullptr;
-        const bool written = error->isEmpty() && !cancel->load();
-        if (!error->isEmpty())
-            reportError(this, tr("Cannot export the image"), *error);
-        else if (written)
+bool DesignDialog::startExport(const QString& file, BackgroundJob::Work job, bool busy) {
+    if (mExport) return false;
+    JobBox box(this, tr("Exporting %1…").arg(QFileInfo(file).fileName()), QStringLiteral("exportProgress"));
+    box.busy = busy;
+    mExport = BackgroundJob::start(this, box, std::move(job), [this, file](const JobOutcome& outcome) {
+        mExport = nullptr;
+        if (outcome.failed())
+            reportError(this, tr("Cannot export the image"), outcome.error);
+        else if (outcome.done())
             setWindowTitle(tr("Exported %1").arg(QFileInfo(file).fileName()));
-        emit exportFinished(file, written, *error);
-        if (written) emit fileSaved(file);
+        emit exportFinished(file, outcome.done(), outcome.error);
+        if (outcome.done()) emit fileSaved(file);
     });
-    poll->start(100);
-    thread->start();
     return true;
 }
 
 void DesignDialog::cancelExport() {
-    if (mExportCancel) mExportCancel->store(true);
+    if (mExport) mExport->cancel();
 }
 
 QString saveGenomeWithDialog(QWidget* parent, const Genome& genome) {

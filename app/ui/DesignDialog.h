@@ -9,6 +9,7 @@
 
 #include <QDialog>
 #include <QImage>
+#include <QPointer>
 
 #include <atomic>
 #include <cstdint>
@@ -39,6 +40,7 @@ struct SolidExport {
     Slice slice{2, 0.0}; ///< the cross-section, when not the object view
 };
 
+class BackgroundJob;
 class DesignCanvas;
 class RenderService;
 
@@ -71,7 +73,7 @@ public:
     void copyGenome();
     /// Stops a running export; no file is left behind.
     void cancelExport();
-    bool isExporting() const { return bool(mExportCancel); }
+    bool isExporting() const { return !mExport.isNull(); }
     /// The file Export offers: the design's name made safe, with the format and in the folder
     /// used last (QSettings files/exportExtension and files/exportDir; PNG at first).
     QString suggestedExportFile() const;
@@ -141,7 +143,7 @@ private:
     void exportImage();
     /// Runs `job` on the export thread with the progress box and its Cancel; exportFinished and
     /// fileSaved follow. `busy`: the job reports no progress (the box shows activity instead).
-    bool startExport(const QString& file, std::function<void(RenderControl&)> job, bool busy = false);
+    bool startExport(const QString& file, std::function<void(const RenderControl&)> job, bool busy = false);
 
     Genome mGenome;
     RenderService* mRenderer;
@@ -167,8 +169,7 @@ private:
     bool mRequestSwatch = false; ///< the newest request is for the swatch
     bool mImageSwatch = false;   ///< mImage is the swatch (tiled), centred on the canvas
     QToolButton* mSwatchButton = nullptr;
-    std::shared_ptr<std::atomic<bool>> mExportCancel; ///< set while an export runs
-    QThread* mExportThread = nullptr;
+    QPointer<BackgroundJob> mExport; ///< the export running, if any
 };
 
 /// Why an image of this many pixels cannot be exported (empty when it can): the renderer's
