@@ -7,7 +7,7 @@
 #include "marbler/Sampling.h"
 #include "marbler/Vector.h"
 #include "marbler/gl/GlRenderer.h"
-#include "marbler/gl/HybridMesh.h"
+#include "marbler/gl/RenderView.h"
 #include "ui/BackgroundJob.h"
 #include "ui/BakeObject.h"
 #include "ui/ErrorReport.h"
@@ -806,9 +806,12 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
     ExportOptions options;
     options.dpi = dpi;
     options.bitsPerSample = bitsPerSample;
-    // The object as the view shows it: the same mesh, angle and zoom, framed at the export's size.
-    std::optional<gl::MeshSettings> object;
-    if (mGenome.dimension == 3 && solid && solid->objectView) {
+    // The object as the view shows it: the same mesh, angle and zoom, framed at the export's size,
+    // on the window's back end (the GPU shades, or GL only rasterises and the CPU kernel colours).
+    // A tile is made from one whole render on the CPU, as marbler render --repeat mirror does.
+    gl::ViewRequest view;
+    view.raster = render;
+    if (mGenome.dimension == 3 && solid && solid->objectView && !tile) {
         gl::MeshSettings mesh;
         mesh.width = render.width;
         mesh.height = render.height;
@@ -816,35 +819,33 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
         mesh.yaw = mAngle.yaw;
         mesh.pitch = mAngle.pitch;
         mesh.zoom = mObjectZoom;
-        object = mesh;
+        view.object = mesh;
+        view.useGl = mRenderer->usesGl();
     }
-    const bool objectOnGl = mRenderer->usesGl();
     // A source outside the design's folder is read only when the user allowed it for the view.
     Genome genome = mGenome;
     SourcePermissions::session().apply(genome);
 
-    return startExport(
-        file, [genome, render, object, objectOnGl, file, options, tile](const RenderControl& control) {
+    return startExport(file, [genome, view, file, options, tile](const RenderControl& control) {
+        if (tile || view.object) {
+            // The tile is made in memory from the whole render. An object needs a GL context of
+            // this thread's own: a GL renderer stays on the thread that made it.
+            std::optional<gl::GlRenderer> renderer;
+            if (view.object) renderer.emplace();
+            Image image = gl::renderView(genome, view, renderer ? &*renderer : nullptr, &control);
+            if (control.cancelled()) throw Cancelled();
+            ExportOptions written = options;
             if (tile) {
-                // As marbler render --repeat mirror: the tile is made in memory from the whole render.
-                ExportOptions withGenome = options;
-                withGenome.genome = serializeGenome(genome);
-                const Image image = CpuRenderer(genome).render(render, &control);
-                if (control.cancelled()) throw Cancelled();
-                writeImage(mirrorRepeat(image), file.toStdString(), withGenome);
-            } else if (object) {
-                // A context of this thread's own: a GL renderer stays on the thread that made it.
-                // The window's back end decides as for the cells: the GPU shades, or GL only
-                // rasterises and the CPU kernel colours.
-                gl::GlRenderer renderer;
-                const Image image = objectOnGl ? renderer.renderMesh(genome, *object)
-                                               : gl::renderMeshHybrid(renderer, genome, *object, &control);
-                if (control.cancelled()) throw Cancelled();
-                writeImage(image, file.toStdString(), options);
-            } else {
-                renderToFile(genome, render, file.toStdString(), options, &control);
+                // As marbler render --repeat mirror, the tile carries the genome.
+                written.genome = serializeGenome(genome);
+                image = mirrorRepeat(image);
             }
-        });
+            writeImage(image, file.toStdString(), written);
+        } else {
+            // Rendered and written in strips, so memory stays bounded at any size.
+            renderToFile(genome, view.raster, file.toStdString(), options, &control);
+        }
+    });
 }
 
 bool DesignDialog::exportSvgTo(const QString& file, double tolerance) {
