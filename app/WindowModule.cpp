@@ -6,6 +6,7 @@
 #include "marbler/gl/Backend.h"
 #include "marbler/gl/GlRenderer.h"
 #include "marbler/gl/Meshes.h"
+#include "marbler/gl/RenderView.h"
 #include "workbench/Workbench.h"
 
 #include <QSettings>
@@ -21,13 +22,9 @@ class Module final : public WindowModule {
 public:
     int runWorkbench(int argc, char** argv) override { return ui::runWorkbench(argc, argv); }
 
-    Image render(const Genome& genome, const RenderSettings& settings) override {
-        checkRenderSettings(genome, settings);
-        return renderer().render(genome, settings);
-    }
-
-    Image renderMesh(const Genome& genome, const gl::MeshSettings& settings) override {
-        return renderer().renderMesh(genome, settings);
+    Image renderView(const Genome& genome, const gl::ViewRequest& request) override {
+        if (!request.object) checkRenderSettings(genome, request.raster);
+        return gl::renderView(genome, request, &renderer());
     }
 
     MeshData loadMesh(const std::string& file) override { return gl::loadMesh(file); }

@@ -10,6 +10,7 @@
 #include "marbler/Sampling.h"
 #include "marbler/gl/Backend.h"    // GlProbe only: a plain struct
 #include "marbler/gl/GlRenderer.h" // MeshSettings only: a plain struct, no GL code
+#include "marbler/gl/RenderView.h" // ViewRequest only: a plain struct, no GL code
 
 #include <string>
 
@@ -27,10 +28,10 @@ public:
     virtual ~WindowModule() = default;
     /// Runs the workbench window (argv as main() got it); returns the exit status.
     virtual int runWorkbench(int argc, char** argv) = 0;
-    /// The GL back end's renders (`render --gpu`, `render --mesh`). Throw InputError for bad
-    /// settings, RuntimeFailure when there is no GL 4.3 context or the driver fails.
-    virtual Image render(const Genome& genome, const RenderSettings& settings) = 0;
-    virtual Image renderMesh(const Genome& genome, const gl::MeshSettings& settings) = 0;
+    /// A view rendered by gl::renderView with the module's GL renderer (`render --gpu`,
+    /// `render --mesh`). Throws InputError for bad settings, RuntimeFailure when there is no GL
+    /// 4.3 context or the driver fails.
+    virtual Image renderView(const Genome& genome, const gl::ViewRequest& request) = 0;
     /// Reads a mesh file with assimp (gl::loadMesh), for `bake`. Throws InputError when it
     /// cannot be read.
     virtual MeshData loadMesh(const std::string& file) = 0;

@@ -207,7 +207,10 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
 
     if (meshMode || args.has("gpu")) {
 #ifdef MARBLER_HAVE_GUI
-        Image image;
+        // Both through the GL back end: --mesh shades the object on the GPU as --gpu does.
+        gl::ViewRequest request;
+        request.useGl = true;
+        request.raster = settings;
         if (meshMode) {
             gl::MeshSettings mesh;
             mesh.width = width;
@@ -223,10 +226,9 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
                 std::vector<double> plane = parseNumberList("cut", *cut, 4);
                 mesh.cut = gl::CutPlane{{plane[0], plane[1], plane[2]}, plane[3]};
             }
-            image = app::windowModule().renderMesh(genome, mesh);
-        } else {
-            image = app::windowModule().render(genome, settings);
+            request.object = mesh;
         }
+        const Image image = app::windowModule().renderView(genome, request);
         // The image carries the design it shows, as renderToFile's do.
         ExportOptions withGenome = exportOptions;
         withGenome.genome = serializeGenome(genome);

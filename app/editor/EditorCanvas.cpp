@@ -226,27 +226,15 @@ void EditorCanvas::wheelEvent(QWheelEvent* event) {
 }
 
 void EditorCanvas::keyPressEvent(QKeyEvent* event) {
-    switch (event->key()) {
-    case Qt::Key_Plus:
-    case Qt::Key_Equal:
-        zoomIn();
+    if (ViewController::handleKey(event, {[this] { zoomIn(); }, [this] { zoomOut(); }, [this] { fitView(); },
+                                          [this] { oneToOne(); }}))
         return;
-    case Qt::Key_Minus:
-        zoomOut();
-        return;
-    case Qt::Key_0:
-        fitView();
-        return;
-    case Qt::Key_1:
-        oneToOne();
-        return;
-    case Qt::Key_Space:
+    if (event->key() == Qt::Key_Space) {
         if (!event->isAutoRepeat()) mSpace = true;
         setCursor(Qt::OpenHandCursor);
         return;
-    default:
-        QWidget::keyPressEvent(event);
     }
+    QWidget::keyPressEvent(event);
 }
 
 void EditorCanvas::keyReleaseEvent(QKeyEvent* event) {

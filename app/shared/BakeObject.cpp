@@ -3,109 +3,45 @@
 #include "marbler/Bake.h"
 #include "marbler/Error.h"
 #include "marbler/gl/Meshes.h"
+#include "shared/BackgroundJob.h"
 #include "shared/ErrorReport.h"
 #include "shared/SavedFiles.h"
 
 #include <QFileInfo>
-#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
-#include <QThread>
-#include <QTimer>
-
-#include <atomic>
-#include <memory>
 
 namespace marbler::ui {
 namespace {
 
-/// One bake in flight: owned by the button, so closing the view cancels the bake and waits for
-/// it instead of destroying a running thread.
-class BakeJob : public QObject {
-public:
-    BakeJob(QPushButton* button, Genome genome, QString mesh, QString file, int textureSize,
-            std::function<void(const QString&)> written)
-        : QObject(button)
-        , mButton(button)
-        , mFile(file)
-        , mWritten(std::move(written)) {
-        auto cancel = mCancel;
-        auto progress = mProgress;
-        auto error = mError;
-        mThread =
-            QThread::create([genome = std::move(genome), mesh, file, textureSize, cancel, progress, error] {
-                RenderControl control;
-                control.cancel = cancel.get();
-                control.progress = [progress](double p) { progress->store(p, std::memory_order_relaxed); };
-                try {
-                    MeshData data = gl::meshByNameOrFile(mesh.toStdString());
-                    if (!hasUsableUvs(data)) data = withGeneratedUvs(data, textureSize);
-                    BakeSettings settings;
-                    settings.textureSize = textureSize;
-                    const BakedTexture baked = bakeTexture(genome, data, settings, &control);
-                    const std::string name = genome.meta.contains("name") && genome.meta["name"].is_string()
-                                                 ? genome.meta["name"].get<std::string>()
-                                                 : std::string("marbled");
-                    writeTexturedMesh(data, baked.image, file.toStdString(), name);
-                } catch (const Cancelled&) {
-                } catch (const std::exception& e) {
-                    *error = QString::fromStdString(e.what());
-                }
-            });
-        mDialog = new QProgressDialog(QObject::tr("Baking %1…").arg(QFileInfo(file).fileName()),
-                                      QObject::tr("Cancel"), 0, 1000, button->window());
-        mDialog->setObjectName(QStringLiteral("bakeProgress"));
-        mDialog->setWindowModality(Qt::WindowModal);
-        mDialog->setMinimumDuration(300);
-        mDialog->setAutoReset(false);
-        mDialog->setAutoClose(false);
-        auto* poll = new QTimer(this);
-        connect(poll, &QTimer::timeout, this, [this] { mDialog->setValue(int(mProgress->load() * 999)); });
-        connect(mDialog, &QProgressDialog::canceled, this, [cancel] { cancel->store(true); });
-        connect(mThread, &QThread::finished, this, [this, poll] {
-            poll->stop();
-            finish();
+/// Bakes on a background job owned by the button, so closing the view cancels the bake and
+/// waits for it; the button is disabled until the bake ends.
+void startBake(QPushButton* button, Genome genome, QString mesh, QString file, int textureSize,
+               std::function<void(const QString&)> written) {
+    JobBox box(button->window(), QObject::tr("Baking %1…").arg(QFileInfo(file).fileName()),
+               QStringLiteral("bakeProgress"));
+    button->setEnabled(false);
+    BackgroundJob::start(
+        button, box,
+        [genome = std::move(genome), mesh, file, textureSize](const RenderControl& control) {
+            MeshData data = gl::meshByNameOrFile(mesh.toStdString());
+            if (!hasUsableUvs(data)) data = withGeneratedUvs(data, textureSize);
+            BakeSettings settings;
+            settings.textureSize = textureSize;
+            const BakedTexture baked = bakeTexture(genome, data, settings, &control);
+            const std::string name = genome.meta.contains("name") && genome.meta["name"].is_string()
+                                         ? genome.meta["name"].get<std::string>()
+                                         : std::string("marbled");
+            writeTexturedMesh(data, baked.image, file.toStdString(), name);
+        },
+        [button, file, written = std::move(written)](const JobOutcome& outcome) {
+            button->setEnabled(true);
+            if (outcome.failed())
+                reportError(button->window(), QObject::tr("Cannot bake onto the object"), outcome.error);
+            else if (outcome.done() && written)
+                written(file);
         });
-        button->setEnabled(false);
-        poll->start(100);
-        mThread->start();
-    }
-
-    ~BakeJob() override {
-        if (!mThread) return;
-        mCancel->store(true);
-        mThread->wait();
-        delete mThread;
-        delete mDialog;
-    }
-
-private:
-    void finish() {
-        // The progress box goes before any message, so a stale one never covers an error.
-        mDialog->reset();
-        mDialog->hide();
-        delete mDialog;
-        mDialog = nullptr;
-        mThread->wait(); // `finished` comes just before the thread has quite ended
-        delete mThread;
-        mThread = nullptr;
-        mButton->setEnabled(true);
-        if (!mError->isEmpty())
-            reportError(mButton->window(), QObject::tr("Cannot bake onto the object"), *mError);
-        else if (!mCancel->load() && mWritten)
-            mWritten(mFile);
-        deleteLater();
-    }
-
-    QPushButton* mButton;
-    QString mFile;
-    std::function<void(const QString&)> mWritten;
-    QThread* mThread = nullptr;
-    QProgressDialog* mDialog = nullptr;
-    std::shared_ptr<std::atomic<bool>> mCancel = std::make_shared<std::atomic<bool>>(false);
-    std::shared_ptr<std::atomic<double>> mProgress = std::make_shared<std::atomic<double>>(0.0);
-    std::shared_ptr<QString> mError = std::make_shared<QString>();
-};
+}
 
 } // namespace
 
@@ -137,7 +73,7 @@ QPushButton* makeBakeButton(QWidget* parent, std::function<Genome()> genome, QSt
             return;
         }
         settings.setValue(QStringLiteral("files/bakeDir"), QFileInfo(file).absolutePath());
-        new BakeJob(button, design, mesh, file, textureSize, written);
+        startBake(button, design, mesh, file, textureSize, written);
     });
     return button;
 }

@@ -3,7 +3,7 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/gl/GlRenderer.h"
-#include "marbler/gl/HybridMesh.h"
+#include "marbler/gl/RenderView.h"
 #include "shared/SourcePermissions.h"
 
 #include <QApplication>
@@ -156,6 +156,8 @@ private:
         const Genome& genome = request.genome;
         RenderControl control;
         control.cancel = &mQueue->abort;
+        gl::ViewRequest view;
+        view.useGl = mUseGl;
         if (genome.dimension == 3 && !request.slice) {
             // On the CPU back end GL only rasterises the object; without any GL the object is
             // replaced by its middle cross-section below.
@@ -169,8 +171,8 @@ private:
                 mesh.pitch = request.pitch;
                 mesh.zoom = request.zoom;
                 mesh.supersample = final ? 3 : 1;
-                return toQImage(mUseGl ? renderer->renderMesh(genome, mesh)
-                                       : gl::renderMeshHybrid(*renderer, genome, mesh, &control));
+                view.object = mesh;
+                return toQImage(gl::renderView(genome, view, renderer, &control));
             }
         }
         QSize full = request.size;
@@ -183,7 +185,7 @@ private:
         // A quick third-size preview; a region keeps its proportions in it as best whole
         // pixels allow.
         const QSize size = final ? full : (full / 3).expandedTo(QSize(8, 8));
-        RenderSettings settings;
+        RenderSettings& settings = view.raster;
         settings.width = size.width();
         settings.height = size.height();
         settings.region = request.region;
@@ -198,13 +200,15 @@ private:
         if (genome.dimension == 3) settings.slice = request.slice.value_or(Slice{2, genome.size.z / 2.0});
         if (mUseGl) {
             try {
-                return toQImage(mGl->render(genome, settings));
+                return toQImage(gl::renderView(genome, view, mGl.get()));
             } catch (const RuntimeFailure&) {
                 // A driver failure on one design should not blank the grid: the CPU can do it.
             }
         }
+        // The genome prepared by the preview's pass serves the final one.
         if (!prepared) prepared = std::make_shared<const CpuRenderer>(genome);
-        return toQImage(prepared->render(settings, &control));
+        view.useGl = false;
+        return toQImage(gl::renderView(genome, view, nullptr, &control, prepared.get()));
     }
 
     std::shared_ptr<RenderQueue> mQueue;

@@ -1,5 +1,7 @@
 #include "shared/ViewController.h"
 
+#include <QKeyEvent>
+
 #include <algorithm>
 #include <cmath>
 
@@ -105,6 +107,30 @@ std::optional<ViewController::Window> ViewController::visibleWindow() const {
     if (x1 <= x0 || y1 <= y0) return std::nullopt;
     const QPointF a = toDesign(QPointF(x0, y0)), b = toDesign(QPointF(x1, y1));
     return Window{QRect(QPoint(x0, y0), QPoint(x1 - 1, y1 - 1)), Region{a.x(), a.y(), b.x(), b.y()}};
+}
+
+bool ViewController::handleKey(const QKeyEvent* event, const ZoomKeyActions& actions) {
+    const std::function<void()>* action = nullptr;
+    switch (event->key()) {
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:
+        action = &actions.zoomIn;
+        break;
+    case Qt::Key_Minus:
+        action = &actions.zoomOut;
+        break;
+    case Qt::Key_0:
+        action = &actions.fit;
+        break;
+    case Qt::Key_1:
+        action = &actions.oneToOne;
+        break;
+    default:
+        return false;
+    }
+    if (!*action) return false;
+    (*action)();
+    return true;
 }
 
 } // namespace marbler::ui

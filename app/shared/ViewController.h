@@ -12,7 +12,10 @@
 #include <QRectF>
 #include <QSize>
 
+#include <functional>
 #include <optional>
+
+class QKeyEvent;
 
 namespace marbler::ui {
 
@@ -80,6 +83,17 @@ public:
         Region region;
     };
     std::optional<Window> visibleWindow() const;
+
+    /// What a view does for each zoom key (its own step, about its centre; a solid's view
+    /// magnifies its object). An empty action leaves its key to the widget.
+    struct ZoomKeyActions {
+        std::function<void()> zoomIn, zoomOut, fit, oneToOne;
+    };
+    /// The zoom keys of every view (the large view, the editor's canvas): + or = zooms in, -
+    /// out, 0 fits, 1 shows one to one, with or without Ctrl or the keypad (Ctrl++ is the
+    /// platform's zoom). Runs the key's action and returns true, or returns false for any other
+    /// key (the widget's own).
+    static bool handleKey(const QKeyEvent* event, const ZoomKeyActions& actions);
 
 private:
     void clampCentre();

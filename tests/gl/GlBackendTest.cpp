@@ -7,6 +7,7 @@
 #include "marbler/Generator.h"
 #include "marbler/gl/Backend.h"
 #include "marbler/gl/HybridMesh.h"
+#include "marbler/gl/RenderView.h"
 
 #include <gtest/gtest.h>
 
@@ -199,6 +200,41 @@ TEST(HybridMesh, KeepsTheChecksOfTheMeshRender) {
     RenderControl control;
     control.cancel = &cancel;
     EXPECT_THROW(gl::renderMeshHybrid(renderer, randomGenome(1, 3), settings, &control), Cancelled);
+}
+
+TEST(RenderView, EachViewTakesItsBackEndsPath) {
+    // One request for every view: a flat raster on the CPU needs no GL and is the CPU renderer's
+    // image byte for byte; a GL raster or any object without a GL renderer is refused, not
+    // quietly rendered some other way.
+    const Genome flat = randomGenome(7, 2);
+    gl::ViewRequest request;
+    request.raster.width = 48;
+    request.raster.height = 40;
+    request.raster.aa = "rgss";
+    const Image cpu = gl::renderView(flat, request, nullptr);
+    const Image expected = CpuRenderer(flat).render(request.raster);
+    EXPECT_EQ(cpu.width, 48);
+    EXPECT_EQ(cpu.height, 40);
+    EXPECT_EQ(cpu.rgb, expected.rgb);
+    const CpuRenderer prepared(flat);
+    EXPECT_EQ(gl::renderView(flat, request, nullptr, nullptr, &prepared).rgb, expected.rgb);
+    request.useGl = true;
+    EXPECT_THROW(gl::renderView(flat, request, nullptr), RuntimeFailure);
+    gl::ViewRequest object;
+    object.object = gl::MeshSettings{};
+    EXPECT_THROW(gl::renderView(randomGenome(7, 3), object, nullptr), RuntimeFailure);
+
+    MARBLER_REQUIRE_GL_OR_SKIP();
+    gl::GlRenderer& renderer = *test::glRenderer();
+    EXPECT_EQ(gl::renderView(flat, request, &renderer).rgb, renderer.render(flat, request.raster).rgb);
+    const Genome solid = randomGenome(7, 3);
+    object.object->width = 64;
+    object.object->height = 48;
+    object.useGl = true;
+    EXPECT_EQ(gl::renderView(solid, object, &renderer).rgb, renderer.renderMesh(solid, *object.object).rgb);
+    object.useGl = false;
+    EXPECT_EQ(gl::renderView(solid, object, &renderer).rgb,
+              gl::renderMeshHybrid(renderer, solid, *object.object).rgb);
 }
 
 } // namespace

@@ -99,6 +99,33 @@ TEST(ViewControllerTest, ZoomKeepsTheAnchoredPointFitShowsAllAndPanMoves) {
     EXPECT_DOUBLE_EQ(view.scale(), ViewController::MaxScale);
 }
 
+TEST(ViewControllerTest, ZoomKeysAreTheSameInEveryView) {
+    // One table of keys for the large view and the editor's canvas: + and = zoom in, - out, 0
+    // fits, 1 shows one to one, with or without Ctrl or the keypad; any other key is left to the
+    // widget.
+    QStringList done;
+    const ViewController::ZoomKeyActions actions{[&] { done << "in"; }, [&] { done << "out"; },
+                                                 [&] { done << "fit"; }, [&] { done << "one"; }};
+    const auto press = [&](int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+        QKeyEvent event(QEvent::KeyPress, key, modifiers);
+        return ViewController::handleKey(&event, actions);
+    };
+    EXPECT_TRUE(press(Qt::Key_Plus));
+    EXPECT_TRUE(press(Qt::Key_Equal, Qt::ControlModifier));
+    EXPECT_TRUE(press(Qt::Key_Minus, Qt::KeypadModifier));
+    EXPECT_TRUE(press(Qt::Key_0));
+    EXPECT_TRUE(press(Qt::Key_1));
+    EXPECT_FALSE(press(Qt::Key_2));
+    EXPECT_FALSE(press(Qt::Key_Space));
+    EXPECT_EQ(done, QStringList({"in", "in", "out", "fit", "one"}));
+
+    // An action a view lacks leaves its key to the widget.
+    done.clear();
+    QKeyEvent one(QEvent::KeyPress, Qt::Key_1, Qt::NoModifier);
+    EXPECT_FALSE(ViewController::handleKey(&one, {[&] { done << "in"; }, {}, {}, {}}));
+    EXPECT_TRUE(done.isEmpty());
+}
+
 TEST(ViewAngleTest, KeptInMetaViewAndReadBackFromFiles) {
     Genome genome = randomGenome(4, 3);
     EXPECT_EQ(viewAngleOf(genome), (ViewAngle{30.0, 20.0})) << "the default when meta has none";

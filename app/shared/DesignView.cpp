@@ -1,0 +1,236 @@
+#include "shared/DesignView.h"
+
+#include "shared/RenderService.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace marbler::ui {
+
+namespace {
+
+/// The mirror repeat of an image as mirrorRepeat (marbler/Repeat.h) lays it out: the image at
+/// the top left, its horizontal mirror at the top right, the vertical mirrors of both below.
+QImage mirrorTiled(const QImage& image) {
+    const QImage source = image.convertToFormat(QImage::Format_RGB32);
+    QImage tiled(source.width() * 2, source.height() * 2, QImage::Format_RGB32);
+    QPainter p(&tiled);
+    p.drawImage(0, 0, source);
+    p.drawImage(source.width(), 0, source.mirrored(true, false));
+    p.drawImage(0, source.height(), source.mirrored(false, true));
+    p.drawImage(source.width(), source.height(), source.mirrored(true, true));
+    return tiled;
+}
+
+} // namespace
+
+DesignView::DesignView(const Genome& genome, RenderService* renderer, const QString& mesh, bool repeatSwatch,
+                       QWidget* parent)
+    : QWidget(parent)
+    , mGenome(genome)
+    , mRenderer(renderer)
+    , mMesh(mesh)
+    , mKey(renderer->newKey())
+    , mAngle(viewAngleOf(mGenome))
+    , mSwatch(repeatSwatch && genome.dimension != 3) {
+    setObjectName(QStringLiteral("designView"));
+    setMinimumSize(320, 320);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    setToolTip(mGenome.dimension == 3 ? tr("Drag to turn the object; wheel, + and - zoom")
+                                      : tr("Wheel, + and - zoom about the pointer; drag to pan"));
+    mViewController.setDesignSize(mGenome.size.x, mGenome.size.y);
+    mMessage = tr("rendering…");
+    connect(mRenderer, &RenderService::rendered, this,
+            [this](std::uint64_t key, const QImage& image, bool final) {
+                if (key != mKey) return;
+                // The service delivers only the newest request's results: they show its view.
+                mImageSwatch = mRequestSwatch;
+                // Tiled once here, not at each paint (the tile is fitted to half the canvas).
+                mImage = mImageSwatch ? mirrorTiled(image) : image;
+                mImageFinal = final;
+                if (mRequestRegion) mImageRegion = *mRequestRegion;
+                mImageZoom = mRequestZoom;
+                mMessage.clear();
+                update();
+            });
+    connect(mRenderer, &RenderService::failed, this, [this](std::uint64_t key, const QString& message) {
+        if (key != mKey) return;
+        mImage = QImage();
+        mMessage = tr("Cannot render: %1").arg(message);
+        update();
+    });
+}
+
+DesignView::~DesignView() {
+    mRenderer->cancel(mKey);
+}
+
+void DesignView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), palette().color(QPalette::Window).darker(115));
+    if (!mImage.isNull()) {
+        p.setRenderHint(QPainter::SmoothPixmapTransform);
+        p.drawImage(imageTarget(), mImage);
+    }
+    if (!mMessage.isEmpty()) {
+        p.setPen(palette().color(QPalette::WindowText));
+        p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, mMessage);
+    }
+}
+
+void DesignView::wheelEvent(QWheelEvent* event) {
+    // Ctrl+wheel zooms too (as in most viewers); a notch (120) is the keys' step, √2.
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches != 0.0) zoomAt(std::pow(std::sqrt(2.0), notches), event->position());
+    event->accept();
+}
+
+QString DesignView::zoomText() const {
+    const double percent = 100.0 * (mGenome.dimension == 3 ? mObjectZoom : mViewController.scale());
+    return tr("%L1 %").arg(percent, 0, 'f', percent < 10.0 ? 1 : 0);
+}
+
+void DesignView::resizeEvent(QResizeEvent*) {
+    mViewController.setViewport(size() * devicePixelRatioF());
+    viewChanged();
+}
+
+void DesignView::zoomIn() {
+    zoomAt(std::sqrt(2.0), QRectF(rect()).center());
+}
+void DesignView::zoomOut() {
+    zoomAt(1.0 / std::sqrt(2.0), QRectF(rect()).center());
+}
+
+void DesignView::zoomAt(double factor, QPointF anchor) {
+    if (mGenome.dimension == 3)
+        // A solid zooms about its framed centre: its camera always looks there.
+        mObjectZoom = std::clamp(mObjectZoom * factor, 0.25, 16.0);
+    else
+        mViewController.zoomBy(factor, anchor * devicePixelRatioF());
+    viewChanged();
+}
+
+void DesignView::fitView() {
+    mObjectZoom = 1.0;
+    mViewController.fit();
+    viewChanged();
+}
+
+void DesignView::showOneToOne() {
+    if (mGenome.dimension == 3) return;
+    mViewController.oneToOne();
+    viewChanged();
+}
+
+void DesignView::panBy(QPointF delta) {
+    if (mGenome.dimension == 3) return;
+    mViewController.panBy(delta * devicePixelRatioF());
+    viewChanged();
+}
+
+void DesignView::viewChanged(bool previewOnly) {
+    emit zoomChanged();
+    update(); // the image shown so far, moved and scaled to the new view at once
+    requestRender(previewOnly);
+}
+
+QRectF DesignView::imageTarget() const {
+    const double ratio = devicePixelRatioF();
+    if (mImageSwatch) {
+        // Rendered at its size on the canvas: centred, never scaled.
+        QRectF target(QPointF(0, 0), QSizeF(mImage.size()) / ratio);
+        target.moveCenter(QRectF(rect()).center());
+        return target;
+    }
+    if (mGenome.dimension != 3) {
+        const QRectF r = mViewController.toViewport(mImageRegion);
+        return QRectF(r.topLeft() / ratio, r.size() / ratio);
+    }
+    // A solid's image fills the canvas (a cross-section keeps its proportions), magnified by
+    // the zoom asked for since.
+    const QRectF area(rect());
+    const QSizeF size =
+        QSizeF(mImage.size()).scaled(area.size(), Qt::KeepAspectRatio) * (mObjectZoom / mImageZoom);
+    QRectF target(QPointF(0, 0), size);
+    target.moveCenter(area.center());
+    return target;
+}
+
+void DesignView::requestRender(bool previewOnly) {
+    RenderRequest request;
+    request.genome = mGenome;
+    request.mesh = mMesh;
+    request.yaw = mAngle.yaw;
+    request.pitch = mAngle.pitch;
+    request.zoom = mObjectZoom;
+    request.previewOnly = previewOnly;
+    const QSize viewport = (size() * devicePixelRatioF()).expandedTo(QSize(32, 32));
+    mRequestSwatch = mSwatch && mGenome.dimension != 3;
+    if (mGenome.dimension == 3) {
+        request.size = viewport;
+    } else if (mRequestSwatch) {
+        // The whole design, whatever the zoom (the swatch judges the repeat, not a detail),
+        // fitted into half the canvas: tiled 2 x 2 it fills the canvas. The service fits the
+        // design's proportions into this size.
+        request.size = (viewport / 2).expandedTo(QSize(16, 16));
+        request.region.reset();
+    } else {
+        // Only the part of the design in view, at the view's scale: exact at any zoom.
+        const auto window = mViewController.visibleWindow();
+        if (!window) {
+            mRenderer->cancel(mKey);
+            mImage = QImage();
+            update();
+            return;
+        }
+        request.region = window->region;
+        request.size = window->pixels.size();
+    }
+    mRequestRegion = request.region;
+    mRequestZoom = mObjectZoom;
+    mImageFinal = false; // what is shown now stands in for the view until its render comes
+    mRenderer->request(mKey, std::move(request));
+}
+
+void DesignView::mousePressEvent(QMouseEvent* event) {
+    mLastPos = event->position();
+    mDragging = event->button() == Qt::LeftButton;
+    if (mDragging && mGenome.dimension != 3) setCursor(Qt::ClosedHandCursor);
+}
+
+void DesignView::mouseMoveEvent(QMouseEvent* event) {
+    if (!mDragging) return;
+    const QPointF d = event->position() - mLastPos;
+    mLastPos = event->position();
+    // While dragging only the quick pass is worth rendering; the release asks for the final one.
+    if (mGenome.dimension != 3)
+        mViewController.panBy(d * devicePixelRatioF());
+    else
+        mAngle = mAngle.dragged(d.x(), d.y());
+    viewChanged(true);
+}
+
+void DesignView::mouseReleaseEvent(QMouseEvent*) {
+    if (!mDragging) return;
+    mDragging = false;
+    unsetCursor();
+    requestRender();
+    if (mGenome.dimension != 3) return;
+    // The angle belongs to the design: saved with it, and given back to its cell.
+    setViewAngle(mGenome, mAngle);
+    emit viewAngleChanged(mAngle);
+}
+
+void DesignView::setRepeatSwatch(bool on) {
+    if (mGenome.dimension == 3) on = false;
+    if (on == mSwatch) return;
+    mSwatch = on;
+    viewChanged();
+}
+
+} // namespace marbler::ui

@@ -1,0 +1,361 @@
+#include "shared/ExportSettingsDialog.h"
+
+#include "shared/ErrorReport.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLayout>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace marbler::ui {
+
+namespace {
+
+/// Grows `dialog` so that the word-wrapped `label` shows all its lines. A top-level window is
+/// laid out for the text its wrapped labels had when shown; a longer text (Export image's line
+/// with Mirror repeat ticked) would otherwise be clipped to the old height.
+void growToShowWrapped(QWidget* dialog, QLabel* label) {
+    if (!dialog->isVisible() || !dialog->layout()) return;
+    // As a minimum the layout must keep, the dialog grows to it at once.
+    label->setMinimumHeight(label->heightForWidth(label->width()));
+    dialog->layout()->activate();
+}
+
+} // namespace
+
+QString exportSizeProblem(QSize pixels) {
+    const std::int64_t w = pixels.width(), h = pixels.height();
+    if (w < 1 || h < 1)
+        return QObject::tr("The image would be %1 × %2 pixels: choose a size of at least 1 pixel.")
+            .arg(w)
+            .arg(h);
+    if (w > MaxImageSide || h > MaxImageSide || w * h > MaxImagePixels)
+        return QObject::tr(
+                   "The image would be %L1 × %L2 pixels (%L3 megapixels); Marbler renders at most %L4 pixels "
+                   "a side and %L5 megapixels. Choose a smaller size or a lower resolution.")
+            .arg(w)
+            .arg(h)
+            .arg(double(w) * double(h) / 1e6, 0, 'f', 0)
+            .arg(MaxImageSide)
+            .arg(double(MaxImagePixels) / 1e6, 0, 'f', 0);
+    return {};
+}
+
+ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent)
+    : QDialog(parent)
+    , mGenome(genome) {
+    setWindowTitle(tr("Export image"));
+    auto* form = new QFormLayout;
+    // The CLI's writers: PNG and TIFF built in, JPEG and EXR through the image module.
+    mFormat = new QComboBox(this);
+    mFormat->setObjectName(QStringLiteral("exportFormat"));
+    mFormat->addItem(tr("PNG (8-bit sRGB)"), QStringLiteral(".png"));
+    mFormat->addItem(tr("JPEG (8-bit sRGB)"), QStringLiteral(".jpg"));
+    mFormat->addItem(tr("TIFF (8-bit sRGB)"), QStringLiteral(".tif"));
+    mFormat->addItem(tr("TIFF (16-bit sRGB, for print)"), QStringLiteral(".tif/16"));
+    mFormat->addItem(tr("OpenEXR (linear half float)"), QStringLiteral(".exr"));
+    // Outlines exist for flat designs only (marbler/Vector.h); a source image is refused when
+    // tracing, with the library's reason.
+    if (genome.dimension != 3) mFormat->addItem(tr("SVG (vector)"), QStringLiteral(".svg"));
+    mFormat->setToolTip(tr("The file format; a 16-bit TIFF keeps the smooth gradients of an antialiased "
+                           "render for further grading, EXR keeps linear light"));
+    {
+        const QSettings settings;
+        setFormat(settings.value(QStringLiteral("files/exportExtension"), QStringLiteral(".png")).toString(),
+                  settings.value(QStringLiteral("files/exportBits"), 8).toInt());
+    }
+    form->addRow(tr("&Format"), mFormat);
+    mWidth = new QDoubleSpinBox(this);
+    mWidth->setObjectName(QStringLiteral("exportWidth"));
+    // Wide enough for any unit at any dpi; the size check says what is too large.
+    mWidth->setDecimals(0);
+    mWidth->setRange(1, 1e7);
+    mWidth->setValue(mPixelWidth);
+    mWidth->setToolTip(
+        tr("The image's width in the unit beside; the height follows the design's proportions"));
+    mUnit = new QComboBox(this);
+    mUnit->setObjectName(QStringLiteral("exportUnit"));
+    mUnit->addItem(tr("pixels"), 0.0);
+    mUnit->addItem(tr("cm"), 2.54);
+    mUnit->addItem(tr("mm"), 25.4);
+    mUnit->addItem(tr("inches"), 1.0);
+    mUnit->setToolTip(tr("Pixels, or a print size at the resolution below; changing it converts the width"));
+    mDpi = new QSpinBox(this);
+    mDpi->setObjectName(QStringLiteral("exportDpi"));
+    mDpi->setRange(10, 4800);
+    mDpi->setValue(300);
+    mDpi->setToolTip(tr("Dots per inch: turns a print size into pixels, and is written into the file"));
+    mAa = new QComboBox(this);
+    mAa->setObjectName(QStringLiteral("exportAa"));
+    for (const std::string& name : aaPatternNames())
+        mAa->addItem(QString::fromStdString(name));
+    mAa->setCurrentText(QStringLiteral("rgss"));
+    mAa->setToolTip(tr("Antialiasing pattern: more samples, smoother edges, slower"));
+    mPixels = new QLabel(this);
+    mPixels->setObjectName(QStringLiteral("exportPixels"));
+    mPixels->setWordWrap(true);
+    form->addRow(tr("&Width"), mWidth);
+    form->addRow(tr("&Unit"), mUnit);
+    form->addRow(tr("&Resolution (dpi)"), mDpi);
+    form->addRow(tr("&Antialiasing"), mAa);
+    if (genome.dimension != 3) {
+        mRepeat = new QCheckBox(tr("Mirror repeat tile (2 × 2): twice the width and height"), this);
+        mRepeat->setObjectName(QStringLiteral("exportRepeat"));
+        mRepeat->setToolTip(
+            tr("A seamless tile for print and textiles: the design and its mirror images 2 × 2, so "
+               "every edge meets its own mirror image (marbler render --repeat mirror)"));
+        form->addRow(tr("&Repeat"), mRepeat);
+        mTolerance = new QDoubleSpinBox(this);
+        mTolerance->setObjectName(QStringLiteral("exportTolerance"));
+        mTolerance->setDecimals(3);
+        mTolerance->setRange(0.001, 1000.0);
+        mTolerance->setValue(1.0);
+        mTolerance->setToolTip(
+            tr("SVG: the largest distance between neighbouring vertices of an outline, in design "
+               "units; larger gives smaller files (marbler svg --tolerance)"));
+        form->addRow(tr("&Tolerance"), mTolerance);
+        connect(mRepeat, &QCheckBox::toggled, this, [this] { updateSummary(); });
+    }
+    form->addRow(tr("Image"), mPixels);
+    if (genome.dimension == 3) {
+        mSolidView = new QComboBox(this);
+        mSolidView->setObjectName(QStringLiteral("exportSolidView"));
+        mSolidView->addItem(tr("Object view (as shown)"));
+        mSolidView->addItem(tr("Cross-section"));
+        mSolidView->setToolTip(
+            tr("The design on its object, as the view shows it, or a flat cut through the block"));
+        mAxis = new QComboBox(this);
+        mAxis->setObjectName(QStringLiteral("exportAxis"));
+        mAxis->addItem(tr("x (a y-z plane)"));
+        mAxis->addItem(tr("y (an x-z plane)"));
+        mAxis->addItem(tr("z (an x-y plane)"));
+        mAxis->setCurrentIndex(2);
+        mAxis->setToolTip(tr("The axis the cross-section is taken across"));
+        mPosition = new QDoubleSpinBox(this);
+        mPosition->setObjectName(QStringLiteral("exportPosition"));
+        mPosition->setDecimals(2);
+        mPosition->setToolTip(tr("Where on its axis the cross-section lies, in design units"));
+        auto showAxis = [this] {
+            const int axis = mAxis->currentIndex();
+            const double side = mGenome.size[axis];
+            // The middle of the new axis: its old position may not lie inside it.
+            mPosition->setRange(0.0, side);
+            mPosition->setValue(side / 2.0);
+        };
+        showAxis();
+        auto enable = [this] {
+            const bool slice = mSolidView->currentIndex() == 1;
+            mAxis->setEnabled(slice);
+            mPosition->setEnabled(slice);
+            updateSummary();
+        };
+        connect(mAxis, &QComboBox::currentIndexChanged, this, [this, showAxis] {
+            showAxis();
+            updateSummary();
+        });
+        connect(mSolidView, &QComboBox::currentIndexChanged, this, enable);
+        form->addRow(tr("&Show"), mSolidView);
+        form->addRow(tr("A&xis"), mAxis);
+        form->addRow(tr("&Position"), mPosition);
+        mAxis->setEnabled(false);
+        mPosition->setEnabled(false);
+    }
+    mButtons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(mButtons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(mButtons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(mButtons);
+    // Every field in reading order, then the buttons.
+    setTabOrder(mFormat, mWidth);
+    setTabOrder(mWidth, mUnit);
+    setTabOrder(mUnit, mDpi);
+    setTabOrder(mDpi, mAa);
+    QWidget* last = mAa;
+    if (mRepeat) {
+        setTabOrder(mAa, mRepeat);
+        setTabOrder(mRepeat, mTolerance);
+        last = mTolerance;
+    }
+    if (mSolidView) {
+        setTabOrder(mAa, mSolidView);
+        setTabOrder(mSolidView, mAxis);
+        setTabOrder(mAxis, mPosition);
+        last = mPosition;
+    }
+    setTabOrder(last, mButtons->button(QDialogButtonBox::Ok));
+    setTabOrder(mButtons->button(QDialogButtonBox::Ok), mButtons->button(QDialogButtonBox::Cancel));
+
+    connect(mUnit, &QComboBox::currentIndexChanged, this, [this] { showWidth(); });
+    connect(mFormat, &QComboBox::currentIndexChanged, this, [this] { updateSummary(); });
+    connect(mWidth, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+        if (mShowing) return;
+        // What the user typed, in pixels; the unit and dpi only change how it is shown.
+        mPixelWidth = perInch() > 0.0 ? value / perInch() * mDpi->value() : value;
+        updateSummary();
+    });
+    connect(mDpi, &QSpinBox::valueChanged, this, [this] {
+        // A print size keeps its size at another resolution (so the pixels change); a pixel
+        // size keeps its pixels.
+        if (perInch() > 0.0) mPixelWidth = mWidth->value() / perInch() * mDpi->value();
+        updateSummary();
+    });
+    updateSummary();
+}
+
+double ExportSettingsDialog::perInch() const {
+    return mUnit->currentData().toDouble();
+}
+
+void ExportSettingsDialog::showWidth() {
+    mShowing = true;
+    mWidth->setDecimals(perInch() > 0.0 ? 3 : 0);
+    mWidth->setMinimum(perInch() > 0.0 ? 0.001 : 1.0);
+    mWidth->setValue(perInch() > 0.0 ? mPixelWidth / mDpi->value() * perInch() : mPixelWidth);
+    mShowing = false;
+    updateSummary();
+}
+
+bool ExportSettingsDialog::isSvg() const {
+    return extension() == QStringLiteral(".svg");
+}
+
+void ExportSettingsDialog::updateSummary() {
+    // An SVG has no pixels: the raster's fields are greyed out, the tolerance is its size.
+    const bool svg = isSvg();
+    for (QWidget* w : {static_cast<QWidget*>(mWidth), static_cast<QWidget*>(mUnit),
+                       static_cast<QWidget*>(mDpi), static_cast<QWidget*>(mAa)})
+        w->setEnabled(!svg);
+    if (mRepeat) {
+        mRepeat->setEnabled(!svg);
+        mTolerance->setEnabled(svg);
+    }
+    if (svg) {
+        mPixels->setText(
+            tr("Vector outlines in design units (%L1 × %L2)").arg(mGenome.size.x).arg(mGenome.size.y));
+        mPixels->setStyleSheet(QString());
+        mButtons->button(QDialogButtonBox::Ok)->setEnabled(true);
+        growToShowWrapped(this, mPixels);
+        return;
+    }
+    const bool tile = mirrorRepeatTile();
+    const QSize s = tile ? pixels() * 2 : pixels();
+    const QString problem = exportSizeProblem(s);
+    QString text = tr("%L1 × %L2 pixels").arg(s.width()).arg(s.height());
+    if (tile) text += tr(", the tile of a %L1 × %L2 render").arg(pixels().width()).arg(pixels().height());
+    if (perInch() <= 0.0)
+        text += tr(" (%1 × %2 in at %3 dpi)")
+                    .arg(s.width() / double(mDpi->value()), 0, 'f', 2)
+                    .arg(s.height() / double(mDpi->value()), 0, 'f', 2)
+                    .arg(mDpi->value());
+    mPixels->setText(problem.isEmpty() ? text : problem);
+    mPixels->setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("color: #c03030"));
+    mButtons->button(QDialogButtonBox::Ok)->setEnabled(problem.isEmpty());
+    growToShowWrapped(this, mPixels);
+}
+
+void ExportSettingsDialog::setUnit(const QString& unit) {
+    const int index = mUnit->findText(unit);
+    if (index >= 0) mUnit->setCurrentIndex(index);
+}
+
+QString ExportSettingsDialog::unit() const {
+    return mUnit->currentText();
+}
+double ExportSettingsDialog::widthValue() const {
+    return mWidth->value();
+}
+void ExportSettingsDialog::setWidthValue(double value) {
+    mWidth->setValue(value);
+}
+void ExportSettingsDialog::setDpi(int dpi) {
+    mDpi->setValue(dpi);
+}
+
+double ExportSettingsDialog::aspect() const {
+    const glm::dvec3& size = mGenome.size;
+    if (mGenome.dimension != 3) return size.y / size.x;
+    if (mSolidView->currentIndex() == 0) return 1.0;
+    const glm::dvec2 plane = slicePlane(mGenome.dimension, mAxis->currentIndex()).extent(size);
+    return plane.y / plane.x;
+}
+
+QString ExportSettingsDialog::extension() const {
+    return mFormat->currentData().toString().section('/', 0, 0);
+}
+
+int ExportSettingsDialog::bitsPerSample() const {
+    return mFormat->currentData().toString().endsWith("/16") ? 16 : 8;
+}
+
+void ExportSettingsDialog::setFormat(const QString& extension, int bitsPerSample) {
+    QString wanted = extension.toLower();
+    if (wanted == ".tiff") wanted = ".tif";
+    if (wanted == ".jpeg") wanted = ".jpg";
+    if (wanted == ".tif" && bitsPerSample == 16) wanted += "/16";
+    const int index = mFormat->findData(wanted);
+    mFormat->setCurrentIndex(index >= 0 ? index : 0);
+}
+
+double ExportSettingsDialog::tolerance() const {
+    return mTolerance ? mTolerance->value() : 1.0;
+}
+bool ExportSettingsDialog::mirrorRepeatTile() const {
+    return mRepeat && mRepeat->isChecked() && !isSvg();
+}
+void ExportSettingsDialog::setMirrorRepeatTile(bool on) {
+    if (mRepeat) mRepeat->setChecked(on);
+}
+
+std::optional<SolidExport> ExportSettingsDialog::solidExport() const {
+    if (mGenome.dimension != 3) return std::nullopt;
+    SolidExport solid;
+    solid.objectView = mSolidView->currentIndex() == 0;
+    solid.slice = Slice{mAxis->currentIndex(), mPosition->value()};
+    return solid;
+}
+
+void ExportSettingsDialog::setSolidExport(const SolidExport& solid) {
+    if (mGenome.dimension != 3) return;
+    mSolidView->setCurrentIndex(solid.objectView ? 0 : 1);
+    mAxis->setCurrentIndex(std::clamp(solid.slice.axis, 0, 2));
+    mPosition->setValue(solid.slice.value);
+}
+
+QSize ExportSettingsDialog::pixels() const {
+    const double w = std::round(mPixelWidth);
+    const double h = std::round(w * aspect());
+    // Clamped only so the numbers fit an int; the size check refuses what is too large.
+    const auto fit = [](double v) { return int(std::clamp(v, 0.0, 2e9)); };
+    return {std::max(1, fit(w)), std::max(1, fit(h))};
+}
+
+std::optional<double> ExportSettingsDialog::dpi() const {
+    return double(mDpi->value());
+}
+std::string ExportSettingsDialog::aa() const {
+    return mAa->currentText().toStdString();
+}
+
+void ExportSettingsDialog::accept() {
+    if (const QString problem =
+            isSvg() ? QString() : exportSizeProblem(mirrorRepeatTile() ? pixels() * 2 : pixels());
+        !problem.isEmpty()) {
+        reportError(this, tr("The image is too large"), problem);
+        return;
+    }
+    QDialog::accept();
+}
+
+} // namespace marbler::ui
