@@ -16,10 +16,17 @@
 #include "shared/RenderService.h"
 #include "shared/SavedFiles.h"
 #include "shared/StartDialog.h"
+#include "workbench/ColourwaysController.h"
 #include "workbench/DesignCell.h"
+#include "workbench/FavouritesShelf.h"
+#include "workbench/HelpMenu.h"
 #include "workbench/OpenPlacement.h"
+#include "workbench/OperatorActions.h"
+#include "workbench/PopulationBar.h"
+#include "workbench/RendererMenu.h"
+#include "workbench/SessionsController.h"
+#include "workbench/StatusLine.h"
 #include "workbench/Trash.h"
-#include "workbench/WorkbenchGuide.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -59,30 +66,6 @@
 namespace marbler::ui {
 
 namespace {
-
-/// Render keys: the grid uses 0..8, favourite thumbnails start here, lineage thumbnails at
-/// LineageKeyBase (the queue renders lower keys first, so the grid comes before thumbnails).
-constexpr std::uint64_t FavouriteKeyBase = 100;
-constexpr int ThumbnailSide = 96;
-
-/// The favourites list hands a dragged favourite over as genome JSON, which a cell accepts.
-class FavouritesList : public QListWidget {
-public:
-    using QListWidget::QListWidget;
-    std::vector<Favourite> const* favourites = nullptr;
-
-protected:
-    QStringList mimeTypes() const override { return {QString::fromLatin1(GenomeMimeType)}; }
-    QMimeData* mimeData(const QList<QListWidgetItem*>& items) const override {
-        if (items.isEmpty() || !favourites) return nullptr;
-        const int row = this->row(items.front());
-        if (row < 0 || row >= int(favourites->size())) return nullptr;
-        auto* mime = new QMimeData; // ownership passes to the drag
-        mime->setData(QString::fromLatin1(GenomeMimeType),
-                      QByteArray::fromStdString(serializeGenome((*favourites)[std::size_t(row)].genome)));
-        return mime;
-    }
-};
 
 /// File ▸ Open's filter: genome files, and the PNG and TIFF images Marbler writes, which carry
 /// their genomes (marbler/GenomeImage.h).
@@ -143,57 +126,34 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
 
     buildActions();
     buildDocks();
-    buildHelpMenu();
+    mHelp = new HelpMenu(this, mRenderer);
     setAcceptDrops(true);
 
-    // The status bar: passing messages over the generation's summary on the left; on the right
-    // the last file saved and what the window is doing. Which renderer draws is in Help ▸ About.
-    mGenerationLabel = new QLabel(this);
-    mGenerationLabel->setObjectName(QStringLiteral("generationLabel"));
-    statusBar()->addWidget(mGenerationLabel, 1);
-    mSavedNotice = new SavedFileNotice(this);
-    statusBar()->addPermanentWidget(mSavedNotice);
-    mTaskLabel = new QLabel(this);
-    mTaskLabel->setObjectName(QStringLiteral("taskLabel"));
-    mTaskLabel->setToolTip(
-        tr("What the window is doing. Help ▸ About Marbler says which renderer draws the designs."));
-    statusBar()->addPermanentWidget(mTaskLabel);
+    // The status bar: passing messages over the generation's summary, the last file saved and
+    // what the window is doing.
+    mStatus = new StatusLine(this);
     // Beside the message that a favourite was removed, while it shows.
-    mUndoRemove = new QPushButton(tr("Undo"), this);
-    mUndoRemove->setObjectName(QStringLiteral("undoRemoveFavourite"));
-    mUndoRemove->setToolTip(
-        tr("Put the removed favourite back (%1)")
-            .arg(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R).toString(QKeySequence::NativeText)));
-    // The first of the permanent widgets (index 0 is the generation summary), left of the rest.
-    statusBar()->insertPermanentWidget(1, mUndoRemove);
-    mUndoRemove->hide();
-    connect(mUndoRemove, &QPushButton::clicked, this, [this] { restoreRemovedFavourite(); });
-    connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& message) {
-        if (message != mUndoRemove->property("message").toString()) mUndoRemove->hide();
-    });
+    mFavourites->addUndoButton(statusBar());
     connect(mRenderer, &RenderService::backendReady, this, [this] {
-        if (mAnnounceBackend) {
-            mAnnounceBackend = false;
-            statusBar()->showMessage(rendererDescription(), 8000);
-        }
-        // Images from the other back end differ in the last bits: render everything anew.
+        // Images from the other back end differ in the last bits: render everything anew (the
+        // renderer menu says which one took over).
         mImageCache.clear();
         requestAllRenders();
     });
     connect(mRenderer, &RenderService::rendered, this, &WorkbenchWindow::onRendered);
     connect(mRenderer, &RenderService::failed, this, &WorkbenchWindow::onRenderFailed);
 
-    connect(this, &WorkbenchWindow::renderingFinished, this, &WorkbenchWindow::onRenderingFinished);
+    connect(this, &WorkbenchWindow::renderingFinished, mOperators, &OperatorActions::onRenderingFinished);
     connect(mModel, &PopulationModel::populationChanged, this, [this] {
         // Going to another generation drops a click still waiting: it was meant for this one.
-        if (!mBreedingNow) mPendingOperator.reset();
+        mOperators->onPopulationChanged();
         updateCells();
         requestAllRenders();
-        updateLineage();
+        mLineage->update();
     });
     connect(mModel, &PopulationModel::cellChanged, this, [this](int index) {
         updateCells(); // the lock marker
-        updateLineage();
+        mLineage->update();
         requestRender(index); // a new view angle (a lock change finds its image in the cache)
     });
     connect(mModel, &PopulationModel::selectionChanged, this, [this] {
@@ -201,22 +161,9 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
         updateActions();
     });
     connect(mModel, &PopulationModel::historyChanged, this, &WorkbenchWindow::updateActions);
-    connect(mModel, &PopulationModel::favouritesChanged, this, &WorkbenchWindow::updateFavourites);
-    connect(mModel, &PopulationModel::sessionSaveFailed, this, [this](const QString& message) {
-        // Once as a message, after that on the status bar: every change would fail the same way.
-        if (!mSaveFailureShown) {
-            mSaveFailureShown = true;
-            reportError(this, tr("Cannot save the session"),
-                        tr("The breeding session could not be saved, so it would not survive a crash; "
-                           "keep the designs you like as favourites.\n\n%1")
-                            .arg(message));
-        } else {
-            statusBar()->showMessage(tr("The session could not be saved: %1").arg(message), 10000);
-        }
-    });
 
     readSettings();
-    mModel->setMesh(mMesh->currentText());
+    mModel->setMesh(mPopulation->mesh());
     const QStringList favouriteErrors =
         mModel->setFavouritesFolder(PopulationModel::defaultFavouritesFolder());
     if (!favouriteErrors.isEmpty())
@@ -225,7 +172,7 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
             10000);
     updateCells();
     updateActions();
-    updateLineage();
+    mLineage->update();
 }
 
 WorkbenchWindow::~WorkbenchWindow() {
@@ -233,10 +180,7 @@ WorkbenchWindow::~WorkbenchWindow() {
     // has no receiver then, but the work itself is wasted, so drop it.
     for (int i = 0; i < CellCount; ++i)
         mRenderer->cancel(std::uint64_t(i));
-    for (std::size_t i = 0; i < mModel->favourites().size(); ++i)
-        mRenderer->cancel(FavouriteKeyBase + i);
-    for (auto it = mLineageRequests.cbegin(); it != mLineageRequests.cend(); ++it)
-        mRenderer->cancel(it.key());
+    mFavourites->cancelThumbnails(); // the lineage's go with its panel
 }
 
 void WorkbenchWindow::buildActions() {
@@ -267,8 +211,8 @@ void WorkbenchWindow::buildActions() {
     newDesign
         ->addAction(tr("&Random design"), this,
                     [this] {
-                        openEditor(randomGenome(QRandomGenerator::global()->generate64(),
-                                                mDimension->currentData().toInt()));
+                        openEditor(
+                            randomGenome(QRandomGenerator::global()->generate64(), mPopulation->dimension()));
                     })
         ->setToolTip(tr("A random design of the kind chosen on the tool bar, to edit by hand"));
     QAction* openInEditor = fileMenu->addAction(tr("Open in &editor…"), this, [this] {
@@ -282,9 +226,8 @@ void WorkbenchWindow::buildActions() {
         }
     });
     openInEditor->setStatusTip(tr("Edit a genome file, or an image carrying a genome, step by step"));
-    QAction* newRandom = fileMenu->addAction(tr("&New random population"), this, [this] {
-        newRandomPopulation(mDimension->currentData().toInt());
-    });
+    QAction* newRandom = fileMenu->addAction(tr("&New random population"), this,
+                                             [this] { newRandomPopulation(mPopulation->dimension()); });
     newRandom->setShortcut(QKeySequence::New);
     newRandom->setIconText(tr("New random"));
     newRandom->setToolTip(tr("Nine new random designs of the kind chosen beside (Ctrl+N)"));
@@ -300,14 +243,7 @@ void WorkbenchWindow::buildActions() {
     newPaperAction->setStatusTip(
         tr("A procedural marbled paper (as marbler paper makes) into the grid, to breed from"));
     fileMenu->addSeparator();
-    mSessionsAction = fileMenu->addAction(tr("&Sessions…"), this, [this] { openSessionsDialog(); });
-    mSessionsAction->setStatusTip(tr("Every breeding session is kept: resume, rename or delete one"));
-    mRecentSessions = fileMenu->addMenu(tr("&Resume session"));
-    mRecentSessions->setObjectName(QStringLiteral("recentSessionsMenu"));
-    connect(mRecentSessions, &QMenu::aboutToShow, this, &WorkbenchWindow::fillRecentSessions);
-    // Until startSession names the session folder there is no store to show.
-    mSessionsAction->setEnabled(false);
-    mRecentSessions->setEnabled(false);
+    mSessions = new SessionsController(this, mModel, fileMenu);
     fileMenu->addSeparator();
     fileMenu->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
 
@@ -337,36 +273,15 @@ void WorkbenchWindow::buildActions() {
     clearSelection->setObjectName(QStringLiteral("clearSelectionAction"));
     clearSelection->setShortcut(QKeySequence(Qt::Key_Escape));
     editMenu->addSeparator();
-    mRestoreFavourite =
-        editMenu->addAction(tr("&Restore removed favourite"), this, [this] { restoreRemovedFavourite(); });
-    // Ctrl+Z steps back a generation, so undoing a removal has a key of its own.
-    mRestoreFavourite->setObjectName(QStringLiteral("restoreFavouriteAction"));
-    mRestoreFavourite->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
-    mRestoreFavourite->setStatusTip(tr("Puts the favourite removed last back on the shelf"));
-    mRestoreFavourite->setEnabled(false);
+    mFavourites = new FavouritesShelf(
+        this, mModel, mRenderer, editMenu, [this] { return mesh(); },
+        [this](const QString& file) { noteSavedFile(file); });
+    connect(mFavourites, &FavouritesShelf::restoreRequested, this,
+            [this](int favourite) { restoreFavourite(favourite); });
 
-    const auto makeOperator = [&](GeneticOperator op, const QString& text, const QString& tip,
-                                  QKeySequence key) {
-        QAction* action = breedMenu->addAction(text, this, [this, op] { requestOperator(op); });
-        action->setShortcut(key);
-        action->setToolTip(QStringLiteral("%1 (%2)").arg(tip, key.toString(QKeySequence::NativeText)));
-        // The tooltip when the operator can run; updateActions() says why when it cannot.
-        action->setProperty("readyTip", action->toolTip());
-        action->setStatusTip(tip);
-        return action;
-    };
-    mAlter = makeOperator(GeneticOperator::Alter, tr("Alter (1 parent)"),
-                          tr("Offspring with the parent's strokes perturbed; the slider sets how much"),
-                          QKeySequence(Qt::CTRL | Qt::Key_1));
-    mRecombine = makeOperator(GeneticOperator::Recombine, tr("Recombine (2+ parents)"),
-                              tr("Offspring that take strokes from each of the parents"),
-                              QKeySequence(Qt::CTRL | Qt::Key_2));
-    mSwap = makeOperator(GeneticOperator::Swap, tr("Swap (2 parents)"),
-                         tr("One parent's initial drops with the other's strokes, both ways"),
-                         QKeySequence(Qt::CTRL | Qt::Key_3));
-    mReinit = makeOperator(GeneticOperator::Reinit, tr("Change initial state (1 parent)"),
-                           tr("Offspring with new initial drops under the same strokes"),
-                           QKeySequence(Qt::CTRL | Qt::Key_4));
+    mOperators = new OperatorActions(
+        this, breedMenu, [this](GeneticOperator op) { return applyOperator(op); },
+        [this] { return renderingDone(); });
 
     // One offspring cell a fresh design of the parents' family, against breeding fatigue.
     breedMenu->addSeparator();
@@ -385,31 +300,14 @@ void WorkbenchWindow::buildActions() {
     bar->addAction(mBack);
     bar->addAction(mForward);
     bar->addSeparator();
-    for (QAction* a : {mAlter, mRecombine, mSwap, mReinit})
-        bar->addAction(a);
-    buildColourwayActions(breedMenu, bar);
+    mOperators->addToToolBar(bar);
+    mColourways = new ColourwaysController(
+        this, mModel, [this](GeneticOperator op) { return operatorAction(op); },
+        [this](const QString& file) { noteSavedFile(file); });
+    connect(mColourways, &ColourwaysController::actionsChanged, this, &WorkbenchWindow::updateActions);
+    mColourways->buildActions(breedMenu, bar);
 
-    mStrength = new QSlider(Qt::Horizontal, bar);
-    mStrength->setObjectName(QStringLiteral("strengthSlider"));
-    mStrength->setRange(0, 100);
-    mStrength->setMaximumWidth(120);
-    mStrength->setToolTip(tr("How far %1 moves the strokes: 0 % barely, 100 % a lot")
-                              .arg(operatorLabel(GeneticOperator::Alter)));
-    // The value is always in sight, not only while the slider is dragged.
-    mStrengthLabel = new QLabel(bar);
-    mStrengthLabel->setObjectName(QStringLiteral("strengthLabel"));
-    mStrengthLabel->setToolTip(mStrength->toolTip());
-    // Wide enough for "Strength 100 %", so the toolbar does not shift as the value changes.
-    mStrengthLabel->setMinimumWidth(
-        mStrengthLabel->fontMetrics().horizontalAdvance(tr(" Strength %1 % ").arg(100)));
-    mStrengthLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    mStrengthLabel->setBuddy(mStrength);
-    connect(mStrength, &QSlider::valueChanged, this,
-            [this](int value) { mStrengthLabel->setText(tr(" Strength %1 % ").arg(value)); });
-    mStrength->setValue(50);
-    mStrengthLabel->setText(tr(" Strength %1 % ").arg(mStrength->value()));
-    bar->addWidget(mStrengthLabel);
-    bar->addWidget(mStrength);
+    mOperators->addStrength(bar);
 
     // New populations on a row of their own: on one row the family box, New random and the
     // object box hid behind the bar's ›› at the default width, and on a 1,366-pixel screen.
@@ -417,132 +315,25 @@ void WorkbenchWindow::buildActions() {
     bar = addToolBar(tr("New population"));
     bar->setObjectName(QStringLiteral("populationToolBar"));
     bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    auto* kindLabel = new QLabel(tr(" New population: "), bar);
-    bar->addWidget(kindLabel);
-
-    mDimension = new QComboBox(bar);
-    mDimension->addItem(tr("2D designs"), 2);
-    mDimension->addItem(tr("Solid designs"), 3);
-    mDimension->setToolTip(
-        tr("What a new random population holds: flat marbling or solid (volume) marbling"));
-    bar->addWidget(mDimension);
-    kindLabel->setBuddy(mDimension);
-    kindLabel->setToolTip(tr("What File ▸ New random population (%1) makes")
-                              .arg(newRandom->shortcut().toString(QKeySequence::NativeText)));
-    mFamily = new QComboBox(bar);
-    mFamily->setObjectName(QStringLiteral("familyCombo"));
-    mFamily->setToolTip(
-        tr("The pattern family of a new random population, or a mix of the craft's families"));
-    bar->addWidget(mFamily);
-    fillFamilies();
-    connect(mDimension, &QComboBox::currentIndexChanged, this, &WorkbenchWindow::fillFamilies);
-    bar->addAction(newRandom);
-    bar->addSeparator();
-
-    auto* meshLabel = new QLabel(tr(" Solids on: "), bar);
-    bar->addWidget(meshLabel);
-    mMesh = new QComboBox(bar);
-    mMesh->addItems(meshNames());
-    mMesh->setToolTip(tr("The object solid designs are shown on (drag in a cell to turn it)"));
-    meshLabel->setBuddy(mMesh);
-    meshLabel->setToolTip(mMesh->toolTip());
-    connect(mMesh, &QComboBox::currentTextChanged, this, [this](const QString& mesh) {
+    mPopulation = new PopulationBar(bar, newRandom);
+    connect(mPopulation, &PopulationBar::meshChanged, this, [this](const QString& mesh) {
         QSettings().setValue(QStringLiteral("view/mesh"), mesh);
         mModel->setMesh(mesh);
         requestAllRenders();
-        updateLineage(); // solid designs' thumbnails show the object
+        mLineage->update(); // solid designs' thumbnails show the object
     });
-    bar->addWidget(mMesh);
 }
 
 void WorkbenchWindow::buildDocks() {
     QMenu* viewMenu = menuBar()->findChild<QMenu*>(QStringLiteral("viewMenu"));
 
-    auto* favDock = new QDockWidget(tr("Favourites"), this);
-    favDock->setObjectName(QStringLiteral("favouritesDock"));
-    auto* list = new FavouritesList(favDock);
-    list->favourites = &mModel->favourites();
-    mFavouritesList = list;
-    list->setViewMode(QListView::IconMode);
-    list->setIconSize(QSize(ThumbnailSide, ThumbnailSide));
-    list->setResizeMode(QListView::Adjust);
-    list->setMovement(QListView::Static);
-    // A fixed grid: thumbnails arrive after the items, and the names vary in length, so items
-    // laid out by their own size would overlap.
-    list->setGridSize(QSize(ThumbnailSide + 56, ThumbnailSide + 30));
-    list->setUniformItemSizes(true);
-    list->setWordWrap(false);
-    list->setTextElideMode(Qt::ElideRight);
-    list->setDragEnabled(true);
-    list->setDragDropMode(QAbstractItemView::DragOnly);
-    list->setContextMenuPolicy(Qt::CustomContextMenu);
-    list->setToolTip(
-        tr("Designs kept aside (F on a cell). Double-click or drag one onto a cell to bring it back."));
-    connect(list, &QListWidget::itemDoubleClicked, this,
-            [this](QListWidgetItem* item) { restoreFavourite(mFavouritesList->row(item)); });
-    connect(list, &QWidget::customContextMenuRequested, this, &WorkbenchWindow::showFavouriteMenu);
-    // Docks never shrink past the point where a thumbnail or the lineage columns stay usable,
-    // so a small window cannot squash them (nor save a squashed layout).
-    list->setMinimumSize(ThumbnailSide + 80, ThumbnailSide + 50);
-    favDock->setWidget(list);
+    QDockWidget* favDock = mFavourites->buildDock();
     addDockWidget(Qt::RightDockWidgetArea, favDock);
 
-    auto* lineageDock = new QDockWidget(tr("Lineage"), this);
-    lineageDock->setObjectName(QStringLiteral("lineageDock"));
-    mLineageTree = new QTreeWidget(lineageDock);
-    mLineageTree->setColumnCount(4);
-    mLineageTree->setHeaderLabels({tr("Design"), tr("Made by"), tr("Parents"), tr("Generation")});
-    mLineageTree->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    mLineageTree->setIconSize(QSize(LineageIconSide, LineageIconSide));
-    // A double-click goes to a generation; it must not also fold it.
-    mLineageTree->setExpandsOnDoubleClick(false);
-    mLineageTree->setToolTip(
-        tr("Every generation, branches included, and how the designs came to be. Click a "
-           "design to select it; double-click a generation to go back to it, or a design of "
-           "another generation to bring it back into the grid."));
-    mLineageClickTimer.setSingleShot(true);
-    mLineageClickTimer.setInterval(QApplication::doubleClickInterval());
-    connect(&mLineageClickTimer, &QTimer::timeout, this,
-            [this] { selectLineageDesign(mLineageClickGeneration, mLineageClickCell); });
-    connect(mLineageTree, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
-        const QVariant cell = item->data(0, LineageCellRole);
-        if (!cell.isValid()) return;
-        mLineageClickGeneration = item->data(0, LineageGenerationRole).toInt();
-        mLineageClickCell = cell.toInt();
-        mLineageClickTimer.start();
-    });
-    connect(mLineageTree, &QTreeWidget::itemDoubleClicked, this, &WorkbenchWindow::onLineageDoubleClicked);
-    connect(mLineageTree, &QTreeWidget::itemExpanded, this, [this](QTreeWidgetItem* item) {
-        const QVariant generation = item->data(0, LineageGenerationRole);
-        if (generation.isValid() && !item->data(0, LineageCellRole).isValid()) {
-            mExpandedGenerations.insert(generation.toInt());
-            populateLineageGeneration(item);
-        }
-        const QVariant branch = item->data(0, LineageBranchRole);
-        if (branch.isValid()) mCollapsedBranches.remove(branch.toInt());
-        if (item == mLineageTree->topLevelItem(0)) mCurrentDesignsFolded = false;
-        mLineageThumbnailTimer.start();
-    });
-    connect(mLineageTree, &QTreeWidget::itemCollapsed, this, [this](QTreeWidgetItem* item) {
-        const QVariant generation = item->data(0, LineageGenerationRole);
-        if (generation.isValid()) mExpandedGenerations.remove(generation.toInt());
-        const QVariant branch = item->data(0, LineageBranchRole);
-        if (branch.isValid()) mCollapsedBranches.insert(branch.toInt());
-        if (item == mLineageTree->topLevelItem(0)) mCurrentDesignsFolded = true;
-    });
-    // Thumbnails are rendered for what comes into view: after scrolling, resizing, showing.
-    mLineageThumbnailTimer.setSingleShot(true);
-    mLineageThumbnailTimer.setInterval(30);
-    connect(&mLineageThumbnailTimer, &QTimer::timeout, this, &WorkbenchWindow::requestLineageThumbnails);
-    // The timer is the receiver: the dock hides as the window is destroyed, after the timer.
-    const auto scheduleThumbnails = [this] { mLineageThumbnailTimer.start(); };
-    connect(mLineageTree->verticalScrollBar(), &QScrollBar::valueChanged, &mLineageThumbnailTimer,
-            scheduleThumbnails);
-    connect(mLineageTree->verticalScrollBar(), &QScrollBar::rangeChanged, &mLineageThumbnailTimer,
-            scheduleThumbnails);
-    connect(lineageDock, &QDockWidget::visibilityChanged, &mLineageThumbnailTimer, scheduleThumbnails);
-    mLineageTree->setMinimumSize(260, 140);
-    lineageDock->setWidget(mLineageTree);
+    mLineage = new LineagePanel(this, mModel, mRenderer, [this] { return mesh(); });
+    connect(mLineage, &LineagePanel::openDesignRequested, this, &WorkbenchWindow::openDesign);
+    connect(mLineage, &LineagePanel::bringBackRequested, this, &WorkbenchWindow::bringBackDesign);
+    QDockWidget* lineageDock = mLineage->dock();
     addDockWidget(Qt::RightDockWidgetArea, lineageDock);
 
     viewMenu->addAction(favDock->toggleViewAction());
@@ -550,169 +341,52 @@ void WorkbenchWindow::buildDocks() {
     favDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
     lineageDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
 
-    viewMenu->addSeparator();
-    QMenu* rendererMenu = viewMenu->addMenu(tr("&Renderer"));
-    rendererMenu->setObjectName(QStringLiteral("rendererMenu"));
-    rendererMenu->setToolTipsVisible(true);
-    auto* group = new QActionGroup(rendererMenu);
-    const auto addChoice = [&](gl::BackendPreference preference, const QString& text, const QString& tip) {
-        QAction* action = rendererMenu->addAction(text);
-        action->setCheckable(true);
-        action->setChecked(mRenderer->preference() == preference);
-        action->setToolTip(tip);
-        action->setStatusTip(tip);
-        group->addAction(action);
-        connect(action, &QAction::triggered, this, [this, preference] { setRendererPreference(preference); });
-        mRendererActions[std::size_t(preference)] = action;
-    };
-    addChoice(
-        gl::BackendPreference::Auto, tr("Renderer: &Automatic"),
-        tr("OpenGL on a graphics card; the CPU where OpenGL is a software rasteriser (such as llvmpipe) or "
-           "missing, since the CPU renderer is faster there"));
-    addChoice(
-        gl::BackendPreference::Gpu, tr("Renderer: &GPU"),
-        tr("Always render with OpenGL shaders, even on a software rasteriser (the CPU where there is no "
-           "OpenGL at all)"));
-    addChoice(gl::BackendPreference::Cpu, tr("Renderer: &CPU"),
-              tr("Always render with the CPU renderer on every core; solid objects are still rasterised by "
-                 "OpenGL where it exists, and coloured by the CPU"));
-    std::string problem;
-    if (!gl::environmentBackendPreference(&problem) && !problem.empty())
-        statusBar()->showMessage(QString::fromStdString(problem), 10000);
-    if (const auto forced = RenderService::environmentPreference()) {
-        // The environment wins over the setting, so the menu only shows what it forces.
-        const QString why = tr("%1=%2 is set, which overrides this setting")
-                                .arg(QString::fromLatin1(gl::BackendEnvironmentVariable),
-                                     QString::fromLatin1(gl::backendPreferenceName(*forced).data()));
-        for (QAction* action : group->actions()) {
-            action->setEnabled(false);
-            action->setToolTip(why);
-        }
-        mRendererActions[std::size_t(*forced)]->setChecked(true);
-    }
+    mRendererMenu = new RendererMenu(this, mRenderer, viewMenu);
 }
 
 void WorkbenchWindow::setRendererPreference(gl::BackendPreference preference) {
-    QSettings().setValue(QStringLiteral("view/renderer"),
-                         QString::fromLatin1(gl::backendPreferenceName(preference).data()));
-    mRendererActions[std::size_t(preference)]->setChecked(true);
-    if (preference != mRenderer->preference()) {
-        mAnnounceBackend = true;
-        mRenderer->setPreference(preference);
-    }
+    mRendererMenu->setPreference(preference);
 }
 
 QAction* WorkbenchWindow::rendererAction(gl::BackendPreference preference) const {
-    return mRendererActions[std::size_t(preference)];
+    return mRendererMenu->action(preference);
 }
 
 QString WorkbenchWindow::rendererDescription() const {
-    if (mRenderer->backendName().isEmpty()) return {};
-    const QString where = mRenderer->usesGl() ? tr("Rendering with %1").arg(mRenderer->backendName())
-                                              : tr("Rendering on the %1").arg(mRenderer->backendName());
-    const QString why = mRenderer->backendReason();
-    return why.isEmpty() ? where : tr("%1: %2").arg(where, why);
+    return mRendererMenu->description();
 }
-
-void WorkbenchWindow::buildHelpMenu() {
-    QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
-    helpMenu->setObjectName(QStringLiteral("helpMenu"));
-    mGuideAction = helpMenu->addAction(tr("Marbler &guide"), this, &WorkbenchWindow::showGuide);
-    mGuideAction->setShortcut(QKeySequence::HelpContents);
-    mGuideAction->setStatusTip(tr("What the operators do, how to breed, and every keyboard shortcut"));
-    helpMenu->addSeparator();
-    mAboutAction = helpMenu->addAction(tr("&About Marbler"), this, &WorkbenchWindow::showAbout);
-    mAboutAction->setStatusTip(tr("Marbler's version, the libraries it runs with and the renderer in use"));
-    mAboutQtAction = helpMenu->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
-    mAboutQtAction->setStatusTip(tr("The Qt toolkit Marbler is built with"));
-}
-
-namespace {
-
-/// A text window with a Close button: the guide and the About box.
-QDialog* makeTextDialog(QWidget* parent, const QString& name, const QString& title, QWidget* body,
-                        QSize size) {
-    auto* dialog = new QDialog(parent);
-    dialog->setObjectName(name);
-    dialog->setWindowTitle(title);
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
-    QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
-    auto* layout = new QVBoxLayout(dialog);
-    body->setParent(dialog);
-    layout->addWidget(body, 1);
-    layout->addWidget(buttons);
-    dialog->resize(size);
-    return dialog;
-}
-
-} // namespace
 
 QDialog* WorkbenchWindow::showGuide() {
-    if (!mGuide) {
-        auto* browser = new QTextBrowser;
-        browser->setObjectName(QStringLiteral("guideBrowser"));
-        browser->setOpenLinks(false);
-        mGuide = makeTextDialog(this, QStringLiteral("guideDialog"), tr("Marbler guide"), browser,
-                                QSize(640, 720));
-    }
-    // Built each time it is shown, from the actions as they are now.
-    mGuide->findChild<QTextBrowser*>(QStringLiteral("guideBrowser"))->setHtml(guideHtml(*this));
-    mGuide->show();
-    mGuide->raise();
-    mGuide->activateWindow();
-    return mGuide;
-}
-
-QString WorkbenchWindow::aboutText() const {
-    AboutFacts facts;
-    facts.version = marblerVersion();
-    facts.qt = QString::fromLatin1(qVersion());
-    if (facts.qt != QStringLiteral(QT_VERSION_STR))
-        facts.qt = tr("%1 (built with %2)").arg(facts.qt, QStringLiteral(QT_VERSION_STR));
-    if (const auto imageIo = loadedOpenImageIoVersion()) facts.imageIo = QString::fromStdString(*imageIo);
-    facts.renderer = rendererDescription();
-    return aboutHtml(facts);
+    return mHelp->showGuide();
 }
 
 QDialog* WorkbenchWindow::showAbout() {
-    if (!mAbout) {
-        auto* text = new QLabel;
-        text->setObjectName(QStringLiteral("aboutText"));
-        text->setWordWrap(true);
-        text->setTextInteractionFlags(Qt::TextSelectableByMouse);
-        text->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-        mAbout =
-            makeTextDialog(this, QStringLiteral("aboutDialog"), tr("About Marbler"), text, QSize(520, 340));
-        // The renderer may still be choosing, or change while the box is open.
-        connect(mRenderer, &RenderService::backendReady, text, [this, text] { text->setText(aboutText()); });
-    }
-    // Filled each time it is shown: OpenImageIO may have loaded since.
-    mAbout->findChild<QLabel*>(QStringLiteral("aboutText"))->setText(aboutText());
-    mAbout->show();
-    mAbout->raise();
-    mAbout->activateWindow();
-    return mAbout;
+    return mHelp->showAbout();
+}
+
+QAction* WorkbenchWindow::guideAction() const {
+    return mHelp->guideAction();
+}
+
+QAction* WorkbenchWindow::aboutQtAction() const {
+    return mHelp->aboutQtAction();
+}
+
+SavedFileNotice* WorkbenchWindow::savedFileNotice() const {
+    return mStatus->savedNotice();
 }
 
 void WorkbenchWindow::noteSavedFile(const QString& file) {
     // The notice holds the full path, long enough to reach "Show in folder"; a passing message
     // would only say it twice.
-    mSavedNotice->showFile(file);
+    mStatus->savedNotice()->showFile(file);
 }
 
 void WorkbenchWindow::updateTask() {
     int pending = 0;
     for (int i = 0; i < CellCount; ++i)
         if (!mFinal[std::size_t(i)] && mModel->cell(i)) ++pending;
-    if (pending == 0) {
-        mRenderBatch = 0;
-        mTaskLabel->setText(tr("Ready"));
-        return;
-    }
-    // A batch counts every cell asked for since the window was last idle.
-    mRenderBatch = std::max(mRenderBatch, pending);
-    mTaskLabel->setText(tr("Rendering %1 of %2…").arg(mRenderBatch - pending + 1).arg(mRenderBatch));
+    mStatus->setPending(pending);
 }
 
 void WorkbenchWindow::readSettings() {
@@ -725,12 +399,12 @@ void WorkbenchWindow::readSettings() {
                     Qt::Horizontal);
     }
     const int dimension = settings.value(QStringLiteral("population/dimension"), 2).toInt();
-    mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
+    mPopulation->setDimension(dimension);
     setPopulationFamily(settings.value(QStringLiteral("population/family")).toString());
-    mStrength->setValue(settings.value(QStringLiteral("breed/strength"), 50).toInt());
+    mOperators->strengthSlider()->setValue(settings.value(QStringLiteral("breed/strength"), 50).toInt());
     const QString mesh =
         settings.value(QStringLiteral("view/mesh"), QString::fromLatin1(DefaultMesh)).toString();
-    if (mMesh->findText(mesh) >= 0) mMesh->setCurrentText(mesh);
+    mPopulation->setMesh(mesh);
 }
 
 void WorkbenchWindow::closeEvent(QCloseEvent* event) {
@@ -743,29 +417,20 @@ void WorkbenchWindow::closeEvent(QCloseEvent* event) {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
-    settings.setValue(QStringLiteral("breed/strength"), mStrength->value());
+    settings.setValue(QStringLiteral("breed/strength"), mOperators->strengthSlider()->value());
     QMainWindow::closeEvent(event);
 }
 
 QAction* WorkbenchWindow::operatorAction(GeneticOperator op) const {
-    switch (op) {
-    case GeneticOperator::Alter:
-        return mAlter;
-    case GeneticOperator::Recombine:
-        return mRecombine;
-    case GeneticOperator::Swap:
-        return mSwap;
-    case GeneticOperator::Reinit:
-        return mReinit;
-    }
-    return nullptr;
+    return mOperators->action(op);
 }
 
 double WorkbenchWindow::strength() const {
-    return mStrength->value() / 100.0;
+    return mOperators->strength();
 }
+
 void WorkbenchWindow::setStrength(double strength) {
-    mStrength->setValue(int(std::lround(strength * 100.0)));
+    mOperators->setStrength(strength);
 }
 
 void WorkbenchWindow::updateCells() {
@@ -789,51 +454,20 @@ void WorkbenchWindow::updateCells() {
 
 void WorkbenchWindow::updateActions() {
     const int n = mModel->selectedCount();
-    for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Swap,
-                               GeneticOperator::Reinit}) {
-        // A greyed-out operator says what it needs, so it is never disabled without a reason.
-        QAction* action = operatorAction(op);
-        const QString why = mModel->whyNot(op);
-        action->setEnabled(why.isEmpty());
-        action->setToolTip(why.isEmpty() ? action->property("readyTip").toString() : why);
-    }
-    updateColourwayActions();
+    mOperators->update(*mModel);
+    mColourways->updateActions();
     mBack->setEnabled(mModel->canGoBack());
     mForward->setEnabled(mModel->canGoForward());
     const auto& gen = mModel->current();
     if (mModel->isEmptyWorkbench()) {
-        mGenerationLabel->setText(
+        mStatus->setGeneration(
             tr("No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)"));
         return;
     }
-    mGenerationLabel->setText(tr("Generation %1: %2 — %3 selected")
-                                  .arg(mModel->generationLabel(mModel->currentIndex()))
-                                  .arg(gen.description)
-                                  .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
-}
-
-void WorkbenchWindow::updateFavourites() {
-    mRestoreFavourite->setEnabled(!mModel->removedFavourites().isEmpty());
-    if (mModel->removedFavourites().isEmpty()) mUndoRemove->hide();
-    mFavouritesList->clear();
-    const auto& favourites = mModel->favourites();
-    // Until its thumbnail is rendered, a favourite shows a blank of the thumbnail's size.
-    QPixmap placeholder(ThumbnailSide, ThumbnailSide);
-    placeholder.fill(palette().color(QPalette::Mid));
-    for (std::size_t i = 0; i < favourites.size(); ++i) {
-        const LineageInfo info = lineageOf(favourites[i].genome);
-        auto* item = new QListWidgetItem(info.displayName(), mFavouritesList);
-        item->setToolTip(QStringLiteral("%1\n%2").arg(item->text(), favourites[i].file));
-        item->setIcon(placeholder);
-        RenderRequest request;
-        request.genome = favourites[i].genome;
-        request.size = QSize(ThumbnailSide, ThumbnailSide);
-        request.mesh = mMesh->currentText();
-        const ViewAngle angle = viewAngleOf(favourites[i].genome);
-        request.yaw = angle.yaw;
-        request.pitch = angle.pitch;
-        mRenderer->request(FavouriteKeyBase + i, std::move(request));
-    }
+    mStatus->setGeneration(tr("Generation %1: %2 — %3 selected")
+                               .arg(mModel->generationLabel(mModel->currentIndex()))
+                               .arg(gen.description)
+                               .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
 }
 
 QString WorkbenchWindow::renderCacheKey(int index) const {
@@ -845,7 +479,7 @@ QString WorkbenchWindow::renderCacheKey(int index) const {
         .arg(QString::fromStdString(genomeId(*g)))
         .arg(size.width())
         .arg(size.height())
-        .arg(g->dimension == 3 ? mMesh->currentText() : QString())
+        .arg(g->dimension == 3 ? mPopulation->mesh() : QString())
         .arg(g->dimension == 3 ? cellViewAngle(index).yaw : 0.0)
         .arg(g->dimension == 3 ? cellViewAngle(index).pitch : 0.0);
 }
@@ -887,7 +521,7 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
     request.genome = *g;
     const int margin = 12;
     request.size = ((c->size() - QSize(margin, margin)) * c->devicePixelRatioF()).expandedTo(QSize(16, 16));
-    request.mesh = mMesh->currentText();
+    request.mesh = mPopulation->mesh();
     const ViewAngle angle = cellViewAngle(index);
     request.yaw = angle.yaw;
     request.pitch = angle.pitch;
@@ -924,15 +558,7 @@ void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool fi
         }
         return;
     }
-    if (key >= LineageKeyBase) {
-        if (final) onLineageThumbnail(key, image);
-        return;
-    }
-    if (key >= FavouriteKeyBase) {
-        const int row = int(key - FavouriteKeyBase);
-        if (QListWidgetItem* item = mFavouritesList->item(row))
-            item->setIcon(QIcon(QPixmap::fromImage(image)));
-    }
+    // The lineage's and the favourites' thumbnails: their objects take them.
 }
 
 void WorkbenchWindow::onRenderFailed(std::uint64_t key, const QString& message) {
@@ -942,8 +568,6 @@ void WorkbenchWindow::onRenderFailed(std::uint64_t key, const QString& message) 
         statusBar()->showMessage(tr("Design %1 cannot be rendered: %2").arg(key + 1).arg(message), 10000);
         updateTask();
         if (renderingDone()) emit renderingFinished();
-    } else if (key >= LineageKeyBase) {
-        onLineageThumbnail(key, QImage());
     }
 }
 
@@ -976,7 +600,7 @@ void WorkbenchWindow::onOrbit(int index, QPoint delta, bool finished) {
 }
 
 bool WorkbenchWindow::applyOperator(GeneticOperator op) {
-    if (colourwaysMode()) return applyColourwayOperator(op);
+    if (colourwaysMode()) return mColourways->applyOperator(op, strength());
     if (const QString why = mModel->whyNot(op); !why.isEmpty()) {
         statusBar()->showMessage(why, 5000);
         return false;
@@ -995,61 +619,20 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
 }
 
 void WorkbenchWindow::requestOperator(GeneticOperator op) {
-    if (mBredRendering) {
-        // Breeding is quick, its nine renders are not: clicks made meanwhile would queue
-        // generations that keep arriving for seconds. The last click waits for the renders.
-        mPendingOperator = op;
-        statusBar()->showMessage(tr("%1 follows when this generation has rendered").arg(operatorLabel(op)),
-                                 5000);
-        return;
-    }
-    mBreedingNow = true;
-    const bool bred = applyOperator(op);
-    mBreedingNow = false;
-    mBredRendering = bred && !renderingDone();
-}
-
-void WorkbenchWindow::onRenderingFinished() {
-    mBredRendering = false;
-    if (!mPendingOperator) return;
-    const GeneticOperator op = *mPendingOperator;
-    mPendingOperator.reset();
-    // Not inside the render result's handler, which is still updating the cells.
-    QTimer::singleShot(0, this, [this, op] { requestOperator(op); });
-}
-
-void WorkbenchWindow::fillFamilies() {
-    const int dimension = mDimension->currentData().toInt();
-    const QString chosen = mFamily->currentData().toString();
-    const QSignalBlocker quiet(mFamily);
-    mFamily->clear();
-    mFamily->addItem(tr("Mixed families"), QString());
-    mFamily->setItemData(0, tr("Every cell a different family of the craft (and some free designs)"),
-                         Qt::ToolTipRole);
-    for (const Family& f : allFamilies()) {
-        if (f.dimension != dimension) continue;
-        QString label = QString::fromUtf8(f.name.data(), qsizetype(f.name.size()));
-        label.replace(QLatin1Char('-'), QLatin1Char(' '));
-        label[0] = label[0].toUpper();
-        mFamily->addItem(label, QString::fromUtf8(f.name.data(), qsizetype(f.name.size())));
-        mFamily->setItemData(mFamily->count() - 1,
-                             QString::fromUtf8(f.summary.data(), qsizetype(f.summary.size())),
-                             Qt::ToolTipRole);
-    }
-    mFamily->setCurrentIndex(std::max(0, mFamily->findData(chosen)));
+    mOperators->request(op);
 }
 
 void WorkbenchWindow::setPopulationFamily(const QString& family) {
-    mFamily->setCurrentIndex(std::max(0, mFamily->findData(family)));
+    mPopulation->setFamily(family);
 }
 
 QString WorkbenchWindow::populationFamily() const {
-    return mFamily->currentData().toString();
+    return mPopulation->family();
 }
 
 void WorkbenchWindow::newRandomPopulation(int dimension) {
     QSettings().setValue(QStringLiteral("population/dimension"), dimension);
-    mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
+    mPopulation->setDimension(dimension);
     QSettings().setValue(QStringLiteral("population/family"), populationFamily());
     try {
         mModel->newRandomPopulation(dimension, populationFamily().toStdString());
@@ -1170,7 +753,7 @@ std::vector<int> WorkbenchWindow::startGenerationOfKind(const std::vector<Genome
     const int before = mModel->populationDimension();
     const bool wasEmpty = mModel->isEmptyWorkbench();
     const std::vector<int> used = mModel->startGenerationOf(designs, description, first);
-    mDimension->setCurrentIndex(kind == 3 ? 1 : 0);
+    mPopulation->setDimension(kind);
     const auto kindName = [this](int dimension) { return dimension == 3 ? tr("solid") : tr("flat"); };
     const QString back = mBack->shortcut().toString(QKeySequence::NativeText);
     if (wasEmpty)
@@ -1257,20 +840,7 @@ bool WorkbenchWindow::pasteDesign() {
 }
 
 bool WorkbenchWindow::keepFavourite(int index) {
-    const Genome* g = mModel->cell(index);
-    if (!g) return false;
-    try {
-        mModel->addFavourite(*g);
-    } catch (const Error& e) {
-        reportError(this, tr("Cannot keep the favourite"), QString::fromStdString(e.what()));
-        return false;
-    }
-    // Kept as a genome file: say where, as for any file the window writes.
-    const QString id = QString::fromStdString(genomeId(*g));
-    for (const Favourite& f : mModel->favourites())
-        if (QFileInfo(f.file).fileName().startsWith(id)) mSavedNotice->showFile(f.file);
-    statusBar()->showMessage(tr("Design %1 kept on the favourites shelf").arg(index + 1), 4000);
-    return true;
+    return mFavourites->keep(index);
 }
 
 void WorkbenchWindow::restoreFavourite(int favourite, int index) {
@@ -1327,55 +897,100 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
     menu.exec(globalPos);
 }
 
-void WorkbenchWindow::showFavouriteMenu(const QPoint& pos) {
-    QMenu menu(this);
-    if (QListWidgetItem* item = mFavouritesList->itemAt(pos)) {
-        const int row = mFavouritesList->row(item);
-        menu.addAction(tr("Put into the grid"), this, [this, row] { restoreFavourite(row); });
-        menu.addAction(tr("Remove from favourites"), this, [this, row] { removeFavourite(row); });
-        menu.addSeparator();
-    }
-    menu.addAction(mRestoreFavourite);
-    menu.exec(mFavouritesList->viewport()->mapToGlobal(pos));
-}
-
 bool WorkbenchWindow::removeFavourite(int favourite) {
-    const auto& favourites = mModel->favourites();
-    if (favourite < 0 || favourite >= int(favourites.size())) return false;
-    const LineageInfo info = lineageOf(favourites[std::size_t(favourite)].genome);
-    const QString name = info.displayName();
-    try {
-        mModel->removeFavourite(favourite);
-    } catch (const Error& e) {
-        reportError(this, tr("Cannot remove the favourite"), QString::fromStdString(e.what()));
-        return false;
-    }
-    const QString message = tr("Removed “%1” from favourites — Undo (%2)")
-                                .arg(name, mRestoreFavourite->shortcut().toString(QKeySequence::NativeText));
-    mUndoRemove->setProperty("message", message);
-    statusBar()->showMessage(message, 15000);
-    mUndoRemove->show();
-    return true;
+    return mFavourites->remove(favourite);
 }
 
 bool WorkbenchWindow::restoreRemovedFavourite() {
-    if (mModel->removedFavourites().isEmpty()) return false;
-    const QString trashed = mModel->removedFavourites().back();
-    const QString back = QDir(mModel->favouritesFolder()).filePath(originalTrashName(trashed));
-    if (!mModel->restoreRemovedFavourite(trashed)) {
-        reportError(this, tr("Cannot restore the favourite"),
-                    tr("The removed favourite could not be put back from %1 to %2.").arg(trashed, back));
-        return false;
-    }
-    mUndoRemove->hide();
-    QString name = QFileInfo(back).fileName();
-    for (const Favourite& f : mModel->favourites())
-        if (QFileInfo(f.file) == QFileInfo(back)) {
-            const LineageInfo info = lineageOf(f.genome);
-            name = info.displayName();
-        }
-    statusBar()->showMessage(tr("“%1” is back on the favourites shelf").arg(name), 5000);
-    return true;
+    return mFavourites->restoreRemoved();
+}
+
+QListWidget* WorkbenchWindow::favouritesList() const {
+    return mFavourites->list();
+}
+
+QAction* WorkbenchWindow::restoreFavouriteAction() const {
+    return mFavourites->restoreAction();
+}
+
+QPushButton* WorkbenchWindow::undoRemoveButton() const {
+    return mFavourites->undoRemoveButton();
+}
+
+QTreeWidget* WorkbenchWindow::lineageTree() const {
+    return mLineage->tree();
+}
+
+bool WorkbenchWindow::hasLineageThumbnail(const Genome& genome) const {
+    return mLineage->hasThumbnail(genome);
+}
+
+void WorkbenchWindow::setSessionStore(const QString& sessionFolder) {
+    mSessions->setStore(sessionFolder);
+}
+
+QString WorkbenchWindow::sessionStoreFolder() const {
+    return mSessions->storeFolder();
+}
+
+QString WorkbenchWindow::currentSessionId() const {
+    return mSessions->currentId();
+}
+
+bool WorkbenchWindow::resumeKeptSession(const QString& id) {
+    return mSessions->resume(id);
+}
+
+bool WorkbenchWindow::renameSession(const QString& id, const QString& name) {
+    return mSessions->rename(id, name);
+}
+
+QString WorkbenchWindow::deleteSession(const QString& id) {
+    return mSessions->remove(id);
+}
+
+bool WorkbenchWindow::restoreDeletedSession(const QString& trashed) {
+    return mSessions->restoreDeleted(trashed);
+}
+
+SessionsDialog* WorkbenchWindow::openSessionsDialog() {
+    return mSessions->openDialog();
+}
+
+QAction* WorkbenchWindow::sessionsAction() const {
+    return mSessions->sessionsAction();
+}
+
+QMenu* WorkbenchWindow::recentSessionsMenu() const {
+    return mSessions->recentMenu();
+}
+
+QAction* WorkbenchWindow::colourwaysAction() const {
+    return mColourways->modeAction();
+}
+
+bool WorkbenchWindow::colourwaysMode() const {
+    return mColourways && mColourways->isOn();
+}
+
+void WorkbenchWindow::setColourwaysMode(bool on) {
+    mColourways->setOn(on);
+}
+
+bool WorkbenchWindow::exportColourwaySheet(const QString& file) {
+    return mColourways->exportSheet(file);
+}
+
+QAction* WorkbenchWindow::exportSheetAction() const {
+    return mColourways->exportSheetAction();
+}
+
+bool WorkbenchWindow::sheetExportRunning() const {
+    return mColourways->sheetRunning();
+}
+
+void WorkbenchWindow::setSheetCellWidth(int width) {
+    mColourways->setSheetCellWidth(width);
 }
 
 void WorkbenchWindow::saveDesign(int index) {
@@ -1387,7 +1002,7 @@ void WorkbenchWindow::saveDesign(int index) {
 DesignDialog* WorkbenchWindow::openDesign(int index) {
     const Genome* g = mModel->cell(index);
     if (!g) return nullptr;
-    auto* dialog = new DesignDialog(*g, mRenderer, mMesh->currentText(), this);
+    auto* dialog = new DesignDialog(*g, mRenderer, mPopulation->mesh(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     // Turning the object in the large view turns the design, where the cell still holds it.
     const std::string id = genomeId(*g);
@@ -1406,10 +1021,28 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
     return dialog;
 }
 
+void WorkbenchWindow::bringBackDesign(int generation, int cell) {
+    const auto& history = mModel->history();
+    if (generation < 0 || generation >= int(history.size()) || cell < 0 || cell >= CellCount) return;
+    const auto& design = history[std::size_t(generation)].cells[std::size_t(cell)];
+    if (!design) return;
+    const QString from =
+        tr("design %1 of generation %2").arg(cell + 1).arg(mModel->generationLabel(generation));
+    if (design->dimension != mModel->populationDimension()) {
+        // A solid among flat designs (or the reverse) could breed with none of them: as an
+        // opened design of the other kind, it starts a generation of its own.
+        startGenerationOfKind({*design}, tr("Brought back %1").arg(from));
+        return;
+    }
+    const std::vector<int> used = mModel->placeDesigns({*design}, tr("Brought back %1").arg(from));
+    if (!used.empty())
+        statusBar()->showMessage(tr("Brought back %1 into design %2").arg(from).arg(used.front() + 1), 5000);
+}
+
 void WorkbenchWindow::resumeSession(SavedSession session) {
     const int dimension = session.dimension;
     mModel->restoreSession(std::move(session));
-    mDimension->setCurrentIndex(dimension == 3 ? 1 : 0);
+    mPopulation->setDimension(dimension);
     setMesh(mModel->mesh());
     statusBar()->showMessage(
         tr("Resumed the last session at generation %1").arg(mModel->generationLabel(mModel->currentIndex())),
@@ -1417,7 +1050,7 @@ void WorkbenchWindow::resumeSession(SavedSession session) {
 }
 
 QString WorkbenchWindow::mesh() const {
-    return mMesh->currentText();
+    return mPopulation->mesh();
 }
 
 QString designCaption(const Genome& genome) {
@@ -1428,7 +1061,7 @@ QString designCaption(const Genome& genome) {
 }
 
 void WorkbenchWindow::setMesh(const QString& mesh) {
-    if (mMesh->findText(mesh) >= 0) mMesh->setCurrentText(mesh);
+    mPopulation->setMesh(mesh);
 }
 
 } // namespace marbler::ui

@@ -9,6 +9,7 @@
 // Complete for the designOpened signal: moc registers the pointer type of a complete class
 // only, and a test spying on the signal needs it.
 #include "shared/DesignDialog.h"
+#include "workbench/LineagePanel.h"
 #include "workbench/PopulationModel.h"
 #include "workbench/Session.h"
 
@@ -40,22 +41,28 @@ class QTreeWidgetItem;
 
 namespace marbler::ui {
 
+class ColourwaysController;
 class DesignCell;
 class EditorWindow;
+class FavouritesShelf;
+class HelpMenu;
+class OperatorActions;
+class PopulationBar;
+class RendererMenu;
 class RenderService;
 struct RecoveredDesign;
 class SavedFileNotice;
+class SessionsController;
 class SessionsDialog;
+class StatusLine;
 
 class WorkbenchWindow : public QMainWindow {
     Q_OBJECT
 public:
-    /// Render keys of lineage thumbnails start here (the queue renders lower keys first, so the
-    /// grid and the favourites come before them).
-    static constexpr std::uint64_t LineageKeyBase = std::uint64_t(1) << 32;
-    /// The lineage's icons: a design's thumbnail, and a generation's mosaic of nine (tiles of 14
-    /// pixels with 1-pixel gaps): small enough to render many, big enough to tell inks apart.
-    static constexpr int LineageIconSide = 44;
+    /// Render keys of lineage thumbnails start here (LineagePanel.h).
+    static constexpr std::uint64_t LineageKeyBase = LineagePanel::KeyBase;
+    /// The lineage's icons (LineagePanel.h).
+    static constexpr int LineageIconSide = LineagePanel::IconSide;
 
     /// The render service is shared (the editor uses it too) and must outlive the window.
     explicit WorkbenchWindow(RenderService* renderer, QWidget* parent = nullptr);
@@ -66,17 +73,17 @@ public:
     QAction* operatorAction(GeneticOperator op) const;
     QAction* backAction() const { return mBack; }
     QAction* forwardAction() const { return mForward; }
-    QListWidget* favouritesList() const { return mFavouritesList; }
+    QListWidget* favouritesList() const;
     /// The lineage: "Current designs", then "Generations", the generation tree (a branch's
     /// generations under a "Branch N" item placed after the generation it grew from), each
     /// generation with its nine designs as a thumbnail mosaic and as child items.
-    QTreeWidget* lineageTree() const { return mLineageTree; }
+    QTreeWidget* lineageTree() const;
     /// In the lineage, items of generations and designs hold the generation's history index in
     /// this role (column 0), items of designs their cell in LineageCellRole, and branch items
     /// their branch number in LineageBranchRole.
-    static constexpr int LineageGenerationRole = Qt::UserRole;
-    static constexpr int LineageCellRole = Qt::UserRole + 1;
-    static constexpr int LineageBranchRole = Qt::UserRole + 2;
+    static constexpr int LineageGenerationRole = LineagePanel::GenerationRole;
+    static constexpr int LineageCellRole = LineagePanel::CellRole;
+    static constexpr int LineageBranchRole = LineagePanel::BranchRole;
     /// Whether the lineage shows the rendered thumbnail of a design (else a blank, until it
     /// arrives; thumbnails are rendered only for the items in view).
     bool hasLineageThumbnail(const Genome& genome) const;
@@ -166,7 +173,7 @@ public:
     /// Kept sessions (SessionStore.h): the session folder whose store File ▸ Sessions shows
     /// (set by startSession; empty: no store, and the menu entries are disabled).
     void setSessionStore(const QString& sessionFolder);
-    QString sessionStoreFolder() const { return mSessionFolder; }
+    QString sessionStoreFolder() const;
     /// The id of the session being bred and saved (empty when none is saved).
     QString currentSessionId() const;
     /// Switches to a kept session; the current one is saved already and stays kept. A session
@@ -182,8 +189,8 @@ public:
     /// File ▸ Sessions: the kept sessions to resume, rename or delete (not modal, deleted on
     /// close; one at a time).
     SessionsDialog* openSessionsDialog();
-    QAction* sessionsAction() const { return mSessionsAction; }
-    QMenu* recentSessionsMenu() const { return mRecentSessions; }
+    QAction* sessionsAction() const;
+    QMenu* recentSessionsMenu() const;
     /// Keeps a cell's design on the favourites shelf.
     bool keepFavourite(int cell);
     /// Removes a favourite from the shelf (into the trash), saying how to undo it.
@@ -191,8 +198,8 @@ public:
     /// Brings back the favourite removed last; false when there is none or it cannot be.
     bool restoreRemovedFavourite();
     /// Edit ▸ Restore removed favourite, and the status bar's Undo beside its message.
-    QAction* restoreFavouriteAction() const { return mRestoreFavourite; }
-    QPushButton* undoRemoveButton() const { return mUndoRemove; }
+    QAction* restoreFavouriteAction() const;
+    QPushButton* undoRemoveButton() const;
     /// Puts a favourite back into a cell (-1: the selected or first free cell).
     void restoreFavourite(int favourite, int cell = -1);
     /// Whether every cell shows its final image (for screenshots and tests).
@@ -210,33 +217,33 @@ public:
     QString rendererDescription() const;
 
     /// Help ▸ Marbler guide (F1) and About Qt.
-    QAction* guideAction() const { return mGuideAction; }
-    QAction* aboutQtAction() const { return mAboutQtAction; }
+    QAction* guideAction() const;
+    QAction* aboutQtAction() const;
     /// Shows the guide (not modal, one at a time, deleted on close) and returns it.
     QDialog* showGuide();
     /// Shows the About box (not modal, one at a time, deleted on close) and returns it.
     QDialog* showAbout();
     /// Says on the status bar that a file was written (full path, "Show in folder").
     void noteSavedFile(const QString& file);
-    SavedFileNotice* savedFileNotice() const { return mSavedNotice; }
+    SavedFileNotice* savedFileNotice() const;
 
-    /// Colourways (WorkbenchColourways.cpp), Breed ▸ Colourways: while on, the grid breeds only
+    /// Colourways (ColourwaysController.h), Breed ▸ Colourways: while on, the grid breeds only
     /// palettes (Colourways.h): Alter varies the parent's palette (the slider sets how much),
     /// Recombine mixes the parents' palettes, Swap and Change initial state are off (their
     /// tooltips say why). Turning it on with one design selected fills a new generation with
     /// that design and eight colourways of it; turning it off returns to ordinary breeding.
-    QAction* colourwaysAction() const { return mColourways; }
+    QAction* colourwaysAction() const;
     bool colourwaysMode() const;
     void setColourwaysMode(bool on);
     /// Breed ▸ Export colourway sheet…: the grid's designs as one image (Sheet.h), PNG or TIFF,
     /// rendered off the GUI thread with a progress dialog; `file` empty asks for one
     /// (askSaveFile). The status bar notes the file when written. Returns whether it started.
     bool exportColourwaySheet(const QString& file = {});
-    QAction* exportSheetAction() const { return mExportSheet; }
+    QAction* exportSheetAction() const;
     /// Whether a sheet is being written.
-    bool sheetExportRunning() const { return mSheetRunning; }
+    bool sheetExportRunning() const;
     /// The width of a sheet's cells in pixels (default 600; the height follows the design).
-    void setSheetCellWidth(int width) { mSheetCellWidth = width; }
+    void setSheetCellWidth(int width);
 
 signals:
     /// Every visible design has its final image.
@@ -254,16 +261,10 @@ protected:
 
 private:
     void buildActions();
-    void buildColourwayActions(QMenu* breedMenu, QToolBar* bar);
-    void onColourwaysToggled(bool on);
-    /// In Colourways mode: the operators' states and tooltips for palette-only breeding.
-    void updateColourwayActions();
-    bool applyColourwayOperator(GeneticOperator op);
     /// The cell Copy design copies: the focused one holding a design, else the first selected
     /// (-1: none).
     int designToCopy() const;
     void buildDocks();
-    void fillFamilies();
     void readSettings();
     void updateCells();
     /// Puts designs into a generation of their own (every other cell empty) and the kind box to
@@ -272,40 +273,17 @@ private:
     std::vector<int> startGenerationOfKind(const std::vector<Genome>& designs, const QString& description,
                                            int first = 0);
     void updateActions();
-    void updateLineage();
-    /// Fills a generation's lineage item with its designs (done when it is first expanded).
-    void populateLineageGeneration(QTreeWidgetItem* item);
-    void addLineageDesign(QTreeWidgetItem* parent, int generation, int cell);
-    /// Asks for the thumbnails of the lineage items in view that are not rendered yet.
-    void requestLineageThumbnails();
-    void requestLineageThumbnail(const Genome& genome);
-    QString lineageThumbnailKey(const Genome& genome) const;
-    /// A generation's icon: its nine thumbnails in a 3 x 3 mosaic (blanks until they arrive).
-    QPixmap lineageMosaic(int generation) const;
-    QPixmap lineageIcon(const QString& key) const;
-    void onLineageThumbnail(std::uint64_t key, const QImage& image);
-    /// A design clicked in the lineage: selected in the grid, going to its generation first.
-    void selectLineageDesign(int generation, int cell);
-    void onLineageDoubleClicked(QTreeWidgetItem* item);
-    void updateFavourites();
     void updateTask();
-    void buildHelpMenu();
-    /// The About box's text as things are now.
-    QString aboutText() const;
     void requestRender(int cell, bool previewOnly = false);
     void requestAllRenders();
     void onRendered(std::uint64_t key, const QImage& image, bool final);
     void onRenderFailed(std::uint64_t key, const QString& message);
-    /// The operator click waiting for the renders (requestOperator), now that they are done.
-    void onRenderingFinished();
     void onCellClicked(int index);
     void onFocusMove(int index, int dx, int dy);
     void onOrbit(int index, QPoint delta, bool finished);
     void showCellMenu(int index, const QPoint& globalPos);
-    void showFavouriteMenu(const QPoint& pos);
     void openFileDialog();
     void marblePictureDialog();
-    void fillRecentSessions();
     void saveDesign(int index);
     QString renderCacheKey(int cell) const;
     /// The angle a cell's solid is seen from (while it is being turned, the drag's).
@@ -324,65 +302,20 @@ private:
     std::array<std::string, CellCount> mShownDesign;
     std::array<std::string, CellCount> mRequestedDesign;
     QCache<QString, QImage> mImageCache{48};
-    QAction* mAlter = nullptr;
-    QAction* mRecombine = nullptr;
-    QAction* mSwap = nullptr;
-    QAction* mReinit = nullptr;
-    /// requestOperator: a generation it bred is still rendering; the click waiting for it.
-    bool mBredRendering = false;
-    bool mBreedingNow = false;
-    std::optional<GeneticOperator> mPendingOperator;
+    OperatorActions* mOperators = nullptr;
     QAction* mBack = nullptr;
     QAction* mForward = nullptr;
-    QSlider* mStrength = nullptr;
-    QComboBox* mDimension = nullptr;
-    QComboBox* mFamily = nullptr; ///< the family of new populations, "" for mixed (fillFamilies)
-    QComboBox* mMesh = nullptr;
-    QListWidget* mFavouritesList = nullptr;
-    QTreeWidget* mLineageTree = nullptr;
-    /// Lineage thumbnails by lineageThumbnailKey (a design at one size, on one object).
-    QCache<QString, QImage> mLineageThumbnails{2000};
-    /// Thumbnails asked for and not yet back: render key -> thumbnail key, and the keys.
-    QHash<std::uint64_t, QString> mLineageRequests;
-    QSet<QString> mLineagePending;
-    /// The lineage items that show a thumbnail (designs) or a mosaic (generations), by key.
-    QMultiHash<QString, QTreeWidgetItem*> mLineageDesignItems;
-    QMultiHash<QString, QTreeWidgetItem*> mLineageGenerationItems;
-    /// What the user expanded (generations) and collapsed (branches), kept across rebuilds.
-    QSet<int> mExpandedGenerations;
-    QSet<int> mCollapsedBranches;
-    bool mCurrentDesignsFolded = false;
-    QTimer mLineageThumbnailTimer;
-    /// A click waits out the double-click interval: a double-click means something else.
-    QTimer mLineageClickTimer;
-    int mLineageClickGeneration = -1;
-    int mLineageClickCell = -1;
-    QLabel* mStrengthLabel = nullptr;
-    QLabel* mGenerationLabel = nullptr; ///< the generation and its parents, under passing messages
-    QLabel* mTaskLabel = nullptr;       ///< what the window is doing: "Rendering 5 of 9…", "Ready"
-    SavedFileNotice* mSavedNotice = nullptr;
-    QAction* mGuideAction = nullptr;
-    QAction* mAboutAction = nullptr;
-    QAction* mAboutQtAction = nullptr;
-    QPointer<QDialog> mGuide;
-    QPointer<QDialog> mAbout;
-    int mRenderBatch = 0;                       ///< cells in the renders under way, for "Rendering 5 of 9…"
-    bool mAnnounceBackend = false;              ///< the user switched renderer: say which one took over
-    std::array<QAction*, 3> mRendererActions{}; ///< by gl::BackendPreference
+    PopulationBar* mPopulation = nullptr;
+    FavouritesShelf* mFavourites = nullptr;
+    LineagePanel* mLineage = nullptr;
+    SessionsController* mSessions = nullptr;
+    ColourwaysController* mColourways = nullptr;
+    StatusLine* mStatus = nullptr;
+    HelpMenu* mHelp = nullptr;
+    RendererMenu* mRendererMenu = nullptr;
     QTimer mResizeTimer;
-    bool mSaveFailureShown = false;
-    QString mSessionFolder;
-    QAction* mSessionsAction = nullptr;
-    QMenu* mRecentSessions = nullptr;
-    QPointer<SessionsDialog> mSessionsDialog;
-    QAction* mRestoreFavourite = nullptr;
     QAction* mCopyDesign = nullptr;
     QAction* mPasteDesign = nullptr;
-    QPushButton* mUndoRemove = nullptr;
-    QAction* mColourways = nullptr;
-    QAction* mExportSheet = nullptr;
-    int mSheetCellWidth = 600;
-    bool mSheetRunning = false;
 };
 
 /// Reports a session file that does not load (once), moving it aside as `.bad` first.

@@ -16,6 +16,7 @@
 #include <QImage>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTemporaryDir>
 
 #include <cstring>
@@ -167,6 +168,37 @@ TEST_F(ColourwaysUiTest, CancellingTheSheetLeavesNoFile) {
     EXPECT_FALSE(QFileInfo::exists(file + QStringLiteral(".png")));
     EXPECT_TRUE(QDir(dir.path()).isEmpty());
     EXPECT_TRUE(mWindow->exportSheetAction()->isEnabled());
+}
+
+// The sheet runs as a BackgroundJob: its box still says what it does and the status bar still says
+// a cancelled sheet was cancelled; closing the window meanwhile stops it, leaving no file.
+TEST_F(ColourwaysUiTest, TheSheetsBoxAndMessagesStay) {
+    test::ErrorCapture errors;
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("sheet.png"));
+    mWindow->setSheetCellWidth(2000); // long enough to cancel while it renders
+    ASSERT_TRUE(mWindow->exportColourwaySheet(file));
+    auto* progress = mWindow->findChild<QProgressDialog*>();
+    ASSERT_NE(progress, nullptr);
+    EXPECT_EQ(progress->windowTitle(), QStringLiteral("Export colourway sheet"));
+    EXPECT_EQ(progress->labelText(), QStringLiteral("Rendering the colourway sheet…"));
+    // A second sheet waits for the first.
+    EXPECT_FALSE(mWindow->exportColourwaySheet(dir.filePath(QStringLiteral("second.png"))));
+    EXPECT_EQ(mWindow->statusBar()->currentMessage(),
+              QStringLiteral("A colourway sheet is being written already"));
+    emit progress->canceled(); // what the box's Cancel button says
+    MARBLER_WAIT(!mWindow->sheetExportRunning(), 60000);
+    EXPECT_EQ(mWindow->statusBar()->currentMessage(), QStringLiteral("Colourway sheet cancelled"));
+    EXPECT_EQ(mWindow->findChild<QProgressDialog*>(), nullptr) << "the box is gone";
+    EXPECT_TRUE(errors.messages.isEmpty()) << errors.messages.join(QStringLiteral("; ")).toStdString();
+
+    // Closing the window while a sheet renders stops the work before the window is gone, leaving
+    // no file, not even a half-written one.
+    ASSERT_TRUE(mWindow->exportColourwaySheet(file));
+    mWindow.reset();
+    EXPECT_FALSE(QFileInfo::exists(file));
+    EXPECT_TRUE(QDir(dir.path()).isEmpty())
+        << QDir(dir.path()).entryList(QDir::Files).join(' ').toStdString();
 }
 
 } // namespace

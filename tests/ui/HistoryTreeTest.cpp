@@ -10,6 +10,7 @@
 #include "marbler/GenomeIO.h"
 #include "shared/RenderService.h"
 #include "workbench/DesignCell.h"
+#include "workbench/LineagePanel.h"
 #include "workbench/PopulationModel.h"
 #include "workbench/Session.h"
 #include "workbench/WorkbenchWindow.h"
@@ -17,8 +18,10 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
+#include <QMainWindow>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -448,6 +451,37 @@ TEST_F(HistoryTreeTest, LineageThumbnailsArriveForWhatIsInView) {
     for (int i = 0; i < CellCount; ++i)
         ASSERT_TRUE(waitFor([&] { return mWindow->hasLineageThumbnail(*hidden[std::size_t(i)]); }, 60000));
     EXPECT_TRUE(iconHasDetail(generationItem(tree, 4)->icon(0), QRect(15, 0, 14, 14)));
+}
+
+// The lineage is an object of its own (LineagePanel.h): given a model, a render service and a
+// window to sit in, it shows the generations and renders the thumbnails in view, no workbench
+// window needed.
+TEST(LineagePanelTest, ShowsTheTreeAndItsThumbnailsOnItsOwn) {
+    RenderService service(RenderService::Backend::Cpu);
+    QMainWindow window;
+    PopulationModel model;
+    model.setSessionSeed(42);
+    LineagePanel panel(&window, &model, &service, [] { return QStringLiteral("vase"); });
+    window.addDockWidget(Qt::RightDockWidgetArea, panel.dock());
+    model.newRandomPopulation(2);
+    panel.update();
+
+    QTreeWidget* tree = panel.tree();
+    EXPECT_EQ(panel.dock()->objectName(), QStringLiteral("lineageDock"));
+    ASSERT_EQ(tree->topLevelItemCount(), 2);
+    EXPECT_EQ(tree->topLevelItem(0)->text(0), QStringLiteral("Current designs"));
+    EXPECT_EQ(tree->topLevelItem(0)->childCount(), CellCount);
+    EXPECT_EQ(tree->topLevelItem(1)->text(0), QStringLiteral("Generations"));
+    ASSERT_EQ(tree->topLevelItem(1)->childCount(), 1);
+    EXPECT_EQ(tree->topLevelItem(1)->child(0)->text(0), QStringLiteral("Generation 1"));
+    EXPECT_FALSE(iconHasDetail(tree->topLevelItem(0)->child(0)->icon(0))) << "a blank before it renders";
+
+    window.resize(900, 700);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    ASSERT_TRUE(waitFor([&] { return panel.hasThumbnail(*model.cell(0)); }, 60000));
+    EXPECT_TRUE(iconHasDetail(tree->topLevelItem(0)->child(0)->icon(0))) << "the design's thumbnail";
+    ASSERT_TRUE(waitFor([&] { return service.idle(); }, 60000));
 }
 
 } // namespace
