@@ -43,9 +43,7 @@ public:
                     BakeSettings settings;
                     settings.textureSize = textureSize;
                     const BakedTexture baked = bakeTexture(genome, data, settings, &control);
-                    const std::string name = genome.meta.contains("name") && genome.meta["name"].is_string()
-                                                 ? genome.meta["name"].get<std::string>()
-                                                 : std::string("marbled");
+                    const std::string name = genome.meta.name.value_or("marbled");
                     writeTexturedMesh(data, baked.image, file.toStdString(), name);
                 } catch (const Cancelled&) {
                 } catch (const std::exception& e) {

@@ -199,9 +199,7 @@ Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& repl
     // Of the parents' family when they have one (the first parent that does), else free.
     const Family* family = nullptr;
     for (const Genome& parent : request.parents)
-        if (!family && parent.meta.is_object() && parent.meta.contains("family") &&
-            parent.meta["family"].is_string())
-            family = findFamily(parent.meta["family"].get<std::string>());
+        if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
     const int dimension = request.parents.front().dimension;
     if (family && family->dimension != dimension) family = nullptr;
     std::set<std::string> taken;
@@ -216,22 +214,19 @@ Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& repl
     }
     // The wildcard takes the cell's place in the lineage: its name, generation and number, and
     // an operator of its own so the tree and tooltips can say what it is.
-    nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
-    lineage["operator"] = "wildcard";
-    lineage["seed"] = seed;
-    if (replaced.meta.contains("lineage") && replaced.meta["lineage"].is_object()) {
-        const auto& was = replaced.meta["lineage"];
-        if (was.contains("child")) lineage["child"] = was["child"];
-        if (was.contains("generation")) lineage["generation"] = was["generation"];
+    MetaLineage lineage;
+    lineage.op = "wildcard";
+    lineage.seed = seed;
+    if (replaced.meta.lineage) {
+        lineage.child = replaced.meta.lineage->child;
+        lineage.generation = replaced.meta.lineage->generation;
     }
-    g.meta["lineage"] = lineage;
-    if (lineage.contains("generation") && lineage.contains("child") && g.meta.contains("name") &&
-        g.meta["name"].is_string())
-        g.meta["name"] = g.meta["name"].get<std::string>() + " (g" + lineage["generation"].dump() + " #" +
-                         std::to_string(request.childNumbers.empty() ? lineage["child"].get<int>()
-                                                                     : request.childNumbers.back()) +
-                         ")";
-    g.meta["id"] = genomeId(g);
+    g.meta.lineage = lineage;
+    if (lineage.generation && lineage.child && g.meta.name)
+        g.meta.name =
+            *g.meta.name + " (g" + std::to_string(*lineage.generation) + " #" +
+            std::to_string(request.childNumbers.empty() ? *lineage.child : request.childNumbers.back()) + ")";
+    g.meta.id = genomeId(g);
     return g;
 }
 
@@ -272,7 +267,7 @@ void PopulationModel::newRandomPopulation(int dimension, const std::string& fami
             const Family* source = sources[std::size_t(i) % sources.size()];
             Genome g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
             if (!taken.insert(genomeId(g)).second && draw < 1000) continue;
-            if (!g.meta.contains("seed")) g.meta["seed"] = seed;
+            if (!g.meta.seed) g.meta.seed = seed;
             next.cells[std::size_t(i)] = std::move(g);
             break;
         }
@@ -605,27 +600,19 @@ QString LineageInfo::madeBy() const {
 
 LineageInfo lineageOf(const Genome& genome) {
     LineageInfo info;
-    const auto& meta = genome.meta;
-    if (meta.contains("id") && meta["id"].is_string())
-        info.id = QString::fromStdString(meta["id"].get<std::string>());
-    else
-        info.id = QString::fromStdString(genomeId(genome));
-    if (meta.contains("name") && meta["name"].is_string())
-        info.name = QString::fromStdString(meta["name"].get<std::string>());
-    if (meta.contains("family") && meta["family"].is_string())
-        info.family = QString::fromStdString(meta["family"].get<std::string>());
-    if (meta.contains("lineage") && meta["lineage"].is_object()) {
-        const auto& lineage = meta["lineage"];
-        if (lineage.contains("operator") && lineage["operator"].is_string())
-            info.op = QString::fromStdString(lineage["operator"].get<std::string>());
-        if (lineage.contains("parents") && lineage["parents"].is_array())
-            for (const auto& p : lineage["parents"])
-                if (p.is_string()) info.parents << QString::fromStdString(p.get<std::string>());
-        if (lineage.contains("generation") && lineage["generation"].is_number_integer())
-            info.generation = lineage["generation"].get<int>();
-        info.varied = lineage.contains("variation") && lineage["variation"].is_object();
-        if (lineage.contains("change") && lineage["change"].is_string())
-            info.change = QString::fromStdString(lineage["change"].get<std::string>());
+    const Meta& meta = genome.meta;
+    info.id = QString::fromStdString(meta.id ? *meta.id : genomeId(genome));
+    if (meta.name) info.name = QString::fromStdString(*meta.name);
+    if (meta.family) info.family = QString::fromStdString(*meta.family);
+    if (meta.lineage) {
+        const MetaLineage& lineage = *meta.lineage;
+        if (lineage.op) info.op = QString::fromStdString(*lineage.op);
+        if (lineage.parents)
+            for (const std::string& p : *lineage.parents)
+                info.parents << QString::fromStdString(p);
+        if (lineage.generation) info.generation = *lineage.generation;
+        info.varied = lineage.variation.has_value();
+        if (lineage.change) info.change = QString::fromStdString(*lineage.change);
     }
     return info;
 }

@@ -47,7 +47,7 @@ TEST_F(WildcardTest, TheLastOffspringCellIsAFreshDesignOfTheParentsFamily) {
     EXPECT_NE(genomeId(wild), parentId);
     // Not an alteration of the parent: a nonpareil drawn from a seed of its own.
     const Genome drawn =
-        familyGenome(*findFamily("nonpareil"), wild.meta["lineage"]["seed"].get<std::uint64_t>());
+        familyGenome(*findFamily("nonpareil"), wild.meta.toJson()["lineage"]["seed"].get<std::uint64_t>());
     EXPECT_EQ(genomeId(drawn), genomeId(wild));
 }
 
@@ -86,7 +86,7 @@ TEST(WildcardModel, WithoutAFamilyAFreeDesignSeededByTheGeneration) {
     };
     const Genome wild = breedFromFree(7);
     EXPECT_EQ(lineageOf(wild).op, QStringLiteral("wildcard"));
-    EXPECT_FALSE(wild.meta.contains("family"));
+    EXPECT_FALSE(wild.meta.toJson().contains("family"));
     EXPECT_EQ(wild.dimension, 3);
     EXPECT_NO_THROW(validateGenome(wild, "wildcard"));
     // The same session breeds the same wildcard; another session another one.
