@@ -76,7 +76,7 @@ TEST(WildcardModel, WithoutAFamilyAFreeDesignSeededByTheGeneration) {
         model.newRandomPopulation(3); // mixed: one cell is drawn by the free generator
         int free = -1;
         for (int i = 0; i < CellCount; ++i)
-            if (!model.cell(i)->meta.contains("family")) free = i;
+            if (!model.cell(i)->meta.toJson().contains("family")) free = i;
         EXPECT_GE(free, 0);
         model.setSelected(free, true);
         model.apply(GeneticOperator::Reinit, 0.5);
