@@ -223,7 +223,9 @@ const char* keyName(MetaKey key) {
     return "";
 }
 
-/// Every field as this code writes it, in the order of writeMeta's keys set since reading.
+/// Every field as this code writes it, in the order Marbler has always set them: the
+/// generators' name, seed, generator, family and paper, a child's lineage and id, then the
+/// editor's and the window's notes; unknown keys last.
 Json written(const Meta& m) {
     Json out = Json::object();
     put(out, "name", m.name);
@@ -305,6 +307,10 @@ nlohmann::ordered_json Meta::toJson() const {
 bool Meta::empty() const {
     using namespace metaio;
     return written(*this).empty();
+}
+
+bool Meta::has(MetaKey key) const {
+    return metaio::written(*this).contains(metaio::keyName(key));
 }
 
 void Meta::erase(MetaKey key) {

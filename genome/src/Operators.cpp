@@ -367,7 +367,7 @@ Genome alterGenome(const Genome& parent, double strength, Pcg32& rng) {
     Genome child = parent;
     if (strength == 0.0) return child; // exactly the parent, not a renormalised copy
     Locks locks = locksOf(parent);
-    const bool relative = strength < FamilyKeepStrength && child.meta.family.has_value();
+    const bool relative = strength < FamilyKeepStrength && child.meta.has(MetaKey::Family);
     if (!locks.operations) {
         for (Operation& op : child.operations)
             perturb(op, child, strength, rng, relative);

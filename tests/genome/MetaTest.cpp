@@ -141,6 +141,9 @@ TEST(Meta, WrongTypesReadAsAbsentAndAreKeptAsTheyWere) {
     ASSERT_TRUE(m.locks);
     EXPECT_FALSE(m.locks->palette || m.locks->initial || m.locks->operations);
     EXPECT_EQ(m.toJson().dump(), text);
+    // Still there for a reader that asks only whether a key is (alterGenome and a family).
+    EXPECT_TRUE(m.has(MetaKey::Family) && m.has(MetaKey::Editor));
+    EXPECT_FALSE(Meta{}.has(MetaKey::Family));
     // Not an object at all: lineage, view, locks, a whole meta.
     const Meta flat = Meta::fromJson(Json::parse(R"({"lineage":[1],"view":2,"locks":"all"})"));
     EXPECT_FALSE(flat.lineage || flat.view || flat.locks);

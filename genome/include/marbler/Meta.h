@@ -89,6 +89,8 @@ public:
     nlohmann::ordered_json toJson() const;
     /// Whether there is nothing to write.
     bool empty() const;
+    /// Whether the key is there at all, readable or not.
+    bool has(MetaKey key) const;
     /// Removes a key as from a JSON object: its field, any unreadable value kept for it in
     /// `other`, and its place (set again, it comes after the keys there are). Setting a field
     /// needs no erase: a value set is written in the key's place, over an unreadable one.
