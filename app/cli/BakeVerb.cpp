@@ -117,10 +117,7 @@ int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& ou
     };
     const BakedTexture baked = bakeTexture(genome, mesh, settings, &control);
     progress.finish();
-    std::string name =
-        genome.meta.is_object() && genome.meta.contains("name") && genome.meta["name"].is_string()
-            ? genome.meta["name"].get<std::string>()
-            : std::string("marbled");
+    std::string name = genome.meta.name.value_or("marbled");
     writeTexturedMesh(mesh, baked.image, outFile, name);
     return ExitOk;
 }

@@ -186,7 +186,7 @@ int runBreed(std::span<const std::string> words) {
         }
         for (std::size_t i = 0; i < children.size(); ++i)
             std::cout << (dir / childName(static_cast<int>(i) + 1)).string() << "  "
-                      << children[i].meta.value("name", std::string()) << '\n';
+                      << children[i].meta.name.value_or("") << '\n';
         return ExitOk;
     });
 }

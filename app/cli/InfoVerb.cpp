@@ -99,8 +99,7 @@ int runInfo(std::span<const std::string> words) {
             else
                 out << "source:     " << image << '\n';
         }
-        if (auto name = genome.meta.find("name"); name != genome.meta.end() && name->is_string())
-            out << "name:       " << name->get<std::string>() << '\n';
+        if (genome.meta.name) out << "name:       " << *genome.meta.name << '\n';
         std::cout << out.str();
         return ExitOk;
     });

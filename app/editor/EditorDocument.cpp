@@ -158,7 +158,10 @@ EditorState unpack(Genome design) {
     EditorState s{std::move(design), {}};
     s.muted.assign(s.design.initial.size() + s.design.operations.size(), false);
     auto& meta = s.design.meta;
-    if (!meta.is_object() || !meta.contains("editor")) return s;
+    if (!meta.editor) {
+        meta.erase(MetaKey::Editor); // one that is not an object holds no muted steps
+        return s;
+    }
 
     struct Entry {
         std::size_t step;
@@ -166,9 +169,8 @@ EditorState unpack(Genome design) {
         Operation op;
     };
     std::vector<Entry> entries;
-    const auto& editor = meta["editor"];
-    if (editor.is_object() && editor.contains("muted")) {
-        const auto& muted = editor["muted"];
+    if (meta.editor->muted) {
+        const auto& muted = *meta.editor->muted;
         if (!muted.is_array())
             qWarning("meta.editor.muted is not a list: muted steps left out");
         else
@@ -190,7 +192,7 @@ EditorState unpack(Genome design) {
                 }
             }
     }
-    meta.erase("editor");
+    meta.erase(MetaKey::Editor);
     // In the order of their steps, each goes where it was: the ones before it are in place.
     std::stable_sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
         return a.initial != b.initial ? a.initial : a.step < b.step;
@@ -333,10 +335,7 @@ Genome EditorDocument::fileGenome() const {
         entry["operation"] = stepJson(mDesign, step(i), initial);
         muted.push_back(std::move(entry));
     }
-    if (!muted.empty()) {
-        if (!g.meta.is_object()) g.meta = nlohmann::ordered_json::object();
-        g.meta["editor"] = nlohmann::ordered_json{{"muted", std::move(muted)}};
-    }
+    if (!muted.empty()) g.meta.editor = MetaEditor{std::move(muted), {}};
     return g;
 }
 

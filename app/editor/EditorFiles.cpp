@@ -325,7 +325,7 @@ void EditorFiles::startFromSourceImage() {
     g.source = SourceImage{info.absoluteFilePath().toStdString()};
     g.baseDirectory = info.absolutePath().toStdString();
     g.allowExternalSource = true;
-    g.meta["name"] = info.completeBaseName().toStdString();
+    g.meta.name = info.completeBaseName().toStdString();
     emit openEditorRequested(g, {});
 }
 

@@ -71,7 +71,7 @@ Genome blankDesign(int dimension) {
     Genome g;
     g.dimension = dimension == 3 ? 3 : 2;
     g.palette = {Color{0x1f, 0x4e, 0x79}, Color{0xc8, 0x55, 0x3d}, Color{0x2a, 0x9d, 0x8f}};
-    g.meta["name"] = dimension == 3 ? "Untitled solid" : "Untitled design";
+    g.meta.name = dimension == 3 ? "Untitled solid" : "Untitled design";
     return g;
 }
 

@@ -29,9 +29,7 @@ void startBake(QPushButton* button, Genome genome, QString mesh, QString file, i
             BakeSettings settings;
             settings.textureSize = textureSize;
             const BakedTexture baked = bakeTexture(genome, data, settings, &control);
-            const std::string name = genome.meta.contains("name") && genome.meta["name"].is_string()
-                                         ? genome.meta["name"].get<std::string>()
-                                         : std::string("marbled");
+            const std::string name = genome.meta.name.value_or("marbled");
             writeTexturedMesh(data, baked.image, file.toStdString(), name);
         },
         [button, file, written = std::move(written)](const JobOutcome& outcome) {

@@ -45,27 +45,19 @@ QString LineageInfo::madeBy() const {
 
 LineageInfo lineageOf(const Genome& genome) {
     LineageInfo info;
-    const auto& meta = genome.meta;
-    if (meta.contains("id") && meta["id"].is_string())
-        info.id = QString::fromStdString(meta["id"].get<std::string>());
-    else
-        info.id = QString::fromStdString(genomeId(genome));
-    if (meta.contains("name") && meta["name"].is_string())
-        info.name = QString::fromStdString(meta["name"].get<std::string>());
-    if (meta.contains("family") && meta["family"].is_string())
-        info.family = QString::fromStdString(meta["family"].get<std::string>());
-    if (meta.contains("lineage") && meta["lineage"].is_object()) {
-        const auto& lineage = meta["lineage"];
-        if (lineage.contains("operator") && lineage["operator"].is_string())
-            info.op = QString::fromStdString(lineage["operator"].get<std::string>());
-        if (lineage.contains("parents") && lineage["parents"].is_array())
-            for (const auto& p : lineage["parents"])
-                if (p.is_string()) info.parents << QString::fromStdString(p.get<std::string>());
-        if (lineage.contains("generation") && lineage["generation"].is_number_integer())
-            info.generation = lineage["generation"].get<int>();
-        info.varied = lineage.contains("variation") && lineage["variation"].is_object();
-        if (lineage.contains("change") && lineage["change"].is_string())
-            info.change = QString::fromStdString(lineage["change"].get<std::string>());
+    const Meta& meta = genome.meta;
+    info.id = QString::fromStdString(meta.id ? *meta.id : genomeId(genome));
+    if (meta.name) info.name = QString::fromStdString(*meta.name);
+    if (meta.family) info.family = QString::fromStdString(*meta.family);
+    if (meta.lineage) {
+        const MetaLineage& lineage = *meta.lineage;
+        if (lineage.op) info.op = QString::fromStdString(*lineage.op);
+        if (lineage.parents)
+            for (const std::string& p : *lineage.parents)
+                info.parents << QString::fromStdString(p);
+        if (lineage.generation) info.generation = *lineage.generation;
+        info.varied = lineage.variation.has_value();
+        if (lineage.change) info.change = QString::fromStdString(*lineage.change);
     }
     return info;
 }

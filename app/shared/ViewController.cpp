@@ -13,25 +13,15 @@ ViewAngle ViewAngle::dragged(double dx, double dy) const {
 
 ViewAngle viewAngleOf(const Genome& genome) {
     ViewAngle angle;
-    if (!genome.meta.is_object()) return angle;
-    auto it = genome.meta.find("view");
-    if (it == genome.meta.end() || !it->is_object()) return angle;
-    auto number = [&](const char* key, double& out) {
-        auto f = it->find(key);
-        if (f != it->end() && f->is_number() && std::isfinite(f->get<double>())) out = f->get<double>();
-    };
-    number("yaw", angle.yaw);
-    number("pitch", angle.pitch);
+    if (!genome.meta.view) return angle;
+    angle.yaw = genome.meta.view->yaw.value_or(angle.yaw);
+    angle.pitch = genome.meta.view->pitch.value_or(angle.pitch);
     angle.pitch = std::clamp(angle.pitch, -89.0, 89.0);
     return angle;
 }
 
 void setViewAngle(Genome& genome, const ViewAngle& angle) {
-    if (!genome.meta.is_object()) genome.meta = nlohmann::ordered_json::object();
-    nlohmann::ordered_json value = nlohmann::ordered_json::object();
-    value["yaw"] = angle.yaw;
-    value["pitch"] = angle.pitch;
-    genome.meta["view"] = value;
+    genome.meta.view = MetaView{angle.yaw, angle.pitch, {}};
 }
 
 void ViewController::setDesignSize(double width, double height) {

@@ -199,9 +199,7 @@ Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& repl
     // Of the parents' family when they have one (the first parent that does), else free.
     const Family* family = nullptr;
     for (const Genome& parent : request.parents)
-        if (!family && parent.meta.is_object() && parent.meta.contains("family") &&
-            parent.meta["family"].is_string())
-            family = findFamily(parent.meta["family"].get<std::string>());
+        if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
     const int dimension = request.parents.front().dimension;
     if (family && family->dimension != dimension) family = nullptr;
     std::set<std::string> taken;
@@ -216,22 +214,19 @@ Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& repl
     }
     // The wildcard takes the cell's place in the lineage: its name, generation and number, and
     // an operator of its own so the tree and tooltips can say what it is.
-    nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
-    lineage["operator"] = "wildcard";
-    lineage["seed"] = seed;
-    if (replaced.meta.contains("lineage") && replaced.meta["lineage"].is_object()) {
-        const auto& was = replaced.meta["lineage"];
-        if (was.contains("child")) lineage["child"] = was["child"];
-        if (was.contains("generation")) lineage["generation"] = was["generation"];
+    MetaLineage lineage;
+    lineage.op = "wildcard";
+    lineage.seed = seed;
+    if (replaced.meta.lineage) {
+        lineage.child = replaced.meta.lineage->child;
+        lineage.generation = replaced.meta.lineage->generation;
     }
-    g.meta["lineage"] = lineage;
-    if (lineage.contains("generation") && lineage.contains("child") && g.meta.contains("name") &&
-        g.meta["name"].is_string())
-        g.meta["name"] = g.meta["name"].get<std::string>() + " (g" + lineage["generation"].dump() + " #" +
-                         std::to_string(request.childNumbers.empty() ? lineage["child"].get<int>()
-                                                                     : request.childNumbers.back()) +
-                         ")";
-    g.meta["id"] = genomeId(g);
+    g.meta.lineage = lineage;
+    if (lineage.generation && lineage.child && g.meta.name)
+        g.meta.name =
+            *g.meta.name + " (g" + std::to_string(*lineage.generation) + " #" +
+            std::to_string(request.childNumbers.empty() ? *lineage.child : request.childNumbers.back()) + ")";
+    g.meta.id = genomeId(g);
     return g;
 }
 
@@ -272,7 +267,7 @@ void PopulationModel::newRandomPopulation(int dimension, const std::string& fami
             const Family* source = sources[std::size_t(i) % sources.size()];
             Genome g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
             if (!taken.insert(genomeId(g)).second && draw < 1000) continue;
-            if (!g.meta.contains("seed")) g.meta["seed"] = seed;
+            if (!g.meta.seed) g.meta.seed = seed;
             next.cells[std::size_t(i)] = std::move(g);
             break;
         }

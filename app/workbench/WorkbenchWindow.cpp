@@ -817,7 +817,7 @@ bool WorkbenchWindow::copyDesign(int cell) {
 
 std::vector<int> WorkbenchWindow::newPaper(std::uint64_t seed) {
     const Genome paper = paperGenome(seed, PaperOptions{});
-    const QString name = QString::fromStdString(paper.meta.value("name", std::string()));
+    const QString name = QString::fromStdString(paper.meta.name.value_or(""));
     return placeOpened({paper}, {name}, -1, tr("Marbled paper %1 (seed %2)").arg(name).arg(seed));
 }
 

@@ -165,7 +165,7 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
         throw InputError("strength must be between 0 and 1 (got " + std::to_string(request.strength) + ")");
     if (!request.childNumbers.empty() && static_cast<int>(request.childNumbers.size()) != request.count)
         throw InputError("childNumbers must hold one number per child");
-    nlohmann::ordered_json parentIds = nlohmann::ordered_json::array();
+    std::vector<std::string> parentIds;
     std::set<std::string> taken;
     int generation = 0;
     for (std::size_t p = 0; p < request.parents.size(); ++p) {
@@ -199,18 +199,17 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
         const Genome& homeParent = request.parents[home];
         const int number =
             request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
-        nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
-        lineage["parents"] = parentIds;
-        lineage["operator"] = ColourwayOperator;
-        lineage["seed"] = request.seed;
-        lineage["child"] = i + 1;
-        if (!request.mix) lineage["strength"] = request.strength;
-        lineage["generation"] = generation;
-        const nlohmann::ordered_json meta = childMeta(homeParent, generation, number, std::move(lineage));
-        child.meta = meta;
+        MetaLineage lineage;
+        lineage.parents = parentIds;
+        lineage.op = ColourwayOperator;
+        lineage.seed = request.seed;
+        lineage.child = i + 1;
+        if (!request.mix) lineage.strength = request.strength;
+        lineage.generation = generation;
+        child.meta = childMeta(homeParent, generation, number, std::move(lineage));
         // What changed, in words, as every bred child says (ChangeSummary.h): inks and ground only.
-        child.meta["lineage"]["change"] = describeChange(homeParent, child);
-        child.meta["id"] = genomeId(child);
+        child.meta.lineage->change = describeChange(homeParent, child);
+        child.meta.id = genomeId(child);
         try {
             validateGenome(child, "colourway " + std::to_string(i + 1));
         } catch (const GenomeError& e) {

@@ -5,6 +5,8 @@
 #include "marbler/Random.h"
 #include "marbler/Tools.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -520,11 +522,11 @@ Genome familyGenome(const Family& family, std::uint64_t seed) {
     // Stay within the format's limits whatever the draw.
     if (g.initial.size() + g.operations.size() > MaxEntries)
         g.initial.resize(MaxEntries - g.operations.size());
-    g.meta = nlohmann::ordered_json::object();
-    g.meta["name"] = randomName(seed, g);
-    g.meta["seed"] = seed;
-    g.meta["generator"] = FamiliesVersion;
-    g.meta["family"] = std::string(recipe->family.name);
+    g.meta = Meta{};
+    g.meta.name = randomName(seed, g);
+    g.meta.seed = seed;
+    g.meta.generator = FamiliesVersion;
+    g.meta.family = std::string(recipe->family.name);
     return g;
 }
 

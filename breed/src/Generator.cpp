@@ -675,10 +675,10 @@ Genome randomGenome(std::uint64_t seed, int dimension) {
         Pcg32 version2Rng(seed, Version2Stream);
         addVersion2Touches(version2Rng, g);
     }
-    g.meta = nlohmann::ordered_json::object();
-    g.meta["name"] = randomName(seed, g);
-    g.meta["seed"] = seed;
-    g.meta["generator"] = GeneratorVersion;
+    g.meta = Meta{};
+    g.meta.name = randomName(seed, g);
+    g.meta.seed = seed;
+    g.meta.generator = GeneratorVersion;
     return g;
 }
 

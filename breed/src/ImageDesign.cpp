@@ -92,9 +92,9 @@ Genome imageDesign(std::uint64_t seed, const std::string& image, double aspect, 
         g.operations = strokes;
         g.operations.push_back(flow);
     }
-    g.meta = nlohmann::ordered_json::object();
-    g.meta["name"] = name;
-    g.meta["seed"] = seed;
+    g.meta = Meta{};
+    g.meta.name = name;
+    g.meta.seed = seed;
     return g;
 }
 

@@ -203,23 +203,13 @@ void capEntries(Genome& g) {
 }
 
 int generationOf(const Genome& g) {
-    const auto& meta = g.meta;
-    if (!meta.is_object()) return 0;
-    auto lineage = meta.find("lineage");
-    if (lineage == meta.end() || !lineage->is_object()) return 0;
-    auto gen = lineage->find("generation");
-    if (gen == lineage->end() || !gen->is_number_integer()) return 0;
-    return std::max(0, gen->get<int>());
+    if (!g.meta.lineage || !g.meta.lineage->generation) return 0;
+    return std::max(0, *g.meta.lineage->generation);
 }
 
 /// The home parent's name without an earlier child suffix " (gN #K)".
 std::string rootName(const Genome& g) {
-    std::string name = "Untitled";
-    if (g.meta.is_object()) {
-        auto it = g.meta.find("name");
-        if (it != g.meta.end() && it->is_string() && !it->get<std::string>().empty())
-            name = it->get<std::string>();
-    }
+    std::string name = g.meta.name && !g.meta.name->empty() ? *g.meta.name : "Untitled";
     if (auto pos = name.rfind(" (g"); pos != std::string::npos && name.back() == ')') name.erase(pos);
     return name;
 }
@@ -332,45 +322,30 @@ int maxParents(GeneticOperator op) {
 
 Locks locksOf(const Genome& genome) {
     Locks locks;
-    if (!genome.meta.is_object()) return locks;
-    auto it = genome.meta.find("locks");
-    if (it == genome.meta.end() || !it->is_object()) return locks;
-    auto flag = [&](const char* key) {
-        auto f = it->find(key);
-        return f != it->end() && f->is_boolean() && f->get<bool>();
-    };
-    locks.palette = flag("palette");
-    locks.initial = flag("initial");
-    locks.operations = flag("operations");
+    if (!genome.meta.locks) return locks;
+    const MetaLocks& kept = *genome.meta.locks;
+    locks.palette = kept.palette.value_or(false);
+    locks.initial = kept.initial.value_or(false);
+    locks.operations = kept.operations.value_or(false);
     return locks;
 }
 
 void setLocks(Genome& genome, const Locks& locks) {
-    if (!genome.meta.is_object()) genome.meta = nlohmann::ordered_json::object();
     if (locks == Locks{}) {
-        genome.meta.erase("locks");
+        genome.meta.erase(MetaKey::Locks);
         return;
     }
-    nlohmann::ordered_json value = nlohmann::ordered_json::object();
-    value["palette"] = locks.palette;
-    value["initial"] = locks.initial;
-    value["operations"] = locks.operations;
-    genome.meta["locks"] = value;
+    genome.meta.locks = MetaLocks{locks.palette, locks.initial, locks.operations, {}};
 }
 
 int lineageGeneration(const Genome& genome) {
     return generationOf(genome);
 }
 
-nlohmann::ordered_json childMeta(const Genome& home, int generation, int number,
-                                 nlohmann::ordered_json lineage) {
-    nlohmann::ordered_json meta = nlohmann::ordered_json::object();
-    meta["name"] = rootName(home) + " (g" + std::to_string(generation) + " #" + std::to_string(number) + ")";
-    if (home.meta.is_object())
-        for (const auto& [key, value] : home.meta.items())
-            if (key != "name" && key != "seed" && key != "generator" && key != "id" && key != "lineage")
-                meta[key] = value;
-    meta["lineage"] = std::move(lineage);
+Meta childMeta(const Genome& home, int generation, int number, MetaLineage lineage) {
+    Meta meta = home.meta.keptByChild();
+    meta.name = rootName(home) + " (g" + std::to_string(generation) + " #" + std::to_string(number) + ")";
+    meta.lineage = std::move(lineage);
     return meta;
 }
 
@@ -392,8 +367,7 @@ Genome alterGenome(const Genome& parent, double strength, Pcg32& rng) {
     Genome child = parent;
     if (strength == 0.0) return child; // exactly the parent, not a renormalised copy
     Locks locks = locksOf(parent);
-    const bool relative =
-        strength < FamilyKeepStrength && child.meta.is_object() && child.meta.contains("family");
+    const bool relative = strength < FamilyKeepStrength && child.meta.has(MetaKey::Family);
     if (!locks.operations) {
         for (Operation& op : child.operations)
             perturb(op, child, strength, rng, relative);
@@ -533,7 +507,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
     if (!request.childNumbers.empty() && static_cast<int>(request.childNumbers.size()) != request.count)
         throw InputError("childNumbers must hold one number per child");
 
-    nlohmann::ordered_json parentIds = nlohmann::ordered_json::array();
+    std::vector<std::string> parentIds;
     // The designs already in the generation: no child may repeat one (the window keeps the
     // parents beside their children).
     std::set<std::string> taken;
@@ -581,7 +555,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
                             (op == GeneticOperator::Alter && request.strength > 0.0);
         // One draw, and what the operator does when it repeats a design already in the generation.
         // `variedFrom` keeps the repeated design, which a varied child's change is told against.
-        const auto candidate = [&](std::optional<nlohmann::ordered_json>& variation,
+        const auto candidate = [&](std::optional<MetaVariation>& variation,
                                    std::optional<Genome>& variedFrom) {
             Genome child = draw();
             for (int attempt = 0; random && taken.count(genomeId(child)) && attempt < 16; ++attempt)
@@ -597,15 +571,13 @@ std::vector<Genome> breed(const BreedRequest& request) {
                     if (!taken.count(genomeId(child))) break;
                 }
                 if (genomeId(child) != genomeId(repeated)) {
-                    variation = nlohmann::ordered_json::object();
-                    (*variation)["of"] = genomeId(repeated);
-                    (*variation)["strength"] = strength;
+                    variation = MetaVariation{genomeId(repeated), strength, {}};
                     variedFrom = repeated;
                 }
             }
             return child;
         };
-        std::optional<nlohmann::ordered_json> variation;
+        std::optional<MetaVariation> variation;
         std::optional<Genome> variedFrom;
         Genome child = candidate(variation, variedFrom);
         int redraws = 0;
@@ -622,7 +594,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
             Glimpse look = glimpseOf(child);
             Verdict verdict = judge(look);
             for (int attempt = 1; attempt <= ChildRedraws && !verdict.passes(); ++attempt) {
-                std::optional<nlohmann::ordered_json> againVariation;
+                std::optional<MetaVariation> againVariation;
                 std::optional<Genome> againVariedFrom;
                 Genome again = candidate(againVariation, againVariedFrom);
                 Glimpse againLook = glimpseOf(again);
@@ -643,21 +615,19 @@ std::vector<Genome> breed(const BreedRequest& request) {
         const Genome& homeParent = request.parents[home];
         const int number =
             request.childNumbers.empty() ? i + 1 : request.childNumbers[static_cast<std::size_t>(i)];
-        nlohmann::ordered_json lineage = nlohmann::ordered_json::object();
-        lineage["parents"] = parentIds;
-        lineage["operator"] = name;
-        lineage["seed"] = request.seed;
-        lineage["child"] = i + 1;
-        if (op == GeneticOperator::Alter) lineage["strength"] = request.strength;
-        if (variation) lineage["variation"] = *variation;
-        if (redraws > 0) lineage["redraws"] = redraws;
-        lineage["generation"] = generation;
-        const nlohmann::ordered_json meta = childMeta(homeParent, generation, number, std::move(lineage));
-        child.meta = meta;
-        child.meta["id"] = genomeId(child);
-        child.meta["lineage"]["change"] = variedFrom
-                                              ? describeVariation(request, children, *variedFrom, child)
-                                              : describeChange(request.parents, home, child);
+        MetaLineage lineage;
+        lineage.parents = parentIds;
+        lineage.op = name;
+        lineage.seed = request.seed;
+        lineage.child = i + 1;
+        if (op == GeneticOperator::Alter) lineage.strength = request.strength;
+        lineage.variation = variation;
+        if (redraws > 0) lineage.redraws = redraws;
+        lineage.generation = generation;
+        child.meta = childMeta(homeParent, generation, number, std::move(lineage));
+        child.meta.id = genomeId(child);
+        child.meta.lineage->change = variedFrom ? describeVariation(request, children, *variedFrom, child)
+                                                : describeChange(request.parents, home, child);
 
         try {
             validateGenome(child, "child " + std::to_string(i + 1));

@@ -224,9 +224,9 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     }
     g.bleed = hundredth(spacing / 80.0);
 
-    g.meta["name"] = randomName(seed, g);
-    g.meta["seed"] = seed;
-    g.meta["generator"] = PaperGeneratorVersion;
+    g.meta.name = randomName(seed, g);
+    g.meta.seed = seed;
+    g.meta.generator = PaperGeneratorVersion;
     nlohmann::ordered_json paper = nlohmann::ordered_json::object();
     paper["size"] = {w, h};
     paper["unit"] = "mm";
@@ -234,7 +234,7 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     paper["passes"] = options.passes;
     paper["pastel"] = options.pastel;
     paper["spacing"] = spacing;
-    g.meta["paper"] = paper;
+    g.meta.paper = paper;
     return g;
 }
 

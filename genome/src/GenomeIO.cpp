@@ -260,7 +260,7 @@ public:
         }
         if (auto it = root.find("meta"); it != root.end()) {
             if (!it->is_object()) fail("meta", "must be an object (got " + describe(*it) + ")");
-            genome.meta = *it;
+            genome.meta = Meta::fromJson(*it);
         }
         static constexpr std::array Known{"format",     "version", "dimension", "size",
                                           "background", "palette", "initial",   "operations",
@@ -649,8 +649,7 @@ void validateGenome(const Genome& genome, const std::string& name) {
         throw GenomeError(name, "bleed", "must be finite (got " + formatNumber(genome.bleed) + ")");
     if (!(genome.bleed >= 0.0))
         throw GenomeError(name, "bleed", "must be >= 0 (got " + formatNumber(genome.bleed) + ")");
-    if (!genome.meta.is_object()) throw GenomeError(name, "meta", "must be an object");
-    checkFreeForm(genome.meta, "meta", name, 1);
+    checkFreeForm(genome.meta.toJson(), "meta", name, 1);
 }
 
 Json toJson(const Genome& genome) {
@@ -677,7 +676,7 @@ Json toJson(const Genome& genome) {
     root["operations"] = std::move(operations);
     if (genome.source) root["source"] = Json{{"image", genome.source->image}};
     if (genome.bleed != 0.0) root["bleed"] = number(genome.bleed);
-    if (genome.meta.is_object() && !genome.meta.empty()) root["meta"] = genome.meta;
+    if (!genome.meta.empty()) root["meta"] = genome.meta.toJson();
     return root;
 }
 

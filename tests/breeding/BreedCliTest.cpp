@@ -111,9 +111,9 @@ TEST(BreedVerb, WritesReproducibleChildren) {
     for (const std::string& name : names) {
         EXPECT_EQ(test::readFile(out1 / name), test::readFile(out2 / name)) << name;
         Genome child = loadGenome(out1 / name);
-        EXPECT_EQ(child.meta["lineage"]["operator"], "alter");
-        EXPECT_EQ(child.meta["lineage"]["parents"][0], genomeId(parent));
-        EXPECT_EQ(child.meta["id"], genomeId(child));
+        EXPECT_EQ(child.meta.toJson()["lineage"]["operator"], "alter");
+        EXPECT_EQ(child.meta.toJson()["lineage"]["parents"][0], genomeId(parent));
+        EXPECT_EQ(child.meta.toJson()["id"], genomeId(child));
     }
     // The files are what the library breeds from the loaded parent.
     BreedRequest request;
@@ -181,8 +181,8 @@ TEST(BreedVerb, EveryOperatorWithCountAndStrength) {
         EXPECT_EQ(names.size(), c.count) << c.args[1];
         for (const std::string& name : names) {
             Genome child = loadGenome(out / name);
-            EXPECT_EQ(child.meta["lineage"]["operator"], c.args[1]);
-            EXPECT_EQ(child.meta["lineage"]["generation"], 1);
+            EXPECT_EQ(child.meta.toJson()["lineage"]["operator"], c.args[1]);
+            EXPECT_EQ(child.meta.toJson()["lineage"]["generation"], 1);
         }
     }
 }

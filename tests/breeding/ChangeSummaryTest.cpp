@@ -38,7 +38,7 @@ Genome base() {
 
 TEST(ChangeSummary, EqualDesignsShowNoChange) {
     Genome a = base(), b = base();
-    b.meta["name"] = "another name"; // meta is no part of the design
+    b.meta.name = "another name"; // meta is no part of the design
     EXPECT_EQ(describeChange(a, b), "no visible change");
 }
 
@@ -155,7 +155,7 @@ TEST(ChangeSummary, BredChildrenRecordTheirChange) {
     r.seed = 5;
     r.count = 4;
     for (const Genome& child : breed(r)) {
-        const std::string change = child.meta["lineage"]["change"].get<std::string>();
+        const std::string change = child.meta.toJson()["lineage"]["change"].get<std::string>();
         EXPECT_EQ(change, describeChange(parent, child));
         EXPECT_NE(change, "no visible change");
     }
@@ -165,7 +165,7 @@ TEST(ChangeSummary, BredChildrenRecordTheirChange) {
     r.parents = {parent, randomGenome(38, 2)};
     const std::vector<Genome> swapped = breed(r);
     for (std::size_t i = 0; i < 2; ++i) {
-        const std::string change = swapped[i].meta["lineage"]["change"].get<std::string>();
+        const std::string change = swapped[i].meta.toJson()["lineage"]["change"].get<std::string>();
         EXPECT_EQ(change, describeChange(r.parents, i, swapped[i])) << i;
         EXPECT_EQ(change.rfind("the strokes of parent " + std::to_string(2 - i), 0), 0u) << change;
     }
@@ -221,8 +221,8 @@ TEST(ChangeSummary, AVariedChildIsDescribedAgainstTheDesignItVaries) {
     const std::vector<Genome> children = breed(r);
     ASSERT_EQ(children.size(), 4u);
     for (std::size_t i = 2; i < 4; ++i) {
-        ASSERT_TRUE(children[i].meta["lineage"].contains("variation")) << i;
-        const std::string change = children[i].meta["lineage"]["change"].get<std::string>();
+        ASSERT_TRUE(children[i].meta.toJson()["lineage"].contains("variation")) << i;
+        const std::string change = children[i].meta.toJson()["lineage"]["change"].get<std::string>();
         EXPECT_EQ(change, "a variation of #" + std::to_string(i - 1) + ": " +
                               describeChange(children[i - 2], children[i]))
             << change;
@@ -233,8 +233,12 @@ TEST(ChangeSummary, AVariedChildIsDescribedAgainstTheDesignItVaries) {
     // The numbers the window gives its children name the varied one.
     r.childNumbers = {4, 5, 7, 8};
     const std::vector<Genome> numbered = breed(r);
-    EXPECT_EQ(numbered[2].meta["lineage"]["change"].get<std::string>().rfind("a variation of #4: ", 0), 0u);
-    EXPECT_EQ(numbered[3].meta["lineage"]["change"].get<std::string>().rfind("a variation of #5: ", 0), 0u);
+    EXPECT_EQ(
+        numbered[2].meta.toJson()["lineage"]["change"].get<std::string>().rfind("a variation of #4: ", 0),
+        0u);
+    EXPECT_EQ(
+        numbered[3].meta.toJson()["lineage"]["change"].get<std::string>().rfind("a variation of #5: ", 0),
+        0u);
 }
 
 } // namespace

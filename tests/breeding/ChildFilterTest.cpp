@@ -45,7 +45,7 @@ Genome edgeOfDull() {
 }
 
 int redrawsOf(const Genome& child) {
-    return child.meta["lineage"].value("redraws", 0);
+    return child.meta.toJson()["lineage"].value("redraws", 0);
 }
 
 bool dull(const Glimpse& look, const Glimpse& parent) {
@@ -155,7 +155,7 @@ TEST(ChildFilter, ChildrenThatPassAreNotRedrawnAndSwapIsNotFiltered) {
     const Genome a = randomGenome(21, 2), b = randomGenome(22, 2);
     // Clearly different designs pass at the first draw: reinit draws a whole new ground.
     for (const Genome& child : breed(request(GeneticOperator::Swap, {a, b}, 3, 6, 0.5)))
-        EXPECT_FALSE(child.meta["lineage"].contains("redraws"));
+        EXPECT_FALSE(child.meta.toJson()["lineage"].contains("redraws"));
     int redrawn = 0;
     for (const Genome& child : breed(request(GeneticOperator::Reinit, {a}, 3, 8, 0.5)))
         redrawn += redrawsOf(child) > 0;
@@ -198,7 +198,7 @@ TEST(FamilyCharacter, DesignsWithoutAFamilyAlterAsBefore) {
     int left = 0;
     for (std::uint64_t seed = 1; seed <= 6; ++seed) {
         Genome parent = familyGenome(*findFamily("nonpareil"), seed);
-        parent.meta.erase("family");
+        parent.meta.erase(MetaKey::Family);
         const double spacing = fineSpacing(parent);
         Pcg32 rng(seed, 3);
         for (int k = 0; k < 8; ++k) {

@@ -51,9 +51,9 @@ TEST(Colourways, KeepTheStructureExactlyAndChangeThePalette) {
                 ASSERT_EQ(c.palette.size(), design.palette.size());
                 EXPECT_NE(palettes(c), palettes(design));
                 EXPECT_NO_THROW(validateGenome(c, "colourway"));
-                EXPECT_EQ(c.meta["lineage"]["operator"], ColourwayOperator);
+                EXPECT_EQ(c.meta.toJson()["lineage"]["operator"], ColourwayOperator);
                 // It says what changed, and that is only colour.
-                const std::string change = c.meta["lineage"].value("change", "");
+                const std::string change = c.meta.toJson()["lineage"].value("change", "");
                 EXPECT_EQ(change, describeChange(design, c));
                 EXPECT_NE(change, "no visible change");
                 for (const char* stroke :
@@ -102,9 +102,9 @@ TEST(Colourways, AreVariedAndNeverRepeatADesign) {
             std::set<std::string> backgrounds;
             for (const Genome& c : colourways(request)) {
                 EXPECT_TRUE(seen.insert(genomeId(c)).second) << "a repeated design";
-                EXPECT_TRUE(
-                    sameStructure(c, request.parents[std::size_t(c.meta["lineage"]["child"].get<int>() - 1) %
-                                                     request.parents.size()]));
+                EXPECT_TRUE(sameStructure(
+                    c, request.parents[std::size_t(c.meta.toJson()["lineage"]["child"].get<int>() - 1) %
+                                       request.parents.size()]));
                 backgrounds.insert(palettes(c));
             }
             EXPECT_EQ(backgrounds.size(), 8u);

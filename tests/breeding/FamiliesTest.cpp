@@ -102,8 +102,8 @@ TEST(Families, EveryFamilyGivesValidDesignsReproducibleAndVaried) {
             const Genome g = familyGenome(f, seed);
             ASSERT_NO_THROW(validateGenome(g, std::string(f.name))) << f.name << " seed " << seed;
             EXPECT_EQ(g.dimension, f.dimension) << f.name;
-            EXPECT_EQ(g.meta.value("family", ""), f.name);
-            EXPECT_EQ(g.meta.value("seed", std::uint64_t{0}), seed);
+            EXPECT_EQ(g.meta.toJson().value("family", ""), f.name);
+            EXPECT_EQ(g.meta.toJson().value("seed", std::uint64_t{0}), seed);
             EXPECT_FALSE(g.initial.empty()) << f.name << ": every family lays a ground";
             EXPECT_EQ(familyGenome(f, seed), g) << f.name << ": the same seed, the same design";
             // Saved and read back exactly.
@@ -264,7 +264,7 @@ TEST(Families, BreedingKeepsTheFamily) {
     const Genome parent = make("peacock", 4);
     Pcg32 rng(9);
     const Genome child = alterGenome(parent, 0.5, rng);
-    EXPECT_EQ(child.meta.value("family", ""), "peacock");
+    EXPECT_EQ(child.meta.toJson().value("family", ""), "peacock");
 }
 
 TEST(FamiliesCli, ListsFamiliesAndWritesOne) {

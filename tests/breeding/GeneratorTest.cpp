@@ -90,7 +90,7 @@ TEST(Generator, DifferentSeedsGiveDifferentDesigns) {
             for (Color c : g.palette)
                 palette += toHex(c);
             palettes.insert(palette);
-            names.insert(g.meta["name"].get<std::string>());
+            names.insert(g.meta.toJson()["name"].get<std::string>());
         }
         EXPECT_EQ(texts.size(), 30u);
         EXPECT_EQ(palettes.size(), 30u);
@@ -142,9 +142,9 @@ TEST(Generator, ManySeedsAreValidAndShapedLikeMarbling) {
                 last += radii[radii.size() - 1 - i];
             }
             EXPECT_GT(first, last);
-            EXPECT_EQ(g.meta["seed"].get<std::uint64_t>(), seed);
-            EXPECT_EQ(g.meta["generator"], GeneratorVersion);
-            EXPECT_FALSE(g.meta["name"].get<std::string>().empty());
+            EXPECT_EQ(g.meta.toJson()["seed"].get<std::uint64_t>(), seed);
+            EXPECT_EQ(g.meta.toJson()["generator"], GeneratorVersion);
+            EXPECT_FALSE(g.meta.toJson()["name"].get<std::string>().empty());
         }
     }
 }
@@ -325,7 +325,7 @@ TEST(Generator, NamesComeFromThePalette) {
     for (int dimension : {2, 3})
         for (std::uint64_t seed = 0; seed < 60; ++seed) {
             Genome g = randomGenome(seed, dimension);
-            const std::string name = g.meta["name"];
+            const std::string name = g.meta.toJson()["name"];
             const std::string word = name.substr(0, name.find(' '));
             // The colour word of the ink that covers most of the design...
             const int ink = mainInk(g);

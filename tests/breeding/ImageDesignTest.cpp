@@ -37,7 +37,7 @@ TEST(ImageDesign, AValidVersion2DesignWithThePictureAsItsBathAndAFlow) {
         fields.insert(flow->field == FlowField::Cells ? "cells" : "cavity");
         EXPECT_GE(g.operations.size(), 2u) << "a flow and strokes of the craft";
         EXPECT_EQ(requiredVersion(g), 2);
-        EXPECT_EQ(g.meta.value("name", ""), "photo marbled");
+        EXPECT_EQ(g.meta.toJson().value("name", ""), "photo marbled");
         // Saved and read back: the same design.
         EXPECT_EQ(parseGenome(serializeGenome(g), "design"), g);
     }

@@ -81,12 +81,12 @@ TEST_P(Operators, SwapExchangesExactlyInitialStateAndOperations) {
         if (i < 2) {
             // The two swaps themselves.
             EXPECT_EQ(child.operations, other.operations) << i;
-            EXPECT_FALSE(child.meta["lineage"].contains("variation")) << i;
+            EXPECT_FALSE(child.meta.toJson()["lineage"].contains("variation")) << i;
         } else {
             // Then gentle variations of them, in turn: the other's tools, moved a little.
             EXPECT_EQ(toolsOf(child.operations), toolsOf(other.operations)) << i;
             EXPECT_NE(child.operations, other.operations) << i;
-            const auto& variation = child.meta["lineage"]["variation"];
+            const auto variation = child.meta.toJson()["lineage"]["variation"];
             ASSERT_TRUE(variation.is_object()) << i;
             EXPECT_EQ(variation["of"], genomeId(children[i % 2])) << i;
             EXPECT_GT(variation["strength"].get<double>(), 0.0) << i;
@@ -148,9 +148,9 @@ TEST_P(Operators, ChildrenCarryTheGenerationAndNumbersTheyAreGiven) {
     r.childNumbers = {2, 5, 9};
     std::vector<Genome> children = breed(r);
     for (std::size_t i = 0; i < children.size(); ++i) {
-        EXPECT_EQ(children[i].meta["lineage"]["generation"], 7);
-        EXPECT_EQ(children[i].meta["lineage"]["child"], int(i) + 1);
-        const std::string name = children[i].meta["name"];
+        EXPECT_EQ(children[i].meta.toJson()["lineage"]["generation"], 7);
+        EXPECT_EQ(children[i].meta.toJson()["lineage"]["child"], int(i) + 1);
+        const std::string name = children[i].meta.toJson()["name"];
         EXPECT_NE(name.find(" (g7 #" + std::to_string(r.childNumbers[i]) + ")"), std::string::npos) << name;
     }
     r.childNumbers = {1};
@@ -409,7 +409,7 @@ TEST_P(Operators, AlterWithStrengthZeroKeepsEveryParameter) {
     for (const Genome& child : breed(request(GeneticOperator::Alter, {p}, 9, 3, 0.0))) {
         EXPECT_EQ(toolsOf(child.operations), toolsOf(p.operations));
         EXPECT_NE(genomeId(child), genomeId(p));
-        EXPECT_EQ(child.meta["lineage"]["variation"]["of"], genomeId(p));
+        EXPECT_EQ(child.meta.toJson()["lineage"]["variation"]["of"], genomeId(p));
         EXPECT_LT(scaledDistance(p, child), 0.5);
     }
 }
@@ -572,10 +572,11 @@ TEST_P(Operators, SeedsReproduceAndChildrenAreIndependentOfCount) {
 
 TEST_P(Operators, LineageIsRecorded) {
     Genome a = parent(50), b = parent(51);
-    a.meta["lineage"] = {{"generation", 4}};
+    a.meta.lineage = MetaLineage{};
+    a.meta.lineage->generation = 4;
     std::vector<Genome> children = breed(request(GeneticOperator::Recombine, {a, b}, 77, 3));
     for (std::size_t i = 0; i < children.size(); ++i) {
-        const auto& meta = children[i].meta;
+        const auto meta = children[i].meta.toJson();
         ASSERT_TRUE(meta.contains("lineage"));
         const auto& lineage = meta["lineage"];
         EXPECT_EQ(lineage["parents"], (nlohmann::ordered_json{genomeId(a), genomeId(b)}));
@@ -589,8 +590,8 @@ TEST_P(Operators, LineageIsRecorded) {
     }
     // A child of a child: generation counts on, the name keeps one suffix.
     std::vector<Genome> grand = breed(request(GeneticOperator::Alter, {children[0]}, 1, 1));
-    EXPECT_EQ(grand[0].meta["lineage"]["generation"], 6);
-    std::string name = grand[0].meta["name"];
+    EXPECT_EQ(grand[0].meta.toJson()["lineage"]["generation"], 6);
+    std::string name = grand[0].meta.toJson()["name"];
     EXPECT_EQ(name.find(" (g"), name.rfind(" (g"));
 }
 
@@ -600,7 +601,7 @@ TEST_P(Operators, GenomeIdDependsOnContentOnly) {
     EXPECT_EQ(id.size(), 16u);
     EXPECT_EQ(id.find_first_not_of("0123456789abcdef"), std::string::npos);
     Genome renamed = a;
-    renamed.meta["name"] = "something else";
+    renamed.meta.name = "something else";
     EXPECT_EQ(genomeId(renamed), id);
     Genome moved = a;
     moved.initial[0].radius += 1.0;

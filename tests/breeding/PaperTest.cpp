@@ -46,8 +46,8 @@ TEST(PaperGenome, IsAValidVersion2GenomeThatRoundTrips) {
         EXPECT_EQ(toJson(g)["version"], 2); // stretch and bleed are version 2
         Genome back = parseGenome(text, "paper.marble.json");
         EXPECT_EQ(back, g);
-        EXPECT_EQ(g.meta["generator"], PaperGeneratorVersion);
-        EXPECT_EQ(g.meta["seed"], 7);
+        EXPECT_EQ(g.meta.toJson()["generator"], PaperGeneratorVersion);
+        EXPECT_EQ(g.meta.toJson()["seed"], 7);
         EXPECT_EQ(g.size.x, 210.0);
         EXPECT_EQ(g.size.y, 297.0);
     }

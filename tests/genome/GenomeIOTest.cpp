@@ -138,7 +138,7 @@ Genome smallGenome() {
     drop.color = 1;
     g.initial.push_back(drop);
     g.operations.push_back(defaultOperation(Tool::Comb, 2, {0.0, 0.0, 0.0}));
-    g.meta["name"] = "small";
+    g.meta.name = "small";
     return g;
 }
 
@@ -251,7 +251,7 @@ TEST(GenomeIO, ParsedValuesAndNormalisation) {
     glm::dvec3 n = glm::dvec3(1, 1e-8, 0) - glm::dot(glm::dvec3(1, 1e-8, 0), d) * d;
     n = glm::normalize(n);
     EXPECT_NEAR(glm::length(comb.normal - n), 0.0, 1e-14);
-    EXPECT_EQ(g.meta["unicode"], "Marmorpapier \u00e9\u00f1 \u2603");
+    EXPECT_EQ(g.meta.toJson()["unicode"], "Marmorpapier \u00e9\u00f1 \u2603");
 }
 
 TEST(GenomeIO, NearlyParallelNormalIsMadeOrthogonal) {
@@ -367,7 +367,7 @@ TEST(GenomeIO, ValidateGenomeChecksInMemory) {
     bad.size.x = 0;
     expectError(bad, "mem: size[0]: must be > 0 (got 0)");
     bad = g;
-    bad.meta["x"] = std::nan("");
+    bad.meta.other["x"] = std::nan("");
     expectError(bad, "mem: meta.x: must be finite (got nan)");
 
     Genome solid = loadGenome(genomeData() / "valid" / "base-3d.marble.json");

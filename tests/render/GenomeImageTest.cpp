@@ -98,7 +98,7 @@ TEST(GenomeImage, EveryPngAndTiffGivesItsGenomeBack) {
                             test::loadExample("flame-comb-vortex.marble.json")}) {
         const std::string canonical = serializeGenome(g);
         for (const char* ext : {".png", ".tif", ".tiff"}) {
-            const fs::path file = dir / (g.meta.value("name", std::string("x")).substr(0, 4) + ext);
+            const fs::path file = dir / (g.meta.toJson().value("name", std::string("x")).substr(0, 4) + ext);
             renderToFile(g, small(), file);
             const ImageKind kind = std::string(ext) == ".png" ? ImageKind::Png : ImageKind::Tiff;
             std::optional<std::string> text = readGenomeText(file, kind, file.string());
@@ -185,7 +185,7 @@ TEST(GenomeImage, TextAfterTheImageDataAndOlderTextChunksAreFound) {
     }
     // tEXt is Latin-1: the name's non-ASCII letters arrive as UTF-8.
     Genome latin = g;
-    latin.meta["name"] = "Caf\xc3\xa9";
+    latin.meta.name = "Caf\xc3\xa9";
     std::string latinText = serializeGenome(latin);
     latinText.replace(latinText.find("Caf\xc3\xa9"), 5, "Caf\xe9");
     std::vector<unsigned char> png =

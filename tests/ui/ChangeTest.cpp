@@ -62,9 +62,10 @@ TEST_F(ChangeTest, AVariedCellSaysWhatChangedFromTheDesignItVaries) {
         SCOPED_TRACE("design " + std::to_string(i + 1));
         const Genome* g = model().cell(i);
         ASSERT_NE(g, nullptr);
-        if (!g->meta.contains("lineage") || !g->meta["lineage"].contains("variation")) continue;
+        if (!g->meta.toJson().contains("lineage") || !g->meta.toJson()["lineage"].contains("variation"))
+            continue;
         ++varied;
-        const std::string of = g->meta["lineage"]["variation"]["of"].get<std::string>();
+        const std::string of = g->meta.toJson()["lineage"]["variation"]["of"].get<std::string>();
         int source = -1;
         for (int k = 0; k < CellCount; ++k)
             if (k != i && model().cell(k) && genomeId(*model().cell(k)) == of) source = k;

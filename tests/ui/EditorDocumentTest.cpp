@@ -58,7 +58,7 @@ Genome sample() {
     g.palette = {{0x1f, 0x3b, 0x5a}, {0xb8, 0x41, 0x2c}, {0xe0, 0xb4, 0x4c}};
     g.initial = {drop(500, 500, 140, 0), drop(500, 500, 90, 1), drop(300, 700, 60, 2)};
     g.operations = {comb(0, 80), wave(25), comb(90, 60)};
-    g.meta["name"] = "Sample";
+    g.meta.name = "Sample";
     validateGenome(g, "sample");
     return g;
 }
@@ -307,10 +307,10 @@ TEST(EditorDocument, MutedStepsRoundTripThroughAFile) {
     const Genome file = doc.fileGenome();
     EXPECT_EQ(file.initial.size(), 2u);
     EXPECT_EQ(file.operations.size(), 1u);
-    ASSERT_TRUE(file.meta.contains("editor"));
-    EXPECT_EQ(file.meta["editor"]["muted"].size(), 3u);
-    EXPECT_EQ(file.meta["name"], "Sample");
-    EXPECT_FALSE(doc.design().meta.contains("editor"));
+    ASSERT_TRUE(file.meta.toJson().contains("editor"));
+    EXPECT_EQ(file.meta.toJson()["editor"]["muted"].size(), 3u);
+    EXPECT_EQ(file.meta.toJson()["name"], "Sample");
+    EXPECT_FALSE(doc.design().meta.toJson().contains("editor"));
 
     const QString path = dir.filePath(QStringLiteral("muted.marble.json"));
     QString error;

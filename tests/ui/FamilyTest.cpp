@@ -26,7 +26,7 @@ protected:
         std::set<std::string> found;
         for (int c = 0; c < CellCount; ++c)
             if (const Genome* g = model().cell(c))
-                found.insert(g->meta.value("family", std::string("(free)")));
+                found.insert(g->meta.toJson().value("family", std::string("(free)")));
         return found;
     }
 };

@@ -186,7 +186,7 @@ TEST_F(HelpTest, FileNamesOfferedAreTheDesignsNameMadeSafe) {
 
     // A design without a name is offered under its short id.
     Genome unnamed = slate;
-    unnamed.meta.erase("name");
+    unnamed.meta.erase(MetaKey::Name);
     EXPECT_EQ(suggestedFile(unnamed, mFiles.path(), QStringLiteral(".png")),
               QDir(mFiles.path()).filePath(lineageOf(unnamed).id.left(8) + QStringLiteral(".png")));
 }

@@ -33,7 +33,7 @@ protected:
         std::vector<int> cells;
         for (int i = 0; i < CellCount; ++i)
             if (model().cell(i) &&
-                model().cell(i)->meta.value("generator", std::string()) == PaperGeneratorVersion)
+                model().cell(i)->meta.toJson().value("generator", std::string()) == PaperGeneratorVersion)
                 cells.push_back(i);
         return cells;
     }

@@ -130,15 +130,17 @@ TEST(ViewAngleTest, KeptInMetaViewAndReadBackFromFiles) {
     Genome genome = randomGenome(4, 3);
     EXPECT_EQ(viewAngleOf(genome), (ViewAngle{30.0, 20.0})) << "the default when meta has none";
     setViewAngle(genome, ViewAngle{-75.5, 12.25});
-    EXPECT_EQ(genome.meta["view"]["yaw"], -75.5);
-    EXPECT_EQ(genome.meta["view"]["pitch"], 12.25);
+    EXPECT_EQ(genome.meta.toJson()["view"]["yaw"], -75.5);
+    EXPECT_EQ(genome.meta.toJson()["view"]["pitch"], 12.25);
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const std::string file = dir.filePath(QStringLiteral("turned.marble.json")).toStdString();
     saveGenome(genome, file);
     EXPECT_EQ(viewAngleOf(loadGenome(file)), (ViewAngle{-75.5, 12.25}));
     // Nonsense reads as the default, the pitch stays short of the poles.
-    genome.meta["view"] = {{"yaw", "east"}, {"pitch", 400}};
+    nlohmann::ordered_json meta = genome.meta.toJson();
+    meta["view"] = {{"yaw", "east"}, {"pitch", 400}};
+    genome.meta = Meta::fromJson(meta);
     EXPECT_EQ(viewAngleOf(genome), (ViewAngle{30.0, 89.0}));
     EXPECT_EQ((ViewAngle{350.0, 80.0}.dragged(40.0, 40.0)), (ViewAngle{10.0, 89.0}));
 }

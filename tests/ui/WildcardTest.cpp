@@ -47,7 +47,7 @@ TEST_F(WildcardTest, TheLastOffspringCellIsAFreshDesignOfTheParentsFamily) {
     EXPECT_NE(genomeId(wild), parentId);
     // Not an alteration of the parent: a nonpareil drawn from a seed of its own.
     const Genome drawn =
-        familyGenome(*findFamily("nonpareil"), wild.meta["lineage"]["seed"].get<std::uint64_t>());
+        familyGenome(*findFamily("nonpareil"), wild.meta.toJson()["lineage"]["seed"].get<std::uint64_t>());
     EXPECT_EQ(genomeId(drawn), genomeId(wild));
 }
 
@@ -76,7 +76,7 @@ TEST(WildcardModel, WithoutAFamilyAFreeDesignSeededByTheGeneration) {
         model.newRandomPopulation(3); // mixed: one cell is drawn by the free generator
         int free = -1;
         for (int i = 0; i < CellCount; ++i)
-            if (!model.cell(i)->meta.contains("family")) free = i;
+            if (!model.cell(i)->meta.toJson().contains("family")) free = i;
         EXPECT_GE(free, 0);
         model.setSelected(free, true);
         model.apply(GeneticOperator::Reinit, 0.5);
@@ -86,7 +86,7 @@ TEST(WildcardModel, WithoutAFamilyAFreeDesignSeededByTheGeneration) {
     };
     const Genome wild = breedFromFree(7);
     EXPECT_EQ(lineageOf(wild).op, QStringLiteral("wildcard"));
-    EXPECT_FALSE(wild.meta.contains("family"));
+    EXPECT_FALSE(wild.meta.toJson().contains("family"));
     EXPECT_EQ(wild.dimension, 3);
     EXPECT_NO_THROW(validateGenome(wild, "wildcard"));
     // The same session breeds the same wildcard; another session another one.

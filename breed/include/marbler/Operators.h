@@ -99,8 +99,7 @@ int lineageGeneration(const Genome& genome);
 /// The meta of a child, as breed() and colourways() write it: the home parent's meta without its
 /// name, seed, generator, id and lineage; the name "ROOT (gG #N)" from the home parent's name
 /// without an earlier "(g.. #..)"; and `lineage`, which the caller fills.
-nlohmann::ordered_json childMeta(const Genome& home, int generation, int number,
-                                 nlohmann::ordered_json lineage);
+Meta childMeta(const Genome& home, int generation, int number, MetaLineage lineage);
 
 struct BreedRequest {
     GeneticOperator op = GeneticOperator::Alter;

@@ -9,6 +9,8 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "marbler/Meta.h"
+
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -93,7 +95,7 @@ struct Genome {
     std::vector<Operation> operations; ///< strokes applied after `initial`
     std::optional<SourceImage> source;
     double bleed = 0.0; ///< version 2: soft ink edges, width in design units
-    nlohmann::ordered_json meta = nlohmann::ordered_json::object();
+    Meta meta;          ///< name, lineage and notes (Meta.h); not part of the design
 
     /// The folder relative paths of `source` are resolved against (the genome file's folder);
     /// not part of the design and not saved.

@@ -46,7 +46,7 @@ void BM_BreedEight(benchmark::State& state) {
     for (auto _ : state) {
         request.seed = ++seed;
         for (const Genome& child : breed(request))
-            redraws += child.meta["lineage"].value("redraws", 0);
+            redraws += child.meta.toJson()["lineage"].value("redraws", 0);
     }
     state.SetLabel(std::string(label(static_cast<int>(state.range(0)))) +
                    (state.range(1) == 0 ? ", alter" : ", reinit"));
