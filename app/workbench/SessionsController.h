@@ -48,4 +48,7 @@ private:
     bool mSaveFailureShown = false;
 };
 
+/// Reports a session file that does not load (once), moving it aside as `.bad` first.
+void reportBadSession(QWidget* parent, const QString& file, const QString& what);
+
 } // namespace marbler::ui

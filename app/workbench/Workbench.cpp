@@ -9,6 +9,7 @@
 #include "shared/StartDialog.h"
 #include "workbench/Session.h"
 #include "workbench/SessionStore.h"
+#include "workbench/SessionsController.h"
 #include "workbench/WorkbenchWindow.h"
 
 #include <QApplication>

@@ -1,7 +1,4 @@
-// The window's command line, parsed without Qt so that main() can report a bad option (exit 2)
-// before the window module, Qt or a display is involved.
-
-#include "workbench/Workbench.h"
+#include "workbench/WorkbenchArgs.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "marbler/Genome.h"
+#include "marbler/Color.h"
 
 #include <algorithm>
 #include <cmath>

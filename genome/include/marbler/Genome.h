@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "marbler/Color.h"
 #include "marbler/Meta.h"
 
 #include <array>
@@ -40,12 +41,6 @@ enum class WaveShape : std::uint8_t { Eggcrate, Ripple };
 
 /// The two velocity fields of `flow` (version 2).
 enum class FlowField : std::uint8_t { Cells, Cavity };
-
-/// An sRGB colour, 8 bits a channel, as written `#rrggbb`.
-struct Color {
-    std::uint8_t r = 0, g = 0, b = 0;
-    friend bool operator==(const Color&, const Color&) = default;
-};
 
 /// One entry of `initial` or `operations`. Which fields matter depends on the tool and the
 /// dimension (see the parameter tables); the others keep their defaults and are not saved.
@@ -124,30 +119,5 @@ inline constexpr int FormatVersion = 2;
 /// The largest number of teeth of a `stretch` and of steps of a `flow` (genome-format.md, version 2).
 inline constexpr std::size_t MaxTeeth = 1000;
 inline constexpr int MaxFlowSteps = 10000;
-
-/// `#rrggbb`, lower case.
-std::string toHex(Color c);
-/// Parses `#rrggbb` (either case); nullopt when malformed.
-std::optional<Color> parseHexColor(const std::string& text);
-/// How far apart two colours look, squared: the "redmean" distance (RGB weighted by how red the
-/// pair is, after Riemersma). Only basic operations, so the same on every machine.
-double colorDistance2(Color a, Color b);
-/// The plain squared distance of two colours in RGB (0 to 3 * 255²).
-double rgbDistance2(Color a, Color b);
-/// The luma of an sRGB colour, 0 to 1 (Rec. 601 weights on the encoded values).
-double lumaOf(Color c);
-
-/// Hue (degrees, [0, 360)), saturation and lightness (0 to 1) of an sRGB colour.
-struct Hsl {
-    double h = 0.0, s = 0.0, l = 0.0;
-};
-/// A colour's HSL, with basic operations only (colorFromHsl's inverse).
-Hsl hslOf(Color c);
-/// An sRGB colour from HSL (hue wrapped, saturation and lightness clamped). HSL is piecewise
-/// linear, so the 8-bit result is the same on every machine.
-Color colorFromHsl(const Hsl& c);
-Color colorFromHsl(double hue, double saturation, double lightness);
-/// An angle in degrees wrapped into [0, 360).
-double wrapHue(double h);
 
 } // namespace marbler

@@ -1,5 +1,7 @@
 #include "marbler/gl/Backend.h"
 
+#include "GlContext.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -89,6 +91,33 @@ BackendChoice chooseBackend(const GlProbe& probe, BackendPreference preference) 
         return {false, "OpenGL is " + shortRendererName(probe.renderer) +
                            ", a software rasteriser: the CPU renderer is faster"};
     return {true, "OpenGL is " + shortRendererName(probe.renderer) + ", a hardware GPU"};
+}
+
+namespace {
+
+/// The one probe of the process: whether a context can be made, and the driver's strings.
+GlProbe probeOnce() {
+    GlProbe result;
+    detail::ContextParts parts = detail::makeContext(result.reason);
+    result.available = parts.gl != nullptr;
+    if (result.available) {
+        result.vendor = detail::glString(parts.gl, GL_VENDOR);
+        result.renderer = detail::glString(parts.gl, GL_RENDERER);
+        result.version = detail::glString(parts.gl, GL_VERSION);
+        result.software = isSoftwareRenderer(result.renderer);
+    }
+    if (parts.context) parts.context->doneCurrent();
+    if (result.available) detail::registerExitHandler();
+    return result;
+}
+
+} // namespace
+
+GlProbe probeGl() {
+    static std::once_flag once;
+    static GlProbe result;
+    std::call_once(once, [] { result = probeOnce(); });
+    return result;
 }
 
 } // namespace marbler::gl

@@ -1,5 +1,6 @@
 #include "marbler/gl/GlRenderer.h"
 
+#include "GlContext.h"
 #include "GlProgram.h"
 #include "OpPacking.h"
 #include "marbler/Error.h"
@@ -36,6 +37,12 @@
 namespace marbler::gl {
 namespace {
 
+using detail::ContextParts;
+using detail::LiveRenderers;
+using detail::liveRenderers;
+using detail::makeContext;
+using detail::registerExitHandler;
+
 /// Largest tile of a raster render: small enough to keep one draw call well below a desktop
 /// driver's watchdog for long genomes, large enough that tiles cost nothing extra.
 constexpr int MaxTileSide = 2048;
@@ -48,160 +55,6 @@ constexpr int MaxMeshSide = 8192;
 constexpr double FrameFill = 0.92;
 /// Samples of the largest antialiasing pattern (grid8); the shaders' uniform arrays hold this.
 constexpr int MaxSamples = 64;
-
-bool nonEmptyEnv(const char* name) {
-    const char* value = std::getenv(name);
-    return value && *value;
-}
-
-/// Whether Qt can open a platform here without aborting the process: QGuiApplication calls
-/// qFatal when its platform plugin cannot connect, so look before creating one.
-bool platformUsable(std::string& why) {
-    if (nonEmptyEnv("QT_QPA_PLATFORM")) return true;
-    if (nonEmptyEnv("WAYLAND_DISPLAY")) return true;
-    if (nonEmptyEnv("DISPLAY")) {
-        std::string display = std::getenv("DISPLAY");
-        // A local display ":N" has a socket; a remote one (host:N) cannot be checked cheaply.
-        if (display.front() == ':') {
-            std::string number = display.substr(1, display.find('.') - 1);
-            std::error_code ec;
-            if (!std::filesystem::exists("/tmp/.X11-unix/X" + number, ec)) {
-                why = "DISPLAY=" + display + " names no running X server";
-                return false;
-            }
-        }
-        return true;
-    }
-    why = "no display: none of DISPLAY, WAYLAND_DISPLAY, QT_QPA_PLATFORM is set (run under xvfb-run)";
-    return false;
-}
-
-/// The message handler of a QGuiApplication this library made itself: drops debug, info and
-/// warning messages (e.g. "QStandardPaths: XDG_RUNTIME_DIR not set"), writes critical and fatal
-/// ones as a single line on stderr.
-void headlessMessages(QtMsgType type, const QMessageLogContext&, const QString& message) {
-    if (type != QtCriticalMsg && type != QtFatalMsg) return;
-    std::string line = message.toStdString();
-    std::replace(line.begin(), line.end(), '\n', ' ');
-    std::fprintf(stderr, "marbler: Qt: %s\n", line.c_str());
-    std::fflush(stderr);
-}
-
-QSurfaceFormat requestedFormat(bool core43) {
-    QSurfaceFormat format;
-    format.setRenderableType(QSurfaceFormat::OpenGL);
-    if (core43) {
-        format.setVersion(4, 3);
-        format.setProfile(QSurfaceFormat::CoreProfile);
-    }
-    return format;
-}
-
-/// A context (4.3 core, else whatever the driver gives if that is 4.3 or newer) on an offscreen
-/// surface, current. Empty `why` on success.
-struct ContextParts {
-    std::unique_ptr<QOpenGLContext> context;
-    std::unique_ptr<QOffscreenSurface> surface;
-    QOpenGLFunctions_4_3_Core* gl = nullptr;
-};
-
-ContextParts makeContext(std::string& why) {
-    ContextParts parts;
-    if (!QGuiApplication::instance()) {
-        if (QCoreApplication::instance()) {
-            why = "a QCoreApplication without a GUI is running; OpenGL needs a QGuiApplication";
-            return {};
-        }
-        if (!platformUsable(why)) return {};
-        // Headless (the CLI, tests, benchmarks): Qt's chatter would break the contract of a clean
-        // stderr on success, so only its critical and fatal messages get through, one line each.
-        if (!nonEmptyEnv("MARBLER_QT_MESSAGES")) qInstallMessageHandler(headlessMessages);
-        // Made once and never destroyed: a library cannot know when its caller's last GL use is,
-        // and tearing Qt down in static destructors is unsafe.
-        static int argc = 1;
-        static char name[] = "marbler";
-        static char* argv[] = {name, nullptr};
-        new QGuiApplication(argc, argv);
-    }
-    for (bool core43 : {true, false}) {
-        parts.context = std::make_unique<QOpenGLContext>();
-        parts.context->setFormat(requestedFormat(core43));
-        if (!parts.context->create()) continue;
-        parts.surface = std::make_unique<QOffscreenSurface>();
-        parts.surface->setFormat(parts.context->format());
-        parts.surface->create();
-        if (!parts.surface->isValid() || !parts.context->makeCurrent(parts.surface.get())) continue;
-        auto [major, minor] = parts.context->format().version();
-        if (major * 10 + minor < 43) {
-            why = "OpenGL 4.3 is needed (shader storage buffers); the driver gives " + std::to_string(major) +
-                  "." + std::to_string(minor) + " (" +
-                  reinterpret_cast<const char*>(parts.context->functions()->glGetString(GL_RENDERER)) + ")";
-            continue;
-        }
-        parts.gl = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_4_3_Core>(parts.context.get());
-        if (parts.gl && parts.gl->initializeOpenGLFunctions()) {
-            why.clear();
-            return parts;
-        }
-        why = "the OpenGL 4.3 core functions cannot be resolved";
-    }
-    if (why.empty())
-        why = "no OpenGL context can be made on the \"" + QGuiApplication::platformName().toStdString() +
-              "\" platform";
-    return {};
-}
-
-/// Renderers still alive, torn down by an exit handler: a renderer held in a static would
-/// otherwise be destroyed after the driver's own exit handlers (Mesa stops its threads at exit)
-/// and crash the process on its way out. The handler is registered after the first context is
-/// made, so it runs before the driver's handlers and before the destructors of statics made
-/// earlier.
-struct LiveRenderers {
-    std::mutex mutex;
-    std::map<const void*, std::function<void()>> teardown;
-};
-
-LiveRenderers& liveRenderers() {
-    static auto* live = new LiveRenderers; // never destroyed: used by the exit handler
-    return *live;
-}
-
-void tearDownAtExit() {
-    LiveRenderers& live = liveRenderers();
-    std::map<const void*, std::function<void()>> pending;
-    {
-        std::lock_guard lock(live.mutex);
-        pending.swap(live.teardown);
-    }
-    for (auto& [key, teardown] : pending)
-        teardown();
-}
-
-void registerExitHandler() {
-    static std::once_flag once;
-    std::call_once(once, [] { std::atexit(tearDownAtExit); });
-}
-
-std::string glString(QOpenGLFunctions_4_3_Core* gl, GLenum name) {
-    const auto* text = reinterpret_cast<const char*>(gl->glGetString(name));
-    return text ? text : "";
-}
-
-/// The one probe of the process: whether a context can be made, and the driver's strings.
-GlProbe probeOnce() {
-    GlProbe result;
-    ContextParts parts = makeContext(result.reason);
-    result.available = parts.gl != nullptr;
-    if (result.available) {
-        result.vendor = glString(parts.gl, GL_VENDOR);
-        result.renderer = glString(parts.gl, GL_RENDERER);
-        result.version = glString(parts.gl, GL_VERSION);
-        result.software = isSoftwareRenderer(result.renderer);
-    }
-    if (parts.context) parts.context->doneCurrent();
-    if (result.available) registerExitHandler();
-    return result;
-}
 
 glm::vec3 linearColor(Color c) {
     return {float(srgbToLinear(c.r / 255.0)), float(srgbToLinear(c.g / 255.0)),
@@ -501,13 +354,6 @@ struct GlRenderer::Impl {
         if (meshIbo) gl->glDeleteBuffers(1, &meshIbo);
     }
 };
-
-GlProbe probeGl() {
-    static std::once_flag once;
-    static GlProbe result;
-    std::call_once(once, [] { result = probeOnce(); });
-    return result;
-}
 
 bool GlRenderer::available(std::string* reason) {
     const GlProbe probe = probeGl();
