@@ -30,6 +30,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <utility>
 
 namespace marbler::ui {
 
@@ -83,11 +84,12 @@ public:
     /// The preference asked for (before the environment's override).
     gl::BackendPreference preference() const { return mPreference; }
 
-    /// Keys below this are the workbench's own, in fixed ranges (its cells, favourites and
-    /// lineage thumbnails); newKey() hands out the ones above, so no two views share a key.
-    static constexpr std::uint64_t ViewKeyBase = std::uint64_t(1) << 48;
-    /// A key no other view has: a large view, an editor's canvas or its object view.
-    std::uint64_t newKey() { return mNextKey++; }
+    /// `count` consecutive keys no other view has, from the one returned: for a view that
+    /// renders many images (the grid's cells, the favourites). Every view takes its keys here,
+    /// so no two views ever share one, however many windows share the service.
+    std::uint64_t newKeys(std::uint64_t count) { return std::exchange(mNextKey, mNextKey + count); }
+    /// A key no other view has: a large view, an editor's canvas, a lineage thumbnail.
+    std::uint64_t newKey() { return newKeys(1); }
 
     /// Queues a request for a key (superseding any unfinished one); returns its ticket.
     std::uint64_t request(std::uint64_t key, RenderRequest request);
@@ -140,7 +142,7 @@ private:
     QHash<std::uint64_t, std::uint64_t> mOutstanding;
     std::uint64_t mNextTicket = 1;
     QString mBackendName;
-    std::uint64_t mNextKey = ViewKeyBase; ///< newKey's next (the GUI thread's only)
+    std::uint64_t mNextKey = 1; ///< newKeys' next (the GUI thread's only)
     QString mBackendReason;
     bool mUsesGl = false;
     bool mGlAllowed = true;

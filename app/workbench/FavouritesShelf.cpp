@@ -52,6 +52,7 @@ FavouritesShelf::FavouritesShelf(QMainWindow* window, PopulationModel* model, Re
     , mWindow(window)
     , mModel(model)
     , mRenderer(renderer)
+    , mKeyBase(renderer->newKeys(KeyCount))
     , mMesh(std::move(mesh))
     , mNoteSavedFile(std::move(noteSavedFile)) {
     mRestore = editMenu->addAction(tr("&Restore removed favourite"), this, [this] { restoreRemoved(); });
@@ -63,8 +64,8 @@ FavouritesShelf::FavouritesShelf(QMainWindow* window, PopulationModel* model, Re
 
     connect(mModel, &PopulationModel::favouritesChanged, this, &FavouritesShelf::update);
     connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image) {
-        if (key < KeyBase || key >= LineagePanel::KeyBase) return;
-        if (QListWidgetItem* item = mList ? mList->item(int(key - KeyBase)) : nullptr)
+        if (key < mKeyBase || key >= mKeyBase + KeyCount) return;
+        if (QListWidgetItem* item = mList ? mList->item(int(key - mKeyBase)) : nullptr)
             item->setIcon(QIcon(QPixmap::fromImage(image)));
     });
 }
@@ -117,7 +118,7 @@ void FavouritesShelf::addUndoButton(QStatusBar* statusBar) {
 
 void FavouritesShelf::cancelThumbnails() {
     for (std::size_t i = 0; i < mModel->favourites().size(); ++i)
-        mRenderer->cancel(KeyBase + i);
+        mRenderer->cancel(mKeyBase + i);
 }
 
 void FavouritesShelf::update() {
@@ -140,7 +141,7 @@ void FavouritesShelf::update() {
         const ViewAngle angle = viewAngleOf(favourites[i].genome);
         request.yaw = angle.yaw;
         request.pitch = angle.pitch;
-        mRenderer->request(KeyBase + i, std::move(request));
+        mRenderer->request(mKeyBase + i, std::move(request));
     }
 }
 

@@ -28,9 +28,9 @@ class RenderService;
 class FavouritesShelf : public QObject {
     Q_OBJECT
 public:
-    /// Render keys of favourite thumbnails start here (after the grid's 0..8, before the
-    /// lineage's thumbnails: the queue renders lower keys first).
-    static constexpr std::uint64_t KeyBase = 100;
+    /// Render keys the shelf takes from the render service, one a favourite (the queue renders
+    /// lower keys first: the window takes its cells' before the shelf is made).
+    static constexpr std::uint64_t KeyCount = std::uint64_t(1) << 32;
     static constexpr int ThumbnailSide = 96;
 
     /// Adds Edit ▸ Restore removed favourite to `editMenu`; buildDock() and addUndoButton() make
@@ -69,6 +69,7 @@ private:
     QMainWindow* mWindow;
     PopulationModel* mModel;
     RenderService* mRenderer;
+    std::uint64_t mKeyBase; ///< the favourites' render keys: mKeyBase + row
     std::function<QString()> mMesh;
     std::function<void(const QString&)> mNoteSavedFile;
     QListWidget* mList = nullptr;

@@ -15,17 +15,6 @@
 
 namespace marbler::ui {
 
-namespace {
-
-/// Lineage thumbnails get keys of their own, unique in the process, so windows sharing one
-/// render service never take each other's results.
-std::uint64_t nextLineageKey() {
-    static std::uint64_t next = LineagePanel::KeyBase;
-    return next++;
-}
-
-} // namespace
-
 LineagePanel::LineagePanel(QWidget* window, PopulationModel* model, RenderService* renderer,
                            std::function<QString()> mesh)
     : QObject(window)
@@ -88,11 +77,11 @@ LineagePanel::LineagePanel(QWidget* window, PopulationModel* model, RenderServic
 
     connect(mRenderer, &RenderService::rendered, this,
             [this](std::uint64_t key, const QImage& image, bool final) {
-                // A view's keys of its own (large view, editor) lie above the thumbnails'.
-                if (key >= KeyBase && key < RenderService::ViewKeyBase && final) onThumbnail(key, image);
+                // Other keys are other views' (the grid, the favourites, a large view, an editor).
+                if (final && mRequests.contains(key)) onThumbnail(key, image);
             });
     connect(mRenderer, &RenderService::failed, this, [this](std::uint64_t key) {
-        if (key >= KeyBase && key < RenderService::ViewKeyBase) onThumbnail(key, QImage());
+        if (mRequests.contains(key)) onThumbnail(key, QImage());
     });
 }
 
@@ -281,7 +270,9 @@ void LineagePanel::requestThumbnail(const Genome& genome) {
     request.genome = genome;
     request.size = QSize(IconSide, IconSide);
     request.mesh = mMesh();
-    const std::uint64_t renderKey = nextLineageKey();
+    // A key of its own from the render service (after the grid's and the favourites', which
+    // the queue renders first), so windows sharing the service never take each other's results.
+    const std::uint64_t renderKey = mRenderer->newKey();
     mRequests.insert(renderKey, key);
     mPending.insert(key);
     mRenderer->request(renderKey, std::move(request));

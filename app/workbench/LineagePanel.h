@@ -30,9 +30,6 @@ class RenderService;
 class LineagePanel : public QObject {
     Q_OBJECT
 public:
-    /// Render keys of lineage thumbnails start here (the queue renders lower keys first, so the
-    /// grid and the favourites come before them).
-    static constexpr std::uint64_t KeyBase = std::uint64_t(1) << 32;
     /// The icons: a design's thumbnail, and a generation's mosaic of nine (tiles of 14 pixels
     /// with 1-pixel gaps): small enough to render many, big enough to tell inks apart.
     static constexpr int IconSide = 44;

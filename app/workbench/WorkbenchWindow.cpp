@@ -80,6 +80,7 @@ QString openFilter() {
 WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     : QMainWindow(parent)
     , mRenderer(renderer)
+    , mCellKeys(renderer->newKeys(CellCount))
     , mModel(new PopulationModel(this)) {
     setWindowTitle(tr("Marbler — evolution workbench"));
     mModel->setSessionSeed(QRandomGenerator::global()->generate64());
@@ -179,7 +180,7 @@ WorkbenchWindow::~WorkbenchWindow() {
     // Results for this window's keys may still arrive after it is gone; the service simply
     // has no receiver then, but the work itself is wasted, so drop it.
     for (int i = 0; i < CellCount; ++i)
-        mRenderer->cancel(std::uint64_t(i));
+        mRenderer->cancel(mCellKeys + std::uint64_t(i));
     mFavourites->cancelThumbnails(); // the lineage's go with its panel
 }
 
@@ -494,14 +495,14 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
     const Genome* g = mModel->cell(index);
     DesignCell* c = mCells[std::size_t(index)];
     if (!g) {
-        mRenderer->cancel(std::uint64_t(index));
+        mRenderer->cancel(mCellKeys + std::uint64_t(index));
         mFinal[std::size_t(index)] = true;
         return;
     }
     const QString key = renderCacheKey(index);
     if (!previewOnly) {
         if (const QImage* cached = mImageCache.object(key)) {
-            mRenderer->cancel(std::uint64_t(index));
+            mRenderer->cancel(mCellKeys + std::uint64_t(index));
             c->setImage(*cached);
             mShownDesign[std::size_t(index)] = genomeId(*g);
             mFinal[std::size_t(index)] = true;
@@ -528,7 +529,7 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
     request.previewOnly = previewOnly;
     mPendingCacheKey[std::size_t(index)] = previewOnly ? QString() : key;
     mFinal[std::size_t(index)] = false;
-    mRenderer->request(std::uint64_t(index), std::move(request));
+    mRenderer->request(mCellKeys + std::uint64_t(index), std::move(request));
     updateTask();
 }
 
@@ -544,9 +545,9 @@ bool WorkbenchWindow::renderingDone() const {
 }
 
 void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool final) {
-    if (key >= RenderService::ViewKeyBase) return; // a view's of its own (large view, editor)
-    if (key < std::uint64_t(CellCount)) {
-        const auto index = std::size_t(key);
+    // Other keys are other views' (the favourites, the lineage, a large view, an editor).
+    if (key >= mCellKeys && key < mCellKeys + std::uint64_t(CellCount)) {
+        const auto index = std::size_t(key - mCellKeys);
         mCells[index]->setImage(image);
         mShownDesign[index] = mRequestedDesign[index];
         if (final) {
@@ -562,10 +563,11 @@ void WorkbenchWindow::onRendered(std::uint64_t key, const QImage& image, bool fi
 }
 
 void WorkbenchWindow::onRenderFailed(std::uint64_t key, const QString& message) {
-    if (key < std::uint64_t(CellCount)) {
-        mCells[std::size_t(key)]->setError(message);
-        mFinal[std::size_t(key)] = true;
-        statusBar()->showMessage(tr("Design %1 cannot be rendered: %2").arg(key + 1).arg(message), 10000);
+    if (key >= mCellKeys && key < mCellKeys + std::uint64_t(CellCount)) {
+        const auto index = std::size_t(key - mCellKeys);
+        mCells[index]->setError(message);
+        mFinal[index] = true;
+        statusBar()->showMessage(tr("Design %1 cannot be rendered: %2").arg(index + 1).arg(message), 10000);
         updateTask();
         if (renderingDone()) emit renderingFinished();
     }

@@ -59,8 +59,6 @@ class StatusLine;
 class WorkbenchWindow : public QMainWindow {
     Q_OBJECT
 public:
-    /// Render keys of lineage thumbnails start here (LineagePanel.h).
-    static constexpr std::uint64_t LineageKeyBase = LineagePanel::KeyBase;
     /// The lineage's icons (LineagePanel.h).
     static constexpr int LineageIconSide = LineagePanel::IconSide;
 
@@ -290,6 +288,7 @@ private:
     ViewAngle cellViewAngle(int cell) const;
 
     RenderService* mRenderer;
+    std::uint64_t mCellKeys; ///< the cells' render keys: mCellKeys + index (RenderService::newKeys)
     PopulationModel* mModel;
     std::array<DesignCell*, CellCount> mCells{};
     /// The cell whose solid the user is turning (-1: none) and its angle so far; the angle is
@@ -317,9 +316,6 @@ private:
     QAction* mCopyDesign = nullptr;
     QAction* mPasteDesign = nullptr;
 };
-
-/// Reports a session file that does not load (once), moving it aside as `.bad` first.
-void reportBadSession(QWidget* parent, const QString& file, const QString& what);
 
 /// The caption a cell shows under a design: its name (a bred design's carries " (gN #K)",
 /// generation N, design K, as the status bar and the lineage count) and how it was made.
