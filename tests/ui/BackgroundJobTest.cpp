@@ -36,8 +36,7 @@ TEST(BackgroundJob, TellsDoneOnceAfterTheBoxHasGone) {
     int calls = 0;
     bool boxGone = false;
     BackgroundJob* job = BackgroundJob::start(
-        &window,
-        {&window, QStringLiteral("Working…"), QStringLiteral("jobProgress")},
+        &window, {&window, QStringLiteral("Working…"), QStringLiteral("jobProgress")},
         [](const RenderControl& control) { control.progress(1.0); },
         [&](const JobOutcome& o) {
             ++calls;
@@ -71,8 +70,7 @@ TEST(BackgroundJob, CancelInTheBoxStopsTheWork) {
     JobBox box(&window, QStringLiteral("Working…"));
     box.minimumDurationMs = 0;
     BackgroundJob* job = BackgroundJob::start(
-        &window, box,
-        [&](const RenderControl& control) { untilCancelled(control, started); },
+        &window, box, [&](const RenderControl& control) { untilCancelled(control, started); },
         [&](const JobOutcome& o) { outcome = o; });
     MARBLER_WAIT(started.load(), 10000);
     emit job->progressBox()->canceled(); // what the box's Cancel button says
