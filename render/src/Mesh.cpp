@@ -17,50 +17,106 @@ namespace {
 
 constexpr float Pi = std::numbers::pi_v<float>;
 
+/// A rectangle of the texture, in MeshData's UV convention (v downwards): where one part of an
+/// object lays out its texture coordinates.
+struct UvBox {
+    float u0 = 0.0f, v0 = 0.0f, u1 = 1.0f, v1 = 1.0f;
+    glm::vec2 at(float s, float t) const { return {u0 + s * (u1 - u0), v0 + t * (v1 - v0)}; }
+};
+
+/// The gap kept round each part of an object whose texture holds several (cube faces, teapot
+/// parts), so the bake's dilation has room and a filtered lookup at a part's edge stays on it.
+constexpr float UvMargin = 1.0f / 128.0f;
+
+/// The grid column of a turn about +y (phi = 2 pi u, z = r sin phi) that faces the back (-z):
+/// where the texture's seam goes, out of sight from the front; the front faces its middle.
+int backColumn(int around) {
+    return around * 3 / 4;
+}
+
+UvBox inset(UvBox box) {
+    return {box.u0 + UvMargin, box.v0 + UvMargin, box.u1 - UvMargin, box.v1 - UvMargin};
+}
+
 /// A regular grid of (u, v) in [0,1]^2 mapped by `point` (position, normal), triangulated;
 /// u wraps round (the seam shares positions but gets its own column so normals stay smooth).
+///
+/// Texture coordinates run across `box` once round, with u mirrored and v upwards, so that
+/// seen from outside (the triangles' front) the texture reads the right way round, its top at
+/// the grid's v = 1 end. The texture's seam, its left and right edges, lies on column
+/// `seamColumn` (0: the geometry's own seam): that column's vertices are duplicated (the same
+/// positions and normals, the copy appended after the grid) so that no triangle wraps round the
+/// texture. Positions, normals and the triangles' order do not depend on where the seam is.
 void addGrid(MeshData& mesh, int uSteps, int vSteps,
-             const std::function<void(float, float, glm::vec3&, glm::vec3&)>& point) {
+             const std::function<void(float, float, glm::vec3&, glm::vec3&)>& point, UvBox box = {},
+             int seamColumn = 0) {
     auto base = std::uint32_t(mesh.positions.size());
+    // The texture's across coordinate of column i: 1 at the seam's own column, falling to 0 at
+    // the seam again after one turn.
+    auto across = [&](int i) {
+        return i == seamColumn ? 1.0f : float((seamColumn - i + uSteps) % uSteps) / float(uSteps);
+    };
     for (int j = 0; j <= vSteps; ++j) {
         for (int i = 0; i <= uSteps; ++i) {
             glm::vec3 p, n;
-            point(float(i) / float(uSteps), float(j) / float(vSteps), p, n);
+            const float v = float(j) / float(vSteps);
+            point(float(i) / float(uSteps), v, p, n);
             mesh.positions.push_back(p);
             mesh.normals.push_back(n);
+            mesh.uvs.push_back(box.at(across(i), 1.0f - v));
         }
     }
-    auto at = [&](int i, int j) { return base + std::uint32_t(j * (uSteps + 1) + i); };
+    auto seamCopy = std::uint32_t(mesh.positions.size());
+    if (seamColumn > 0) {
+        for (int j = 0; j <= vSteps; ++j) {
+            const auto from = base + std::uint32_t(j * (uSteps + 1) + seamColumn);
+            mesh.positions.push_back(mesh.positions[from]);
+            mesh.normals.push_back(mesh.normals[from]);
+            mesh.uvs.push_back(box.at(0.0f, 1.0f - float(j) / float(vSteps)));
+        }
+    }
+    // Vertex (i, j) as the cells of column `cell` take it: the column before the seam takes
+    // the seam's copy.
+    auto at = [&](int i, int j, int cell) {
+        if (seamColumn > 0 && i == seamColumn && cell == seamColumn - 1) return seamCopy + std::uint32_t(j);
+        return base + std::uint32_t(j * (uSteps + 1) + i);
+    };
     for (int j = 0; j < vSteps; ++j) {
         for (int i = 0; i < uSteps; ++i) {
-            mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-            mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+            mesh.indices.insert(mesh.indices.end(), {at(i, j, i), at(i, j + 1, i), at(i + 1, j + 1, i)});
+            mesh.indices.insert(mesh.indices.end(), {at(i, j, i), at(i + 1, j + 1, i), at(i + 1, j, i)});
         }
     }
 }
 
 /// A solid of revolution about +y from a profile (radius, height) running from the bottom axis
 /// point to the top axis point; normals from the profile's tangent, so the surface is smooth.
-void addLathe(MeshData& mesh, const std::vector<glm::vec2>& profile, int around) {
+/// The texture runs round and up the object (its top edge at the top), its seam at the back (-z).
+void addLathe(MeshData& mesh, const std::vector<glm::vec2>& profile, int around, UvBox box = {}) {
     int steps = int(profile.size()) - 1;
-    addGrid(mesh, around, steps, [&](float u, float v, glm::vec3& p, glm::vec3& n) {
-        int k = int(std::lround(v * float(steps)));
-        glm::vec2 prev = profile[std::size_t(std::max(k - 1, 0))];
-        glm::vec2 next = profile[std::size_t(std::min(k + 1, steps))];
-        glm::vec2 tangent = next - prev;
-        glm::vec2 outward = glm::normalize(glm::vec2(tangent.y, -tangent.x));
-        float phi = 2.0f * Pi * u;
-        // With v running up the profile, this turning sense makes addGrid's triangles
-        // counter-clockwise seen from outside (front faces outward, as the cut plane assumes).
-        float c = std::cos(phi), s = std::sin(phi);
-        p = {profile[std::size_t(k)].x * c, profile[std::size_t(k)].y, profile[std::size_t(k)].x * s};
-        n = glm::normalize(glm::vec3(outward.x * c, outward.y, outward.x * s));
-    });
+    addGrid(
+        mesh, around, steps,
+        [&](float u, float v, glm::vec3& p, glm::vec3& n) {
+            int k = int(std::lround(v * float(steps)));
+            glm::vec2 prev = profile[std::size_t(std::max(k - 1, 0))];
+            glm::vec2 next = profile[std::size_t(std::min(k + 1, steps))];
+            glm::vec2 tangent = next - prev;
+            glm::vec2 outward = glm::normalize(glm::vec2(tangent.y, -tangent.x));
+            float phi = 2.0f * Pi * u;
+            // With v running up the profile, this turning sense makes addGrid's triangles
+            // counter-clockwise seen from outside (front faces outward, as the cut plane assumes).
+            float c = std::cos(phi), s = std::sin(phi);
+            p = {profile[std::size_t(k)].x * c, profile[std::size_t(k)].y, profile[std::size_t(k)].x * s};
+            n = glm::normalize(glm::vec3(outward.x * c, outward.y, outward.x * s));
+        },
+        box, backColumn(around));
 }
 
-/// A tube of varying radius along a path (for the spout and handle of the teapot), ends closed.
+/// A tube of varying radius along a path (for the spout and handle of the teapot), ends closed;
+/// its side's texture in `side` (around and along), each end's a disc in `ends[0]`, `ends[1]`.
 void addTube(MeshData& mesh, const std::function<glm::vec3(float)>& path,
-             const std::function<float(float)>& radius, int along, int around) {
+             const std::function<float(float)>& radius, int along, int around, UvBox side,
+             const UvBox (&ends)[2]) {
     auto frame = [&](float t, glm::vec3& x, glm::vec3& y, glm::vec3& z) {
         float h = 1e-3f;
         z = glm::normalize(path(std::min(t + h, 1.0f)) - path(std::max(t - h, 0.0f)));
@@ -68,24 +124,32 @@ void addTube(MeshData& mesh, const std::function<glm::vec3(float)>& path,
         x = glm::normalize(glm::cross(helper, z));
         y = glm::cross(z, x);
     };
-    addGrid(mesh, around, along, [&](float u, float v, glm::vec3& p, glm::vec3& n) {
-        glm::vec3 x, y, z;
-        frame(v, x, y, z);
-        float phi = 2.0f * Pi * u;
-        n = std::cos(phi) * x - std::sin(phi) * y; // this sense winds the faces outward
-        p = path(v) + radius(v) * n;
-    });
+    addGrid(
+        mesh, around, along,
+        [&](float u, float v, glm::vec3& p, glm::vec3& n) {
+            glm::vec3 x, y, z;
+            frame(v, x, y, z);
+            float phi = 2.0f * Pi * u;
+            n = std::cos(phi) * x - std::sin(phi) * y; // this sense winds the faces outward
+            p = path(v) + radius(v) * n;
+        },
+        side);
     for (float t : {0.0f, 1.0f}) {
+        const UvBox& disc = ends[t == 0.0f ? 0 : 1];
+        // The far end is seen from the other side, so its disc turns the other way.
+        const float turn = t == 0.0f ? 1.0f : -1.0f;
         glm::vec3 x, y, z;
         frame(t, x, y, z);
         glm::vec3 outward = t == 0.0f ? -z : z;
         auto centre = std::uint32_t(mesh.positions.size());
         mesh.positions.push_back(path(t));
         mesh.normals.push_back(outward);
+        mesh.uvs.push_back(disc.at(0.5f, 0.5f));
         for (int i = 0; i <= around; ++i) {
             float phi = 2.0f * Pi * float(i) / float(around);
             mesh.positions.push_back(path(t) + radius(t) * (std::cos(phi) * x + std::sin(phi) * y));
             mesh.normals.push_back(outward);
+            mesh.uvs.push_back(disc.at(0.5f + 0.5f * std::cos(phi), 0.5f + 0.5f * turn * std::sin(phi)));
         }
         for (int i = 0; i < around; ++i) {
             std::uint32_t a = centre + 1 + std::uint32_t(i), b = a + 1;
@@ -98,28 +162,45 @@ void addTube(MeshData& mesh, const std::function<glm::vec3(float)>& path,
 }
 
 MeshData sphere() {
-    // Same orientation as a lathe: v from the bottom pole to the top one.
+    // Same orientation as a lathe: v from the bottom pole to the top one. The texture by
+    // longitude and latitude (the top pole along its top edge), its seam the back meridian.
     MeshData mesh;
-    addGrid(mesh, 96, 48, [](float u, float v, glm::vec3& p, glm::vec3& n) {
-        float theta = Pi * v, phi = 2.0f * Pi * u;
-        n = {std::sin(theta) * std::cos(phi), -std::cos(theta), std::sin(theta) * std::sin(phi)};
-        p = n;
-    });
+    addGrid(
+        mesh, 96, 48,
+        [](float u, float v, glm::vec3& p, glm::vec3& n) {
+            float theta = Pi * v, phi = 2.0f * Pi * u;
+            n = {std::sin(theta) * std::cos(phi), -std::cos(theta), std::sin(theta) * std::sin(phi)};
+            p = n;
+        },
+        {}, backColumn(96));
     return mesh;
 }
 
 MeshData cube() {
     // Per-face vertices: each face its own flat normal, so the shading has crisp edges while the
     // marbling (a function of position only) runs on across them.
+    // The texture by faces, six square tiles in two rows (the top two thirds of the texture):
+    // left, front, right above back, top, bottom, so the first row runs on round the sides.
+    // Each face shows its tile upright and unmirrored seen from outside: the sides with +y up,
+    // the top with its back edge up, the bottom with its front edge up.
     MeshData mesh;
     const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    for (const glm::vec3& n : normals) {
+    const glm::ivec2 tiles[6] = {{2, 0}, {0, 0}, {1, 1}, {2, 1}, {1, 0}, {0, 1}}; // (column, row)
+    for (int face = 0; face < 6; ++face) {
+        const glm::vec3& n = normals[face];
         glm::vec3 u = std::abs(n.y) > 0.5f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
         glm::vec3 v = glm::cross(n, u);
+        // The tile's up and right directions on the face, right x up = n (seen from outside).
+        const glm::vec3 up = std::abs(n.y) > 0.5f ? glm::vec3(0, 0, -n.y) : glm::vec3(0, 1, 0);
+        const glm::vec3 right = glm::cross(up, n);
+        const UvBox tile = inset({float(tiles[face].x) / 3.0f, float(tiles[face].y) / 3.0f,
+                                  float(tiles[face].x + 1) / 3.0f, float(tiles[face].y + 1) / 3.0f});
         auto base = std::uint32_t(mesh.positions.size());
         for (auto [a, b] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
-            mesh.positions.push_back(n + a * u + b * v);
+            const glm::vec3 p = n + a * u + b * v;
+            mesh.positions.push_back(p);
             mesh.normals.push_back(n);
+            mesh.uvs.push_back(tile.at(0.5f + 0.5f * glm::dot(p, right), 0.5f - 0.5f * glm::dot(p, up)));
         }
         // u x v = n, so (0,1,2) runs counter-clockwise seen from outside.
         mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
@@ -130,14 +211,19 @@ MeshData cube() {
 MeshData torus() {
     // A circle of radius `minor` turned about +y, traversed so its outward normal is (cos t, sin t).
     MeshData mesh;
+    // The texture by its two angles: across, round the axis (the seam at the back); down, round
+    // the tube from the inner equator over the top and back (the seam inside the hole).
     const float major = 1.0f, minor = 0.4f;
-    addGrid(mesh, 128, 64, [&](float u, float v, glm::vec3& p, glm::vec3& n) {
-        float phi = 2.0f * Pi * u, t = 2.0f * Pi * v - Pi;
-        float c = std::cos(phi), s = std::sin(phi);
-        n = {std::cos(t) * c, std::sin(t), std::cos(t) * s};
-        p = glm::vec3((major + minor * std::cos(t)) * c, minor * std::sin(t),
-                      (major + minor * std::cos(t)) * s);
-    });
+    addGrid(
+        mesh, 128, 64,
+        [&](float u, float v, glm::vec3& p, glm::vec3& n) {
+            float phi = 2.0f * Pi * u, t = 2.0f * Pi * v - Pi;
+            float c = std::cos(phi), s = std::sin(phi);
+            n = {std::cos(t) * c, std::sin(t), std::cos(t) * s};
+            p = glm::vec3((major + minor * std::cos(t)) * c, minor * std::sin(t),
+                          (major + minor * std::cos(t)) * s);
+        },
+        {}, backColumn(128));
     return mesh;
 }
 
@@ -172,21 +258,25 @@ MeshData vase() {
 
 MeshData teapot() {
     // A lathe-turned body and lid with a tube spout and handle: teapot-like, not Newell's patches.
+    // The texture by parts: the body round and up in the top 60%, the spout and the handle round
+    // and along in a band each below it, their four end discs side by side at the bottom.
     MeshData mesh;
     std::vector<glm::vec2> keys = {{0.0f, -0.75f}, {0.55f, -0.75f}, {0.85f, -0.45f}, {0.95f, -0.05f},
                                    {0.8f, 0.35f},  {0.55f, 0.5f},   {0.5f, 0.55f},   {0.3f, 0.62f},
                                    {0.1f, 0.7f},   {0.12f, 0.82f},  {0.0f, 0.9f}};
-    addLathe(mesh, smoothProfile(keys, 8), 96);
+    addLathe(mesh, smoothProfile(keys, 8), 96, inset({0.0f, 0.0f, 1.0f, 0.6f}));
+    auto disc = [](int k) { return inset({0.1f * float(k), 0.9f, 0.1f * float(k + 1), 1.0f}); };
+    const UvBox spoutEnds[2] = {disc(0), disc(1)}, handleEnds[2] = {disc(2), disc(3)};
     addTube(
         mesh, [](float t) { return glm::vec3(0.7f + 0.75f * t, -0.2f + 0.75f * t * t + 0.1f * t, 0.0f); },
-        [](float t) { return 0.2f - 0.11f * t; }, 24, 24);
+        [](float t) { return 0.2f - 0.11f * t; }, 24, 24, inset({0.0f, 0.6f, 1.0f, 0.75f}), spoutEnds);
     addTube(
         mesh,
         [](float t) {
             float a = Pi * (0.5f - t * 1.05f) * 0.95f;
             return glm::vec3(-0.85f - 0.38f * std::cos(a), 0.1f + 0.4f * std::sin(a), 0.0f);
         },
-        [](float) { return 0.075f; }, 32, 16);
+        [](float) { return 0.075f; }, 32, 16, inset({0.0f, 0.75f, 1.0f, 0.9f}), handleEnds);
     return mesh;
 }
 

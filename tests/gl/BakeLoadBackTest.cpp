@@ -14,6 +14,11 @@
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <set>
+
 namespace marbler {
 namespace {
 
@@ -77,6 +82,55 @@ TEST(BakeLoadBack, OwnUvsFromAFileGiveTheSameTexture) {
     const test::ImageDiff diff = test::compareImages(first.texture, second.texture, 0);
     EXPECT_GT(diff.shareWithin, 0.995) << "a flipped or shifted v axis would move every triangle";
     EXPECT_EQ(test::readImage8(dir / "vase.png").rgb, first.texture.rgb);
+}
+
+TEST(BakeLoadBack, EveryBuiltInObjectKeepsItsOwnUvsInTheFile) {
+    // Baked at 256 by its own texture coordinates (issue 23), each object's GLB read back by
+    // assimp has those coordinates (the same set, v counted upwards there) and its texture shows
+    // the design.
+    const auto dir = test::outputDir("bake-own-uvs-load-back");
+    for (const std::string& name : builtinMeshNames()) {
+        SCOPED_TRACE(name);
+        const MeshData mesh = gl::builtinMesh(name);
+        ASSERT_TRUE(hasUsableUvs(mesh));
+        const Baked baked = bake(slateBlock(), mesh, 256);
+        writeTexturedMesh(baked.mesh, baked.texture, dir / (name + ".glb"));
+        Assimp::Importer importer;
+        const aiScene* scene = importer.ReadFile((dir / (name + ".glb")).string(), aiProcess_Triangulate);
+        ASSERT_TRUE(scene && !(scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) << importer.GetErrorString();
+        ASSERT_EQ(scene->mNumMeshes, 1u);
+        const aiMesh* in = scene->mMeshes[0];
+        ASSERT_TRUE(in->HasTextureCoords(0));
+        ASSERT_EQ(in->mNumVertices, mesh.uvs.size());
+        std::vector<std::pair<float, float>> read, made;
+        for (unsigned v = 0; v < in->mNumVertices; ++v)
+            read.emplace_back(in->mTextureCoords[0][v].x, 1.0f - in->mTextureCoords[0][v].y);
+        for (const glm::vec2& uv : mesh.uvs)
+            made.emplace_back(uv.x, uv.y);
+        std::sort(read.begin(), read.end());
+        std::sort(made.begin(), made.end());
+        int differing = 0;
+        for (std::size_t k = 0; k < made.size(); ++k)
+            differing += std::abs(read[k].first - made[k].first) > 1e-6f ||
+                         std::abs(read[k].second - made[k].second) > 1e-6f;
+        EXPECT_EQ(differing, 0);
+
+        // The texture inside the GLB is the baked one, and shows more than one colour.
+        ASSERT_EQ(scene->mNumTextures, 1u);
+        const aiTexture* texture = scene->mTextures[0];
+        ASSERT_EQ(texture->mHeight, 0u) << "a compressed (PNG) texture";
+        const std::filesystem::path png = dir / (name + "-inside.png");
+        {
+            std::ofstream out(png, std::ios::binary);
+            out.write(reinterpret_cast<const char*>(texture->pcData), std::streamsize(texture->mWidth));
+        }
+        const Image inside = test::readImage8(png);
+        EXPECT_EQ(inside.rgb, baked.texture.rgb);
+        std::set<std::array<std::uint8_t, 3>> colours;
+        for (std::size_t k = 0; k + 2 < inside.rgb.size(); k += 3)
+            colours.insert({inside.rgb[k], inside.rgb[k + 1], inside.rgb[k + 2]});
+        EXPECT_GT(colours.size(), 3u);
+    }
 }
 
 } // namespace

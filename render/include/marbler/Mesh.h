@@ -35,8 +35,12 @@ std::string builtinMeshList();
 /// Whether `name` is one of builtinMeshNames().
 bool isBuiltinMesh(const std::string& name);
 
-/// A built-in object (+y up, about unit size, no texture coordinates). Throws InputError for an
-/// unknown name.
+/// A built-in object (+y up, about unit size) with its natural texture coordinates, no two
+/// triangles overlapping in them and none wrapping round a seam: the vase, the sphere (by
+/// longitude and latitude) and the torus (by its two angles) round and up over the whole
+/// texture, the seam at the back (-z), the texture's middle facing the front (+z); the cube by
+/// faces, six tiles; the teapot by parts. Seen from outside every texture reads the right way
+/// round, unmirrored. Throws InputError for an unknown name.
 MeshData builtinMesh(const std::string& name);
 
 } // namespace marbler
