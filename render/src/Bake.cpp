@@ -61,6 +61,19 @@ MeshPlacement placeMesh(const Genome& genome, const MeshData& mesh) {
     return placement;
 }
 
+FlatOnUvs::FlatOnUvs(const Genome& genome)
+    : size(genome.size.x, genome.size.y)
+    , side(std::max(genome.size.x, genome.size.y))
+    , origin(0.5 * (size - glm::dvec2(side))) {}
+
+glm::dvec3 FlatOnUvs::designPoint(const glm::dvec2& uv) const {
+    return {origin.x + uv.x * side, origin.y + uv.y * side, 0.0};
+}
+
+bool FlatOnUvs::inside(const glm::dvec3& q) const {
+    return q.x >= 0.0 && q.x <= size.x && q.y >= 0.0 && q.y <= size.y;
+}
+
 bool hasUsableUvs(const MeshData& mesh) {
     if (mesh.uvs.empty() || mesh.uvs.size() != mesh.positions.size()) return false;
     for (const glm::vec2& uv : mesh.uvs)
@@ -122,6 +135,7 @@ MeshData withGeneratedUvs(const MeshData& mesh, int textureSize) {
                          "texels); give a larger --texture or a mesh with its own texture coordinates");
 
     MeshData out;
+    out.uvsArePatches = true;
     out.positions.reserve(triangles * 3);
     out.normals.reserve(triangles * 3);
     out.uvs.reserve(triangles * 3);
@@ -209,6 +223,8 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
         throw InputError("the mesh has no texture coordinates within [0, 1] to bake into");
     const AaPattern pattern = aaPattern(settings.aa);
     const MeshPlacement placement = placeMesh(genome, mesh);
+    const FlatOnUvs flatOnUvs(genome);
+    const bool throughUvs = genome.dimension == 2 && !mesh.uvsArePatches;
 
     // Which triangle each texel centre lies in, in index order (the first wins an overlap).
     const std::size_t texels = std::size_t(n) * std::size_t(n);
@@ -258,6 +274,8 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
         std::vector<int> colors(xs.size());
         // With bleed, soft edges: the kernel's composited linear colours instead of indices.
         std::vector<double> soft(soften ? xs.size() * 3 : 0);
+        // Samples beyond a flat design's rectangle (through the UVs): the background.
+        std::vector<std::uint8_t> outside(xs.size(), 0);
         std::vector<int> columns;
         for (int j; rowLoop.next(j);) {
             columns.clear();
@@ -277,10 +295,19 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                         w = glm::max(w, glm::dvec3(0.0));
                         w /= w.x + w.y + w.z;
                     }
-                    const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) +
-                                         w.y * glm::dvec3(mesh.positions[v[1]]) +
-                                         w.z * glm::dvec3(mesh.positions[v[2]]);
-                    const glm::dvec3 q = placement.designPoint(p);
+                    glm::dvec3 q;
+                    if (throughUvs) {
+                        const glm::dvec2 uv = w.x * glm::dvec2(mesh.uvs[v[0]]) +
+                                              w.y * glm::dvec2(mesh.uvs[v[1]]) +
+                                              w.z * glm::dvec2(mesh.uvs[v[2]]);
+                        q = flatOnUvs.designPoint(uv);
+                        outside[count] = !flatOnUvs.inside(q);
+                    } else {
+                        const glm::dvec3 p = w.x * glm::dvec3(mesh.positions[v[0]]) +
+                                             w.y * glm::dvec3(mesh.positions[v[1]]) +
+                                             w.z * glm::dvec3(mesh.positions[v[2]]);
+                        q = placement.designPoint(p);
+                    }
                     xs[count] = q.x;
                     ys[count] = q.y;
                     zs[count] = q.z;
@@ -296,10 +323,11 @@ BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeS
                 glm::dvec3 sum(0.0);
                 for (std::size_t s = 0; s < perTexel; ++s, ++k) {
                     const int color = colors[k];
-                    const glm::dvec3 seen = soften ? glm::dvec3(soft[k * 3], soft[k * 3 + 1], soft[k * 3 + 2])
-                                            : color >= 0 && std::size_t(color) < palette.size()
-                                                ? palette[std::size_t(color)]
-                                                : background;
+                    const glm::dvec3 seen =
+                        outside[k] ? background
+                        : soften   ? glm::dvec3(soft[k * 3], soft[k * 3 + 1], soft[k * 3 + 2])
+                        : color >= 0 && std::size_t(color) < palette.size() ? palette[std::size_t(color)]
+                                                                            : background;
                     sum += pattern.weights[s] * seen;
                 }
                 std::uint8_t* out = image.row(j) + std::size_t(i) * 3;

@@ -150,6 +150,45 @@ TEST(Bake, EveryBuiltInObjectBakesAt256ByItsOwnUvs) {
     }
 }
 
+TEST(Bake, AFlatDesignLiesOnAnObjectsOwnUvs) {
+    // On the sphere's own UVs (covering the whole texture) a flat design is the design itself:
+    // texel (i, j) shows the design at the texel's point of the design fitted into the unit
+    // square by its longer side, aspect kept, centred; beyond its rectangle, the background.
+    Genome genome = test::loadExample("flame-comb-vortex.marble.json");
+    genome.size.y = 0.5 * genome.size.x; // a landscape design: background bands above and below
+    const int n = 256;
+    BakeSettings settings;
+    settings.textureSize = n;
+    settings.aa = "none";
+    settings.dilation = 0;
+    const BakedTexture baked = bakeTexture(genome, builtinMesh("sphere"), settings);
+    const CpuRenderer reference(genome);
+    const double side = genome.size.x, top = 0.5 * (genome.size.y - side);
+    int differing = 0, inside = 0, band = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec3 q(side * (i + 0.5) / n, top + side * (j + 0.5) / n, 0.0);
+            const bool within = q.y >= 0.0 && q.y <= genome.size.y;
+            const int index = within ? reference.colorIndexAt(q) : -1;
+            const auto expected =
+                bytesOf(index >= 0 ? genome.palette[std::size_t(index)] : genome.background);
+            differing += texel(baked.image, i, j) != expected;
+            inside += within;
+            band += !within;
+        }
+    EXPECT_EQ(baked.coveredTexels, std::size_t(n) * std::size_t(n)) << "the sphere's UVs cover the texture";
+    EXPECT_GT(inside, n * n / 3);
+    EXPECT_GT(band, n * n / 3);
+    EXPECT_LE(differing, n * n / 1000) << differing << " texels differ";
+}
+
+TEST(Bake, GeneratedUvsKeepTheFlatProjection) {
+    // A mosaic of patches is no layout of the design: a flat design is still projected along z.
+    const MeshData mesh = withGeneratedUvs(builtinMesh("cube"), 64);
+    EXPECT_TRUE(mesh.uvsArePatches);
+    EXPECT_FALSE(builtinMesh("cube").uvsArePatches);
+}
+
 TEST(Bake, AntialiasedTexelsAgreeWithSingleSamples) {
     // rgss averages four samples within the texel, each on the triangle: where the design is
     // uniform round a texel, it shows that colour exactly; elsewhere it is a blend close to it.

@@ -35,6 +35,7 @@ TEST(MeshUv, EveryBuiltInObjectHasUvsWithinTheUnitSquare) {
         const MeshData mesh = builtinMesh(name);
         ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
         ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+        EXPECT_FALSE(mesh.uvsArePatches);
         for (const glm::vec2& uv : mesh.uvs) {
             ASSERT_GE(uv.x, 0.0f);
             ASSERT_LE(uv.x, 1.0f);

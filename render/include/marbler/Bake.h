@@ -33,6 +33,21 @@ struct MeshPlacement {
 };
 MeshPlacement placeMesh(const Genome& genome, const MeshData& mesh);
 
+/// Where a flat design lies on an object's own texture coordinates: its rectangle fitted into
+/// the texture's unit square by its longer side, keeping its aspect and centred across the
+/// shorter one (whose two bands beyond the design show the background), +y downwards as in
+/// both. So a flat design baked onto the book or the vase is the design itself, not a projection.
+struct FlatOnUvs {
+    explicit FlatOnUvs(const Genome& genome);
+    glm::dvec2 size;   ///< the design's width and height
+    double side;       ///< the design length across the whole texture
+    glm::dvec2 origin; ///< the design point at UV (0, 0)
+    /// The design point (z = 0) at texture coordinates `uv`.
+    glm::dvec3 designPoint(const glm::dvec2& uv) const;
+    /// Whether a design point lies within the design's rectangle.
+    bool inside(const glm::dvec3& q) const;
+};
+
 /// Texture coordinates in which no two triangles overlap, with a gutter of 1.5 texels or more
 /// round each patch: the mesh with every triangle's vertices of its own (positions and normals
 /// copied), consecutive triangles paired into the square cells of a grid, each pair the two
@@ -40,7 +55,8 @@ MeshPlacement placeMesh(const Genome& genome, const MeshData& mesh);
 /// the diagonal, so the texture runs on across that edge; any other pair is drawn apart from it.
 /// Honest and simple: no texel serves two points of the surface; the price is a seam round
 /// every cell and texels stretched where a quad is far from a square. Throws InputError when
-/// the triangles are too many for the texture (a side under 3 texels).
+/// the triangles are too many for the texture (a side under 3 texels). The result is marked
+/// MeshData::uvsArePatches, so a flat design is still projected onto it along z.
 MeshData withGeneratedUvs(const MeshData& mesh, int textureSize);
 
 /// Whether the mesh has texture coordinates that can be baked into: one per vertex, all within
@@ -68,8 +84,10 @@ struct BakedTexture {
 
 /// Evaluates the design at the surface point behind each texel whose centre lies in a triangle
 /// of `mesh` in UV space (the first triangle in index order where triangles overlap), on every
-/// core, then dilates. `mesh` must have UVs (hasUsableUvs). Throws InputError for bad settings,
-/// a genome with a source image, or a mesh without usable UVs; Cancelled when cancelled.
+/// core, then dilates. A flat design on a mesh's own UVs (not uvsArePatches) is evaluated at
+/// the texel's point of the design instead (FlatOnUvs). `mesh` must have UVs (hasUsableUvs).
+/// Throws InputError for bad settings, a genome with a source image, or a mesh without usable
+/// UVs; Cancelled when cancelled.
 BakedTexture bakeTexture(const Genome& genome, const MeshData& mesh, const BakeSettings& settings,
                          const RenderControl* control = nullptr);
 

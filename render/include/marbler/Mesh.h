@@ -19,6 +19,9 @@ struct MeshData {
     /// corner of the texture and v grows downwards (as in glTF; OBJ and assimp count v upwards).
     std::vector<glm::vec2> uvs;
     std::vector<std::uint32_t> indices; ///< three per triangle
+    /// Whether the UVs are a mosaic of patches made for baking (withGeneratedUvs) rather than
+    /// the object's own: a flat design is then projected onto the object, not laid on its UVs.
+    bool uvsArePatches = false;
 };
 
 /// The built-in objects, in the order the window lists them: vase (the default), sphere, cube,
