@@ -28,10 +28,12 @@ constexpr const char* BakeHelp =
 
 Bakes a design onto an object for other 3D tools: every texel of an N x N texture gets the
 colour of the design at the point of the object's surface that the texel covers, the object
-placed in the design's box as the window shows it (a flat design is projected onto it along z:
-upright seen from the front). The object keeps its own texture coordinates when it has them
-within [0, 1]; otherwise each triangle, or pair of triangles sharing an edge, gets a patch of
-its own (no two overlap), so the texture is a mosaic that the object's UVs put back together.
+placed in the design's box as the window shows it. The object keeps its own texture
+coordinates when it has them within [0, 1] (the built-in objects have their natural ones:
+round and up, a cube by its faces), and a flat design lies on them, fitted into the texture by
+its longer side, so the texture is the design itself. Otherwise each triangle, or pair of
+triangles sharing an edge, gets a patch of its own (a mosaic that the object's UVs put back
+together), and a flat design is projected onto the object along z, upright seen from the front.
 The object is written in its own units with its normals: .glb (glTF 2.0 binary, the PNG
 texture inside), .gltf (with OUT.bin and OUT.png beside it) or .obj (with OUT.mtl and OUT.png).
 
