@@ -90,7 +90,7 @@ TEST(Conformance, EbruHeartsRenderAsTheirReference) {
     // the independent reference's render without antialiasing: pixel for pixel but for a hair's
     // width of edges.
     Genome genome = loadGenome(test::dataDir() / "examples" / "ebru-hearts.marble.json");
-    Image expected = test::readImage8(test::dataDir() / "examples" / "ebru-hearts-noaa.png");
+    Image expected = test::readImage8(test::dataDir() / "reference" / "ebru-hearts-noaa.png");
     RenderSettings settings;
     settings.width = expected.width;
     settings.height = expected.height;
