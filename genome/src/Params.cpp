@@ -521,7 +521,10 @@ Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center) {
         // A straight stroke through the centre, two fifths of its larger coordinate long.
         double half = std::max({std::abs(center.x), std::abs(center.y), 1.0}) * 0.2;
         op.path = {{center.x - half, center.y}, {center.x + half, center.y}};
-        op.steps = std::max(op.steps, minimumStylusSteps(op));
+        // Steps enough for a rake of two: the step form can add a tine without more steps.
+        Operation rake = op;
+        rake.tines = 2;
+        op.steps = std::max(op.steps, minimumStylusSteps(rake));
     }
     return op;
 }
