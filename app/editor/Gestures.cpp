@@ -133,6 +133,8 @@ bool panelSets(EditorTool tool, ParamField field) {
         return field == F::Power;
     case EditorGesture::Cell:
         return field == F::Field || field == F::Speed || field == F::Time;
+    case EditorGesture::Path:
+        return false; // the drag draws the path; the rest starts as the registry says
     }
     return false;
 }
@@ -330,8 +332,65 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         ops.push_back(op);
         break;
     }
+    case EditorGesture::Path: {
+        // Press and release alone: a straight path (pathSteps takes every point of a drag).
+        if (!stroke || dim != 2) break;
+        std::vector<Operation> drawn = pathSteps(tool, s, {p, q}, design);
+        ops.insert(ops.end(), drawn.begin(), drawn.end());
+        break;
+    }
     }
     return ops;
+}
+
+std::vector<glm::dvec2> smoothedPath(const std::vector<glm::dvec3>& points, double spacing) {
+    std::vector<glm::dvec2> kept;
+    spacing = std::max(spacing, 1e-3);
+    for (const glm::dvec3& point : points) {
+        const glm::dvec2 at(point.x, point.y);
+        if (!std::isfinite(at.x) || !std::isfinite(at.y)) continue;
+        if (kept.empty() || glm::length(at - kept.back()) >= spacing) kept.push_back(at);
+    }
+    // The last point of the drag ends the path, unless it lies on the last one kept.
+    if (!points.empty() && !kept.empty()) {
+        const glm::dvec2 end(points.back().x, points.back().y);
+        if (end != kept.back() && std::isfinite(end.x) && std::isfinite(end.y)) {
+            if (kept.size() > 1 && glm::length(end - kept.back()) < 0.5 * spacing)
+                kept.back() = end;
+            else
+                kept.push_back(end);
+        }
+    }
+    // A pointer's jitter smoothed away: each inner point moved halfway towards the middle of
+    // its neighbours (ends kept).
+    std::vector<glm::dvec2> smooth = kept;
+    for (std::size_t i = 1; i + 1 < kept.size(); ++i)
+        smooth[i] = 0.5 * kept[i] + 0.25 * (kept[i - 1] + kept[i + 1]);
+    // Consecutive points stay different (the format's rule).
+    std::vector<glm::dvec2> path;
+    for (const glm::dvec2& at : smooth)
+        if (path.empty() || at != path.back()) path.push_back(at);
+    return path;
+}
+
+std::vector<Operation> pathSteps(EditorTool tool, const ToolSettings& s,
+                                 const std::vector<glm::dvec3>& points, const Genome& design) {
+    if (!tool.inRegistry() || gestureOf(tool) != EditorGesture::Path || design.dimension != 2) return {};
+    (void)s;
+    // Points a few units apart: fine enough to follow a hand, coarse enough for the file; a
+    // long drag spaces them wider so the path stays within the format's points.
+    double length = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i)
+        length += glm::length(glm::dvec2(points[i] - points[i - 1]));
+    const double spacing = std::max(PathPointSpacing, length / double(MaxPathPoints - 2));
+    std::vector<glm::dvec2> path = smoothedPath(points, spacing);
+    if (path.size() < 2 || glm::length(path.back() - path.front()) + length < MinStrokeLength) return {};
+    Operation op = defaultOperation(tool.tool(), 2, points.front());
+    op.path = std::move(path);
+    op.pressure.clear();
+    op.steps = minimumStylusSteps(op);
+    if (op.steps > MaxStylusSteps) return {};
+    return {op};
 }
 
 } // namespace marbler::ui

@@ -84,6 +84,19 @@ struct ToolSettings {
 std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, const glm::dvec3& press,
                                     const glm::dvec3& release, const Genome& design, int sliceAxis = 2);
 
+/// How far apart a drawn path's points are kept, in design units (at the least).
+inline constexpr double PathPointSpacing = 4.0;
+
+/// The points of a free-hand drag as a path: points closer than `spacing` to the last one
+/// kept dropped, the drag's end kept, inner points smoothed, consecutive points different.
+std::vector<glm::dvec2> smoothedPath(const std::vector<glm::dvec3>& points, double spacing);
+
+/// The step a free-hand drag through `points` makes with a path tool (stylus): its smoothed
+/// polyline, the registry's starting values, the fewest valid steps. Empty for another tool,
+/// a solid, or a drag too short.
+std::vector<Operation> pathSteps(EditorTool tool, const ToolSettings& s,
+                                 const std::vector<glm::dvec3>& points, const Genome& design);
+
 /// Whether the tool works on designs of this dimension (stretch and flow are flat only) and has
 /// a gesture there.
 bool toolAvailable(EditorTool tool, int dimension);

@@ -134,6 +134,9 @@ void describeParameter(const ParamSpec& spec, const Operation& a, const Operatio
         out.push_back({label, key + " " + fromTo(from, to, std::abs(from[0]) >= 10.0 ? 0 : 2),
                        std::abs(to[0] - from[0]) / scale});
         return;
+    case ParamKind::Pressure:
+        out.push_back({label, key + " changed by up to " + fixed(largestDifference(from, to), 2), 1.0});
+        return;
     case ParamKind::Count:
         out.push_back(
             {label, key + " " + fromTo(from, to, 0), std::abs(to[0] - from[0]) / std::max(1.0, from[0])});
@@ -148,6 +151,7 @@ void describeParameter(const ParamSpec& spec, const Operation& a, const Operatio
                        1.0});
         return;
     case ParamKind::Teeth:
+    case ParamKind::Path: // a stylus's path: its numbers' count, else how far they moved
         if (from.size() != to.size())
             out.push_back(
                 {label, key + " " + std::to_string(from.size()) + " → " + std::to_string(to.size()), 1.0});

@@ -153,6 +153,8 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool r
         case ParamKind::Count: // a flow's steps follow its speed, time and size, below
         case ParamKind::Color:
         case ParamKind::Choice:
+        case ParamKind::Path: // a stylus's path and pressure are kept (phase 1 of issue 24)
+        case ParamKind::Pressure:
             break;
         }
     }
@@ -165,6 +167,17 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool r
             op.extent = original.extent;
         }
         op.steps = std::max(op.steps, minimumFlowSteps(op));
+    }
+    if (op.tool == Tool::Stylus) {
+        // Enough steps for the new pull, sharpness and reach; a draw that would need more than
+        // the format allows keeps the old ones.
+        if (minimumStylusSteps(op) > MaxStylusSteps) {
+            op.alpha = original.alpha;
+            op.lambda = original.lambda;
+            op.reach = original.reach;
+            op.spacing = original.spacing;
+        }
+        op.steps = std::max(op.steps, minimumStylusSteps(op));
     }
     if (hasFrame) {
         // Keep direction and normal a valid frame: the normal loses its part along the

@@ -163,6 +163,37 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
             }
             continue;
         }
+        if (spec.kind == ParamKind::Path) {
+            if (op.path.size() < 2 || op.path.size() > MaxPathPoints)
+                throw GenomeError(name, key,
+                                  "must hold 2 to " + std::to_string(MaxPathPoints) + " points (got " +
+                                      std::to_string(op.path.size()) + ")");
+            for (std::size_t i = 0; i < op.path.size(); ++i) {
+                for (int j = 0; j < 2; ++j)
+                    if (!std::isfinite(op.path[i][j]))
+                        throw GenomeError(name, indexed(indexed(key, i), static_cast<std::size_t>(j)),
+                                          "must be finite (got " + formatNumber(op.path[i][j]) + ")");
+                if (i > 0 && op.path[i] == op.path[i - 1])
+                    throw GenomeError(name, indexed(key, i), "must differ from the point before it");
+            }
+            continue;
+        }
+        if (spec.kind == ParamKind::Pressure) {
+            if (!op.pressure.empty() && op.pressure.size() != op.path.size())
+                throw GenomeError(name, key,
+                                  "must hold one number per path point, " + std::to_string(op.path.size()) +
+                                      " (got " + std::to_string(op.pressure.size()) + ")");
+            for (std::size_t i = 0; i < op.pressure.size(); ++i) {
+                double value = op.pressure[i];
+                if (!std::isfinite(value))
+                    throw GenomeError(name, indexed(key, i),
+                                      "must be finite (got " + formatNumber(value) + ")");
+                if (!spec.range.contains(value))
+                    throw GenomeError(name, indexed(key, i),
+                                      spec.range.describe() + " (got " + formatNumber(value) + ")");
+            }
+            continue;
+        }
         if (spec.kind == ParamKind::Color) {
             if (op.color < 0 || op.color >= paletteSize)
                 throw GenomeError(name, key,
@@ -190,7 +221,21 @@ void checkOperation(const Operation& op, int dimension, int paletteSize, bool in
     if (dimension == 3 && findParam(params, ParamField::Direction) && findParam(params, ParamField::Normal) &&
         parallel(op.direction, op.normal))
         throw GenomeError(name, member(where, "normal"), "must not be parallel to direction");
-    if (findParam(params, ParamField::Steps) && op.steps < minimumFlowSteps(op)) {
+    if (op.tool == Tool::Stylus && op.steps < minimumStylusSteps(op)) {
+        int needed = minimumStylusSteps(op);
+        throw GenomeError(
+            name, member(where, "steps"),
+            needed > MaxStylusSteps
+                ? "cannot be enough: this path, alpha, lambda, reach, tines and pressure need "
+                  "more than " +
+                      std::to_string(MaxStylusSteps) + " steps (got " + std::to_string(op.steps) +
+                      "); split the stroke into "
+                      "shorter strokes"
+                : "must be at least max(4 L / reach, 2 L k c_max (3.1 / reach + 0.65 / lambda + "
+                  "6.3 lambda / reach^2)) = " +
+                      std::to_string(needed) + " (got " + std::to_string(op.steps) + ")");
+    }
+    if (op.tool == Tool::Flow && op.steps < minimumFlowSteps(op)) {
         int needed = minimumFlowSteps(op);
         throw GenomeError(
             name, member(where, "steps"),
@@ -278,9 +323,14 @@ private:
     /// A version-2 feature in a file that says version 1 is refused, so that an older reader
     /// (which would ignore it) and a newer one never disagree about one file.
     void needVersion2(const std::string& where, const std::string& what = "") const {
-        if (mVersion >= 2) return;
-        fail(where, (what.empty() ? std::string() : what + " ") +
-                        "needs format version 2 (the file says version " + std::to_string(mVersion) + ")");
+        needVersion(2, where, what);
+    }
+
+    void needVersion(int version, const std::string& where, const std::string& what = "") const {
+        if (mVersion >= version) return;
+        fail(where, (what.empty() ? std::string() : what + " ") + "needs format version " +
+                        std::to_string(version) + " (the file says version " + std::to_string(mVersion) +
+                        ")");
     }
 
     void warnUnknown(const std::string& where, const std::string& key) {
@@ -390,7 +440,7 @@ private:
             fail(member(where, "tool"),
                  describe(toolName) + " is not allowed in initial (only " + initialToolsText() + ")");
 
-        if (tool->version >= 2) needVersion2(member(where, "tool"), describe(toolName));
+        if (tool->version >= 2) needVersion(tool->version, member(where, "tool"), describe(toolName));
         Operation op;
         op.tool = tool->tool;
         std::span<const ParamSpec> params = tool->params(dimension);
@@ -407,8 +457,13 @@ private:
         for (const ParamSpec& spec : params) {
             if (spec.kind == ParamKind::Choice) continue;
             std::string at = member(where, spec.key);
-            if (spec.optional && !entry.contains(spec.key)) continue; // keeps its default
-            if (spec.version >= 2) needVersion2(at);
+            if (spec.optional && !entry.contains(spec.key)) {
+                // Left out: the table's default (a list, a stylus's pressure, stays empty: all 1).
+                if (spec.kind != ParamKind::Pressure && componentCount(spec, op, dimension) == 1)
+                    setComponent(spec, op, 0, spec.defaultValue);
+                continue;
+            }
+            if (spec.version >= 2) needVersion(spec.version, at);
             const Json& value = require(entry, where, spec.key);
             int count = componentCount(spec, op, dimension);
             switch (spec.kind) {
@@ -431,6 +486,28 @@ private:
             case ParamKind::Extent:
                 readComponents(value, at, spec, op, count, true);
                 break;
+            case ParamKind::Path: {
+                if (!value.is_array() || value.size() < 2 || value.size() > MaxPathPoints)
+                    fail(at, "must be an array of 2 to " + std::to_string(MaxPathPoints) +
+                                 " points [x, y] (got " + describe(value) + ")");
+                for (std::size_t i = 0; i < value.size(); ++i) {
+                    std::string point = indexed(at, i);
+                    if (!value[i].is_array() || value[i].size() != 2)
+                        fail(point, "must be a point [x, y] (got " + describe(value[i]) + ")");
+                    for (std::size_t j = 0; j < 2; ++j)
+                        setComponent(spec, op, static_cast<int>(2 * i + j),
+                                     readNumber(value[i][j], indexed(point, j)));
+                }
+                break;
+            }
+            case ParamKind::Pressure: {
+                if (!value.is_array() || value.size() != op.path.size())
+                    fail(at, "must be an array of one number per path point, " +
+                                 std::to_string(op.path.size()) + " (got " + describe(value) + ")");
+                for (std::size_t i = 0; i < value.size(); ++i)
+                    setComponent(spec, op, static_cast<int>(i), readNumber(value[i], indexed(at, i)));
+                break;
+            }
             case ParamKind::Position:
             case ParamKind::Direction:
                 readComponents(value, at, spec, op, count, true);
@@ -451,6 +528,8 @@ private:
                 break;
             }
         }
+        if (op.tool == Tool::Stylus && op.tines > 1 && !entry.contains("spacing"))
+            fail(member(where, "spacing"), "missing: a rake (tines > 1) needs the spacing of its tines");
         for (auto it = entry.begin(); it != entry.end(); ++it) {
             if (it.key() == "tool") continue;
             bool known = std::any_of(params.begin(), params.end(),
@@ -540,10 +619,15 @@ Json operationJson(const Operation& op, int dimension) {
         } else if (spec.optional && !usesVersion2(spec, op)) {
             continue; // at its default: left out, so the file stays the lowest version
         } else if (spec.kind == ParamKind::Count) {
-            entry[key] = op.steps;
+            entry[key] = static_cast<int>(getComponent(spec, op, 0));
+        } else if (spec.kind == ParamKind::Path) {
+            Json points = Json::array();
+            for (const glm::dvec2& p : op.path)
+                points.push_back(Json::array({number(p.x), number(p.y)}));
+            entry[key] = std::move(points);
         } else if (spec.kind == ParamKind::Position || spec.kind == ParamKind::Direction ||
                    spec.kind == ParamKind::Extent || spec.kind == ParamKind::Teeth ||
-                   (spec.pair && count == 2)) {
+                   spec.kind == ParamKind::Pressure || (spec.pair && count == 2)) {
             Json values = Json::array();
             for (int i = 0; i < count; ++i)
                 values.push_back(number(getComponent(spec, op, i)));

@@ -3,6 +3,9 @@
 #include "marbler/Error.h"
 #include "marbler/Params.h"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -15,7 +18,37 @@ namespace {
 struct GrowthRule {
     ParamField field;
     bool inkRadius;
+    /// A stylus grows by travelling: at progress s it runs its first floor(s n) steps.
+    bool travels = false;
 };
+
+/// A stylus that has run only its first `steps` integration steps: its path cut at arc length
+/// steps h (h = L / n kept, so each step's time and the stylus's place are those of the whole
+/// stroke), with its pressure interpolated at the cut.
+Operation travelled(const Operation& op, int steps) {
+    const double cut = pathLength(op) * steps / op.steps;
+    Operation part = op;
+    part.steps = steps;
+    part.path.assign(1, op.path.front());
+    if (!op.pressure.empty()) part.pressure.assign(1, op.pressure.front());
+    double at = 0.0;
+    for (std::size_t i = 1; i < op.path.size(); ++i) {
+        const double len = glm::length(op.path[i] - op.path[i - 1]);
+        if (at + len < cut) {
+            part.path.push_back(op.path[i]);
+            if (!op.pressure.empty()) part.pressure.push_back(op.pressure[i]);
+            at += len;
+            continue;
+        }
+        // The cut on a point keeps the point itself.
+        const double f = std::clamp((cut - at) / len, 0.0, 1.0);
+        part.path.push_back(f >= 1.0 ? op.path[i] : op.path[i - 1] + f * (op.path[i] - op.path[i - 1]));
+        if (!op.pressure.empty())
+            part.pressure.push_back(op.pressure[i - 1] + f * (op.pressure[i] - op.pressure[i - 1]));
+        break;
+    }
+    return part;
+}
 
 /// Every tool says how it grows (no default: a new tool fails the build until it does).
 GrowthRule growthRule(Tool tool) {
@@ -36,6 +69,8 @@ GrowthRule growthRule(Tool tool) {
         return {ParamField::Shift, false};
     case Tool::Flow:
         return {ParamField::Time, false};
+    case Tool::Stylus:
+        return {ParamField::Steps, false, true};
     }
     throw std::logic_error("growthRule: unknown tool");
 }
@@ -65,6 +100,11 @@ std::optional<Operation> grownOperation(const Operation& op, int dimension, doub
     if (!(s > 0.0)) return std::nullopt;
     if (s >= 1.0) return op;
     const GrowthRule rule = growthRule(op.tool);
+    if (rule.travels) {
+        const int steps = static_cast<int>(std::floor(s * op.steps));
+        if (steps <= 0) return std::nullopt;
+        return travelled(op, steps);
+    }
     const double factor = !rule.inkRadius ? s : dimension == 3 ? std::cbrt(s) : std::sqrt(s);
     Operation grown = op;
     // The registry's row of the parameter knows its components (both amplitudes of an egg-crate).

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <glm/geometric.hpp>
+
 namespace marbler {
 namespace {
 
@@ -59,6 +61,16 @@ constexpr ParamSpec Speed = startingAt({"speed", "Speed", F::Speed, K::Number, "
 constexpr ParamSpec Time = startingAt({"time", "Time", F::Time, K::Number, "time units", "how long the flow runs", PositiveNumber, 2.0, 0.3, false, {}, 2}, 1.0);
 constexpr ParamSpec Steps{"steps", "Steps", F::Steps, K::Count, "", "implicit midpoint steps (at least 32 |speed| time max(size) / min(size)^2)", ParamRange{1.0, double(MaxFlowSteps)}, 32.0, 0.0, false, {}, 2};
 
+// Version 3.
+constexpr ParamSpec PathRow{"path", "Path", F::Path, K::Path, "design units", "the polyline the stylus is drawn along", AnyNumber, 0.0, 0.02, false, {}, 3};
+constexpr ParamSpec Pull{"alpha", "Pull", F::Alpha, K::Shift, "design units", "strength of the pull along the path, about the shift on the track", AnyNumber, 40.0, 0.03, false, {}, 3};
+constexpr ParamSpec StylusLambda{"lambda", "Sharpness", F::Lambda, K::Length, "design units", "how far to the side the pull reaches", PositiveNumber, 8.0, 0.01, false, {}, 3};
+constexpr ParamSpec Reach{"reach", "Reach", F::Reach, K::Length, "design units", "how far ahead of and behind the stylus the bath moves", PositiveNumber, 40.0, 0.02, false, {}, 3};
+constexpr ParamSpec Tines{"tines", "Tines", F::Tines, K::Count, "", "1 a stylus, more a rake", ParamRange{1.0, double(MaxTines)}, 1.0, 0.0, false, {}, 3, true};
+constexpr ParamSpec RakeSpacing{"spacing", "Spacing", F::Spacing, K::Length, "design units", "distance between the rake's tines (required with more than one)", PositiveNumber, 40.0, 0.02, false, {}, 3, true};
+constexpr ParamSpec Pressure{"pressure", "Pressure", F::Pressure, K::Pressure, "", "a pen's pressure, one value in [0, 1] per path point", ParamRange{0.0, 1.0}, 1.0, 0.0, false, {}, 3, true};
+constexpr ParamSpec StylusSteps{"steps", "Steps", F::Steps, K::Count, "", "integration steps (at least 4 L / reach and the contraction rule)", ParamRange{1.0, double(MaxStylusSteps)}, 1.0, 0.0, false, {}, 3};
+
 constexpr std::array Ink{Center, Radius, ColorRow};
 constexpr std::array Cylinder3{Center, Axis, Radius, ColorRow};
 constexpr std::array Line2{Origin, Angle, Alpha, Lambda};
@@ -73,6 +85,7 @@ constexpr std::array Vortex2{Center, Alpha, Lambda, Core};
 constexpr std::array Vortex3{Center, Axis, Alpha, Lambda, Core};
 constexpr std::array Stretch2{Origin, Angle, Teeth, ShiftRow, Power};
 constexpr std::array Flow2{FieldRow, Origin, Angle, SizeRow, Speed, Time, Steps};
+constexpr std::array Stylus2{PathRow, Pull, StylusLambda, Reach, Tines, RakeSpacing, Pressure, StylusSteps};
 
 using SF = ShaderForm;
 
@@ -140,6 +153,12 @@ constexpr std::array<ToolSpec, ToolCount> Tools{{
                 .name = "Flow",
                 .tooltip = "Drag out a cell of a steady flow (cells or one cavity)",
                 .shortcut = 'F'}},
+    {.tool = Tool::Stylus, .name = "stylus", .plural = "stylus strokes", .in2D = true, .in3D = false, .laysInk = false, .movesInk = true,
+     .form2D = SF::Stylus, .form3D = SF::Stylus, .params2D = Stylus2, .params3D = {}, .version = 3,
+     .editor = {.gesture = G::Path,
+                .name = "Stylus",
+                .tooltip = "Draw a free-hand stroke: a stylus (or a rake) pulled along the path",
+                .shortcut = 'Y'}},
 }};
 // clang-format on
 
@@ -190,16 +209,21 @@ constexpr bool everyToolHasAPlural() {
 }
 static_assert(everyToolHasAPlural(), "every tool has its English plural");
 
-/// Exactly the parameters newer than their tool are optional: a file of the tool's own version
-/// says all of the tool's parameters, a newer parameter may be left out of an older tool.
+/// The parameters newer than their tool are optional: a newer parameter may be left out of an
+/// older tool. Before version 3 exactly those were; a version-3 tool (stylus) also has optional
+/// parameters of its own (tines, spacing, pressure), to which the spec gives defaults.
 constexpr bool versionsConsistent() {
     for (const ToolSpec& tool : Tools)
         for (std::span<const ParamSpec> params : {tool.params2D, tool.params3D})
-            for (const ParamSpec& spec : params)
-                if (spec.optional != (spec.version > tool.version)) return false;
+            for (const ParamSpec& spec : params) {
+                if (spec.version > tool.version && !spec.optional) return false;
+                if (tool.version < 3 && spec.optional != (spec.version > tool.version)) return false;
+                if (spec.version > FormatVersion) return false;
+            }
     return true;
 }
-static_assert(versionsConsistent(), "optional parameters are exactly those newer than their tool");
+static_assert(versionsConsistent(), "optional parameters are those newer than their tool (and, from "
+                                    "version 3, those the spec gives a default)");
 
 glm::dvec3* vectorField(const ParamSpec& spec, Operation& op) {
     switch (spec.field) {
@@ -230,6 +254,10 @@ glm::dvec3* vectorField(const ParamSpec& spec, Operation& op) {
     case F::Speed:
     case F::Time:
     case F::Steps:
+    case F::Path:
+    case F::Reach:
+    case F::Tines:
+    case F::Pressure:
         return nullptr;
     }
     return nullptr;
@@ -263,6 +291,10 @@ glm::dvec2* pairField(const ParamSpec& spec, Operation& op) {
     case F::Speed:
     case F::Time:
     case F::Steps:
+    case F::Path:
+    case F::Reach:
+    case F::Tines:
+    case F::Pressure:
         return nullptr;
     }
     return nullptr;
@@ -280,6 +312,8 @@ double* scalarField(const ParamSpec& spec, Operation& op) {
         return &op.speed;
     case F::Time:
         return &op.time;
+    case F::Reach:
+        return &op.reach;
     case F::Angle:
         return &op.angle;
     case F::Radius:
@@ -306,6 +340,9 @@ double* scalarField(const ParamSpec& spec, Operation& op) {
     case F::Field:
     case F::Size:
     case F::Steps:
+    case F::Path:
+    case F::Tines:
+    case F::Pressure:
         return nullptr;
     }
     return nullptr;
@@ -393,6 +430,8 @@ int componentCount(const ParamSpec& spec, const Operation& op, int dimension) {
     if (spec.kind == K::Position || spec.kind == K::Direction) return dimension;
     if (spec.kind == K::Extent) return 2;
     if (spec.kind == K::Teeth) return static_cast<int>(op.teeth.size());
+    if (spec.kind == K::Path) return 2 * static_cast<int>(op.path.size());
+    if (spec.kind == K::Pressure) return static_cast<int>(op.path.size());
     if (spec.pair) return op.shape == WaveShape::Eggcrate ? 2 : 1;
     return 1;
 }
@@ -406,7 +445,12 @@ double getComponent(const ParamSpec& spec, const Operation& op, int index) {
         return spec.field == F::Field ? static_cast<double>(op.field) : static_cast<double>(op.shape);
     if (spec.kind == K::Extent) return op.extent[index];
     if (spec.kind == K::Teeth) return op.teeth[static_cast<std::size_t>(index)];
-    if (spec.kind == K::Count) return op.steps;
+    if (spec.kind == K::Count) return spec.field == F::Tines ? op.tines : op.steps;
+    if (spec.kind == K::Path) return op.path[static_cast<std::size_t>(index / 2)][index % 2];
+    if (spec.kind == K::Pressure) {
+        auto at = static_cast<std::size_t>(index);
+        return at < op.pressure.size() ? op.pressure[at] : spec.defaultValue;
+    }
     return *scalarField(spec, mutableOp);
 }
 
@@ -433,7 +477,18 @@ void setComponent(const ParamSpec& spec, Operation& op, int index, double value)
         op.teeth[at] = value;
     } else if (spec.kind == K::Count) {
         // Clamped before the cast so that no value can overflow an int.
-        op.steps = static_cast<int>(std::clamp(std::round(value), spec.range.min, spec.range.max));
+        (spec.field == F::Tines ? op.tines : op.steps) =
+            static_cast<int>(std::clamp(std::round(value), spec.range.min, spec.range.max));
+    } else if (spec.kind == K::Path) {
+        auto at = static_cast<std::size_t>(index / 2);
+        if (at >= op.path.size()) op.path.resize(at + 1, glm::dvec2(value));
+        op.path[at][index % 2] = value;
+    } else if (spec.kind == K::Pressure) {
+        // Pressure is all the default until a value is set; then it holds one per path point.
+        auto at = static_cast<std::size_t>(index);
+        if (op.pressure.size() < std::max(op.path.size(), at + 1))
+            op.pressure.resize(std::max(op.path.size(), at + 1), spec.defaultValue);
+        op.pressure[at] = value;
     } else {
         *scalarField(spec, op) = value;
     }
@@ -445,7 +500,7 @@ Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center) {
     op.center = dimension == 3 ? center : glm::dvec3(center.x, center.y, 0.0);
     for (const ParamSpec& spec : toolSpec(tool).params(dimension)) {
         if (spec.kind == K::Position || spec.kind == K::Direction || spec.kind == K::Choice ||
-            spec.kind == K::Teeth)
+            spec.kind == K::Teeth || spec.kind == K::Path || spec.kind == K::Pressure)
             continue;
         for (int i = 0; i < componentCount(spec, op, dimension); ++i)
             setComponent(spec, op, i, spec.defaultValue);
@@ -462,7 +517,35 @@ Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center) {
         op.center = {0.0, 0.0, 0.0};
         op.steps = std::max(op.steps, minimumFlowSteps(op));
     }
+    if (tool == Tool::Stylus) {
+        // A straight stroke through the centre, two fifths of its larger coordinate long.
+        double half = std::max({std::abs(center.x), std::abs(center.y), 1.0}) * 0.2;
+        op.path = {{center.x - half, center.y}, {center.x + half, center.y}};
+        // Steps enough for a rake of two: the step form can add a tine without more steps.
+        Operation rake = op;
+        rake.tines = 2;
+        op.steps = std::max(op.steps, minimumStylusSteps(rake));
+    }
     return op;
+}
+
+double pathLength(const Operation& op) {
+    double length = 0.0;
+    for (std::size_t i = 1; i < op.path.size(); ++i)
+        length += glm::length(op.path[i] - op.path[i - 1]);
+    return length;
+}
+
+int minimumStylusSteps(const Operation& op) {
+    double largest = op.pressure.empty() ? 1.0 : 0.0;
+    for (double p : op.pressure)
+        largest = std::max(largest, p);
+    const double length = pathLength(op), l = op.reach, lambda = op.lambda;
+    const double cMax = 15.0 * std::abs(op.alpha) * largest / (16.0 * l);
+    const double needed = std::max(4.0 * length / l, 2.0 * length * op.tines * cMax *
+                                                         (3.1 / l + 0.65 / lambda + 6.3 * lambda / (l * l)));
+    if (!std::isfinite(needed) || needed > double(MaxStylusSteps)) return MaxStylusSteps + 1;
+    return std::max(1, static_cast<int>(std::ceil(needed)));
 }
 
 int minimumFlowSteps(const Operation& op) {
@@ -475,19 +558,28 @@ int minimumFlowSteps(const Operation& op) {
 bool usesVersion2(const ParamSpec& spec, const Operation& op) {
     if (spec.version < 2) return false;
     if (!spec.optional) return true;
+    return writtenWhenOptional(spec, op);
+}
+
+bool writtenWhenOptional(const ParamSpec& spec, const Operation& op) {
+    if (spec.kind == K::Pressure)
+        return std::any_of(op.pressure.begin(), op.pressure.end(),
+                           [&](double p) { return p != spec.defaultValue; });
+    // A rake says its spacing (the spec requires it with more than one tine).
+    if (spec.field == F::Spacing && op.tines > 1) return true;
     return getComponent(spec, op, 0) != spec.defaultValue;
 }
 
 int requiredVersion(const Genome& genome) {
-    if (genome.bleed != 0.0) return 2;
+    int version = genome.bleed != 0.0 ? 2 : 1;
     for (const std::vector<Operation>* list : {&genome.initial, &genome.operations})
         for (const Operation& op : *list) {
             const ToolSpec& tool = toolSpec(op.tool);
-            if (tool.version >= 2) return 2;
+            version = std::max(version, tool.version);
             for (const ParamSpec& spec : tool.params(genome.dimension))
-                if (usesVersion2(spec, op)) return 2;
+                if (usesVersion2(spec, op)) version = std::max(version, spec.version);
         }
-    return 1;
+    return version;
 }
 
 } // namespace marbler

@@ -133,7 +133,57 @@ glm::dvec3 flow(const PreparedOp& op, const glm::dvec3& p, double sign) {
     return op.c + x.x * op.m + x.y * op.n;
 }
 
+/// Stylus: every integration step in order (forward) or in reverse order (inverse).
+glm::dvec3 stylus(const PreparedOp& op, const glm::dvec3& p, double sign) {
+    glm::dvec2 x(p.x, p.y);
+    if (sign > 0.0) {
+        for (int i = 0; i < op.steps; ++i)
+            x = stylusStep(op, x, i, +1.0);
+    } else {
+        for (int i = op.steps; i-- > 0;)
+            x = stylusStep(op, x, i, -1.0);
+    }
+    return {x.x, x.y, 0.0};
+}
+
 } // namespace
+
+glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau) {
+    // The segment i with cum_i <= tau < cum_i+1, the last one at tau = L.
+    const std::size_t last = op.cum.size() - 2;
+    std::size_t i =
+        static_cast<std::size_t>(std::upper_bound(op.cum.begin(), op.cum.end(), tau) - op.cum.begin());
+    i = std::min(i == 0 ? 0 : i - 1, last);
+    const glm::dvec2 t = op.along[i], n(-t.y, t.x);
+    const double into = tau - op.cum[i];
+    const glm::dvec2 s = op.path[i] + into * t;
+    const double segment = op.cum[i + 1] - op.cum[i];
+    const double pressure = op.pressure[i] + (op.pressure[i + 1] - op.pressure[i]) * (into / segment);
+    const double c = op.pull * pressure;
+    glm::dvec2 v(0.0);
+    for (int j = 0; j < op.tines; ++j) {
+        const double offset = (j - 0.5 * (op.tines - 1)) * op.spacing;
+        const glm::dvec2 r = p - s - offset * n;
+        const double u = glm::dot(r, t) / op.reach;
+        if (!(std::abs(u) < 1.0)) continue; // w = w' = 0
+        const double q = glm::dot(r, n) / op.lambda;
+        const double w = (1.0 - u * u) * (1.0 - u * u), dw = -4.0 * u * (1.0 - u * u);
+        v += c * w / (1.0 + q * q) * t - c * op.lambda * std::atan(q) * dw / op.reach * n;
+    }
+    return v;
+}
+
+glm::dvec2 stylusStep(const PreparedOp& op, const glm::dvec2& p, int i, double sign) {
+    const double h = sign * op.step, tau = i * op.step + 0.5 * op.step;
+    glm::dvec2 next = p + h * stylusVelocity(op, p, tau);
+    for (int iteration = 0; iteration < 100; ++iteration) {
+        glm::dvec2 again = p + h * stylusVelocity(op, 0.5 * (p + next), tau);
+        bool settled = glm::length(again - next) < op.tolerance;
+        next = again;
+        if (settled) break;
+    }
+    return next;
+}
 
 glm::dvec2 flowVelocity(const PreparedOp& op, double x, double y) {
     const double lx = op.size[0], ly = op.size[1], u = op.speed;
@@ -206,6 +256,25 @@ PreparedOp prepare(const Operation& op, int dimension) {
     p.steps = op.tool == Tool::Flow ? op.steps : 0;
     p.step = op.steps > 0 ? op.time / op.steps : 0.0;
     p.tolerance = 1e-12 * (op.extent.x + op.extent.y);
+    if (op.tool == Tool::Stylus && op.path.size() >= 2) {
+        p.path = op.path;
+        p.cum.assign(1, 0.0);
+        for (std::size_t i = 1; i < op.path.size(); ++i) {
+            glm::dvec2 d = op.path[i] - op.path[i - 1];
+            double len = glm::length(d);
+            p.along.push_back(d / len);
+            p.cum.push_back(p.cum.back() + len);
+        }
+        p.length = p.cum.back();
+        p.pressure =
+            op.pressure.size() == op.path.size() ? op.pressure : std::vector<double>(op.path.size(), 1.0);
+        p.reach = op.reach;
+        p.pull = 15.0 * op.alpha / (16.0 * op.reach);
+        p.tines = op.tines;
+        p.steps = op.steps;
+        p.step = p.length / op.steps;
+        p.tolerance = 1e-12 * (p.length + op.reach);
+    }
     return p;
 }
 
@@ -243,6 +312,8 @@ glm::dvec3 forwardMap(const PreparedOp& op, const glm::dvec3& p) {
         return stretch(op, p, +1.0);
     case Tool::Flow:
         return flow(op, p, +1.0);
+    case Tool::Stylus:
+        return op.steps > 0 ? stylus(op, p, +1.0) : p;
     }
     return p;
 }
@@ -271,6 +342,8 @@ glm::dvec3 inverseMap(const PreparedOp& op, const glm::dvec3& q) {
         return stretch(op, q, -1.0);
     case Tool::Flow:
         return flow(op, q, -1.0);
+    case Tool::Stylus:
+        return op.steps > 0 ? stylus(op, q, -1.0) : q;
     }
     return q;
 }
@@ -290,6 +363,7 @@ bool insideInk(const PreparedOp& op, const glm::dvec3& p) {
     case Tool::Vortex:
     case Tool::Stretch:
     case Tool::Flow:
+    case Tool::Stylus:
         return false;
     }
     return false;

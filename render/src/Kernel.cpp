@@ -720,6 +720,19 @@ template <Variant V, int Dim>
 /// binary search of a fixed number of halvings (the same for every point, so the loop stays
 /// branch-free), then x -= s sin(pi tau)^p M. sin^p: p = 1, 2 and 1/2 exactly as pow rounds
 /// them (to the nearest double), any other p through std::pow, a point at a time.
+/// Stylus (Tools.cpp stylus) backward, a first correct version: each point through the scalar
+/// reference's steps, newest first (stylusStep), so the kernel equals the reference exactly.
+/// Points the stylus never comes near take the scalar's path too; skipping them is for later.
+inline void stylus2(const PreparedOp& op, Tile& t, int n) {
+    for (int i = 0; i < n; ++i) {
+        glm::dvec2 p(t.x[i], t.y[i]);
+        for (int step = op.steps; step-- > 0;)
+            p = stylusStep(op, p, step, -1.0);
+        t.x[i] = p.x;
+        t.y[i] = p.y;
+    }
+}
+
 [[gnu::always_inline]] inline void stretch2(const PreparedOp& op, Tile& t, int n) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
@@ -1041,6 +1054,9 @@ traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& til
                 else
                     flow2<false>(op, tile, n);
                 break;
+            case Tool::Stylus:
+                stylus2(op, tile, n);
+                break;
             case Tool::Cylinder:
             case Tool::Sphere:
                 break; // not in 2D genomes (the loader refuses them)
@@ -1081,6 +1097,7 @@ traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& til
                 break;
             case Tool::Stretch:
             case Tool::Flow:
+            case Tool::Stylus:
                 break; // 2D only (the loader refuses them in 3D)
             }
         }

@@ -190,7 +190,7 @@ TEST(ChangeSummary, EveryToolHasAnEnglishPlural) {
         {Tool::Drop, "drops"},        {Tool::Spray, "sprays"},   {Tool::Cylinder, "cylinders"},
         {Tool::Line, "lines"},        {Tool::Comb, "combs"},     {Tool::Wave, "waves"},
         {Tool::Circle, "circles"},    {Tool::Sphere, "spheres"}, {Tool::Vortex, "vortices"},
-        {Tool::Stretch, "stretches"}, {Tool::Flow, "flows"}};
+        {Tool::Stretch, "stretches"}, {Tool::Flow, "flows"},     {Tool::Stylus, "stylus strokes"}};
     for (const ToolSpec& tool : allTools()) {
         ASSERT_TRUE(plurals.count(tool.tool)) << "a new tool needs its plural here: " << tool.name;
         const int dimension = tool.in2D ? 2 : 3;

@@ -233,6 +233,14 @@ TEST_P(Operators, AlterKeepsEveryParameterOfEveryToolInItsTablesRange) {
         // A flow's steps have a bound of their own, which depends on the other numbers: at its
         // edge too, the fewest steps they allow.
         if (spec.tool == Tool::Flow) op.steps = minimumFlowSteps(op);
+        // A stylus at its smallest sharpness and reach would need more steps than the format
+        // allows: those two keep their starting values, the steps the fewest allowed.
+        if (spec.tool == Tool::Stylus) {
+            const Operation start = defaultOperation(spec.tool, dimension(), {500, 500, 500});
+            op.lambda = start.lambda;
+            op.reach = start.reach;
+            op.steps = minimumStylusSteps(op);
+        }
         g.operations.push_back(op);
     }
     ASSERT_NO_THROW(validateGenome(g, "start"));

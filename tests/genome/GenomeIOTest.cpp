@@ -37,7 +37,22 @@ const InvalidCase InvalidCases[] = {
     {"format-wrong", "format: must be \"marbler-genome\" (got \"marbler-genom\")"},
     {"format-missing", "format: missing"},
     {"version-newer",
-     "version: made by a newer version of Marbler (format version 3; this one reads version 2)"},
+     "version: made by a newer version of Marbler (format version 4; this one reads version 3)"},
+    {"v2-stylus", "operations[0].tool: \"stylus\" needs format version 3 (the file says version 2)"},
+    {"stylus-path-one-point", "operations[0].path: must be an array of 2 to 1000 points [x, y]"},
+    {"stylus-path-repeat", "operations[0].path[1]: must differ from the point before it"},
+    {"stylus-path-not-point", "operations[0].path[1]: must be a point [x, y]"},
+    {"stylus-lambda-zero", "operations[0].lambda: must be > 0 (got 0)"},
+    {"stylus-reach-negative", "operations[0].reach: must be > 0 (got -3)"},
+    {"stylus-tines-zero", "operations[0].tines: must be in [1, 64] (got 0)"},
+    {"stylus-tines-many", "operations[0].tines: must be in [1, 64] (got 65)"},
+    {"stylus-rake-no-spacing", "operations[0].spacing: missing: a rake (tines > 1) needs the spacing"},
+    {"stylus-pressure-count", "operations[0].pressure: must be an array of one number per path point, 2"},
+    {"stylus-pressure-above-one", "operations[0].pressure[1]: must be in [0, 1] (got 1.5)"},
+    {"stylus-steps-few", "operations[0].steps: must be at least max(4 L / reach"},
+    {"stylus-steps-too-strong", "operations[0].steps: cannot be enough"},
+    {"stylus-missing-reach", "operations[0].reach: missing"},
+    {"stylus-3d", "operations[0].tool: \"stylus\" is not available in 3D"},
     {"version-fraction", "version: must be an integer (got 1.5)"},
     {"dimension-four", "dimension: must be 2 or 3 (got 4)"},
     {"size-negative", "size[1]: must be > 0 (got -800)"},
@@ -504,6 +519,44 @@ TEST(GenomeIO, WriterWritesTheLowestVersion) {
     std::string text = serializeGenome(bled);
     EXPECT_LT(text.find("\"source\""), text.find("\"bleed\": 0.25,"));
     EXPECT_LT(text.find("\"bleed\""), text.find("\"meta\""));
+}
+
+TEST(GenomeIO, AStylusIsWrittenAsVersionThreeAndRoundTrips) {
+    // A stylus makes the file version 3; a rake says its spacing, pressure is written only when
+    // a pen gave one, and what is read back is what was written, byte for byte.
+    auto versionOf = [](const Genome& genome) {
+        return nlohmann::ordered_json::parse(serializeGenome(genome))["version"].get<int>();
+    };
+    Genome g = smallGenome();
+    ASSERT_LT(versionOf(g), 3);
+    Operation stroke = defaultOperation(Tool::Stylus, 2, {400, 300, 0});
+    stroke.path = {{100.5, 200.0}, {300.0, 260.0}, {420.0, 180.0}};
+    stroke.steps = minimumStylusSteps(stroke);
+    g.operations.push_back(stroke);
+    EXPECT_EQ(versionOf(g), 3);
+    std::string text = serializeGenome(g);
+    EXPECT_EQ(text.find("pressure"), std::string::npos) << text;
+    EXPECT_EQ(text.find("tines"), std::string::npos) << text;
+    // The fields a stylus has (defaultOperation's centre is none of them).
+    auto same = [](const Operation& a, const Operation& b) {
+        return a.tool == b.tool && a.path == b.path && a.pressure == b.pressure && a.alpha == b.alpha &&
+               a.lambda == b.lambda && a.reach == b.reach && a.tines == b.tines && a.steps == b.steps &&
+               (a.tines == 1 || a.spacing == b.spacing);
+    };
+    EXPECT_TRUE(same(parseGenome(text, "saved").operations.back(), stroke));
+
+    Operation& rake = g.operations.back();
+    rake.tines = 3;
+    rake.spacing = 25.0;
+    rake.pressure = {1.0, 0.25, 0.5};
+    rake.steps = minimumStylusSteps(rake);
+    text = serializeGenome(g);
+    EXPECT_NE(text.find("\"tines\": 3,"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"spacing\": 25,"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"pressure\": ["), std::string::npos) << text;
+    Genome again = parseGenome(text, "saved");
+    EXPECT_TRUE(same(again.operations.back(), rake));
+    EXPECT_EQ(serializeGenome(again), text);
 }
 
 TEST(GenomeIO, VersionTwoRoundTripsExactly) {

@@ -6,6 +6,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
+#include "marbler/Tools.h"
 
 #include <gtest/gtest.h>
 
@@ -78,6 +79,37 @@ TEST(Growth, EveryToolOfTheRegistryGrowsAsTheSpecSays) {
                 op.time = 1.5;
                 op.radius = 80.0;
                 SCOPED_TRACE(std::string(tool.name) + " in " + std::to_string(dimension) + "D");
+                if (tool.tool == Tool::Stylus) {
+                    // The stylus travels: at progress s it runs its first floor(s n) steps,
+                    // each at the time and place it has in the whole stroke.
+                    op.path = {{300.0, 500.0}, {520.0, 430.0}, {700.0, 560.0}};
+                    op.pressure = {1.0, 0.4, 0.8};
+                    op.lambda = 6.0;
+                    op.reach = 40.0;
+                    op.steps = minimumStylusSteps(op) + 7;
+                    std::optional<Operation> grown = grownOperation(op, dimension, s);
+                    ASSERT_TRUE(grown);
+                    const int runs = static_cast<int>(std::floor(s * op.steps));
+                    EXPECT_EQ(grown->steps, runs);
+                    const PreparedOp whole = prepare(op, 2), part = prepare(*grown, 2);
+                    EXPECT_NEAR(part.step, whole.step, 1e-12 * whole.step);
+                    for (glm::dvec2 p : {glm::dvec2(520.0, 436.0), glm::dvec2(410.0, 462.0)}) {
+                        glm::dvec2 expected = p;
+                        for (int i = 0; i < runs; ++i)
+                            expected = stylusStep(whole, expected, i, +1.0);
+                        glm::dvec3 got = forwardMap(part, {p.x, p.y, 0.0});
+                        EXPECT_NEAR(got.x, expected.x, 1e-7);
+                        EXPECT_NEAR(got.y, expected.y, 1e-7);
+                    }
+                    Genome holder;
+                    holder.palette = {Color{}};
+                    holder.operations = {*grown};
+                    EXPECT_NO_THROW(validateGenome(holder, "grown"));
+                    EXPECT_FALSE(grownOperation(op, dimension, 0.0)) << "progress 0 leaves the step out";
+                    EXPECT_EQ(grownOperation(op, dimension, 1.0), op);
+                    ++checked;
+                    continue;
+                }
                 ParamField field{};
                 double factor = s;
                 switch (tool.tool) {
@@ -103,6 +135,8 @@ TEST(Growth, EveryToolOfTheRegistryGrowsAsTheSpecSays) {
                 case Tool::Flow:
                     field = ParamField::Time;
                     break;
+                case Tool::Stylus:
+                    break; // above
                 }
                 std::optional<Operation> grown = grownOperation(op, dimension, s);
                 ASSERT_TRUE(grown);

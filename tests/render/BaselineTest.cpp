@@ -51,6 +51,7 @@ std::vector<BaselineCase> cases() {
         {"stretch-flow-none-region", "stretch-flow-2d", "none", {}, 96, 96, Region{250, 150, 650, 550}},
         {"bleed-rgss", "bleed-2d", "rgss", {}, 125, 100, {}},
         {"bleed-none-region", "bleed-2d", "none", {}, 80, 80, Region{300, 200, 500, 400}},
+        {"stylus-grid3", "stylus-2d", "grid3", {}, 100, 60, {}},
     };
 }
 

@@ -4,6 +4,9 @@
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
 #include "marbler/CpuRenderer.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Growth.h"
+#include "marbler/ImageFile.h"
 #include "marbler/Tools.h"
 
 #include <gtest/gtest.h>
@@ -46,13 +49,61 @@ TEST_P(ProbeFile, EveryProbeMatchesInTheKernelTheReferenceAndARender) {
 
 INSTANTIATE_TEST_SUITE_P(Conformance, ProbeFile,
                          ::testing::Values("probes-0", "probes-1", "probes-2", "probes-3", "probes-4",
-                                           "probes-v2-stretch", "probes-v2-core", "probes-v2-flow"),
+                                           "probes-v2-stretch", "probes-v2-core", "probes-v2-flow",
+                                           "probes-v3-stylus"),
                          [](const auto& info) {
                              std::string name = info.param;
                              for (char& c : name)
                                  if (c == '-') c = '_';
                              return name;
                          });
+
+TEST(Conformance, AStylusGrowsAsTheReferenceDraws) {
+    // probes-v3-stylus.json's design with its last step, the rake, at progress 0.25, 0.5 and 1
+    // (the stylus has travelled that far), at 24x24 without antialiasing.
+    nlohmann::json file = test::loadConformance("probes-v3-stylus.json");
+    Genome genome = test::genomeOf(file, "probes-v3-stylus.json");
+    const double last = double(stepCount(genome) - 1);
+    int frames = 0;
+    for (const auto& [progress, rows] : file.at("progress").items()) {
+        Genome design = designAtGrowth(genome, last + std::stod(progress));
+        RenderSettings settings;
+        settings.width = settings.height = 24;
+        settings.aa = "none";
+        Image image = CpuRenderer(design).render(settings);
+        int equal = 0;
+        for (int y = 0; y < 24; ++y)
+            for (int x = 0; x < 24; ++x) {
+                const nlohmann::json& want = rows[y][x];
+                const std::size_t at = 3 * std::size_t(y * 24 + x);
+                equal += image.rgb[at] == want[0].get<int>() && image.rgb[at + 1] == want[1].get<int>() &&
+                         image.rgb[at + 2] == want[2].get<int>();
+            }
+        EXPECT_EQ(equal, 24 * 24) << "progress " << progress;
+        ++frames;
+    }
+    EXPECT_EQ(frames, 3);
+}
+
+TEST(Conformance, EbruHeartsRenderAsTheirReference) {
+    // The example of version 3 (a row of ringed drops, one stylus stroke through them) against
+    // the independent reference's render without antialiasing: pixel for pixel but for a hair's
+    // width of edges.
+    Genome genome = loadGenome(test::dataDir() / "examples" / "ebru-hearts.marble.json");
+    Image expected = test::readImage8(test::dataDir() / "reference" / "ebru-hearts-noaa.png");
+    RenderSettings settings;
+    settings.width = expected.width;
+    settings.height = expected.height;
+    settings.aa = "none";
+    Image actual = CpuRenderer(genome).render(settings);
+    test::ImageDiff diff = test::compareImages(actual, expected, 0);
+    if (!(diff.shareWithin >= 0.995)) {
+        std::filesystem::path out = test::outputDir("ebru-hearts") / "ebru-hearts.actual.png";
+        writeImage(actual, out);
+        ADD_FAILURE() << (1.0 - diff.shareWithin) * 100.0 << "% of pixels differ; actual image saved to "
+                      << out;
+    }
+}
 
 TEST(Conformance, AntialiasedRendersMatchWithinTwoLevels) {
     nlohmann::json file = test::loadConformance("antialias.json");

@@ -104,6 +104,17 @@ Operation randomOperation(Pcg32& rng, Tool tool, int dimension) {
         op.time = rng.uniform(0.3, 2.0);
         op.steps = std::max(minimumFlowSteps(op), 1 + static_cast<int>(rng.below(4)));
     }
+    if (tool == Tool::Stylus) {
+        op.path = {{rng.uniform(0, 1000), rng.uniform(0, 1000)},
+                   {rng.uniform(0, 1000), rng.uniform(0, 1000)},
+                   {rng.uniform(0, 1000), rng.uniform(0, 1000)}};
+        op.alpha = rng.uniform(-60, 60);
+        op.lambda = rng.uniform(4, 20);
+        op.reach = rng.uniform(40, 120);
+        op.tines = 1 + static_cast<int>(rng.below(3));
+        op.spacing = rng.uniform(10, 40);
+        op.steps = minimumStylusSteps(op);
+    }
     return op;
 }
 
@@ -122,6 +133,7 @@ bool exactTool(Tool tool, int dimension) {
     case Tool::Line:
     case Tool::Comb:
     case Tool::Cylinder:
+    case Tool::Stylus: // the kernel runs the reference's steps (stylusStep) per point
         return true;
     case Tool::Drop:
         return dimension == 2;

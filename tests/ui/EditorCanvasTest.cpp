@@ -179,6 +179,33 @@ TEST(GesturesTest, EachFlatToolMakesWhatItsDragSays) {
     EXPECT_TRUE(gestureSteps(Tool::Drop, s, a, b, noInk).empty()) << "no palette, no ink";
 }
 
+TEST(GesturesTest, AFreeHandDragMakesOneStylusStepAlongItsPath) {
+    // A wavy drag with the stylus: one step whose smoothed path follows the drag, points a few
+    // units apart (not one a pointer event), starting and ending where the drag does, with the
+    // fewest valid steps; a solid or a click makes nothing.
+    const Genome g = flatDesign();
+    ToolSettings s;
+    std::vector<glm::dvec3> drag;
+    for (int i = 0; i <= 400; ++i) {
+        const double x = 200.0 + i;
+        drag.push_back({x, 500.0 + 40.0 * std::sin(x / 40.0), 0.0});
+    }
+    auto ops = pathSteps(Tool::Stylus, s, drag, g);
+    ASSERT_EQ(ops.size(), 1u);
+    const Operation& op = ops[0];
+    EXPECT_EQ(op.tool, Tool::Stylus);
+    ASSERT_GE(op.path.size(), 20u);
+    EXPECT_LT(op.path.size(), drag.size() / 2) << "points a few units apart, not one an event";
+    EXPECT_EQ(op.path.front(), glm::dvec2(drag.front()));
+    EXPECT_EQ(op.path.back(), glm::dvec2(drag.back()));
+    for (const glm::dvec2& p : op.path) // on the drag's curve, within the smoothing's reach
+        EXPECT_NEAR(p.y, 500.0 + 40.0 * std::sin(p.x / 40.0), 1.0) << p.x;
+    EXPECT_EQ(op.steps, minimumStylusSteps(op));
+    expectValid(g, ops, "stylus drag");
+    EXPECT_TRUE(pathSteps(Tool::Stylus, s, {drag[0], drag[0]}, g).empty()) << "a click draws nothing";
+    EXPECT_TRUE(pathSteps(Tool::Line, s, drag, g).empty()) << "only a path tool draws a path";
+}
+
 TEST(GesturesTest, SolidToolsWorkInTheSectionPlane) {
     const Genome g = solidDesign();
     ToolSettings s;

@@ -1,5 +1,5 @@
 #pragma once
-/// The genome: the whole recipe of one marbling design (genome-format.md, versions 1 and 2).
+/// The genome: the whole recipe of one marbling design (genome-format.md, versions 1 to 3).
 ///
 /// A genome is plain data. Its tools are kept with the parameters exactly as the file gives them
 /// (angles in degrees, vectors as written but normalised by the loader); `Tools.h` turns them into
@@ -32,9 +32,10 @@ enum class Tool : std::uint8_t {
     Sphere,
     Vortex,
     Stretch,
-    Flow
+    Flow,
+    Stylus
 };
-inline constexpr int ToolCount = 11;
+inline constexpr int ToolCount = 12;
 
 /// The two shapes of a 3D wave.
 enum class WaveShape : std::uint8_t { Eggcrate, Ripple };
@@ -69,7 +70,12 @@ struct Operation {
     glm::dvec2 extent{1.0, 1.0};        ///< flow: `size` [Lx, Ly] of a cell or the cavity
     double speed = 0.0;                 ///< flow: U
     double time = 1.0;                  ///< flow: T > 0
-    int steps = 1;                      ///< flow: implicit midpoint steps n
+    int steps = 1;                      ///< flow, stylus: implicit midpoint steps n
+    // Version 3.
+    std::vector<glm::dvec2> path; ///< stylus: the polyline the stylus is drawn along
+    std::vector<double> pressure; ///< stylus: one value in [0, 1] per path point; empty: all 1
+    double reach = 1.0;           ///< stylus: how far ahead of and behind the stylus the bath moves
+    int tines = 1;                ///< stylus: 1 a stylus, more a rake (with `spacing`)
 
     friend bool operator==(const Operation&, const Operation&) = default;
 };
@@ -115,9 +121,13 @@ inline constexpr std::size_t MaxEntries = 10000;
 inline constexpr std::size_t MaxFileBytes = 16u * 1024u * 1024u;
 inline constexpr std::size_t MaxPaletteSize = 16;
 /// The newest format version this Marbler reads and writes.
-inline constexpr int FormatVersion = 2;
+inline constexpr int FormatVersion = 3;
 /// The largest number of teeth of a `stretch` and of steps of a `flow` (genome-format.md, version 2).
 inline constexpr std::size_t MaxTeeth = 1000;
 inline constexpr int MaxFlowSteps = 10000;
+/// A stylus's limits (genome-format.md, version 3): path points, tines and integration steps.
+inline constexpr std::size_t MaxPathPoints = 1000;
+inline constexpr int MaxTines = 64;
+inline constexpr int MaxStylusSteps = 100000;
 
 } // namespace marbler

@@ -31,6 +31,8 @@ enum class ParamKind : std::uint8_t {
     Teeth,     ///< 2 to MaxTeeth strictly increasing positions (a stretch's `teeth`)
     Count,     ///< an integer in `range` (a flow's `steps`)
     Number,    ///< a plain number in its own unit (power, speed, time); mutated by absolute steps
+    Path,      ///< 2 to MaxPathPoints points [[x, y], ...], consecutive ones different (a stylus's path)
+    Pressure,  ///< one number in `range` per path point (a stylus's pressure); empty: all the default
 };
 
 /// Which field of Operation a parameter lives in.
@@ -58,6 +60,10 @@ enum class ParamField : std::uint8_t {
     Speed,
     Time,
     Steps, // version 2
+    Path,
+    Reach,
+    Tines,
+    Pressure, // version 3
 };
 
 /// The values a parameter may take: [min, max], or (min, max] where `minOpen`.
@@ -125,6 +131,9 @@ enum class ShaderForm : std::uint8_t {
     Turn = 4,       ///< turn about a centre or an axis (circle, sphere, vortex)
     Stretch = 5,    ///< translation by a |sin|^p profile between teeth (stretch)
     Flow = 6,       ///< implicit midpoint steps through a stream function's velocity (flow)
+    /// Implicit midpoint steps through the velocity of a moving stylus (stylus): no shader body
+    /// yet, so the GL back end refuses a design that has one and the CPU renders it.
+    Stylus = 7,
 };
 
 /// What a click or a drag on the editor's canvas makes of a tool. The registry names each
@@ -140,6 +149,7 @@ enum class EditorGesture : std::uint8_t {
     Swirl,  ///< a swirl about the press, the drag's length its strength (vortex)
     Teeth,  ///< a stretch along the drag between teeth across the design
     Cell,   ///< the drag spans one cell (or the cavity) of a steady flow
+    Path,   ///< a free-hand path: the drag's smoothed polyline (stylus)
 };
 
 /// How the editor outlines a step of a tool on its canvas (while it is made or selected).
@@ -214,12 +224,24 @@ Operation defaultOperation(Tool tool, int dimension, const glm::dvec3& center);
 /// (genome-format.md, flow), so that each step's fixed-point iteration contracts.
 int minimumFlowSteps(const Operation& op);
 
+/// The arc length L of a stylus's path.
+double pathLength(const Operation& op);
+
+/// The fewest steps a stylus may take (genome-format.md, stylus): the larger of 4 L / reach and
+/// 2 L k c_max (3.1 / reach + 0.65 / lambda + 6.3 lambda / reach^2), c_max = 15 |alpha|
+/// max(pressure) / (16 reach), rounded up, at least 1; MaxStylusSteps + 1 when more are needed.
+int minimumStylusSteps(const Operation& op);
+
 /// Whether a parameter holds a value a file of `version` 1 could not say: a version-2
 /// parameter away from its default.
 bool usesVersion2(const ParamSpec& spec, const Operation& op);
 
-/// The lowest format version that holds the design: 2 when it uses a version-2 tool, parameter
-/// or `bleed`, else 1. Writers write this version.
+/// Whether an optional parameter is written: it is away from its default (a rake's spacing
+/// whenever it has more than one tine).
+bool writtenWhenOptional(const ParamSpec& spec, const Operation& op);
+
+/// The lowest format version that holds the design: 3 when it uses a version-3 tool, 2 when it
+/// uses a version-2 tool, parameter or `bleed`, else 1. Writers write this version.
 int requiredVersion(const Genome& genome);
 
 } // namespace marbler

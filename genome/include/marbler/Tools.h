@@ -46,7 +46,16 @@ struct PreparedOp {
     double speed = 0.0;      ///< flow: U
     double step = 0.0;       ///< flow: h = T / n
     int steps = 0;           ///< flow: n
-    double tolerance = 0.0;  ///< flow: 1e-12 (Lx + Ly), the fixed-point iteration's stopping distance
+    double tolerance = 0.0;  ///< flow: 1e-12 (Lx + Ly); stylus: 1e-12 (L + reach); the iteration's stop
+    // Version 3: the stylus.
+    std::vector<glm::dvec2> path;  ///< its points
+    std::vector<glm::dvec2> along; ///< the unit direction T of each segment
+    std::vector<double> cum;       ///< the arc length at each point (cum[0] = 0, back() = L)
+    std::vector<double> pressure;  ///< one value a point (all 1 when the file gives none)
+    double length = 0.0;           ///< L
+    double reach = 1.0;            ///< l
+    double pull = 0.0;             ///< 15 alpha / (16 l): c at pressure 1
+    int tines = 1;                 ///< k
 };
 
 /// Prepares one entry of a genome of the given dimension.
@@ -99,6 +108,15 @@ bool traceCovers(const std::vector<PreparedOp>& ops, double bleed, glm::dvec3 p,
 
 /// The velocity of a flow at local coordinates (x, y) (along its M and N), in those coordinates.
 glm::dvec2 flowVelocity(const PreparedOp& op, double x, double y);
+
+/// The velocity of a stylus at P at time tau in [0, L] (genome-format.md, stylus): the sum over
+/// its tines of c w(u) / (1 + q^2) T - c lambda atan(q) w'(u) / l N.
+glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau);
+
+/// One implicit midpoint step of a stylus, integration step `i` (time i h + h / 2), forward
+/// (`sign` +1: P_i to P_i+1) or backward (-1: P_i+1 to P_i), by fixed-point iteration as the
+/// spec says.
+glm::dvec2 stylusStep(const PreparedOp& op, const glm::dvec2& p, int i, double sign);
 
 /// The distance-dependent shift l = alpha * lambda / (d + lambda).
 inline double shiftFor(const PreparedOp& op, double d) {

@@ -1,4 +1,5 @@
 #include "OpPacking.h"
+#include "marbler/Error.h"
 
 #include <algorithm>
 #include <numbers>
@@ -145,6 +146,10 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
         case Tool::Flow:
             flowCoefficients(op, k);
             break;
+        case Tool::Stylus:
+            // No shader body yet: a RuntimeFailure, as a driver's, so that the render service
+            // and `render --gpu` render the design on the CPU instead.
+            throw RuntimeFailure("GL: the stylus tool has no shader yet; the CPU renderer draws it");
         }
         put(c, inks ? op.r * op.r : -1.0);
         put(k.projected, inks ? op.color : -1);
