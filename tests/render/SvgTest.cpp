@@ -35,11 +35,12 @@ struct NamedGenome {
 
 std::vector<NamedGenome> flatGenomes(const std::filesystem::path& dir) {
     std::vector<NamedGenome> genomes;
-    for (const char* name : {"five-stones", "flame-comb-vortex"}) {
+    for (const char* name : {"five-stones", "flame-comb-vortex", "ebru-hearts"}) {
         auto file = test::dataDir() / "examples" / (std::string(name) + ".marble.json");
         genomes.push_back({name, loadGenome(file), file});
     }
-    for (const char* name : {"drops-combs-2d", "waves-swirls-2d", "stretch-flow-2d", "bleed-2d"}) {
+    for (const char* name :
+         {"drops-combs-2d", "waves-swirls-2d", "stretch-flow-2d", "bleed-2d", "stylus-2d"}) {
         auto file = test::dataDir() / "render" / (std::string(name) + ".marble.json");
         genomes.push_back({name, loadGenome(file), file});
     }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <set>
 #include <thread>
@@ -76,6 +77,9 @@ TEST(RowLoop, AFailingWorkerStopsTheOthersAndIsRethrown) {
     EXPECT_THROW(rows.run([&] {
         for (int row; rows.next(row);) {
             if (row == 50) throw RuntimeFailure("row 50");
+            // Each row takes a while, so the other worker cannot finish all of them in the
+            // moment between the throw and the loop's stop, however the threads are scheduled.
+            std::this_thread::sleep_for(std::chrono::microseconds(20));
             ++done;
         }
     }),

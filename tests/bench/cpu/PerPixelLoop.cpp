@@ -80,6 +80,8 @@ using namespace marbler;
         case Tool::Stretch:
         case Tool::Flow:
             break; // version 2: not in the benchmark's genomes
+        case Tool::Stylus:
+            break; // version 3: not in the benchmark's genomes
         }
     }
     return -1;
