@@ -65,23 +65,6 @@ std::string lower(std::string text) {
     return text;
 }
 
-/// A built-in object, or a mesh file read by assimp in the window module (the executable links
-/// no assimp, so only a bake from a file pays for loading it).
-MeshData meshOf(const std::string& nameOrFile) {
-    if (isBuiltinMesh(nameOrFile)) return builtinMesh(nameOrFile);
-    std::error_code ec;
-    if (!fs::is_regular_file(nameOrFile, ec))
-        throw InputError("--mesh: '" + nameOrFile + "' is neither a built-in object (" + builtinMeshList() +
-                         ") nor a mesh file");
-#ifdef MARBLER_HAVE_GUI
-    return app::windowModule().loadMesh(nameOrFile);
-#else
-    throw RuntimeFailure(
-        "--mesh FILE needs assimp, which comes with the window module, and this build has none "
-        "(built without MARBLER_BUILD_GUI); the built-in objects work");
-#endif
-}
-
 int bakeMesh(const Args& args, const std::string& genomeName, const fs::path& outFile) {
     const std::string extension = lower(outFile.extension().string());
     const std::vector<std::string> known = texturedMeshExtensions();

@@ -1,12 +1,16 @@
 #include "cli/Cli.h"
 
 #include "marbler/Error.h"
+#ifdef MARBLER_HAVE_GUI
+#include "WindowModule.h"
+#endif
 #include "marbler/GenomeImage.h"
 #include "marbler/Sampling.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 
 #include <unistd.h>
@@ -208,6 +212,21 @@ void ProgressLine::finish() {
     if (mText.empty()) return;
     std::cerr << '\r' << std::string(mText.size(), ' ') << '\r' << std::flush;
     mText.clear();
+}
+
+MeshData meshOf(const std::string& nameOrFile) {
+    if (isBuiltinMesh(nameOrFile)) return builtinMesh(nameOrFile);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(nameOrFile, ec))
+        throw InputError("--mesh: '" + nameOrFile + "' is neither a built-in object (" + builtinMeshList() +
+                         ") nor a mesh file");
+#ifdef MARBLER_HAVE_GUI
+    return app::windowModule().loadMesh(nameOrFile);
+#else
+    throw RuntimeFailure(
+        "--mesh FILE needs assimp, which comes with the window module, and this build has none "
+        "(built without MARBLER_BUILD_GUI); the built-in objects work");
+#endif
 }
 
 } // namespace marbler::cli

@@ -4,6 +4,7 @@
 /// file and what is wrong), 1 any other failure.
 
 #include "marbler/Genome.h"
+#include "marbler/Mesh.h"
 
 #include <cstdint>
 #include <functional>
@@ -80,6 +81,11 @@ private:
 /// (marbler::loadDesign; the one place the verbs read genomes). Warnings go to stderr as
 /// "marbler VERB: warning: ...". Throws GenomeError or InputError naming the file.
 Genome loadGenomeArgument(const char* verb, const std::string& file);
+
+/// `--mesh NAME|FILE`: a built-in object, or a mesh file read by assimp in the window module
+/// (the executable links no assimp, so only a mesh file pays for loading it). Throws InputError
+/// when it is neither or the file cannot be read.
+MeshData meshOf(const std::string& nameOrFile);
 
 /// The verbs. `words` are the arguments after the verb.
 int runRender(std::span<const std::string> words);

@@ -6,6 +6,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Growth.h"
+#include "marbler/ObjectView.h"
 #include "marbler/RenderToFile.h"
 #include "marbler/Repeat.h"
 #include "marbler/Sampling.h"
@@ -47,7 +48,8 @@ options:
   --threads N               worker threads (default: every core)
   --gpu                     render with the OpenGL back end (needs a GL 4.3 context)
   --mesh NAME|FILE          show a solid genome on an object: vase, sphere, cube, torus, teapot
-                            or a mesh file (uses the GL back end; needs --view)
+                            or a mesh file (needs --view); drawn by the CPU with no display,
+                            or with --gpu by the OpenGL back end
   --view YAW,PITCH          orbit camera angles in degrees for --mesh
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
   --cut NX,NY,NZ,OFFSET     cut the --mesh object open: the part where NX*x + NY*y + NZ*z >
@@ -205,39 +207,49 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
         progress.show("rendering " + std::to_string(static_cast<int>(f * 100.0)) + "%");
     };
 
-    if (meshMode || args.has("gpu")) {
+    // The object, its camera and its cut (--mesh).
+    std::optional<MeshSettings> object;
+    if (meshMode) {
+        MeshSettings mesh;
+        mesh.width = width;
+        mesh.height = height;
+        mesh.mesh = *args.get("mesh");
+        std::vector<double> view = parseNumberList("view", *args.get("view"), 2);
+        mesh.yaw = view[0];
+        mesh.pitch = view[1];
+        mesh.supersample = parseIntOption(args, "supersample", 3, 1, 5);
+        if (mesh.supersample != 1 && mesh.supersample != 3 && mesh.supersample != 5)
+            throw InputError("--supersample: must be 1, 3 or 5 (got " + *args.get("supersample") + ")");
+        if (auto cut = args.get("cut")) {
+            std::vector<double> plane = parseNumberList("cut", *cut, 4);
+            mesh.cut = CutPlane{{plane[0], plane[1], plane[2]}, plane[3]};
+        }
+        mesh.threads = settings.threads;
+        object = mesh;
+    }
+    // The image carries the design it shows, as renderToFile's do.
+    ExportOptions carrying = exportOptions;
+    carrying.genome = serializeGenome(genome);
+
+    if (object && !args.has("gpu")) {
+        // The CPU's own object path: rasterised and coloured here, with no display and no GL.
+        const Image image = renderObjectOnCpu(genome, meshOf(object->mesh), *object, &control);
+        progress.finish();
+        writeImage(repeat ? mirrorRepeat(image) : image, outFile, carrying);
+        return ExitOk;
+    }
+    if (args.has("gpu")) {
 #ifdef MARBLER_HAVE_GUI
-        // Both through the GL back end: --mesh shades the object on the GPU as --gpu does.
         gl::ViewRequest request;
         request.useGl = true;
         request.raster = settings;
-        if (meshMode) {
-            gl::MeshSettings mesh;
-            mesh.width = width;
-            mesh.height = height;
-            mesh.mesh = *args.get("mesh");
-            std::vector<double> view = parseNumberList("view", *args.get("view"), 2);
-            mesh.yaw = view[0];
-            mesh.pitch = view[1];
-            mesh.supersample = parseIntOption(args, "supersample", 3, 1, 5);
-            if (mesh.supersample != 1 && mesh.supersample != 3 && mesh.supersample != 5)
-                throw InputError("--supersample: must be 1, 3 or 5 (got " + *args.get("supersample") + ")");
-            if (auto cut = args.get("cut")) {
-                std::vector<double> plane = parseNumberList("cut", *cut, 4);
-                mesh.cut = gl::CutPlane{{plane[0], plane[1], plane[2]}, plane[3]};
-            }
-            request.object = mesh;
-        }
+        request.object = object;
         const Image image = app::windowModule().renderView(genome, request);
-        // The image carries the design it shows, as renderToFile's do.
-        ExportOptions withGenome = exportOptions;
-        withGenome.genome = serializeGenome(genome);
-        writeImage(repeat ? mirrorRepeat(image) : image, outFile, withGenome);
+        writeImage(repeat ? mirrorRepeat(image) : image, outFile, carrying);
         return ExitOk;
 #else
-        throw RuntimeFailure(
-            std::string(meshMode ? "--mesh" : "--gpu") +
-            " needs the OpenGL back end, and this build has none (built without MARBLER_BUILD_GUI)");
+        throw RuntimeFailure("--gpu needs the OpenGL back end, and this build has none (built without "
+                             "MARBLER_BUILD_GUI)");
 #endif
     }
 

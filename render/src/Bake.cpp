@@ -193,10 +193,6 @@ MeshData withGeneratedUvs(const MeshData& mesh, int textureSize) {
 
 namespace {
 
-glm::dvec3 linearOf(Color c) {
-    return {srgbToLinear(c.r / 255.0), srgbToLinear(c.g / 255.0), srgbToLinear(c.b / 255.0)};
-}
-
 /// Barycentric coordinates of q in the triangle (a, b, c); false for a degenerate triangle.
 bool barycentric(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c, const glm::dvec2& q,
                  glm::dvec3& w) {

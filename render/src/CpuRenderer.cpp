@@ -101,10 +101,6 @@ struct CpuRenderer::Impl {
 
 namespace {
 
-glm::dvec3 linearOf(Color c) {
-    return {srgbToLinear(c.r / 255.0), srgbToLinear(c.g / 255.0), srgbToLinear(c.b / 255.0)};
-}
-
 void checkRows(const RenderSettings& settings, int y0, int y1) {
     if (y0 < 0 || y1 > settings.height || y0 > y1)
         throw InputError("rows " + std::to_string(y0) + ".." + std::to_string(y1) +

@@ -204,8 +204,8 @@ TEST(HybridMesh, KeepsTheChecksOfTheMeshRender) {
 
 TEST(RenderView, EachViewTakesItsBackEndsPath) {
     // One request for every view: a flat raster on the CPU needs no GL and is the CPU renderer's
-    // image byte for byte; a GL raster or any object without a GL renderer is refused, not
-    // quietly rendered some other way.
+    // image byte for byte, an object on the CPU without GL is the CPU's own object render; a GL
+    // view without a GL renderer is refused, not quietly rendered some other way.
     const Genome flat = randomGenome(7, 2);
     gl::ViewRequest request;
     request.raster.width = 48;
@@ -222,14 +222,18 @@ TEST(RenderView, EachViewTakesItsBackEndsPath) {
     EXPECT_THROW(gl::renderView(flat, request, nullptr), RuntimeFailure);
     gl::ViewRequest object;
     object.object = gl::MeshSettings{};
-    EXPECT_THROW(gl::renderView(randomGenome(7, 3), object, nullptr), RuntimeFailure);
+    object.object->width = 64;
+    object.object->height = 48;
+    const Genome solid = randomGenome(7, 3);
+    EXPECT_EQ(gl::renderView(solid, object, nullptr).rgb,
+              renderObjectOnCpu(solid, builtinMesh(DefaultMesh), *object.object).rgb);
+    object.useGl = true;
+    EXPECT_THROW(gl::renderView(solid, object, nullptr), RuntimeFailure);
+    object.useGl = false;
 
     MARBLER_REQUIRE_GL_OR_SKIP();
     gl::GlRenderer& renderer = *test::glRenderer();
     EXPECT_EQ(gl::renderView(flat, request, &renderer).rgb, renderer.render(flat, request.raster).rgb);
-    const Genome solid = randomGenome(7, 3);
-    object.object->width = 64;
-    object.object->height = 48;
     object.useGl = true;
     EXPECT_EQ(gl::renderView(solid, object, &renderer).rgb, renderer.renderMesh(solid, *object.object).rgb);
     object.useGl = false;

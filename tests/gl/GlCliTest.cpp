@@ -1,5 +1,5 @@
-// `marbler render` with the GL back end: clean stderr on success, the cutting plane, and the
-// one-line usage errors of the mesh-only options.
+// `marbler render --gpu` with the GL back end: clean stderr on success, the cutting plane, and
+// the one-line usage errors of the mesh-only options.
 
 #include "GlTestUtil.h"
 #include "TestUtil.h"
@@ -38,8 +38,8 @@ TEST(GlCli, GpuAndMeshImagesCarryTheirGenome) {
         test::runMarbler({"render", flat, "--gpu", "--width", "48", "-o", (dir / "flat.png").string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(serializeGenome(loadDesign(dir / "flat.png")), serializeGenome(loadGenome(flat)));
-    run = test::runMarbler({"render", solidGenome(), "--mesh", "sphere", "--view", "30,20", "--width", "48",
-                            "--supersample", "1", "-o", (dir / "solid.tif").string()});
+    run = test::runMarbler({"render", solidGenome(), "--gpu", "--mesh", "sphere", "--view", "30,20",
+                            "--width", "48", "--supersample", "1", "-o", (dir / "solid.tif").string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_EQ(serializeGenome(loadDesign(dir / "solid.tif")), serializeGenome(loadGenome(solidGenome())));
     // And the image renders again as its genome does.
@@ -52,8 +52,9 @@ TEST(GlCli, CutRenderDiffersFromTheWholeObject) {
     MARBLER_REQUIRE_GL_OR_SKIP();
     std::filesystem::path dir = test::outputDir("gl-cli-cut");
     std::string whole = (dir / "whole.png").string(), cut = (dir / "cut.png").string();
-    const std::vector<std::string> common = {"render", solidGenome(), "--mesh", "sphere",        "--view",
-                                             "30,20",  "--width",     "96",     "--supersample", "1"};
+    const std::vector<std::string> common = {"render", solidGenome(),   "--gpu", "--mesh",
+                                             "sphere", "--view",        "30,20", "--width",
+                                             "96",     "--supersample", "1"};
     std::vector<std::string> args = common;
     args.insert(args.end(), {"-o", whole});
     test::RunResult run = test::runMarbler(args);

@@ -49,45 +49,12 @@ constexpr int MaxTileSide = 2048;
 /// Colour-rule evaluations (pixels x samples x operations) one draw may take before the tile
 /// is made smaller, for the same watchdog.
 constexpr double MaxWorkPerDraw = 4e9;
-/// The largest output side of a mesh render (the G-buffer is n times larger).
-constexpr int MaxMeshSide = 8192;
-/// A framed object spans this share of the view's width or height (the rest is the margin).
-constexpr double FrameFill = 0.92;
 /// Samples of the largest antialiasing pattern (grid8); the shaders' uniform arrays hold this.
 constexpr int MaxSamples = 64;
 
 glm::vec3 linearColor(Color c) {
     return {float(srgbToLinear(c.r / 255.0)), float(srgbToLinear(c.g / 255.0)),
             float(srgbToLinear(c.b / 255.0))};
-}
-
-/// The checks of a mesh render's settings; returns the unit cutting-plane normal and offset.
-void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal,
-                       double& cutOffset) {
-    if (genome.dimension != 3) throw InputError("a mesh render needs a solid (3D) genome");
-    if (settings.width < 1 || settings.height < 1 || settings.width > MaxMeshSide ||
-        settings.height > MaxMeshSide)
-        throw InputError("mesh render size must be 1 to " + std::to_string(MaxMeshSide) +
-                         " pixels a side (got " + std::to_string(settings.width) + "x" +
-                         std::to_string(settings.height) + ")");
-    int n = settings.supersample;
-    if (n != 1 && n != 3 && n != 5)
-        throw InputError("supersample must be 1, 3 or 5 (got " + std::to_string(n) + ")");
-    if (!(settings.fovY > 1.0 && settings.fovY < 170.0))
-        throw InputError("the field of view must lie between 1 and 170 degrees");
-    if (!std::isfinite(settings.yaw) || !std::isfinite(settings.pitch) || !(settings.distance >= 0.0) ||
-        !std::isfinite(settings.distance) || !(settings.zoom > 0.0) || !std::isfinite(settings.zoom))
-        throw InputError(
-            "the camera needs finite yaw and pitch, a distance of 0 or more and a positive zoom");
-    cutNormal = glm::dvec3(0.0);
-    cutOffset = 0.0;
-    if (settings.cut) {
-        double len = glm::length(settings.cut->normal);
-        if (!(len > 0.0) || !std::isfinite(len) || !std::isfinite(settings.cut->offset))
-            throw InputError("the cutting plane needs a finite, non-zero normal");
-        cutNormal = settings.cut->normal / len;
-        cutOffset = settings.cut->offset / len;
-    }
 }
 
 /// The G-buffer's GL objects, freed together.
@@ -117,11 +84,6 @@ Features featuresOf(const Genome& genome, const std::vector<PreparedOp>& ops) {
     return {needsVersion2Forms(ops), genome.bleed > 0.0};
 }
 
-/// Where the camera and the key light are, relative to the design box centre.
-struct MeshView {
-    glm::dvec3 reference{0.0}, eye{0.0}, light{0.0};
-};
-
 } // namespace
 
 struct GlRenderer::Impl {
@@ -141,10 +103,8 @@ struct GlRenderer::Impl {
     std::string meshName;
     GLuint meshVao = 0, meshVbo = 0, meshIbo = 0;
     GLsizei meshIndexCount = 0;
-    glm::dvec3 meshBoxSize{0.0};
-    double meshRadius = 1.0;
     /// The vertices relative to the box centre (before the fit's scale), for framing.
-    std::vector<glm::dvec3> meshPoints;
+    FittedMesh meshFit;
 
     void makeCurrent() {
         if (!parts.context->makeCurrent(parts.surface.get()))
@@ -270,17 +230,11 @@ struct GlRenderer::Impl {
     void loadMeshToGpu(const std::string& name) {
         if (name == meshName && meshVao) return;
         MeshData data = meshByNameOrFile(name);
-        glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-        for (const glm::vec3& p : data.positions) {
-            lo = glm::min(lo, glm::dvec3(p));
-            hi = glm::max(hi, glm::dvec3(p));
-        }
-        meshBoxSize = hi - lo;
+        meshFit = fitMesh(data);
         std::vector<float> vertices;
         vertices.reserve(data.positions.size() * 6);
-        glm::dvec3 centre = 0.5 * (lo + hi);
         for (std::size_t v = 0; v < data.positions.size(); ++v) {
-            glm::dvec3 p = glm::dvec3(data.positions[v]) - centre; // fitted later by a uniform scale
+            const glm::dvec3& p = meshFit.points[v]; // about the box centre, fitted later by a uniform scale
             glm::vec3 n = data.normals[v];
             float len = glm::length(n);
             n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
@@ -305,13 +259,6 @@ struct GlRenderer::Impl {
                                   reinterpret_cast<const void*>(3 * sizeof(float)));
         gl->glBindVertexArray(0);
         meshIndexCount = GLsizei(data.indices.size());
-        meshRadius = 0.0;
-        meshPoints.clear();
-        meshPoints.reserve(data.positions.size());
-        for (std::size_t v = 0; v < data.positions.size(); ++v) {
-            meshPoints.push_back(glm::dvec3(data.positions[v]) - centre);
-            meshRadius = std::max(meshRadius, glm::length(meshPoints.back()));
-        }
         meshName = name;
     }
 
@@ -334,8 +281,8 @@ struct GlRenderer::Impl {
 
     /// Pass 1 of a mesh render: the object's design-space positions and normals at n x n
     /// samples per output pixel, into `targets` (left bound as the framebuffer).
-    MeshView drawGBuffer(const Genome& genome, const MeshSettings& settings, const glm::dvec3& cutNormal,
-                         double cutOffset, GBufferTargets& targets);
+    ObjectCamera drawGBuffer(const Genome& genome, const MeshSettings& settings, const glm::dvec3& cutNormal,
+                             double cutOffset, GBufferTargets& targets);
 
     void release() {
         for (GlProgram& program : raster)
@@ -542,7 +489,7 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
 
     Image image;
     try {
-        const MeshView view = d.drawGBuffer(genome, settings, cutNormal, cutOffset, targets);
+        const ObjectCamera view = d.drawGBuffer(genome, settings, cutNormal, cutOffset, targets);
 
         // Pass 2: the colour rule per sample, lit and averaged.
         d.makeTarget(settings.width, settings.height, outputFbo, outputTexture);
@@ -604,7 +551,7 @@ MeshGBuffer GlRenderer::renderMeshGBuffer(const Genome& genome, const MeshSettin
     d.makeCurrent();
     auto* gl = d.gl;
     GBufferTargets targets(gl);
-    const MeshView view = d.drawGBuffer(genome, settings, cutNormal, cutOffset, targets);
+    const ObjectCamera view = d.drawGBuffer(genome, settings, cutNormal, cutOffset, targets);
 
     MeshGBuffer result;
     result.width = settings.width;
@@ -627,9 +574,9 @@ MeshGBuffer GlRenderer::renderMeshGBuffer(const Genome& genome, const MeshSettin
     return result;
 }
 
-MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings& settings,
-                                       const glm::dvec3& cutNormal, double cutOffset,
-                                       GBufferTargets& targets) {
+ObjectCamera GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings& settings,
+                                           const glm::dvec3& cutNormal, double cutOffset,
+                                           GBufferTargets& targets) {
     Impl& d = *this;
     const int n = settings.supersample;
     d.buildMesh();
@@ -639,72 +586,9 @@ MeshView GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSettings&
         throw InputError("mesh render too large for this GPU at " + std::to_string(n) + "x" +
                          std::to_string(n) + " supersampling");
 
-    // Fit: the largest uniform scale that keeps the object inside the design box, centred in it.
-    // Its positions are then design coordinates, relative to the box centre (the reference).
-    MeshView view;
-    glm::dvec3 box = genome.size;
-    view.reference = 0.5 * box;
-    double scale = std::numeric_limits<double>::max();
-    for (int k = 0; k < 3; ++k)
-        if (d.meshBoxSize[k] > 0.0) scale = std::min(scale, box[k] / d.meshBoxSize[k]);
-    if (scale == std::numeric_limits<double>::max()) scale = 1.0;
-    double radius = d.meshRadius * scale;
-
-    double yaw = glm::radians(settings.yaw), pitch = glm::radians(settings.pitch);
-    glm::dvec3 toEye(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
-    glm::dvec3 up = std::abs(toEye.y) > 0.999 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);
-    glm::dvec3 forward = -toEye;
-    glm::dvec3 right = glm::normalize(glm::cross(forward, up));
-    glm::dvec3 cameraUp = glm::cross(right, forward);
-    const double aspect = double(settings.width) / settings.height;
-    const double tanY = std::tan(glm::radians(settings.fovY) / 2.0), tanX = tanY * aspect;
-    double eyeDistance = settings.distance * radius;
-    // Clip-space shift and scale after the projection: the framing and the zoom, an off-centre
-    // frustum that leaves the eye (and so the shading) where it is.
-    double frameScale = settings.zoom, frameX = 0.0, frameY = 0.0;
-    if (!(settings.distance > 0.0)) {
-        // Framed. First the nearest eye (looking at the centre) that sees every vertex inside
-        // the margin: a vertex at (x, y) across the view and z towards the eye projects to
-        // x / ((D - z) tanX), so it fits when D >= z + |x| / (FrameFill tanX), and likewise for y.
-        eyeDistance = 0.0;
-        for (const glm::dvec3& p : d.meshPoints) {
-            const glm::dvec3 q = p * scale;
-            const double z = glm::dot(q, toEye);
-            eyeDistance = std::max({eyeDistance, z + std::abs(glm::dot(q, right)) / (FrameFill * tanX),
-                                    z + std::abs(glm::dot(q, cameraUp)) / (FrameFill * tanY)});
-        }
-        // Never inside the bounding sphere, where the near plane would cut the object.
-        eyeDistance = std::max(eyeDistance, 1.05 * radius);
-        // Then the object's projected bounds, centred and scaled to span FrameFill of the
-        // view's width or height: seen from aside, an object reaches further to one side.
-        glm::dvec2 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-        for (const glm::dvec3& p : d.meshPoints) {
-            const glm::dvec3 q = p * scale;
-            const double depth = eyeDistance - glm::dot(q, toEye);
-            const glm::dvec2 ndc(glm::dot(q, right) / (depth * tanX), glm::dot(q, cameraUp) / (depth * tanY));
-            lo = glm::min(lo, ndc);
-            hi = glm::max(hi, ndc);
-        }
-        const glm::dvec2 half = 0.5 * (hi - lo), middle = 0.5 * (hi + lo);
-        if (half.x > 0.0 || half.y > 0.0) {
-            frameScale *= FrameFill / std::max(half.x, half.y);
-            frameX = middle.x;
-            frameY = middle.y;
-        }
-    }
-    view.eye = toEye * eyeDistance;
-    double nearPlane = std::max(eyeDistance - 1.01 * radius, 1e-3 * radius);
-    double farPlane = eyeDistance + 1.01 * radius;
-    glm::dmat4 lookAt = glm::lookAt(view.eye, glm::dvec3(0.0), up);
-    glm::dmat4 frame(1.0); // x' = s (x - cx w), y' = s (y - cy w) in clip space
-    frame[0][0] = frame[1][1] = frameScale;
-    frame[3][0] = -frameScale * frameX;
-    frame[3][1] = -frameScale * frameY;
-    glm::dmat4 projection =
-        frame * glm::perspective(glm::radians(settings.fovY), aspect, nearPlane, farPlane);
-    glm::mat4 viewProjection(projection * lookAt);
-    // A key light above and to the left of the camera.
-    view.light = glm::normalize(toEye * 0.9 + cameraUp * 0.6 - right * 0.45);
+    const ObjectCamera view = frameObject(genome.size, d.meshFit, settings);
+    glm::mat4 viewProjection(view.viewProjection);
+    const double scale = view.scale;
 
     gl->glGenTextures(2, targets.textures);
     for (GLuint t : targets.textures) {

@@ -2,15 +2,22 @@
 
 #include "marbler/Error.h"
 #include "marbler/gl/HybridMesh.h"
+#include "marbler/gl/Meshes.h"
 
 namespace marbler::gl {
 
 Image renderView(const Genome& genome, const ViewRequest& request, GlRenderer* gl,
                  const RenderControl* control, const CpuRenderer* prepared) {
     if (request.object) {
-        if (!gl) throw RuntimeFailure("showing a solid design on an object needs OpenGL");
-        return request.useGl ? gl->renderMesh(genome, *request.object)
-                             : renderMeshHybrid(*gl, genome, *request.object, control);
+        if (request.useGl) {
+            if (!gl) throw RuntimeFailure("the GPU renderer was asked for, but there is no OpenGL renderer");
+            return gl->renderMesh(genome, *request.object);
+        }
+        // On the CPU: GL, where there is any, rasterises the object (it keeps the mesh loaded);
+        // with none the CPU rasterises it too.
+        return gl ? renderMeshHybrid(*gl, genome, *request.object, control)
+                  : renderObjectOnCpu(genome, meshByNameOrFile(request.object->mesh), *request.object,
+                                      control);
     }
     if (request.useGl) {
         if (!gl) throw RuntimeFailure("the GPU renderer was asked for, but there is no OpenGL renderer");

@@ -5,6 +5,7 @@
 
 #include "marbler/Genome.h"
 #include "marbler/Mesh.h"
+#include "marbler/ObjectView.h"
 #include "marbler/Sampling.h"
 
 #include <memory>
@@ -14,52 +15,11 @@
 
 namespace marbler::gl {
 
-/// A cutting plane through a solid object: points with dot(normal, p) > offset (in the fitted
-/// design box) are cut away, showing the marbled inside.
-struct CutPlane {
-    glm::dvec3 normal{0.0, 0.0, 1.0};
-    double offset = 0.0;
-};
-
-/// How a solid genome is shown on an object.
-struct MeshSettings {
-    int width = 512, height = 512;
-    std::string mesh = DefaultMesh; ///< a built-in name (builtinMeshNames()) or a file path
-    /// Orbit camera about the design box centre, +y up: the eye sits at
-    /// centre + D * (cos pitch sin yaw, sin pitch, cos pitch cos yaw), looking at the centre.
-    double yaw = 30.0, pitch = 20.0; ///< degrees
-    /// D in units of the fitted object's bounding radius about the box centre. 0 (the default):
-    /// framed, so the object fills the view at any angle and aspect: D is the nearest distance
-    /// that keeps every vertex in view, and the view is then shifted and scaled (an off-centre
-    /// frustum) so the object's projected bounds are centred and span 92 % of the view's width
-    /// or height.
-    double distance = 0.0;
-    double fovY = 50.0; ///< vertical field of view before the framing and the zoom, degrees
-    /// Magnification of the image about the view's centre (the framed object's centre), by
-    /// narrowing the frustum: the eye stays where it is, outside the object.
-    double zoom = 1.0;
-    bool lighting = true; ///< false: the marbling's own colours, unlit (tests, flat previews)
-    int supersample = 3;  ///< 1, 3 or 5 (n x n)
-    std::optional<CutPlane> cut;
-    Color clearColor{0x2b, 0x2b, 0x2b};
-    int threads = 0; ///< CPU workers when the CPU shades the samples (renderMeshHybrid); 0: every core
-};
-
-/// The first pass of a mesh render, read back: per sample of the n x n supersampled raster
-/// (width * n by height * n, rows bottom to top as GL reads them), where the object is seen, for a caller
-/// that colours the samples itself (the CPU kernel, where the GL is a software rasteriser).
-struct MeshGBuffer {
-    int width = 0, height = 0; ///< the output raster
-    int supersample = 1;       ///< n
-    /// 4 floats a sample: the design point relative to `reference`, and w = 1 where the object
-    /// covers the sample (0: the clear colour).
-    std::vector<float> positions;
-    /// 4 floats a sample: the unit normal facing the way the GL shading pass takes it, w = 0.
-    std::vector<float> normals;
-    glm::dvec3 reference{0.0}; ///< the design box centre
-    glm::dvec3 eye{0.0};       ///< the camera, relative to `reference`
-    glm::dvec3 light{0.0};     ///< unit direction towards the key light
-};
+// The object render's plain data (CutPlane, MeshSettings, MeshGBuffer) lives with the CPU's
+// object path in marbler/ObjectView.h; these names keep the GL back end's spelling.
+using marbler::CutPlane;
+using marbler::MeshGBuffer;
+using marbler::MeshSettings;
 
 /// An offscreen GL renderer. Owns a GL context, current on the thread that created it; use it
 /// from that thread only.

@@ -26,12 +26,13 @@ struct ViewRequest {
     /// A solid on an object (its size, mesh, camera, zoom, supersampling and cut).
     std::optional<MeshSettings> object;
     /// The back end (BackendChoice::useGl): the GL shaders, or the CPU kernel. On the CPU an
-    /// object is still rasterised by GL and only coloured by the kernel (renderMeshHybrid).
+    /// object is rasterised by GL where there is a renderer and only coloured by the kernel
+    /// (renderMeshHybrid), else rasterised on the CPU too (renderObjectOnCpu).
     bool useGl = false;
 };
 
-/// Renders `request`. `gl` is a GL renderer of the calling thread: needed for the GL back end
-/// and for any object, unused otherwise (null is fine for a CPU raster). `prepared` is the
+/// Renders `request`. `gl` is a GL renderer of the calling thread: needed for the GL back end,
+/// used for an object's rasterising where given, and may be null otherwise. `prepared` is the
 /// genome already prepared for the CPU kernel (CpuRenderer), reused across renders of one
 /// design; without it one is made. Throws InputError for bad settings, RuntimeFailure when GL is
 /// needed and missing or the driver fails, Cancelled when `control` cancels (CPU work only).
