@@ -47,9 +47,10 @@ options:
   --size WxH{cm,mm,in}      print size, e.g. 42x59.4cm; with --dpi it sets the pixel size
   --threads N               worker threads (default: every core)
   --gpu                     render with the OpenGL back end (needs a GL 4.3 context)
-  --mesh NAME|FILE          show a solid genome on an object: vase, sphere, cube, torus, teapot
-                            or a mesh file (needs --view); drawn by the CPU with no display,
-                            or with --gpu by the OpenGL back end
+  --mesh NAME|FILE          show the design on an object: vase, sphere, cube, torus, teapot
+                            or a mesh file (needs --view); a solid design is carved from its
+                            block, a flat one laid on the object's texture coordinates; drawn
+                            by the CPU with no display, or with --gpu (solids) by OpenGL
   --view YAW,PITCH          orbit camera angles in degrees for --mesh
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
   --cut NX,NY,NZ,OFFSET     cut the --mesh object open: the part where NX*x + NY*y + NZ*z >
@@ -155,8 +156,10 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
                                     std::to_string(static_cast<int>(genome.size.z / 2)) + ") or --mesh"));
     if (genome.dimension == 2 && settings.slice)
         throw InputError(withGenome("--slice needs a solid (3D) genome; this one is flat (2D)"));
-    if (genome.dimension == 2 && meshMode)
-        throw InputError(withGenome("--mesh needs a solid (3D) genome; this one is flat (2D)"));
+    if (genome.dimension == 2 && meshMode && args.has("gpu"))
+        throw InputError(
+            withGenome("--gpu draws only solid designs on objects; leave it out and the CPU lays "
+                       "this flat design on the object's texture coordinates"));
 
     // Pixel size: --size with --dpi, else --width/--height keeping the region's aspect, else
     // 1024 on the longer side.

@@ -1,5 +1,6 @@
 #include "marbler/ObjectView.h"
 
+#include "marbler/Bake.h"
 #include "marbler/Error.h"
 #include "marbler/Threads.h"
 #include "marbler/Tools.h"
@@ -30,12 +31,14 @@ glm::dvec3 shade(const glm::dvec3& albedo, const glm::dvec3& position, glm::dvec
 
 Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSettings& settings,
                      const RenderControl* control) {
-    if (genome.dimension != 3) throw InputError("a mesh render needs a solid (3D) genome");
+    const bool flat = genome.dimension == 2;
     const int n = g.supersample;
     const int gw = g.width * n, gh = g.height * n;
     const std::size_t samples = std::size_t(gw) * std::size_t(gh);
-    if (n < 1 || g.positions.size() != samples * 4 || g.normals.size() != samples * 4)
+    if (n < 1 || g.positions.size() != samples * 4 || g.normals.size() != samples * 4 ||
+        (flat && g.uvs.size() != samples * 2))
         throw InputError("the G-buffer does not match its size");
+    const FlatOnUvs flatOnUvs(genome);
 
     for (const PreparedOp& op : prepare(genome))
         if (op.color >= int(genome.palette.size()))
@@ -47,7 +50,8 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
     const glm::dvec3 background = linearOf(genome.background);
     const glm::dvec3 clear = linearOf(settings.clearColor);
     const CpuRenderer marbling(genome);
-    const bool soften = genome.bleed > 0.0;
+    // Soft edges (bleed) and a flat design's source image give colours, not palette indices.
+    const bool soften = genome.bleed > 0.0 || (flat && genome.source);
 
     Image image;
     image.width = g.width;
@@ -65,6 +69,7 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
         // With bleed, soft edges: the kernel's composited linear colours instead of indices.
         std::vector<double> soft(soften ? colors.size() * 3 : 0);
         std::vector<std::size_t> sampleOf(colors.size());
+        std::vector<char> outside(flat ? colors.size() : 0);
         std::vector<glm::dvec3> sum(std::size_t(g.width));
         std::vector<int> coveredIn(std::size_t(g.width));
         for (int y; rowLoop.next(y);) {
@@ -79,10 +84,19 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
                         if (g.positions[s * 4 + 3] > 0.0f) sampleOf[std::size_t(covered++)] = s;
                     }
             for (int k = 0; k < covered; ++k) {
-                const float* p = &g.positions[sampleOf[std::size_t(k)] * 4];
-                xs[std::size_t(k)] = g.reference.x + double(p[0]);
-                ys[std::size_t(k)] = g.reference.y + double(p[1]);
-                zs[std::size_t(k)] = g.reference.z + double(p[2]);
+                const std::size_t s = sampleOf[std::size_t(k)];
+                glm::dvec3 q;
+                if (flat) {
+                    // The design point at the sample's texture coordinates.
+                    q = flatOnUvs.designPoint({double(g.uvs[s * 2]), double(g.uvs[s * 2 + 1])});
+                    outside[std::size_t(k)] = !flatOnUvs.inside(q);
+                } else {
+                    const float* p = &g.positions[s * 4];
+                    q = g.reference + glm::dvec3(p[0], p[1], p[2]);
+                }
+                xs[std::size_t(k)] = q.x;
+                ys[std::size_t(k)] = q.y;
+                zs[std::size_t(k)] = q.z;
             }
             if (soften)
                 marbling.linearColorsAt(xs.data(), ys.data(), zs.data(), std::size_t(covered), soft.data());
@@ -94,7 +108,8 @@ Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& g, const MeshSetti
                 const std::size_t s = sampleOf[std::size_t(k)];
                 const int c = colors[std::size_t(k)];
                 const glm::dvec3 albedo =
-                    soften   ? glm::dvec3(soft[std::size_t(k) * 3], soft[std::size_t(k) * 3 + 1],
+                    flat && outside[std::size_t(k)] ? background
+                    : soften ? glm::dvec3(soft[std::size_t(k) * 3], soft[std::size_t(k) * 3 + 1],
                                           soft[std::size_t(k) * 3 + 2])
                     : c >= 0 ? palette[std::size_t(c)]
                              : background;

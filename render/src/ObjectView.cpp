@@ -29,7 +29,6 @@ struct ScreenVertex {
 
 void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal,
                        double& cutOffset) {
-    if (genome.dimension != 3) throw InputError("a mesh render needs a solid (3D) genome");
     if (settings.width < 1 || settings.height < 1 || settings.width > MaxMeshSide ||
         settings.height > MaxMeshSide)
         throw InputError("mesh render size must be 1 to " + std::to_string(MaxMeshSide) +
@@ -151,8 +150,15 @@ MeshGBuffer rasterizeObject(const Genome& genome, const MeshData& mesh, const Me
     for (std::uint32_t index : mesh.indices)
         if (index >= mesh.positions.size())
             throw InputError("the object's triangles name a vertex it does not have");
+    const bool flat = genome.dimension == 2;
+    if (flat && (mesh.uvs.size() != mesh.positions.size() || mesh.uvsArePatches))
+        throw InputError("a flat design lies on an object's own texture coordinates, and this object has "
+                         "none: give it UV coordinates, or show a solid design on it");
     const FittedMesh fitted = fitMesh(mesh);
-    const ObjectCamera view = frameObject(genome.size, fitted, settings);
+    // A flat design's object stands in a cube as wide as the design; only its texture
+    // coordinates meet the design.
+    const glm::dvec3 box = flat ? glm::dvec3(std::max(genome.size.x, genome.size.y)) : genome.size;
+    const ObjectCamera view = frameObject(box, fitted, settings);
     const int n = settings.supersample;
     const int gw = settings.width * n, gh = settings.height * n;
 
@@ -166,6 +172,7 @@ MeshGBuffer rasterizeObject(const Genome& genome, const MeshData& mesh, const Me
     const std::size_t samples = std::size_t(gw) * std::size_t(gh);
     result.positions.assign(samples * 4, 0.0f);
     result.normals.assign(samples * 4, 0.0f);
+    if (flat) result.uvs.assign(samples * 2, 0.0f);
 
     // The vertices as the G-buffer pass takes them: design coordinates about the box centre,
     // then the camera, then window coordinates in samples (GL's: x right, y up).
@@ -256,6 +263,14 @@ MeshGBuffer rasterizeObject(const Genome& genome, const MeshData& mesh, const Me
                         result.normals[s + 1] = float(normal.y);
                         result.normals[s + 2] = float(normal.z);
                         result.normals[s + 3] = 0.0f;
+                        if (flat) {
+                            const glm::dvec2 uv =
+                                (p0 * glm::dvec2(mesh.uvs[i0]) + p1 * glm::dvec2(mesh.uvs[i1]) +
+                                 p2 * glm::dvec2(mesh.uvs[i2])) /
+                                sum;
+                            result.uvs[s / 2] = float(uv.x);
+                            result.uvs[s / 2 + 1] = float(uv.y);
+                        }
                     }
                 }
             }

@@ -15,10 +15,6 @@
 namespace marbler {
 namespace {
 
-glm::dvec3 linearOf(Color c) {
-    return {srgbToLinear(c.r / 255.0), srgbToLinear(c.g / 255.0), srgbToLinear(c.b / 255.0)};
-}
-
 /// The reference's render: traceCovers per sample, composited newest ink first.
 Image referenceRender(const Genome& genome, const RenderSettings& settings) {
     std::vector<PreparedOp> ops = prepare(genome);

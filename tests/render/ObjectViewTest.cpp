@@ -6,6 +6,7 @@
 #include "marbler/ObjectView.h"
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
+#include "marbler/Bake.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
@@ -82,8 +83,9 @@ TEST(ObjectView, ACutShowsItsCapOnThePlane) {
 
 TEST(ObjectView, BadInputIsRefused) {
     MeshSettings settings;
-    Genome flat = loadGenome(test::dataDir() / "examples" / "five-stones.marble.json");
-    EXPECT_THROW(rasterizeObject(flat, builtinMesh("sphere"), settings), InputError);
+    settings.fovY = 0.0;
+    EXPECT_THROW(rasterizeObject(slateBlock(), builtinMesh("sphere"), settings), InputError);
+    settings.fovY = 50.0;
     MeshData empty;
     EXPECT_THROW(rasterizeObject(slateBlock(), empty, settings), InputError);
     MeshData broken = builtinMesh("cube");
@@ -124,6 +126,89 @@ TEST(ObjectView, RenderMeshNeedsNoDisplay) {
     settings.yaw = 30.0;
     settings.pitch = 20.0;
     EXPECT_EQ(renderObjectOnCpu(loadGenome(genome), builtinMesh("vase"), settings).rgb, image.rgb);
+}
+
+/// A flat design with two halves of different inks: the background left of x = w/2, a drop
+/// covering the right half (its radius reaches past the corners).
+Genome halves() {
+    Genome genome = loadGenome(test::dataDir() / "examples" / "five-stones.marble.json");
+    genome.initial.clear();
+    genome.operations.clear();
+    Operation drop;
+    drop.tool = Tool::Drop;
+    drop.center = glm::dvec3(genome.size.x * 1.5, genome.size.y / 2.0, 0.0);
+    drop.radius = genome.size.x;
+    drop.color = 0;
+    genome.initial.push_back(drop);
+    return genome;
+}
+
+TEST(ObjectView, AFlatDesignLiesOnTheTextureCoordinates) {
+    // A square flat design on the cube seen head-on and unlit: the front face shows the design's
+    // texture square, so at each sample the colour is the design's at that sample's UV point.
+    Genome genome = halves();
+    genome.size = glm::dvec3(800.0, 800.0, 0.0);
+    genome.initial[0].center = glm::dvec3(1200.0, 400.0, 0.0);
+    genome.initial[0].radius = 800.0;
+    MeshSettings settings;
+    settings.width = settings.height = 64;
+    settings.supersample = 1;
+    settings.yaw = 0.0;
+    settings.pitch = 0.0;
+    settings.lighting = false;
+    const MeshData cube = builtinMesh("cube");
+    const MeshGBuffer g = rasterizeObject(genome, cube, settings);
+    ASSERT_EQ(g.uvs.size(), std::size_t(64) * 64 * 2);
+    const Image image = shadeMeshOnCpu(genome, g, settings);
+    const FlatOnUvs flat(genome);
+    const CpuRenderer renderer(genome);
+    std::size_t checked = 0, inkSeen = 0, bathSeen = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const std::size_t s = std::size_t(63 - y) * 64 + std::size_t(x); // GL rows run upwards
+            if (g.positions[s * 4 + 3] == 0.0f) continue;
+            const glm::dvec3 q = flat.designPoint({g.uvs[s * 2], g.uvs[s * 2 + 1]});
+            const int ink = renderer.colorIndexAt(q);
+            const Color expected = ink >= 0 ? genome.palette[std::size_t(ink)] : genome.background;
+            const std::uint8_t* got = image.row(y) + x * 3;
+            EXPECT_EQ(got[0], expected.r);
+            EXPECT_EQ(got[1], expected.g);
+            EXPECT_EQ(got[2], expected.b);
+            ++checked;
+            (ink >= 0 ? inkSeen : bathSeen) += 1;
+        }
+    EXPECT_GT(checked, 64u * 64u / 4);
+    // Both halves show: the design is laid across the face, not one colour.
+    EXPECT_GT(inkSeen, checked / 5);
+    EXPECT_GT(bathSeen, checked / 5);
+}
+
+TEST(ObjectView, AFlatDesignNeedsTheObjectsOwnUvs) {
+    const Genome genome = halves();
+    MeshSettings settings;
+    MeshData bare = builtinMesh("sphere");
+    bare.uvs.clear();
+    EXPECT_THROW(rasterizeObject(genome, bare, settings), InputError);
+    MeshData patches = builtinMesh("sphere");
+    patches.uvsArePatches = true;
+    EXPECT_THROW(rasterizeObject(genome, patches, settings), InputError);
+}
+
+TEST(ObjectView, RenderMeshLaysAFlatDesignOnTheVase) {
+    const auto dir = test::outputDir("object-view-flat");
+    const std::string genome = (test::dataDir() / "examples" / "five-stones.marble.json").string();
+    const std::filesystem::path out = dir / "vase.png";
+    test::RunResult run = test::runMarbler(
+        {"render", genome, "--mesh", "vase", "--view", "30,20", "--width", "64", "-o", out.string()},
+        {{"DISPLAY", std::nullopt}, {"WAYLAND_DISPLAY", std::nullopt}});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    MeshSettings settings;
+    settings.width = settings.height = 64;
+    settings.yaw = 30.0;
+    settings.pitch = 20.0;
+    EXPECT_EQ(test::readImage8(out).rgb,
+              renderObjectOnCpu(loadGenome(genome), builtinMesh("vase"), settings).rgb);
+    EXPECT_EQ(serializeGenome(loadDesign(out)), serializeGenome(loadGenome(genome)));
 }
 
 } // namespace

@@ -57,6 +57,15 @@ glm::vec3 linearColor(Color c) {
             float(srgbToLinear(c.b / 255.0))};
 }
 
+/// The GL passes draw solid designs on objects; flat ones, laid on the texture coordinates,
+/// are drawn by the CPU's object path (ObjectView.h).
+void checkSolidOnObject(const Genome& genome) {
+    if (genome.dimension != 3)
+        throw InputError(
+            "the GPU draws only solid designs on objects; the CPU draws a flat one on an object's "
+            "texture coordinates (leave out --gpu)");
+}
+
 /// The G-buffer's GL objects, freed together.
 struct GBufferTargets {
     QOpenGLFunctions_4_3_Core* gl = nullptr;
@@ -475,6 +484,7 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
     glm::dvec3 cutNormal;
     double cutOffset = 0.0;
     checkMeshSettings(genome, settings, cutNormal, cutOffset);
+    checkSolidOnObject(genome);
     const int n = settings.supersample;
     Impl& d = *mImpl;
     d.makeCurrent();
@@ -547,6 +557,7 @@ MeshGBuffer GlRenderer::renderMeshGBuffer(const Genome& genome, const MeshSettin
     glm::dvec3 cutNormal;
     double cutOffset = 0.0;
     checkMeshSettings(genome, settings, cutNormal, cutOffset);
+    checkSolidOnObject(genome);
     Impl& d = *mImpl;
     d.makeCurrent();
     auto* gl = d.gl;

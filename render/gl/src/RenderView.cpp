@@ -13,11 +13,11 @@ Image renderView(const Genome& genome, const ViewRequest& request, GlRenderer* g
             if (!gl) throw RuntimeFailure("the GPU renderer was asked for, but there is no OpenGL renderer");
             return gl->renderMesh(genome, *request.object);
         }
-        // On the CPU: GL, where there is any, rasterises the object (it keeps the mesh loaded);
-        // with none the CPU rasterises it too.
-        return gl ? renderMeshHybrid(*gl, genome, *request.object, control)
-                  : renderObjectOnCpu(genome, meshByNameOrFile(request.object->mesh), *request.object,
-                                      control);
+        // On the CPU: GL, where there is any, rasterises a solid's object (it keeps the mesh
+        // loaded); with none, or for a flat design on its texture coordinates, the CPU does.
+        return gl && genome.dimension == 3 ? renderMeshHybrid(*gl, genome, *request.object, control)
+                                           : renderObjectOnCpu(genome, meshByNameOrFile(request.object->mesh),
+                                                               *request.object, control);
     }
     if (request.useGl) {
         if (!gl) throw RuntimeFailure("the GPU renderer was asked for, but there is no OpenGL renderer");

@@ -1,5 +1,6 @@
 #pragma once
-/// A solid design on an object: how it is seen (MeshSettings: size, object, orbit camera,
+/// A design on an object, a solid one carved from its block or a flat one laid on the object's
+/// texture coordinates (FlatOnUvs, Bake.h): how it is seen (MeshSettings: size, object, orbit camera,
 /// framing, cut), the camera that frames an object in the design box (frameObject), and the
 /// CPU's own object path: the object rasterised on the CPU into the same G-buffer the GL pass
 /// reads back (rasterizeObject), then coloured by the kernel (shadeMeshOnCpu). So an object
@@ -26,7 +27,7 @@ struct CutPlane {
     double offset = 0.0;
 };
 
-/// How a solid genome is shown on an object.
+/// How a design is shown on an object.
 struct MeshSettings {
     int width = 512, height = 512;
     std::string mesh = DefaultMesh; ///< a built-in name (builtinMeshNames()) or a file path
@@ -64,13 +65,15 @@ struct MeshGBuffer {
     std::vector<float> positions;
     /// 4 floats a sample: the unit normal facing the way the shading takes it, w = 0.
     std::vector<float> normals;
+    /// 2 floats a sample: the texture coordinates there (flat designs only; empty for solids).
+    std::vector<float> uvs;
     glm::dvec3 reference{0.0}; ///< the design box centre
     glm::dvec3 eye{0.0};       ///< the camera, relative to `reference`
     glm::dvec3 light{0.0};     ///< unit direction towards the key light
 };
 
-/// The checks of an object render's settings (a solid genome, the size, supersampling, camera
-/// and cut); returns the cutting plane's unit normal and offset (0 without a cut). Throws
+/// The checks of an object render's settings (the size, supersampling, camera and cut);
+/// returns the cutting plane's unit normal and offset (0 without a cut). Throws
 /// InputError naming what is wrong.
 void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal,
                        double& cutOffset);
@@ -102,19 +105,23 @@ ObjectCamera frameObject(const glm::dvec3& designSize, const FittedMesh& mesh, c
 
 /// Pass 1 on the CPU: `mesh` rasterised with the camera of frameObject into the G-buffer the GL
 /// pass makes (depth-tested, the cut's cap and the inside of open meshes as the GL shader
-/// gives them), on every core. Checks the settings as checkMeshSettings does.
+/// gives them), on every core. A solid design's object is fitted into its design box; a flat
+/// design's into a cube as wide as the design's longer side, with the texture coordinates at
+/// every sample (the mesh must have its own: not uvsArePatches). Throws InputError for bad
+/// settings (checkMeshSettings), a broken mesh, or a flat design on a mesh without its own UVs.
 MeshGBuffer rasterizeObject(const Genome& genome, const MeshData& mesh, const MeshSettings& settings,
                             const RenderControl* control = nullptr);
 
 /// The second pass of an object render on the CPU: the colour rule at each covered sample of
-/// `gbuffer`, lit as the GL shading pass lights it (unless `settings.lighting` is off), averaged
+/// `gbuffer` (a flat design's at the sample's texture point, FlatOnUvs, the background beyond
+/// the design), lit as the GL shading pass lights it (unless `settings.lighting` is off), averaged
 /// in linear light with `settings.clearColor` where the object does not cover a sample. Agrees
 /// with the GL shading up to the GPU's float rounding. Runs on every core. Throws InputError for
 /// a colour index outside the palette, Cancelled when cancelled.
 Image shadeMeshOnCpu(const Genome& genome, const MeshGBuffer& gbuffer, const MeshSettings& settings,
                      const RenderControl* control = nullptr);
 
-/// Both passes on the CPU: a solid design on `mesh` with no GL at all.
+/// Both passes on the CPU: a design on `mesh` with no GL at all.
 Image renderObjectOnCpu(const Genome& genome, const MeshData& mesh, const MeshSettings& settings,
                         const RenderControl* control = nullptr);
 
