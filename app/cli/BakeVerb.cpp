@@ -46,8 +46,8 @@ bad input, 1 any other failure.
 
 options:
   -o, --output OUT          the mesh file (.glb, .gltf, .obj), or the folder for --slices
-  --mesh NAME|FILE          vase, sphere, cube, torus, teapot, or a mesh file assimp reads
-                            (OBJ, STL, PLY, glTF, ...)
+  --mesh NAME|FILE          vase, sphere, cube, torus, teapot, book, cushion, cloth, wall,
+                            or a mesh file assimp reads (OBJ, STL, PLY, glTF, ...)
   --texture N               the texture's side in texels (default 2048, at most 16384)
   --aa MODE                 samples a texel or pixel: none, rgss (default for the texture;
                             none for slices), quincunx, grid2..grid8, checker4, rooks8

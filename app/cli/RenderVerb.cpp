@@ -47,10 +47,11 @@ options:
   --size WxH{cm,mm,in}      print size, e.g. 42x59.4cm; with --dpi it sets the pixel size
   --threads N               worker threads (default: every core)
   --gpu                     render with the OpenGL back end (needs a GL 4.3 context)
-  --mesh NAME|FILE          show the design on an object: vase, sphere, cube, torus, teapot
-                            or a mesh file (needs --view); a solid design is carved from its
-                            block, a flat one laid on the object's texture coordinates; drawn
-                            by the CPU with no display, or with --gpu (solids) by OpenGL
+  --mesh NAME|FILE          show the design on an object: vase, sphere, cube, torus, teapot,
+                            book, cushion, cloth, wall or a mesh file (needs --view); a solid
+                            design is carved from its block, a flat one laid on the object's
+                            texture coordinates; drawn by the CPU with no display, or with
+                            --gpu (solids) by OpenGL
   --view YAW,PITCH          orbit camera angles in degrees for --mesh
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
   --cut NX,NY,NZ,OFFSET     cut the --mesh object open: the part where NX*x + NY*y + NZ*z >

@@ -227,6 +227,117 @@ MeshData torus() {
     return mesh;
 }
 
+/// A panel of `uSteps` x `vSteps` cells: the point at (s, t) in [0, 1]^2 is
+/// origin + s right + t up + depth(s, t) n with n = normalize(right x up), its normal from the
+/// surface's tangents; the texture across `box` upright and unmirrored seen from the n side
+/// (s to the right, t upwards).
+void addPanel(MeshData& mesh, const glm::vec3& origin, const glm::vec3& right, const glm::vec3& up,
+              int uSteps, int vSteps, UvBox box, const std::function<float(float, float)>& depth = {}) {
+    const glm::vec3 n = glm::normalize(glm::cross(right, up));
+    auto point = [&](float s, float t) {
+        return origin + s * right + t * up + (depth ? depth(s, t) : 0.0f) * n;
+    };
+    auto base = std::uint32_t(mesh.positions.size());
+    for (int j = 0; j <= vSteps; ++j)
+        for (int i = 0; i <= uSteps; ++i) {
+            const float s = float(i) / float(uSteps), t = float(j) / float(vSteps);
+            mesh.positions.push_back(point(s, t));
+            glm::vec3 normal = n;
+            if (depth) {
+                const float h = 1e-3f;
+                const glm::vec3 ds = point(std::min(s + h, 1.0f), t) - point(std::max(s - h, 0.0f), t);
+                const glm::vec3 dt = point(s, std::min(t + h, 1.0f)) - point(s, std::max(t - h, 0.0f));
+                const glm::vec3 c = glm::cross(ds, dt);
+                if (glm::length(c) > 0.0f) normal = glm::normalize(c);
+            }
+            mesh.normals.push_back(normal);
+            mesh.uvs.push_back(box.at(s, 1.0f - t));
+        }
+    auto at = [&](int i, int j) { return base + std::uint32_t(j * (uSteps + 1) + i); };
+    // right x up = n, so (i, j), (i + 1, j), (i + 1, j + 1) runs counter-clockwise seen from n.
+    for (int j = 0; j < vSteps; ++j)
+        for (int i = 0; i < uSteps; ++i) {
+            mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+}
+
+/// The part of the texture a surface of `width` x `height` takes when a flat design, laid over
+/// the whole texture by its longer side, is to show undistorted on it: the largest box of that
+/// aspect, centred.
+UvBox boxOfAspect(float width, float height) {
+    const float aspect = width / height;
+    if (aspect >= 1.0f) {
+        const float h = 0.5f / aspect;
+        return {0.0f, 0.5f - h, 1.0f, 0.5f + h};
+    }
+    const float w = 0.5f * aspect;
+    return {0.5f - w, 0.0f, 0.5f + w, 1.0f};
+}
+
+MeshData book() {
+    // A closed hardback standing upright, its front cover facing the front (+z) and the spine
+    // on the left. The covers and spine take the texture as a book's jacket lies flat: back
+    // cover, spine, front cover from left to right, undistorted, across the texture's middle;
+    // the page edges (top, bottom and fore-edge) take strips above and below, as marbled edges.
+    MeshData mesh;
+    const float w = 1.4f, h = 2.0f, d = 0.32f, total = 2.0f * w + d;
+    const UvBox jacket = boxOfAspect(total, h);
+    auto across = [&](float from, float to) {
+        return UvBox{jacket.u0 + from / total, jacket.v0, jacket.u0 + to / total, jacket.v1};
+    };
+    const float x0 = -0.5f * w, x1 = 0.5f * w, y0 = -0.5f * h, z0 = -0.5f * d, z1 = 0.5f * d;
+    addPanel(mesh, {x0, y0, z1}, {w, 0, 0}, {0, h, 0}, 14, 20, inset(across(w + d, total))); // front
+    addPanel(mesh, {x0, y0, z0}, {0, 0, d}, {0, h, 0}, 4, 20, inset(across(w, w + d)));      // spine
+    addPanel(mesh, {x1, y0, z0}, {-w, 0, 0}, {0, h, 0}, 14, 20, inset(across(0.0f, w)));     // back
+    // The page edges, each undistorted in its own strip: the fore-edge (on its side, running up
+    // the book from left to right) below the jacket, the top and bottom edges above it.
+    const float below = 0.5f * (1.0f + jacket.v1), above = 0.5f * jacket.v0;
+    const float foreHeight = 0.9f * d / h, edgeHeight = 0.46f * d / w;
+    addPanel(mesh, {x1, y0, z0}, {0, h, 0}, {0, 0, d}, 20, 4,
+             inset({0.05f, below - 0.5f * foreHeight, 0.95f, below + 0.5f * foreHeight})); // fore-edge
+    addPanel(mesh, {x0, -y0, z1}, {w, 0, 0}, {0, 0, -d}, 14, 4,
+             inset({0.02f, above - 0.5f * edgeHeight, 0.48f, above + 0.5f * edgeHeight})); // top
+    addPanel(mesh, {x0, y0, z0}, {w, 0, 0}, {0, 0, d}, 14, 4,
+             inset({0.52f, above - 0.5f * edgeHeight, 0.98f, above + 0.5f * edgeHeight})); // bottom
+    return mesh;
+}
+
+MeshData cushion() {
+    // A square cushion, puffed, facing the front: its face takes the whole texture, upright.
+    // Open at the back (seen from behind, its inside shows, as a shell).
+    MeshData mesh;
+    const float side = 1.6f, puff = 0.28f;
+    addPanel(mesh, {-0.5f * side, -0.5f * side, 0.0f}, {side, 0, 0}, {0, side, 0}, 40, 40, inset({}),
+             [&](float s, float t) {
+                 // Full in the middle, falling to the seam round the edge.
+                 const float a = std::sin(Pi * s), b = std::sin(Pi * t);
+                 return puff * std::pow(std::max(a * b, 0.0f), 0.45f);
+             });
+    return mesh;
+}
+
+MeshData cloth() {
+    // A cloth hanging in folds from a straight top edge, as a curtain: the folds deepen towards
+    // the hem. The texture upright across it, undistorted in the flat.
+    MeshData mesh;
+    const float width = 1.6f, height = 2.0f, folds = 3.5f, depth = 0.16f;
+    addPanel(mesh, {-0.5f * width, -0.5f * height, 0.0f}, {width, 0, 0}, {0, height, 0}, 96, 40,
+             boxOfAspect(width, height), [&](float s, float t) {
+                 return depth * (0.35f + 0.65f * (1.0f - t)) * std::sin(2.0f * Pi * folds * s);
+             });
+    return mesh;
+}
+
+MeshData wall() {
+    // A stretch of wall, flat, facing the front, papered: the texture upright across it.
+    MeshData mesh;
+    const float width = 2.4f, height = 1.8f;
+    addPanel(mesh, {-0.5f * width, -0.5f * height, 0.0f}, {width, 0, 0}, {0, height, 0}, 12, 9,
+             boxOfAspect(width, height));
+    return mesh;
+}
+
 std::vector<glm::vec2> smoothProfile(const std::vector<glm::vec2>& keys, int perSegment) {
     // Catmull-Rom through the key points, so lathe normals vary smoothly.
     std::vector<glm::vec2> out;
@@ -290,8 +401,9 @@ struct BuiltinMesh {
 };
 
 /// The one list of built-in objects; the first is DefaultMesh.
-constexpr BuiltinMesh BuiltinMeshes[] = {
-    {"vase", vase}, {"sphere", sphere}, {"cube", cube}, {"torus", torus}, {"teapot", teapot}};
+constexpr BuiltinMesh BuiltinMeshes[] = {{"vase", vase},       {"sphere", sphere}, {"cube", cube},
+                                         {"torus", torus},     {"teapot", teapot}, {"book", book},
+                                         {"cushion", cushion}, {"cloth", cloth},   {"wall", wall}};
 
 } // namespace
 

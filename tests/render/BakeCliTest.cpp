@@ -95,8 +95,8 @@ TEST(BakeCli, MessagesAndHelpNameEveryBuiltInObject) {
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(r.err,
               "marbler bake: --mesh: 'dodecahedron' is neither a built-in object (vase, sphere, cube, torus, "
-              "teapot) nor a mesh file\n");
-    EXPECT_EQ(builtinMeshList(), "vase, sphere, cube, torus, teapot");
+              "teapot, book, cushion, cloth, wall) nor a mesh file\n");
+    EXPECT_EQ(builtinMeshList(), "vase, sphere, cube, torus, teapot, book, cushion, cloth, wall");
     try {
         builtinMesh("dodecahedron");
         ADD_FAILURE() << "an unknown object was made";

@@ -25,7 +25,8 @@ struct MeshData {
 };
 
 /// The built-in objects, in the order the window lists them: vase (the default), sphere, cube,
-/// torus, teapot. The one list of them: `--mesh`, the window's object boxes and the session
+/// torus, teapot, and those a textile or stationery designer shows a pattern on: book, cushion,
+/// cloth (hanging in folds), wall. The one list of them: `--mesh`, the window's object boxes and the session
 /// file all read it.
 std::vector<std::string> builtinMeshNames();
 
@@ -42,8 +43,10 @@ bool isBuiltinMesh(const std::string& name);
 /// triangles overlapping in them and none wrapping round a seam: the vase, the sphere (by
 /// longitude and latitude) and the torus (by its two angles) round and up over the whole
 /// texture, the seam at the back (-z), the texture's middle facing the front (+z); the cube by
-/// faces, six tiles; the teapot by parts. Seen from outside every texture reads the right way
-/// round, unmirrored. Throws InputError for an unknown name.
+/// faces, six tiles; the teapot by parts; the book as its jacket lies flat (back cover, spine,
+/// front cover across the middle, undistorted) with its page edges in strips above and below;
+/// the cushion's face, the cloth and the wall upright across the texture, undistorted. Seen from outside
+/// every texture reads the right way round, unmirrored. Throws InputError for an unknown name.
 MeshData builtinMesh(const std::string& name);
 
 } // namespace marbler
