@@ -155,10 +155,12 @@ vec2 stylusVelocity(vec2 r, vec2 t, float c, vec4 shape) {
     // q of tine j: (R . N - o_j) / lambda, o_j = (j - (k - 1) / 2) spacing.
     float q0 = (dot(r, n) + 0.5 * float(tines - 1) * shape.z) / shape.x, dq = shape.z / shape.x;
     float across = 0.0, turn = 0.0;
-    for (int j = 0; j < tines; ++j) {
-        float q = q0 - float(j) * dq;
-        across += 1.0 / (1.0 + q * q);
-        turn += atan(q);
+    // Two tines a loop iteration: half the loop iterations (see "Loops" at stylusBack).
+    for (int j = 0; j < tines; j += 2) {
+        float q = q0 - float(j) * dq, next = q - dq;
+        bool pair = j + 1 < tines;
+        across += 1.0 / (1.0 + q * q) + (pair ? 1.0 / (1.0 + next * next) : 0.0);
+        turn += atan(q) + (pair ? atan(next) : 0.0);
     }
 #endif
     float one = 1.0 - u * u; // w = one^2, w' = -4 u one

@@ -78,8 +78,8 @@ TEST(GlCli, GpuRefusesWhatASoftwareRasteriserCannotDrawWithItsReason) {
     rake.alpha = 45;
     rake.lambda = 9;
     rake.reach = 40;
-    rake.tines = 2;
-    rake.spacing = 30;
+    rake.tines = 4;
+    rake.spacing = 25;
     rake.steps = minimumStylusSteps(rake);
     const std::filesystem::path design = dir / "long-rake.marble.json";
     std::ofstream(design) << serializeGenome(genome);

@@ -168,7 +168,7 @@ std::vector<NamedGenome> stylusGenomes() {
 
     Genome rake = dropsOnABath();
     rake.bleed = 4.0;
-    rake.operations.push_back(stylusStroke({{40, 420}, {600, 300}, {1160, 460}}, 60, 12, 60, 5, 70));
+    rake.operations.push_back(stylusStroke({{40, 420}, {600, 300}, {1160, 460}}, 40, 12, 60, 5, 70));
     out.push_back({"v3-stylus-rake-bleed-2d", rake});
 
     Genome pressed = dropsOnABath();
@@ -248,9 +248,14 @@ bool atInkBoundary(const Genome& genome, const CpuRenderer& cpu, const RenderSet
 
 /// Renders on both and holds GL to the CPU; saves both images when they disagree.
 void expectMatchesCpu(const Genome& genome, const RenderSettings& settings, const std::string& label) {
+    Image actual;
+    try {
+        actual = test::glRenderer()->render(genome, settings);
+    } catch (const RuntimeFailure& e) {
+        FAIL() << label << ": " << e.what();
+    }
     CpuRenderer cpu(genome);
     Image expected = cpu.render(settings);
-    Image actual = test::glRenderer()->render(genome, settings);
     ASSERT_EQ(actual.width, expected.width);
     ASSERT_EQ(actual.height, expected.height);
     std::size_t pixels = std::size_t(expected.width) * std::size_t(expected.height);
@@ -334,7 +339,7 @@ TEST_F(GlVsCpu, AStylusBeyondASoftwareRasterisersLoopLimitIsRefused) {
     // sees it (tools.glsl, loopsWereCut) and refuses with its reason, a RuntimeFailure, on which
     // the render service draws on the CPU; a hardware GPU has no such limit and draws it.
     Genome genome = dropsOnABath();
-    genome.operations.push_back(stylusStroke(spiral(), 45, 9, 40, 2, 30));
+    genome.operations.push_back(stylusStroke(spiral(), 45, 9, 40, 4, 25));
     RenderSettings settings;
     settings.width = 150;
     settings.height = 100;
@@ -351,6 +356,8 @@ TEST_F(GlVsCpu, AStylusBeyondASoftwareRasterisersLoopLimitIsRefused) {
         EXPECT_NE(std::string(e.what()).find("CPU renderer draws it"), std::string::npos) << e.what();
     }
     // And the same design within the limit (one sample a pixel) is drawn as the CPU draws it.
+    settings.width = 90;
+    settings.height = 60;
     settings.aa = "none";
     expectMatchesCpu(genome, settings, "a long rake, one sample");
 }
