@@ -21,4 +21,8 @@ void main() {
         sum += uWeights[s] * inkColor(p);
     }
     fragColor = encodeSrgb8(sum);
+#if MARBLER_STYLUS
+    // Alpha 0: the driver cut the loops short (tools.glsl, loopsWereCut); the host refuses it.
+    if (loopsWereCut()) fragColor.a = 0u;
+#endif
 }

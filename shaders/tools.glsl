@@ -17,7 +17,7 @@
 // Record layout (classes, the registry's ShaderForm in genome/include/marbler/Params.h, which names
 // each tool's: 0 push with a square root, 1 push with a cube root (3D drop),
 // 2 translation by the distance-dependent shift (line, comb), 3 translation by the wave's shift,
-// 4 turn (circle, sphere, vortex), 5 stretch, 6 flow; spray is a push of strength 0):
+// 4 turn (circle, sphere, vortex), 5 stretch, 6 flow, 7 stylus; spray is a push of strength 0):
 //   o0 = (centre or origin - R, r^2 of the ink test or -1 (no ink))
 //   o1 = (axis projected out of the distance: cylinder, 3D circle; else 0, palette index or -1)
 //   o2 = (move direction (translations, stretch, flow: M) or turn axis, class)
@@ -25,24 +25,26 @@
 //        radial wave)
 //   o4 = (V: the wave's second axis; flow: (1 / Lx, 1 / Ly, Ly / Lx); else 0,
 //        radius of the circle or sphere (0 for a vortex) or of the ink (drop, spray, cylinder);
-//        flow: 1 for the cavity, 0 for cells)
+//        flow: 1 for the cavity, 0 for cells); stylus: (lambda, reach, spacing, tines)
 //   o5 = push: (r^2 or r^3, -, -, -); line, comb, turn: (alpha lambda, lambda, comb spacing or 0, -);
 //        wave: (amplitude 1, amplitude 2 (0 for one term), 1 / wavelength 1, 1 / wavelength 2);
 //        stretch: (shift, power, first tooth in uTeeth, tooth count);
-//        flow: (step h, steps, speed U, tolerance of the fixed-point iteration)
-//   o6 = (wave phase 1, wave phase 2 (radians), turn: core^2, the nearest stretch or flow at or
-//        before this record (itself for one), -1 if none)
+//        flow: (step h, steps, speed U, tolerance of the fixed-point iteration);
+//        stylus: (step h, path segments, tolerance, its first segment's texel in uPaths)
+//   o6 = (wave phase 1, wave phase 2 (radians), turn: core^2, the nearest stretch, flow or stylus
+//        at or before this record (itself for one), -1 if none)
 //
 // Version 2's forms (stretch, flow, a turn's finite core) are compiled in only where a design
-// has them (MARBLER_VERSION2), and the bleed rule only where a design bleeds (MARBLER_BLEED):
-// every other design runs the version-1 body, at the version-1 speed.
+// has them (MARBLER_VERSION2), version 3's stylus, which runs among them, only where a design
+// has one (MARBLER_STYLUS), and the bleed rule only where a design bleeds (MARBLER_BLEED): every
+// other design runs the version-1 body, at the version-1 speed.
 
 const float TwoPi = 6.28318530717958647692;
 const float HalfPi = 1.57079632679489661923;
 const float Pi = 3.14159265358979323846;
 const int OpVec4s = 7;
-// The most fixed-point iterations of one flow step (the CPU's double iteration takes up to 100;
-// see FlowToleranceShare in render/gl/src/OpPacking.h).
+// The most fixed-point iterations of one flow or stylus step (the CPU's double iteration takes
+// up to 100; see FlowToleranceShare in render/gl/src/OpPacking.h).
 const int FlowIterations = 16;
 
 // The genome is data, never code: a new design is a buffer upload, not a recompile. A buffer
@@ -52,6 +54,9 @@ uniform samplerBuffer uOps;
 uniform int uOpCount;
 #if MARBLER_VERSION2
 uniform samplerBuffer uTeeth; // every stretch's teeth (R32F), indexed by its record
+#endif
+#if MARBLER_STYLUS
+uniform samplerBuffer uPaths; // every stylus's path segments (RGBA32F), indexed by its record
 #endif
 #if MARBLER_BLEED
 uniform float uBleed; // the genome's bleed b > 0
@@ -129,6 +134,93 @@ vec3 flowBack(vec3 rel, vec3 m, vec3 n, vec4 k, vec4 q) {
         x = next;
     }
     return x.x * m + x.y * n;
+}
+#endif
+
+#if MARBLER_STYLUS
+// The velocity of a stylus at R = P - S(tau) (genome-format.md, stylus): the sum over its tines
+// of c w(u) / (1 + q^2) T - c lambda atan(q) w'(u) / l N, with shape = (lambda, reach l,
+// spacing, tines). The tines lie along N, so u and the window w are one for all of them: only
+// the sums over the tines loop.
+vec2 stylusVelocity(vec2 r, vec2 t, float c, vec4 shape) {
+    float u = dot(r, t) / shape.y;
+    if (!(abs(u) < 1.0)) return vec2(0.0); // w = w' = 0
+    vec2 n = vec2(-t.y, t.x);
+#if MARBLER_STYLUS == 1
+    // Every stylus of the design has one tine: no loop (see "Loops" at stylusBack).
+    float q = dot(r, n) / shape.x;
+    float across = 1.0 / (1.0 + q * q), turn = atan(q);
+#else
+    int tines = int(shape.w);
+    // q of tine j: (R . N - o_j) / lambda, o_j = (j - (k - 1) / 2) spacing.
+    float q0 = (dot(r, n) + 0.5 * float(tines - 1) * shape.z) / shape.x, dq = shape.z / shape.x;
+    float across = 0.0, turn = 0.0;
+    // Two tines a loop iteration: half the loop iterations (see "Loops" at stylusBack).
+    for (int j = 0; j < tines; j += 2) {
+        float q = q0 - float(j) * dq, next = q - dq;
+        bool pair = j + 1 < tines;
+        across += 1.0 / (1.0 + q * q) + (pair ? 1.0 / (1.0 + next * next) : 0.0);
+        turn += atan(q) + (pair ? atan(next) : 0.0);
+    }
+#endif
+    float one = 1.0 - u * u; // w = one^2, w' = -4 u one
+    return (c * one * one * across) * t + (c * shape.x * 4.0 * u * one * turn / shape.y) * n;
+}
+
+// Stylus, backward from x (relative to R): its implicit midpoint steps newest first, each solved
+// by fixed-point iteration from the spec's guess; q = o5 = (h, segments, tolerance, first texel
+// in uPaths). Each segment is two texels (OpPacking.cpp, stylusCoefficients): (S at its first
+// step, T), (its step count, c at its first step, c's change a step, -), so step j of a segment
+// has the stylus at S + j h T. Only steps that find the stylus within reach along the track run:
+// on a segment the track coordinate m = (x - S) . T is linear in the step, falling by h, so while
+// x stands still the steps with |m| < l are an interval found in closed form, and every other
+// step would leave x where it is (w = 0), as the spec allows.
+//
+// Loops: llvmpipe stops every loop of a shader invocation (a block of pixels, all its samples)
+// once 65535 loop iterations have run in all, and the image is then wrong with no error. A
+// stylus that drags ink runs thousands of steps, each a loop of fixed-point iterations (and of
+// tines, for a rake: MARBLER_STYLUS 2, else 1 and no tine loop), so a long one can reach that.
+// loopsWereCut() tells afterwards, and the host refuses such a render (GlRenderer.cpp).
+vec2 stylusBack(vec2 x, vec4 shape, vec4 q) {
+    float h = q.x, reach = shape.y;
+    int first = int(q.w);
+    for (int s = int(q.y) - 1; s >= 0; --s) {
+        vec4 a = texelFetch(uPaths, first + 2 * s);
+        vec4 b = texelFetch(uPaths, first + 2 * s + 1);
+        vec2 t = a.zw;
+        for (int j = int(b.x) - 1; j >= 0; --j) {
+            // m at step j is along - j h. Step on to the newest step at or before j with m < l;
+            // if m >= l there already, it stays so for every earlier step of the segment.
+            float along = dot(x - a.xy, t);
+            float top = min(float(j), ceil((along + reach) / h) - 1.0);
+            if (top < 0.0 || along - top * h >= reach) break;
+            j = int(top);
+            vec2 place = a.xy + (float(j) * h) * t;
+            float c = b.y + float(j) * b.z;
+            vec2 next = x - h * stylusVelocity(x - place, t, c, shape);
+            for (int i = 0; i < FlowIterations; ++i) {
+                vec2 again = x - h * stylusVelocity(0.5 * (x + next) - place, t, c, shape);
+                // The tolerance, or a few float steps of the point where those are larger.
+                float tolerance = max(q.z, 4.0e-7 * (abs(again.x) + abs(again.y)));
+                bool settled = length(again - next) < tolerance;
+                next = again;
+                if (settled) break;
+            }
+            x = next;
+        }
+    }
+    return x;
+}
+
+uniform int uLoopProbe; // 2: a loop the compiler cannot unroll
+
+// Whether the driver cut this invocation's loops short (llvmpipe's limit, see stylusBack): then
+// a loop of two runs once.
+bool loopsWereCut() {
+    int runs = 0;
+    for (int i = 0; i < uLoopProbe; ++i)
+        runs += i + 1;
+    return runs != 3;
 }
 #endif
 
@@ -213,7 +305,8 @@ bool pullBack(int k, inout vec3 p, inout int color, inout vec3 blend, inout floa
 }
 
 #if MARBLER_VERSION2
-// A version-2 form (stretch, flow) of operation k: pulls p back through it (these lay no ink).
+// A version-2 form (stretch, flow, stylus) of operation k: pulls p back through it (these lay no
+// ink).
 vec3 pullBackVersion2(int k, vec3 p) {
     int b = k * OpVec4s;
     vec4 o0 = texelFetch(uOps, b);
@@ -221,6 +314,9 @@ vec3 pullBackVersion2(int k, vec3 p) {
     vec4 o3 = texelFetch(uOps, b + 3);
     vec4 o4 = texelFetch(uOps, b + 4);
     vec4 o5 = texelFetch(uOps, b + 5);
+#if MARBLER_STYLUS
+    if (int(o2.w) == 7) return vec3(stylusBack(p.xy, o4, o5), 0.0);
+#endif
     vec3 rel = p - o0.xyz;
     return int(o2.w) == 5 ? p - stretchShift(dot(rel, o3.xyz), o5) * o2.xyz
                           : o0.xyz + flowBack(rel, o2.xyz, o3.xyz, o4, o5);
@@ -232,10 +328,10 @@ vec3 pullBackVersion2(int k, vec3 p) {
 int traceColor(inout vec3 p, inout vec3 blend, inout float rest) {
     int color = -1;
 #if MARBLER_VERSION2
-    // The stretches and flows cost far more than a version-1 form, and every lane would pay for
-    // them at every operation if one body held them (see "Speed" above). So the version-1 forms
-    // run in runs between them: o6.w of each record is the nearest stretch or flow at or before
-    // it (-1: none), where the run stops and the version-2 body runs once.
+    // The stretches, flows and styluses cost far more than a version-1 form, and every lane would
+    // pay for them at every operation if one body held them (see "Speed" above). So the
+    // version-1 forms run in runs between them: o6.w of each record is the nearest of them at or
+    // before it (-1: none), where the run stops and the version-2 body runs once.
     bool found = false;
     int k = uOpCount - 1;
     while (k >= 0 && !found) {

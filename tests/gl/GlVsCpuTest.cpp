@@ -8,8 +8,10 @@
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Growth.h"
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
+#include "marbler/gl/Backend.h"
 
 #include <OpenImageIO/imageio.h>
 #include <glm/geometric.hpp>
@@ -131,8 +133,68 @@ std::vector<NamedGenome> version2Genomes() {
     return out;
 }
 
+Operation stylusStroke(std::vector<glm::dvec2> path, double alpha, double lambda, double reach, int tines = 1,
+                       double spacing = 0.0, std::vector<double> pressure = {}) {
+    Operation op;
+    op.tool = Tool::Stylus;
+    op.path = std::move(path);
+    op.alpha = alpha;
+    op.lambda = lambda;
+    op.reach = reach;
+    op.tines = tines;
+    op.spacing = spacing;
+    op.pressure = std::move(pressure);
+    op.steps = minimumStylusSteps(op) + 7; // not a round number: segments start between steps
+    return op;
+}
+
+std::vector<glm::dvec2> spiral() {
+    std::vector<glm::dvec2> points;
+    for (int k = 0; k < 240; ++k) {
+        const double turn = 0.045 * k, radius = 40.0 + 1.4 * k;
+        points.push_back({600 + radius * std::cos(turn), 420 + radius * std::sin(turn)});
+    }
+    return points;
+}
+
+/// The version-3 samples: a stylus gentle and strong (ink dragged to the end of the path), a
+/// rake with bleed, pressure rising and falling to 0, a curved path of many segments, and a
+/// stylus between other version-2 forms (the shader's runs stop at each).
+std::vector<NamedGenome> stylusGenomes() {
+    std::vector<NamedGenome> out;
+    Genome single = dropsOnABath();
+    single.operations.push_back(stylusStroke({{60, 120}, {1150, 700}}, 35, 15, 90));
+    out.push_back({"v3-stylus-single-2d", single});
+
+    Genome rake = dropsOnABath();
+    rake.bleed = 4.0;
+    rake.operations.push_back(stylusStroke({{40, 420}, {600, 300}, {1160, 460}}, 40, 12, 60, 5, 70));
+    out.push_back({"v3-stylus-rake-bleed-2d", rake});
+
+    Genome pressed = dropsOnABath();
+    pressed.operations.push_back(stylusStroke({{80, 600}, {420, 380}, {700, 520}, {1120, 200}}, 110, 10, 50,
+                                              1, 0, {0.1, 1.0, 0.4, 0.0}));
+    out.push_back({"v3-stylus-pressure-2d", pressed});
+
+    // A spiral of 240 points about the drops (segments of 3 to 17 units, each a few steps),
+    // strong enough to drag ink along.
+    Genome curve = dropsOnABath();
+    curve.operations.push_back(stylusStroke(spiral(), 45, 9, 40));
+    out.push_back({"v3-stylus-curve-2d", curve});
+
+    Genome mixed = dropsOnABath();
+    mixed.operations.push_back(stretch({0, 800}, 180, {0, 250, 530, 800}, 50, 2.0));
+    mixed.operations.push_back(stylusStroke({{1100, 100}, {150, 650}}, 80, 20, 70));
+    mixed.operations.push_back(swirl(Tool::Vortex, {620, 380, 0}, 0, 300, 40, 30));
+    mixed.operations.push_back(stylusStroke({{200, 200}, {900, 260}}, -40, 8, 45, 3, 40));
+    out.push_back({"v3-stylus-among-others-2d", mixed});
+    return out;
+}
+
 std::vector<NamedGenome> sampleGenomes() {
     std::vector<NamedGenome> out = version2Genomes();
+    for (NamedGenome& g : stylusGenomes())
+        out.push_back(std::move(g));
     for (const auto& entry : std::filesystem::directory_iterator(test::dataDir() / "examples"))
         if (entry.path().string().ends_with(".marble.json"))
             out.push_back({entry.path().filename().string(), loadGenome(entry.path())});
@@ -186,21 +248,14 @@ bool atInkBoundary(const Genome& genome, const CpuRenderer& cpu, const RenderSet
 
 /// Renders on both and holds GL to the CPU; saves both images when they disagree.
 void expectMatchesCpu(const Genome& genome, const RenderSettings& settings, const std::string& label) {
-    // No shader draws a stylus yet: the GL back end refuses such a design with its reason, a
-    // RuntimeFailure, on which the render service renders it on the CPU.
-    if (std::any_of(genome.operations.begin(), genome.operations.end(),
-                    [](const Operation& op) { return op.tool == Tool::Stylus; })) {
-        try {
-            test::glRenderer()->render(genome, settings);
-            ADD_FAILURE() << label << ": the GL back end drew a stylus it has no shader for";
-        } catch (const RuntimeFailure& e) {
-            EXPECT_NE(std::string(e.what()).find("stylus"), std::string::npos) << label << ": " << e.what();
-        }
-        return;
+    Image actual;
+    try {
+        actual = test::glRenderer()->render(genome, settings);
+    } catch (const RuntimeFailure& e) {
+        FAIL() << label << ": " << e.what();
     }
     CpuRenderer cpu(genome);
     Image expected = cpu.render(settings);
-    Image actual = test::glRenderer()->render(genome, settings);
     ASSERT_EQ(actual.width, expected.width);
     ASSERT_EQ(actual.height, expected.height);
     std::size_t pixels = std::size_t(expected.width) * std::size_t(expected.height);
@@ -263,6 +318,91 @@ TEST_F(GlVsCpu, EverySampleGenomeWithAndWithoutAntialiasing) {
                 expectMatchesCpu(g.genome, settings, g.name + " axis " + std::to_string(axis) + " " + aa);
             }
         }
+    }
+}
+
+TEST_F(GlVsCpu, StylusDesignsAtALargerSize) {
+    // The version-3 samples at 240 x 160, where a pixel is 5 units: the stylus's fine curls
+    // (lambda 8 to 20) span a few pixels each.
+    for (const NamedGenome& g : stylusGenomes()) {
+        RenderSettings settings;
+        settings.width = 240;
+        settings.height = 160;
+        settings.aa = "none";
+        expectMatchesCpu(g.genome, settings, g.name + " 240");
+    }
+}
+
+TEST_F(GlVsCpu, AStylusBeyondASoftwareRasterisersLoopLimitIsRefused) {
+    // llvmpipe ends every loop of a shader invocation after 65535 iterations in all, silently;
+    // a rake dragging ink along 240 points at four samples a pixel runs more. The GL back end
+    // sees it (tools.glsl, loopsWereCut) and refuses with its reason, a RuntimeFailure, on which
+    // the render service draws on the CPU; a hardware GPU has no such limit and draws it.
+    Genome genome = dropsOnABath();
+    genome.operations.push_back(stylusStroke(spiral(), 45, 9, 40, 4, 25));
+    RenderSettings settings;
+    settings.width = 150;
+    settings.height = 100;
+    settings.aa = "rgss";
+    if (!gl::isSoftwareRenderer(test::glRenderer()->rendererName())) {
+        expectMatchesCpu(genome, settings, "a long rake");
+        return;
+    }
+    try {
+        test::glRenderer()->render(genome, settings);
+        ADD_FAILURE() << "a render whose loops were cut short was returned";
+    } catch (const RuntimeFailure& e) {
+        EXPECT_NE(std::string(e.what()).find("loop iterations"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("CPU renderer draws it"), std::string::npos) << e.what();
+    }
+    // And the same design within the limit (one sample a pixel) is drawn as the CPU draws it.
+    settings.width = 90;
+    settings.height = 60;
+    settings.aa = "none";
+    expectMatchesCpu(genome, settings, "a long rake, one sample");
+}
+
+TEST_F(GlVsCpu, AStylusPartWayAlongItsPath) {
+    // Growth (genome-format.md, the making of a design): at progress s a stylus runs its first
+    // floor(s n) steps, its path cut where it has travelled to; GL draws each part as the CPU.
+    for (const NamedGenome& g : stylusGenomes()) {
+        if (g.name != "v3-stylus-pressure-2d" && g.name != "v3-stylus-curve-2d") continue;
+        const double last = double(stepCount(g.genome) - 1);
+        for (double progress : {0.23, 0.5, 0.91}) {
+            const Genome part = designAtGrowth(g.genome, last + progress);
+            ASSERT_EQ(part.operations.size(), g.genome.operations.size()) << g.name;
+            EXPECT_LT(part.operations.back().steps, g.genome.operations.back().steps);
+            RenderSettings settings;
+            settings.width = 120;
+            settings.height = 80;
+            settings.aa = "rgss";
+            expectMatchesCpu(part, settings, g.name + " at " + std::to_string(progress));
+        }
+    }
+}
+
+TEST_F(GlVsCpu, EbruHeartsRenderAsTheirReference) {
+    // The example of version 3 against the independent reference's render without
+    // antialiasing, as the CPU renderer is held to it (Conformance.EbruHeartsRenderAsTheirReference):
+    // pixel for pixel but for a hair's width of edges.
+    const Genome genome = loadGenome(test::dataDir() / "examples" / "ebru-hearts.marble.json");
+    const Image expected = test::loadPng(test::dataDir() / "reference" / "ebru-hearts-noaa.png");
+    ASSERT_GT(expected.width, 0);
+    RenderSettings settings;
+    settings.width = expected.width;
+    settings.height = expected.height;
+    settings.aa = "none";
+    const Image actual = test::glRenderer()->render(genome, settings);
+    ASSERT_EQ(actual.rgb.size(), expected.rgb.size());
+    std::size_t equal = 0;
+    for (std::size_t i = 0; i < actual.rgb.size(); i += 3)
+        equal += std::equal(actual.rgb.begin() + long(i), actual.rgb.begin() + long(i + 3),
+                            expected.rgb.begin() + long(i));
+    const double share = double(equal) / double(actual.rgb.size() / 3);
+    if (!(share >= 0.995)) {
+        const std::filesystem::path out = test::outputDir("gl-ebru-hearts") / "ebru-hearts.gl.png";
+        test::savePng(actual, out);
+        ADD_FAILURE() << (1.0 - share) * 100.0 << "% of pixels differ; the GL image is saved to " << out;
     }
 }
 

@@ -131,8 +131,7 @@ enum class ShaderForm : std::uint8_t {
     Turn = 4,       ///< turn about a centre or an axis (circle, sphere, vortex)
     Stretch = 5,    ///< translation by a |sin|^p profile between teeth (stretch)
     Flow = 6,       ///< implicit midpoint steps through a stream function's velocity (flow)
-    /// Implicit midpoint steps through the velocity of a moving stylus (stylus): no shader body
-    /// yet, so the GL back end refuses a design that has one and the CPU renders it.
+    /// Implicit midpoint steps through the velocity of a moving stylus along its path (stylus)
     Stylus = 7,
 };
 

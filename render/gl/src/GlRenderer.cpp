@@ -83,14 +83,16 @@ struct GBufferTargets {
 };
 
 /// The version-2 switches of a shader variant (tools.glsl): the forms of stretch, flow and a
-/// finite core, and the bleed rule. A design without them runs the version-1 code.
+/// finite core, the bleed rule and version 3's stylus (0 none, 1 one tine, 2 rakes: stylusForm).
+/// A design without them runs the version-1 code.
 struct Features {
     bool version2 = false, bleed = false;
-    int index() const { return (version2 ? 1 : 0) + (bleed ? 2 : 0); }
+    int stylus = 0;
+    int index() const { return (version2 ? 1 : 0) + (bleed ? 2 : 0) + 4 * stylus; }
 };
 
 Features featuresOf(const Genome& genome, const std::vector<PreparedOp>& ops) {
-    return {needsVersion2Forms(ops), genome.bleed > 0.0};
+    return {needsVersion2Forms(ops), genome.bleed > 0.0, stylusForm(ops)};
 }
 
 } // namespace
@@ -98,14 +100,16 @@ Features featuresOf(const Genome& genome, const std::vector<PreparedOp>& ops) {
 struct GlRenderer::Impl {
     ContextParts parts;
     QOpenGLFunctions_4_3_Core* gl = nullptr;
-    GlProgram raster[16]; // by dimension, source image and features (buildRaster)
+    GlProgram raster[48]; // by dimension, source image and features (buildRaster)
     GlProgram gbuffer;
-    GlProgram mesh[4]; // by features (buildShading)
+    GlProgram mesh[12]; // by features (buildShading)
     GLuint emptyVao = 0;
     GLuint opBuffer = 0;
     GLuint opTexture = 0; // the buffer texture over opBuffer
     GLuint teethBuffer = 0;
     GLuint teethTexture = 0; // the buffer texture over teethBuffer
+    GLuint pathsBuffer = 0;
+    GLuint pathsTexture = 0; // the buffer texture over pathsBuffer
     GLuint sourceTexture = 0;
 
     // The last mesh, kept on the GPU: re-rendering from another angle uploads nothing.
@@ -128,13 +132,14 @@ struct GlRenderer::Impl {
 
     /// The shared shader source with the variant's switches after its #version line: the
     /// dimension (a flat design never pays for the volume law's cube root), whether a source
-    /// image is sampled and the version-2 features. Sixteen raster variants at most, each
-    /// compiled on first use, so compiling costs nothing per genome.
+    /// image is sampled and the version-2 features. 48 raster variants at most, each compiled
+    /// on first use, so compiling costs nothing per genome.
     static std::string withDefines(std::string source, int dimension, bool hasSource, Features features) {
         std::string defines = "#define MARBLER_DIMENSION " + std::to_string(dimension) +
                               "\n#define MARBLER_HAS_SOURCE " + (hasSource ? "1" : "0") +
                               "\n#define MARBLER_VERSION2 " + (features.version2 ? "1" : "0") +
-                              "\n#define MARBLER_BLEED " + (features.bleed ? "1" : "0") + "\n";
+                              "\n#define MARBLER_BLEED " + (features.bleed ? "1" : "0") +
+                              "\n#define MARBLER_STYLUS " + std::to_string(features.stylus) + "\n";
         source.insert(source.find('\n') + 1, defines);
         return source;
     }
@@ -174,14 +179,21 @@ struct GlRenderer::Impl {
         PackedOps packedOps = packOps(ops, reference);
         std::vector<float>& packed = packedOps.records;
         std::vector<float>& teeth = packedOps.teeth;
+        std::vector<float>& paths = packedOps.paths;
         if (packed.empty()) packed.assign(PackedOpFloats, 0.0f); // a bound buffer may not be empty
         if (teeth.empty()) teeth.assign(1, 0.0f);
-        if (packed.size() / 4 > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE)) ||
-            teeth.size() > std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE)))
+        if (paths.empty()) paths.assign(4, 0.0f);
+        const auto texels = std::size_t(limit(GL_MAX_TEXTURE_BUFFER_SIZE));
+        if (packed.size() / 4 > texels || teeth.size() > texels)
             throw RuntimeFailure("GL: " + std::to_string(ops.size()) +
                                  " operations exceed this driver's buffer texture limit");
-        // Unit 3 holds the records and unit 4 the teeth: 0 and 1 hold the mesh G-buffer, 2 the
-        // source image.
+        if (paths.size() / 4 > texels)
+            throw RuntimeFailure("GL: the stylus paths' " +
+                                 std::to_string(paths.size() / 4 / StylusSegmentTexels) +
+                                 " segments exceed this driver's buffer texture limit of " +
+                                 std::to_string(texels / StylusSegmentTexels));
+        // Unit 3 holds the records, unit 4 the teeth and unit 5 the stylus paths: 0 and 1 hold
+        // the mesh G-buffer, 2 the source image.
         auto bindBuffer = [this](GLuint buffer, GLuint texture, GLenum unit, GLenum format,
                                  const std::vector<float>& data) {
             gl->glBindBuffer(GL_TEXTURE_BUFFER, buffer);
@@ -194,9 +206,11 @@ struct GlRenderer::Impl {
         };
         bindBuffer(opBuffer, opTexture, GL_TEXTURE3, GL_RGBA32F, packed);
         bindBuffer(teethBuffer, teethTexture, GL_TEXTURE4, GL_R32F, teeth);
+        bindBuffer(pathsBuffer, pathsTexture, GL_TEXTURE5, GL_RGBA32F, paths);
         gl->glActiveTexture(GL_TEXTURE0);
         gl->glUniform1i(program.uniform("uOps"), 3);
         gl->glUniform1i(program.uniform("uTeeth"), 4);
+        gl->glUniform1i(program.uniform("uPaths"), 5);
         gl->glUniform1i(program.uniform("uOpCount"), GLint(ops.size()));
         gl->glUniform1f(program.uniform("uBleed"), float(genome.bleed));
         std::vector<float> inks(17 * 3, 0.0f);
@@ -299,6 +313,8 @@ struct GlRenderer::Impl {
         if (opTexture) gl->glDeleteTextures(1, &opTexture);
         if (teethTexture) gl->glDeleteTextures(1, &teethTexture);
         if (teethBuffer) gl->glDeleteBuffers(1, &teethBuffer);
+        if (pathsTexture) gl->glDeleteTextures(1, &pathsTexture);
+        if (pathsBuffer) gl->glDeleteBuffers(1, &pathsBuffer);
         gbuffer.release();
         for (GlProgram& program : mesh)
             program.release();
@@ -329,6 +345,8 @@ GlRenderer::GlRenderer()
     mImpl->gl->glGenTextures(1, &mImpl->opTexture);
     mImpl->gl->glGenBuffers(1, &mImpl->teethBuffer);
     mImpl->gl->glGenTextures(1, &mImpl->teethTexture);
+    mImpl->gl->glGenBuffers(1, &mImpl->pathsBuffer);
+    mImpl->gl->glGenTextures(1, &mImpl->pathsTexture);
     registerExitHandler();
     LiveRenderers& live = liveRenderers();
     std::lock_guard lock(live.mutex);
@@ -383,8 +401,10 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
     d.makeCurrent();
     auto* gl = d.gl;
     bool hasSource = genome.dimension == 2 && genome.source.has_value();
-    GlProgram& raster = d.buildRaster(genome.dimension, hasSource, featuresOf(genome, ops));
+    const Features features = featuresOf(genome, ops);
+    GlProgram& raster = d.buildRaster(genome.dimension, hasSource, features);
     gl->glUseProgram(raster.id());
+    gl->glUniform1i(raster.uniform("uLoopProbe"), 2);
 
     std::vector<float> offsets, weights;
     for (std::size_t s = 0; s < aa.offsets.size(); ++s) {
@@ -423,7 +443,7 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
     GLint viewport[2] = {0, 0};
     gl->glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
     side = std::min({side, int(viewport[0]), int(viewport[1])});
-    double work = double(std::max<std::size_t>(ops.size(), 1)) * double(weights.size());
+    double work = shaderWork(ops) * double(weights.size());
     int workSide = int(std::sqrt(MaxWorkPerDraw / work));
     side = std::max(64, std::min(side, workSide));
     int tileW = std::min(side, settings.width), tileH = std::min(side, settings.height);
@@ -458,6 +478,17 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
                 gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
                 gl->glReadPixels(0, 0, w, h, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE, rgba.data());
                 d.checkErrors("the raster render");
+                // Alpha 0 where the driver cut the stylus's loops short (tools.glsl,
+                // loopsWereCut): those pixels are wrong, so the design is the CPU's to draw.
+                if (features.stylus)
+                    for (std::size_t i = 3; i < std::size_t(w) * std::size_t(h) * 4; i += 4)
+                        if (rgba[i] == 0) {
+                            const std::string name = rendererName();
+                            throw RuntimeFailure("GL: " + name.substr(0, name.find(" (")) +
+                                                 " stops a shader after so many loop iterations, too few for "
+                                                 "this design's stylus strokes at these settings; the CPU "
+                                                 "renderer draws it");
+                        }
                 for (int y = 0; y < h; ++y) {
                     const std::uint8_t* in = rgba.data() + std::size_t(y) * std::size_t(w) * 4;
                     std::uint8_t* out = image.row(ty + y) + std::size_t(tx) * 3;

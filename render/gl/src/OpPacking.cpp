@@ -1,7 +1,7 @@
 #include "OpPacking.h"
-#include "marbler/Error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 namespace marbler::gl {
@@ -11,7 +11,7 @@ namespace {
 static_assert(static_cast<int>(ShaderForm::PushArea) == 0 && static_cast<int>(ShaderForm::PushVolume) == 1 &&
               static_cast<int>(ShaderForm::Shift) == 2 && static_cast<int>(ShaderForm::WaveShift) == 3 &&
               static_cast<int>(ShaderForm::Turn) == 4 && static_cast<int>(ShaderForm::Stretch) == 5 &&
-              static_cast<int>(ShaderForm::Flow) == 6);
+              static_cast<int>(ShaderForm::Flow) == 6 && static_cast<int>(ShaderForm::Stylus) == 7);
 
 /// One record's coefficients besides its centre, ink and form (see tools.glsl).
 struct Coefficients {
@@ -53,12 +53,71 @@ void flowCoefficients(const PreparedOp& op, Coefficients& k) {
     k.p5[3] = FlowToleranceShare * (op.size[0] + op.size[1]);
 }
 
+/// Stylus: its shape (lambda, reach, spacing, tines), the step h, its segments appended to
+/// `paths` and the fixed-point tolerance. Each segment gets the steps whose time
+/// tau_i = i h + h / 2 lies in it (cum_s <= tau_i < cum_s+1, as Tools.cpp's stylusVelocity
+/// finds the segment, in double), the stylus's place S and the pull c at the first of them, and
+/// c's change a step: the shader then counts steps within the segment (tools.glsl, stylusBack),
+/// and S = S_first + j h T keeps float precision along a long path.
+void stylusCoefficients(const PreparedOp& op, const glm::dvec3& reference, std::vector<float>& paths,
+                        Coefficients& k) {
+    k.v = glm::dvec3(op.lambda, op.reach, op.spacing);
+    k.radius = op.tines;
+    const std::size_t first = paths.size() / 4;
+    // No step, or no path: the stylus moves nothing (as Tools.cpp's maps).
+    const std::size_t segments = op.steps > 0 && op.path.size() >= 2 ? op.path.size() - 1 : 0;
+    const auto time = [&op](int i) { return i * op.step + 0.5 * op.step; };
+    // The first step whose time is at or after the segment's start (the first: step 0).
+    const auto firstStep = [&](std::size_t s) {
+        if (s == 0) return 0;
+        if (s == segments) return op.steps;
+        const double start = op.cum[s];
+        int i = static_cast<int>(std::clamp(std::ceil(start / op.step - 0.5), 0.0, double(op.steps)));
+        while (i > 0 && time(i - 1) >= start)
+            --i;
+        while (i < op.steps && time(i) < start)
+            ++i;
+        return i;
+    };
+    int from = 0;
+    for (std::size_t s = 0; s < segments; ++s) {
+        const int to = firstStep(s + 1);
+        const glm::dvec2 t = op.along[s];
+        const double length = op.cum[s + 1] - op.cum[s], into = time(from) - op.cum[s];
+        const glm::dvec2 place = op.path[s] + into * t - glm::dvec2(reference);
+        const double slope = (op.pressure[s + 1] - op.pressure[s]) / length;
+        const double pressure = op.pressure[s] + slope * into;
+        paths.insert(paths.end(), {float(place.x), float(place.y), float(t.x), float(t.y), float(to - from),
+                                   float(op.pull * pressure), float(op.pull * slope * op.step), 0.0f});
+        from = to;
+    }
+    k.p5[0] = op.step;
+    k.p5[1] = double(segments);
+    k.p5[2] = FlowToleranceShare * (op.length + op.reach);
+    k.p5[3] = double(first);
+}
+
 } // namespace
 
 bool needsVersion2Forms(const std::vector<PreparedOp>& ops) {
     return std::any_of(ops.begin(), ops.end(), [](const PreparedOp& op) {
-        return op.core2 > 0.0 || op.form == ShaderForm::Stretch || op.form == ShaderForm::Flow;
+        return op.core2 > 0.0 || op.form == ShaderForm::Stretch || op.form == ShaderForm::Flow ||
+               op.form == ShaderForm::Stylus;
     });
+}
+
+int stylusForm(const std::vector<PreparedOp>& ops) {
+    int form = 0;
+    for (const PreparedOp& op : ops)
+        if (op.form == ShaderForm::Stylus) form = std::max(form, op.tines > 1 ? 2 : 1);
+    return form;
+}
+
+double shaderWork(const std::vector<PreparedOp>& ops) {
+    double work = 0.0;
+    for (const PreparedOp& op : ops)
+        work += op.form == ShaderForm::Stylus ? std::max(1.0, double(op.steps) * op.tines) : 1.0;
+    return std::max(work, 1.0);
 }
 
 PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& reference) {
@@ -73,12 +132,13 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
     };
     // freq = 2 pi / wavelength; the shader wants cycles per unit to reduce the argument.
     const double cycles = 0.5 / std::numbers::pi;
-    // The nearest stretch or flow at or before each record: where the shader's run of
+    // The nearest stretch, flow or stylus at or before each record: where the shader's run of
     // version-1 forms stops (tools.glsl, traceColor).
     int lastVersion2 = -1;
     for (std::size_t index = 0; index < ops.size(); ++index) {
         const PreparedOp& op = ops[index];
-        if (op.form == ShaderForm::Stretch || op.form == ShaderForm::Flow) lastVersion2 = int(index);
+        if (op.form == ShaderForm::Stretch || op.form == ShaderForm::Flow || op.form == ShaderForm::Stylus)
+            lastVersion2 = int(index);
         const bool flat = op.dimension == 2;
         glm::dvec3 c = op.c - reference;
         if (flat) c.z = 0.0; // 2D points live at z = 0 whatever the reference
@@ -147,9 +207,8 @@ PackedOps packOps(const std::vector<PreparedOp>& ops, const glm::dvec3& referenc
             flowCoefficients(op, k);
             break;
         case Tool::Stylus:
-            // No shader body yet: a RuntimeFailure, as a driver's, so that the render service
-            // and `render --gpu` render the design on the CPU instead.
-            throw RuntimeFailure("GL: the stylus tool has no shader yet; the CPU renderer draws it");
+            stylusCoefficients(op, reference, packed.paths, k);
+            break;
         }
         put(c, inks ? op.r * op.r : -1.0);
         put(k.projected, inks ? op.color : -1);

@@ -1,9 +1,11 @@
 // Frames per second of the GL back end: a 1024x1024 design and a 3x3 grid of 256x256
 // thumbnails (the workbench's breeding view) at 10, 100 and 1000 entries, without and with
 // antialiasing (rgss), a 1024x1024 design of format version 2 (stretches, a flow, finite cores;
-// with and without bleed), and a 512x512 marbled mesh. Every frame ends in glFinish and the
+// with and without bleed), a 512x512 design with stylus strokes of format version 3 (one with a
+// rake), and a 512x512 marbled mesh. Every frame ends in glFinish and the
 // read-back, so a frame is a finished image in memory.
 
+#include "marbler/Error.h"
 #include "marbler/Genome.h"
 #include "marbler/Params.h"
 #include "marbler/Random.h"
@@ -11,6 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <memory>
 
 namespace {
@@ -120,6 +123,64 @@ void BM_Version2Design1024(benchmark::State& state) {
     state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+/// makeGenome's design of 100 entries with three stylus strokes after it: one straight across
+/// as the ebru example draws it (ink dragged to its end; with `rake`, a gentler rake of 5 tines
+/// instead), one zigzag of 40 points with a pen's pressure, one spiral of 200 points; each at its
+/// fewest steps.
+Genome makeStylusGenome(bool rake) {
+    Genome genome = makeGenome(100, 2);
+    auto stroke = [&](std::vector<glm::dvec2> path, double alpha, double lambda, double reach,
+                      std::vector<double> pressure, int tines = 1) {
+        Operation op;
+        op.tool = Tool::Stylus;
+        op.path = std::move(path);
+        op.alpha = alpha;
+        op.lambda = lambda;
+        op.reach = reach;
+        op.tines = tines;
+        op.spacing = 60;
+        op.pressure = std::move(pressure);
+        op.steps = minimumStylusSteps(op);
+        genome.operations.push_back(op);
+    };
+    if (rake)
+        stroke({{20, 500}, {980, 500}}, 30, 10, 50, {}, 5);
+    else
+        stroke({{20, 500}, {980, 500}}, 70, 10, 50, {});
+    std::vector<glm::dvec2> zigzag, spiral;
+    std::vector<double> pressure;
+    for (int k = 0; k < 40; ++k) {
+        zigzag.push_back({60 + 22.0 * k, k % 2 ? 150.0 : 300.0});
+        pressure.push_back(0.3 + 0.7 * std::abs(std::sin(0.2 * k)));
+    }
+    stroke(zigzag, 50, 12, 60, pressure);
+    for (int k = 0; k < 200; ++k)
+        spiral.push_back(
+            {500 + (30 + 1.6 * k) * std::cos(0.06 * k), 650 + (30 + 1.6 * k) * std::sin(0.06 * k)});
+    stroke(spiral, 40, 8, 40, {});
+    return genome;
+}
+
+void BM_StylusDesign512(benchmark::State& state) {
+    gl::GlRenderer* gl = renderer(state);
+    if (!gl) return;
+    const Genome genome = makeStylusGenome(state.range(0) != 0);
+    RenderSettings settings;
+    settings.width = settings.height = 512;
+    for (auto _ : state) {
+        try {
+            Image image = gl->render(genome, settings);
+            gl->finish();
+            benchmark::DoNotOptimize(image.rgb.data());
+        } catch (const RuntimeFailure& e) {
+            // A software rasteriser's loop limit (tools.glsl, loopsWereCut).
+            state.SkipWithError(e.what());
+            break;
+        }
+    }
+    state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
 const char* aaName(int64_t index) {
     return index ? "rgss" : "none";
 }
@@ -188,6 +249,7 @@ BENCHMARK(BM_Version2Design1024)
     ->ArgNames({"ops", "v2tools", "bleed"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(BM_StylusDesign512)->Arg(0)->Arg(1)->ArgName("rake")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Mesh512)->Arg(100)->ArgName("ops")->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
