@@ -457,6 +457,8 @@ void EditorWindow::wireDocument() {
                 mCanvas->setDragging(!final);
                 mDocument->setStep(*step, op, mDocument->mergeFor(!final));
             });
+    connect(mCanvas, &EditorCanvas::gestureRefused, this,
+            [this](const QString& why) { statusBar()->showMessage(why, 10000); });
     connect(mCanvas, &EditorCanvas::inkPicked, this, [this](int color, std::optional<std::size_t> rendered) {
         if (color >= 0) setCurrentInk(color);
         if (rendered) selectStep(mDocument->documentIndex(*rendered));
