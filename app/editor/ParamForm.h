@@ -85,7 +85,11 @@ private:
     void refreshRow(const Row& row);
     void watch(QWidget* field);
     void setTeeth(const Row& row, int count, double spacing);
-    bool valid(const Operation& op) const;
+    /// Whether `op` is a valid step; `why` gets the validator's words when it is not.
+    bool valid(const Operation& op, QString* why = nullptr) const;
+    /// A path's or pressure's text, typed: committed, or what is wrong said under it.
+    void commitListText(const Row& row);
+    void showError(const Row& row, const QString& message);
     void commitComponent(const ParamSpec& spec, int component, double value, bool dragging,
                          bool endsDrag = false);
     void commitOperation(const ParamSpec& spec, const Operation& op, bool dragging, bool endsDrag = false);
@@ -99,6 +103,7 @@ private:
     bool mUpdating = false;
     std::vector<int> mShape; ///< the component count of each parameter the widgets were built for
     std::vector<Row*> mRows;
+    QString mLastError;
     QFormLayout* mLayout;
 };
 
