@@ -139,19 +139,23 @@ QPointF EditorCanvas::toWidget(const glm::dvec3& designPoint) const {
 }
 
 void EditorCanvas::rerender() {
-    if (mDrag == Drag::Gesture && !mPending.empty()) {
-        if (drawsPath()) {
-            // The stroke so far, once the render in flight has come (see mPreviewInFlight).
-            if (mPreviewInFlight) {
-                mPreviewDirty = true;
-                return;
-            }
-            mPreviewInFlight = true;
-            mPreviewDirty = false;
-            mPreviewClock.start();
-            requestRender(withSteps(mDesign, mPending), true, mPreviewScale);
+    // A stroke being drawn, or a path point being moved: the stroke as it is now, once the render
+    // in flight has come (see mPreviewInFlight).
+    const std::optional<Operation> selected = mDrag == Drag::Handle ? selectedStep() : std::nullopt;
+    const bool stroke = mDrag == Drag::Gesture && !mPending.empty() && drawsPath();
+    if (stroke || (selected && hasPath(selected->tool))) {
+        if (mPreviewInFlight) {
+            mPreviewDirty = true;
             return;
         }
+        mPreviewInFlight = true;
+        mPreviewDirty = false;
+        mPreviewClock.start();
+        requestRender(stroke ? withSteps(mDesign, mPending) : withReplaced(movedStep(mHandle, mLastPos)),
+                      true, mPreviewScale);
+        return;
+    }
+    if (mDrag == Drag::Gesture && !mPending.empty()) {
         requestRender(withSteps(mDesign, mPending), true);
     } else {
         requestRender(mDesign, mDragging || mDrag == Drag::Handle);
@@ -212,7 +216,7 @@ void EditorCanvas::onRendered(std::uint64_t key, const QImage& image, bool final
     // A preview-only request's single pass comes as final, but it is still the coarse one.
     mShown.final = final && !mDragging && mDrag == Drag::None;
     update();
-    if (std::exchange(mPreviewDirty, false) && mDrag == Drag::Gesture) rerender();
+    if (std::exchange(mPreviewDirty, false) && (mDrag == Drag::Gesture || mDrag == Drag::Handle)) rerender();
 }
 
 void EditorCanvas::changeView() {
@@ -512,7 +516,10 @@ void EditorCanvas::mouseMoveEvent(QMouseEvent* event) {
             return;
         }
         const Operation op = movedStep(mHandle, event->position());
-        requestRender(withReplaced(op), true);
+        if (hasPath(op.tool))
+            rerender(); // a stroke's render is slow: paced as while drawing
+        else
+            requestRender(withReplaced(op), true);
         update();
         emit handleDragged(*mHandles, op, false);
         return;
@@ -535,6 +542,7 @@ void EditorCanvas::mouseReleaseEvent(QMouseEvent* event) {
     case Drag::Handle: {
         if (!selectedStep()) return;
         const Operation op = movedStep(mHandle, event->position());
+        mPreviewInFlight = mPreviewDirty = false;
         requestRender(withReplaced(op), mDragging);
         emit handleDragged(*mHandles, op, true);
         return;

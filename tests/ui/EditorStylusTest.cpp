@@ -20,6 +20,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPointingDevice>
@@ -148,8 +149,23 @@ TEST_F(StylusCanvasTest, AMouseDragDrawsOneStepAlongItLiveAndSharpOnRelease) {
     EXPECT_EQ(half.tool, Tool::Stylus);
     MARBLER_WAIT(!mCanvas->image().isNull() && mCanvas->image().width() < 400, 20000);
     EXPECT_FALSE(mCanvas->imageFinal());
-    for (std::size_t i = drag.size() / 2; i < drag.size(); ++i)
-        QTest::mouseMove(mCanvas.get(), widget(drag[i]));
+    // A pointer that never rests still sees the stroke grow: previews are paced, one at a time,
+    // rather than each move aborting the render before it.
+    int previews = 0;
+    QObject::connect(&mService, &RenderService::rendered,
+                     [&](std::uint64_t, const QImage&, bool) { ++previews; });
+    QElapsedTimer moving;
+    moving.start();
+    for (std::size_t i = drag.size() / 2; i < drag.size() || (previews == 0 && moving.elapsed() < 30000);
+         ++i) {
+        // Past the end of the curve it wiggles about its last point.
+        const QPoint at =
+            widget(drag[std::min(i, drag.size() - 1)]) + QPoint(0, i < drag.size() ? 0 : int(i % 2));
+        QTest::mouseMove(mCanvas.get(), at);
+        QTest::qWait(3);
+    }
+    EXPECT_GT(previews, 0) << "no preview came while the pointer moved";
+    QTest::mouseMove(mCanvas.get(), widget(drag.back()));
     ASSERT_EQ(mCanvas->pendingSteps().size(), 1u);
     EXPECT_GT(pathLength(mCanvas->pendingSteps()[0]), pathLength(half) * 1.5) << "it grows with the path";
     QTest::mouseRelease(mCanvas.get(), Qt::LeftButton, {}, widget(drag.back()));
