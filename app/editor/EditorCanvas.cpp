@@ -60,8 +60,8 @@ EditorCanvas::EditorCanvas(RenderService* renderer, QWidget* parent)
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setToolTip(
-        tr("Drag with the current tool; middle or right drag (or Space and drag) pans, the wheel zooms, "
-           "0 fits, 1 shows one to one"));
+        tr("Drag with the current tool (Esc drops the drag); middle or right drag (or Space and drag) pans, "
+           "the wheel zooms, 0 fits, 1 shows one to one"));
     connect(mRenderer, &RenderService::rendered, this, &EditorCanvas::onRendered);
     mSlice = Slice{2, mDesign.size.z / 2.0};
     updateDesignSize();
@@ -275,6 +275,18 @@ void EditorCanvas::keyPressEvent(QKeyEvent* event) {
     if (ViewController::handleKey(event, {[this] { zoomIn(); }, [this] { zoomOut(); }, [this] { fitView(); },
                                           [this] { oneToOne(); }}))
         return;
+    if (event->key() == Qt::Key_Escape && mDrag == Drag::Gesture) {
+        // The gesture in progress is dropped: nothing is made, the design shows as it was.
+        mDrag = Drag::None;
+        mPenDown = false;
+        mPending.clear();
+        mStroke.clear();
+        mStrokePressure.clear();
+        mPreviewInFlight = mPreviewDirty = false;
+        rerender();
+        update();
+        return;
+    }
     if (event->key() == Qt::Key_Space) {
         if (!event->isAutoRepeat()) mSpace = true;
         setCursor(Qt::OpenHandCursor);

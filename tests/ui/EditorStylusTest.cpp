@@ -21,6 +21,7 @@
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPointingDevice>
@@ -261,6 +262,37 @@ TEST_F(StylusCanvasTest, AStrokeTooLongForAStylusIsRefusedWithAMessage) {
     // A click says nothing: it is simply no stroke.
     mouseStroke(mCanvas.get(), {{500, 500}, {500, 500}});
     EXPECT_EQ(said.size(), 1);
+}
+
+TEST_F(StylusCanvasTest, EscapeDropsAStrokeBeingDrawn) {
+    const std::vector<glm::dvec2> drag = curve(20);
+    auto widget = [&](glm::dvec2 p) { return mCanvas->toWidget({p.x, p.y, 0.0}).toPoint(); };
+    QTest::mousePress(mCanvas.get(), Qt::LeftButton, {}, widget(drag.front()));
+    for (const glm::dvec2& p : drag)
+        QTest::mouseMove(mCanvas.get(), widget(p));
+    ASSERT_EQ(mCanvas->pendingSteps().size(), 1u);
+    QKeyEvent escape(QEvent::KeyPress, Qt::Key_Escape, Qt::NoModifier);
+    QApplication::sendEvent(mCanvas.get(), &escape);
+    EXPECT_TRUE(escape.isAccepted());
+    EXPECT_TRUE(mCanvas->pendingSteps().empty());
+    EXPECT_TRUE(mCanvas->strokePoints().empty());
+    QTest::mouseRelease(mCanvas.get(), Qt::LeftButton, {}, widget(drag.back()));
+    EXPECT_TRUE(mMade.empty()) << "nothing drawn";
+    // The design shows as it was, sharp.
+    MARBLER_WAIT(mCanvas->imageFinal(), 20000);
+    RenderSettings settings;
+    settings.width = 400;
+    settings.height = 400;
+    settings.aa = "rgss";
+    settings.region = mCanvas->view().visibleWindow()->region;
+    const QImage expected = toQImage(CpuRenderer(mDesign).render(settings));
+    EXPECT_EQ(mCanvas->image(), expected.convertToFormat(mCanvas->image().format()))
+        << mCanvas->image().width() << " x " << mCanvas->image().height() << " vs " << expected.width()
+        << " x " << expected.height();
+    if (mCanvas->image() != expected.convertToFormat(mCanvas->image().format())) {
+        mCanvas->image().save(QStringLiteral("/tmp/seditor-escape-seen.png"));
+        expected.save(QStringLiteral("/tmp/seditor-escape-expected.png"));
+    }
 }
 
 TEST_F(StylusCanvasTest, AHandleDragMovesAPathPoint) {
