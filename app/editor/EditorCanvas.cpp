@@ -8,6 +8,8 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPolygonF>
+#include <QTabletEvent>
 #include <QWheelEvent>
 
 #include <glm/geometric.hpp>
@@ -36,6 +38,15 @@ bool hasAngle(Tool tool) {
 bool hasRadius(Tool tool) {
     return findParam(tool, ParamField::Radius) != nullptr;
 }
+/// A handle on each point where the tool has a path (registry): a stylus.
+bool hasPath(Tool tool) {
+    return findParam(tool, ParamField::Path) != nullptr;
+}
+
+/// How long a free-hand stroke's live preview may take (ms): 25 a second, with room to spare.
+constexpr double PreviewTargetMs = 35.0;
+/// The smallest fraction of the view's pixels such a preview is rendered at.
+constexpr double MinPreviewScale = 0.08;
 
 } // namespace
 
@@ -49,8 +60,8 @@ EditorCanvas::EditorCanvas(RenderService* renderer, QWidget* parent)
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setToolTip(
-        tr("Drag with the current tool; middle or right drag (or Space and drag) pans, the wheel zooms, "
-           "0 fits, 1 shows one to one"));
+        tr("Drag with the current tool (Esc drops the drag); middle or right drag (or Space and drag) pans, "
+           "the wheel zooms, 0 fits, 1 shows one to one"));
     connect(mRenderer, &RenderService::rendered, this, &EditorCanvas::onRendered);
     mSlice = Slice{2, mDesign.size.z / 2.0};
     updateDesignSize();
@@ -128,13 +139,34 @@ QPointF EditorCanvas::toWidget(const glm::dvec3& designPoint) const {
 }
 
 void EditorCanvas::rerender() {
-    if (mDrag == Drag::Gesture && !mPending.empty())
+    // A stroke being drawn, or a path point being moved: the stroke as it is now, once the render
+    // in flight has come (see mPreviewInFlight).
+    const std::optional<Operation> selected = mDrag == Drag::Handle ? selectedStep() : std::nullopt;
+    const bool stroke = mDrag == Drag::Gesture && !mPending.empty() && drawsPath();
+    if (stroke || (selected && hasPath(selected->tool))) {
+        if (mPreviewInFlight) {
+            mPreviewDirty = true;
+            return;
+        }
+        mPreviewInFlight = true;
+        mPreviewDirty = false;
+        mPreviewClock.start();
+        requestRender(stroke ? withSteps(mDesign, mPending) : withReplaced(movedStep(mHandle, mLastPos)),
+                      true, mPreviewScale);
+        return;
+    }
+    if (mDrag == Drag::Gesture && !mPending.empty()) {
         requestRender(withSteps(mDesign, mPending), true);
-    else
+    } else {
         requestRender(mDesign, mDragging || mDrag == Drag::Handle);
+    }
 }
 
-void EditorCanvas::requestRender(const Genome& genome, bool previewOnly) {
+bool EditorCanvas::drawsPath() const {
+    return gestureOf(mTool) == EditorGesture::Path && mDesign.dimension == 2;
+}
+
+void EditorCanvas::requestRender(const Genome& genome, bool previewOnly, double scale) {
     auto window = mView.visibleWindow();
     if (mRepeat != RepeatPreview::Off && genome.size.x > 0) {
         // Any tile may show any part of the design: render all of it, at the view's scale (at
@@ -157,6 +189,12 @@ void EditorCanvas::requestRender(const Genome& genome, bool previewOnly) {
     request.genome = genome;
     request.region = window->region;
     request.size = window->pixels.size();
+    if (scale < 1.0) {
+        // The same region in fewer pixels, its proportions kept.
+        const QSize full = request.size;
+        request.size = QSize(std::max(8, int(std::lround(full.width() * scale))),
+                             std::max(8, int(std::lround(full.height() * scale))));
+    }
     request.previewOnly = previewOnly;
     if (genome.dimension == 3) request.slice = mSlice;
     mShown.requested = request.region;
@@ -166,11 +204,19 @@ void EditorCanvas::requestRender(const Genome& genome, bool previewOnly) {
 
 void EditorCanvas::onRendered(std::uint64_t key, const QImage& image, bool final) {
     if (key != mKey) return;
+    if (std::exchange(mPreviewInFlight, false)) {
+        // Fewer pixels when the last preview took too long, more when it was quick (the time
+        // goes with the pixels: their square root scales the side), a step at a time.
+        const double ms = std::max(1.0, double(mPreviewClock.elapsed()));
+        const double factor = std::clamp(std::sqrt(PreviewTargetMs / ms), 0.5, 1.25);
+        mPreviewScale = std::clamp(mPreviewScale * factor, MinPreviewScale, 1.0);
+    }
     mShown.image = image;
     if (mShown.requested) mShown.region = *mShown.requested;
     // A preview-only request's single pass comes as final, but it is still the coarse one.
     mShown.final = final && !mDragging && mDrag == Drag::None;
     update();
+    if (std::exchange(mPreviewDirty, false) && (mDrag == Drag::Gesture || mDrag == Drag::Handle)) rerender();
 }
 
 void EditorCanvas::changeView() {
@@ -229,6 +275,18 @@ void EditorCanvas::keyPressEvent(QKeyEvent* event) {
     if (ViewController::handleKey(event, {[this] { zoomIn(); }, [this] { zoomOut(); }, [this] { fitView(); },
                                           [this] { oneToOne(); }}))
         return;
+    if (event->key() == Qt::Key_Escape && mDrag == Drag::Gesture) {
+        // The gesture in progress is dropped: nothing is made, the design shows as it was.
+        mDrag = Drag::None;
+        mPenDown = false;
+        mPending.clear();
+        mStroke.clear();
+        mStrokePressure.clear();
+        mPreviewInFlight = mPreviewDirty = false;
+        rerender();
+        update();
+        return;
+    }
     if (event->key() == Qt::Key_Space) {
         if (!event->isAutoRepeat()) mSpace = true;
         setCursor(Qt::OpenHandCursor);
@@ -265,6 +323,13 @@ std::vector<std::pair<EditorCanvas::Handle, QPointF>> EditorCanvas::handlePoints
         const double a = op->angle * std::numbers::pi / 180.0;
         points.emplace_back(Handle::Direction, centre + ArmLength * QPointF(std::cos(a), std::sin(a)));
     }
+    if (hasPath(op->tool)) {
+        // A stylus is its path: each point a handle, nothing else.
+        points.clear();
+        for (const glm::dvec2& p : op->path)
+            points.emplace_back(Handle::PathPoint, toWidget({p.x, p.y, 0.0}));
+        return points;
+    }
     if (hasRadius(op->tool)) {
         const QPointF plane = toPlane(op->center) + QPointF(op->radius, 0.0);
         points.emplace_back(Handle::Radius, mView.toViewport(plane) / devicePixelRatioF());
@@ -294,6 +359,21 @@ Operation EditorCanvas::movedStep(Handle handle, QPointF widget) const {
         op.radius = std::max(std::hypot(d.x(), d.y()), 1e-3);
         break;
     }
+    case Handle::PathPoint: {
+        const std::size_t i = mHandleIndex;
+        if (i >= op.path.size()) break;
+        Operation moved = op;
+        moved.path[i] = {at.x, at.y};
+        // Consecutive points stay different; the steps stay valid (the fewest still, where they
+        // were the fewest), and a point that would need more than a stylus may take stays put.
+        const bool apart = (i == 0 || moved.path[i] != moved.path[i - 1]) &&
+                           (i + 1 == moved.path.size() || moved.path[i] != moved.path[i + 1]);
+        if (!apart) break;
+        const int fewest = minimumStylusSteps(moved);
+        moved.steps = op.steps == minimumStylusSteps(op) ? fewest : std::max(op.steps, fewest);
+        if (moved.steps <= MaxStylusSteps) op = moved;
+        break;
+    }
     }
     return op;
 }
@@ -306,27 +386,128 @@ void EditorCanvas::mousePressEvent(QMouseEvent* event) {
         setCursor(Qt::ClosedHandCursor);
         return;
     }
-    if (!left) return;
-    for (const auto& [handle, point] : handlePoints()) {
-        const QPointF d = point - event->position();
-        if (std::hypot(d.x(), d.y()) <= HandleReach) {
+    if (!left || mPenDown) return;
+    // The nearest handle within reach (a path's points lie close together).
+    const auto handles = handlePoints();
+    double nearest = HandleReach;
+    for (std::size_t i = 0; i < handles.size(); ++i) {
+        const QPointF d = handles[i].second - event->position();
+        const double distance = std::hypot(d.x(), d.y());
+        if (distance <= HandleReach && (mDrag != Drag::Handle || distance < nearest)) {
+            nearest = distance;
             mDrag = Drag::Handle;
-            mHandle = handle;
-            return;
+            mHandle = handles[i].first;
+            mHandleIndex = i;
         }
     }
+    if (mDrag == Drag::Handle) return;
     if (mTool == EditorTool::Pick) {
         const TracedInk ink = traceStep(prepare(mDesign), toDesign(event->position()));
         emit inkPicked(ink.color,
                        ink.step >= 0 ? std::optional<std::size_t>(std::size_t(ink.step)) : std::nullopt);
         return;
     }
+    beginGesture(event->position(), 1.0);
+}
+
+std::vector<Operation> EditorCanvas::gestureSoFar() const {
+    if (drawsPath()) return pathSteps(mTool, mSettings, mStroke, mDesign, mStrokePressure);
+    return gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
+}
+
+void EditorCanvas::beginGesture(QPointF widget, double pressure) {
     if (!toolAvailable(mTool, mDesign.dimension)) return;
     mDrag = Drag::Gesture;
-    mPress = mCurrent = toDesign(event->position());
-    mPending = gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
+    mPress = mCurrent = toDesign(widget);
+    mStroke.clear();
+    mStrokePressure.clear();
+    if (drawsPath()) {
+        mStroke.push_back(mPress);
+        mStrokePressure.push_back(pressure);
+    }
+    mPending = gestureSoFar();
     rerender();
     update();
+}
+
+void EditorCanvas::moveGesture(QPointF widget, double pressure) {
+    mCurrent = toDesign(widget);
+    if (drawsPath()) {
+        if (mCurrent == mStroke.back()) return;
+        mStroke.push_back(mCurrent);
+        mStrokePressure.push_back(pressure);
+    }
+    mPending = gestureSoFar();
+    rerender();
+    update();
+}
+
+void EditorCanvas::endGesture(QPointF widget, double pressure) {
+    mCurrent = toDesign(widget);
+    if (drawsPath() && mCurrent != mStroke.back()) {
+        mStroke.push_back(mCurrent);
+        mStrokePressure.push_back(pressure);
+    }
+    std::vector<Operation> ops = gestureSoFar();
+    const std::string refused = drawsPath() && ops.empty()
+                                    ? pathRefusal(mTool, mSettings, mStroke, mDesign, mStrokePressure)
+                                    : std::string();
+    mPending.clear();
+    mStroke.clear();
+    mStrokePressure.clear();
+    mPreviewInFlight = mPreviewDirty = false;
+    if (ops.empty()) {
+        rerender();
+        update();
+        if (!refused.empty()) emit gestureRefused(QString::fromStdString(refused));
+        return;
+    }
+    // Drawn with the new steps until the window hands the changed design back.
+    requestRender(withSteps(mDesign, ops), mDragging);
+    update();
+    const QString name = QString::fromUtf8(toolSpec(ops.front().tool).name.data(),
+                                           qsizetype(toolSpec(ops.front().tool).name.size()));
+    const QString text = ops.size() == 1 ? name : tr("%1 %2s").arg(ops.size()).arg(name);
+    emit stepsMade(ops, text);
+}
+
+void EditorCanvas::tabletEvent(QTabletEvent* event) {
+    // Only a free-hand stroke uses the pen's pressure; anything else (a pan, a handle, another
+    // tool) is left to the mouse event Qt makes of an ignored tablet event.
+    const double pressure = std::clamp(double(event->pressure()), 0.0, 1.0);
+    switch (event->type()) {
+    case QEvent::TabletPress: {
+        if (!drawsPath() || mSpace || event->button() != Qt::LeftButton || mDrag != Drag::None) break;
+        const auto handles = handlePoints();
+        const bool onHandle = std::any_of(handles.begin(), handles.end(), [&](const auto& h) {
+            const QPointF d = h.second - event->position();
+            return std::hypot(d.x(), d.y()) <= HandleReach;
+        });
+        if (onHandle || !toolAvailable(mTool, mDesign.dimension)) break;
+        mPenDown = true;
+        mLastPos = event->position();
+        beginGesture(event->position(), pressure);
+        event->accept();
+        return;
+    }
+    case QEvent::TabletMove:
+        if (!mPenDown) break;
+        mLastPos = event->position();
+        if (mDrag == Drag::Gesture) moveGesture(event->position(), pressure);
+        event->accept();
+        return;
+    case QEvent::TabletRelease:
+        if (!mPenDown) break;
+        mPenDown = false;
+        // A pen lifts at nearly no pressure: the stroke ends as it was last drawn.
+        if (std::exchange(mDrag, Drag::None) == Drag::Gesture)
+            endGesture(event->position(), mStrokePressure.empty() ? pressure : mStrokePressure.back());
+        event->accept();
+        return;
+    default:
+        break;
+    }
+    event->ignore();
 }
 
 void EditorCanvas::mouseMoveEvent(QMouseEvent* event) {
@@ -347,16 +528,16 @@ void EditorCanvas::mouseMoveEvent(QMouseEvent* event) {
             return;
         }
         const Operation op = movedStep(mHandle, event->position());
-        requestRender(withReplaced(op), true);
+        if (hasPath(op.tool))
+            rerender(); // a stroke's render is slow: paced as while drawing
+        else
+            requestRender(withReplaced(op), true);
         update();
         emit handleDragged(*mHandles, op, false);
         return;
     }
     case Drag::Gesture:
-        mCurrent = toDesign(event->position());
-        mPending = gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
-        rerender();
-        update();
+        if (!mPenDown) moveGesture(event->position(), 1.0);
         return;
     }
 }
@@ -373,28 +554,14 @@ void EditorCanvas::mouseReleaseEvent(QMouseEvent* event) {
     case Drag::Handle: {
         if (!selectedStep()) return;
         const Operation op = movedStep(mHandle, event->position());
+        mPreviewInFlight = mPreviewDirty = false;
         requestRender(withReplaced(op), mDragging);
         emit handleDragged(*mHandles, op, true);
         return;
     }
-    case Drag::Gesture: {
-        mCurrent = toDesign(event->position());
-        std::vector<Operation> ops = gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
-        mPending.clear();
-        if (ops.empty()) {
-            rerender();
-            update();
-            return;
-        }
-        // Drawn with the new steps until the window hands the changed design back.
-        requestRender(withSteps(mDesign, ops), mDragging);
-        update();
-        const QString name = QString::fromUtf8(toolSpec(ops.front().tool).name.data(),
-                                               qsizetype(toolSpec(ops.front().tool).name.size()));
-        const QString text = ops.size() == 1 ? name : tr("%1 %2s").arg(ops.size()).arg(name);
-        emit stepsMade(ops, text);
+    case Drag::Gesture:
+        endGesture(event->position(), 1.0);
         return;
-    }
     }
 }
 
@@ -478,28 +645,42 @@ void EditorCanvas::drawOverlay(QPainter& p) const {
     // Dark under light: seen on any ink.
     const QPen dark(QColor(0, 0, 0, 160), 3.0), light(QColor(255, 255, 255, 230), 1.5);
     if (mDrag == Drag::Gesture) {
+        // A free-hand stroke's track as the pointer went, at once (the render follows).
+        QPolygonF track;
+        for (const glm::dvec3& at : mStroke)
+            track << toWidget(at);
         for (const QPen& pen : {dark, light}) {
             p.setPen(pen);
             p.setBrush(Qt::NoBrush);
             const QPointF a = toWidget(mPress), b = toWidget(mCurrent);
-            if (a != b) p.drawLine(a, b);
+            if (!mStroke.empty())
+                p.drawPolyline(track);
+            else if (a != b)
+                p.drawLine(a, b);
             for (const Operation& op : mPending)
                 drawStepOutline(p, op);
         }
     }
     const auto handles = handlePoints();
     if (const std::optional<Operation> op = selectedStep(); op && !handles.empty()) {
+        const Operation shown = mDrag == Drag::Handle ? movedStep(mHandle, mLastPos) : *op;
+        QPolygonF path;
+        for (const glm::dvec2& at : shown.path)
+            path << toWidget({at.x, at.y, 0.0});
         for (const QPen& pen : {dark, light}) {
             p.setPen(pen);
             p.setBrush(Qt::NoBrush);
-            drawStepOutline(p, mDrag == Drag::Handle ? movedStep(mHandle, mLastPos) : *op);
+            drawStepOutline(p, shown);
+            if (!path.isEmpty()) p.drawPolyline(path);
             for (const auto& [handle, point] : handles)
                 if (handle == Handle::Direction) p.drawLine(handles.front().second, point);
         }
         p.setPen(dark);
         for (const auto& [handle, point] : handles) {
             p.setBrush(handle == Handle::Centre ? QColor(255, 255, 255) : QColor(255, 200, 60));
-            p.drawEllipse(point, 5.0, 5.0);
+            // A path's many points smaller, so the path between them stays seen.
+            const double r = handle == Handle::PathPoint ? 3.0 : 5.0;
+            p.drawEllipse(point, r, r);
         }
     }
 }

@@ -11,6 +11,7 @@
 
 #include "marbler/Sampling.h"
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QPointF>
 #include <QSizeF>
@@ -56,8 +57,9 @@ public:
     /// The widget point of a design point (of a solid, projected on the slice's plane).
     QPointF toWidget(const glm::dvec3& designPoint) const;
 
-    /// The handles of the selected step, for tests and the overlay: where each is (widget).
-    enum class Handle { Centre, Direction, Radius };
+    /// The handles of the selected step, for tests and the overlay: where each is (widget). A
+    /// stylus's handles are the points of its path, in order.
+    enum class Handle { Centre, Direction, Radius, PathPoint };
     std::vector<std::pair<Handle, QPointF>> handlePoints() const;
 
     /// The image shown now, whether it is the sharp final one, and the steps of the gesture in
@@ -65,6 +67,12 @@ public:
     const QImage& image() const { return mShown.image; }
     bool imageFinal() const { return mShown.final; }
     const std::vector<Operation>& pendingSteps() const { return mPending; }
+    /// The design points a free-hand drag (stylus) has passed through so far, and the pen's
+    /// pressure at each (1 for a mouse); empty when none is being drawn.
+    const std::vector<glm::dvec3>& strokePoints() const { return mStroke; }
+    /// The fraction of the view's pixels a free-hand stroke's live preview is rendered at, chosen
+    /// from the time the last previews took so the preview keeps up with the pointer.
+    double strokePreviewScale() const { return mPreviewScale; }
     /// A caption drawn at the canvas's top left (the compare panes say which state each shows:
     /// "Step 12 of 40", "Now"); none when empty.
     void setCaption(const QString& text);
@@ -91,6 +99,8 @@ signals:
     /// The Pick tool clicked: the palette index seen there (-1: the bath) and the step that
     /// laid it.
     void inkPicked(int color, std::optional<std::size_t> renderedIndex);
+    /// A gesture made nothing for a reason the user should hear (a stroke too long for a stylus).
+    void gestureRefused(const QString& why);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -101,6 +111,8 @@ protected:
     void mouseReleaseEvent(QMouseEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
     void keyReleaseEvent(QKeyEvent* event) override;
+    /// A pen on a tablet: a stylus stroke takes its pressure; other tools get it as a mouse.
+    void tabletEvent(QTabletEvent* event) override;
 
 private:
     /// The 2D extent shown: the design, or its slice's plane.
@@ -108,7 +120,16 @@ private:
     /// The width and height of that extent, in design units.
     QSizeF planeSize() const;
     void drawCaption(QPainter& painter) const;
-    void requestRender(const Genome& genome, bool previewOnly);
+    /// `scale` < 1 renders fewer pixels over the same region (a free-hand stroke's live preview).
+    void requestRender(const Genome& genome, bool previewOnly, double scale = 1.0);
+    /// Whether the current tool draws a free-hand path.
+    bool drawsPath() const;
+    /// A tool's gesture from a mouse or a pen: press, move, release at a widget point.
+    void beginGesture(QPointF widget, double pressure);
+    void moveGesture(QPointF widget, double pressure);
+    void endGesture(QPointF widget, double pressure);
+    /// The steps the gesture in progress makes so far.
+    std::vector<Operation> gestureSoFar() const;
     void rerender();
     void onRendered(std::uint64_t key, const QImage& image, bool final);
     void changeView();
@@ -145,6 +166,17 @@ private:
     glm::dvec3 mPress{0.0}, mCurrent{0.0};
     std::vector<Operation> mPending;
     Handle mHandle = Handle::Centre;
+    std::size_t mHandleIndex = 0; ///< the path point a PathPoint handle moves
+
+    std::vector<glm::dvec3> mStroke; ///< a free-hand drag's design points
+    std::vector<double> mStrokePressure;
+    bool mPenDown = false; ///< a tablet pen is drawing (its synthesised mouse events are ignored)
+    /// A free-hand stroke's live preview: one render at a time (a newer request would abort the
+    /// one being rendered, and a fast pointer would then never see one), the next asked for when
+    /// it comes with the path as it is then, at a size that keeps each under PreviewTargetMs.
+    bool mPreviewInFlight = false, mPreviewDirty = false;
+    double mPreviewScale = 0.5;
+    QElapsedTimer mPreviewClock;
 };
 
 } // namespace marbler::ui

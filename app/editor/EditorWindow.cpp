@@ -402,7 +402,9 @@ QDialog* EditorWindow::showGuide() {
         "<h2>The editor</h2>"
         "<p>A design is a list of steps: inks dropped on the bath, then strokes that move them. Pick a tool, "
         "then click or drag on the canvas; a new step goes after the selected step (or at the timeline's "
-        "point) and the canvas shows the design just after it.</p>"
+        "point) and the canvas shows the design just after it. The stylus draws free-hand: its path follows "
+        "the drag (a pen's pressure too), the panel sets its pull, reach and rake, and its path's points "
+        "are its handles.</p>"
         "<p>Select a step to change it in the form or with its handles, however far back; mute, duplicate, "
         "move or delete it from the list. Undo and redo work from anywhere; edits you undo and then leave "
         "by making another stay under History ▸ Other branches, one click away.</p>"
@@ -457,6 +459,8 @@ void EditorWindow::wireDocument() {
                 mCanvas->setDragging(!final);
                 mDocument->setStep(*step, op, mDocument->mergeFor(!final));
             });
+    connect(mCanvas, &EditorCanvas::gestureRefused, this,
+            [this](const QString& why) { statusBar()->showMessage(why, 10000); });
     connect(mCanvas, &EditorCanvas::inkPicked, this, [this](int color, std::optional<std::size_t> rendered) {
         if (color >= 0) setCurrentInk(color);
         if (rendered) selectStep(mDocument->documentIndex(*rendered));

@@ -134,7 +134,9 @@ bool panelSets(EditorTool tool, ParamField field) {
     case EditorGesture::Cell:
         return field == F::Field || field == F::Speed || field == F::Time;
     case EditorGesture::Path:
-        return false; // the drag draws the path; the rest starts as the registry says
+        // The drag draws the path (and a pen gives its pressure); the steps follow from the rest.
+        return field == F::Alpha || field == F::Lambda || field == F::Reach || field == F::Tines ||
+               field == F::Spacing;
     }
     return false;
 }
@@ -344,18 +346,30 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
 }
 
 std::vector<glm::dvec2> smoothedPath(const std::vector<glm::dvec3>& points, double spacing) {
-    std::vector<glm::dvec2> kept;
+    std::vector<double> unused;
+    return smoothedPath(points, {}, spacing, unused);
+}
+
+std::vector<glm::dvec2> smoothedPath(const std::vector<glm::dvec3>& points,
+                                     const std::vector<double>& pressure, double spacing,
+                                     std::vector<double>& keptPressure) {
+    // The pressure rides along as a third coordinate; distances are measured in the plane.
+    auto pressureAt = [&](std::size_t i) {
+        return i < pressure.size() ? std::clamp(pressure[i], 0.0, 1.0) : 1.0;
+    };
+    std::vector<glm::dvec3> kept;
     spacing = std::max(spacing, 1e-3);
-    for (const glm::dvec3& point : points) {
-        const glm::dvec2 at(point.x, point.y);
-        if (!std::isfinite(at.x) || !std::isfinite(at.y)) continue;
-        if (kept.empty() || glm::length(at - kept.back()) >= spacing) kept.push_back(at);
+    auto plane = [](const glm::dvec3& p) { return glm::dvec2(p.x, p.y); };
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::dvec3 at(points[i].x, points[i].y, pressureAt(i));
+        if (!std::isfinite(at.x) || !std::isfinite(at.y) || !std::isfinite(at.z)) continue;
+        if (kept.empty() || glm::length(plane(at) - plane(kept.back())) >= spacing) kept.push_back(at);
     }
     // The last point of the drag ends the path, unless it lies on the last one kept.
     if (!points.empty() && !kept.empty()) {
-        const glm::dvec2 end(points.back().x, points.back().y);
-        if (end != kept.back() && std::isfinite(end.x) && std::isfinite(end.y)) {
-            if (kept.size() > 1 && glm::length(end - kept.back()) < 0.5 * spacing)
+        const glm::dvec3 end(points.back().x, points.back().y, pressureAt(points.size() - 1));
+        if (plane(end) != plane(kept.back()) && std::isfinite(end.x) && std::isfinite(end.y)) {
+            if (kept.size() > 1 && glm::length(plane(end) - plane(kept.back())) < 0.5 * spacing)
                 kept.back() = end;
             else
                 kept.push_back(end);
@@ -363,34 +377,74 @@ std::vector<glm::dvec2> smoothedPath(const std::vector<glm::dvec3>& points, doub
     }
     // A pointer's jitter smoothed away: each inner point moved halfway towards the middle of
     // its neighbours (ends kept).
-    std::vector<glm::dvec2> smooth = kept;
+    std::vector<glm::dvec3> smooth = kept;
     for (std::size_t i = 1; i + 1 < kept.size(); ++i)
         smooth[i] = 0.5 * kept[i] + 0.25 * (kept[i - 1] + kept[i + 1]);
     // Consecutive points stay different (the format's rule).
     std::vector<glm::dvec2> path;
-    for (const glm::dvec2& at : smooth)
-        if (path.empty() || at != path.back()) path.push_back(at);
+    keptPressure.clear();
+    for (const glm::dvec3& at : smooth)
+        if (path.empty() || plane(at) != path.back()) {
+            path.push_back(plane(at));
+            keptPressure.push_back(std::clamp(at.z, 0.0, 1.0));
+        }
     return path;
 }
 
-std::vector<Operation> pathSteps(EditorTool tool, const ToolSettings& s,
-                                 const std::vector<glm::dvec3>& points, const Genome& design) {
-    if (!tool.inRegistry() || gestureOf(tool) != EditorGesture::Path || design.dimension != 2) return {};
-    (void)s;
+namespace {
+
+/// The stylus step a free-hand drag draws, its steps the fewest valid (possibly more than a
+/// stylus may take); nullopt where the drag draws nothing (see pathSteps).
+std::optional<Operation> drawnStroke(EditorTool tool, const ToolSettings& s,
+                                     const std::vector<glm::dvec3>& points, const Genome& design,
+                                     const std::vector<double>& pressure) {
+    if (!tool.inRegistry() || gestureOf(tool) != EditorGesture::Path || design.dimension != 2)
+        return std::nullopt;
     // Points a few units apart: fine enough to follow a hand, coarse enough for the file; a
     // long drag spaces them wider so the path stays within the format's points.
     double length = 0.0;
     for (std::size_t i = 1; i < points.size(); ++i)
         length += glm::length(glm::dvec2(points[i] - points[i - 1]));
     const double spacing = std::max(PathPointSpacing, length / double(MaxPathPoints - 2));
-    std::vector<glm::dvec2> path = smoothedPath(points, spacing);
-    if (path.size() < 2 || glm::length(path.back() - path.front()) + length < MinStrokeLength) return {};
+    std::vector<double> kept;
+    std::vector<glm::dvec2> path = smoothedPath(points, pressure, spacing, kept);
+    if (path.size() < 2 || glm::length(path.back() - path.front()) + length < MinStrokeLength)
+        return std::nullopt;
     Operation op = defaultOperation(tool.tool(), 2, points.front());
     op.path = std::move(path);
-    op.pressure.clear();
+    // A mouse (or a pen pressed fully throughout) leaves the field out, as the writer does.
+    if (std::all_of(kept.begin(), kept.end(), [](double p) { return p == 1.0; }))
+        op.pressure.clear();
+    else
+        op.pressure = std::move(kept);
+    // The panel's values, kept within the registry's ranges.
+    if (std::isfinite(s.pull)) op.alpha = s.pull;
+    op.lambda = std::isfinite(s.stylusLambda) ? std::max(s.stylusLambda, 1e-3) : op.lambda;
+    op.reach = std::isfinite(s.reach) ? std::max(s.reach, 1e-3) : op.reach;
+    op.tines = std::clamp(s.tines, 1, int(MaxTines));
+    // A single stylus keeps the default spacing, so the file does not say a meaningless one.
+    if (op.tines > 1 && std::isfinite(s.rakeSpacing)) op.spacing = std::max(s.rakeSpacing, 1e-3);
     op.steps = minimumStylusSteps(op);
-    if (op.steps > MaxStylusSteps) return {};
-    return {op};
+    return op;
+}
+
+} // namespace
+
+std::vector<Operation> pathSteps(EditorTool tool, const ToolSettings& s,
+                                 const std::vector<glm::dvec3>& points, const Genome& design,
+                                 const std::vector<double>& pressure) {
+    std::optional<Operation> op = drawnStroke(tool, s, points, design, pressure);
+    if (!op || op->steps > MaxStylusSteps) return {};
+    return {*op};
+}
+
+std::string pathRefusal(EditorTool tool, const ToolSettings& s, const std::vector<glm::dvec3>& points,
+                        const Genome& design, const std::vector<double>& pressure) {
+    std::optional<Operation> op = drawnStroke(tool, s, points, design, pressure);
+    if (!op || op->steps <= MaxStylusSteps) return {};
+    return "This stroke would need more than " + std::to_string(MaxStylusSteps) +
+           " integration steps, more than a stylus may take: draw it in shorter strokes, or lower its "
+           "pull or raise its reach";
 }
 
 } // namespace marbler::ui

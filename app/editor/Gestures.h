@@ -9,6 +9,8 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -73,6 +75,11 @@ struct ToolSettings {
     double speed = editorStart(Tool::Flow, ParamField::Speed);    ///< flow
     double time = editorStart(Tool::Flow, ParamField::Time);      ///< flow
     int field = int(editorStart(Tool::Flow, ParamField::Field));  ///< flow: 0 cells, 1 cavity
+    double pull = editorStart(Tool::Stylus, ParamField::Alpha);   ///< stylus: its pull (alpha)
+    double stylusLambda = editorStart(Tool::Stylus, ParamField::Lambda); ///< stylus: how far to the side
+    double reach = editorStart(Tool::Stylus, ParamField::Reach);         ///< stylus: ahead and behind
+    int tines = int(editorStart(Tool::Stylus, ParamField::Tines));       ///< stylus: 1, or a rake's tines
+    double rakeSpacing = editorStart(Tool::Stylus, ParamField::Spacing); ///< stylus: between a rake's tines
     std::uint64_t seed = 1; ///< spray and scatter positions (the same seed, the same drops)
     friend bool operator==(const ToolSettings&, const ToolSettings&) = default;
 };
@@ -91,11 +98,27 @@ inline constexpr double PathPointSpacing = 4.0;
 /// kept dropped, the drag's end kept, inner points smoothed, consecutive points different.
 std::vector<glm::dvec2> smoothedPath(const std::vector<glm::dvec3>& points, double spacing);
 
+/// The points of a free-hand drag with a pen's pressure at each (`pressure` one value a point,
+/// or empty: all 1), as smoothedPath thins and smooths them; the pressure of each point kept
+/// goes with it (smoothed alike). Returns the path; `keptPressure` gets one value a path point.
+std::vector<glm::dvec2> smoothedPath(const std::vector<glm::dvec3>& points,
+                                     const std::vector<double>& pressure, double spacing,
+                                     std::vector<double>& keptPressure);
+
 /// The step a free-hand drag through `points` makes with a path tool (stylus): its smoothed
-/// polyline, the registry's starting values, the fewest valid steps. Empty for another tool,
-/// a solid, or a drag too short.
+/// polyline, the panel's pull, sharpness, reach, tines and spacing, the pen's `pressure` (one
+/// value in [0, 1] a point; empty, or all 1, for a mouse: the field left out), the fewest valid
+/// steps. Empty for another tool, a solid, a drag too short, or a stroke that would need more
+/// steps than a stylus may take (pathRefusal says why).
 std::vector<Operation> pathSteps(EditorTool tool, const ToolSettings& s,
-                                 const std::vector<glm::dvec3>& points, const Genome& design);
+                                 const std::vector<glm::dvec3>& points, const Genome& design,
+                                 const std::vector<double>& pressure = {});
+
+/// Why the drag through `points` makes no step with a path tool although it is long enough (a
+/// stroke needing more than MaxStylusSteps integration steps), in words for the status bar;
+/// empty when pathSteps makes its step or the drag is simply too short.
+std::string pathRefusal(EditorTool tool, const ToolSettings& s, const std::vector<glm::dvec3>& points,
+                        const Genome& design, const std::vector<double>& pressure = {});
 
 /// Whether the tool works on designs of this dimension (stretch and flow are flat only) and has
 /// a gesture there.

@@ -50,6 +50,36 @@ bool isInteger(ParamKind kind) {
     return kind == ParamKind::Count;
 }
 
+/// Parameters of any length, edited as text: a stretch's teeth, a stylus's path and pressure.
+bool isList(ParamKind kind) {
+    return kind == ParamKind::Teeth || kind == ParamKind::Path || kind == ParamKind::Pressure;
+}
+
+/// A stylus's steps after another of its fields changed: the fewest valid still where they were
+/// the fewest, else at least that (a stroke that would need more than a stylus may take keeps
+/// too few, and the validator refuses it).
+void keepStylusSteps(const Operation& before, Operation& op) {
+    if (!findParam(op.tool, ParamField::Path) || op.path.size() < 2) return;
+    const int fewest = minimumStylusSteps(op);
+    if (fewest > MaxStylusSteps) return;
+    op.steps = before.path.size() >= 2 && before.steps == minimumStylusSteps(before)
+                   ? fewest
+                   : std::max(op.steps, fewest);
+}
+
+/// `values` (one a point of a path of `from` points) spread over `to` points, linearly.
+std::vector<double> resampled(const std::vector<double>& values, std::size_t to) {
+    if (values.empty() || values.size() == to) return values;
+    std::vector<double> out(to);
+    for (std::size_t i = 0; i < to; ++i) {
+        const double at = to == 1 ? 0.0 : double(i) * double(values.size() - 1) / double(to - 1);
+        const auto k = std::min(std::size_t(at), values.size() - 1);
+        const double f = at - double(k);
+        out[i] = k + 1 < values.size() ? values[k] + f * (values[k + 1] - values[k]) : values[k];
+    }
+    return out;
+}
+
 glm::dvec3 unitOrZero(const glm::dvec3& v) {
     const double length = glm::length(v);
     return length > 1e-12 && std::isfinite(length) ? v / length : glm::dvec3(0.0);
@@ -167,6 +197,7 @@ struct ParamForm::Row {
     std::vector<QSlider*> sliders;
     QComboBox* combo = nullptr;
     QLineEdit* text = nullptr;
+    QLabel* error = nullptr;                ///< what is wrong with the text typed (a path, pressure)
     QSpinBox* teethCount = nullptr;         ///< a stretch's teeth: how many
     CompactSpinBox* teethSpacing = nullptr; ///< and how far apart (even)
 };
@@ -201,7 +232,7 @@ void ParamForm::setStep(const Operation& op, int dimension, const Genome& design
     mPalette = design.palette;
     std::vector<int> shape;
     for (const ParamSpec& spec : toolSpec(op.tool).params(dimension))
-        shape.push_back(spec.kind == ParamKind::Teeth ? 0 : componentCount(spec, op, dimension));
+        shape.push_back(isList(spec.kind) ? 0 : componentCount(spec, op, dimension));
     if (sameTool && shape == mShape && !paletteChanged) {
         refresh();
         return;
@@ -277,6 +308,25 @@ void ParamForm::build() {
             connect(row->combo, &QComboBox::currentIndexChanged, this, [this, row](int index) {
                 if (mUpdating || index < 0) return;
                 commitComponent(*row->spec, 0, index, false);
+            });
+        } else if (spec.kind == ParamKind::Path || spec.kind == ParamKind::Pressure) {
+            // A stylus's path ("x y; x y; ...") or pressure ("p p p ...", empty: all 1) as text,
+            // checked when Enter is pressed or the field is left; what is wrong is said below it.
+            auto* lines = new QVBoxLayout;
+            layout->addLayout(lines, 1);
+            row->text = new QLineEdit(row->box);
+            row->text->setPlaceholderText(spec.kind == ParamKind::Path
+                                              ? tr("x y; x y; ... (2 to %1 points)").arg(int(MaxPathPoints))
+                                              : tr("all 1 (a mouse's stroke)"));
+            lines->addWidget(row->text);
+            row->error = new QLabel(row->box);
+            row->error->setObjectName(QStringLiteral("error-") + key);
+            row->error->setWordWrap(true);
+            row->error->setStyleSheet(QStringLiteral("color: #c62828"));
+            row->error->hide();
+            lines->addWidget(row->error);
+            connect(row->text, &QLineEdit::editingFinished, this, [this, row] {
+                if (!mUpdating) commitListText(*row);
             });
         } else if (spec.kind == ParamKind::Teeth) {
             // Count and spacing for the usual even comb; the positions as text for any other.
@@ -431,9 +481,16 @@ void ParamForm::refreshRow(const Row& row) {
     if (row.combo) row.combo->setCurrentIndex(int(getComponent(spec, mOp, 0)));
     if (row.text) {
         QStringList words;
-        for (double t : mOp.teeth)
-            words << CompactSpinBox::compact(t);
-        row.text->setText(words.join(QStringLiteral(" ")));
+        if (spec.kind == ParamKind::Path) {
+            for (const glm::dvec2& p : mOp.path)
+                words << CompactSpinBox::compact(p.x) + QStringLiteral(" ") + CompactSpinBox::compact(p.y);
+            row.text->setText(words.join(QStringLiteral("; ")));
+        } else {
+            for (double t : spec.kind == ParamKind::Pressure ? mOp.pressure : mOp.teeth)
+                words << CompactSpinBox::compact(t);
+            row.text->setText(words.join(QStringLiteral(" ")));
+        }
+        row.text->setCursorPosition(0);
     }
     if (row.teethCount && mOp.teeth.size() >= 2) {
         const double spacing = (mOp.teeth.back() - mOp.teeth.front()) / double(mOp.teeth.size() - 1);
@@ -506,7 +563,7 @@ void ParamForm::setTeeth(const Row& row, int count, double spacing) {
         refreshRow(row);
 }
 
-bool ParamForm::valid(const Operation& op) const {
+bool ParamForm::valid(const Operation& op, QString* why) const {
     Genome g;
     g.dimension = mDimension;
     g.size = mSize;
@@ -516,9 +573,98 @@ bool ParamForm::valid(const Operation& op) const {
     try {
         validateGenome(g, "step");
         return true;
-    } catch (const Error&) {
+    } catch (const Error& e) {
+        if (why) *why = QString::fromUtf8(e.what());
         return false;
     }
+}
+
+void ParamForm::showError(const Row& row, const QString& message) {
+    row.error->setText(message);
+    row.error->setToolTip(message);
+    row.error->show();
+    refreshRow(row); // the field shows the value kept
+}
+
+void ParamForm::commitListText(const Row& row) {
+    if (!mHasStep) return;
+    const ParamSpec& spec = *row.spec;
+    const QString label = text(spec.label);
+    const QString typed = row.text->text().trimmed();
+    Operation op = mOp;
+    auto number = [](const QString& word, double& value) {
+        bool ok = false;
+        value = word.toDouble(&ok);
+        return ok && std::isfinite(value);
+    };
+    if (spec.kind == ParamKind::Path) {
+        op.path.clear();
+        const QStringList points =
+            typed.split(QRegularExpression(QStringLiteral("\\s*[;\\n]\\s*")), Qt::SkipEmptyParts);
+        for (int i = 0; i < points.size(); ++i) {
+            const QStringList xy =
+                points[i].split(QRegularExpression(QStringLiteral("[\\s,]+")), Qt::SkipEmptyParts);
+            glm::dvec2 p;
+            if (xy.size() != 2 || !number(xy[0], p.x) || !number(xy[1], p.y))
+                return showError(row, tr("%1: point %2 (\"%3\") is not two numbers \"x y\"")
+                                          .arg(label)
+                                          .arg(i + 1)
+                                          .arg(points[i]));
+            if (!op.path.empty() && p == op.path.back())
+                return showError(row,
+                                 tr("%1: point %2 is the same as point %3; consecutive points must differ")
+                                     .arg(label)
+                                     .arg(i + 1)
+                                     .arg(i));
+            op.path.push_back(p);
+        }
+        if (op.path.size() < 2 || op.path.size() > MaxPathPoints)
+            return showError(row, tr("%1: %2 points; a path has 2 to %3")
+                                      .arg(label)
+                                      .arg(op.path.size())
+                                      .arg(int(MaxPathPoints)));
+        // A pen's pressure follows the points (spread over as many as there are now).
+        op.pressure = resampled(mOp.pressure, op.path.size());
+    } else {
+        op.pressure.clear();
+        const QStringList words =
+            typed.split(QRegularExpression(QStringLiteral("[\\s,;]+")), Qt::SkipEmptyParts);
+        for (int i = 0; i < words.size(); ++i) {
+            double p = 0.0;
+            if (!number(words[i], p))
+                return showError(
+                    row, tr("%1: value %2 (\"%3\") is not a number").arg(label).arg(i + 1).arg(words[i]));
+            if (!spec.range.contains(p))
+                return showError(row, tr("%1: value %2 (%3) %4")
+                                          .arg(label)
+                                          .arg(i + 1)
+                                          .arg(words[i])
+                                          .arg(QString::fromStdString(spec.range.describe())));
+            op.pressure.push_back(p);
+        }
+        if (!op.pressure.empty() && op.pressure.size() != op.path.size())
+            return showError(row, tr("%1: %2 values for %3 path points; give one a point, or none for all 1")
+                                      .arg(label)
+                                      .arg(op.pressure.size())
+                                      .arg(op.path.size()));
+        // All 1 is what no pressure says (the file leaves it out).
+        if (std::all_of(op.pressure.begin(), op.pressure.end(),
+                        [&](double p) { return p == spec.defaultValue; }))
+            op.pressure.clear();
+    }
+    keepStylusSteps(mOp, op);
+    if (minimumStylusSteps(op) > MaxStylusSteps)
+        return showError(row, tr("%1: this stroke would need more than %2 integration steps; split it into "
+                                 "shorter strokes")
+                                  .arg(label)
+                                  .arg(MaxStylusSteps));
+    if (!valid(op, &mLastError)) return showError(row, tr("%1: %2").arg(label, mLastError));
+    if (op == mOp) {
+        row.error->hide();
+        refreshRow(row);
+        return;
+    }
+    commitOperation(spec, op, false);
 }
 
 void ParamForm::commitComponent(const ParamSpec& spec, int component, double value, bool dragging,
@@ -534,6 +680,7 @@ void ParamForm::commitComponent(const ParamSpec& spec, int component, double val
         value = std::round(value);
     Operation op = mOp;
     applyComponent(spec, op, mDimension, component, value);
+    if (spec.field != ParamField::Steps) keepStylusSteps(mOp, op);
     if (!valid(op)) {
         // A rule between parameters (a flow's steps, a direction's length): the valid value
         // nearest the one asked for, between it and the old value, which is valid.
@@ -543,6 +690,7 @@ void ParamForm::commitComponent(const ParamSpec& spec, int component, double val
             if (spec.kind == ParamKind::Count) mid = good < bad ? std::floor(mid) : std::ceil(mid);
             Operation probe = mOp;
             applyComponent(spec, probe, mDimension, component, mid);
+            if (spec.field != ParamField::Steps) keepStylusSteps(mOp, probe);
             if (valid(probe))
                 good = mid;
             else
@@ -553,6 +701,7 @@ void ParamForm::commitComponent(const ParamSpec& spec, int component, double val
         }
         op = mOp;
         applyComponent(spec, op, mDimension, component, good);
+        if (spec.field != ParamField::Steps) keepStylusSteps(mOp, op);
         if (!valid(op)) {
             refresh();
             return;
@@ -569,6 +718,8 @@ void ParamForm::commitOperation(const ParamSpec& spec, const Operation& op, bool
         return;
     }
     mOp = op;
+    for (const Row* row : mRows)
+        if (row->error) row->error->hide();
     // Show the values kept (brought into range, a direction made unit, its normal turned with it).
     refresh();
     emit edited(mOp, QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size())), dragging);

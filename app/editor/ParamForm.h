@@ -2,14 +2,15 @@
 /// The parameters of one step, as widgets built from the tool registry (Params.h): spin boxes
 /// with units and ranges, sliders for positions, lengths, angles, phases and shifts, the palette
 /// for an ink's colour, a list for a choice, two boxes for an extent, a stretch's teeth as a
-/// count and a spacing (and their positions as text). Each row is named by the registry's label,
-/// the word the tool panel uses too; numbers show compactly (six significant digits, an exponent
-/// for the huge and the tiny), the value kept exact until it is edited. Enter commits a field
-/// and says so (`committed`), and the fields leave the undo keys to the window. Every value it emits is
-/// valid: a value outside the parameter's range, or one that breaks a rule between parameters (a flow's
-/// steps, a normal parallel to the direction), is brought back to the nearest valid value first. A 3D axis,
-/// direction or normal is kept unit, and the normal orthogonal to the direction, as loading a file makes them
-/// (so editing a direction may turn the normal with it).
+/// count and a spacing (and their positions as text), a stylus's path and pressure as text (what
+/// is wrong with the text typed said under it, starting with the field's label). Each row is named by the
+/// registry's label, the word the tool panel uses too; numbers show compactly (six significant digits, an
+/// exponent for the huge and the tiny), the value kept exact until it is edited. Enter commits a field and
+/// says so (`committed`), and the fields leave the undo keys to the window. Every value it emits is valid: a
+/// value outside the parameter's range, or one that breaks a rule between parameters (a flow's steps, a
+/// normal parallel to the direction), is brought back to the nearest valid value first. A 3D axis, direction
+/// or normal is kept unit, and the normal orthogonal to the direction, as loading a file makes them (so
+/// editing a direction may turn the normal with it).
 
 #include "marbler/Genome.h"
 #include "marbler/Params.h"
@@ -85,7 +86,11 @@ private:
     void refreshRow(const Row& row);
     void watch(QWidget* field);
     void setTeeth(const Row& row, int count, double spacing);
-    bool valid(const Operation& op) const;
+    /// Whether `op` is a valid step; `why` gets the validator's words when it is not.
+    bool valid(const Operation& op, QString* why = nullptr) const;
+    /// A path's or pressure's text, typed: committed, or what is wrong said under it.
+    void commitListText(const Row& row);
+    void showError(const Row& row, const QString& message);
     void commitComponent(const ParamSpec& spec, int component, double value, bool dragging,
                          bool endsDrag = false);
     void commitOperation(const ParamSpec& spec, const Operation& op, bool dragging, bool endsDrag = false);
@@ -99,6 +104,7 @@ private:
     bool mUpdating = false;
     std::vector<int> mShape; ///< the component count of each parameter the widgets were built for
     std::vector<Row*> mRows;
+    QString mLastError;
     QFormLayout* mLayout;
 };
 

@@ -92,7 +92,13 @@ ToolOptions::ToolOptions(QWidget* parent)
     const QString units = unitOf(Tool::Drop, ParamField::Radius);
     // Rows of a parameter show for the tools whose gesture takes it from the panel (panelSets);
     // the editor's own rows for the gestures they serve.
-    auto sets = [](ParamField field) { return [field](EditorTool t) { return panelSets(t, field); }; };
+    // A stylus has rows of its own (its pull and sharpness start elsewhere than a circle's).
+    auto sets = [](ParamField field) {
+        return [field](EditorTool t) { return gestureOf(t) != EditorGesture::Path && panelSets(t, field); };
+    };
+    auto drawn = [](ParamField field) {
+        return [field](EditorTool t) { return gestureOf(t) == EditorGesture::Path && panelSets(t, field); };
+    };
     auto gesture = [](EditorGesture g) { return [g](EditorTool t) { return gestureOf(t) == g; }; };
     auto pattern = [](EditorTool t) { return t == T::DropLine || t == T::DropRings || t == T::DropScatter; };
 
@@ -155,6 +161,25 @@ ToolOptions::ToolOptions(QWidget* parent)
               unitOf(Tool::Flow, ParamField::Speed), sets(ParamField::Speed));
     addNumber("toolTime", labelOf(Tool::Flow, ParamField::Time), tr("How long the flow runs"),
               &ToolSettings::time, 0.01, 1000, unitOf(Tool::Flow, ParamField::Time), sets(ParamField::Time));
+    // The stylus (and the rake) drawn along a path: the next stroke's values.
+    addNumber("toolPull", labelOf(Tool::Stylus, ParamField::Alpha),
+              tr("How hard the stylus pulls the ink along its path: about the shift on the track; "
+                 "negative pushes it back"),
+              &ToolSettings::pull, -100000, 100000, unitOf(Tool::Stylus, ParamField::Alpha),
+              drawn(ParamField::Alpha));
+    addNumber("toolStylusLambda", labelOf(Tool::Stylus, ParamField::Lambda),
+              tr("How far to the side of the track the pull reaches: smaller is a finer line"),
+              &ToolSettings::stylusLambda, 0.1, 100000, unitOf(Tool::Stylus, ParamField::Lambda),
+              drawn(ParamField::Lambda));
+    addNumber("toolReach", labelOf(Tool::Stylus, ParamField::Reach),
+              tr("How far ahead of and behind the stylus the bath moves"), &ToolSettings::reach, 0.1, 100000,
+              unitOf(Tool::Stylus, ParamField::Reach), drawn(ParamField::Reach));
+    addCount("toolTines", labelOf(Tool::Stylus, ParamField::Tines),
+             tr("1 draws with a single stylus; more draws a rake of that many tines"), &ToolSettings::tines,
+             1, int(MaxTines), drawn(ParamField::Tines));
+    addNumber("toolRakeSpacing", labelOf(Tool::Stylus, ParamField::Spacing),
+              tr("The distance between the rake's tines (with more than one)"), &ToolSettings::rakeSpacing,
+              0.1, 100000, unitOf(Tool::Stylus, ParamField::Spacing), drawn(ParamField::Spacing));
     addCount("toolSeed", tr("Seed"),
              tr("Where sprayed and scattered drops land: the same seed, the same drops"), nullptr, 1, 1000000,
              [=](EditorTool t) { return gestureOf(t) == EditorGesture::Spray || t == T::DropScatter; });

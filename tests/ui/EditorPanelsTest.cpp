@@ -101,6 +101,18 @@ void changeWidget(ParamForm& form, const ParamSpec& spec, const Operation& op) {
         emit text->editingFinished();
         return;
     }
+    if (spec.kind == ParamKind::Path || spec.kind == ParamKind::Pressure) {
+        // A stylus's path as "x y; x y" (drawn a little shorter) and its pressure as "p p".
+        auto* text = form.findChild<QLineEdit*>(QStringLiteral("edit-%1-0").arg(key));
+        ASSERT_NE(text, nullptr) << key.toStdString();
+        QStringList words;
+        for (const glm::dvec2& p : op.path)
+            words << (spec.kind == ParamKind::Path ? QStringLiteral("%1 %2").arg(p.x * 0.9).arg(p.y * 0.9)
+                                                   : QStringLiteral("0.5"));
+        text->setText(words.join(spec.kind == ParamKind::Path ? QStringLiteral("; ") : QStringLiteral(" ")));
+        emit text->editingFinished();
+        return;
+    }
     if (spec.kind == ParamKind::Count) {
         auto* spin = form.findChild<QSpinBox*>(QStringLiteral("edit-%1-0").arg(key));
         ASSERT_NE(spin, nullptr);
