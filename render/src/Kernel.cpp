@@ -720,19 +720,6 @@ template <Variant V, int Dim>
 /// binary search of a fixed number of halvings (the same for every point, so the loop stays
 /// branch-free), then x -= s sin(pi tau)^p M. sin^p: p = 1, 2 and 1/2 exactly as pow rounds
 /// them (to the nearest double), any other p through std::pow, a point at a time.
-/// Stylus (Tools.cpp stylus) backward, a first correct version: each point through the scalar
-/// reference's steps, newest first (stylusStep), so the kernel equals the reference exactly.
-/// Points the stylus never comes near take the scalar's path too; skipping them is for later.
-inline void stylus2(const PreparedOp& op, Tile& t, int n) {
-    for (int i = 0; i < n; ++i) {
-        glm::dvec2 p(t.x[i], t.y[i]);
-        for (int step = op.steps; step-- > 0;)
-            p = stylusStep(op, p, step, -1.0);
-        t.x[i] = p.x;
-        t.y[i] = p.y;
-    }
-}
-
 [[gnu::always_inline]] inline void stretch2(const PreparedOp& op, Tile& t, int n) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
@@ -898,6 +885,182 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
         glm::dvec3 q = inverseMap(op, p);
         x[i] = q.x;
         y[i] = q.y;
+    }
+}
+
+// ---- Version 3: the stylus (2D) ------------------------------------------------------------
+
+/// The velocity of a stylus at (px, py) at one step's station (Tools.cpp stylusVelocity, in its
+/// order of operations; the station, T and N come ready).
+[[gnu::always_inline]] inline void stylusVelocity2(double px, double py, const StylusStation& station,
+                                                   double tx, double ty, const double* offset, int tines,
+                                                   double lambda, double reach, double& vx, double& vy) {
+    const double nx = -ty, ny = tx, c = station.c;
+    const double dx = px - station.s.x, dy = py - station.s.y;
+    double sumX = 0.0, sumY = 0.0;
+    for (int j = 0; j < tines; ++j) {
+        const double rx = dx - offset[j] * nx, ry = dy - offset[j] * ny;
+        const double u = (rx * tx + ry * ty) / reach;
+        if (!(std::abs(u) < 1.0)) continue; // w = w' = 0
+        const double q = (rx * nx + ry * ny) / lambda;
+        const double w = (1.0 - u * u) * (1.0 - u * u), dw = -4.0 * u * (1.0 - u * u);
+        const double a = c * w / (1.0 + q * q), b = c * lambda * std::atan(q) * dw / reach;
+        sumX += a * tx - b * nx;
+        sumY += a * ty - b * ny;
+    }
+    vx = sumX;
+    vy = sumY;
+}
+
+/// Stylus (Tools.cpp stylus) backward: each point runs the reference's steps (stylusStep),
+/// newest first, but only those that can move it. A step moves a point only while the stylus is
+/// within reach of it along the track (|(P - S(tau_i)) . T| < l; the tines are offset along N,
+/// so this holds for all or none of them); otherwise the velocity at P is exactly zero, the
+/// step's first guess and every iterate are P itself, and the step leaves it bit for bit
+/// unchanged. On a segment m = (P - S(tau)) . T falls linearly with tau, so the steps that can
+/// move a resting point form an interval found in closed form, widened by a margin far above
+/// the rounding of m (and by a step at each end): a step is skipped only where the reference
+/// surely leaves the point alone, and a point jumps from one such interval to the next. The
+/// steps it does run are the reference's to the last bit (same formulas, same order, the
+/// stations S(tau_i), c(tau_i) precomputed by the same code: Tools.cpp stylusStation).
+///
+/// The segments a tile's points can reach are found first, from the box around the points
+/// grown by the farthest any point can travel in the whole stroke (L times the largest speed),
+/// so that a point far from most of a long path does not test every segment.
+inline void stylus2(const PreparedOp& op, Tile& t, int n) {
+    const int steps = op.steps;
+    if (steps <= 0 || op.stations.size() != static_cast<std::size_t>(steps) || op.path.size() < 2) {
+        for (int i = 0; i < n; ++i) { // not prepared by prepare(): the reference itself
+            glm::dvec3 p = inverseMap(op, {t.x[i], t.y[i], 0.0});
+            t.x[i] = p.x;
+            t.y[i] = p.y;
+        }
+        return;
+    }
+    const int tines = std::clamp(op.tines, 1, 64);
+    double offset[64];
+    double widest = 0.0;
+    for (int j = 0; j < tines; ++j) {
+        offset[j] = (j - 0.5 * (op.tines - 1)) * op.spacing;
+        widest = std::max(widest, std::abs(offset[j]));
+    }
+    const double h = -op.step, step = op.step, tolerance = op.tolerance, lambda = op.lambda, reach = op.reach;
+    const StylusStation* stations = op.stations.data();
+    const glm::dvec2* along = op.along.data();
+    const glm::dvec2* path = op.path.data();
+    const double* cum = op.cum.data();
+    const int* first = op.firstStep.data();
+    const int segments = static_cast<int>(op.along.size());
+    // The scale of every coordinate the reference's m is made of: its rounding is a few ulps of
+    // this (plus the point's own size); the margin is 1e-9 of it.
+    double farthest = 0.0;
+    for (const glm::dvec2& p : op.path)
+        farthest = std::max(farthest, std::abs(p.x) + std::abs(p.y));
+    const double scale = op.length + reach + widest + farthest;
+    // The fastest any point moves: each tine's |v| <= |c| (1 + lambda (pi / 2) max|w'| / l) with
+    // max|w'| = 8 / (3 sqrt 3); over the stroke a point travels at most L times that.
+    double largestPull = 0.0;
+    for (double p : op.pressure)
+        largestPull = std::max(largestPull, std::abs(op.pull * p));
+    const double travel = 1.01 * op.length * tines * largestPull *
+                          (1.0 + lambda * 1.5707963267948966 * 1.5396007178390021 / reach);
+
+    // The box around the tile's points, and the segments whose reach it can get into.
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    bool finite = true;
+    for (int i = 0; i < n; ++i) {
+        x0 = std::min(x0, t.x[i]);
+        x1 = std::max(x1, t.x[i]);
+        y0 = std::min(y0, t.y[i]);
+        y1 = std::max(y1, t.y[i]);
+        finite = finite && std::abs(t.x[i]) < 1e150 && std::abs(t.y[i]) < 1e150;
+    }
+    const double grow = travel + 1e-9 * (scale + std::abs(x0) + std::abs(x1) + std::abs(y0) + std::abs(y1));
+    x0 -= grow;
+    x1 += grow;
+    y0 -= grow;
+    y1 += grow;
+    int candidates[1024];
+    std::vector<int> manyCandidates;
+    int* candidate = candidates;
+    if (segments > 1024) {
+        manyCandidates.resize(static_cast<std::size_t>(segments));
+        candidate = manyCandidates.data();
+    }
+    int count = 0;
+    for (int s = 0; s < segments; ++s) {
+        if (first[s] >= first[s + 1]) continue; // no step's time lies on it
+        const double tx = along[s].x, ty = along[s].y;
+        // m0 = (P - path_s) . T over the box's corners.
+        const double ax = (x0 - path[s].x) * tx, bx = (x1 - path[s].x) * tx;
+        const double ay = (y0 - path[s].y) * ty, by = (y1 - path[s].y) * ty;
+        const double lo = std::min(ax, bx) + std::min(ay, by), hi = std::max(ax, bx) + std::max(ay, by);
+        const double length = cum[s + 1] - cum[s];
+        if (!finite || (hi > -reach - grow && lo < length + reach + grow)) candidate[count++] = s;
+    }
+
+    for (int i = 0; i < n; ++i) {
+        double px = t.x[i], py = t.y[i];
+        // Beyond 1e150 m0 could overflow: such a point runs every step.
+        const bool exact = std::abs(px) < 1e150 && std::abs(py) < 1e150;
+        const double margin = 1e-9 * (scale + std::abs(px) + std::abs(py));
+        int k = steps - 1;
+        int c = count - 1;
+        while (true) {
+            // The newest step at or below k that can move the point where it rests.
+            int active = -1;
+            if (!exact || !finite) {
+                active = k;
+            } else {
+                while (c >= 0) {
+                    const int s = candidate[c];
+                    if (first[s] > k) {
+                        --c;
+                        continue;
+                    }
+                    const double m0 = (px - path[s].x) * along[s].x + (py - path[s].y) * along[s].y;
+                    // Moving while |m0 - (tau - cum_s)| < l, tau = (k + 1/2) h.
+                    const double top = (cum[s] + m0 + reach + margin) / step - 0.5;
+                    const double bottom = (cum[s] + m0 - reach - margin) / step - 0.5;
+                    const int last = std::min(k, first[s + 1] - 1);
+                    const int hi = top >= last          ? last
+                                   : top < first[s] - 1 ? first[s] - 2
+                                                        : int(std::floor(top)) + 1;
+                    const int lo = bottom <= first[s]  ? first[s]
+                                   : bottom > last + 1 ? last + 2
+                                                       : int(std::ceil(bottom)) - 1;
+                    if (hi >= lo && hi >= first[s]) {
+                        active = hi;
+                        break;
+                    }
+                    k = first[s] - 1;
+                    --c;
+                }
+            }
+            if (active < 0) break;
+            k = active;
+            // One step, exactly as stylusStep.
+            const StylusStation& station = stations[k];
+            const double tx = along[station.segment].x, ty = along[station.segment].y;
+            double vx, vy;
+            stylusVelocity2(px, py, station, tx, ty, offset, tines, lambda, reach, vx, vy);
+            double nextX = px + h * vx, nextY = py + h * vy;
+            for (int iteration = 0; iteration < 100; ++iteration) {
+                stylusVelocity2(0.5 * (px + nextX), 0.5 * (py + nextY), station, tx, ty, offset, tines,
+                                lambda, reach, vx, vy);
+                const double againX = px + h * vx, againY = py + h * vy;
+                const double dx = againX - nextX, dy = againY - nextY;
+                const bool settled = std::sqrt(dx * dx + dy * dy) < tolerance;
+                nextX = againX;
+                nextY = againY;
+                if (settled) break;
+            }
+            px = nextX;
+            py = nextY;
+            if (--k < 0) break;
+        }
+        t.x[i] = px;
+        t.y[i] = py;
     }
 }
 
