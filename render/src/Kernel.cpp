@@ -890,28 +890,6 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
 
 // ---- Version 3: the stylus (2D) ------------------------------------------------------------
 
-/// The velocity of a stylus at (px, py) at one step's station (Tools.cpp stylusVelocity, in its
-/// order of operations; the station, T and N come ready).
-[[gnu::always_inline]] inline void stylusVelocity2(double px, double py, const StylusStation& station,
-                                                   double tx, double ty, const double* offset, int tines,
-                                                   double lambda, double reach, double& vx, double& vy) {
-    const double nx = -ty, ny = tx, c = station.c;
-    const double dx = px - station.s.x, dy = py - station.s.y;
-    double sumX = 0.0, sumY = 0.0;
-    for (int j = 0; j < tines; ++j) {
-        const double rx = dx - offset[j] * nx, ry = dy - offset[j] * ny;
-        const double u = (rx * tx + ry * ty) / reach;
-        if (!(std::abs(u) < 1.0)) continue; // w = w' = 0
-        const double q = (rx * nx + ry * ny) / lambda;
-        const double w = (1.0 - u * u) * (1.0 - u * u), dw = -4.0 * u * (1.0 - u * u);
-        const double a = c * w / (1.0 + q * q), b = c * lambda * std::atan(q) * dw / reach;
-        sumX += a * tx - b * nx;
-        sumY += a * ty - b * ny;
-    }
-    vx = sumX;
-    vy = sumY;
-}
-
 /// Stylus (Tools.cpp stylus) backward: each point runs the reference's steps (stylusStep),
 /// newest first, but only those that can move it. A step moves a point only while the stylus is
 /// within reach of it along the track (|(P - S(tau_i)) . T| < l; the tines are offset along N,
@@ -924,10 +902,13 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
 /// steps it does run are the reference's to the last bit (same formulas, same order, the
 /// stations S(tau_i), c(tau_i) precomputed by the same code: Tools.cpp stylusStation).
 ///
+/// The steps then run for all the points waiting on them at once, in lanes (as flow2 does),
+/// which hides the long chain of divides of one point's iteration behind the others'.
+///
 /// The segments a tile's points can reach are found first, from the box around the points
 /// grown by the farthest any point can travel in the whole stroke (L times the largest speed),
 /// so that a point far from most of a long path does not test every segment.
-inline void stylus2(const PreparedOp& op, Tile& t, int n) {
+[[gnu::always_inline]] inline void stylus2(const PreparedOp& op, Tile& t, int n) {
     const int steps = op.steps;
     if (steps <= 0 || op.stations.size() != static_cast<std::size_t>(steps) || op.path.size() < 2) {
         for (int i = 0; i < n; ++i) { // not prepared by prepare(): the reference itself
@@ -999,68 +980,143 @@ inline void stylus2(const PreparedOp& op, Tile& t, int n) {
         if (!finite || (hi > -reach - grow && lo < length + reach + grow)) candidate[count++] = s;
     }
 
-    for (int i = 0; i < n; ++i) {
-        double px = t.x[i], py = t.y[i];
+    // The newest step at or below k that can move point i where it rests (-1: none), its cursor
+    // in the candidate segments carried from call to call.
+    int cursor[TileSize];
+    auto nextStep = [&](int i, int k) {
+        const double px = t.x[i], py = t.y[i];
         // Beyond 1e150 m0 could overflow: such a point runs every step.
-        const bool exact = std::abs(px) < 1e150 && std::abs(py) < 1e150;
+        if (!(std::abs(px) < 1e150 && std::abs(py) < 1e150)) return k;
         const double margin = 1e-9 * (scale + std::abs(px) + std::abs(py));
-        int k = steps - 1;
-        int c = count - 1;
-        while (true) {
-            // The newest step at or below k that can move the point where it rests.
-            int active = -1;
-            if (!exact || !finite) {
-                active = k;
-            } else {
-                while (c >= 0) {
-                    const int s = candidate[c];
-                    if (first[s] > k) {
-                        --c;
-                        continue;
-                    }
-                    const double m0 = (px - path[s].x) * along[s].x + (py - path[s].y) * along[s].y;
-                    // Moving while |m0 - (tau - cum_s)| < l, tau = (k + 1/2) h.
-                    const double top = (cum[s] + m0 + reach + margin) / step - 0.5;
-                    const double bottom = (cum[s] + m0 - reach - margin) / step - 0.5;
-                    const int last = std::min(k, first[s + 1] - 1);
-                    const int hi = top >= last          ? last
-                                   : top < first[s] - 1 ? first[s] - 2
-                                                        : int(std::floor(top)) + 1;
-                    const int lo = bottom <= first[s]  ? first[s]
-                                   : bottom > last + 1 ? last + 2
-                                                       : int(std::ceil(bottom)) - 1;
-                    if (hi >= lo && hi >= first[s]) {
-                        active = hi;
-                        break;
-                    }
-                    k = first[s] - 1;
-                    --c;
+        int c = cursor[i];
+        while (c >= 0 && k >= 0) {
+            const int s = candidate[c];
+            if (first[s] > k) {
+                --c;
+                continue;
+            }
+            const double m0 = (px - path[s].x) * along[s].x + (py - path[s].y) * along[s].y;
+            // Moving while |m0 - (tau - cum_s)| < l, tau = (k + 1/2) h.
+            const double top = (cum[s] + m0 + reach + margin) / step - 0.5;
+            const double bottom = (cum[s] + m0 - reach - margin) / step - 0.5;
+            const int last = std::min(k, first[s + 1] - 1);
+            const int hi = top >= last ? last : top < first[s] - 1 ? first[s] - 2 : int(std::floor(top)) + 1;
+            const int lo = bottom <= first[s]  ? first[s]
+                           : bottom > last + 1 ? last + 2
+                                               : int(std::ceil(bottom)) - 1;
+            if (hi >= lo && hi >= first[s]) {
+                cursor[i] = c;
+                return hi;
+            }
+            k = first[s] - 1;
+            --c;
+        }
+        cursor[i] = c;
+        return -1;
+    };
+    // The points waiting for each step: a list through `link`, headed in `head`.
+    thread_local std::vector<int> head;
+    head.assign(static_cast<std::size_t>(steps), -1);
+    int link[TileSize];
+    auto wait = [&](int i, int k) {
+        const int at = nextStep(i, k);
+        if (at < 0) return;
+        link[i] = head[static_cast<std::size_t>(at)];
+        head[static_cast<std::size_t>(at)] = i;
+    };
+    for (int i = 0; i < n; ++i) {
+        cursor[i] = count - 1;
+        wait(i, steps - 1);
+    }
+
+    // Each step runs for the points waiting on it together, lane by lane as flow2 does: the
+    // velocity a tine at a time (its arctangents a point at a time, the library's), and the
+    // fixed-point iteration until every lane has settled, a settled lane keeping its value.
+    alignas(64) double px[TileSize], py[TileSize], nextX[TileSize], nextY[TileSize], vx[TileSize],
+        vy[TileSize], ex[TileSize], ey[TileSize], us[TileSize], qs[TileSize], arc[TileSize];
+    alignas(64) std::int64_t alive[TileSize], reached[TileSize];
+    int lane[TileSize];
+    for (int k = steps; k-- > 0;) {
+        int m = 0;
+        for (int i = head[static_cast<std::size_t>(k)]; i >= 0; i = link[i])
+            lane[m++] = i;
+        if (m == 0) continue;
+        const StylusStation& station = stations[k];
+        const double tx = along[station.segment].x, ty = along[station.segment].y, nx = -ty, ny = tx;
+        const double sx = station.s.x, sy = station.s.y, c = station.c;
+        for (int j = 0; j < m; ++j) {
+            px[j] = t.x[lane[j]];
+            py[j] = t.y[lane[j]];
+            alive[j] = 1;
+        }
+        // v at (ex, ey) for the alive lanes (Tools.cpp stylusVelocity, in its order of operations).
+        auto velocity = [&](const double* __restrict qx, const double* __restrict qy)
+            __attribute__((always_inline)) {
+            MARBLER_IVDEP
+            for (int j = 0; j < m; ++j) {
+                vx[j] = 0.0;
+                vy[j] = 0.0;
+            }
+            for (int tine = 0; tine < tines; ++tine) {
+                const double o = offset[tine];
+                std::int64_t any = 0;
+                MARBLER_IVDEP
+                for (int j = 0; j < m; ++j) {
+                    const double rx = (qx[j] - sx) - o * nx, ry = (qy[j] - sy) - o * ny;
+                    const double u = (rx * tx + ry * ty) / reach;
+                    const std::int64_t in = (std::abs(u) < 1.0) & (alive[j] != 0);
+                    us[j] = u;
+                    qs[j] = (rx * nx + ry * ny) / lambda;
+                    reached[j] = in;
+                    any |= in;
+                }
+                if (!any) continue;
+                for (int j = 0; j < m; ++j)
+                    arc[j] = reached[j] ? std::atan(qs[j]) : 0.0;
+                MARBLER_IVDEP
+                for (int j = 0; j < m; ++j) {
+                    const double u = us[j], q = qs[j];
+                    const double w = (1.0 - u * u) * (1.0 - u * u), dw = -4.0 * u * (1.0 - u * u);
+                    const double a = c * w / (1.0 + q * q), b = c * lambda * arc[j] * dw / reach;
+                    const bool in = reached[j] != 0;
+                    vx[j] = in ? vx[j] + (a * tx - b * nx) : vx[j];
+                    vy[j] = in ? vy[j] + (a * ty - b * ny) : vy[j];
                 }
             }
-            if (active < 0) break;
-            k = active;
-            // One step, exactly as stylusStep.
-            const StylusStation& station = stations[k];
-            const double tx = along[station.segment].x, ty = along[station.segment].y;
-            double vx, vy;
-            stylusVelocity2(px, py, station, tx, ty, offset, tines, lambda, reach, vx, vy);
-            double nextX = px + h * vx, nextY = py + h * vy;
-            for (int iteration = 0; iteration < 100; ++iteration) {
-                stylusVelocity2(0.5 * (px + nextX), 0.5 * (py + nextY), station, tx, ty, offset, tines,
-                                lambda, reach, vx, vy);
-                const double againX = px + h * vx, againY = py + h * vy;
-                const double dx = againX - nextX, dy = againY - nextY;
-                const bool settled = std::sqrt(dx * dx + dy * dy) < tolerance;
-                nextX = againX;
-                nextY = againY;
-                if (settled) break;
-            }
-            px = nextX;
-            py = nextY;
-            if (--k < 0) break;
+        };
+        velocity(px, py);
+        MARBLER_IVDEP
+        for (int j = 0; j < m; ++j) {
+            nextX[j] = px[j] + h * vx[j];
+            nextY[j] = py[j] + h * vy[j];
         }
-        t.x[i] = px;
-        t.y[i] = py;
+        std::int64_t left = m;
+        for (int iteration = 0; iteration < 100 && left != 0; ++iteration) {
+            MARBLER_IVDEP
+            for (int j = 0; j < m; ++j) {
+                ex[j] = 0.5 * (px[j] + nextX[j]);
+                ey[j] = 0.5 * (py[j] + nextY[j]);
+            }
+            velocity(ex, ey);
+            left = 0;
+            MARBLER_IVDEP
+            for (int j = 0; j < m; ++j) {
+                const double againX = px[j] + h * vx[j], againY = py[j] + h * vy[j];
+                const double dx = againX - nextX[j], dy = againY - nextY[j];
+                const bool settled = std::sqrt(dx * dx + dy * dy) < tolerance;
+                const bool moving = alive[j] != 0;
+                nextX[j] = moving ? againX : nextX[j];
+                nextY[j] = moving ? againY : nextY[j];
+                const std::int64_t still = moving && !settled;
+                alive[j] = still;
+                left += still;
+            }
+        }
+        for (int j = 0; j < m; ++j) {
+            t.x[lane[j]] = nextX[j];
+            t.y[lane[j]] = nextY[j];
+            if (k > 0) wait(lane[j], k - 1);
+        }
     }
 }
 
