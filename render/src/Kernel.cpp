@@ -48,6 +48,8 @@ namespace {
 /// The variant that ran the last traceTile on this thread: lets the tests see which code a
 /// selection actually runs, for the price of one store per tile.
 thread_local Variant lastVariantRun = Variant::Baseline;
+/// The point-steps the stylus kernel ran on this thread (stylusStepsRunForTest).
+thread_local std::uint64_t stylusStepsRun = 0;
 
 // Cody-Waite split of pi/2 (fdlibm e_rem_pio2.c): the first two parts have 33 significant bits,
 // so q * part is exact for |q| < 2^20, which covers |x| <= SinCosLimit.
@@ -1041,6 +1043,7 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
         for (int i = head[static_cast<std::size_t>(k)]; i >= 0; i = link[i])
             lane[m++] = i;
         if (m == 0) continue;
+        stylusStepsRun += static_cast<std::uint64_t>(m);
         const StylusStation& station = stations[k];
         const double tx = along[station.segment].x, ty = along[station.segment].y, nx = -ty, ny = tx;
         const double sx = station.s.x, sy = station.s.y, c = station.c;
@@ -1514,6 +1517,10 @@ std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension,
 
 Variant lastVariantRunForTest() {
     return lastVariantRun;
+}
+
+std::uint64_t stylusStepsRunForTest() {
+    return stylusStepsRun;
 }
 
 void sinCosForTest(double x, double& s, double& c) {

@@ -354,6 +354,48 @@ TEST_P(KernelVsReference, AStylusLeavesFarAndStrangePointsAsTheReferenceDoes) {
     expectStylusExact(op, points, "far points and one on the path");
 }
 
+TEST(KernelStylus, APointRunsOnlyTheStepsWhileTheStylusIsWithinReach) {
+    // A straight stroke along x: a point runs the steps while |x - S(tau)| < reach (give or take
+    // a step at each end), and none where the stylus never comes abreast of it.
+    Operation stroke = defaultOperation(Tool::Stylus, 2, {500, 500, 0});
+    stroke.path = {{100, 500}, {900, 500}};
+    stroke.pressure.clear();
+    stroke.tines = 1;
+    stroke.alpha = 30;
+    stroke.lambda = 10;
+    stroke.reach = 40;
+    stroke.steps = std::max(minimumStylusSteps(stroke), 800);
+    const PreparedOp op = prepare(stroke, 2);
+    const double h = op.step;
+    const int within = static_cast<int>(std::ceil(2.0 * op.reach / h)) + 3;
+    auto tile = std::make_unique<kernel::Tile>();
+    std::vector<int> colors(kernel::TileSize);
+    auto stepsRun = [&](const std::vector<glm::dvec2>& points) {
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            tile->x[i] = points[i].x;
+            tile->y[i] = points[i].y;
+            tile->id[i] = static_cast<int>(i);
+        }
+        const std::uint64_t before = kernel::stylusStepsRunForTest();
+        kernel::traceTile(&op, 1, 2, *tile, static_cast<int>(points.size()), colors.data(), nullptr, nullptr);
+        return kernel::stylusStepsRunForTest() - before;
+    };
+    // Far behind the start and far beyond the end (along the track): no step at all.
+    EXPECT_EQ(stepsRun({{0, 500}, {-300, 100}, {980, 900}, {2000, 500}}), 0u);
+    // Beside the track (the atan term moves it while the stylus is abreast, but hardly along
+    // it) and on it (dragged along, so the stylus stays within reach longer).
+    for (glm::dvec2 p : {glm::dvec2(500, 500), glm::dvec2(300, 900), glm::dvec2(700, -4000)}) {
+        const std::uint64_t run = stepsRun({p});
+        const bool beside = p.y != 500.0;
+        EXPECT_GT(run, 0u) << p.x << ", " << p.y;
+        EXPECT_LE(run, static_cast<std::uint64_t>(beside ? within : op.steps / 3))
+            << p.x << ", " << p.y << " of " << op.steps;
+        const glm::dvec3 want = inverseMap(op, {p.x, p.y, 0.0});
+        EXPECT_EQ(tile->x[0], want.x);
+        EXPECT_EQ(tile->y[0], want.y);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Variants, KernelVsReference,
                          ::testing::Combine(::testing::ValuesIn(cpuKernelsSupported()),
                                             ::testing::Values(2, 3)),
