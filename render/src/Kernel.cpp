@@ -912,15 +912,17 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
 /// so that a point far from most of a long path does not test every segment.
 [[gnu::always_inline]] inline void stylus2(const PreparedOp& op, Tile& t, int n) {
     const int steps = op.steps;
-    if (steps <= 0 || op.stations.size() != static_cast<std::size_t>(steps) || op.path.size() < 2) {
-        for (int i = 0; i < n; ++i) { // not prepared by prepare(): the reference itself
+    if (steps <= 0 || op.stations.size() != static_cast<std::size_t>(steps) || op.path.size() < 2 ||
+        op.tines < 1 || op.tines > 64) {
+        // Not prepared by prepare(), or more tines than a file may hold: the reference itself.
+        for (int i = 0; i < n; ++i) {
             glm::dvec3 p = inverseMap(op, {t.x[i], t.y[i], 0.0});
             t.x[i] = p.x;
             t.y[i] = p.y;
         }
         return;
     }
-    const int tines = std::clamp(op.tines, 1, 64);
+    const int tines = op.tines;
     double offset[64];
     double widest = 0.0;
     for (int j = 0; j < tines; ++j) {
