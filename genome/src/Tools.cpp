@@ -148,18 +148,24 @@ glm::dvec3 stylus(const PreparedOp& op, const glm::dvec3& p, double sign) {
 
 } // namespace
 
-glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau) {
+StylusStation stylusStation(const PreparedOp& op, double tau) {
     // The segment i with cum_i <= tau < cum_i+1, the last one at tau = L.
     const std::size_t last = op.cum.size() - 2;
     std::size_t i =
         static_cast<std::size_t>(std::upper_bound(op.cum.begin(), op.cum.end(), tau) - op.cum.begin());
     i = std::min(i == 0 ? 0 : i - 1, last);
-    const glm::dvec2 t = op.along[i], n(-t.y, t.x);
+    const glm::dvec2 t = op.along[i];
     const double into = tau - op.cum[i];
-    const glm::dvec2 s = op.path[i] + into * t;
     const double segment = op.cum[i + 1] - op.cum[i];
     const double pressure = op.pressure[i] + (op.pressure[i + 1] - op.pressure[i]) * (into / segment);
-    const double c = op.pull * pressure;
+    return {i, op.path[i] + into * t, op.pull * pressure};
+}
+
+glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau) {
+    const StylusStation station = stylusStation(op, tau);
+    const glm::dvec2 t = op.along[station.segment], n(-t.y, t.x);
+    const glm::dvec2 s = station.s;
+    const double c = station.c;
     glm::dvec2 v(0.0);
     for (int j = 0; j < op.tines; ++j) {
         const double offset = (j - 0.5 * (op.tines - 1)) * op.spacing;
@@ -274,6 +280,15 @@ PreparedOp prepare(const Operation& op, int dimension) {
         p.steps = op.steps;
         p.step = p.length / op.steps;
         p.tolerance = 1e-12 * (p.length + op.reach);
+        // The stations at the steps' times (stylusStep's tau), and each segment's first step.
+        p.stations.reserve(static_cast<std::size_t>(p.steps));
+        for (int i = 0; i < p.steps; ++i)
+            p.stations.push_back(stylusStation(p, i * p.step + 0.5 * p.step));
+        p.firstStep.assign(p.along.size() + 1, p.steps);
+        std::size_t segment = 0;
+        for (int i = 0; i < p.steps; ++i)
+            while (segment <= p.stations[static_cast<std::size_t>(i)].segment)
+                p.firstStep[segment++] = i;
     }
     return p;
 }

@@ -48,6 +48,8 @@ namespace {
 /// The variant that ran the last traceTile on this thread: lets the tests see which code a
 /// selection actually runs, for the price of one store per tile.
 thread_local Variant lastVariantRun = Variant::Baseline;
+/// The point-steps the stylus kernel ran on this thread (stylusStepsRunForTest).
+thread_local std::uint64_t stylusStepsRun = 0;
 
 // Cody-Waite split of pi/2 (fdlibm e_rem_pio2.c): the first two parts have 33 significant bits,
 // so q * part is exact for |q| < 2^20, which covers |x| <= SinCosLimit.
@@ -720,19 +722,6 @@ template <Variant V, int Dim>
 /// binary search of a fixed number of halvings (the same for every point, so the loop stays
 /// branch-free), then x -= s sin(pi tau)^p M. sin^p: p = 1, 2 and 1/2 exactly as pow rounds
 /// them (to the nearest double), any other p through std::pow, a point at a time.
-/// Stylus (Tools.cpp stylus) backward, a first correct version: each point through the scalar
-/// reference's steps, newest first (stylusStep), so the kernel equals the reference exactly.
-/// Points the stylus never comes near take the scalar's path too; skipping them is for later.
-inline void stylus2(const PreparedOp& op, Tile& t, int n) {
-    for (int i = 0; i < n; ++i) {
-        glm::dvec2 p(t.x[i], t.y[i]);
-        for (int step = op.steps; step-- > 0;)
-            p = stylusStep(op, p, step, -1.0);
-        t.x[i] = p.x;
-        t.y[i] = p.y;
-    }
-}
-
 [[gnu::always_inline]] inline void stretch2(const PreparedOp& op, Tile& t, int n) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
@@ -898,6 +887,241 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
         glm::dvec3 q = inverseMap(op, p);
         x[i] = q.x;
         y[i] = q.y;
+    }
+}
+
+// ---- Version 3: the stylus (2D) ------------------------------------------------------------
+
+/// Stylus (Tools.cpp stylus) backward: each point runs the reference's steps (stylusStep),
+/// newest first, but only those that can move it. A step moves a point only while the stylus is
+/// within reach of it along the track (|(P - S(tau_i)) . T| < l; the tines are offset along N,
+/// so this holds for all or none of them); otherwise the velocity at P is exactly zero, the
+/// step's first guess and every iterate are P itself, and the step leaves it bit for bit
+/// unchanged. On a segment m = (P - S(tau)) . T falls linearly with tau, so the steps that can
+/// move a resting point form an interval found in closed form, widened by a margin far above
+/// the rounding of m (and by a step at each end): a step is skipped only where the reference
+/// surely leaves the point alone, and a point jumps from one such interval to the next. The
+/// steps it does run are the reference's to the last bit (same formulas, same order, the
+/// stations S(tau_i), c(tau_i) precomputed by the same code: Tools.cpp stylusStation).
+///
+/// The steps then run for all the points waiting on them at once, in lanes (as flow2 does),
+/// which hides the long chain of divides of one point's iteration behind the others'.
+///
+/// The segments a tile's points can reach are found first, from the box around the points
+/// grown by the farthest any point can travel in the whole stroke (L times the largest speed),
+/// so that a point far from most of a long path does not test every segment.
+[[gnu::always_inline]] inline void stylus2(const PreparedOp& op, Tile& t, int n) {
+    const int steps = op.steps;
+    if (steps <= 0 || op.stations.size() != static_cast<std::size_t>(steps) || op.path.size() < 2 ||
+        op.tines < 1 || op.tines > 64) {
+        // Not prepared by prepare(), or more tines than a file may hold: the reference itself.
+        for (int i = 0; i < n; ++i) {
+            glm::dvec3 p = inverseMap(op, {t.x[i], t.y[i], 0.0});
+            t.x[i] = p.x;
+            t.y[i] = p.y;
+        }
+        return;
+    }
+    const int tines = op.tines;
+    double offset[64];
+    double widest = 0.0;
+    for (int j = 0; j < tines; ++j) {
+        offset[j] = (j - 0.5 * (op.tines - 1)) * op.spacing;
+        widest = std::max(widest, std::abs(offset[j]));
+    }
+    const double h = -op.step, step = op.step, tolerance = op.tolerance, lambda = op.lambda, reach = op.reach;
+    const StylusStation* stations = op.stations.data();
+    const glm::dvec2* along = op.along.data();
+    const glm::dvec2* path = op.path.data();
+    const double* cum = op.cum.data();
+    const int* first = op.firstStep.data();
+    const int segments = static_cast<int>(op.along.size());
+    // The scale of every coordinate the reference's m is made of: its rounding is a few ulps of
+    // this (plus the point's own size); the margin is 1e-9 of it.
+    double farthest = 0.0;
+    for (const glm::dvec2& p : op.path)
+        farthest = std::max(farthest, std::abs(p.x) + std::abs(p.y));
+    const double scale = op.length + reach + widest + farthest;
+    // The fastest any point moves: each tine's |v| <= |c| (1 + lambda (pi / 2) max|w'| / l) with
+    // max|w'| = 8 / (3 sqrt 3); over the stroke a point travels at most L times that.
+    double largestPull = 0.0;
+    for (double p : op.pressure)
+        largestPull = std::max(largestPull, std::abs(op.pull * p));
+    const double travel = 1.01 * op.length * tines * largestPull *
+                          (1.0 + lambda * 1.5707963267948966 * 1.5396007178390021 / reach);
+
+    // The box around the tile's points, and the segments whose reach it can get into.
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    bool finite = true;
+    for (int i = 0; i < n; ++i) {
+        x0 = std::min(x0, t.x[i]);
+        x1 = std::max(x1, t.x[i]);
+        y0 = std::min(y0, t.y[i]);
+        y1 = std::max(y1, t.y[i]);
+        finite = finite && std::abs(t.x[i]) < 1e150 && std::abs(t.y[i]) < 1e150;
+    }
+    const double grow = travel + 1e-9 * (scale + std::abs(x0) + std::abs(x1) + std::abs(y0) + std::abs(y1));
+    x0 -= grow;
+    x1 += grow;
+    y0 -= grow;
+    y1 += grow;
+    int candidates[1024];
+    std::vector<int> manyCandidates;
+    int* candidate = candidates;
+    if (segments > 1024) {
+        manyCandidates.resize(static_cast<std::size_t>(segments));
+        candidate = manyCandidates.data();
+    }
+    int count = 0;
+    for (int s = 0; s < segments; ++s) {
+        if (first[s] >= first[s + 1]) continue; // no step's time lies on it
+        const double tx = along[s].x, ty = along[s].y;
+        // m0 = (P - path_s) . T over the box's corners.
+        const double ax = (x0 - path[s].x) * tx, bx = (x1 - path[s].x) * tx;
+        const double ay = (y0 - path[s].y) * ty, by = (y1 - path[s].y) * ty;
+        const double lo = std::min(ax, bx) + std::min(ay, by), hi = std::max(ax, bx) + std::max(ay, by);
+        const double length = cum[s + 1] - cum[s];
+        if (!finite || (hi > -reach - grow && lo < length + reach + grow)) candidate[count++] = s;
+    }
+
+    // The newest step at or below k that can move point i where it rests (-1: none), its cursor
+    // in the candidate segments carried from call to call.
+    int cursor[TileSize];
+    auto nextStep = [&](int i, int k) {
+        const double px = t.x[i], py = t.y[i];
+        // Beyond 1e150 m0 could overflow: such a point runs every step.
+        if (!(std::abs(px) < 1e150 && std::abs(py) < 1e150)) return k;
+        const double margin = 1e-9 * (scale + std::abs(px) + std::abs(py));
+        int c = cursor[i];
+        while (c >= 0 && k >= 0) {
+            const int s = candidate[c];
+            if (first[s] > k) {
+                --c;
+                continue;
+            }
+            const double m0 = (px - path[s].x) * along[s].x + (py - path[s].y) * along[s].y;
+            // Moving while |m0 - (tau - cum_s)| < l, tau = (k + 1/2) h.
+            const double top = (cum[s] + m0 + reach + margin) / step - 0.5;
+            const double bottom = (cum[s] + m0 - reach - margin) / step - 0.5;
+            const int last = std::min(k, first[s + 1] - 1);
+            const int hi = top >= last ? last : top < first[s] - 1 ? first[s] - 2 : int(std::floor(top)) + 1;
+            const int lo = bottom <= first[s]  ? first[s]
+                           : bottom > last + 1 ? last + 2
+                                               : int(std::ceil(bottom)) - 1;
+            if (hi >= lo && hi >= first[s]) {
+                cursor[i] = c;
+                return hi;
+            }
+            k = first[s] - 1;
+            --c;
+        }
+        cursor[i] = c;
+        return -1;
+    };
+    // The points waiting for each step: a list through `link`, headed in `head`.
+    thread_local std::vector<int> head;
+    head.assign(static_cast<std::size_t>(steps), -1);
+    int link[TileSize];
+    auto wait = [&](int i, int k) {
+        const int at = nextStep(i, k);
+        if (at < 0) return;
+        link[i] = head[static_cast<std::size_t>(at)];
+        head[static_cast<std::size_t>(at)] = i;
+    };
+    for (int i = 0; i < n; ++i) {
+        cursor[i] = count - 1;
+        wait(i, steps - 1);
+    }
+
+    // Each step runs for the points waiting on it together, lane by lane as flow2 does: the
+    // velocity a tine at a time (its arctangents a point at a time, the library's), and the
+    // fixed-point iteration until every lane has settled, a settled lane keeping its value.
+    alignas(64) double px[TileSize], py[TileSize], nextX[TileSize], nextY[TileSize], vx[TileSize],
+        vy[TileSize], ex[TileSize], ey[TileSize], us[TileSize], qs[TileSize], arc[TileSize];
+    alignas(64) std::int64_t alive[TileSize], reached[TileSize];
+    int lane[TileSize];
+    for (int k = steps; k-- > 0;) {
+        int m = 0;
+        for (int i = head[static_cast<std::size_t>(k)]; i >= 0; i = link[i])
+            lane[m++] = i;
+        if (m == 0) continue;
+        stylusStepsRun += static_cast<std::uint64_t>(m);
+        const StylusStation& station = stations[k];
+        const double tx = along[station.segment].x, ty = along[station.segment].y, nx = -ty, ny = tx;
+        const double sx = station.s.x, sy = station.s.y, c = station.c;
+        for (int j = 0; j < m; ++j) {
+            px[j] = t.x[lane[j]];
+            py[j] = t.y[lane[j]];
+            alive[j] = 1;
+        }
+        // v at (ex, ey) for the alive lanes (Tools.cpp stylusVelocity, in its order of operations).
+        auto velocity = [&](const double* __restrict qx, const double* __restrict qy)
+            __attribute__((always_inline)) {
+            MARBLER_IVDEP
+            for (int j = 0; j < m; ++j) {
+                vx[j] = 0.0;
+                vy[j] = 0.0;
+            }
+            for (int tine = 0; tine < tines; ++tine) {
+                const double o = offset[tine];
+                std::int64_t any = 0;
+                MARBLER_IVDEP
+                for (int j = 0; j < m; ++j) {
+                    const double rx = (qx[j] - sx) - o * nx, ry = (qy[j] - sy) - o * ny;
+                    const double u = (rx * tx + ry * ty) / reach;
+                    const std::int64_t in = (std::abs(u) < 1.0) & (alive[j] != 0);
+                    us[j] = u;
+                    qs[j] = (rx * nx + ry * ny) / lambda;
+                    reached[j] = in;
+                    any |= in;
+                }
+                if (!any) continue;
+                for (int j = 0; j < m; ++j)
+                    arc[j] = reached[j] ? std::atan(qs[j]) : 0.0;
+                MARBLER_IVDEP
+                for (int j = 0; j < m; ++j) {
+                    const double u = us[j], q = qs[j];
+                    const double w = (1.0 - u * u) * (1.0 - u * u), dw = -4.0 * u * (1.0 - u * u);
+                    const double a = c * w / (1.0 + q * q), b = c * lambda * arc[j] * dw / reach;
+                    const bool in = reached[j] != 0;
+                    vx[j] = in ? vx[j] + (a * tx - b * nx) : vx[j];
+                    vy[j] = in ? vy[j] + (a * ty - b * ny) : vy[j];
+                }
+            }
+        };
+        velocity(px, py);
+        MARBLER_IVDEP
+        for (int j = 0; j < m; ++j) {
+            nextX[j] = px[j] + h * vx[j];
+            nextY[j] = py[j] + h * vy[j];
+        }
+        std::int64_t left = m;
+        for (int iteration = 0; iteration < 100 && left != 0; ++iteration) {
+            MARBLER_IVDEP
+            for (int j = 0; j < m; ++j) {
+                ex[j] = 0.5 * (px[j] + nextX[j]);
+                ey[j] = 0.5 * (py[j] + nextY[j]);
+            }
+            velocity(ex, ey);
+            left = 0;
+            MARBLER_IVDEP
+            for (int j = 0; j < m; ++j) {
+                const double againX = px[j] + h * vx[j], againY = py[j] + h * vy[j];
+                const double dx = againX - nextX[j], dy = againY - nextY[j];
+                const bool settled = std::sqrt(dx * dx + dy * dy) < tolerance;
+                const bool moving = alive[j] != 0;
+                nextX[j] = moving ? againX : nextX[j];
+                nextY[j] = moving ? againY : nextY[j];
+                const std::int64_t still = moving && !settled;
+                alive[j] = still;
+                left += still;
+            }
+        }
+        for (int j = 0; j < m; ++j) {
+            t.x[lane[j]] = nextX[j];
+            t.y[lane[j]] = nextY[j];
+            if (k > 0) wait(lane[j], k - 1);
+        }
     }
 }
 
@@ -1295,6 +1519,10 @@ std::uint64_t traceTile(const PreparedOp* ops, std::size_t count, int dimension,
 
 Variant lastVariantRunForTest() {
     return lastVariantRun;
+}
+
+std::uint64_t stylusStepsRunForTest() {
+    return stylusStepsRun;
 }
 
 void sinCosForTest(double x, double& s, double& c) {

@@ -98,6 +98,11 @@ void setActiveChoice(const Choice& choice);
 /// The variant that ran the last traceTile on the calling thread.
 Variant lastVariantRunForTest();
 
+/// The point-steps the stylus kernel has run on the calling thread (one point through one
+/// integration step counts one): lets the tests see that it skips the steps that cannot move
+/// a point.
+std::uint64_t stylusStepsRunForTest();
+
 /// sin and cos of x as the kernel computes them (for tests): Cody-Waite reduction by pi/2 and
 /// the fdlibm polynomials, within about 1 ulp of std::sin/std::cos for |x| <= 1e6.
 void sinCosForTest(double x, double& s, double& c);

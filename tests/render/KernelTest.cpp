@@ -6,12 +6,14 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Growth.h"
 #include "marbler/Params.h"
 #include "marbler/Random.h"
 #include "marbler/Tools.h"
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
@@ -234,6 +236,164 @@ TEST_P(KernelVsReference, RandomGenomesGiveTheReferenceColours) {
     }
     // Only a point within an ulp-sized hair of an ink boundary could differ.
     EXPECT_LE(mismatches, 1) << "of " << total;
+}
+
+/// A stylus stroke for the kernel's own tests: a path of `points` points (a zigzag when more
+/// than two), `tines` tines, pressure varying along the path when asked.
+Operation stylusStroke(Pcg32& rng, int points, int tines, bool pressure) {
+    Operation op = defaultOperation(Tool::Stylus, 2, {500, 500, 0});
+    op.path.clear();
+    glm::dvec2 at(rng.uniform(100, 300), rng.uniform(100, 900));
+    for (int i = 0; i < points; ++i) {
+        op.path.push_back(at);
+        at += glm::dvec2(rng.uniform(5, 900.0 / points + 20), rng.uniform(-120, 120));
+    }
+    op.alpha = rng.uniform(-80, 80);
+    op.lambda = rng.uniform(4, 25);
+    op.reach = rng.uniform(20, 90);
+    op.tines = tines;
+    op.spacing = rng.uniform(6, 30);
+    op.pressure.clear();
+    if (pressure)
+        for (int i = 0; i < points; ++i)
+            op.pressure.push_back(i == 0 ? 0.0 : rng.uniform(0, 1));
+    // A wide rake is gentle and short, so that the reference checks it in a moment.
+    if (tines > 8) {
+        op.alpha = rng.uniform(-4, 4);
+        op.path.resize(std::min<std::size_t>(op.path.size(), 4));
+        if (!op.pressure.empty()) op.pressure.resize(op.path.size());
+    }
+    op.steps = minimumStylusSteps(op) + static_cast<int>(rng.below(50));
+    return op;
+}
+
+/// Points where a stylus is hardest to skip: on every path point, at the stylus's reach ahead
+/// of and behind each step's station (where |m| = l, give or take an ulp), beside the track,
+/// and scattered.
+/// As many as the reference (which visits every step of every tine) does in a moment.
+std::vector<glm::dvec2> stylusProbePoints(Pcg32& rng, const PreparedOp& op) {
+    const std::size_t target =
+        std::clamp<std::size_t>(static_cast<std::size_t>(5e6 / (double(op.steps) * op.tines)), 64, 1400);
+    const std::size_t stations = std::max<std::size_t>(4, target / 30);
+    std::vector<glm::dvec2> points(op.path.begin(), op.path.end());
+    for (std::size_t k = 0; k < op.stations.size(); k += 1 + op.stations.size() / stations) {
+        const StylusStation& station = op.stations[k];
+        const glm::dvec2 t = op.along[station.segment], n(-t.y, t.x);
+        for (double side : {0.0, 3.0, -40.0})
+            for (double ahead : {op.reach, -op.reach}) {
+                glm::dvec2 p = station.s + ahead * t + side * n;
+                points.push_back(p);
+                points.push_back({std::nextafter(p.x, 1e9), p.y});
+                points.push_back({std::nextafter(p.x, -1e9), std::nextafter(p.y, -1e9)});
+            }
+    }
+    while (points.size() < target)
+        points.push_back({rng.uniform(-200, 1200), rng.uniform(-200, 1200)});
+    return points;
+}
+
+/// The kernel moves every point of `op` exactly as the reference (inverseMap) does.
+void expectStylusExact(const PreparedOp& op, const std::vector<glm::dvec2>& points, const std::string& what) {
+    auto tile = std::make_unique<kernel::Tile>();
+    std::vector<int> colors(kernel::TileSize);
+    for (std::size_t from = 0; from < points.size(); from += kernel::TileSize) {
+        const int n = static_cast<int>(std::min<std::size_t>(kernel::TileSize, points.size() - from));
+        for (int i = 0; i < n; ++i) {
+            tile->x[i] = points[from + i].x;
+            tile->y[i] = points[from + i].y;
+            tile->z[i] = 0.0;
+            tile->id[i] = i;
+        }
+        kernel::traceTile(&op, 1, 2, *tile, n, colors.data(), nullptr, nullptr);
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec2 p = points[from + i];
+            const glm::dvec3 want = inverseMap(op, {p.x, p.y, 0.0});
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(tile->x[i]), std::bit_cast<std::uint64_t>(want.x))
+                << what << ": point (" << p.x << ", " << p.y << ") x " << tile->x[i] << " vs " << want.x;
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(tile->y[i]), std::bit_cast<std::uint64_t>(want.y))
+                << what << ": point (" << p.x << ", " << p.y << ") y " << tile->y[i] << " vs " << want.y;
+        }
+    }
+}
+
+TEST_P(KernelVsReference, StylusStrokesMoveEveryPointExactlyAsTheReference) {
+    if (dimension() != 2) GTEST_SKIP() << "a stylus is 2D only";
+    Pcg32 rng(300);
+    struct Case {
+        int points, tines;
+        bool pressure;
+    };
+    const Case cases[] = {{2, 1, false},  {2, 4, false}, {3, 1, true},   {2, 7, true},
+                          {40, 1, false}, {60, 3, true}, {12, 64, false}};
+    for (const Case& c : cases) {
+        Operation stroke = stylusStroke(rng, c.points, c.tines, c.pressure);
+        const std::string what = std::to_string(c.points) + " points, " + std::to_string(c.tines) + " tines" +
+                                 (c.pressure ? ", pressure" : "");
+        PreparedOp op = prepare(stroke, 2);
+        expectStylusExact(op, stylusProbePoints(rng, op), what);
+        // Growing: the stroke's first floor(s n) steps, on a path cut between its points.
+        for (double s : {0.13, 0.5, 0.77}) {
+            std::optional<Operation> grown = grownOperation(stroke, 2, s);
+            ASSERT_TRUE(grown);
+            PreparedOp part = prepare(*grown, 2);
+            expectStylusExact(part, stylusProbePoints(rng, part), what + ", grown to " + std::to_string(s));
+        }
+    }
+}
+
+TEST_P(KernelVsReference, AStylusLeavesFarAndStrangePointsAsTheReferenceDoes) {
+    if (dimension() != 2) GTEST_SKIP() << "a stylus is 2D only";
+    Pcg32 rng(301);
+    PreparedOp op = prepare(stylusStroke(rng, 5, 2, true), 2);
+    std::vector<glm::dvec2> points = {{1e12, 500},       {-1e200, 3},    {500, 1e160},
+                                      {INFINITY, 0},     {0, -INFINITY}, {NAN, 500},
+                                      {1e-300, -1e-300}, {-0.0, -0.0},   {op.path[0].x, 1e9}};
+    // Every point of a tile that moves little, and one that holds a far point.
+    expectStylusExact(op, points, "far points");
+    points.push_back(op.path[2]);
+    expectStylusExact(op, points, "far points and one on the path");
+}
+
+TEST(KernelStylus, APointRunsOnlyTheStepsWhileTheStylusIsWithinReach) {
+    // A straight stroke along x: a point runs the steps while |x - S(tau)| < reach (give or take
+    // a step at each end), and none where the stylus never comes abreast of it.
+    Operation stroke = defaultOperation(Tool::Stylus, 2, {500, 500, 0});
+    stroke.path = {{100, 500}, {900, 500}};
+    stroke.pressure.clear();
+    stroke.tines = 1;
+    stroke.alpha = 30;
+    stroke.lambda = 10;
+    stroke.reach = 40;
+    stroke.steps = std::max(minimumStylusSteps(stroke), 800);
+    const PreparedOp op = prepare(stroke, 2);
+    const double h = op.step;
+    const int within = static_cast<int>(std::ceil(2.0 * op.reach / h)) + 3;
+    auto tile = std::make_unique<kernel::Tile>();
+    std::vector<int> colors(kernel::TileSize);
+    auto stepsRun = [&](const std::vector<glm::dvec2>& points) {
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            tile->x[i] = points[i].x;
+            tile->y[i] = points[i].y;
+            tile->id[i] = static_cast<int>(i);
+        }
+        const std::uint64_t before = kernel::stylusStepsRunForTest();
+        kernel::traceTile(&op, 1, 2, *tile, static_cast<int>(points.size()), colors.data(), nullptr, nullptr);
+        return kernel::stylusStepsRunForTest() - before;
+    };
+    // Far behind the start and far beyond the end (along the track): no step at all.
+    EXPECT_EQ(stepsRun({{0, 500}, {-300, 100}, {980, 900}, {2000, 500}}), 0u);
+    // Beside the track (the atan term moves it while the stylus is abreast, but hardly along
+    // it) and on it (dragged along, so the stylus stays within reach longer).
+    for (glm::dvec2 p : {glm::dvec2(500, 500), glm::dvec2(300, 900), glm::dvec2(700, -4000)}) {
+        const std::uint64_t run = stepsRun({p});
+        const bool beside = p.y != 500.0;
+        EXPECT_GT(run, 0u) << p.x << ", " << p.y;
+        EXPECT_LE(run, static_cast<std::uint64_t>(beside ? within : op.steps / 3))
+            << p.x << ", " << p.y << " of " << op.steps;
+        const glm::dvec3 want = inverseMap(op, {p.x, p.y, 0.0});
+        EXPECT_EQ(tile->x[0], want.x);
+        EXPECT_EQ(tile->y[0], want.y);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Variants, KernelVsReference,

@@ -16,6 +16,14 @@
 
 namespace marbler {
 
+/// Where a stylus is at one time tau (genome-format.md, stylus): its segment i, the point S(tau)
+/// and the pull c = 15 alpha p(tau) / (16 l) there.
+struct StylusStation {
+    std::size_t segment = 0;
+    glm::dvec2 s{0.0};
+    double c = 0.0;
+};
+
 /// One tool, ready to apply. 2D tools use x and y and leave z at 0.
 struct PreparedOp {
     Tool tool = Tool::Drop;
@@ -56,6 +64,12 @@ struct PreparedOp {
     double reach = 1.0;            ///< l
     double pull = 0.0;             ///< 15 alpha / (16 l): c at pressure 1
     int tines = 1;                 ///< k
+    /// Where the stylus is at each integration step's time tau_i = i h + h / 2 (stylusStation),
+    /// for renderers that visit the steps of many points.
+    std::vector<StylusStation> stations;
+    /// The first integration step of each segment (the steps whose time lies on it), one more
+    /// entry holding n: segment i runs the steps firstStep[i] to firstStep[i + 1] - 1.
+    std::vector<int> firstStep;
 };
 
 /// Prepares one entry of a genome of the given dimension.
@@ -112,6 +126,10 @@ glm::dvec2 flowVelocity(const PreparedOp& op, double x, double y);
 /// The velocity of a stylus at P at time tau in [0, L] (genome-format.md, stylus): the sum over
 /// its tines of c w(u) / (1 + q^2) T - c lambda atan(q) w'(u) / l N.
 glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau);
+
+/// Where a stylus is at time tau in [0, L]: the segment i with cum_i <= tau < cum_i+1 (the last
+/// one at tau = L), S(tau) and c there, exactly as stylusVelocity computes them.
+StylusStation stylusStation(const PreparedOp& op, double tau);
 
 /// One implicit midpoint step of a stylus, integration step `i` (time i h + h / 2), forward
 /// (`sign` +1: P_i to P_i+1) or backward (-1: P_i+1 to P_i), by fixed-point iteration as the

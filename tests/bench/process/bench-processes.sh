@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Whole-process timings, as a user meets them: start-up of the headless verbs, a 2048x2048
-# drop+comb render against the straightforward per-pixel loop (perpixel_render), and the time
+# drop+comb render against the straightforward per-pixel loop (perpixel_render), ten stylus
+# strokes against ten lines (issue 24), and the time
 # from launching the window to its first population shown sharp. Medians of whole processes
 # (hyperfine), on a quiet machine. Needs hyperfine and xvfb-run (apt-get install hyperfine xvfb).
 #   tests/bench/process/bench-processes.sh [BUILD_DIR]
@@ -35,6 +36,15 @@ time_cmd "perpixel_render (per-pixel scalar loop)" "$PERPIXEL" "$DROPCOMB" "$OUT
 time_cmd "marbler render" "$M" render "$DROPCOMB" -o "$OUT/m.ppm" --width 2048 --quiet
 time_cmd "marbler render, PNG" "$M" render "$DROPCOMB" -o "$OUT/m.png" --width 2048 --quiet
 time_cmd "marbler render flame-comb-vortex, PNG" "$M" render "$EXAMPLE" -o "$OUT/f.png" --width 2048 --quiet
+
+# Issue 24: ten stylus strokes over 200 drops, against the same design with lines. The strokes
+# take tens of seconds on two cores: the median of 3 runs, no warm-up.
+STYLUS=tests/data/bench/stylus-10x200.marble.json
+STYLUS_LINES=tests/data/bench/stylus-as-lines-10x200.marble.json
+echo "== stylus: 200 drops + 10 strokes at 1024x1024, PNG, every core"
+time_cmd "marbler render stylus-as-lines-10x200" "$M" render "$STYLUS_LINES" -o "$OUT/sl.png" --width 1024 --quiet
+hyperfine -N -r 3 --export-json "$OUT/t.json" "$M render $STYLUS -o $OUT/s.png --width 1024 --quiet" >/dev/null 2>&1
+printf '%-44s %s s\n' "marbler render stylus-10x200" "$(median "$OUT/t.json")"
 
 echo "== the window: launch to the first population shown sharp (median of 5)"
 # A fresh home each time: no saved session to resume, no remembered choices.
