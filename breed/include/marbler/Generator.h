@@ -22,7 +22,7 @@ namespace marbler {
 
 /// What `meta.generator` says of a genome made by randomGenome; bump it when the same seed
 /// starts giving a different design.
-inline constexpr const char* GeneratorVersion = "marbler-random-3";
+inline constexpr const char* GeneratorVersion = "marbler-random-4";
 
 /// A complete random genome of dimension 2 or 3 (1000 units a side), with
 /// meta {"name", "seed", "generator"}. Throws InputError for another dimension.
