@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Makes docs/families.png: seed 21 of every pattern family, in the order `marbler random
---families` lists them, in a grid of 240-pixel cells (a solid family as its z = 500 section).
+"""Makes docs/families.png: one design of every pattern family, in the order `marbler random
+--families` lists them (the k-th, from 0, is seed 21 + k, so the palettes differ), in a grid of
+240-pixel cells on cream (a solid family as its z = 500 section).
 
     python3 docs/families-gallery.py build/app/marbler docs/families.png
 
@@ -69,9 +70,9 @@ def main():
     families = [line.split()[:2] for line in listing.splitlines() if line.strip()]
     cells = []
     with tempfile.TemporaryDirectory() as work:
-        for family, kind in families:
+        for k, (family, kind) in enumerate(families):
             genome, image = os.path.join(work, family + ".marble.json"), os.path.join(work, family + ".png")
-            subprocess.run([marbler, "random", "--family", family, "--seed", str(SEED), "-o", genome], check=True)
+            subprocess.run([marbler, "random", "--family", family, "--seed", str(SEED + k), "-o", genome], check=True)
             solid = ["--slice", "z=500"] if kind == "solid" else []
             subprocess.run([marbler, "render", genome, "-o", image, "--width", str(CELL)] + solid, check=True)
             cells.append(read_png(image))
@@ -79,7 +80,7 @@ def main():
     rows_of_cells = (len(cells) + COLUMNS - 1) // COLUMNS
     width = COLUMNS * CELL + (COLUMNS + 1) * GAP
     height = rows_of_cells * CELL + (rows_of_cells + 1) * GAP
-    sheet = [bytearray(b"\xff" * 3 * width) for _ in range(height)]
+    sheet = [bytearray(b"\xf3\xef\xe6" * width) for _ in range(height)]
     for k, (w, h, rows) in enumerate(cells):
         x0, y0 = GAP + (k % COLUMNS) * (CELL + GAP), GAP + (k // COLUMNS) * (CELL + GAP)
         for y in range(min(h, CELL)):
