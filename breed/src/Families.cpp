@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace marbler {
 namespace {
@@ -98,6 +99,28 @@ std::vector<Color> familyPalette(Pcg32& rng, int count, Color& paper) {
         pool.erase(next);
     }
     return inks;
+}
+
+// ---------------------------------------------------------------------------------------
+// Turns without the C library (sines are not required to be correctly rounded, and a seed must
+// give the same design everywhere): Taylor series in basic operations.
+
+constexpr double FamilyTwoPi = 6.283185307179586;
+
+/// (cos, sin) of `turns` whole turns.
+glm::dvec2 cosSinOfTurns(double turns) {
+    const double x = FamilyTwoPi * (turns - std::floor(turns + 0.5)); // in [-pi, pi]
+    double c = 0.0, s = 0.0, term = 1.0;
+    for (int k = 0; k < 40; ++k) {
+        (k % 2 ? s : c) += ((k / 2) % 2 ? -term : term);
+        term *= x / (k + 1);
+    }
+    return {c, s};
+}
+
+/// A unit vector at `angle` degrees (the genome's convention: (cos a, sin a)).
+glm::dvec2 unitAt(double angle) {
+    return cosSinOfTurns(angle / 360.0);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -219,6 +242,62 @@ struct Bath {
         }
     }
 
+    /// A stylus (one tine) or a rake drawn along `path`, with the fewest steps the format allows
+    /// (a render stays as quick as the stroke allows). `pressure`: one value a path point, or
+    /// none (the pen pressed fully all along).
+    void stylus(const std::vector<glm::dvec2>& path, double alpha, double lambda, double reach, int tines = 1,
+                double spacing = 0.0, const std::vector<double>& pressure = {}) {
+        Operation op = defaultOperation(Tool::Stylus, 2, glm::dvec3(0.0)); // a file gives a stylus no centre
+        op.path.clear();
+        op.pressure.clear();
+        for (std::size_t i = 0; i < path.size(); ++i) {
+            const glm::dvec2 p{tenth(path[i].x), tenth(path[i].y)};
+            if (!op.path.empty() && p == op.path.back()) continue;
+            op.path.push_back(p);
+            if (!pressure.empty()) op.pressure.push_back(std::round(pressure[i] * 100.0) / 100.0);
+        }
+        if (op.path.size() < 2) return;
+        op.alpha = tenth(alpha);
+        op.lambda = tenth(std::max(1.0, lambda));
+        op.reach = tenth(std::max(1.0, reach));
+        op.tines = tines;
+        if (tines > 1) op.spacing = tenth(spacing);
+        op.steps = minimumStylusSteps(op);
+        if (op.steps > MaxStylusSteps) return; // never with the recipes' ranges
+        g.operations.push_back(op);
+    }
+
+    /// A serpentine path: from `from` along the unit `along`, `length` long, swinging
+    /// `amplitude` to each side every `wavelength`, starting `phase` turns into a swing; twelve
+    /// points a wavelength, so the polyline reads as a curve.
+    static std::vector<glm::dvec2> serpentine(glm::dvec2 from, glm::dvec2 along, double length,
+                                              double amplitude, double wavelength, double phase) {
+        const glm::dvec2 side(-along.y, along.x);
+        const int count = std::max(2, static_cast<int>(std::ceil(12.0 * length / wavelength)) + 1);
+        std::vector<glm::dvec2> path;
+        for (int i = 0; i < count; ++i) {
+            const double t = length * i / (count - 1);
+            path.push_back(from + t * along + amplitude * cosSinOfTurns(t / wavelength + phase).y * side);
+        }
+        return path;
+    }
+
+    /// Ringed drops at `at`: `count` drops one in another, the inks `a` and `b` alternating,
+    /// the outermost ring `outer` in radius.
+    void ringedDrop(const glm::dvec3& at, int count, double outer, int a, int b) {
+        rings(at, count, outer / std::sqrt(2.0 * count - 1.0), a, b);
+    }
+
+    /// Two different inks for a flower: a ground ink is avoided where the palette allows.
+    std::pair<int, int> twoInks(int avoid) {
+        const int n = inks();
+        int a = static_cast<int>(rng.below(static_cast<std::uint32_t>(n)));
+        if (n > 2 && a == avoid) a = (a + 1) % n;
+        int c = (a + 1 + static_cast<int>(rng.below(static_cast<std::uint32_t>(std::max(1, n - 1))))) % n;
+        if (n > 2 && c == avoid) c = (c + 1) % n == a ? (c + 2) % n : (c + 1) % n;
+        return {a, c};
+    }
+
     /// One of the bath's two axes, as a marbler turns the tray: 0 (along x) or 90 (along y).
     double axis() { return rng.chance(0.5) ? 0.0 : 90.0; }
 
@@ -286,13 +365,21 @@ void chevron(Bath& b) {
     b.comb(along + 90.0, b.pick(140, 260), b.pick(120, 220), b.pick(20, 45));
 }
 
-/// The nonpareil: a gel-git, then a fine comb drawn across it. Returns the fine comb's angle.
+/// The nonpareil's ground: many small stones of every ink laid evenly, which the gel-git draws
+/// into fine stripes.
+void fineStone(Bath& b) {
+    b.stone(b.pick(40, 50), 0.92, b.ground.between(110, 130), 1.05);
+}
+
+/// The nonpareil: a coarse gel-git that draws the stones into fine stripes, then the nonpareil
+/// comb drawn once across them, its teeth close but wide enough apart that each stripe is
+/// pulled into a row of small, regular points. Returns the fine comb's angle.
 double nonpareil(Bath& b) {
-    stone(b);
+    fineStone(b);
     double along = b.axis();
-    b.gelGit(along, b.pick(45, 90), b.pick(50, 90), b.pick(8, 18));
+    b.gelGit(along, b.pick(60, 80), b.pick(150, 220), b.pick(12, 16));
     double across = along + 90.0;
-    b.comb(across, b.pick(10, 22), b.pick(25, 50), b.pick(4, 9));
+    b.comb(across, b.pick(34, 40), b.pick(30, 45), b.pick(4, 5));
     return across;
 }
 
@@ -300,17 +387,52 @@ void nonpareilOnly(Bath& b) {
     nonpareil(b);
 }
 
+/// A rake with tines `spacing` apart across the whole bath, drawn along `angle` in a
+/// serpentine swinging `amplitude` to each side every `wavelength`, from beyond one edge to
+/// beyond the other; `offset` shifts the tines by that share of the spacing, `phase` the swing.
+void serpentineRake(Bath& b, double angle, double spacing, double amplitude, double wavelength, double alpha,
+                    double lambda, double reach, double offset = 0.0, double phase = 0.0) {
+    const glm::dvec2 along = unitAt(angle), side(-along.y, along.x);
+    const glm::dvec2 centre(0.5 * b.g.size.x, 0.5 * b.g.size.y);
+    const double across = std::abs(side.x) * b.g.size.x + std::abs(side.y) * b.g.size.y;
+    const double lengthWay = std::abs(along.x) * b.g.size.x + std::abs(along.y) * b.g.size.y;
+    const int tines =
+        std::min(MaxTines, static_cast<int>(std::ceil((across + 2.0 * amplitude) / spacing)) + 1);
+    const glm::dvec2 from = centre - (0.5 * lengthWay + reach) * along + offset * spacing * side;
+    b.stylus(Bath::serpentine(from, along, lengthWay + 2.0 * reach, amplitude, wavelength, phase), alpha,
+             lambda, reach, tines, spacing);
+}
+
+/// The bouquet rake: tines three rows of points apart, a gentle swing, a narrow pull. Across a
+/// rake of many tines the stylus's sideways flow adds up (the spec's stream function keeps its
+/// full strength to the side), so the pull times its sharpness stays small and the curve
+/// gentle: else the whole bath is swept about and the nonpareil is lost.
+struct BouquetRake {
+    double spacing, amplitude, wavelength, alpha, lambda, reach;
+};
+BouquetRake bouquetRake(Bath& b) {
+    const double spacing = b.pick(100, 120);
+    return {spacing,          tenth(spacing * b.rng.uniform(0.25, 0.3)),
+            b.pick(180, 240), b.pick(30, 40),
+            b.pick(3, 4),     80.0};
+}
+
 void bouquet(Bath& b) {
-    double across = nonpareil(b);
-    // The fine comb's lines drawn into a serpentine: the bouquet's sprays.
-    b.wave(across, b.pick(20, 50), b.pick(90, 220));
+    const double across = nonpareil(b);
+    // The bouquet rake drawn through the nonpareil the fine comb's way in a serpentine: each
+    // tine swings the rows of points to one side and the other, and draws them into fans.
+    const BouquetRake r = bouquetRake(b);
+    serpentineRake(b, across, r.spacing, r.amplitude, r.wavelength, r.alpha, r.lambda, r.reach);
 }
 
 void peacock(Bath& b) {
-    double across = nonpareil(b);
-    // A second comb back the other way, wider and between the first's teeth: the eyes.
-    b.comb(across + 180.0, b.pick(40, 80), b.pick(35, 70), b.pick(6, 14), 0.5);
-    if (b.rng.chance(0.5)) b.wave(across, b.pick(10, 30), b.pick(120, 260));
+    const double across = nonpareil(b);
+    // The bouquet's serpentine rake, then the same rake drawn back with its tines between the
+    // first's and its swing the other way: each fan is closed into the round "eye" of a feather.
+    const BouquetRake r = bouquetRake(b);
+    serpentineRake(b, across, r.spacing, r.amplitude, r.wavelength, r.alpha, r.lambda, r.reach);
+    serpentineRake(b, across + 180.0, r.spacing, r.amplitude, r.wavelength, r.alpha, r.lambda, r.reach, 0.5,
+                   0.5);
 }
 
 void frenchCurl(Bath& b) {
@@ -417,6 +539,106 @@ void firstPaper(Bath& b) {
     b.wave(90.0, b.pick(20, 50), b.pick(150, 350)); // then a wave
 }
 
+// Drawn with the stylus (format version 3): çiçekli ebru.
+
+/// A light battal ground under the flowers: a stone of middling drops over the whole tray.
+void flowerGround(Bath& b) {
+    b.stone(b.pick(75, 100), b.rng.uniform(0.75, 0.85), b.ground.between(34, 44), 1.25);
+}
+
+/// Ringed drops in `rows` rows of `perRow` along one of the tray's axes, each `outer` in
+/// radius with `count` rings of two inks; returns the centres, row by row, where the drops laid
+/// after each have carried it (a stroke through a drop goes through its middle as it now lies).
+std::vector<std::vector<glm::dvec2>> flowerRows(Bath& b, double along, int rows, int perRow, double outer,
+                                                int count, bool stagger) {
+    const glm::dvec2 m = unitAt(along), n(-m.y, m.x);
+    const double lengthWay = std::abs(m.x) * b.g.size.x + std::abs(m.y) * b.g.size.y;
+    const double across = std::abs(n.x) * b.g.size.x + std::abs(n.y) * b.g.size.y;
+    const glm::dvec2 centre(0.5 * b.g.size.x, 0.5 * b.g.size.y);
+    std::vector<std::vector<glm::dvec2>> centres;
+    std::vector<std::size_t> laidAfter; // the drops laid before each centre's last ring, and it
+    for (int r = 0; r < rows; ++r) {
+        centres.emplace_back();
+        const double shiftAlong = stagger && (r % 2) ? 0.5 : 0.0;
+        for (int i = 0; i < perRow; ++i) {
+            const double u = ((i + 0.5 + shiftAlong) / perRow - 0.5) * lengthWay;
+            const double v = ((r + 0.5) / rows - 0.5) * across;
+            const glm::dvec2 at = centre + u * m + v * n;
+            const glm::dvec3 at3{tenth(at.x), tenth(at.y), 0.0};
+            const auto [a, c] = b.twoInks(0);
+            b.ringedDrop(at3, count, outer, a, c);
+            centres.back().push_back({at3.x, at3.y});
+            laidAfter.push_back(b.g.initial.size());
+        }
+    }
+    const std::vector<PreparedOp> laid = prepare(b.g);
+    std::size_t k = 0;
+    for (auto& row : centres)
+        for (glm::dvec2& at : row) {
+            glm::dvec3 p{at.x, at.y, 0.0};
+            for (std::size_t j = laidAfter[k++]; j < laid.size(); ++j)
+                p = forwardMap(laid[j], p);
+            at = {tenth(p.x), tenth(p.y)};
+        }
+    return centres;
+}
+
+void hearts(Bath& b) {
+    // Ebru hearts: rows of ringed drops, then one stroke of the stylus drawn through the
+    // centres of each row, which pulls every drop into a heart pointing the way it went.
+    flowerGround(b);
+    const double along = b.axis();
+    const int rows = b.rng.between(2, 4), perRow = b.rng.between(4, 6);
+    const double cell = std::min(1000.0 / perRow, 1000.0 / rows);
+    const double outer = b.pick(0.3, 0.38) * cell;
+    const auto centres = flowerRows(b, along, rows, perRow, outer, b.rng.between(2, 3), false);
+    const glm::dvec2 m = unitAt(along);
+    const double alpha = outer * b.rng.uniform(0.9, 1.2), reach = outer * b.rng.uniform(0.6, 0.8);
+    const double lambda = outer * b.rng.uniform(0.12, 0.18);
+    for (const auto& row : centres) {
+        // From beyond the first drop, through every middle, to beyond the last.
+        std::vector<glm::dvec2> path{row.front() - (outer + reach) * m};
+        path.insert(path.end(), row.begin(), row.end());
+        path.push_back(row.back() + (outer + reach) * m);
+        b.stylus(path, alpha, lambda, reach);
+    }
+}
+
+void tulip(Bath& b) {
+    // Lale: ringed drops, each pulled into a cup by a short stroke drawn up through it from
+    // below; the pen is lifted as it leaves the drop, so the cup closes in a point.
+    flowerGround(b);
+    const int rows = b.rng.between(2, 3), perRow = b.rng.between(3, 4);
+    const double cell = std::min(1000.0 / perRow, 1000.0 / rows);
+    const double outer = b.pick(0.28, 0.34) * cell;
+    const auto centres = flowerRows(b, 0.0, rows, perRow, outer, b.rng.between(3, 4), true);
+    const double alpha = outer * b.rng.uniform(0.9, 1.2), reach = outer * b.rng.uniform(0.5, 0.7);
+    const double lambda = outer * b.rng.uniform(0.12, 0.2);
+    for (const auto& row : centres)
+        for (glm::dvec2 at : row)
+            b.stylus({at + glm::dvec2(0.0, 1.4 * outer), at, at - glm::dvec2(0.0, 0.9 * outer)}, alpha,
+                     lambda, reach, 1, 0.0, {1.0, 1.0, 0.3});
+}
+
+void carnation(Bath& b) {
+    // Karanfil: ringed drops, each fringed by short strokes from its middle out across its
+    // edge, evenly round it: every stroke pulls the rings out into a petal's jagged tip.
+    flowerGround(b);
+    const int rows = b.rng.between(2, 3), perRow = b.rng.between(2, 3);
+    const double cell = std::min(1000.0 / perRow, 1000.0 / rows);
+    const double outer = b.pick(0.3, 0.36) * cell;
+    const auto centres = flowerRows(b, 0.0, rows, perRow, outer, b.rng.between(3, 4), true);
+    const int petals = b.rng.between(7, 11);
+    const double alpha = outer * b.rng.uniform(0.35, 0.5), reach = outer * b.rng.uniform(0.25, 0.35);
+    const double lambda = outer * b.rng.uniform(0.06, 0.1), turn = b.rng.uniform(0.0, 1.0);
+    for (const auto& row : centres)
+        for (glm::dvec2 at : row)
+            for (int k = 0; k < petals; ++k) {
+                const glm::dvec2 out = cosSinOfTurns(turn + double(k) / petals);
+                b.stylus({at + 0.35 * outer * out, at + 1.25 * outer * out}, alpha, lambda, reach);
+            }
+}
+
 // Solid families.
 
 void veined(Bath& b) {
@@ -463,13 +685,13 @@ struct Recipe {
     void (*make)(Bath&);
 };
 
-constexpr std::array<Recipe, 16> Recipes{{
+constexpr std::array<Recipe, 19> Recipes{{
     {{"stone", 2, "battal: drops only, big first, later colours smaller"}, 3, 5, stone},
     {{"gel-git", 2, "stone combed one way and back (come and go)"}, 3, 4, gelGit},
     {{"chevron", 2, "gel-git, then one wide comb across: rows of chevrons"}, 3, 4, chevron},
-    {{"nonpareil", 2, "gel-git, then a fine comb across"}, 3, 5, nonpareilOnly},
-    {{"bouquet", 2, "nonpareil drawn into a serpentine wave"}, 3, 5, bouquet},
-    {{"peacock", 2, "nonpareil, then a wider comb back between its teeth"}, 3, 5, peacock},
+    {{"nonpareil", 2, "gel-git, then a fine comb across: rows of small points"}, 3, 5, nonpareilOnly},
+    {{"bouquet", 2, "nonpareil, then a rake in a serpentine: rows of fans"}, 3, 5, bouquet},
+    {{"peacock", 2, "bouquet, then the rake back between: rows of eyes"}, 3, 5, peacock},
     {{"french-curl", 2, "curls on a grid over a nonpareil or gel-git"}, 3, 4, frenchCurl},
     {{"spanish-wave", 2, "stone rocked into bands (a stretch pass)"}, 3, 4, spanishWave},
     {{"birds-nest", 2, "bülbül yuvası: a small curl in each drop"}, 2, 4, birdsNest},
@@ -477,6 +699,9 @@ constexpr std::array<Recipe, 16> Recipes{{
     {{"tiger-eye", 2, "stone sprinkled with small bright spots"}, 3, 4, tigerEye},
     {{"zebra", 2, "bull's-eyes of two inks combed into stripes"}, 2, 3, zebra},
     {{"first-paper", 2, "stone, combs both ways across and down, a wave (Lu et al. 2012)"}, 3, 5, firstPaper},
+    {{"hearts", 2, "ebru hearts: rows of ringed drops, a stylus drawn through each row"}, 3, 5, hearts},
+    {{"tulip", 2, "lale: ringed drops pulled into cups by a short stroke each"}, 3, 5, tulip},
+    {{"carnation", 2, "karanfil: ringed drops fringed by short strokes round the edge"}, 3, 5, carnation},
     {{"veined", 3, "solid: spheres of ink drawn into veins by combs"}, 2, 4, veined},
     {{"agate", 3, "solid: columns of banded ink, waved"}, 3, 5, agate},
     {{"granite", 3, "solid: speckles over close-packed grains"}, 3, 5, granite},

@@ -20,6 +20,7 @@ constexpr std::uint64_t InitialStream = 0x696e697469616c31ULL;
 constexpr std::uint64_t StrokeStream = 0x7374726f6b657331ULL;
 constexpr std::uint64_t NameStream = 0x6e616d6573313131ULL;
 constexpr std::uint64_t Version2Stream = 0x76657273696f6e32ULL;
+constexpr std::uint64_t Version3Stream = 0x76657273696f6e33ULL;
 
 constexpr double Pi = 3.141592653589793;
 constexpr double SqrtHalf = 0.7071067811865476;
@@ -395,6 +396,47 @@ void addVersion2Touches(Pcg32& rng, Genome& g) {
     if (rng.chance(0.3)) g.bleed = tenth(rng.uniform(0.5, 3.0));
 }
 
+/// Version 3's touch on a 2D design, from its own stream so that everything else a seed drew
+/// stays: now and then a free-hand stroke, a stylus (or a small rake) drawn along a wandering
+/// path of a few points across part of the design, with the fewest steps the format allows so
+/// it stays quick to render. A design without one is still what version 2 made of it.
+void addVersion3Touches(Pcg32& rng, Genome& g) {
+    if (!rng.chance(0.15)) return;
+    StrokeMaker make{rng, 2, g.size, std::max(g.size.x, g.size.y), {}};
+    Operation op = defaultOperation(Tool::Stylus, 2, glm::dvec3(0.0)); // a file gives a stylus no centre
+    // A hand's path: from somewhere in the design, heading one way and turning a little at
+    // each of its points.
+    const glm::dvec3 start = uniformPoint(rng, g.size, 2, 0.1, 0.9);
+    glm::dvec2 at(start.x, start.y), heading(randomUnit(rng, 2));
+    const int points = rng.between(3, 9);
+    const double segment = make.len(60, 160);
+    op.path = {{tenth(at.x), tenth(at.y)}};
+    for (int i = 1; i < points; ++i) {
+        const glm::dvec2 turn(randomUnit(rng, 2));
+        heading = glm::normalize(heading + 0.6 * turn);
+        at += segment * rng.uniform(0.6, 1.0) * heading;
+        const glm::dvec2 p{tenth(at.x), tenth(at.y)};
+        if (p != op.path.back()) op.path.push_back(p);
+    }
+    if (op.path.size() < 2) return;
+    op.alpha = make.signedLen(20, 90);
+    op.lambda = make.len(6, 20);
+    op.reach = make.len(30, 80);
+    if (rng.chance(0.3)) {
+        op.tines = rng.between(2, 6);
+        op.spacing = make.len(15, 50);
+    }
+    // A gentler pull where the stroke would take many steps (a strong rake on a long path).
+    while (minimumStylusSteps(op) > 3000 && std::abs(op.alpha) > 1.0)
+        op.alpha = tenth(0.7 * op.alpha);
+    op.steps = minimumStylusSteps(op);
+    if (op.steps > MaxStylusSteps) return;
+    // Most often last, a final flourish; sometimes before the last stroke.
+    auto where = g.operations.end();
+    if (rng.chance(0.3) && !g.operations.empty() && g.operations.back().tool != Tool::Stretch) --where;
+    g.operations.insert(where, op);
+}
+
 } // namespace
 
 std::string colorWord(Color color) {
@@ -674,6 +716,8 @@ Genome randomGenome(std::uint64_t seed, int dimension) {
     if (dimension == 2) {
         Pcg32 version2Rng(seed, Version2Stream);
         addVersion2Touches(version2Rng, g);
+        Pcg32 version3Rng(seed, Version3Stream);
+        addVersion3Touches(version3Rng, g);
     }
     g.meta = Meta{};
     g.meta.name = randomName(seed, g);

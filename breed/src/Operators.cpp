@@ -59,6 +59,30 @@ double keepInRange(const ParamRange& range, double v, double margin) {
     return v;
 }
 
+/// Moves a stylus's path as a hand would draw it again: the whole stroke shifted by about
+/// `scale` design units, each point a quarter of that on its own, and now and then (more at a
+/// higher strength) smoothed, each inner point drawn towards its neighbours. Consecutive points
+/// stay different (a point that lands on the one before it is dropped, with its pressure).
+void alterPath(Operation& op, double scale, double strength, Pcg32& rng) {
+    const glm::dvec2 shift(rng.normal() * scale, rng.normal() * scale);
+    for (glm::dvec2& p : op.path)
+        p += shift + glm::dvec2(rng.normal(), rng.normal()) * (0.25 * scale);
+    if (op.path.size() > 2 && rng.chance(0.5 * strength)) {
+        std::vector<glm::dvec2> smoothed = op.path;
+        for (std::size_t i = 1; i + 1 < op.path.size(); ++i)
+            smoothed[i] = 0.25 * op.path[i - 1] + 0.5 * op.path[i] + 0.25 * op.path[i + 1];
+        op.path = std::move(smoothed);
+    }
+    for (std::size_t i = 1; i < op.path.size();) {
+        if (op.path[i] != op.path[i - 1]) {
+            ++i;
+            continue;
+        }
+        op.path.erase(op.path.begin() + static_cast<std::ptrdiff_t>(i));
+        if (i < op.pressure.size()) op.pressure.erase(op.pressure.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+}
+
 /// Perturbs every numeric parameter of one entry by its table's mutation scale. The tool,
 /// the 3D wave's shape, a flow's field and ink colours stay: they are the "sequence of tools",
 /// not its parameters. An optional version-2 parameter at its default (a swirl's core of 0)
@@ -150,11 +174,17 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool r
             }
             break;
         }
-        case ParamKind::Count: // a flow's steps follow its speed, time and size, below
+        case ParamKind::Path:
+            alterPath(op, spec.mutationScale * strength * side * (relative ? 0.5 : 1.0), strength, rng);
+            break;
+        case ParamKind::Pressure:
+            // A pen's pressure (only where the stroke has one: one at the default stays so).
+            for (double& p : op.pressure)
+                p = reflectInto(p + rng.normal() * 0.1 * strength, 0.0, 1.0);
+            break;
+        case ParamKind::Count: // a flow's and a stylus's steps follow their other values, below
         case ParamKind::Color:
         case ParamKind::Choice:
-        case ParamKind::Path: // a stylus's path and pressure are kept (phase 1 of issue 24)
-        case ParamKind::Pressure:
             break;
         }
     }
@@ -169,15 +199,22 @@ void perturb(Operation& op, const Genome& g, double strength, Pcg32& rng, bool r
         op.steps = std::max(op.steps, minimumFlowSteps(op));
     }
     if (op.tool == Tool::Stylus) {
-        // Enough steps for the new pull, sharpness and reach; a draw that would need more than
-        // the format allows keeps the old ones.
-        if (minimumStylusSteps(op) > MaxStylusSteps) {
+        // Enough steps for the new pull, sharpness, reach and path; a draw that would need more
+        // than the format allows keeps the old ones.
+        if (op.path.size() < 2 || minimumStylusSteps(op) > MaxStylusSteps) {
             op.alpha = original.alpha;
             op.lambda = original.lambda;
             op.reach = original.reach;
             op.spacing = original.spacing;
+            op.path = original.path;
+            op.pressure = original.pressure;
         }
-        op.steps = std::max(op.steps, minimumStylusSteps(op));
+        // Re-timed now and then: more steps than the fewest (a finer integration of the same
+        // stroke), drawn near the fewest so a render stays quick; else as many as before.
+        const int least = minimumStylusSteps(op);
+        if (rng.chance(0.5 * strength))
+            op.steps = least + static_cast<int>(std::abs(rng.normal()) * 0.25 * strength * least);
+        op.steps = std::clamp(op.steps, least, MaxStylusSteps);
     }
     if (hasFrame) {
         // Keep direction and normal a valid frame: the normal loses its part along the

@@ -61,7 +61,7 @@ TEST(Generator, SameSeedGivesIdenticalText) {
 // Committed outputs pin the generator across compilers, libraries and machines (and catch an
 // unintended change: a deliberate one regenerates them and bumps GeneratorVersion): seed 7 in
 // both dimensions, and flat seeds with version 2's touches (12: stretch passes and cored
-// swirls; 38: stretch passes and bleed; 55: a flow).
+// swirls; 38: stretch passes and bleed; 55: a flow, and version 3's free-hand stroke).
 TEST(Generator, MatchesTheCommittedDesigns) {
     struct Pinned {
         int dimension;
@@ -69,7 +69,7 @@ TEST(Generator, MatchesTheCommittedDesigns) {
         int version;
     };
     for (const Pinned& pinned :
-         {Pinned{2, 7, 1}, Pinned{3, 7, 1}, Pinned{2, 12, 2}, Pinned{2, 38, 2}, Pinned{2, 55, 2}}) {
+         {Pinned{2, 7, 1}, Pinned{3, 7, 1}, Pinned{2, 12, 2}, Pinned{2, 38, 2}, Pinned{2, 55, 3}}) {
         std::filesystem::path file = test::dataDir() / "breeding" /
                                      ("random-" + std::to_string(pinned.dimension) + "d-seed-" +
                                       std::to_string(pinned.seed) + ".marble.json");
@@ -297,6 +297,37 @@ TEST(Generator, FlatDesignsSometimesHaveVersionTwosTouches) {
     EXPECT_GT(teeth.size(), 0.9 * 2 * stretched) << "the passes' teeth differ from design to design";
     for (std::uint64_t seed = 0; seed < 60; ++seed)
         EXPECT_EQ(requiredVersion(randomGenome(seed, 3)), 1) << seed;
+}
+
+TEST(Generator, FlatDesignsSometimesHaveAFreeHandStroke) {
+    // Out of 400 flat seeds about one in seven has a stylus stroke (version 3), a single stylus
+    // or now and then a small rake, along a path of a few points, with the fewest steps the
+    // format allows; solid designs have none.
+    const int seeds = 400;
+    int stroked = 0, rakes = 0;
+    for (int s = 0; s < seeds; ++s) {
+        const Genome g = randomGenome(static_cast<std::uint64_t>(s), 2);
+        SCOPED_TRACE("seed " + std::to_string(s));
+        const int strokes = countTool(g.operations, Tool::Stylus);
+        if (strokes == 0) continue;
+        ++stroked;
+        EXPECT_EQ(strokes, 1);
+        ASSERT_NO_THROW(validateGenome(g, "random"));
+        EXPECT_EQ(requiredVersion(g), 3);
+        for (const Operation& op : g.operations) {
+            if (op.tool != Tool::Stylus) continue;
+            EXPECT_GE(op.path.size(), 2u);
+            EXPECT_EQ(op.steps, minimumStylusSteps(op));
+            EXPECT_LE(op.steps, 3000) << "quick to render";
+            rakes += op.tines > 1;
+        }
+    }
+    EXPECT_GE(stroked, 0.08 * seeds);
+    EXPECT_LE(stroked, 0.22 * seeds);
+    EXPECT_GT(rakes, 0.1 * stroked);
+    EXPECT_LT(rakes, 0.5 * stroked);
+    for (std::uint64_t seed = 0; seed < 60; ++seed)
+        EXPECT_EQ(countTool(randomGenome(seed, 3).operations, Tool::Stylus), 0) << seed;
 }
 
 TEST(Generator, RejectsOtherDimensions) {

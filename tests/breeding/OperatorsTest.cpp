@@ -283,6 +283,7 @@ TEST_P(Operators, AlterKeepsEveryParameterOfEveryToolInItsTablesRange) {
 /// vortex and a bleed.
 Genome versionTwoDesign(std::uint64_t seed) {
     Genome g = randomGenome(seed, 2);
+    std::erase_if(g.operations, [](const Operation& op) { return op.tool == Tool::Stylus; }); // version 3
     Operation stretch = defaultOperation(Tool::Stretch, 2, {500, 500, 0});
     stretch.shift = -35.0;
     stretch.power = 1.5;
@@ -396,6 +397,9 @@ TEST(OperatorsVersionTwo, RecombineAndSwapCarryWholeStrokes) {
 
 TEST_P(Operators, AlterKeepsPositiveParametersPositiveEvenWhenTheyAreTiny) {
     Genome p = parent(4);
+    // A stylus this sharp would need more steps than the format allows (its steps follow its
+    // numbers): it has tests of its own (OperatorsStylus).
+    std::erase_if(p.operations, [](const Operation& op) { return op.tool == Tool::Stylus; });
     for (Operation& op : p.operations) {
         op.lambda = 0.01;
         op.spacing = 0.01;
@@ -637,6 +641,130 @@ INSTANTIATE_TEST_SUITE_P(Dimensions, Operators, ::testing::Values(2, 3),
                          [](const ::testing::TestParamInfo<int>& info) {
                              return std::to_string(info.param) + "D";
                          });
+
+/// A flat design with a stylus stroke along a curve with a pen's pressure, and a rake.
+Genome stylusDesign(std::uint64_t seed) {
+    Genome g = versionOneDesign(seed);
+    Operation stroke = defaultOperation(Tool::Stylus, 2, {0, 0, 0}); // no centre, as read from a file
+    stroke.path = {{100, 200}, {250, 260}, {400, 240}, {520, 380}, {700, 420}};
+    stroke.pressure = {0.4, 0.8, 1.0, 0.9, 0.5};
+    stroke.alpha = 60.0;
+    stroke.lambda = 12.0;
+    stroke.reach = 50.0;
+    stroke.steps = minimumStylusSteps(stroke);
+    Operation rake = defaultOperation(Tool::Stylus, 2, {0, 0, 0});
+    rake.path = {{0, 700}, {300, 650}, {600, 750}, {1000, 700}};
+    rake.tines = 4;
+    rake.spacing = 60.0;
+    rake.alpha = 30.0;
+    rake.reach = 60.0;
+    rake.lambda = 10.0;
+    rake.steps = minimumStylusSteps(rake);
+    g.operations.push_back(stroke);
+    g.operations.push_back(rake);
+    return g;
+}
+
+TEST(OperatorsStylus, AlterationMovesSmoothsAndReTimesAStrokeAndKeepsItValid) {
+    const Genome parent = stylusDesign(3);
+    ASSERT_NO_THROW(validateGenome(parent, "parent"));
+    const Operation& stroke = parent.operations[parent.operations.size() - 2];
+    const Operation& rake = parent.operations.back();
+    int moved = 0, smoothed = 0, retimed = 0, pressed = 0, draws = 0;
+    for (std::uint64_t seed = 0; seed < 40; ++seed) {
+        Pcg32 rng(seed);
+        for (double strength : {0.2, 0.6, 1.0}) {
+            const Genome child = alterGenome(parent, strength, rng);
+            SCOPED_TRACE("seed " + std::to_string(seed) + " strength " + std::to_string(strength));
+            ASSERT_NO_THROW(validateGenome(child, "child"));
+            ASSERT_EQ(toolsOf(child.operations), toolsOf(parent.operations));
+            const Operation& s = child.operations[child.operations.size() - 2];
+            const Operation& r = child.operations.back();
+            ++draws;
+            // Still the same kind of stroke: a stylus and a rake of as many tines, as many points.
+            EXPECT_EQ(s.tines, 1);
+            EXPECT_EQ(r.tines, rake.tines);
+            ASSERT_EQ(s.path.size(), stroke.path.size());
+            ASSERT_EQ(s.pressure.size(), s.path.size());
+            EXPECT_GE(s.steps, minimumStylusSteps(s));
+            EXPECT_GE(r.steps, minimumStylusSteps(r));
+            EXPECT_TRUE(r.pressure.empty()) << "a stroke without a pen's pressure gets none";
+            moved += s.path != stroke.path && r.path != rake.path;
+            // Smoothed: an inner point lies nearer the middle of its neighbours than any jitter
+            // alone would put it (the stroke's corners are sharp, 30 units or more off).
+            const glm::dvec2 corner = s.path[3] - 0.5 * (s.path[2] + s.path[4]);
+            const glm::dvec2 before = stroke.path[3] - 0.5 * (stroke.path[2] + stroke.path[4]);
+            smoothed += glm::length(corner) < 0.75 * glm::length(before) - 10.0;
+            retimed += s.steps > minimumStylusSteps(s);
+            pressed += s.pressure != stroke.pressure;
+            for (double p : s.pressure) {
+                EXPECT_GE(p, 0.0);
+                EXPECT_LE(p, 1.0);
+            }
+        }
+    }
+    EXPECT_EQ(moved, draws) << "every alteration moves the paths";
+    EXPECT_GT(smoothed, draws / 10);
+    EXPECT_LT(smoothed, draws);
+    EXPECT_GT(retimed, draws / 10);
+    EXPECT_EQ(pressed, draws);
+    // Saved and read back, the children are what they were.
+    Pcg32 rng(1);
+    const Genome child = alterGenome(parent, 0.5, rng);
+    EXPECT_EQ(parseGenome(serializeGenome(child), "child"), child);
+}
+
+TEST(OperatorsStylus, AStrokeThatWouldNeedTooManyStepsKeepsItsPath) {
+    // A long rake at its strongest pull: any longer path would ask for more steps than the
+    // format allows, so what the alteration drew is refused and the old stroke kept valid.
+    Genome g = versionOneDesign(5);
+    Operation rake = defaultOperation(Tool::Stylus, 2, {500, 500, 0});
+    rake.path = {{0, 500}, {1000, 500}};
+    rake.tines = 64;
+    rake.spacing = 10.0;
+    rake.lambda = 2.0;
+    rake.reach = 20.0;
+    rake.alpha = 1.0;
+    while (minimumStylusSteps(rake) <= MaxStylusSteps)
+        rake.alpha *= 1.05;
+    rake.alpha /= 1.05;
+    rake.steps = minimumStylusSteps(rake);
+    ASSERT_LE(rake.steps, MaxStylusSteps);
+    g.operations = {rake};
+    ASSERT_NO_THROW(validateGenome(g, "parent"));
+    Pcg32 rng(4);
+    for (int i = 0; i < 50; ++i) {
+        const Genome child = alterGenome(g, 1.0, rng);
+        ASSERT_NO_THROW(validateGenome(child, "child")) << i;
+        EXPECT_LE(child.operations[0].steps, MaxStylusSteps);
+    }
+}
+
+TEST(OperatorsStylus, RecombinationAndSwapCarryAStrokeWhole) {
+    const Genome a = stylusDesign(6), b = stylusDesign(8);
+    Genome other = b;
+    for (Operation& op : other.operations)
+        if (op.tool == Tool::Stylus)
+            for (glm::dvec2& p : op.path)
+                p += glm::dvec2(13.0, -7.0);
+    int strokes = 0;
+    for (const Genome& child : breed(request(GeneticOperator::Recombine, {a, other}, 11, 12))) {
+        ASSERT_NO_THROW(validateGenome(child, "child"));
+        for (const Operation& op : child.operations) {
+            if (op.tool != Tool::Stylus) continue;
+            ++strokes;
+            // Path, pressure, tines and steps all from one parent's stroke.
+            bool whole = false;
+            for (const Genome* parent : {&a, static_cast<const Genome*>(&other)})
+                for (const Operation& q : parent->operations)
+                    whole = whole || q == op;
+            EXPECT_TRUE(whole);
+        }
+    }
+    EXPECT_GT(strokes, 0);
+    for (const Genome& child : breed(request(GeneticOperator::Swap, {a, other}, 2, 2)))
+        EXPECT_TRUE(child.operations == a.operations || child.operations == other.operations);
+}
 
 TEST(OperatorNames, RoundTrip) {
     for (GeneticOperator op :

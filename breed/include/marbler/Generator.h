@@ -3,8 +3,9 @@
 /// the way marblers lay a stone pattern (a harmonious palette, some drops inside others), then
 /// a few strokes of the traditional families (combed, chevron/nonpareil, waved, swirled,
 /// vortices). A flat design now and then has version 2's touches: stretch passes (the
-/// marbled-paper look), swirls with a finite core, a flow, a slight bleed; a solid one none.
-/// The same seed gives the same genome on every machine.
+/// marbled-paper look), swirls with a finite core, a flow, a slight bleed; about one in seven
+/// has version 3's free-hand stroke (a stylus or a small rake along a wandering path, with the
+/// fewest steps the format allows); a solid one none of these. The same seed gives the same genome on every machine.
 ///
 /// Determinism: every draw comes from Pcg32 and the generator itself uses only IEEE basic
 /// operations and square roots (correctly rounded everywhere): directions are drawn by
@@ -22,7 +23,7 @@ namespace marbler {
 
 /// What `meta.generator` says of a genome made by randomGenome; bump it when the same seed
 /// starts giving a different design.
-inline constexpr const char* GeneratorVersion = "marbler-random-3";
+inline constexpr const char* GeneratorVersion = "marbler-random-4";
 
 /// A complete random genome of dimension 2 or 3 (1000 units a side), with
 /// meta {"name", "seed", "generator"}. Throws InputError for another dimension.

@@ -17,10 +17,13 @@
 ///
 /// Alteration keeps every parameter valid: lengths stay > 0, a stretch's teeth in strictly
 /// increasing order, a flow's steps at least the fewest its new speed, time and size need (a
-/// draw that would need more than the format allows keeps the old speed, time and size); a
-/// core of 0 stays 0, so a version-1 design's children are version 1. Strokes travel whole
-/// (recombine, swap: a flow with its steps), and a child has its home parent's `bleed`, which
-/// belongs with the inks like the palette.
+/// draw that would need more than the format allows keeps the old speed, time and size), a
+/// stylus's path moved (shifted, its points jittered, now and then smoothed), its pressure
+/// (where it has one) nudged within [0, 1] and its steps re-timed, never below the fewest its
+/// new values need (a draw that would need more than the format allows keeps the old path and
+/// values); a core of 0 stays 0, so a version-1 design's children are version 1. Strokes travel
+/// whole (recombine, swap: a flow with its steps, a stylus with its path and pressure), and a
+/// child has its home parent's `bleed`, which belongs with the inks like the palette.
 ///
 /// reinit draws a new initial drop pattern (randomInitial) unless the initial state is locked;
 /// then it draws a new palette instead, unless that too is locked. No operator touches a locked
