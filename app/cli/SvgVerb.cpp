@@ -75,11 +75,25 @@ int svg(std::span<const std::string> words) {
     writeFileAtomically(outFile, text);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (design.gapsAtDepthCap > 0)
+    if (design.gapsAtDepthCap > 0) {
+        // A stylus strong enough to drag ink (c = 15 |alpha| p / (16 reach) >= 1) gathers the
+        // outlines on its track into its tip, finer than any refinement reaches.
+        const bool dragging =
+            std::any_of(genome.operations.begin(), genome.operations.end(), [](const Operation& op) {
+                const double pressure =
+                    op.pressure.empty() ? 1.0 : *std::max_element(op.pressure.begin(), op.pressure.end());
+                return op.tool == Tool::Stylus &&
+                       15.0 * std::abs(op.alpha) * pressure / (16.0 * op.reach) >= 1.0;
+            });
         std::cerr
             << "marbler svg: warning: " << genomeName << ": " << design.gapsAtDepthCap
             << " gaps stay wider than the tolerance where an outline runs through the centre of a later "
-               "drop (the drop covers them)\n";
+               "drop (the drop covers them)"
+            << (dragging ? " or where a stylus drags ink into its tip (the ink there is finer than the "
+                           "tolerance)"
+                         : "")
+            << "\n";
+    }
     if (args.has("stats"))
         std::cout << "outlines " << design.outlines.size() << " vertices " << design.vertexCount
                   << " dropped-as-straight " << design.droppedAsStraight << " bytes " << text.size()
