@@ -316,8 +316,14 @@ void expectStylusExact(const PreparedOp& op, const std::vector<glm::dvec2>& poin
     }
 }
 
-TEST_P(KernelVsReference, StylusStrokesMoveEveryPointExactlyAsTheReference) {
-    if (dimension() != 2) GTEST_SKIP() << "a stylus is 2D only";
+/// The stylus (2D only) with one kernel variant forced, as KernelVsReference does.
+class KernelStylusVsReference : public ::testing::TestWithParam<std::string> {
+protected:
+    void SetUp() override { setCpuKernelForTesting(GetParam()); }
+    void TearDown() override { setCpuKernelForTesting(""); }
+};
+
+TEST_P(KernelStylusVsReference, StylusStrokesMoveEveryPointExactlyAsTheReference) {
     Pcg32 rng(300);
     struct Case {
         int points, tines;
@@ -341,8 +347,7 @@ TEST_P(KernelVsReference, StylusStrokesMoveEveryPointExactlyAsTheReference) {
     }
 }
 
-TEST_P(KernelVsReference, AStylusLeavesFarAndStrangePointsAsTheReferenceDoes) {
-    if (dimension() != 2) GTEST_SKIP() << "a stylus is 2D only";
+TEST_P(KernelStylusVsReference, AStylusLeavesFarAndStrangePointsAsTheReferenceDoes) {
     Pcg32 rng(301);
     PreparedOp op = prepare(stylusStroke(rng, 5, 2, true), 2);
     std::vector<glm::dvec2> points = {{1e12, 500},       {-1e200, 3},    {500, 1e160},
@@ -403,6 +408,8 @@ INSTANTIATE_TEST_SUITE_P(Variants, KernelVsReference,
                              return std::get<0>(info.param) + "_" + std::to_string(std::get<1>(info.param)) +
                                     "D";
                          });
+INSTANTIATE_TEST_SUITE_P(Variants, KernelStylusVsReference, ::testing::ValuesIn(cpuKernelsSupported()),
+                         [](const auto& info) { return info.param; });
 
 /// The variant a traceTile call of `renderer` runs on this thread.
 kernel::Variant variantThatRuns(const CpuRenderer& renderer) {
