@@ -418,13 +418,13 @@ Genome alterGenome(const Genome& parent, double strength, Pcg32& rng) {
     if (strength == 0.0) return child; // exactly the parent, not a renormalised copy
     Locks locks = locksOf(parent);
     const bool relative = strength < FamilyKeepStrength && child.meta.has(MetaKey::Family);
-    if (!locks.operations) {
+    if (!locks.operations && !child.operations.empty()) {
         for (Operation& op : child.operations)
             perturb(op, child, strength, rng, relative);
         return child;
     }
-    // The strokes are locked: vary what is free instead, more gently, so the operator still
-    // offers a choice.
+    // The strokes are locked, or there are none (a bath of drops): vary what is free instead,
+    // more gently, so the operator still offers a choice.
     if (!locks.initial)
         for (Operation& op : child.initial)
             perturb(op, child, 0.5 * strength, rng, relative);

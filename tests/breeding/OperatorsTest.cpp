@@ -97,6 +97,19 @@ TEST_P(Operators, SwapExchangesExactlyInitialStateAndOperations) {
 
 /// Every child is worth a cell: for every operator and count, the children differ from each
 /// other and from the parents (meta aside), whatever the parents are like.
+TEST_P(Operators, AlteringABathWithoutStrokesStillChangesIt) {
+    // A swap can leave a child with no strokes; varying a repeat of it must still give a new
+    // design, or two cells of the grid show the same one.
+    Genome bath = parent(17);
+    bath.operations.clear();
+    ASSERT_FALSE(bath.initial.empty());
+    Pcg32 rng(5);
+    const Genome altered = alterGenome(bath, 0.2, rng);
+    EXPECT_NE(genomeId(altered), genomeId(bath));
+    EXPECT_TRUE(altered.operations.empty());
+    validateGenome(altered, "altered");
+}
+
 TEST_P(Operators, NoTwoChildrenAreEqual) {
     Genome a = parent(80), b = parent(81), c = parent(82);
     Genome few = parent(83); // few strokes: crossovers repeat easily
