@@ -5,7 +5,8 @@
 /// vortices). A flat design now and then has version 2's touches: stretch passes (the
 /// marbled-paper look), swirls with a finite core, a flow, a slight bleed; about one in seven
 /// has version 3's free-hand stroke (a stylus or a small rake along a wandering path, with the
-/// fewest steps the format allows); a solid one none of these. The same seed gives the same genome on every machine.
+/// fewest steps the format allows); a solid one none of these. The same seed gives the same
+/// genome on every machine.
 ///
 /// Determinism: every draw comes from Pcg32 and the generator itself uses only IEEE basic
 /// operations and square roots (correctly rounded everywhere): directions are drawn by
