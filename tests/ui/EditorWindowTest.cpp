@@ -91,7 +91,7 @@ TEST_F(EditorWindowTest, AClickDropsInkAndUndoRedoAreExact) {
     const Genome before = editor->document()->design();
     editor->setTool(Tool::Drop);
     EditorCanvas* canvas = editor->canvas();
-    MARBLER_WAIT(canvas->view().scale() > 0.0, 5000);
+    MARBLER_WAIT(canvas->view().scale() > 0.0, 30000);
     drag(canvas, {400.0, 600.0}, {400.0, 600.0});
     ASSERT_EQ(editor->document()->stepCount(), 1u);
     const Operation& drop = editor->document()->step(0);
@@ -157,7 +157,7 @@ TEST_F(EditorWindowTest, SaveWritesTheDesignAndTheQuestionGuardsUnsavedChanges) 
     setSaveFileAsker([&](QWidget*, const QString&, const QString&, const QString&) { return file; });
     EditorWindow* editor = open(blankDesign(2));
     editor->setTool(Tool::Drop);
-    MARBLER_WAIT(editor->canvas()->view().scale() > 0.0, 5000);
+    MARBLER_WAIT(editor->canvas()->view().scale() > 0.0, 30000);
     drag(editor->canvas(), {500.0, 500.0}, {560.0, 500.0});
     ASSERT_TRUE(editor->document()->isModified());
     editor->setUnsavedAnswer(EditorWindow::UnsavedAnswer::Cancel);
@@ -273,7 +273,7 @@ TEST_F(EditorWindowTest, APickedInkIsTheInkTheToolsLay) {
     design.palette = {Color{200, 30, 30}, Color{30, 30, 200}};
     EditorWindow* editor = open(design);
     EditorCanvas* canvas = editor->canvas();
-    MARBLER_WAIT(canvas->view().scale() > 0.0, 5000);
+    MARBLER_WAIT(canvas->view().scale() > 0.0, 30000);
     // A drop of ink 1, then ink 2 chosen in the palette, then the drop picked: ink 1 again.
     editor->setTool(Tool::Drop);
     drag(canvas, {500.0, 400.0}, {500.0, 400.0});
@@ -325,7 +325,7 @@ TEST_F(EditorWindowTest, ASolidIsEditedOnItsCrossSectionBesideItsObject) {
     ASSERT_NE(editor->findChild<QWidget*>(QStringLiteral("objectView")), nullptr);
     editor->setSlice(Slice{2, 300.0});
     editor->setTool(Tool::Drop);
-    MARBLER_WAIT(editor->canvas()->view().scale() > 0.0, 5000);
+    MARBLER_WAIT(editor->canvas()->view().scale() > 0.0, 30000);
     drag(editor->canvas(), {250.0, 700.0}, {250.0, 700.0});
     ASSERT_EQ(editor->document()->stepCount(), 1u);
     const Operation& drop = editor->document()->step(0);

@@ -357,7 +357,7 @@ TEST_F(EditorWorkTest, NewInkLandsAfterTheSelectedStepOrAtTheTimelinesPointAndIs
     EditorWindow* editor = open(combed());
     EditorDocument* doc = editor->document();
     EditorCanvas* canvas = editor->canvas();
-    MARBLER_WAIT(canvas->view().scale() > 0.0, 5000);
+    MARBLER_WAIT(canvas->view().scale() > 0.0, 30000);
     editor->setTool(Tool::Drop);
 
     // The last step (the comb) selected: the drop goes on top of it, at the click.
