@@ -484,7 +484,9 @@ TEST(Maps, InverseUndoesForwardAndKeepsMeasure) {
                 }
             }
             EXPECT_GT(checked, 1000) << spec.name << " " << dimension << "D";
-            if (spec.tool == Tool::Stylus) EXPECT_GT(movedStylus, 500);
+            if (spec.tool == Tool::Stylus) {
+                EXPECT_GT(movedStylus, 500);
+            }
         }
     }
     for (int kind = 0; kind < 4; ++kind)
