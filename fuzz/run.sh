@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Fuzzes the genome loader: configures a clang build with libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer in build-fuzz, then runs fuzz_genome for the given seconds
-# (default 60) from the committed corpus, and fuzz_image (genomes inside PNG and TIFF images)
-# for half as long from fuzz/corpus-image. Exits non-zero on a finding; the crashing input is
+# (default 60) from the committed corpus, fuzz_image (genomes inside PNG and TIFF images) for
+# half as long from fuzz/corpus-image, and fuzz_source (a genome's source image through the
+# allow-list and the decoder) for half as long from fuzz/corpus-source. Exits non-zero on a finding; the crashing input is
 # left in build-fuzz/findings/.
 #   fuzz/run.sh [SECONDS]
 set -euo pipefail
@@ -14,10 +15,10 @@ cmake -S . -B "$BUILD" -G Ninja \
     -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DMARBLER_FUZZ=ON -DMARBLER_SANITIZE=ON \
     -DMARBLER_BUILD_TESTS=OFF -DMARBLER_BUILD_GUI=OFF -DMARBLER_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$BUILD" --target fuzz_genome fuzz_image -j "$(nproc)"
+cmake --build "$BUILD" --target fuzz_genome fuzz_image fuzz_source -j "$(nproc)"
 
 # New inputs go to a corpus under the build folder; the committed seeds are only read.
-mkdir -p "$BUILD/corpus" "$BUILD/corpus-image" "$BUILD/findings"
+mkdir -p "$BUILD/corpus" "$BUILD/corpus-image" "$BUILD/corpus-source" "$BUILD/findings"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 "$BUILD/fuzz/fuzz_genome" "$BUILD/corpus" fuzz/corpus \
@@ -27,5 +28,10 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # reach 4 GiB: AddressSanitizer keeps freed memory in quarantine, and one run here reached 2036
 # MiB of the 2048 then allowed without any one allocation over it.
 "$BUILD/fuzz/fuzz_image" "$BUILD/corpus-image" fuzz/corpus-image \
+    -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
+    -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+# Source images: the decoder may hold a raster of up to 64 megapixels (768 MiB) and the reader's
+# own buffer; one allocation over 2 GiB is a finding.
+"$BUILD/fuzz/fuzz_source" "$BUILD/corpus-source" fuzz/corpus-source \
     -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1

@@ -544,7 +544,8 @@ TEST_F(GlVsCpu, BadSourcesAreRefusedAlike) {
     for (const std::string& image :
          {std::string("data:image/png;base64,iVBORw0KGgo!!AAAA"), std::string("data:image/png,plain"),
           std::string("data:image/png;base64,AAAA"), std::string("no-such.png"),
-          std::string("../escape.png")}) {
+          // A Photoshop file's first bytes in a PNG's clothing: refused by what it is.
+          std::string("data:image/png;base64,OEJQUwABAAAAAAAA"), std::string("../escape.png")}) {
         genome.source = SourceImage{image};
         std::string cpuError, glError;
         try {

@@ -16,11 +16,12 @@
 namespace marbler::detail {
 namespace {
 
-/// Rasters larger than this (64 megapixels, 8192 x 8192) are refused as sources, so a hostile
-/// file that claims a huge size cannot make the loader allocate gigabytes of float pixels.
+/// The largest source accepted: 32,768 pixels on a side and 64 megapixels (8192 x 8192) in
+/// all. Checked against the header before any pixel is decoded, so a hostile file that claims a
+/// huge size cannot make the loader allocate gigabytes; decoding then needs the raster (12
+/// bytes a pixel, 768 MiB at most) and the reader's own buffer of the image's native pixels.
+constexpr std::int64_t MaxSourceSide = 32768;
 constexpr std::int64_t MaxSourcePixels = std::int64_t(1) << 26;
-/// Channels decoded at most (RGBA); extra channels are not read.
-constexpr int MaxSourceChannels = 4;
 
 bool isLinearColorSpace(const OIIO::ImageSpec& spec) {
     std::string space = spec.get_string_attribute("oiio:ColorSpace");
@@ -31,29 +32,45 @@ bool isLinearColorSpace(const OIIO::ImageSpec& spec) {
 
 LinearRaster readRaster(OIIO::ImageInput& in, const std::string& name) {
     const OIIO::ImageSpec& spec = in.spec();
-    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 ||
-        std::int64_t(spec.width) * spec.height > MaxSourcePixels)
-        throw InputError("source image " + name + ": unsupported size " + std::to_string(spec.width) + "x" +
+    if (spec.width < 1 || spec.height < 1 || spec.depth > 1 || spec.nchannels < 1)
+        throw InputError("source image " + name + ": unsupported size " + std::to_string(spec.width) + " x " +
                          std::to_string(spec.height));
-    const int channels = std::min(spec.nchannels, MaxSourceChannels);
-    std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
-    if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        throw InputError("source image " + name + ": " + in.geterror());
+    if (spec.width > MaxSourceSide || spec.height > MaxSourceSide ||
+        std::int64_t(spec.width) * spec.height > MaxSourcePixels)
+        throw InputError("source image " + name + ": " + std::to_string(spec.width) + " x " +
+                         std::to_string(spec.height) + " pixels is too large (sources may have at most " +
+                         std::to_string(MaxSourceSide) + " pixels on a side and " +
+                         std::to_string(MaxSourcePixels >> 20) + " megapixels in all)");
     LinearRaster raster;
     raster.width = spec.width;
     raster.height = spec.height;
-    raster.rgb.resize(std::size_t(spec.width) * std::size_t(spec.height) * 3);
-    const bool linear = isLinearColorSpace(spec);
     const std::size_t count = std::size_t(spec.width) * std::size_t(spec.height);
-    for (std::size_t p = 0; p < count; ++p)
-        for (int c = 0; c < 3; ++c) {
-            // Grey and grey+alpha images repeat their one channel; alpha is ignored.
-            int from = channels >= 3 ? c : 0;
-            float v = pixels[p * std::size_t(channels) + std::size_t(from)];
-            raster.rgb[p * 3 + std::size_t(c)] =
-                linear ? v : static_cast<float>(srgbToLinear(std::clamp(double(v), 0.0, 1.0)));
-        }
+    raster.rgb.resize(count * 3);
+    // Decoded straight into the raster: RGB as it is; a grey image (with or without alpha) into
+    // the red of each pixel, then repeated. Alpha and further channels are not read.
+    const int channels = spec.nchannels >= 3 ? 3 : 1;
+    const OIIO::stride_t pixelStride = OIIO::stride_t(3 * sizeof(float));
+    if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raster.rgb.data(), pixelStride))
+        throw InputError("source image " + name + ": " + in.geterror());
+    const bool linear = isLinearColorSpace(spec);
+    for (std::size_t p = 0; p < count; ++p) {
+        float* px = raster.rgb.data() + p * 3;
+        if (channels == 1) px[1] = px[2] = px[0];
+        if (!linear)
+            for (int c = 0; c < 3; ++c)
+                px[c] = static_cast<float>(srgbToLinear(std::clamp(double(px[c]), 0.0, 1.0)));
+    }
     return raster;
+}
+
+/// OpenImageIO's reader named `reader`, and only it: ImageInput::open(file) would pick one by
+/// the file's name and then try every format it knows.
+std::unique_ptr<OIIO::ImageInput> createReader(const std::string& reader, const std::string& name) {
+    auto in = OIIO::ImageInput::create(reader);
+    if (!in)
+        throw InputError("source image " + name + ": this OpenImageIO has no " + reader +
+                         " reader: " + OIIO::geterror());
+    return in;
 }
 
 /// An OpenImageIO writer. OpenImageIO 2.4 writes a JPEG's density with the unit byte 0 (aspect
@@ -135,19 +152,29 @@ public:
         return std::make_unique<OiioSink>(target);
     }
 
-    LinearRaster readFile(const std::string& file, const std::string& name) override {
-        auto in = OIIO::ImageInput::open(file);
-        if (!in) throw InputError("source image " + name + ": cannot load: " + OIIO::geterror());
+    LinearRaster readFile(const std::string& file, const std::string& reader,
+                          const std::string& name) override {
+        auto in = createReader(reader, name);
+        OIIO::ImageSpec spec;
+        if (!in->open(file, spec))
+            throw InputError("source image " + name + ": cannot load: " + in->geterror());
         LinearRaster raster = readRaster(*in, name);
         in->close();
         return raster;
     }
 
-    LinearRaster readMemory(const unsigned char* data, std::size_t size, const std::string& extension,
+    LinearRaster readMemory(const unsigned char* data, std::size_t size, const std::string& reader,
                             const std::string& name) override {
-        OIIO::Filesystem::IOMemReader reader(const_cast<unsigned char*>(data), size);
-        auto in = OIIO::ImageInput::open("source." + extension, nullptr, &reader);
-        if (!in) throw InputError("source image " + name + ": cannot decode: " + OIIO::geterror());
+        auto in = createReader(reader, name);
+        if (!in->supports("ioproxy"))
+            throw InputError("source image " + name + ": a " + reader +
+                             " image cannot be read from a data URL; save it as a file beside the genome");
+        OIIO::Filesystem::IOMemReader memory(const_cast<unsigned char*>(data), size);
+        if (!in->set_ioproxy(&memory))
+            throw InputError("source image " + name + ": cannot decode: " + in->geterror());
+        OIIO::ImageSpec spec;
+        if (!in->open("source." + reader, spec))
+            throw InputError("source image " + name + ": cannot decode: " + in->geterror());
         LinearRaster raster = readRaster(*in, name);
         in->close();
         return raster;

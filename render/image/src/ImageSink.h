@@ -47,11 +47,13 @@ public:
     /// A writer for any format OpenImageIO knows. Throws InputError for an unknown extension,
     /// RuntimeFailure when the file cannot be created.
     virtual std::unique_ptr<ImageSink> openSink(const SinkTarget& target) = 0;
-    /// Decodes an image file, or `size` bytes of one whose format `extension` names, into linear
-    /// RGB. `name` is how messages name it. Throws InputError when it cannot be decoded or is
-    /// too large.
-    virtual LinearRaster readFile(const std::string& file, const std::string& name) = 0;
-    virtual LinearRaster readMemory(const unsigned char* data, std::size_t size, const std::string& extension,
+    /// Decodes an image file, or `size` bytes of one, into linear RGB with OpenImageIO's one
+    /// reader named `reader` (SourceFormat.h: never a guess from a name, never another
+    /// reader). The size in the header is checked before any pixel is decoded. `name` is how
+    /// messages name it. Throws InputError when it cannot be decoded or is too large.
+    virtual LinearRaster readFile(const std::string& file, const std::string& reader,
+                                  const std::string& name) = 0;
+    virtual LinearRaster readMemory(const unsigned char* data, std::size_t size, const std::string& reader,
                                     const std::string& name) = 0;
     /// OpenImageIO's version, e.g. "2.4.7".
     virtual std::string version() const = 0;

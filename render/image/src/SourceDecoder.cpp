@@ -2,6 +2,7 @@
 
 #include "ImageData.h"
 #include "ImageSink.h"
+#include "SourceFormat.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Image.h"
@@ -9,7 +10,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 
 namespace marbler {
 namespace fs = std::filesystem;
@@ -56,23 +60,32 @@ LinearRaster decodeDataUri(const std::string& text) {
     std::string header = text.substr(5, comma - 5);
     if (header.size() < 7 || header.substr(header.size() - 7) != ";base64")
         throw InputError("source image " + name + ": only base64 data URLs are supported");
-    std::string mime = header.substr(0, header.size() - 7);
-    std::string extension = "png";
-    if (mime == "image/jpeg" || mime == "image/jpg")
-        extension = "jpg";
-    else if (mime == "image/tiff")
-        extension = "tif";
-    else if (mime == "image/bmp")
-        extension = "bmp";
-    else if (mime == "image/x-exr")
-        extension = "exr";
     std::vector<unsigned char> bytes;
     try {
         bytes = decodeBase64(std::string_view(text).substr(comma + 1));
     } catch (const InputError& e) {
         throw InputError("source image " + name + ": " + e.what());
     }
-    return imageIoModule().readMemory(bytes.data(), bytes.size(), extension, name);
+    // The MIME type is not believed: the bytes say what they are.
+    const SourceFormat format = sniffSourceFormat(bytes.data(), bytes.size());
+    if (format.reader.empty()) throw InputError("source image " + name + ": " + refusedSourceFormat(format));
+    return imageIoModule().readMemory(bytes.data(), bytes.size(), format.reader, name);
+}
+
+/// Decodes a source image file with the one reader its first bytes allow. Throws InputError.
+LinearRaster decodeFile(const fs::path& file) {
+    const std::string name = "'" + file.string() + "'";
+    unsigned char head[SourceSniffBytes] = {};
+    std::size_t got = 0;
+    {
+        std::ifstream in(file, std::ios::binary);
+        if (!in) throw InputError("source image " + name + ": cannot read: " + std::strerror(errno));
+        in.read(reinterpret_cast<char*>(head), sizeof head);
+        got = std::size_t(in.gcount());
+    }
+    const SourceFormat format = sniffSourceFormat(head, got);
+    if (format.reader.empty()) throw InputError("source image " + name + ": " + refusedSourceFormat(format));
+    return imageIoModule().readFile(file.string(), format.reader, name);
 }
 
 } // namespace detail
@@ -83,7 +96,7 @@ LinearRaster decodeSourceImage(const Genome& genome) {
         // The rule of SourcePath.h comes first: a refused file is never opened.
         const fs::path file = sourceFileToRead(genome);
         try {
-            return detail::imageIoModule().readFile(file.string(), "'" + file.string() + "'");
+            return detail::decodeFile(file);
         } catch (const GenomeError&) {
             throw;
         } catch (const InputError& e) {
