@@ -1,15 +1,36 @@
 #include "marbler/gl/Meshes.h"
 
+#include "MeshFileCheck.h"
 #include "marbler/Error.h"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <sstream>
+
 namespace marbler::gl {
 
 MeshData loadMesh(const std::string& file) {
+    try {
+        detail::checkMeshFile(file);
+    } catch (const InputError& e) {
+        throw InputError(file + ": cannot load mesh: " + e.what());
+    }
     Assimp::Importer importer;
+    // Only the importers of the allowed formats stay, so a file is never handed to another one
+    // (assimp tries every importer when the one its name suggests refuses it). Unregistered
+    // importers are no longer the Importer's to delete.
+    for (std::size_t i = importer.GetImporterCount(); i-- > 0;) {
+        std::istringstream extensions(importer.GetImporterInfo(i)->mFileExtensions);
+        bool allowed = false;
+        for (std::string ext; extensions >> ext;)
+            allowed = allowed || detail::isAllowedImporterExtension(ext);
+        if (allowed) continue;
+        Assimp::BaseImporter* other = importer.GetImporter(i);
+        if (importer.UnregisterLoader(other) == aiReturn_SUCCESS) delete other;
+    }
     const aiScene* scene = importer.ReadFile(
         file, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
                   aiProcess_PreTransformVertices | aiProcess_SortByPType);
