@@ -2,7 +2,8 @@
 // render/src/Video.cpp to write the frames of `marbler animate` and `marbler video` as .mp4
 // (H.264 by libx264, else MPEG-4 part 2), .webm (VP9 by libvpx, else VP8), .gif (one palette for
 // the whole file, by libavfilter's palettegen and paletteuse) or animated .webp (libwebp), and to
-// decode the frames of any video FFmpeg reads.
+// decode the frames of common videos: MP4/MOV, Matroska/WebM and GIF containers holding H.264,
+// H.265, VP8, VP9, AV1, MPEG-4 part 2 or GIF video, and nothing else FFmpeg reads.
 
 #include "VideoModule.h"
 #include "marbler/Error.h"
@@ -12,12 +13,17 @@ extern "C" {
 #include <libavfilter/buffersink.h>
 #include <libavfilter/buffersrc.h>
 #include <libavformat/avformat.h>
+#include <libavutil/avstring.h>
 #include <libavutil/imgutils.h>
 #include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
 
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <vector>
 
 namespace marbler::detail {
@@ -26,6 +32,15 @@ namespace {
 /// Frames larger than this (64 megapixels) are refused when reading, so a hostile file that
 /// claims a huge size cannot make the reader allocate gigabytes.
 constexpr std::int64_t MaxFramePixels = std::int64_t(1) << 26;
+
+/// The demuxers and decoders a video may reach: the common containers and codecs of cameras,
+/// phones and the web. FFmpeg's dozens of others (and its network and concat protocols) are
+/// never handed a file a stranger sent.
+constexpr const char* AllowedDemuxers = "mov,mp4,m4a,3gp,3g2,mj2,matroska,webm,gif";
+constexpr const char* AllowedContainers = "MP4, MOV, Matroska, WebM or GIF";
+constexpr AVCodecID AllowedCodecs[] = {AV_CODEC_ID_H264, AV_CODEC_ID_HEVC,  AV_CODEC_ID_VP8, AV_CODEC_ID_VP9,
+                                       AV_CODEC_ID_AV1,  AV_CODEC_ID_MPEG4, AV_CODEC_ID_GIF};
+constexpr const char* AllowedCodecNames = "H.264, H.265, VP8, VP9, AV1, MPEG-4 part 2 or GIF";
 
 std::string errorText(int code) {
     char text[AV_ERROR_MAX_STRING_SIZE] = {};
@@ -345,15 +360,39 @@ private:
     bool mGif = false;
 };
 
+/// Refuses, naming it, a file whose container is not on the allow-list, as FFmpeg's probe (the
+/// same that avformat_open_input runs) tells it from the first bytes.
+void refuseOtherContainers(const std::string& file, const std::string& name) {
+    std::vector<unsigned char> head(4096 + AVPROBE_PADDING_SIZE, 0);
+    std::FILE* f = std::fopen(file.c_str(), "rb");
+    if (!f) throw InputError(name + ": cannot read: " + std::strerror(errno));
+    const std::size_t got = std::fread(head.data(), 1, 4096, f);
+    std::fclose(f);
+    AVProbeData probe{};
+    probe.filename = file.c_str();
+    probe.buf = head.data();
+    probe.buf_size = int(got);
+    int score = 0;
+    const AVInputFormat* found = av_probe_input_format3(&probe, 1, &score);
+    if (!found || av_match_list(found->name, AllowedDemuxers, ',') > 0) return; // let FFmpeg say the rest
+    throw InputError(name + ": " + (found->long_name ? found->long_name : found->name) + ": videos must be " +
+                     AllowedContainers);
+}
+
 /// An FFmpeg reader: the best video stream of the file, decoded and converted to RGB by
 /// libswscale with the matrix and range the stream declares.
 class FfmpegReader final : public VideoReader {
 public:
     FfmpegReader(const std::string& file, const std::string& name)
         : mName(name) {
-        AVFormatContext* format = nullptr;
-        int code = avformat_open_input(&format, file.c_str(), nullptr, nullptr);
-        if (code < 0) throw InputError(name + ": not a video FFmpeg reads (" + errorText(code) + ")");
+        refuseOtherContainers(file, name);
+        AVFormatContext* format = avformat_alloc_context();
+        if (!format) throw RuntimeFailure("out of memory");
+        // The same lists again inside FFmpeg, which enforces them for whatever it opens itself.
+        format->format_whitelist = av_strdup(AllowedDemuxers);
+        format->protocol_whitelist = av_strdup("file");
+        int code = avformat_open_input(&format, file.c_str(), nullptr, nullptr); // frees it on failure
+        if (code < 0) throw InputError(name + ": not a video Marbler reads (" + errorText(code) + ")");
         mFormat.reset(format);
         code = avformat_find_stream_info(format, nullptr);
         if (code < 0) throw InputError(name + ": not a video FFmpeg reads (" + errorText(code) + ")");
@@ -362,6 +401,12 @@ public:
         if (mStream < 0 || !codec) throw InputError(name + ": holds no video FFmpeg can decode");
         const AVStream* stream = format->streams[mStream];
         const AVCodecParameters* parameters = stream->codecpar;
+        if (std::find(std::begin(AllowedCodecs), std::end(AllowedCodecs), parameters->codec_id) ==
+            std::end(AllowedCodecs)) {
+            const AVCodecDescriptor* d = avcodec_descriptor_get(parameters->codec_id);
+            throw InputError(name + ": its video is " + (d ? d->long_name : "of an unknown codec") +
+                             ": videos must be " + AllowedCodecNames);
+        }
         if (parameters->width < 1 || parameters->height < 1 ||
             std::int64_t(parameters->width) * parameters->height > MaxFramePixels)
             throw InputError(name + ": unsupported frame size " + std::to_string(parameters->width) + "x" +

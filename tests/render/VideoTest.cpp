@@ -8,10 +8,15 @@
 
 #include <gtest/gtest.h>
 
+extern "C" {
+#include <libavformat/avformat.h>
+}
+
 #include <webp/demux.h>
 
 #include <array>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -229,6 +234,74 @@ TEST(Video, ReadingWhatIsNoVideoIsBadInput) {
     EXPECT_THROW(openVideoReader(dir / "missing.mp4"), InputError);
     test::writeFile(dir / "text.mp4", "this is not a video, only a few words of text\n");
     EXPECT_THROW(openVideoReader(dir / "text.mp4"), InputError);
+}
+
+/// Muxes `frames` frames of raw 8 x 8 RGB video into a QuickTime file with libavformat: an
+/// allowed container holding a codec that is not allowed.
+void writeRawQuickTime(const fs::path& file, int frames) {
+    AVFormatContext* out = nullptr;
+    ASSERT_GE(avformat_alloc_output_context2(&out, nullptr, "mov", file.c_str()), 0);
+    AVStream* stream = avformat_new_stream(out, nullptr);
+    ASSERT_TRUE(stream);
+    stream->time_base = AVRational{1, 25};
+    stream->codecpar->codec_type = AVMEDIA_TYPE_VIDEO;
+    stream->codecpar->codec_id = AV_CODEC_ID_RAWVIDEO;
+    stream->codecpar->width = 8;
+    stream->codecpar->height = 8;
+    stream->codecpar->format = AV_PIX_FMT_RGB24;
+    ASSERT_GE(avio_open(&out->pb, file.c_str(), AVIO_FLAG_WRITE), 0);
+    ASSERT_GE(avformat_write_header(out, nullptr), 0);
+    for (int f = 0; f < frames; ++f) {
+        AVPacket* packet = av_packet_alloc();
+        ASSERT_GE(av_new_packet(packet, 8 * 8 * 3), 0);
+        std::memset(packet->data, 40 + 60 * f, std::size_t(packet->size));
+        packet->pts = packet->dts = av_rescale_q(f, AVRational{1, 25}, stream->time_base);
+        packet->flags |= AV_PKT_FLAG_KEY;
+        ASSERT_GE(av_interleaved_write_frame(out, packet), 0);
+        av_packet_free(&packet);
+    }
+    av_write_trailer(out);
+    avio_closep(&out->pb);
+    avformat_free_context(out);
+}
+
+TEST(Video, OnlyCommonCodecsReachADecoder) {
+    const fs::path file = test::outputDir("video-allow-list") / "raw.mov";
+    writeRawQuickTime(file, 3);
+    try {
+        openVideoReader(file);
+        ADD_FAILURE() << "raw video was read";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("its video is raw video: videos must be H.264, H.265, VP8, VP9, AV1"),
+                  std::string::npos)
+            << what;
+    }
+}
+
+TEST(Video, OnlyCommonContainersReachADecoder) {
+    // A YUV4MPEG stream is a few lines of text and raw pixels that FFmpeg reads as it reads any
+    // of its dozens of formats; renamed .mp4, it was decoded before the allow-list.
+    const fs::path dir = test::outputDir("video-allow-list");
+    std::string y4m = "YUV4MPEG2 W8 H8 F25:1 Ip A1:1 C420jpeg\n";
+    for (int frame = 0; frame < 3; ++frame)
+        y4m += "FRAME\n" + std::string(8 * 8 * 3 / 2, char(40 + 60 * frame));
+    for (const char* name : {"stream.y4m", "disguised.mp4"}) {
+        test::writeFile(dir / name, y4m);
+        try {
+            openVideoReader(dir / name);
+            ADD_FAILURE() << name << " was read";
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("YUV4MPEG pipe: videos must be MP4, MOV, Matroska, WebM or GIF"),
+                      std::string::npos)
+                << what;
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        }
+    }
+    // The allowed ones still read (every format Marbler writes: VideoRoundTrip).
+    writeFrames(dir / "kept.webm", 25.0);
+    EXPECT_NO_THROW(openVideoReader(dir / "kept.webm"));
 }
 
 } // namespace
