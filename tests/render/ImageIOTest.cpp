@@ -5,12 +5,17 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Image.h"
 #include "marbler/RenderToFile.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <map>
 #include <mutex>
+#include <string>
+#include <vector>
 
 namespace marbler {
 namespace {
@@ -73,6 +78,89 @@ TEST(ImageFiles, EveryFormatRoundTripsWithItsResolution) {
     }
     // Only the finished files remain: no temporaries beside them.
     EXPECT_EQ(filesIn(dir), 12u);
+}
+
+/// The numbers of an ICC profile that say what it does, read from its bytes as the ICC
+/// specification lays them out.
+struct IccProfile {
+    std::string deviceClass, colourSpace, pcs, signature;
+    std::map<std::string, std::vector<unsigned char>> tags;
+    std::uint32_t declaredSize = 0;
+};
+
+std::uint32_t be32(const unsigned char* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+}
+
+IccProfile parseIcc(const std::vector<unsigned char>& bytes) {
+    IccProfile icc;
+    if (bytes.size() < 132) return icc;
+    icc.declaredSize = be32(bytes.data());
+    icc.deviceClass.assign(bytes.begin() + 12, bytes.begin() + 16);
+    icc.colourSpace.assign(bytes.begin() + 16, bytes.begin() + 20);
+    icc.pcs.assign(bytes.begin() + 20, bytes.begin() + 24);
+    icc.signature.assign(bytes.begin() + 36, bytes.begin() + 40);
+    const std::uint32_t count = be32(bytes.data() + 128);
+    for (std::uint32_t i = 0; i < count && 132 + 12 * (i + 1) <= bytes.size(); ++i) {
+        const unsigned char* e = bytes.data() + 132 + 12 * i;
+        const std::uint32_t offset = be32(e + 4), size = be32(e + 8);
+        if (offset + size <= bytes.size())
+            icc.tags[std::string(e, e + 4)] =
+                std::vector<unsigned char>(bytes.begin() + offset, bytes.begin() + offset + size);
+    }
+    return icc;
+}
+
+double s15f16(const std::vector<unsigned char>& tag, std::size_t at) {
+    return double(std::int32_t(be32(tag.data() + at))) / 65536.0;
+}
+
+TEST(ImageFiles, PngTiffAndJpegCarryAnSrgbProfile) {
+    // Print and layout software keeps a file's colours by its ICC profile; PNG's sRGB chunk or
+    // an untagged TIFF leave them to guesswork.
+    const std::filesystem::path dir = test::outputDir("image-icc");
+    RenderSettings s;
+    s.width = 40;
+    s.height = 24;
+    const Image image = CpuRenderer(example()).render(s);
+    for (const char* ext : {".png", ".tif", ".jpg"}) {
+        const std::filesystem::path file = dir / (std::string("tagged") + ext);
+        writeImage(image, file);
+        auto in = OIIO::ImageInput::open(file.string());
+        ASSERT_TRUE(in) << file << ": " << OIIO::geterror();
+        const OIIO::ParamValue* p = in->spec().find_attribute("ICCProfile");
+        ASSERT_TRUE(p) << ext << " has no ICC profile";
+        const auto* data = static_cast<const unsigned char*>(p->data());
+        const IccProfile icc = parseIcc(std::vector<unsigned char>(data, data + p->type().size()));
+        EXPECT_EQ(icc.declaredSize, p->type().size()) << ext;
+        EXPECT_EQ(icc.signature, "acsp") << ext;
+        EXPECT_EQ(icc.deviceClass, "mntr") << ext;
+        EXPECT_EQ(icc.colourSpace, "RGB ") << ext;
+        EXPECT_EQ(icc.pcs, "XYZ ") << ext;
+        // The colorants add up to the D50 white, and are sRGB's adapted to it (as in every sRGB
+        // profile: red X 0.4361, green Y 0.7169, blue Z 0.7141).
+        for (const char* tag : {"rXYZ", "gXYZ", "bXYZ", "rTRC", "gTRC", "bTRC", "wtpt", "desc"})
+            ASSERT_TRUE(icc.tags.count(tag)) << ext << " lacks " << tag;
+        double sum[3] = {};
+        for (const char* tag : {"rXYZ", "gXYZ", "bXYZ"})
+            for (int i = 0; i < 3; ++i)
+                sum[i] += s15f16(icc.tags.at(tag), 8 + 4 * std::size_t(i));
+        EXPECT_NEAR(sum[0], 0.9642, 2e-4) << ext;
+        EXPECT_NEAR(sum[1], 1.0, 2e-4) << ext;
+        EXPECT_NEAR(sum[2], 0.8249, 2e-4) << ext;
+        EXPECT_NEAR(s15f16(icc.tags.at("rXYZ"), 8), 0.4361, 5e-4) << ext;
+        EXPECT_NEAR(s15f16(icc.tags.at("gXYZ"), 12), 0.7169, 5e-4) << ext;
+        EXPECT_NEAR(s15f16(icc.tags.at("bXYZ"), 16), 0.7141, 5e-4) << ext;
+        // The transfer curve: code 0.5 is 21.4 % of the light, as sRGB decodes it.
+        const std::vector<unsigned char>& trc = icc.tags.at("rTRC");
+        ASSERT_EQ(std::string(trc.begin(), trc.begin() + 4), "curv");
+        const std::uint32_t n = be32(trc.data() + 8);
+        ASSERT_GT(n, 255u);
+        auto at = [&](std::uint32_t i) { return double(trc[12 + 2 * i] << 8 | trc[13 + 2 * i]) / 65535.0; };
+        EXPECT_NEAR(at((n - 1) / 2), srgbToLinear(double((n - 1) / 2) / double(n - 1)), 1e-4);
+        EXPECT_EQ(at(0), 0.0);
+        EXPECT_EQ(at(n - 1), 1.0);
+    }
 }
 
 TEST(ImageFiles, NoResolutionWithoutDpi) {

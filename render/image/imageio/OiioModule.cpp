@@ -3,6 +3,7 @@
 // (EXR, JPEG, ...) and to decode source images.
 
 #include "ImageSink.h"
+#include "SrgbProfile.h"
 #include "marbler/Error.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -93,7 +94,11 @@ public:
                              mFloat ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
         spec.attribute("oiio:ColorSpace", mFloat ? "Linear" : "sRGB");
         spec.attribute("Software", "Marbler");
-        if (ext == ".jpg" || ext == ".jpeg") spec.attribute("Compression", "jpeg:95");
+        if (ext == ".jpg" || ext == ".jpeg") {
+            spec.attribute("Compression", "jpeg:95");
+            const std::vector<unsigned char>& icc = srgbIccProfile();
+            spec.attribute("ICCProfile", OIIO::TypeDesc(OIIO::TypeDesc::UINT8, int(icc.size())), icc.data());
+        }
         if (target.options.dpi) {
             spec.attribute("XResolution", static_cast<float>(*target.options.dpi));
             spec.attribute("YResolution", static_cast<float>(*target.options.dpi));

@@ -3,6 +3,8 @@
 // where OpenImageIO's dependencies take a third of a second (see ImageSink.h).
 
 #include "ImageSink.h"
+
+#include "SrgbProfile.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/Image.h"
@@ -103,7 +105,11 @@ public:
             png_set_IHDR(mState.png, mState.info, png_uint_32(width), png_uint_32(height), 8,
                          PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE,
                          PNG_FILTER_TYPE_BASE);
-            png_set_sRGB(mState.png, mState.info, PNG_sRGB_INTENT_PERCEPTUAL);
+            // The sRGB profile (SrgbProfile.h) in an iCCP chunk, which layout and print software
+            // reads where it may ignore the sRGB chunk (PNG allows one of the two).
+            const std::vector<unsigned char>& icc = srgbIccProfile();
+            png_set_iCCP(mState.png, mState.info, SrgbIccProfileName, PNG_COMPRESSION_TYPE_BASE, icc.data(),
+                         png_uint_32(icc.size()));
             if (dpi) {
                 auto perMetre = png_uint_32(std::lround(*dpi / 0.0254));
                 png_set_pHYs(mState.png, mState.info, perMetre, perMetre, PNG_RESOLUTION_METER);
@@ -184,6 +190,8 @@ public:
         TIFFSetField(mTiff, TIFFTAG_ZIPQUALITY, 3);
         TIFFSetField(mTiff, TIFFTAG_ROWSPERSTRIP, std::uint32_t(RowsPerStrip));
         TIFFSetField(mTiff, TIFFTAG_SOFTWARE, "Marbler");
+        const std::vector<unsigned char>& icc = srgbIccProfile();
+        TIFFSetField(mTiff, TIFFTAG_ICCPROFILE, std::uint32_t(icc.size()), icc.data());
         // The genome travels with the image, in the XMP packet (GenomeImage.h).
         if (!target.options.genome.empty()) {
             const std::string packet = genomeXmpPacket(target.options.genome);
