@@ -204,6 +204,19 @@ TEST(SourceFormat, EveryAllowedFormatDecodesByItsContentWhateverItsName) {
     }
 }
 
+TEST(SourceFormat, ADamagedImageIsRefusedOnOneLine) {
+    // Found by fuzz_source: OpenImageIO reports each of libpng's errors on a line of its own.
+    SourceCase c;
+    const std::string damaged =
+        "data:image/"
+        "png;base64,iVBORw0KGgoAAAANSUhEUgAAAAQAAAACCAIAAADwyuo0AAAAI0lEQVR4tyGcYycnOMBGw+bEhzs2DCIiIr9+/"
+        "arQWGBz4hIAhF4Lc/CVkv0AAAAASUVORK5CYII=";
+    const std::string error = c.errorOf(damaged);
+    EXPECT_NE(error.find("source.image"), std::string::npos) << error;
+    EXPECT_NE(error.find("IDAT"), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+}
+
 TEST(SourceFormatCli, ADisguisedSourceEndsTheRenderWithOneLine) {
     SourceCase c;
     writeWith("dpx", c.dir / "x.dpx");

@@ -24,6 +24,22 @@ namespace {
 constexpr std::int64_t MaxSourceSide = 32768;
 constexpr std::int64_t MaxSourcePixels = std::int64_t(1) << 26;
 
+/// OpenImageIO's message on one line: its readers report each error of the format library on
+/// a line of its own ("PNG read error: IDAT: incorrect header check\nPNG library error"), and
+/// Marbler's messages are one line (cli.md).
+std::string oneLine(std::string message) {
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+        message.pop_back();
+    std::string out;
+    for (char c : message) {
+        if (c == '\n')
+            out += "; ";
+        else if (c != '\r')
+            out += c;
+    }
+    return out;
+}
+
 bool isLinearColorSpace(const OIIO::ImageSpec& spec) {
     std::string space = spec.get_string_attribute("oiio:ColorSpace");
     std::transform(space.begin(), space.end(), space.begin(),
@@ -52,7 +68,7 @@ LinearRaster readRaster(OIIO::ImageInput& in, const std::string& name) {
     const int channels = spec.nchannels >= 3 ? 3 : 1;
     const OIIO::stride_t pixelStride = OIIO::stride_t(3 * sizeof(float));
     if (!in.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, raster.rgb.data(), pixelStride))
-        throw InputError("source image " + name + ": " + in.geterror());
+        throw InputError("source image " + name + ": " + oneLine(in.geterror()));
     const bool linear = isLinearColorSpace(spec);
     for (std::size_t p = 0; p < count; ++p) {
         float* px = raster.rgb.data() + p * 3;
@@ -70,7 +86,7 @@ std::unique_ptr<OIIO::ImageInput> createReader(const std::string& reader, const 
     auto in = OIIO::ImageInput::create(reader);
     if (!in)
         throw InputError("source image " + name + ": this OpenImageIO has no " + reader +
-                         " reader: " + OIIO::geterror());
+                         " reader: " + oneLine(OIIO::geterror()));
     return in;
 }
 
@@ -104,7 +120,7 @@ public:
             spec.attribute("YResolution", static_cast<float>(*target.options.dpi));
             spec.attribute("ResolutionUnit", "inch");
         }
-        if (!mOut->open(target.file, spec)) fail(mOut->geterror());
+        if (!mOut->open(target.file, spec)) fail(oneLine(mOut->geterror()));
         mOpen = true;
     }
     ~OiioSink() override {
@@ -115,12 +131,12 @@ public:
 
     void writeRows(int y0, int y1, const void* rows) override {
         if (!mOut->write_scanlines(y0, y1, 0, mFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8, rows))
-            fail(mOut->geterror());
+            fail(oneLine(mOut->geterror()));
     }
 
     void finish() override {
         mOpen = false;
-        if (!mOut->close()) fail(mOut->geterror());
+        if (!mOut->close()) fail(oneLine(mOut->geterror()));
         if (mJpegDpi) markJfifDensityInInches();
     }
 
@@ -162,7 +178,7 @@ public:
         auto in = createReader(reader, name);
         OIIO::ImageSpec spec;
         if (!in->open(file, spec))
-            throw InputError("source image " + name + ": cannot load: " + in->geterror());
+            throw InputError("source image " + name + ": cannot load: " + oneLine(in->geterror()));
         LinearRaster raster = readRaster(*in, name);
         in->close();
         return raster;
@@ -176,10 +192,10 @@ public:
                              " image cannot be read from a data URL; save it as a file beside the genome");
         OIIO::Filesystem::IOMemReader memory(const_cast<unsigned char*>(data), size);
         if (!in->set_ioproxy(&memory))
-            throw InputError("source image " + name + ": cannot decode: " + in->geterror());
+            throw InputError("source image " + name + ": cannot decode: " + oneLine(in->geterror()));
         OIIO::ImageSpec spec;
         if (!in->open("source." + reader, spec))
-            throw InputError("source image " + name + ": cannot decode: " + in->geterror());
+            throw InputError("source image " + name + ": cannot decode: " + oneLine(in->geterror()));
         LinearRaster raster = readRaster(*in, name);
         in->close();
         return raster;
