@@ -3,7 +3,8 @@
 # UndefinedBehaviorSanitizer in build-fuzz, then runs fuzz_genome for the given seconds
 # (default 60) from the committed corpus, fuzz_image (genomes inside PNG and TIFF images) for
 # half as long from fuzz/corpus-image, and fuzz_source (a genome's source image through the
-# allow-list and the decoder) for half as long from fuzz/corpus-source. Exits non-zero on a finding; the crashing input is
+# allow-list and the decoder) and fuzz_mesh (a mesh file through its checks and assimp) for
+# half as long each, from fuzz/corpus-source and fuzz/corpus-mesh. Exits non-zero on a finding; the crashing input is
 # left in build-fuzz/findings/.
 #   fuzz/run.sh [SECONDS]
 set -euo pipefail
@@ -15,10 +16,10 @@ cmake -S . -B "$BUILD" -G Ninja \
     -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DMARBLER_FUZZ=ON -DMARBLER_SANITIZE=ON \
     -DMARBLER_BUILD_TESTS=OFF -DMARBLER_BUILD_GUI=OFF -DMARBLER_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$BUILD" --target fuzz_genome fuzz_image fuzz_source -j "$(nproc)"
+cmake --build "$BUILD" --target fuzz_genome fuzz_image fuzz_source fuzz_mesh -j "$(nproc)"
 
 # New inputs go to a corpus under the build folder; the committed seeds are only read.
-mkdir -p "$BUILD/corpus" "$BUILD/corpus-image" "$BUILD/corpus-source" "$BUILD/findings"
+mkdir -p "$BUILD/corpus" "$BUILD/corpus-image" "$BUILD/corpus-source" "$BUILD/corpus-mesh" "$BUILD/findings"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 "$BUILD/fuzz/fuzz_genome" "$BUILD/corpus" fuzz/corpus \
@@ -32,6 +33,12 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1
 # Source images: the decoder may hold a raster of up to 64 megapixels (768 MiB) and the reader's
 # own buffer; one allocation over 2 GiB is a finding.
+LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan-oiio.supp \
 "$BUILD/fuzz/fuzz_source" "$BUILD/corpus-source" fuzz/corpus-source \
+    -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
+    -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+# Meshes: within the caps (16 M vertices, 32 M triangles) assimp may allocate a few GiB for a
+# file that announces that much honestly; inputs here are at most 64 KiB, so far less.
+"$BUILD/fuzz/fuzz_mesh" "$BUILD/corpus-mesh" fuzz/corpus-mesh \
     -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1
