@@ -71,6 +71,23 @@ FittedMesh fitMesh(const MeshData& mesh) {
     return fitted;
 }
 
+glm::dvec3 objectBox(const Genome& genome) {
+    return genome.dimension == 2 ? glm::dvec3(std::max(genome.size.x, genome.size.y)) : genome.size;
+}
+
+bool hasOwnUvs(const MeshData& mesh) {
+    return !mesh.uvsArePatches && !mesh.uvs.empty() && mesh.uvs.size() == mesh.positions.size();
+}
+
+void checkFlatDesignFits(const Genome& genome, bool meshHasOwnUvs, const std::string& meshName) {
+    if (genome.dimension != 2 || meshHasOwnUvs) return;
+    throw InputError("'" + meshName +
+                     "' has no texture coordinates, and a flat design lies on an object's own UVs: "
+                     "export the mesh with UVs (in Blender, unwrap it and export OBJ or glTF with UV "
+                     "coordinates), choose a built-in object (" +
+                     builtinMeshList() + "), or show a solid design on it");
+}
+
 ObjectCamera frameObject(const glm::dvec3& designSize, const FittedMesh& mesh, const MeshSettings& settings) {
     // Fit: the largest uniform scale that keeps the object inside the design box, centred in it.
     // Its positions are then design coordinates, relative to the box centre (the reference).
@@ -151,14 +168,9 @@ MeshGBuffer rasterizeObject(const Genome& genome, const MeshData& mesh, const Me
         if (index >= mesh.positions.size())
             throw InputError("the object's triangles name a vertex it does not have");
     const bool flat = genome.dimension == 2;
-    if (flat && (mesh.uvs.size() != mesh.positions.size() || mesh.uvsArePatches))
-        throw InputError("a flat design lies on an object's own texture coordinates, and this object has "
-                         "none: give it UV coordinates, or show a solid design on it");
+    checkFlatDesignFits(genome, hasOwnUvs(mesh), settings.mesh);
     const FittedMesh fitted = fitMesh(mesh);
-    // A flat design's object stands in a cube as wide as the design; only its texture
-    // coordinates meet the design.
-    const glm::dvec3 box = flat ? glm::dvec3(std::max(genome.size.x, genome.size.y)) : genome.size;
-    const ObjectCamera view = frameObject(box, fitted, settings);
+    const ObjectCamera view = frameObject(objectBox(genome), fitted, settings);
     const int n = settings.supersample;
     const int gw = settings.width * n, gh = settings.height * n;
 
