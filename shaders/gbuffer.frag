@@ -1,8 +1,10 @@
 #version 430 core
-// Pass 1: design-space position and normal per (supersampled) pixel; the marbling is left to
-// pass 2 so each pixel runs the colour rule once per sample, not once per overdrawn fragment.
+// Pass 1: design-space position and normal per (supersampled) pixel, and the texture
+// coordinates there (read by pass 2 for a flat design only); the marbling is left to pass 2 so
+// each pixel runs the colour rule once per sample, not once per overdrawn fragment.
 in vec3 vPosition;
 in vec3 vNormal;
+in vec2 vUv;
 uniform vec3 uEye;        // camera, relative to the box centre
 uniform bool uCut;
 uniform vec3 uCutNormal;  // points into the half that is cut away
@@ -10,6 +12,7 @@ uniform float uCutOffset; // relative to the box centre
 
 layout(location = 0) out vec4 gPosition; // w = 1 where the object covers the pixel
 layout(location = 1) out vec4 gNormal;
+layout(location = 2) out vec2 gUv; // bound only for a flat design
 
 void main() {
     if (uCut && dot(uCutNormal, vPosition) > uCutOffset) discard;
@@ -30,4 +33,5 @@ void main() {
     }
     gPosition = vec4(position, 1.0);
     gNormal = vec4(normal, 0.0);
+    gUv = vUv;
 }

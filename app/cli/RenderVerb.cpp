@@ -50,8 +50,8 @@ options:
   --mesh NAME|FILE          show the design on an object: vase, sphere, cube, torus, teapot,
                             book, cushion, cloth, wall or a mesh file (needs --view); a solid
                             design is carved from its block, a flat one laid on the object's
-                            texture coordinates; drawn by the CPU with no display, or with
-                            --gpu (solids) by OpenGL
+                            texture coordinates (a mesh file needs its own UVs for
+                            that); drawn by the CPU with no display, or with --gpu by OpenGL
   --view YAW,PITCH          orbit camera angles in degrees for --mesh
   --supersample 1|3|5       supersampling of --mesh renders: n x n samples a pixel (default 3)
   --cut NX,NY,NZ,OFFSET     cut the --mesh object open: the part where NX*x + NY*y + NZ*z >
@@ -157,10 +157,6 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
                                     std::to_string(static_cast<int>(genome.size.z / 2)) + ") or --mesh"));
     if (genome.dimension == 2 && settings.slice)
         throw InputError(withGenome("--slice needs a solid (3D) genome; this one is flat (2D)"));
-    if (genome.dimension == 2 && meshMode && args.has("gpu"))
-        throw InputError(
-            withGenome("--gpu draws only solid designs on objects; leave it out and the CPU lays "
-                       "this flat design on the object's texture coordinates"));
 
     // Pixel size: --size with --dpi, else --width/--height keeping the region's aspect, else
     // 1024 on the longer side.

@@ -71,6 +71,23 @@ FittedMesh fitMesh(const MeshData& mesh) {
     return fitted;
 }
 
+glm::dvec3 objectBox(const Genome& genome) {
+    return genome.dimension == 2 ? glm::dvec3(std::max(genome.size.x, genome.size.y)) : genome.size;
+}
+
+bool hasOwnUvs(const MeshData& mesh) {
+    return !mesh.uvsArePatches && !mesh.uvs.empty() && mesh.uvs.size() == mesh.positions.size();
+}
+
+void checkFlatDesignFits(const Genome& genome, bool meshHasOwnUvs, const std::string& meshName) {
+    if (genome.dimension != 2 || meshHasOwnUvs) return;
+    throw InputError("'" + meshName +
+                     "' has no texture coordinates, and a flat design lies on an object's own UVs: "
+                     "export the mesh with UVs (in Blender, unwrap it and export OBJ or glTF with UV "
+                     "coordinates), choose a built-in object (" +
+                     builtinMeshList() + "), or show a solid design on it");
+}
+
 ObjectCamera frameObject(const glm::dvec3& designSize, const FittedMesh& mesh, const MeshSettings& settings) {
     // Fit: the largest uniform scale that keeps the object inside the design box, centred in it.
     // Its positions are then design coordinates, relative to the box centre (the reference).
@@ -151,14 +168,9 @@ MeshGBuffer rasterizeObject(const Genome& genome, const MeshData& mesh, const Me
         if (index >= mesh.positions.size())
             throw InputError("the object's triangles name a vertex it does not have");
     const bool flat = genome.dimension == 2;
-    if (flat && (mesh.uvs.size() != mesh.positions.size() || mesh.uvsArePatches))
-        throw InputError("a flat design lies on an object's own texture coordinates, and this object has "
-                         "none: give it UV coordinates, or show a solid design on it");
+    checkFlatDesignFits(genome, hasOwnUvs(mesh), settings.mesh);
     const FittedMesh fitted = fitMesh(mesh);
-    // A flat design's object stands in a cube as wide as the design; only its texture
-    // coordinates meet the design.
-    const glm::dvec3 box = flat ? glm::dvec3(std::max(genome.size.x, genome.size.y)) : genome.size;
-    const ObjectCamera view = frameObject(box, fitted, settings);
+    const ObjectCamera view = frameObject(objectBox(genome), fitted, settings);
     const int n = settings.supersample;
     const int gw = settings.width * n, gh = settings.height * n;
 
@@ -192,16 +204,43 @@ MeshGBuffer rasterizeObject(const Genome& genome, const MeshData& mesh, const Me
     const double cutOffsetRelative = cutOffset - glm::dot(cutNormal, view.reference);
     const double eyeSide = glm::dot(cutNormal, view.eye) - cutOffsetRelative;
 
-    // Bands of sample rows, each worker owning its band's depth and G-buffer rows.
+    // Bands of sample rows, each worker owning its band's depth and G-buffer rows. Each
+    // triangle is binned once to the bands its rows reach, in the mesh's order (the order the
+    // depth test breaks ties in), so a band visits only its own triangles.
     const int bands = (gh + BandRows - 1) / BandRows;
-    RowLoop rowLoop(0, bands, settings.threads, control);
     const std::size_t triangles = mesh.indices.size() / 3;
+    std::vector<std::size_t> binStart(std::size_t(bands) + 1, 0);
+    std::vector<std::uint32_t> binned;
+    {
+        std::vector<std::pair<int, int>> reach(triangles, {0, -1}); // first and last band
+        for (std::size_t t = 0; t < triangles; ++t) {
+            const ScreenVertex &a = screen[mesh.indices[t * 3]], &b = screen[mesh.indices[t * 3 + 1]],
+                               &c = screen[mesh.indices[t * 3 + 2]];
+            const double minY = std::min({a.y, b.y, c.y}), maxY = std::max({a.y, b.y, c.y});
+            // Samples sit at half-integers: rows j with j + 0.5 in [minY, maxY].
+            const double first = std::max(0.0, std::ceil(minY - 0.5));
+            const double last = std::min(double(gh - 1), std::floor(maxY - 0.5));
+            if (!(first <= last)) continue;
+            reach[t] = {int(first) / BandRows, int(last) / BandRows};
+            for (int band = reach[t].first; band <= reach[t].second; ++band)
+                ++binStart[std::size_t(band) + 1];
+        }
+        for (int band = 0; band < bands; ++band)
+            binStart[std::size_t(band) + 1] += binStart[std::size_t(band)];
+        binned.resize(binStart.back());
+        std::vector<std::size_t> fill(binStart.begin(), binStart.end() - 1);
+        for (std::size_t t = 0; t < triangles; ++t)
+            for (int band = reach[t].first; band <= reach[t].second; ++band)
+                binned[fill[std::size_t(band)]++] = std::uint32_t(t);
+    }
+    RowLoop rowLoop(0, bands, settings.threads, control);
     rowLoop.run([&] {
         std::vector<double> depth(std::size_t(gw) * BandRows);
         for (int band; rowLoop.next(band);) {
             const int y0 = band * BandRows, y1 = std::min(gh, y0 + BandRows);
             std::fill(depth.begin(), depth.end(), std::numeric_limits<double>::infinity());
-            for (std::size_t t = 0; t < triangles; ++t) {
+            for (std::size_t k = binStart[std::size_t(band)]; k < binStart[std::size_t(band) + 1]; ++k) {
+                const std::size_t t = binned[k];
                 const std::uint32_t i0 = mesh.indices[t * 3], i1 = mesh.indices[t * 3 + 1],
                                     i2 = mesh.indices[t * 3 + 2];
                 const ScreenVertex &a = screen[i0], &b = screen[i1], &c = screen[i2];

@@ -191,7 +191,12 @@ TEST(HybridMesh, KeepsTheChecksOfTheMeshRender) {
     gl::GlRenderer& renderer = *test::glRenderer();
     gl::MeshSettings settings;
     settings.width = settings.height = 32;
+    // A flat design needs the object's own texture coordinates, which this file has none of.
+    const std::filesystem::path bare = test::outputDir("hybrid-mesh-checks") / "bare.obj";
+    test::writeFile(bare, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    settings.mesh = bare.string();
     EXPECT_THROW(gl::renderMeshHybrid(renderer, randomGenome(1, 2), settings), InputError);
+    settings.mesh = DefaultMesh;
     settings.supersample = 2;
     EXPECT_THROW(gl::renderMeshHybrid(renderer, randomGenome(1, 3), settings), InputError);
     // A cancelled render stops with Cancelled, not a partial image.

@@ -252,9 +252,12 @@ TEST_F(GlMesh, CutShowsTheInsideAndBadInputsThrow) {
     bad.mesh = "sphere";
     bad.supersample = 4;
     EXPECT_THROW(test::glRenderer()->renderMesh(mGenome, bad), InputError);
-    Genome flat = mGenome;
-    flat.dimension = 2;
-    EXPECT_THROW(test::glRenderer()->renderMesh(flat, gl::MeshSettings{}), InputError);
+    // A flat design lies on the object's own texture coordinates; this file has none.
+    const Genome flat = loadGenome(test::dataDir() / "examples" / "five-stones.marble.json");
+    bad.supersample = 3;
+    bad.mesh = (test::outputDir("gl-mesh-bad") / "bare.obj").string();
+    test::writeFile(bad.mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_THROW(test::glRenderer()->renderMesh(flat, bad), InputError);
 }
 
 } // namespace

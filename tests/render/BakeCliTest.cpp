@@ -3,7 +3,10 @@
 
 #include "RenderTestUtil.h"
 #include "TestUtil.h"
+#include "marbler/Bake.h"
+#include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
 #include "marbler/Mesh.h"
 
 #include <gtest/gtest.h>
@@ -160,6 +163,72 @@ TEST(BakeCli, EveryBuiltInObjectBakesAt256AndKeepsItsUvs) {
             ++count;
         }
         EXPECT_EQ(count, mesh.uvs.size());
+    }
+}
+
+TEST(BakeCli, EveryBuiltInObjectTakesAFlatDesignAt256OnItsOwnUvs) {
+    // Issue 23: a flat design baked onto an object lies on the object's own UVs, the design
+    // itself rather than a projection along z. At 256 texels every built-in bakes; the OBJ
+    // written has the object's UVs, and a texel whose centre lies inside a triangle shows the
+    // design at that texture point (FlatOnUvs: fitted by its longer side, centred).
+    const auto dir = test::outputDir("bake-cli-flat-own-uvs");
+    const std::string design = test::examplePath("flame-comb-vortex.marble.json");
+    const Genome genome = loadGenome(design);
+    const CpuRenderer reference(genome);
+    const FlatOnUvs flat(genome);
+    constexpr int n = 256;
+    for (const std::string& name : builtinMeshNames()) {
+        SCOPED_TRACE(name);
+        const fs::path obj = dir / (name + ".obj");
+        auto r = runMarbler({"bake", design, "--mesh", name, "-o", obj.string(), "--texture",
+                             std::to_string(n), "--aa", "none", "--quiet"});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_TRUE(r.err.empty()) << r.err;
+
+        // The UVs read back from the file are the object's (vt counts v upwards).
+        const MeshData mesh = builtinMesh(name);
+        std::vector<glm::dvec2> uvs;
+        std::istringstream lines(test::readFile(obj));
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("vt ", 0) != 0) continue;
+            float u = 0.0f, v = 0.0f;
+            ASSERT_EQ(std::sscanf(line.c_str(), "vt %f %f", &u, &v), 2) << line;
+            uvs.emplace_back(u, 1.0 - double(v));
+        }
+        ASSERT_EQ(uvs.size(), mesh.uvs.size());
+        for (std::size_t k = 0; k < uvs.size(); ++k) {
+            EXPECT_NEAR(uvs[k].x, mesh.uvs[k].x, 1e-6);
+            EXPECT_NEAR(uvs[k].y, mesh.uvs[k].y, 1e-6);
+        }
+
+        // Texels inside a triangle, by the file's UVs, show the design at their texture point.
+        const Image texture = test::readImage8(dir / (name + ".png"));
+        ASSERT_EQ(texture.width, n);
+        int checked = 0, differing = 0;
+        for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+            const glm::dvec2 a = uvs[mesh.indices[t]], b = uvs[mesh.indices[t + 1]],
+                             c = uvs[mesh.indices[t + 2]];
+            const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+            const glm::dvec2 lo = glm::min(a, glm::min(b, c)) * double(n),
+                             hi = glm::max(a, glm::max(b, c)) * double(n);
+            for (int j = std::max(0, int(lo.y)); j < std::min(n, int(hi.y) + 1); ++j)
+                for (int i = std::max(0, int(lo.x)); i < std::min(n, int(hi.x) + 1); ++i) {
+                    const glm::dvec2 q((i + 0.5) / n, (j + 0.5) / n);
+                    // Inside by a margin, so the texel belongs to this triangle alone.
+                    const double w0 = ((c.x - b.x) * (q.y - b.y) - (c.y - b.y) * (q.x - b.x)) / area;
+                    const double w1 = ((a.x - c.x) * (q.y - c.y) - (a.y - c.y) * (q.x - c.x)) / area;
+                    const double w2 = 1.0 - w0 - w1;
+                    if (!(std::min({w0, w1, w2}) > 0.05)) continue;
+                    const glm::dvec3 p = flat.designPoint(q);
+                    const int ink = flat.inside(p) ? reference.colorIndexAt(p) : -1;
+                    const Color expected = ink >= 0 ? genome.palette[std::size_t(ink)] : genome.background;
+                    const std::uint8_t* got = texture.row(j) + i * 3;
+                    differing += got[0] != expected.r || got[1] != expected.g || got[2] != expected.b;
+                    ++checked;
+                }
+        }
+        EXPECT_GT(checked, n * n / 20);
+        EXPECT_LE(differing, checked / 100) << differing << " of " << checked << " texels differ";
     }
 }
 

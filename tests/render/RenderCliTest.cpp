@@ -123,9 +123,7 @@ TEST(RenderCli, BadInputExitsTwoWithOneLineAndNoOutput) {
     expectFailure({"render", good, "-o", out, "--size", "10x10furlong", "--dpi", "300"}, 2, "--size", out);
     expectFailure({"render", good, "-o", (dir / "out.xyz").string()}, 2, "out.xyz", dir / "out.xyz");
     expectFailure({"render", good}, 2, "-o", out);
-    // A flat design goes on an object through the CPU only (ObjectViewTest draws it).
-    expectFailure({"render", good, "-o", out, "--mesh", "vase", "--view", "30,20", "--gpu"}, 2, "five-stones",
-                  out);
+    // A flat design on an object with --gpu is drawn now (tests/gl/GlFlatObjectTest.cpp).
 }
 
 TEST(RenderCli, EveryVerbRefusesABadSliceInTheSameWords) {

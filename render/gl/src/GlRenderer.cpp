@@ -3,6 +3,7 @@
 #include "GlContext.h"
 #include "GlProgram.h"
 #include "OpPacking.h"
+#include "marbler/Bake.h"
 #include "marbler/Error.h"
 #include "marbler/SourceDecoder.h"
 #include "marbler/Tools.h"
@@ -57,19 +58,11 @@ glm::vec3 linearColor(Color c) {
             float(srgbToLinear(c.b / 255.0))};
 }
 
-/// The GL passes draw solid designs on objects; flat ones, laid on the texture coordinates,
-/// are drawn by the CPU's object path (ObjectView.h).
-void checkSolidOnObject(const Genome& genome) {
-    if (genome.dimension != 3)
-        throw InputError(
-            "the GPU draws only solid designs on objects; the CPU draws a flat one on an object's "
-            "texture coordinates (leave out --gpu)");
-}
-
-/// The G-buffer's GL objects, freed together.
+/// The G-buffer's GL objects, freed together: positions, normals and (a flat design's only)
+/// texture coordinates.
 struct GBufferTargets {
     QOpenGLFunctions_4_3_Core* gl = nullptr;
-    GLuint textures[2] = {0, 0}, depth = 0, fbo = 0;
+    GLuint textures[3] = {0, 0, 0}, depth = 0, fbo = 0;
     explicit GBufferTargets(QOpenGLFunctions_4_3_Core* functions)
         : gl(functions) {}
     GBufferTargets(const GBufferTargets&) = delete;
@@ -78,7 +71,7 @@ struct GBufferTargets {
         gl->glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (fbo) gl->glDeleteFramebuffers(1, &fbo);
         if (depth) gl->glDeleteRenderbuffers(1, &depth);
-        gl->glDeleteTextures(2, textures);
+        gl->glDeleteTextures(3, textures);
     }
 };
 
@@ -102,7 +95,7 @@ struct GlRenderer::Impl {
     QOpenGLFunctions_4_3_Core* gl = nullptr;
     GlProgram raster[48]; // by dimension, source image and features (buildRaster)
     GlProgram gbuffer;
-    GlProgram mesh[12]; // by features (buildShading)
+    GlProgram mesh[48]; // by dimension, source image and features (buildShading)
     GLuint emptyVao = 0;
     GLuint opBuffer = 0;
     GLuint opTexture = 0; // the buffer texture over opBuffer
@@ -118,6 +111,7 @@ struct GlRenderer::Impl {
     GLsizei meshIndexCount = 0;
     /// The vertices relative to the box centre (before the fit's scale), for framing.
     FittedMesh meshFit;
+    bool meshHasOwnUvs = false; ///< hasOwnUvs: a flat design can lie on the mesh
 
     void makeCurrent() {
         if (!parts.context->makeCurrent(parts.surface.get()))
@@ -161,15 +155,38 @@ struct GlRenderer::Impl {
                                  {GL_FRAGMENT_SHADER, assembledShader("gbuffer.frag")}});
     }
 
-    /// Pass 2 of a mesh render, the colour rule per sample.
-    GlProgram& buildShading(Features features) {
-        GlProgram& program = mesh[features.index()];
+    /// Pass 2 of a mesh render, the colour rule per sample: at the sample's point of a solid, or
+    /// at its texture point of a flat design (dimension 2, with its source image if it has one).
+    GlProgram& buildShading(int dimension, bool hasSource, Features features) {
+        GlProgram& program = mesh[(dimension == 3 ? 2 : 0) + (hasSource ? 1 : 0) + 4 * features.index()];
         if (!program.id())
-            program = GlProgram(
-                *gl, "mesh",
-                {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
-                 {GL_FRAGMENT_SHADER, withDefines(assembledShader("mesh.frag"), 3, false, features)}});
+            program = GlProgram(*gl, "mesh",
+                                {{GL_VERTEX_SHADER, assembledShader("fullscreen.vert")},
+                                 {GL_FRAGMENT_SHADER, withDefines(assembledShader("mesh.frag"), dimension,
+                                                                  hasSource, features)}});
         return program;
+    }
+
+    /// A flat design's source image on unit 2, decoded by the CPU renderer's own decoder: the
+    /// same pixels in linear light, the same refusals.
+    void bindSource(const Genome& genome) {
+        const LinearRaster image = decodeSourceImage(genome);
+        if (!sourceTexture) gl->glGenTextures(1, &sourceTexture);
+        gl->glActiveTexture(GL_TEXTURE2);
+        gl->glBindTexture(GL_TEXTURE_2D, sourceTexture);
+        gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        // Linear floats, filtered as they are: bilinear in linear light, as the spec asks (and
+        // values beyond 1 from a linear image are kept, as the CPU keeps them); clamping to the
+        // edge texels is the spec's rule within the design space.
+        gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image.width, image.height, 0, GL_RGB, GL_FLOAT,
+                         image.rgb.data());
+        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        gl->glActiveTexture(GL_TEXTURE0);
     }
 
     /// The genome's operations relative to `reference` into the storage buffer, and the inks,
@@ -254,14 +271,16 @@ struct GlRenderer::Impl {
         if (name == meshName && meshVao) return;
         MeshData data = meshByNameOrFile(name);
         meshFit = fitMesh(data);
+        meshHasOwnUvs = hasOwnUvs(data);
         std::vector<float> vertices;
-        vertices.reserve(data.positions.size() * 6);
+        vertices.reserve(data.positions.size() * VertexFloats);
         for (std::size_t v = 0; v < data.positions.size(); ++v) {
             const glm::dvec3& p = meshFit.points[v]; // about the box centre, fitted later by a uniform scale
             glm::vec3 n = data.normals[v];
             float len = glm::length(n);
             n = len > 0.0f ? n / len : glm::vec3(0, 1, 0);
-            vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z), n.x, n.y, n.z});
+            const glm::vec2 uv = meshHasOwnUvs ? data.uvs[v] : glm::vec2(0.0f);
+            vertices.insert(vertices.end(), {float(p.x), float(p.y), float(p.z), n.x, n.y, n.z, uv.x, uv.y});
         }
         if (!meshVao) {
             gl->glGenVertexArrays(1, &meshVao);
@@ -275,11 +294,15 @@ struct GlRenderer::Impl {
         gl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, meshIbo);
         gl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(data.indices.size() * sizeof(std::uint32_t)),
                          data.indices.data(), GL_STATIC_DRAW);
+        const GLsizei stride = VertexFloats * sizeof(float);
         gl->glEnableVertexAttribArray(0);
-        gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+        gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
         gl->glEnableVertexAttribArray(1);
-        gl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+        gl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
                                   reinterpret_cast<const void*>(3 * sizeof(float)));
+        gl->glEnableVertexAttribArray(2);
+        gl->glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride,
+                                  reinterpret_cast<const void*>(6 * sizeof(float)));
         gl->glBindVertexArray(0);
         meshIndexCount = GLsizei(data.indices.size());
         meshName = name;
@@ -302,8 +325,12 @@ struct GlRenderer::Impl {
         gl = nullptr;
     }
 
-    /// Pass 1 of a mesh render: the object's design-space positions and normals at n x n
-    /// samples per output pixel, into `targets` (left bound as the framebuffer).
+    /// A vertex on the GPU: position, normal, texture coordinates.
+    static constexpr int VertexFloats = 8;
+
+    /// Pass 1 of a mesh render: the object's design-space positions and normals (and a flat
+    /// design's texture coordinates) at n x n samples per output pixel, into `targets` (left
+    /// bound as the framebuffer). Throws InputError for a flat design on a mesh without UVs.
     ObjectCamera drawGBuffer(const Genome& genome, const MeshSettings& settings, const glm::dvec3& cutNormal,
                              double cutOffset, GBufferTargets& targets);
 
@@ -418,26 +445,7 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
 
     // Unit 2: units 0 and 1 get rebound by the targets and the mesh G-buffer.
     gl->glUniform1i(raster.uniform("uSource"), 2);
-    if (hasSource) {
-        // The CPU renderer's own decoder: the same pixels in linear light, the same refusals.
-        const LinearRaster image = decodeSourceImage(genome);
-        if (!d.sourceTexture) gl->glGenTextures(1, &d.sourceTexture);
-        gl->glActiveTexture(GL_TEXTURE2);
-        gl->glBindTexture(GL_TEXTURE_2D, d.sourceTexture);
-        gl->glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-        // Linear floats, filtered as they are: bilinear in linear light, as the spec asks (and
-        // values beyond 1 from a linear image are kept, as the CPU keeps them); clamping to the
-        // edge texels is the spec's rule within the design space.
-        gl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, image.width, image.height, 0, GL_RGB, GL_FLOAT,
-                         image.rgb.data());
-        gl->glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        gl->glActiveTexture(GL_TEXTURE0);
-    }
+    if (hasSource) d.bindSource(genome);
 
     int side = std::min({MaxTileSide, d.limit(GL_MAX_RENDERBUFFER_SIZE), d.limit(GL_MAX_TEXTURE_SIZE)});
     GLint viewport[2] = {0, 0};
@@ -515,8 +523,8 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
     glm::dvec3 cutNormal;
     double cutOffset = 0.0;
     checkMeshSettings(genome, settings, cutNormal, cutOffset);
-    checkSolidOnObject(genome);
     const int n = settings.supersample;
+    const bool flat = genome.dimension == 2;
     Impl& d = *mImpl;
     d.makeCurrent();
     auto* gl = d.gl;
@@ -536,13 +544,27 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
         d.makeTarget(settings.width, settings.height, outputFbo, outputTexture);
         gl->glViewport(0, 0, settings.width, settings.height);
         std::vector<PreparedOp> ops = prepare(genome);
-        GlProgram& mesh = d.buildShading(featuresOf(genome, ops));
+        const bool hasSource = flat && genome.source.has_value();
+        GlProgram& mesh = d.buildShading(genome.dimension, hasSource, featuresOf(genome, ops));
         gl->glUseProgram(mesh.id());
-        d.uploadGenome(mesh, ops, genome, view.reference);
+        // A solid's operations relative to the box centre, where the G-buffer's points are; a
+        // flat design's relative to its own centre, where the texture's middle lies.
+        const FlatOnUvs flatOnUvs(genome);
+        d.uploadGenome(mesh, ops, genome, flat ? glm::dvec3(0.5 * flatOnUvs.size, 0.0) : view.reference);
+        if (hasSource) d.bindSource(genome);
         gl->glActiveTexture(GL_TEXTURE0);
         gl->glBindTexture(GL_TEXTURE_2D, targets.textures[0]);
         gl->glActiveTexture(GL_TEXTURE1);
         gl->glBindTexture(GL_TEXTURE_2D, targets.textures[1]);
+        if (flat) {
+            // Unit 6: 2 holds the source image, 3 to 5 the operations' buffers.
+            gl->glActiveTexture(GL_TEXTURE6);
+            gl->glBindTexture(GL_TEXTURE_2D, targets.textures[2]);
+            gl->glUniform1i(mesh.uniform("uUvs"), 6);
+            gl->glUniform1f(mesh.uniform("uFlatSide"), float(flatOnUvs.side));
+            gl->glUniform2f(mesh.uniform("uFlatHalf"), float(0.5 * flatOnUvs.size.x),
+                            float(0.5 * flatOnUvs.size.y));
+        }
         gl->glActiveTexture(GL_TEXTURE0);
         gl->glUniform1i(mesh.uniform("uPositions"), 0);
         gl->glUniform1i(mesh.uniform("uNormals"), 1);
@@ -588,7 +610,6 @@ MeshGBuffer GlRenderer::renderMeshGBuffer(const Genome& genome, const MeshSettin
     glm::dvec3 cutNormal;
     double cutOffset = 0.0;
     checkMeshSettings(genome, settings, cutNormal, cutOffset);
-    checkSolidOnObject(genome);
     Impl& d = *mImpl;
     d.makeCurrent();
     auto* gl = d.gl;
@@ -611,6 +632,11 @@ MeshGBuffer GlRenderer::renderMeshGBuffer(const Genome& genome, const MeshSettin
     gl->glReadPixels(0, 0, gw, gh, GL_RGBA, GL_FLOAT, result.positions.data());
     gl->glReadBuffer(GL_COLOR_ATTACHMENT1);
     gl->glReadPixels(0, 0, gw, gh, GL_RGBA, GL_FLOAT, result.normals.data());
+    if (genome.dimension == 2) {
+        result.uvs.resize(std::size_t(gw) * std::size_t(gh) * 2);
+        gl->glReadBuffer(GL_COLOR_ATTACHMENT2);
+        gl->glReadPixels(0, 0, gw, gh, GL_RG, GL_FLOAT, result.uvs.data());
+    }
     gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
     d.checkErrors("the G-buffer read-back");
     return result;
@@ -623,19 +649,22 @@ ObjectCamera GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSetti
     const int n = settings.supersample;
     d.buildMesh();
     d.loadMeshToGpu(settings.mesh);
+    const bool flat = genome.dimension == 2;
+    checkFlatDesignFits(genome, d.meshHasOwnUvs, settings.mesh);
     int gw = settings.width * n, gh = settings.height * n;
     if (gw > d.limit(GL_MAX_TEXTURE_SIZE) || gh > d.limit(GL_MAX_TEXTURE_SIZE))
         throw InputError("mesh render too large for this GPU at " + std::to_string(n) + "x" +
                          std::to_string(n) + " supersampling");
 
-    const ObjectCamera view = frameObject(genome.size, d.meshFit, settings);
+    const ObjectCamera view = frameObject(objectBox(genome), d.meshFit, settings);
     glm::mat4 viewProjection(view.viewProjection);
     const double scale = view.scale;
 
-    gl->glGenTextures(2, targets.textures);
-    for (GLuint t : targets.textures) {
-        gl->glBindTexture(GL_TEXTURE_2D, t);
-        gl->glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, gw, gh);
+    const int targetCount = flat ? 3 : 2;
+    gl->glGenTextures(targetCount, targets.textures);
+    for (int k = 0; k < targetCount; ++k) {
+        gl->glBindTexture(GL_TEXTURE_2D, targets.textures[k]);
+        gl->glTexStorage2D(GL_TEXTURE_2D, 1, k == 2 ? GL_RG32F : GL_RGBA32F, gw, gh);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         gl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
@@ -646,13 +675,16 @@ ObjectCamera GlRenderer::Impl::drawGBuffer(const Genome& genome, const MeshSetti
     gl->glBindFramebuffer(GL_FRAMEBUFFER, targets.fbo);
     gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, targets.textures[0], 0);
     gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, targets.textures[1], 0);
+    if (flat)
+        gl->glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D, targets.textures[2],
+                                   0);
     gl->glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, targets.depth);
     d.checkFramebuffer("G-buffer");
-    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    gl->glDrawBuffers(2, buffers);
+    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    gl->glDrawBuffers(targetCount, buffers);
     const float zero[4] = {0, 0, 0, 0};
-    gl->glClearBufferfv(GL_COLOR, 0, zero);
-    gl->glClearBufferfv(GL_COLOR, 1, zero);
+    for (int k = 0; k < targetCount; ++k)
+        gl->glClearBufferfv(GL_COLOR, k, zero);
     gl->glClear(GL_DEPTH_BUFFER_BIT);
     gl->glViewport(0, 0, gw, gh);
     gl->glEnable(GL_DEPTH_TEST);

@@ -89,6 +89,18 @@ struct FittedMesh {
 /// `mesh`'s vertices about its bounding-box centre.
 FittedMesh fitMesh(const MeshData& mesh);
 
+/// The box an object is fitted into: a solid design's own block; for a flat design, a cube as
+/// wide as the design's longer side (only its texture coordinates meet the design).
+glm::dvec3 objectBox(const Genome& genome);
+
+/// Whether `mesh` has texture coordinates of its own, one a vertex (not bake's generated
+/// patches, uvsArePatches), on which a flat design can lie.
+bool hasOwnUvs(const MeshData& mesh);
+
+/// Throws InputError, naming `meshName`, when a flat design is to be shown on a mesh without
+/// its own texture coordinates (`meshHasOwnUvs` false); does nothing for a solid design.
+void checkFlatDesignFits(const Genome& genome, bool meshHasOwnUvs, const std::string& meshName);
+
 /// Where the camera and the key light are for an object fitted into a design box: the largest
 /// uniform scale that keeps the object inside the box, centred in it, seen from the orbit camera
 /// of `settings` (framed when its distance is 0).

@@ -1,6 +1,6 @@
 #pragma once
 /// The OpenGL shader back end: renders genomes offscreen (framebuffer objects on a
-/// QOffscreenSurface), 2D designs, 3D slices and solid genomes on meshes. Qt's OpenGL types stay
+/// QOffscreenSurface), 2D designs, 3D slices, and solid and flat genomes on meshes. Qt's OpenGL types stay
 /// in the implementation (pimpl), so users of this header need only QtGui's QImage-free API.
 
 #include "marbler/Genome.h"
@@ -48,12 +48,15 @@ public:
     /// Throws InputError for bad settings, RuntimeFailure for GL failures.
     Image render(const Genome& genome, const RenderSettings& settings);
 
-    /// Renders a solid genome on an object fitted into its design box. Throws InputError for a
-    /// 2D genome or a mesh that cannot be loaded.
+    /// Renders a design on an object, as the CPU's object path does (ObjectView.h): a solid
+    /// genome carved from its design box, a flat one laid on the object's own texture
+    /// coordinates (looked up at every sample through the inverse maps). Throws InputError for
+    /// a mesh that cannot be loaded, or a flat genome on a mesh without texture coordinates.
     Image renderMesh(const Genome& genome, const MeshSettings& settings);
 
-    /// Only the rasterising pass of renderMesh (same checks and throws), read back; see
-    /// shadeMeshOnCpu (HybridMesh.h) for the other pass.
+    /// Only the rasterising pass of renderMesh (same checks and throws), read back, with the
+    /// texture coordinates for a flat genome; see shadeMeshOnCpu (HybridMesh.h) for the other
+    /// pass.
     MeshGBuffer renderMeshGBuffer(const Genome& genome, const MeshSettings& settings);
 
     /// The driver's renderer string (e.g. "llvmpipe (LLVM 15.0.6, 256 bits)").

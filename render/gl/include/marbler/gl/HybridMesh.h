@@ -1,8 +1,9 @@
 #pragma once
-/// A solid design on an object with the CPU kernel doing the marbling: GL (even a software
-/// rasteriser) rasterises only the G-buffer of positions and normals, which is cheap, and the
-/// kernel evaluates the colour rule at those points on every core, which is the expensive part
-/// and where a software rasteriser is several times slower than the kernel.
+/// A design on an object with the CPU kernel doing the marbling: GL (even a software
+/// rasteriser) rasterises only the G-buffer of positions and normals (and a flat design's
+/// texture coordinates), which is cheap, and the kernel evaluates the colour rule at those
+/// points on every core, which is the expensive part and where a software rasteriser is
+/// several times slower than the kernel.
 
 #include "marbler/CpuRenderer.h"
 #include "marbler/ObjectView.h"
