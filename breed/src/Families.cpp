@@ -403,18 +403,24 @@ void serpentineRake(Bath& b, double angle, double spacing, double amplitude, dou
              lambda, reach, tines, spacing);
 }
 
-/// The bouquet rake: tines three rows of points apart, a gentle swing, a narrow pull. Across a
-/// rake of many tines the stylus's sideways flow adds up (the spec's stream function keeps its
-/// full strength to the side), so the pull times its sharpness stays small and the curve
-/// gentle: else the whole bath is swept about and the nonpareil is lost.
+/// The bouquet rake: tines four rows of points apart, swung a third of their spacing to each
+/// side, a narrow pull that moves the rows without dragging them off (c = 15 alpha / (16 reach)
+/// about 0.4). Its cost is what bounds it: a rake's fewest steps grow with its tines, so its
+/// time with their square, and with its pull, reach over lambda and lambda over reach
+/// (genome-format.md, stylus): eight tines 160-175 apart, reach 44-48 and a pull of 18-24 render
+/// seed 21 at 300 pixels some four times quicker than the twelve tines of 100-120 before them,
+/// and the wider swing and shorter reach read as fans where those read as waves. Across many
+/// tines the stylus's sideways flow does not fall off (the spec's stream function keeps its
+/// strength to the side), so the pull times its sharpness stays small and the reach short
+/// beside the swing's wavelength: else the whole bath is swept about and the nonpareil lost.
 struct BouquetRake {
     double spacing, amplitude, wavelength, alpha, lambda, reach;
 };
 BouquetRake bouquetRake(Bath& b) {
-    const double spacing = b.pick(100, 120);
-    return {spacing,          tenth(spacing * b.rng.uniform(0.25, 0.3)),
-            b.pick(180, 240), b.pick(30, 40),
-            b.pick(3, 4),     80.0};
+    const double spacing = b.pick(160, 175);
+    return {spacing,          tenth(spacing * b.rng.uniform(0.3, 0.36)),
+            b.pick(190, 230), b.pick(18, 24),
+            b.pick(4.5, 5.5), b.pick(44, 48)};
 }
 
 void bouquet(Bath& b) {
@@ -427,12 +433,13 @@ void bouquet(Bath& b) {
 
 void peacock(Bath& b) {
     const double across = nonpareil(b);
-    // The bouquet's serpentine rake, then the same rake drawn back with its tines between the
-    // first's and its swing the other way: each fan is closed into the round "eye" of a feather.
+    // The bouquet's serpentine rake, then the same rake drawn back more gently (six tenths of
+    // the pull: half its cost again, not all of it) with its tines between the first's and its
+    // swing the other way: each fan is closed into the round "eye" of a feather.
     const BouquetRake r = bouquetRake(b);
     serpentineRake(b, across, r.spacing, r.amplitude, r.wavelength, r.alpha, r.lambda, r.reach);
-    serpentineRake(b, across + 180.0, r.spacing, r.amplitude, r.wavelength, r.alpha, r.lambda, r.reach, 0.5,
-                   0.5);
+    serpentineRake(b, across + 180.0, r.spacing, r.amplitude, r.wavelength, 0.6 * r.alpha, r.lambda, r.reach,
+                   0.5, 0.5);
 }
 
 void frenchCurl(Bath& b) {
@@ -639,6 +646,34 @@ void carnation(Bath& b) {
             }
 }
 
+void curls(Bath& b) {
+    // Free-hand French curls: a combed ground (a gel-git), then the stylus drawn in a spiral
+    // from outside in at every point of a grid, each turning the other way from its neighbours,
+    // winding the combed lines it crosses round into a curl. Found by looking (seed 21 at 240
+    // pixels): a pull just short of dragging ink along (c = 15 alpha / (16 reach) 0.85-1), a
+    // reach some two fifths of the curl's radius and a path of 48 points a turn read as curls;
+    // a stronger, sharper pull or a shorter reach threw radial spikes round each curl instead
+    // (the stylus's sideways flow does not fall off, and it turns at every corner of the path).
+    gelGit(b);
+    const int n = b.rng.between(3, 4);
+    const double cell = 1000.0 / n;
+    const double outer = cell * b.rng.uniform(0.28, 0.32), turns = b.rng.uniform(1.4, 1.75);
+    const double reach = outer * b.rng.uniform(0.38, 0.45);
+    const double alpha = reach * b.rng.uniform(0.91, 1.07), lambda = reach * b.rng.uniform(0.22, 0.28);
+    const int points = static_cast<int>(std::ceil(48.0 * turns)) + 1;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double sign = ((i + j) % 2) ? 1.0 : -1.0, start = b.rng.uniform(0.0, 1.0);
+            const glm::dvec2 centre{(i + 0.5) * cell, (j + 0.5) * cell};
+            std::vector<glm::dvec2> path;
+            for (int k = 0; k < points; ++k) {
+                const double t = double(k) / (points - 1);
+                path.push_back(centre + outer * (1.0 - 0.7 * t) * cosSinOfTurns(start + sign * turns * t));
+            }
+            b.stylus(path, alpha, lambda, reach);
+        }
+}
+
 // Solid families.
 
 void veined(Bath& b) {
@@ -685,7 +720,7 @@ struct Recipe {
     void (*make)(Bath&);
 };
 
-constexpr std::array<Recipe, 19> Recipes{{
+constexpr std::array<Recipe, 20> Recipes{{
     {{"stone", 2, "battal: drops only, big first, later colours smaller"}, 3, 5, stone},
     {{"gel-git", 2, "stone combed one way and back (come and go)"}, 3, 4, gelGit},
     {{"chevron", 2, "gel-git, then one wide comb across: rows of chevrons"}, 3, 4, chevron},
@@ -702,6 +737,7 @@ constexpr std::array<Recipe, 19> Recipes{{
     {{"hearts", 2, "ebru hearts: rows of ringed drops, a stylus drawn through each row"}, 3, 5, hearts},
     {{"tulip", 2, "lale: ringed drops pulled into cups by a short stroke each"}, 3, 5, tulip},
     {{"carnation", 2, "karanfil: ringed drops fringed by short strokes round the edge"}, 3, 5, carnation},
+    {{"curls", 2, "free-hand French curl: a stylus drawn in spirals through a gel-git"}, 3, 4, curls},
     {{"veined", 3, "solid: spheres of ink drawn into veins by combs"}, 2, 4, veined},
     {{"agate", 3, "solid: columns of banded ink, waved"}, 3, 5, agate},
     {{"granite", 3, "solid: speckles over close-packed grains"}, 3, 5, granite},

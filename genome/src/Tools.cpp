@@ -1,5 +1,7 @@
 #include "marbler/Tools.h"
 
+#include "marbler/Atan.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -166,15 +168,18 @@ glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau)
     const glm::dvec2 t = op.along[station.segment], n(-t.y, t.x);
     const glm::dvec2 s = station.s;
     const double c = station.c;
+    // Divides are the slowest of the basic operations: by the reciprocals of l and lambda, and
+    // c lambda / l once (the kernel, stylus2, rounds the same way).
+    const double toU = 1.0 / op.reach, toQ = 1.0 / op.lambda, side = c * op.lambda * toU;
     glm::dvec2 v(0.0);
     for (int j = 0; j < op.tines; ++j) {
         const double offset = (j - 0.5 * (op.tines - 1)) * op.spacing;
         const glm::dvec2 r = p - s - offset * n;
-        const double u = glm::dot(r, t) / op.reach;
+        const double u = glm::dot(r, t) * toU;
         if (!(std::abs(u) < 1.0)) continue; // w = w' = 0
-        const double q = glm::dot(r, n) / op.lambda;
+        const double q = glm::dot(r, n) * toQ;
         const double w = (1.0 - u * u) * (1.0 - u * u), dw = -4.0 * u * (1.0 - u * u);
-        v += c * w / (1.0 + q * q) * t - c * op.lambda * std::atan(q) * dw / op.reach * n;
+        v += c * w / (1.0 + q * q) * t - side * vectorAtan(q) * dw * n;
     }
     return v;
 }

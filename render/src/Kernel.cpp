@@ -17,6 +17,8 @@
 
 #include "Kernel.h"
 
+#include "marbler/Atan.h"
+
 #include <algorithm>
 #include <atomic>
 #include <bit>
@@ -930,6 +932,7 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
         widest = std::max(widest, std::abs(offset[j]));
     }
     const double h = -op.step, step = op.step, tolerance = op.tolerance, lambda = op.lambda, reach = op.reach;
+    const double toU = 1.0 / reach, toQ = 1.0 / lambda; // as stylusVelocity divides
     const StylusStation* stations = op.stations.data();
     const glm::dvec2* along = op.along.data();
     const glm::dvec2* path = op.path.data();
@@ -1034,10 +1037,10 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
     }
 
     // Each step runs for the points waiting on it together, lane by lane as flow2 does: the
-    // velocity a tine at a time (its arctangents a point at a time, the library's), and the
+    // velocity a tine at a time (its arctangents too: vectorAtan, Atan.h, as the reference), and the
     // fixed-point iteration until every lane has settled, a settled lane keeping its value.
     alignas(64) double px[TileSize], py[TileSize], nextX[TileSize], nextY[TileSize], vx[TileSize],
-        vy[TileSize], ex[TileSize], ey[TileSize], us[TileSize], qs[TileSize], arc[TileSize];
+        vy[TileSize], ex[TileSize], ey[TileSize], us[TileSize], qs[TileSize];
     alignas(64) std::int64_t alive[TileSize], reached[TileSize];
     int lane[TileSize];
     for (int k = steps; k-- > 0;) {
@@ -1048,7 +1051,7 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
         stylusStepsRun += static_cast<std::uint64_t>(m);
         const StylusStation& station = stations[k];
         const double tx = along[station.segment].x, ty = along[station.segment].y, nx = -ty, ny = tx;
-        const double sx = station.s.x, sy = station.s.y, c = station.c;
+        const double sx = station.s.x, sy = station.s.y, c = station.c, side = c * lambda * toU;
         for (int j = 0; j < m; ++j) {
             px[j] = t.x[lane[j]];
             py[j] = t.y[lane[j]];
@@ -1068,21 +1071,21 @@ template <bool Cavity> [[gnu::always_inline]] inline void flow2(const PreparedOp
                 MARBLER_IVDEP
                 for (int j = 0; j < m; ++j) {
                     const double rx = (qx[j] - sx) - o * nx, ry = (qy[j] - sy) - o * ny;
-                    const double u = (rx * tx + ry * ty) / reach;
+                    const double u = (rx * tx + ry * ty) * toU;
                     const std::int64_t in = (std::abs(u) < 1.0) & (alive[j] != 0);
                     us[j] = u;
-                    qs[j] = (rx * nx + ry * ny) / lambda;
+                    qs[j] = (rx * nx + ry * ny) * toQ;
                     reached[j] = in;
                     any |= in;
                 }
                 if (!any) continue;
-                for (int j = 0; j < m; ++j)
-                    arc[j] = reached[j] ? std::atan(qs[j]) : 0.0;
+                // Every lane, reached or not (the arctangent is branch-free, Atan.h), so that
+                // the loop vectorises; a lane out of reach keeps its velocity below.
                 MARBLER_IVDEP
                 for (int j = 0; j < m; ++j) {
                     const double u = us[j], q = qs[j];
                     const double w = (1.0 - u * u) * (1.0 - u * u), dw = -4.0 * u * (1.0 - u * u);
-                    const double a = c * w / (1.0 + q * q), b = c * lambda * arc[j] * dw / reach;
+                    const double a = c * w / (1.0 + q * q), b = side * vectorAtan(q) * dw;
                     const bool in = reached[j] != 0;
                     vx[j] = in ? vx[j] + (a * tx - b * nx) : vx[j];
                     vy[j] = in ? vy[j] + (a * ty - b * ny) : vy[j];

@@ -4,6 +4,7 @@
 
 #include "TestUtil.h"
 
+#include "marbler/Atan.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
@@ -15,8 +16,11 @@
 #include <glm/matrix.hpp>
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 using namespace marbler;
@@ -512,5 +516,60 @@ TEST(Maps, ForwardPushesOutOfTheInk) {
                 }
             }
         }
+    }
+}
+
+namespace {
+
+/// How many doubles lie between a and b (both finite, of one sign).
+std::uint64_t ulpsApart(double a, double b) {
+    const auto ia = std::bit_cast<std::int64_t>(a), ib = std::bit_cast<std::int64_t>(b);
+    return static_cast<std::uint64_t>(ia > ib ? ia - ib : ib - ia);
+}
+
+} // namespace
+
+TEST(Atan, AgreesWithTheLibraryWithinFourUlps) {
+    // The stylus's arctangent (Atan.h) replaced the C library's in the reference and the kernel:
+    // a few ulps from the correctly rounded value everywhere, its argument reduction (beyond 1)
+    // included, so the maps move by far less than the conformance's 1e-6.
+    Pcg32 rng(24);
+    std::uint64_t worst = 0;
+    double worstAt = 0.0;
+    const auto check = [&](double x) {
+        const double mine = vectorAtan(x), library = std::atan(x);
+        ASSERT_EQ(std::signbit(mine), std::signbit(library)) << x;
+        const std::uint64_t apart = ulpsApart(mine, library);
+        if (apart > worst) {
+            worst = apart;
+            worstAt = x;
+        }
+    };
+    for (int i = 0; i < 400000; ++i) {
+        // Log-uniform over 1e-12 .. 1e12 (the whole polynomial's range and the reduced one's),
+        // and uniform near 1 where the reduction changes over.
+        const double x = std::pow(10.0, rng.uniform(-12.0, 12.0));
+        check(rng.chance(0.5) ? x : -x);
+        check(rng.uniform(-2.0, 2.0));
+    }
+    for (double x : {1.0, -1.0, std::nextafter(1.0, 2.0), std::nextafter(1.0, 0.0), 1e-300, 1e300, 5e-324})
+        check(x);
+    EXPECT_LE(worst, 4u) << "at " << worstAt;
+    std::printf("vectorAtan: worst %llu ulps (at %.17g)\n", static_cast<unsigned long long>(worst), worstAt);
+}
+
+TEST(Atan, KeepsTheLibrarysSpecialValues) {
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(vectorAtan(0.0)), std::bit_cast<std::uint64_t>(0.0));
+    EXPECT_TRUE(std::signbit(vectorAtan(-0.0)));
+    EXPECT_EQ(vectorAtan(-0.0), 0.0);
+    EXPECT_DOUBLE_EQ(vectorAtan(inf), std::atan(inf));
+    EXPECT_DOUBLE_EQ(vectorAtan(-inf), std::atan(-inf));
+    EXPECT_TRUE(std::isnan(vectorAtan(std::numeric_limits<double>::quiet_NaN())));
+    // Odd, bit for bit.
+    Pcg32 rng(3);
+    for (int i = 0; i < 1000; ++i) {
+        const double x = rng.uniform(-50.0, 50.0);
+        EXPECT_EQ(vectorAtan(-x), -vectorAtan(x)) << x;
     }
 }
