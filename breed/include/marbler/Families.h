@@ -16,7 +16,7 @@
 namespace marbler {
 
 /// What `meta.generator` says of a family's design; bump it when a seed's design changes.
-inline constexpr const char* FamiliesVersion = "marbler-family-2";
+inline constexpr const char* FamiliesVersion = "marbler-family-3";
 
 /// One family of the craft.
 struct Family {
