@@ -217,6 +217,26 @@ TEST(SourceFormat, ADamagedImageIsRefusedOnOneLine) {
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
+TEST(SourceFormat, AnExrAttributeLongerThanTheFileIsRefusedBeforeOpenExrReadsIt) {
+    // Found by fuzz_source: OpenEXR 3.1 allocates what an attribute's size says before it finds
+    // the file shorter (11 s under the sanitisers for one such file).
+    SourceCase c;
+    writeWith("exr", c.dir / "own.exr");
+    std::string exr = test::readFile(c.dir / "own.exr");
+    // The first attribute's size, after its name and type, made 300,000,000.
+    const std::size_t sizeAt = 8 + exr.find('\0', 8) - 8 + 1;
+    const std::size_t afterType = exr.find('\0', sizeAt) + 1;
+    exr.replace(afterType, 4, std::string("\x00\xa3\xe1\x11", 4));
+    test::writeFile(c.dir / "long.exr", exr);
+    for (const std::string& image : {std::string("long.exr"), "data:image/x-exr;base64," + base64(exr)}) {
+        const std::string error = c.errorOf(image);
+        EXPECT_NE(error.find("a damaged OpenEXR image: its attribute"), std::string::npos) << error;
+        EXPECT_NE(error.find("says 300000000 bytes, more than the file holds"), std::string::npos) << error;
+    }
+    // The sound file still decodes.
+    EXPECT_EQ(c.errorOf("own.exr"), "");
+}
+
 TEST(SourceFormatCli, ADisguisedSourceEndsTheRenderWithOneLine) {
     SourceCase c;
     writeWith("dpx", c.dir / "x.dpx");

@@ -69,6 +69,11 @@ LinearRaster decodeDataUri(const std::string& text) {
     // The MIME type is not believed: the bytes say what they are.
     const SourceFormat format = sniffSourceFormat(bytes.data(), bytes.size());
     if (format.reader.empty()) throw InputError("source image " + name + ": " + refusedSourceFormat(format));
+    if (format.reader == "openexr") {
+        const std::string damaged =
+            checkExrHeader(bytes.data(), std::min(bytes.size(), ExrHeaderBytes), bytes.size());
+        if (!damaged.empty()) throw InputError("source image " + name + ": " + damaged);
+    }
     return imageIoModule().readMemory(bytes.data(), bytes.size(), format.reader, name);
 }
 
@@ -85,6 +90,15 @@ LinearRaster decodeFile(const fs::path& file) {
     }
     const SourceFormat format = sniffSourceFormat(head, got);
     if (format.reader.empty()) throw InputError("source image " + name + ": " + refusedSourceFormat(format));
+    if (format.reader == "openexr") {
+        std::vector<unsigned char> exr(ExrHeaderBytes);
+        std::ifstream in(file, std::ios::binary);
+        in.read(reinterpret_cast<char*>(exr.data()), std::streamsize(exr.size()));
+        std::error_code ec;
+        const std::uint64_t size = fs::file_size(file, ec);
+        const std::string damaged = checkExrHeader(exr.data(), std::size_t(in.gcount()), ec ? 0 : size);
+        if (!damaged.empty()) throw InputError("source image " + name + ": " + damaged);
+    }
     return imageIoModule().readFile(file.string(), format.reader, name);
 }
 

@@ -1,6 +1,7 @@
 #include "SourceFormat.h"
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string_view>
@@ -89,6 +90,43 @@ SourceFormat sniffSourceFormat(const unsigned char* bytes, std::size_t size) {
     for (std::size_t i = 0; i < shown; ++i)
         std::snprintf(first + 3 * i, 4, i + 1 < shown ? "%02X " : "%02X", bytes[i]);
     return {"", std::string("a file of an unknown kind (it begins ") + first + ")"};
+}
+
+std::string checkExrHeader(const unsigned char* head, std::size_t size, std::uint64_t fileSize) {
+    if (size < 8) return "a damaged OpenEXR image (too short)";
+    const bool multipart = (head[5] & 0x10) != 0; // version field bit 12
+    std::size_t at = 8;
+    // A null-terminated name of at most 255 characters; "" at the end of a header.
+    auto name = [&](std::string& out) {
+        out.clear();
+        while (at < size && head[at] != 0 && out.size() <= 255)
+            out += char(head[at++]);
+        if (at >= size || out.size() > 255) return false;
+        ++at;
+        return true;
+    };
+    for (int part = 0;; ++part) {
+        std::string attribute, type;
+        int attributes = 0;
+        for (;;) {
+            if (!name(attribute)) return "an OpenEXR header that does not end within 1 MiB";
+            if (attribute.empty()) break;
+            if (!name(type) || at + 4 > size) return "an OpenEXR header that does not end within 1 MiB";
+            const std::uint32_t length = std::uint32_t(head[at]) | std::uint32_t(head[at + 1]) << 8 |
+                                         std::uint32_t(head[at + 2]) << 16 |
+                                         std::uint32_t(head[at + 3]) << 24;
+            at += 4;
+            if (length > 0x7fffffffu || at + std::uint64_t(length) > fileSize)
+                return "a damaged OpenEXR image: its attribute '" + attribute + "' says " +
+                       std::to_string(length) + " bytes, more than the file holds";
+            if (at + length > size) return "an OpenEXR header that does not end within 1 MiB";
+            at += length;
+            ++attributes;
+        }
+        // A single-part file has one header; a multi-part one ends its list with an empty header.
+        if (!multipart || attributes == 0) return "";
+        if (part > 1000) return "an OpenEXR file of more than 1,000 parts";
+    }
 }
 
 std::string refusedSourceFormat(const SourceFormat& format) {

@@ -4,6 +4,7 @@
 /// reaches one well-worn decoder or none. The allow-list: PNG, JPEG, TIFF, OpenEXR and WebP.
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace marbler::detail {
@@ -23,6 +24,15 @@ inline constexpr std::size_t SourceSniffBytes = 136;
 /// Tells the format from the first `size` bytes of a source (fewer than SourceSniffBytes when
 /// the file is shorter).
 SourceFormat sniffSourceFormat(const unsigned char* bytes, std::size_t size);
+
+/// The most of an OpenEXR file's head read to check its header (checkExrHeader).
+inline constexpr std::size_t ExrHeaderBytes = std::size_t(1) << 20;
+
+/// Checks an OpenEXR header's attributes against the file's size before OpenEXR reads it:
+/// OpenEXR 3.1 allocates whatever size an attribute declares (up to 2 GiB) before finding the
+/// file shorter. `head` holds the file's first `size` bytes (at most ExrHeaderBytes),
+/// `fileSize` its whole length. Returns "" when the header is sound, else what is wrong.
+std::string checkExrHeader(const unsigned char* head, std::size_t size, std::uint64_t fileSize);
 
 /// The refusal's text for a format that is not allowed: "a Photoshop file: sources must be
 /// PNG, JPEG, TIFF, EXR or WebP".
