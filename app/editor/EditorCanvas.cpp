@@ -111,7 +111,7 @@ void EditorCanvas::setSlice(const Slice& slice) {
 }
 
 QSizeF EditorCanvas::planeSize() const {
-    const glm::dvec2 extent = slicePlane(mDesign.dimension, mSlice.axis).extent(mDesign.size);
+    const glm::dvec2 extent = slicePlane(mDesign.dimension, mSlice, mDesign.size).extent(mDesign.size);
     return {extent.x, extent.y};
 }
 
@@ -122,12 +122,12 @@ void EditorCanvas::updateDesignSize() {
 }
 
 QPointF EditorCanvas::toPlane(const glm::dvec3& p) const {
-    const glm::dvec2 q = slicePlane(mDesign.dimension, mSlice.axis).toPlane(p);
+    const glm::dvec2 q = slicePlane(mDesign.dimension, mSlice, mDesign.size).toPlane(p);
     return {q.x, q.y};
 }
 
 glm::dvec3 EditorCanvas::fromPlane(QPointF q) const {
-    return slicePlane(mDesign.dimension, mSlice.axis, mSlice.value).fromPlane({q.x(), q.y()});
+    return slicePlane(mDesign.dimension, mSlice, mDesign.size).fromPlane({q.x(), q.y()});
 }
 
 glm::dvec3 EditorCanvas::toDesign(QPointF widgetPoint) const {
@@ -412,7 +412,8 @@ void EditorCanvas::mousePressEvent(QMouseEvent* event) {
 
 std::vector<Operation> EditorCanvas::gestureSoFar() const {
     if (drawsPath()) return pathSteps(mTool, mSettings, mStroke, mDesign, mStrokePressure);
-    return gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
+    return gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign,
+                        slicePlane(mDesign.dimension, mSlice, mDesign.size));
 }
 
 void EditorCanvas::beginGesture(QPointF widget, double pressure) {
