@@ -197,6 +197,7 @@ void SectionControls::showSlice(const Slice& slice) {
         const glm::dvec3 n = *mTurned;
         mNormal->setText(
             QStringLiteral("%1, %2, %3").arg(normalNumber(n.x), normalNumber(n.y), normalNumber(n.z)));
+        mValue->setPrefix(tr("n·p = "));
     } else if (plane.turned) {
         mTurned = plane.normal();
         range = sliceOffsetRange(*mTurned, size);
