@@ -12,12 +12,16 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
+#include "shared/DesignExport.h"
+#include "shared/ExportSettingsDialog.h"
 #include "shared/RenderService.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
@@ -369,6 +373,62 @@ TEST_F(TurnedEditorTest, ABadNormalIsRefusedWithItsTextAndTheSectionStays) {
     EXPECT_TRUE(mEditor->canvas()->slice().normal.has_value());
     type("sliceNormal", QString());
     EXPECT_FALSE(mEditor->canvas()->slice().normal.has_value());
+}
+
+TEST(TurnedSectionExportTest, ExportImageWritesTheSectionAtATypedNormal) {
+    const Genome g = shells();
+    ExportSettingsDialog dialog(g);
+    auto* show = dialog.findChild<QComboBox*>(QStringLiteral("exportSolidView"));
+    auto* normal = dialog.findChild<QLineEdit*>(QStringLiteral("exportNormal"));
+    ASSERT_TRUE(show && normal);
+    EXPECT_FALSE(normal->isEnabled()) << "the object view has no normal";
+    show->setCurrentIndex(1);
+    EXPECT_TRUE(normal->isEnabled());
+    normal->setFocus();
+    QTest::keyClicks(normal, QStringLiteral("1, 0, 1"));
+    QTest::keyClick(normal, Qt::Key_Return);
+    const std::optional<SolidExport> solid = dialog.solidExport();
+    ASSERT_TRUE(solid && !solid->objectView);
+    ASSERT_TRUE(solid->slice.normal.has_value());
+    const glm::dvec3 n = glm::normalize(glm::dvec3(1, 0, 1));
+    EXPECT_NEAR(glm::length(*solid->slice.normal - n), 0.0, 1e-12);
+    EXPECT_NEAR(solid->slice.value, 0.5 * (600 * n.x + 600 * n.z), 0.01) << "through the block's middle";
+    // The image's aspect is the turned plane's: the block's width along its tilted axis.
+    const glm::dvec2 extent = slicePlane(3, solid->slice, g.size).extent(g.size);
+    const QSize size = dialog.pixels();
+    ASSERT_GT(size.width(), 0);
+    EXPECT_NEAR(double(size.height()) / size.width(), extent.y / extent.x, 2.0 / size.width());
+
+    QWidget window;
+    DesignExport exporter(&window);
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("turned.png"));
+    QSignalSpy finished(&exporter, &DesignExport::finished);
+    const QSize pixels(85, 60);
+    ASSERT_TRUE(
+        exporter.exportTo(g, {}, file, pixels, QStringLiteral("none"), std::nullopt, solid, 8, false));
+    MARBLER_WAIT(finished.size() == 1, 60000);
+    ASSERT_TRUE(finished.front().at(1).toBool()) << finished.front().at(2).toString().toStdString();
+    // The file on disk is the renderer's section at that normal, not the axis section.
+    RenderSettings settings;
+    settings.width = pixels.width();
+    settings.height = pixels.height();
+    settings.slice = solid->slice;
+    const QImage written(file);
+    ASSERT_EQ(written.size(), pixels);
+    // Pixel by pixel (the file's colour space tag is no part of what the person sees).
+    const auto differing = [&](const Image& expected) {
+        int count = 0;
+        for (int y = 0; y < expected.height; ++y)
+            for (int x = 0; x < expected.width; ++x) {
+                const std::uint8_t* e = expected.row(y) + 3 * x;
+                count += written.pixel(x, y) != qRgb(e[0], e[1], e[2]);
+            }
+        return count;
+    };
+    EXPECT_EQ(differing(CpuRenderer(g).render(settings)), 0);
+    settings.slice = Slice{2, solid->slice.value};
+    EXPECT_GT(differing(CpuRenderer(g).render(settings)), 0) << "not the axis section";
 }
 
 } // namespace turned_section_test
