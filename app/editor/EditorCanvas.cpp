@@ -111,7 +111,7 @@ void EditorCanvas::setSlice(const Slice& slice) {
 }
 
 QSizeF EditorCanvas::planeSize() const {
-    const glm::dvec2 extent = slicePlane(mDesign.dimension, mSlice.axis).extent(mDesign.size);
+    const glm::dvec2 extent = slicePlane(mDesign.dimension, mSlice, mDesign.size).extent(mDesign.size);
     return {extent.x, extent.y};
 }
 
@@ -122,12 +122,12 @@ void EditorCanvas::updateDesignSize() {
 }
 
 QPointF EditorCanvas::toPlane(const glm::dvec3& p) const {
-    const glm::dvec2 q = slicePlane(mDesign.dimension, mSlice.axis).toPlane(p);
+    const glm::dvec2 q = slicePlane(mDesign.dimension, mSlice, mDesign.size).toPlane(p);
     return {q.x, q.y};
 }
 
 glm::dvec3 EditorCanvas::fromPlane(QPointF q) const {
-    return slicePlane(mDesign.dimension, mSlice.axis, mSlice.value).fromPlane({q.x(), q.y()});
+    return slicePlane(mDesign.dimension, mSlice, mDesign.size).fromPlane({q.x(), q.y()});
 }
 
 glm::dvec3 EditorCanvas::toDesign(QPointF widgetPoint) const {
@@ -334,6 +334,15 @@ std::vector<std::pair<EditorCanvas::Handle, QPointF>> EditorCanvas::handlePoints
         const QPointF plane = toPlane(op->center) + QPointF(op->radius, 0.0);
         points.emplace_back(Handle::Radius, mView.toViewport(plane) / devicePixelRatioF());
     }
+    if (mDesign.dimension == 3 && findParam(op->tool, ParamField::Axis)) {
+        // The axis's lean out of the section, along the way it leans: sin(tilt) from half an arm
+        // (across the section) to an arm and a half (lying in it).
+        const SlicePlane plane = slicePlane(3, mSlice, mDesign.size);
+        const glm::dvec2 lean{glm::dot(op->axis, plane.u()), glm::dot(op->axis, plane.v())};
+        const double sine = std::min(glm::length(lean), 1.0);
+        const glm::dvec2 way = sine > 1e-9 ? lean / glm::length(lean) : glm::dvec2(0.0, -1.0);
+        points.emplace_back(Handle::Axis, centre + ArmLength * (0.5 + sine) * QPointF(way.x, way.y));
+    }
     return points;
 }
 
@@ -357,6 +366,19 @@ Operation EditorCanvas::movedStep(Handle handle, QPointF widget) const {
     case Handle::Radius: {
         const QPointF d = toPlane(at) - toPlane(op.center);
         op.radius = std::max(std::hypot(d.x(), d.y()), 1e-3);
+        break;
+    }
+    case Handle::Axis: {
+        // Dragged out from the centre: the axis leans the drag's way, by sin(tilt) = the distance
+        // beyond half an arm; the side of the section it points to is kept.
+        const QPointF d = widget - toWidget(op.center);
+        const double reach = std::hypot(d.x(), d.y());
+        if (reach < 1.0) break;
+        const SlicePlane plane = slicePlane(3, mSlice, mDesign.size);
+        const double sine = std::clamp(reach / ArmLength - 0.5, 0.0, 1.0);
+        const double side = glm::dot(op.axis, plane.normal()) < 0.0 ? -1.0 : 1.0;
+        const glm::dvec3 lean = (d.x() / reach) * plane.u() + (d.y() / reach) * plane.v();
+        op.axis = glm::normalize(side * std::sqrt(1.0 - sine * sine) * plane.normal() + sine * lean);
         break;
     }
     case Handle::PathPoint: {
@@ -412,7 +434,8 @@ void EditorCanvas::mousePressEvent(QMouseEvent* event) {
 
 std::vector<Operation> EditorCanvas::gestureSoFar() const {
     if (drawsPath()) return pathSteps(mTool, mSettings, mStroke, mDesign, mStrokePressure);
-    return gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign, mSlice.axis);
+    return gestureSteps(mTool, mSettings, mPress, mCurrent, mDesign,
+                        slicePlane(mDesign.dimension, mSlice, mDesign.size));
 }
 
 void EditorCanvas::beginGesture(QPointF widget, double pressure) {
@@ -673,7 +696,8 @@ void EditorCanvas::drawOverlay(QPainter& p) const {
             drawStepOutline(p, shown);
             if (!path.isEmpty()) p.drawPolyline(path);
             for (const auto& [handle, point] : handles)
-                if (handle == Handle::Direction) p.drawLine(handles.front().second, point);
+                if (handle == Handle::Direction || handle == Handle::Axis)
+                    p.drawLine(handles.front().second, point);
         }
         p.setPen(dark);
         for (const auto& [handle, point] : handles) {

@@ -59,7 +59,9 @@ public:
 
     /// The handles of the selected step, for tests and the overlay: where each is (widget). A
     /// stylus's handles are the points of its path, in order.
-    enum class Handle { Centre, Direction, Radius, PathPoint };
+    /// Axis: a solid's circle, sphere, vortex or column, its axis tilted from the section's normal
+    /// (at half an arm from the centre when across the section, a whole arm and a half when in it).
+    enum class Handle { Centre, Direction, Radius, PathPoint, Axis };
     std::vector<std::pair<Handle, QPointF>> handlePoints() const;
 
     /// The image shown now, whether it is the sharp final one, and the steps of the gesture in

@@ -225,6 +225,7 @@ void EditorWindow::buildDocks() {
 
     mToolOptions = new ToolOptions(this);
     mToolOptions->setObjectName(QStringLiteral("toolOptions"));
+    mToolOptions->setDimension(dimension); // a solid's circle and sphere: their axis row
     auto* toolDock = new QDockWidget(tr("Tool"), this);
     toolDock->setObjectName(QStringLiteral("toolDock"));
     auto* toolPanel = new QWidget(this);

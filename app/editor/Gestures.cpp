@@ -14,18 +14,6 @@ namespace marbler::ui {
 
 namespace {
 
-/// The unit normal of the section plane across `axis` (a solid's gestures lie in that plane).
-glm::dvec3 planeNormal(int axis) {
-    return slicePlane(3, axis).normal();
-}
-
-/// Two unit vectors spanning the section plane (x-y for z, x-z for y, y-z for x; 2D: x-y).
-void planeAxes(int dimension, int axis, glm::dvec3& u, glm::dvec3& v) {
-    const SlicePlane plane = slicePlane(dimension, axis);
-    u = plane.u();
-    v = plane.v();
-}
-
 /// The palette index a tool lays: the panel's, kept inside the palette.
 int inkIndex(const ToolSettings& s, const Genome& design) {
     return std::clamp(s.color, 0, int(design.palette.size()) - 1);
@@ -48,8 +36,8 @@ double dragAngle(const glm::dvec3& d) {
 struct SectionStroke {
     glm::dvec3 along, across;
 };
-SectionStroke sectionStroke(const glm::dvec3& d, int sliceAxis) {
-    const glm::dvec3 n = planeNormal(sliceAxis);
+SectionStroke sectionStroke(const glm::dvec3& d, const SlicePlane& plane) {
+    const glm::dvec3 n = plane.normal();
     const glm::dvec3 along = glm::normalize(d - glm::dot(d, n) * n);
     return {along, glm::normalize(glm::cross(n, along))};
 }
@@ -58,9 +46,9 @@ SectionStroke sectionStroke(const glm::dvec3& d, int sliceAxis) {
 /// `normal` (the tine's distance is measured along it) across the drag in the section plane. A
 /// normal along the plane's axis would give every point of the section one distance to the
 /// tine: the section would slide rigidly and nothing would be combed.
-void setStrokeDirection(Operation& op, const glm::dvec3& d, const Genome& design, int sliceAxis) {
+void setStrokeDirection(Operation& op, const glm::dvec3& d, const Genome& design, const SlicePlane& plane) {
     if (design.dimension == 3) {
-        const SectionStroke stroke = sectionStroke(d, sliceAxis);
+        const SectionStroke stroke = sectionStroke(d, plane);
         op.direction = stroke.along;
         op.normal = stroke.across;
     } else {
@@ -166,8 +154,23 @@ Genome withSteps(Genome design, const std::vector<Operation>& ops) {
     return design;
 }
 
+glm::dvec3 turnAxis(const ToolSettings& s, const SlicePlane& plane) {
+    if (s.axis) {
+        const glm::dvec3 a = *s.axis;
+        const double length = glm::length(a);
+        if (length > 0.0 && std::isfinite(length)) return a / length;
+    }
+    return plane.normal();
+}
+
 std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, const glm::dvec3& press,
                                     const glm::dvec3& release, const Genome& design, int sliceAxis) {
+    return gestureSteps(tool, s, press, release, design, slicePlane(design.dimension, sliceAxis));
+}
+
+std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, const glm::dvec3& press,
+                                    const glm::dvec3& release, const Genome& design,
+                                    const SlicePlane& plane) {
     if (tool == EditorTool::Pick || !toolAvailable(tool, design.dimension)) return {};
     if (laysInk(tool) && design.palette.empty()) return {};
     const int dim = design.dimension;
@@ -176,8 +179,7 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
     const glm::dvec3 d = q - p;
     const double length = glm::length(d);
     const bool stroke = length >= MinStrokeLength;
-    glm::dvec3 u, v;
-    planeAxes(dim, sliceAxis, u, v);
+    const glm::dvec3 u = plane.u(), v = plane.v();
     const int color = laysInk(tool) ? inkIndex(s, design) : 0;
     const int count = std::max(1, s.patternCount);
     std::vector<Operation> ops;
@@ -254,7 +256,7 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
     case EditorGesture::Stroke: {
         if (!stroke) break;
         Operation op = defaultOperation(made, dim, p);
-        setStrokeDirection(op, d, design, sliceAxis);
+        setStrokeDirection(op, d, design, plane);
         op.alpha = length;
         op.lambda = std::max(s.lambda, 1e-3);
         op.spacing = std::max(s.spacing, 1e-3);
@@ -270,7 +272,7 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
             // The flat wave on the section, the same on every parallel section: the shift (3D
             // `normal`) along the drag, varying across it (`direction`), the egg-crate's second
             // term (along the plane's axis) off.
-            const SectionStroke stroke = sectionStroke(d, sliceAxis);
+            const SectionStroke stroke = sectionStroke(d, plane);
             op.shape = WaveShape::Eggcrate;
             op.direction = stroke.across;
             op.normal = stroke.along;
@@ -284,8 +286,10 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
     }
     case EditorGesture::Ring: {
         if (!stroke) break;
+        // A solid's circle turns about the panel's axis (else across the section); a sphere's
+        // radius is the drag's length on the section through its centre.
         Operation op = defaultOperation(made, dim, p);
-        if (dim == 3) op.axis = planeNormal(sliceAxis);
+        if (dim == 3) op.axis = turnAxis(s, plane);
         op.radius = length;
         op.alpha = s.alpha;
         op.lambda = std::max(s.lambda, 1e-3);
@@ -296,7 +300,7 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
     case EditorGesture::Swirl: {
         // The drag's length is the swirl's largest shift; a click swirls by the panel's.
         Operation op = defaultOperation(made, dim, p);
-        if (dim == 3) op.axis = planeNormal(sliceAxis);
+        if (dim == 3) op.axis = plane.normal();
         op.alpha = stroke ? length : s.alpha;
         op.lambda = std::max(s.lambda, 1e-3);
         op.core = std::max(s.core, 0.0);

@@ -5,6 +5,7 @@
 
 #include "marbler/Genome.h"
 #include "marbler/Params.h"
+#include "marbler/Sampling.h"
 
 #include <glm/vec3.hpp>
 
@@ -81,6 +82,9 @@ struct ToolSettings {
     int tines = int(editorStart(Tool::Stylus, ParamField::Tines));       ///< stylus: 1, or a rake's tines
     double rakeSpacing = editorStart(Tool::Stylus, ParamField::Spacing); ///< stylus: between a rake's tines
     std::uint64_t seed = 1; ///< spray and scatter positions (the same seed, the same drops)
+    /// A solid's circle and sphere: the axis they turn about (any length but 0); none: across
+    /// the section they are drawn on.
+    std::optional<glm::dvec3> axis;
     friend bool operator==(const ToolSettings&, const ToolSettings&) = default;
 };
 
@@ -90,6 +94,13 @@ struct ToolSettings {
 /// another dimension, ink with no palette). Every step made is valid in `design`.
 std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, const glm::dvec3& press,
                                     const glm::dvec3& release, const Genome& design, int sliceAxis = 2);
+/// The same on any section plane of a solid (SlicePlane of Sampling.h, turned or across an
+/// axis): `press` and `release` lie on it, and the strokes lie in it.
+std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, const glm::dvec3& press,
+                                    const glm::dvec3& release, const Genome& design, const SlicePlane& plane);
+/// The unit axis a solid's circle or sphere drawn on `plane` turns about: the panel's, else the
+/// plane's normal.
+glm::dvec3 turnAxis(const ToolSettings& s, const SlicePlane& plane);
 
 /// How far apart a drawn path's points are kept, in design units (at the least).
 inline constexpr double PathPointSpacing = 4.0;

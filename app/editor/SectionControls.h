@@ -1,7 +1,8 @@
 #pragma once
 /// The tool panel's controls of a solid design (EditorWindow.h): the cross-section the canvas
-/// shows (its axis, and where along it by a slider and a number) and the object the design is
-/// shown on. They say what the user chose; the window sets the section everywhere.
+/// shows (its axis or, turned, its normal typed or set by the tilt and turn handles; where along
+/// it by a slider and a number) and the object the design is shown on. They say what the user chose; the
+/// window sets the section everywhere.
 
 #include "marbler/Sampling.h"
 
@@ -11,9 +12,12 @@
 #include <glm/vec3.hpp>
 
 #include <functional>
+#include <optional>
 
 class QComboBox;
 class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
 class QSlider;
 
 namespace marbler::ui {
@@ -35,12 +39,24 @@ signals:
 
 private:
     void chooseMesh(int index);
+    /// The section the widgets show now: the axis, or the typed or handled normal, and the
+    /// position along it.
+    Slice current() const;
+    /// The normal the tilt and turn handles give (the axis turned by both).
+    glm::dvec3 handledNormal() const;
+    void normalTyped();
+    void handlesMoved();
 
     std::function<glm::dvec3()> mSize;
     QComboBox* mAxis;
     QSlider* mPosition;
     QDoubleSpinBox* mValue;
     QComboBox* mMesh;
+    QLineEdit* mNormal;
+    QSlider* mTilt;
+    QSlider* mTurn;
+    QLabel* mNormalError;
+    std::optional<glm::dvec3> mTurned; ///< the turned section's normal; none: across the axis
     bool mUpdating = false; ///< the widgets are being set to a slice (no feedback)
 };
 

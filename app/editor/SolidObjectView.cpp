@@ -8,9 +8,12 @@
 #include <QPainter>
 #include <QPolygonF>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace marbler::ui {
 
@@ -104,19 +107,36 @@ void SolidObjectView::paintSlice(QPainter& p) const {
                                   {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
     for (const auto& e : Edges)
         p.drawLine(at(corner[e[0]]), at(corner[e[1]]));
-    // The plane: the block's extent along the two other axes, at the section's value.
-    const int axis = mSlice->axis;
-    const SlicePlane section = slicePlane(3, axis, mSlice->value);
-    const glm::dvec2 span = section.extent(size);
+    // The plane: where it cuts the block's edges, in order round it (a turned section's cut is a
+    // polygon of three to six corners; an axis section's, the block's extent at its value).
+    const SlicePlane section = slicePlane(3, *mSlice, size);
+    const glm::dvec3 n = section.normal();
+    const auto above = [&](const glm::dvec3& q) { return glm::dot(q, n) - section.value; };
+    std::vector<glm::dvec2> cut;
+    for (const auto& e : Edges) {
+        const double a = above(corner[e[0]]), b = above(corner[e[1]]);
+        if ((a < 0.0) == (b < 0.0) && a != 0.0) continue;
+        const double t = a == b ? 0.0 : a / (a - b);
+        cut.push_back(section.toPlane(corner[e[0]] + t * (corner[e[1]] - corner[e[0]])));
+    }
+    glm::dvec2 middle(0.0);
+    for (const glm::dvec2& q : cut)
+        middle += q / double(std::max<std::size_t>(cut.size(), 1));
+    std::sort(cut.begin(), cut.end(), [&](const glm::dvec2& a, const glm::dvec2& b) {
+        return std::atan2(a.y - middle.y, a.x - middle.x) < std::atan2(b.y - middle.y, b.x - middle.x);
+    });
     QPolygonF plane;
-    for (const auto& [ua, ub] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})
-        plane << at(section.fromPlane({ua * span.x, ub * span.y}));
+    for (const glm::dvec2& q : cut)
+        plane << at(section.fromPlane(q));
     p.setPen(QPen(QColor(255, 170, 40), 1.5));
     p.setBrush(QColor(255, 170, 40, 90));
     p.drawPolygon(plane);
     p.setPen(QColor(235, 235, 235));
-    p.drawText(QPointF(origin.x() + Side * 1.55, origin.y() - 2.0),
-               tr("%1 = %2").arg(QLatin1String(axisName(axis))).arg(mSlice->value, 0, 'f', 1));
+    p.drawText(
+        QPointF(origin.x() + Side * 1.55, origin.y() - 2.0),
+        section.turned
+            ? tr("n·p = %1").arg(section.value, 0, 'f', 1)
+            : tr("%1 = %2").arg(QLatin1String(axisName(section.normalAxis))).arg(section.value, 0, 'f', 1));
 }
 
 void SolidObjectView::resizeEvent(QResizeEvent*) {

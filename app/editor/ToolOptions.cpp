@@ -1,11 +1,13 @@
 #include "editor/ToolOptions.h"
 
 #include "marbler/Params.h"
+#include "marbler/Sampling.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPixmap>
 #include <QSpinBox>
 
@@ -139,6 +141,50 @@ ToolOptions::ToolOptions(QWidget* parent)
     addNumber("toolCore", labelOf(Tool::Circle, ParamField::Core),
               tr("A finite centre: 0 winds without end, larger keeps the eye clean"), &ToolSettings::core, 0,
               100000, units, sets(ParamField::Core));
+    // A solid's circle and sphere turn about an axis: typed, else across the section drawn on.
+    mAxis = new QLineEdit(this);
+    mAxis->setObjectName(QStringLiteral("toolAxis"));
+    mAxis->setPlaceholderText(tr("across the section"));
+    mAxis->setToolTip(tr("The axis a solid's circle or sphere turns about, as x, y, z (e.g. 0, 1, 1); "
+                         "empty: across the section it is drawn on"));
+    connect(mAxis, &QLineEdit::editingFinished, this, [this] {
+        if (mLoading) return;
+        const QString text = mAxis->text().trimmed();
+        std::optional<glm::dvec3> axis;
+        if (!text.isEmpty()) {
+            std::string error;
+            axis = parseDirection(text.toStdString(), "Axis", &error);
+            if (!axis) {
+                mAxisError->setText(QString::fromStdString(error));
+                mAxisError->show();
+                return;
+            }
+        }
+        mAxisError->hide();
+        if (axis == mSettings.axis) return;
+        mSettings.axis = axis;
+        changed();
+    });
+    const auto turnsAbout = [this](EditorTool t) {
+        return mDimension == 3 && gestureOf(t) == EditorGesture::Ring;
+    };
+    addRow(tr("Axis"), mAxis, turnsAbout);
+    mAxisError = new QLabel(this);
+    mAxisError->setObjectName(QStringLiteral("toolAxisError"));
+    mAxisError->setStyleSheet(QStringLiteral("color: #b00020"));
+    mAxisError->setWordWrap(true);
+    mAxisError->hide();
+    mForm->addRow(mAxisError);
+    mLoaders.push_back([this] {
+        if (!mSettings.axis) {
+            mAxis->clear();
+            return;
+        }
+        const glm::dvec3 a = *mSettings.axis;
+        mAxis->setText(QStringLiteral("%1, %2, %3")
+                           .arg(QString::number(a.x, 'g', 4), QString::number(a.y, 'g', 4),
+                                QString::number(a.z, 'g', 4)));
+    });
     addCount("toolTeeth", tr("Teeth"), tr("How many teeth span the design"), &ToolSettings::teeth, 2, 1000,
              gesture(EditorGesture::Teeth));
     addNumber("toolPower", labelOf(Tool::Stretch, ParamField::Power),
@@ -235,8 +281,14 @@ void ToolOptions::addCount(const char* name, const QString& label, const QString
 
 void ToolOptions::setTool(EditorTool tool) {
     mTool = tool;
+    mAxisError->hide();
     for (const Row& row : mRows)
         mForm->setRowVisible(row.field, row.shows(tool));
+}
+
+void ToolOptions::setDimension(int dimension) {
+    mDimension = dimension;
+    setTool(mTool);
 }
 
 void ToolOptions::setPalette(const std::vector<Color>& palette) {

@@ -14,6 +14,8 @@
 
 class QFormLayout;
 class QComboBox;
+class QLabel;
+class QLineEdit;
 
 namespace marbler::ui {
 
@@ -35,6 +37,8 @@ public:
     /// The palette the ink row chooses from (the swatches and their count).
     void setPalette(const std::vector<Color>& palette);
     void setSettings(const ToolSettings& settings);
+    /// The design's dimension: a solid's circle and sphere have an axis row.
+    void setDimension(int dimension);
     const ToolSettings& settings() const { return mSettings; }
 
 signals:
@@ -60,6 +64,9 @@ private:
     QFormLayout* mForm;
     QComboBox* mInk;
     QComboBox* mField;
+    QLineEdit* mAxis;   ///< a solid's circle or sphere: the axis typed (empty: across the section)
+    QLabel* mAxisError; ///< why the typed axis was refused
+    int mDimension = 2;
     std::vector<Row> mRows;
     std::vector<std::function<void()>> mLoaders; ///< each row reads its value from mSettings
     ToolSettings mSettings;

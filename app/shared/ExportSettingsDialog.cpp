@@ -9,6 +9,7 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QLayout>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
@@ -146,12 +147,19 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
         mPosition->setObjectName(QStringLiteral("exportPosition"));
         mPosition->setDecimals(2);
         mPosition->setToolTip(tr("Where on its axis the cross-section lies, in design units"));
+        // A turned section: its normal typed (issue 23); the position is then p·normal.
+        mNormal = new QLineEdit(this);
+        mNormal->setObjectName(QStringLiteral("exportNormal"));
+        mNormal->setPlaceholderText(tr("across the axis"));
+        mNormal->setToolTip(tr("A turned cross-section's normal as x, y, z (e.g. 1, 1, 0); empty: across "
+                               "the axis"));
         auto showAxis = [this] {
-            const int axis = mAxis->currentIndex();
-            const double side = mGenome.size[axis];
+            const Slice slice = chosenSlice();
+            glm::dvec2 range(0.0, mGenome.size[slice.axis]);
+            if (slice.normal) range = sliceOffsetRange(*slice.normal, mGenome.size);
             // The middle of the new axis: its old position may not lie inside it.
-            mPosition->setRange(0.0, side);
-            mPosition->setValue(side / 2.0);
+            mPosition->setRange(range.x, range.y);
+            mPosition->setValue(0.5 * (range.x + range.y));
         };
         showAxis();
         auto enable = [this] {
@@ -164,12 +172,20 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
             showAxis();
             updateSummary();
         });
+        connect(mNormal, &QLineEdit::editingFinished, this, [this, showAxis] {
+            showAxis();
+            updateSummary();
+        });
         connect(mSolidView, &QComboBox::currentIndexChanged, this, enable);
+        connect(mSolidView, &QComboBox::currentIndexChanged, mNormal,
+                [this] { mNormal->setEnabled(mSolidView->currentIndex() == 1); });
         form->addRow(tr("&Show"), mSolidView);
         form->addRow(tr("A&xis"), mAxis);
+        form->addRow(tr("&Normal"), mNormal);
         form->addRow(tr("&Position"), mPosition);
         mAxis->setEnabled(false);
         mPosition->setEnabled(false);
+        mNormal->setEnabled(false);
     }
     mButtons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(mButtons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -287,7 +303,7 @@ double ExportSettingsDialog::aspect() const {
     const glm::dvec3& size = mGenome.size;
     if (mGenome.dimension != 3) return size.y / size.x;
     if (mSolidView->currentIndex() == 0) return 1.0;
-    const glm::dvec2 plane = slicePlane(mGenome.dimension, mAxis->currentIndex()).extent(size);
+    const glm::dvec2 plane = slicePlane(mGenome.dimension, chosenSlice(), size).extent(size);
     return plane.y / plane.x;
 }
 
@@ -322,14 +338,32 @@ std::optional<SolidExport> ExportSettingsDialog::solidExport() const {
     if (mGenome.dimension != 3) return std::nullopt;
     SolidExport solid;
     solid.objectView = mSolidView->currentIndex() == 0;
-    solid.slice = Slice{mAxis->currentIndex(), mPosition->value()};
+    solid.slice = chosenSlice();
     return solid;
+}
+
+Slice ExportSettingsDialog::chosenSlice() const {
+    Slice slice{mAxis->currentIndex(), mPosition->value()};
+    if (mNormal && !mNormal->text().trimmed().isEmpty())
+        slice.normal = parseDirection(mNormal->text().trimmed().toStdString(), "Normal");
+    return slice;
 }
 
 void ExportSettingsDialog::setSolidExport(const SolidExport& solid) {
     if (mGenome.dimension != 3) return;
     mSolidView->setCurrentIndex(solid.objectView ? 0 : 1);
     mAxis->setCurrentIndex(std::clamp(solid.slice.axis, 0, 2));
+    if (solid.slice.normal) {
+        const glm::dvec3 n = *solid.slice.normal;
+        mNormal->setText(QStringLiteral("%1, %2, %3")
+                             .arg(QString::number(n.x, 'g', 6), QString::number(n.y, 'g', 6),
+                                  QString::number(n.z, 'g', 6)));
+        const glm::dvec2 range = sliceOffsetRange(n, mGenome.size);
+        mPosition->setRange(range.x, range.y);
+    } else {
+        mNormal->clear();
+        mPosition->setRange(0.0, mGenome.size[std::clamp(solid.slice.axis, 0, 2)]);
+    }
     mPosition->setValue(solid.slice.value);
 }
 

@@ -18,6 +18,7 @@ class QComboBox;
 class QDialogButtonBox;
 class QDoubleSpinBox;
 class QLabel;
+class QLineEdit;
 class QSpinBox;
 
 namespace marbler::ui {
@@ -89,6 +90,9 @@ private:
     QComboBox* mSolidView = nullptr;     ///< solids: object view or cross-section
     QComboBox* mAxis = nullptr;          ///< solids: the cross-section's axis
     QDoubleSpinBox* mPosition = nullptr; ///< solids: the cross-section's position on its axis
+    QLineEdit* mNormal = nullptr;        ///< solids: a turned cross-section's normal (empty: across the axis)
+    /// The cross-section the solid's rows say (a normal typed that does not parse: across the axis).
+    Slice chosenSlice() const;
     QLabel* mPixels = nullptr;
     QDoubleSpinBox* mTolerance = nullptr; ///< flat designs: the SVG's tolerance
     QCheckBox* mRepeat = nullptr;         ///< flat designs: the mirror repeat tile

@@ -90,7 +90,7 @@ constexpr std::array Stylus2{PathRow, Pull, StylusLambda, Reach, Tines, RakeSpac
 using SF = ShaderForm;
 
 /// The registry, in the order of enum Tool. The editor's words stay as its tool bar has always
-/// shown them; cylinder and sphere have no gesture (made in the step form only).
+/// shown them; cylinder has no gesture (made in the step form only).
 constexpr std::array<ToolSpec, ToolCount> Tools{{
     {.tool = Tool::Drop, .name = "drop", .plural = "drops", .in2D = true, .in3D = true, .laysInk = true, .movesInk = true,
      .form2D = SF::PushArea, .form3D = SF::PushVolume, .params2D = Ink, .params3D = Ink, .outline = StepOutline::Radius,
@@ -134,7 +134,11 @@ constexpr std::array<ToolSpec, ToolCount> Tools{{
                 .shortcut = 'O'}},
     {.tool = Tool::Sphere, .name = "sphere", .plural = "spheres", .in2D = false, .in3D = true, .laysInk = false, .movesInk = true,
      .form2D = SF::Turn, .form3D = SF::Turn, .params2D = {}, .params3D = Circle3, .outline = StepOutline::Radius,
-     .editor = {}}, // no gesture: made in the step form only
+     .editor = {.gesture = G::Ring,
+                .name = "Sphere",
+                .tooltip = "Drag from the centre on the section: a tine moved round a sphere of that "
+                           "radius, turning about the panel's axis",
+                .shortcut = 'H'}},
     {.tool = Tool::Vortex, .name = "vortex", .plural = "vortices", .in2D = true, .in3D = true, .laysInk = false, .movesInk = true,
      .form2D = SF::Turn, .form3D = SF::Turn, .params2D = Vortex2, .params3D = Vortex3, .outline = StepOutline::Alpha,
      .editor = {.gesture = G::Swirl,

@@ -70,9 +70,102 @@ SlicePlane slicePlane(int dimension, int axis, double value) {
     return plane;
 }
 
+SlicePlane slicePlane(int dimension, const Slice& slice, const glm::dvec3& size) {
+    if (dimension != 3) return {};
+    if (!slice.normal) return slicePlane(dimension, slice.axis, slice.value);
+    const glm::dvec3 given = *slice.normal;
+    const double length = std::sqrt(given.x * given.x + given.y * given.y + given.z * given.z);
+    if (!(length > 0.0) || !std::isfinite(length)) return slicePlane(dimension, slice.axis, slice.value);
+    const glm::dvec3 n = given / length;
+    int nearest = 0;
+    for (int i = 1; i < 3; ++i)
+        if (std::abs(n[i]) > std::abs(n[nearest])) nearest = i;
+    // Along an axis exactly: the plane across it, which renders as it always has.
+    if (n[(nearest + 1) % 3] == 0.0 && n[(nearest + 2) % 3] == 0.0)
+        return slicePlane(dimension, nearest, n[nearest] > 0.0 ? slice.value : -slice.value);
+    // The plane across the slice's axis, tilted: its axes, turned into this one, give the
+    // plane's, so a section tilted by a handle keeps its look as it turns. Tilted nearly edge-on
+    // to that axis, the nearest axis's plane gives them instead.
+    const int axis =
+        std::abs(n[std::clamp(slice.axis, 0, 2)]) >= 0.05 ? std::clamp(slice.axis, 0, 2) : nearest;
+    SlicePlane plane = slicePlane(dimension, axis, 0.0);
+    const auto dot = [](const glm::dvec3& a, const glm::dvec3& b) {
+        return a.x * b.x + a.y * b.y + a.z * b.z;
+    };
+    const auto unitOf = [&](const glm::dvec3& a) { return a / std::sqrt(dot(a, a)); };
+    const glm::dvec3 eu = plane.u(), ev = plane.v();
+    plane.turned = true;
+    plane.value = slice.value;
+    plane.nTurned = n;
+    plane.uTurned = unitOf(eu - dot(eu, n) * n);
+    plane.vTurned = unitOf(ev - dot(ev, n) * n - dot(ev, plane.uTurned) * plane.uTurned);
+    // The box's centre moved onto the plane; the extent is the box's span along each axis.
+    const glm::dvec3 centre = 0.5 * size;
+    const glm::dvec3 onPlane = centre + (slice.value - dot(centre, n)) * n;
+    const auto spanOf = [&](const glm::dvec3& a) {
+        return std::abs(a.x) * size.x + std::abs(a.y) * size.y + std::abs(a.z) * size.z;
+    };
+    plane.span = {spanOf(plane.uTurned), spanOf(plane.vTurned)};
+    plane.origin = onPlane - 0.5 * plane.span.x * plane.uTurned - 0.5 * plane.span.y * plane.vTurned;
+    return plane;
+}
+
 SlicePlane slicePlane(const Genome& genome, const std::optional<Slice>& slice) {
     if (genome.dimension != 3 || !slice) return {};
-    return slicePlane(genome.dimension, slice->axis, slice->value);
+    return slicePlane(genome.dimension, *slice, genome.size);
+}
+
+glm::dvec2 sliceOffsetRange(const glm::dvec3& normal, const glm::dvec3& size) {
+    glm::dvec2 range(0.0);
+    for (int i = 0; i < 3; ++i) {
+        const double reach = normal[i] * size[i];
+        (reach < 0.0 ? range.x : range.y) += reach;
+    }
+    return range;
+}
+
+std::optional<glm::dvec3> parseDirection(std::string_view text, std::string_view what, std::string* error) {
+    std::vector<double> numbers;
+    bool ok = true;
+    std::size_t at = 0;
+    const auto separator = [](char c) { return c == ',' || c == ';' || c == ' ' || c == '\t'; };
+    while (ok && at < text.size()) {
+        while (at < text.size() && separator(text[at]))
+            ++at;
+        if (at == text.size()) break;
+        std::size_t end = at;
+        while (end < text.size() && !separator(text[end]))
+            ++end;
+        double value = 0.0;
+        const char* first = text.data() + at;
+        const char* last = text.data() + end;
+        if (*first == '+') ++first;
+        auto [stop, ec] = std::from_chars(first, last, value);
+        ok = ec == std::errc() && stop == last && std::isfinite(value);
+        numbers.push_back(value);
+        at = end;
+    }
+    const std::string named = std::string(what) + " \"" + std::string(text) + "\": ";
+    if (!ok || numbers.size() != 3) {
+        if (error) *error = named + "type three numbers x, y, z (e.g. 1, 0, 1)";
+        return std::nullopt;
+    }
+    const glm::dvec3 n{numbers[0], numbers[1], numbers[2]};
+    const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    if (!(length > 0.0) || !std::isfinite(length)) {
+        if (error) *error = named + "it has no direction (not all three may be 0)";
+        return std::nullopt;
+    }
+    return n / length;
+}
+
+glm::dvec3 sliceNormal(const Slice& slice) {
+    if (slice.normal) {
+        const glm::dvec3 n = *slice.normal;
+        const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        if (length > 0.0 && std::isfinite(length)) return n / length;
+    }
+    return slicePlane(3, slice.axis).normal();
 }
 
 AaPattern aaPattern(std::string_view name) {
@@ -149,6 +242,13 @@ void checkRenderSettings(const Genome& genome, const RenderSettings& settings) {
         if (!std::isfinite(s.value))
             throw InputError(std::string("slice ") + axisName(s.axis) + "=" + number(s.value) +
                              " is not a finite number");
+        if (s.normal) {
+            const glm::dvec3 n = *s.normal;
+            if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z) ||
+                n.x * n.x + n.y * n.y + n.z * n.z == 0.0)
+                throw InputError("slice normal " + number(n.x) + "," + number(n.y) + "," + number(n.z) +
+                                 " is not a direction (three finite numbers, not all 0)");
+        }
     } else if (settings.slice) {
         throw InputError("a slice needs a solid (3D) genome; this genome is flat (2D)");
     }

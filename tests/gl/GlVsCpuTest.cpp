@@ -321,6 +321,21 @@ TEST_F(GlVsCpu, EverySampleGenomeWithAndWithoutAntialiasing) {
     }
 }
 
+TEST_F(GlVsCpu, SolidsOnATurnedSection) {
+    // A section turned to any normal (issue 23) is sampled through the same frame on both.
+    for (const NamedGenome& g : sampleGenomes()) {
+        if (g.genome.dimension != 3) continue;
+        RenderSettings settings;
+        settings.width = 120;
+        settings.height = 96;
+        settings.aa = "rgss";
+        const glm::dvec3 n = glm::normalize(glm::dvec3(1.0, -2.0, 3.0));
+        const glm::dvec2 range = sliceOffsetRange(n, g.genome.size);
+        settings.slice = Slice{2, 0.5 * (range.x + range.y), n};
+        expectMatchesCpu(g.genome, settings, g.name + " turned");
+    }
+}
+
 TEST_F(GlVsCpu, StylusDesignsAtALargerSize) {
     // The version-3 samples at 240 x 160, where a pixel is 5 units: the stylus's fine curls
     // (lambda 8 to 20) span a few pixels each.

@@ -28,7 +28,7 @@ namespace {
 
 /// Registry tools the editor's tool bar leaves out on purpose: solids' own tools, made in the
 /// step form. A tool lands here by a decision, never by being forgotten.
-constexpr Tool NotOnToolBar[] = {Tool::Cylinder, Tool::Sphere};
+constexpr Tool NotOnToolBar[] = {Tool::Cylinder};
 
 bool leftOut(Tool tool) {
     return std::find(std::begin(NotOnToolBar), std::end(NotOnToolBar), tool) != std::end(NotOnToolBar);

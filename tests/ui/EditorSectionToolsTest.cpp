@@ -18,10 +18,19 @@ using namespace marbler::ui;
 
 namespace section_tools_test {
 
-constexpr EditorTool SectionTools[] = {
-    Tool::Drop,    Tool::Spray, EditorTool::DropLine, EditorTool::DropRings, EditorTool::DropScatter,
-    Tool::Line,    Tool::Comb,  Tool::Wave,           Tool::Circle,          Tool::Vortex,
-    Tool::Stretch, Tool::Flow};
+constexpr EditorTool SectionTools[] = {Tool::Drop,
+                                       Tool::Spray,
+                                       EditorTool::DropLine,
+                                       EditorTool::DropRings,
+                                       EditorTool::DropScatter,
+                                       Tool::Line,
+                                       Tool::Comb,
+                                       Tool::Wave,
+                                       Tool::Circle,
+                                       Tool::Sphere,
+                                       Tool::Vortex,
+                                       Tool::Stretch,
+                                       Tool::Flow};
 
 /// A solid of concentric shells in two inks about its centre: any section through the middle
 /// shows rings, which any real deformation bends and a translation only moves.

@@ -36,10 +36,14 @@ struct Region {
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
-/// A cross-section of a solid genome: axis 0 (x = value), 1 (y = value) or 2 (z = value).
+/// A cross-section of a solid genome: axis 0 (x = value), 1 (y = value) or 2 (z = value), or,
+/// with a `normal`, the plane turned to any orientation: the points p with p·normal = value
+/// (`normal` a unit vector; `axis` then names the plane it is tilted from, whose orientation its
+/// coordinates keep).
 struct Slice {
     int axis = 2;
     double value = 0.0;
+    std::optional<glm::dvec3> normal = std::nullopt; ///< a turned section's unit normal; none: across `axis`
 };
 
 /// "x", "y" or "z" for axis 0, 1 or 2 (any other axis: "z").
@@ -56,22 +60,43 @@ Slice parseSlice(std::string_view text);
 /// u along its columns, v down its rows (x-y for z = c and for a flat design, x-z for y = c,
 /// y-z for x = c). The one mapping between those coordinates and the design's 3D points, for
 /// the renderers, the editor's canvas and gestures, the render service and the export dialog.
+///
+/// A turned plane (`turned`) has unit axes `uTurned`, `vTurned` orthogonal to its normal, taken
+/// from the axis-aligned plane it is tilted from (so a plane turned a little looks as that one
+/// does), and
+/// plane coordinate (0, 0) at `origin`, placed so the extent covers the whole design box.
 struct SlicePlane {
     int uAxis = 0;      ///< the design axis along the plane's first coordinate
     int vAxis = 1;      ///< the design axis along the plane's second coordinate
-    int normalAxis = 2; ///< the axis the plane lies across
-    double value = 0.0; ///< where it crosses that axis
+    int normalAxis = 2; ///< the axis the plane lies across (a turned plane: tilted from)
+    double value = 0.0; ///< where it crosses that axis (a turned plane: p·normal)
+    bool turned = false;               ///< the plane is not across an axis
+    glm::dvec3 uTurned{1.0, 0.0, 0.0}; ///< a turned plane's first axis
+    glm::dvec3 vTurned{0.0, 1.0, 0.0}; ///< a turned plane's second axis
+    glm::dvec3 nTurned{0.0, 0.0, 1.0}; ///< a turned plane's unit normal
+    glm::dvec3 origin{0.0};            ///< a turned plane's point at coordinates (0, 0)
+    glm::dvec2 span{0.0};              ///< a turned plane's extent over the design box
 
     /// Unit vectors of the plane's coordinates and of its normal, in design space.
-    glm::dvec3 u() const { return unit(uAxis); }
-    glm::dvec3 v() const { return unit(vAxis); }
-    glm::dvec3 normal() const { return unit(normalAxis); }
+    glm::dvec3 u() const { return turned ? uTurned : unit(uAxis); }
+    glm::dvec3 v() const { return turned ? vTurned : unit(vAxis); }
+    glm::dvec3 normal() const { return turned ? nTurned : unit(normalAxis); }
     /// The plane's extent within a design box of `size`.
-    glm::dvec2 extent(const glm::dvec3& size) const { return {size[uAxis], size[vAxis]}; }
+    glm::dvec2 extent(const glm::dvec3& size) const {
+        return turned ? span : glm::dvec2{size[uAxis], size[vAxis]};
+    }
     /// A design point's plane coordinates (its distance from the plane is dropped).
-    glm::dvec2 toPlane(const glm::dvec3& p) const { return {p[uAxis], p[vAxis]}; }
+    glm::dvec2 toPlane(const glm::dvec3& p) const {
+        if (turned) {
+            const glm::dvec3 d = p - origin;
+            return {d.x * uTurned.x + d.y * uTurned.y + d.z * uTurned.z,
+                    d.x * vTurned.x + d.y * vTurned.y + d.z * vTurned.z};
+        }
+        return {p[uAxis], p[vAxis]};
+    }
     /// The design point at plane coordinates q.
     glm::dvec3 fromPlane(const glm::dvec2& q) const {
+        if (turned) return origin + q.x * uTurned + q.y * vTurned;
         glm::dvec3 p(0.0);
         p[uAxis] = q.x;
         p[vAxis] = q.y;
@@ -90,8 +115,22 @@ private:
 /// The plane across `axis` (clamped to 0..2) at `value` of a genome of `dimension`; a flat
 /// design's plane is always x-y at 0.
 SlicePlane slicePlane(int dimension, int axis, double value = 0.0);
+/// The plane of `slice` (across its axis, or turned to its normal) in a design box of `size`, of
+/// a genome of `dimension` (a flat design's: x-y at 0). A normal along an axis (either sense)
+/// gives exactly the plane across that axis.
+SlicePlane slicePlane(int dimension, const Slice& slice, const glm::dvec3& size);
 /// The plane a render shows: its slice for a solid genome, else x-y at 0.
 SlicePlane slicePlane(const Genome& genome, const std::optional<Slice>& slice);
+/// The values p·normal takes over a design box of `size` (0 to size along an axis): the range
+/// of a section's offset along `normal` (unit).
+glm::dvec2 sliceOffsetRange(const glm::dvec3& normal, const glm::dvec3& size);
+/// A direction typed by a user (a section's normal, a tool's axis): three finite numbers split by
+/// commas, semicolons or spaces ("1, 0, 1"), not all 0. Returns the unit vector, or nothing with
+/// `error` (when given) saying why and naming `what` and the text ("Normal \"0 0 0\": ...").
+std::optional<glm::dvec3> parseDirection(std::string_view text, std::string_view what,
+                                         std::string* error = nullptr);
+/// The unit normal of `slice`: its own, else its axis.
+glm::dvec3 sliceNormal(const Slice& slice);
 
 /// Everything a raster render needs besides the genome.
 struct RenderSettings {
