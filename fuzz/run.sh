@@ -33,12 +33,13 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1
 # Source images: the decoder may hold a raster of up to 64 megapixels (768 MiB) and the reader's
 # own buffer; one allocation over 2 GiB is a finding.
-LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan-oiio.supp \
+LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
 "$BUILD/fuzz/fuzz_source" "$BUILD/corpus-source" fuzz/corpus-source \
     -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1
 # Meshes: within the caps (16 M vertices, 32 M triangles) assimp may allocate a few GiB for a
 # file that announces that much honestly; inputs here are at most 64 KiB, so far less.
+LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
 "$BUILD/fuzz/fuzz_mesh" "$BUILD/corpus-mesh" fuzz/corpus-mesh \
     -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1
