@@ -64,6 +64,9 @@ uniform float uBleed; // the genome's bleed b > 0
 
 // Linear inks 0..15; [16] is the background.
 uniform vec3 uInk[17];
+// A bath that wraps (docs/genome-format.md, "Wrapping bath"): (w, h, 1 / w, 1 / h), or all 0
+// where it does not (then the wrap below subtracts 0 and changes nothing).
+uniform vec4 uWrap;
 #if MARBLER_HAS_SOURCE
 // A 2D raster start, stretched over the design space (sRGB texture: filtered in linear light).
 uniform sampler2D uSource;
@@ -241,6 +244,8 @@ bool pullBack(int k, inout vec3 p, inout int color, inout vec3 blend, inout floa
     int kind = int(o2.w);
 
     vec3 rel = p - o0.xyz;
+    // A wrapping bath: the nearest image of the centre (a spray's; no other form is allowed).
+    rel.xy -= uWrap.xy * floor(rel.xy * uWrap.zw + 0.5);
     vec3 across = rel - dot(rel, o1.xyz) * o1.xyz; // rel itself where nothing is projected out
     float len2 = dot(across, across);
 #if MARBLER_BLEED
@@ -318,7 +323,14 @@ vec3 pullBackVersion2(int k, vec3 p) {
     if (int(o2.w) == 7) return vec3(stylusBack(p.xy, o4, o5), 0.0);
 #endif
     vec3 rel = p - o0.xyz;
-    return int(o2.w) == 5 ? p - stretchShift(dot(rel, o3.xyz), o5) * o2.xyz
+    float u = dot(rel, o3.xyz);
+    // A wrapping bath: u modulo the period across the pass, into the teeth's span.
+    float period = abs(o3.x) > 0.5 ? uWrap.x : uWrap.y;
+    if (period > 0.0) {
+        float first = texelFetch(uTeeth, int(o5.z)).x;
+        u -= period * floor((u - first) / period);
+    }
+    return int(o2.w) == 5 ? p - stretchShift(u, o5) * o2.xyz
                           : o0.xyz + flowBack(rel, o2.xyz, o3.xyz, o4, o5);
 }
 #endif

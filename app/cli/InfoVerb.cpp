@@ -89,6 +89,7 @@ int runInfo(std::span<const std::string> words) {
         out << '\n';
         out << "background: " << toHex(genome.background) << '\n';
         if (genome.bleed > 0.0) out << "bleed:      " << number(genome.bleed) << " design units\n";
+        if (genome.wrap) out << "wrap:       the bath wraps: a straight-repeat tile\n";
         out << "initial:    " << countsByTool(genome.initial) << '\n';
         out << "operations: " << countsByTool(genome.operations) << '\n';
         if (genome.source) {

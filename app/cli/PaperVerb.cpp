@@ -24,7 +24,14 @@ than the one before, with a slight bleed. Writes the image OUT (its format by ex
 print resolution in the file, the genome inside PNG and TIFF) and the genome beside it as
 OUT's name with .marble.json. The same options and seed give the same files.
 
+The default recipe is the procedural marbled-paper post's, as published: painted circles on
+the first colour, radii and shifts shrinking by the golden ratio, tooth gaps growing by it,
+teeth ending at the borders, and a bath that wraps, so the sheet is a straight-repeat tile
+(docs/paper.md). --recipe classic makes Marbler's first papers: drops that push each other
+on a cream bath, with no wrap.
+
 options:
+  --recipe NAME         post (default) or classic
   --size WxH{cm,mm,in}  the sheet, e.g. 21x29.7cm (default: A4, 21x29.7cm); the design is
                         measured in millimetres of it
   --dpi N               print resolution: the image is the size times N pixels (default 300)
@@ -44,8 +51,9 @@ std::filesystem::path genomeBeside(const std::filesystem::path& image) {
 }
 
 int paper(std::span<const std::string> words) {
-    Args args = parseArgs(words, {"size", "dpi", "colors", "passes", "seed", "o", "output", "threads"},
-                          {"pastel", "h", "help"});
+    Args args =
+        parseArgs(words, {"size", "dpi", "colors", "passes", "seed", "o", "output", "threads", "recipe"},
+                  {"pastel", "h", "help"});
     if (args.has("h") || args.has("help")) {
         std::cout << PaperHelp;
         return ExitOk;
@@ -57,6 +65,11 @@ int paper(std::span<const std::string> words) {
     std::pair<double, double> inches = parsePrintSize(args.get("size").value_or("21x29.7cm"));
     const double dpi = parseDpiOption(args, 300.0);
     PaperOptions options;
+    const std::string recipe = args.get("recipe").value_or("post");
+    if (recipe == "classic")
+        options.recipe = PaperRecipe::Classic;
+    else if (recipe != "post")
+        throw InputError("--recipe: must be post or classic (got '" + recipe + "')");
     // Millimetres, to the micrometre: "21x29.7cm" is 210 x 297, not 210.00000000000003.
     options.width = std::round(inches.first * 25.4 * 1000.0) / 1000.0;
     options.height = std::round(inches.second * 25.4 * 1000.0) / 1000.0;

@@ -256,7 +256,8 @@ void DesignDialog::exportImage() {
         return;
     }
     exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi(),
-             settingsDialog.solidExport(), settingsDialog.bitsPerSample(), settingsDialog.mirrorRepeatTile());
+             settingsDialog.solidExport(), settingsDialog.bitsPerSample(), settingsDialog.mirrorRepeatTile(),
+             settingsDialog.straightRepeatTile());
 }
 
 void DesignDialog::copyGenome() {
@@ -272,10 +273,12 @@ bool DesignDialog::saveTo(const QString& file) {
 }
 
 bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi,
-                            std::optional<SolidExport> solid, int bitsPerSample, bool mirrorRepeatTile) {
+                            std::optional<SolidExport> solid, int bitsPerSample, bool mirrorRepeatTile,
+                            bool straightRepeatTile) {
     const DesignExport::ObjectView object{mMesh, mView->viewAngle(), mView->objectZoom(),
                                           mRenderer->usesGl()};
-    return mExport->exportTo(mGenome, object, file, pixels, aa, dpi, solid, bitsPerSample, mirrorRepeatTile);
+    return mExport->exportTo(mGenome, object, file, pixels, aa, dpi, solid, bitsPerSample, mirrorRepeatTile,
+                             straightRepeatTile);
 }
 
 bool DesignDialog::exportSvgTo(const QString& file, double tolerance) {

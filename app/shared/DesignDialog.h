@@ -39,10 +39,11 @@ public:
     /// see exportSizeProblem). `bitsPerSample` 16 makes a 16-bit TIFF. A solid shows `solid`
     /// (its middle z cross-section when unset). `mirrorRepeatTile` (flat designs) writes the
     /// mirror repeat of the render instead, twice `pixels` each way, as `marbler render --repeat
-    /// mirror` does (marbler/Repeat.h).
+    /// mirror` does (marbler/Repeat.h); `straightRepeatTile` the render 2 x 2, for a design whose
+    /// bath wraps.
     bool exportTo(const QString& file, QSize pixels, const QString& aa = QStringLiteral("rgss"),
                   std::optional<double> dpi = std::nullopt, std::optional<SolidExport> solid = std::nullopt,
-                  int bitsPerSample = 8, bool mirrorRepeatTile = false);
+                  int bitsPerSample = 8, bool mirrorRepeatTile = false, bool straightRepeatTile = false);
     /// Starts writing the design as SVG, as `marbler svg --tolerance` does (traceDesign and
     /// toSvg, written atomically), on the export thread with the same progress box and
     /// exportFinished. A solid or a design with a source image fails with the library's reason.

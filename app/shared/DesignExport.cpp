@@ -29,9 +29,11 @@ DesignExport::~DesignExport() {
 
 bool DesignExport::exportTo(const Genome& design, const ObjectView& object, const QString& file, QSize pixels,
                             const QString& aa, std::optional<double> dpi, std::optional<SolidExport> solid,
-                            int bitsPerSample, bool mirrorRepeatTile) {
+                            int bitsPerSample, bool mirrorRepeatTile, bool straightRepeatTile) {
     if (mJob) return false;
-    const bool tile = mirrorRepeatTile && design.dimension != 3;
+    // A straight repeat only where the bath wraps (then the render's edges meet exactly).
+    const bool straight = straightRepeatTile && design.wrap && design.dimension != 3;
+    const bool tile = (mirrorRepeatTile || straight) && design.dimension != 3;
     if (const QString problem = exportSizeProblem(tile ? pixels * 2 : pixels); !problem.isEmpty()) {
         reportError(mWindow, tr("Cannot export the image"), problem);
         return false;
@@ -64,7 +66,7 @@ bool DesignExport::exportTo(const Genome& design, const ObjectView& object, cons
     Genome genome = design;
     SourcePermissions::session().apply(genome);
 
-    return start(file, [genome, view, file, options, tile](const RenderControl& control) {
+    return start(file, [genome, view, file, options, tile, straight](const RenderControl& control) {
         if (tile || view.object) {
             // The tile is made in memory from the whole render. An object needs a GL context of
             // this thread's own: a GL renderer stays on the thread that made it.
@@ -76,7 +78,7 @@ bool DesignExport::exportTo(const Genome& design, const ObjectView& object, cons
             if (tile) {
                 // As marbler render --repeat mirror, the tile carries the genome.
                 written.genome = serializeGenome(genome);
-                image = mirrorRepeat(image);
+                image = straight ? straightRepeat(image) : mirrorRepeat(image);
             }
             writeImage(image, file.toStdString(), written);
         } else {

@@ -39,7 +39,7 @@ public:
     /// an export is already running or the size is beyond the renderer's limits (reported).
     bool exportTo(const Genome& genome, const ObjectView& object, const QString& file, QSize pixels,
                   const QString& aa, std::optional<double> dpi, std::optional<SolidExport> solid,
-                  int bitsPerSample, bool mirrorRepeatTile);
+                  int bitsPerSample, bool mirrorRepeatTile, bool straightRepeatTile = false);
     /// Starts writing `genome` as SVG; see DesignDialog::exportSvgTo.
     bool exportSvgTo(const Genome& genome, const QString& file, double tolerance);
     /// Stops a running export; no file is left behind.

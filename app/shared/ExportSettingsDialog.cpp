@@ -117,6 +117,24 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
             tr("A seamless tile for print and textiles: the design and its mirror images 2 × 2, so "
                "every edge meets its own mirror image (marbler render --repeat mirror)"));
         form->addRow(tr("&Repeat"), mRepeat);
+        if (genome.wrap) {
+            // A bath that wraps: the render's edges meet exactly, so the design repeats as it is.
+            mStraight = new QCheckBox(tr("Straight repeat tile (2 × 2): the design repeated, twice the width "
+                                         "and height"),
+                                      this);
+            mStraight->setObjectName(QStringLiteral("exportStraightRepeat"));
+            mStraight->setToolTip(tr("This design's bath wraps, so the design is a straight-repeat tile: "
+                                     "each edge meets the opposite one without a seam. Ticked, the export "
+                                     "shows it 2 × 2 (unticked, the plain export is the tile itself)"));
+            form->addRow(QString(), mStraight);
+            connect(mStraight, &QCheckBox::toggled, this, [this](bool on) {
+                if (on) mRepeat->setChecked(false);
+                updateSummary();
+            });
+            connect(mRepeat, &QCheckBox::toggled, this, [this](bool on) {
+                if (on) mStraight->setChecked(false);
+            });
+        }
         mTolerance = new QDoubleSpinBox(this);
         mTolerance->setObjectName(QStringLiteral("exportTolerance"));
         mTolerance->setDecimals(3);
@@ -201,7 +219,12 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     QWidget* last = mAa;
     if (mRepeat) {
         setTabOrder(mAa, mRepeat);
-        setTabOrder(mRepeat, mTolerance);
+        if (mStraight) {
+            setTabOrder(mRepeat, mStraight);
+            setTabOrder(mStraight, mTolerance);
+        } else {
+            setTabOrder(mRepeat, mTolerance);
+        }
         last = mTolerance;
     }
     if (mSolidView) {
@@ -257,6 +280,7 @@ void ExportSettingsDialog::updateSummary() {
         mRepeat->setEnabled(!svg);
         mTolerance->setEnabled(svg);
     }
+    if (mStraight) mStraight->setEnabled(!svg);
     if (svg) {
         mPixels->setText(
             tr("Vector outlines in design units (%L1 × %L2)").arg(mGenome.size.x).arg(mGenome.size.y));
@@ -265,7 +289,7 @@ void ExportSettingsDialog::updateSummary() {
         growToShowWrapped(this, mPixels);
         return;
     }
-    const bool tile = mirrorRepeatTile();
+    const bool tile = mirrorRepeatTile() || straightRepeatTile();
     const QSize s = tile ? pixels() * 2 : pixels();
     const QString problem = exportSizeProblem(s);
     QString text = tr("%L1 × %L2 pixels").arg(s.width()).arg(s.height());
@@ -333,6 +357,12 @@ bool ExportSettingsDialog::mirrorRepeatTile() const {
 void ExportSettingsDialog::setMirrorRepeatTile(bool on) {
     if (mRepeat) mRepeat->setChecked(on);
 }
+bool ExportSettingsDialog::straightRepeatTile() const {
+    return mStraight && mStraight->isChecked() && !isSvg();
+}
+void ExportSettingsDialog::setStraightRepeatTile(bool on) {
+    if (mStraight) mStraight->setChecked(on);
+}
 
 std::optional<SolidExport> ExportSettingsDialog::solidExport() const {
     if (mGenome.dimension != 3) return std::nullopt;
@@ -384,7 +414,8 @@ std::string ExportSettingsDialog::aa() const {
 
 void ExportSettingsDialog::accept() {
     if (const QString problem =
-            isSvg() ? QString() : exportSizeProblem(mirrorRepeatTile() ? pixels() * 2 : pixels());
+            isSvg() ? QString()
+                    : exportSizeProblem(mirrorRepeatTile() || straightRepeatTile() ? pixels() * 2 : pixels());
         !problem.isEmpty()) {
         reportError(this, tr("The image is too large"), problem);
         return;

@@ -64,6 +64,10 @@ public:
     /// Whether a raster is exported as its mirror repeat tile (flat designs; twice the size).
     bool mirrorRepeatTile() const;
     void setMirrorRepeatTile(bool on);
+    /// Whether a raster is exported as its straight repeat tile, the render 2 x 2 (offered only
+    /// for a design whose bath wraps; twice the size). It and the mirror repeat exclude each other.
+    bool straightRepeatTile() const;
+    void setStraightRepeatTile(bool on);
     /// A solid design's view (unset for a flat design).
     std::optional<SolidExport> solidExport() const;
     void setSolidExport(const SolidExport& solid);
@@ -96,6 +100,7 @@ private:
     QLabel* mPixels = nullptr;
     QDoubleSpinBox* mTolerance = nullptr; ///< flat designs: the SVG's tolerance
     QCheckBox* mRepeat = nullptr;         ///< flat designs: the mirror repeat tile
+    QCheckBox* mStraight = nullptr;       ///< designs whose bath wraps: the straight repeat tile
     QDialogButtonBox* mButtons = nullptr;
 };
 

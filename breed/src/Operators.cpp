@@ -625,6 +625,9 @@ std::vector<Genome> breed(const BreedRequest& request) {
                     variedFrom = repeated;
                 }
             }
+            // A wrapping bath (docs/genome-format.md) stays one only while every step can wrap:
+            // a child given a drop or a comb is a plain design.
+            if (child.wrap && !canWrap(child)) child.wrap = false;
             return child;
         };
         std::optional<MetaVariation> variation;

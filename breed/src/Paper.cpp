@@ -44,7 +44,44 @@ std::vector<double> teethBetween(Pcg32& rng, double from, double to, double g) {
     return teeth;
 }
 
+// The post's recipe (docs/paper.md).
+constexpr double PostA4Spacing = 20.0; // the post's 2 cm between drop centres at A4
+
+/// Tooth positions for a pass of the post's recipe across `extent`: the first at 0, gaps in
+/// [g, 1.8 g], the last at `extent` exactly (teeth that end at the borders, so that the pass's
+/// teeth span the wrapping bath), a last gap under g / 2 merged into the one before.
+std::vector<double> teethAcross(Pcg32& rng, double extent, double g) {
+    std::vector<double> teeth{0.0};
+    while (teeth.back() < extent)
+        teeth.push_back(hundredth(teeth.back() + g + hundredth(rng.uniform(0.0, 0.8 * g))));
+    if (teeth.size() > 2 && extent - teeth[teeth.size() - 2] < 0.5 * g) teeth.pop_back();
+    teeth.back() = extent;
+    return teeth;
+}
+
 } // namespace
+
+double paperPostSpacing(double width, double height, int colors) {
+    double area = width * height;
+    double spacing = PostA4Spacing * std::sqrt(std::sqrt(area / A4Area));
+    // As paperSpacing: a layer holds about 0.7 points per d^2 (no margin here: the bath wraps).
+    double perColour = static_cast<double>(MaxEntries - MaxPaperPasses) / std::max(colors - 1, 1);
+    return std::max(spacing, std::sqrt(area / (0.5 * perColour)));
+}
+
+glm::dvec2 paperPostRadii(double spacing, int color) {
+    double scale = spacing / power(GoldenRatio, std::max(color - 1, 0));
+    return {0.75 * scale, 1.0 * scale};
+}
+
+glm::dvec2 paperPostFirstShift(double spacing) {
+    return {2.0 * spacing, 7.0 * spacing};
+}
+
+glm::dvec2 paperPostToothGap(double spacing, int pass) {
+    double scale = spacing * power(GoldenRatio, pass);
+    return {0.5 * scale, 1.0 * scale};
+}
 
 double paperSpacing(double width, double height, int colors) {
     // The fourth root of the area: a sheet twice as wide (four times the area) gets drops
@@ -158,6 +195,83 @@ std::vector<Color> paperPalette(Pcg32& rng, int count, bool pastel, Color* backg
     return inks;
 }
 
+namespace {
+
+/// The post's recipe (docs/paper.md): the bath the palette's first colour; a layer of painted
+/// circles (sprays, newest on top) for each other colour, radii shrinking by the golden ratio;
+/// stretch passes along x or y whose teeth end at the borders, shifts shrinking and gaps
+/// growing by the golden ratio; a bleed for the post's blur; a bath that wraps.
+Genome postPaper(std::uint64_t seed, const PaperOptions& options) {
+    const double w = options.width, h = options.height;
+    const double spacing = paperPostSpacing(w, h, options.colors);
+
+    Genome g;
+    g.dimension = 2;
+    g.size = {w, h, 1000.0};
+    g.wrap = true;
+    Pcg32 paletteRng(seed, PaperPaletteStream);
+    Color unused;
+    g.palette = paperPalette(paletteRng, options.colors, options.pastel, &unused);
+    g.background = g.palette.front();
+
+    Pcg32 dropRng(seed, PaperDropStream);
+    const std::size_t perColour =
+        (MaxEntries - MaxPaperPasses) / static_cast<std::size_t>(std::max(options.colors - 1, 1));
+    for (int color = 1; color < options.colors; ++color) {
+        glm::dvec2 radii = paperPostRadii(spacing, color);
+        for (const glm::dvec2& p : poissonDisk(dropRng, 0.0, 0.0, w, h, spacing, perColour)) {
+            Operation spray;
+            spray.tool = Tool::Spray;
+            spray.center = {p.x, p.y, 0.0};
+            // A hundredth at least: the smallest colours of a tiny card round to nothing.
+            spray.radius = std::max(0.01, hundredth(dropRng.uniform(radii.x, radii.y)));
+            spray.color = color;
+            g.initial.push_back(spray);
+        }
+    }
+
+    // As in the classic recipe, along x the pass is at angle 0 from the top left corner (teeth
+    // along y), along y at angle 90 from the top right corner (teeth along x from the right).
+    Pcg32 passRng(seed, PaperPassStream);
+    const glm::dvec2 shifts = paperPostFirstShift(spacing);
+    const double firstShift = passRng.uniform(shifts.x, shifts.y);
+    static constexpr double Powers[] = {0.5, 1.0, 2.0};
+    for (int pass = 0; pass < options.passes; ++pass) {
+        const bool alongX = passRng.chance(0.5);
+        const double extent = alongX ? h : w;
+        Operation stretch;
+        stretch.tool = Tool::Stretch;
+        stretch.angle = alongX ? 0.0 : 90.0;
+        stretch.center = alongX ? glm::dvec3(0.0) : glm::dvec3(w, 0.0, 0.0);
+        const double direction = passRng.chance(0.5) ? 1.0 : -1.0;
+        stretch.shift = hundredth(direction * firstShift / power(GoldenRatio, pass));
+        stretch.power = Powers[passRng.below(3)];
+        const glm::dvec2 gaps = paperPostToothGap(spacing, pass);
+        // At most some 600 teeth, and at least one interval, whatever the sheet.
+        const double gap = std::max(
+            0.01, hundredth(std::clamp(passRng.uniform(gaps.x, gaps.y), extent / 600.0, 0.5 * extent)));
+        stretch.teeth = teethAcross(passRng, extent, gap);
+        g.operations.push_back(stretch);
+    }
+    g.bleed = hundredth(spacing / 25.0);
+
+    g.meta.name = randomName(seed, g);
+    g.meta.seed = seed;
+    g.meta.generator = PaperPostGeneratorVersion;
+    nlohmann::ordered_json paper = nlohmann::ordered_json::object();
+    paper["recipe"] = "post";
+    paper["size"] = {w, h};
+    paper["unit"] = "mm";
+    paper["colors"] = options.colors;
+    paper["passes"] = options.passes;
+    paper["pastel"] = options.pastel;
+    paper["spacing"] = spacing;
+    g.meta.paper = paper;
+    return g;
+}
+
+} // namespace
+
 Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     auto sizeOk = [](double v) { return std::isfinite(v) && v > 0.0 && v <= LargestSide; };
     if (!sizeOk(options.width) || !sizeOk(options.height))
@@ -169,6 +283,7 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     if (options.passes < 0 || options.passes > MaxPaperPasses)
         throw InputError("a paper has 0 to " + std::to_string(MaxPaperPasses) + " passes (got " +
                          std::to_string(options.passes) + ")");
+    if (options.recipe == PaperRecipe::Post) return postPaper(seed, options);
     const double w = options.width, h = options.height;
     const double spacing = paperSpacing(w, h, options.colors);
 

@@ -122,6 +122,69 @@ void checkFreeForm(const Json& value, const std::string& where, const std::strin
     }
 }
 
+// ---- Wrapping bath (docs/genome-format.md, "Wrapping bath") ----
+
+/// Why one step cannot be taken modulo the design's size, or "" where it can: a spray (its disc
+/// wraps, it moves nothing) and a stretch along an axis whose teeth span the design across it
+/// (its shift is then a function of the position modulo the period). Every other tool moves
+/// points by amounts that are not periodic in the design's size.
+std::string whyCannotWrap(const Operation& op, const glm::dvec3& size, std::string& field) {
+    field = "tool";
+    const std::string tool(toolSpec(op.tool).name);
+    switch (op.tool) {
+    case Tool::Spray:
+        return "";
+    case Tool::Stretch: {
+        field = "angle";
+        if (std::fmod(op.angle, 90.0) != 0.0)
+            return "a stretch in a bath that wraps must run along an axis: angle 0, 90, 180 or 270 (got " +
+                   formatNumber(op.angle) + ")";
+        field = "teeth";
+        const bool alongX = std::fmod(std::abs(op.angle), 180.0) == 0.0; // N along y
+        const double period = alongX ? size.y : size.x;
+        const double span = op.teeth.empty() ? 0.0 : op.teeth.back() - op.teeth.front();
+        if (!(std::abs(span - period) <= 1e-9 * period))
+            return "a stretch in a bath that wraps must have teeth spanning the design across the pass, from "
+                   "the first tooth to the last " +
+                   formatNumber(period) + " (the design's " + (alongX ? "height" : "width") + "; got " +
+                   formatNumber(span) + ")";
+        return "";
+    }
+    case Tool::Drop:
+        return "a drop pushes the inks by amounts that never fall to zero, so it cannot wrap; a bath that "
+               "wraps takes spray (a drop that pushes nothing) instead";
+    case Tool::Cylinder:
+    case Tool::Line:
+    case Tool::Comb:
+    case Tool::Wave:
+    case Tool::Circle:
+    case Tool::Sphere:
+    case Tool::Vortex:
+    case Tool::Flow:
+    case Tool::Stylus:
+        break;
+    }
+    return "\"" + tool + "\" cannot wrap; a bath that wraps takes only spray and stretch along an axis";
+}
+
+/// A wrapping bath's rules: 2D, no source image, and every step one that commutes with the
+/// wrap (whyCannotWrap).
+void checkWraps(const Genome& genome, const std::string& name) {
+    if (genome.dimension != 2) throw GenomeError(name, "wrap", "only 2D designs can wrap");
+    if (genome.source)
+        throw GenomeError(name, "wrap",
+                          "a bath that wraps cannot have a source image (its edges would meet in a seam)");
+    for (const auto& [list, key] :
+         {std::pair{&genome.initial, "initial"}, std::pair{&genome.operations, "operations"}})
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            std::string field;
+            std::string why = whyCannotWrap((*list)[i], genome.size, field);
+            if (!why.empty()) throw GenomeError(name, member(indexed(key, i), field), why);
+        }
+}
+
+// ---- end wrapping bath ----
+
 /// The value rules of one entry (finite, positive, palette index, non-zero and non-parallel
 /// directions). Shared by the loader and validateGenome so both say the same thing.
 void checkOperation(const Operation& op, int dimension, int paletteSize, bool inInitial,
@@ -303,13 +366,20 @@ public:
             needVersion2("bleed");
             genome.bleed = readNumber(*it, "bleed");
         }
+        // ---- Wrapping bath (docs/genome-format.md, "Wrapping bath") ----
+        if (auto it = root.find("wrap"); it != root.end()) {
+            needVersion(3, "wrap");
+            if (!it->is_boolean()) fail("wrap", "must be true or false (got " + describe(*it) + ")");
+            genome.wrap = it->get<bool>();
+        }
+        // ---- end wrapping bath ----
         if (auto it = root.find("meta"); it != root.end()) {
             if (!it->is_object()) fail("meta", "must be an object (got " + describe(*it) + ")");
             genome.meta = Meta::fromJson(*it);
         }
         static constexpr std::array Known{"format",     "version", "dimension", "size",
                                           "background", "palette", "initial",   "operations",
-                                          "source",     "bleed",   "meta"};
+                                          "source",     "bleed",   "wrap",      "meta"};
         for (auto it = root.begin(); it != root.end(); ++it)
             if (std::find(Known.begin(), Known.end(), it.key()) == Known.end()) warnUnknown("", it.key());
         return genome;
@@ -733,7 +803,18 @@ void validateGenome(const Genome& genome, const std::string& name) {
         throw GenomeError(name, "bleed", "must be finite (got " + formatNumber(genome.bleed) + ")");
     if (!(genome.bleed >= 0.0))
         throw GenomeError(name, "bleed", "must be >= 0 (got " + formatNumber(genome.bleed) + ")");
+    if (genome.wrap) checkWraps(genome, name);
     checkFreeForm(genome.meta.toJson(), "meta", name, 1);
+}
+
+bool canWrap(const Genome& genome) {
+    if (genome.dimension != 2 || genome.source) return false;
+    for (const std::vector<Operation>* list : {&genome.initial, &genome.operations})
+        for (const Operation& op : *list) {
+            std::string field;
+            if (!whyCannotWrap(op, genome.size, field).empty()) return false;
+        }
+    return true;
 }
 
 Json toJson(const Genome& genome) {
@@ -760,6 +841,7 @@ Json toJson(const Genome& genome) {
     root["operations"] = std::move(operations);
     if (genome.source) root["source"] = Json{{"image", genome.source->image}};
     if (genome.bleed != 0.0) root["bleed"] = number(genome.bleed);
+    if (genome.wrap) root["wrap"] = true;
     if (!genome.meta.empty()) root["meta"] = genome.meta.toJson();
     return root;
 }

@@ -576,6 +576,7 @@ bool writtenWhenOptional(const ParamSpec& spec, const Operation& op) {
 
 int requiredVersion(const Genome& genome) {
     int version = genome.bleed != 0.0 ? 2 : 1;
+    if (genome.wrap) version = 3; // a wrapping bath (docs/genome-format.md)
     for (const std::vector<Operation>* list : {&genome.initial, &genome.operations})
         for (const Operation& op : *list) {
             const ToolSpec& tool = toolSpec(op.tool);

@@ -95,8 +95,15 @@ glm::dvec3 push(const PreparedOp& op, const glm::dvec3& p, double sign, bool acr
 }
 
 /// Drops, sprays and columns: whether P lies in the ink (open boundary).
+/// P - C, of the nearest images of P and C where the bath wraps (C is stored wrapped).
+glm::dvec3 fromCentre(const PreparedOp& op, const glm::dvec3& p) {
+    if (!(op.wrap.x > 0.0)) return p - op.c;
+    return {nearestImage(wrapInto(p.x, op.wrap.x) - op.c.x, op.wrap.x),
+            nearestImage(wrapInto(p.y, op.wrap.y) - op.c.y, op.wrap.y), p.z - op.c.z};
+}
+
 bool inDisc(const PreparedOp& op, const glm::dvec3& p, bool acrossAxis) {
-    glm::dvec3 rel = p - op.c;
+    glm::dvec3 rel = fromCentre(op, p);
     if (acrossAxis) rel -= glm::dot(rel, op.a) * op.a;
     return glm::dot(rel, rel) < op.r * op.r;
 }
@@ -114,7 +121,13 @@ double stretchShift(const PreparedOp& op, double u) {
 }
 
 glm::dvec3 stretch(const PreparedOp& op, const glm::dvec3& p, double sign) {
-    return p + sign * stretchShift(op, glm::dot(p - op.c, op.n)) * op.m;
+    double u = glm::dot(p - op.c, op.n);
+    if (op.wrap.x > 0.0 && !op.teeth.empty()) {
+        // A wrapping bath: u modulo the design's size across the pass, into the teeth's span.
+        const double period = std::abs(op.n.y) > 0.5 ? op.wrap.y : op.wrap.x;
+        u -= period * std::floor((u - op.teeth.front()) / period);
+    }
+    return p + sign * stretchShift(op, u) * op.m;
 }
 
 /// Flow: n implicit midpoint steps of size sign * h in local coordinates.
@@ -305,6 +318,12 @@ std::vector<PreparedOp> prepare(const Genome& genome) {
         ops.push_back(prepare(op, genome.dimension));
     for (const Operation& op : genome.operations)
         ops.push_back(prepare(op, genome.dimension));
+    if (genome.wrap && genome.dimension == 2)
+        for (PreparedOp& op : ops) {
+            op.wrap = {genome.size.x, genome.size.y};
+            if (op.tool == Tool::Spray)
+                op.c = {wrapInto(op.c.x, op.wrap.x), wrapInto(op.c.y, op.wrap.y), 0.0};
+        }
     return ops;
 }
 
@@ -390,7 +409,7 @@ bool insideInk(const PreparedOp& op, const glm::dvec3& p) {
 }
 
 double inkEdgeDistance(const PreparedOp& op, const glm::dvec3& p) {
-    glm::dvec3 rel = p - op.c;
+    glm::dvec3 rel = fromCentre(op, p);
     if (op.tool == Tool::Cylinder) rel -= glm::dot(rel, op.a) * op.a;
     return glm::length(rel) - op.r;
 }

@@ -1,6 +1,7 @@
 #include "marbler/CpuRenderer.h"
 
 #include "Kernel.h"
+#include "SprayGrid.h"
 #include "marbler/Error.h"
 #include "marbler/SourceDecoder.h"
 #include "marbler/Threads.h"
@@ -27,6 +28,8 @@ struct CpuRenderer::Impl {
     std::array<std::uint8_t, 3> backgroundSrgb8{};
     std::optional<LinearRaster> source;
     double bleed = 0.0; ///< the genome's soft ink edges (0: hard)
+    /// A wrapping bath's many sprays, binned (SprayGrid.h); null for other designs.
+    std::shared_ptr<const kernel::SprayGrid> sprayGrid;
     /// The genome's dimension and size only: what the sampling functions read.
     Genome shape;
 
@@ -155,9 +158,17 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
                 const int n = pixels * samples;
                 for (int k = 0; k < n; ++k)
                     tile->id[k] = k;
-                kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
-                                  source ? whereX.data() : nullptr, whereY.data(),
-                                  layers ? &*layers : nullptr);
+                if (sprayGrid) {
+                    // The operations before the sprays in the kernel, the sprays by their grid.
+                    kernel::traceTile(reversed.data(), sprayGrid->first, dimension, *tile, n, colors.data(),
+                                      whereX.data(), whereY.data(), layers ? &*layers : nullptr);
+                    kernel::traceSprays(*sprayGrid, n, colors.data(), whereX.data(), whereY.data(),
+                                        layers ? &*layers : nullptr);
+                } else {
+                    kernel::traceTile(reversed.data(), reversed.size(), dimension, *tile, n, colors.data(),
+                                      source ? whereX.data() : nullptr, whereY.data(),
+                                      layers ? &*layers : nullptr);
+                }
                 shade(j, i0, pixels, traced);
             }
             rowLoop.done();
@@ -213,6 +224,7 @@ CpuRenderer::CpuRenderer(const Genome& genome)
     mImpl->backgroundSrgb8 = encode(mImpl->backgroundLinear);
     if (genome.source && genome.dimension == 2) mImpl->source = decodeSourceImage(genome);
     mImpl->bleed = genome.bleed;
+    mImpl->sprayGrid = kernel::makeSprayGrid(mImpl->reversed, genome.bleed);
 }
 
 namespace {

@@ -232,6 +232,44 @@ template <typename T> [[gnu::always_inline]] inline void slide(T* a, int to, int
     return inside;
 }
 
+// ---- Wrapping bath (docs/genome-format.md, "Wrapping bath") --------------------------------
+
+/// Takes the tile's points into [0, w) x [0, h) (Tools.h wrapInto): at the start of a wrapped
+/// design's trace and after each step that moves them, so a spray needs one image only.
+[[gnu::always_inline]] inline void wrapTile(Tile& t, int n, const glm::dvec2& size) {
+    double* __restrict x = t.x;
+    double* __restrict y = t.y;
+    const double w = size.x, h = size.y;
+    MARBLER_IVDEP
+    for (int i = 0; i < n; ++i) {
+        x[i] = x[i] - w * std::floor(x[i] / w);
+        y[i] = y[i] - h * std::floor(y[i] / h);
+    }
+}
+
+/// A spray in a wrapping bath: the ink test against the nearest image of its (wrapped) centre
+/// (Tools.cpp fromCentre); the points are already wrapped (wrapTile).
+[[gnu::always_inline]] inline std::int64_t sprayWrapped2(const PreparedOp& op, Tile& t, int n) {
+    const double* __restrict x = t.x;
+    const double* __restrict y = t.y;
+    std::int64_t* __restrict flag = t.flag;
+    const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r, w = op.wrap.x, h = op.wrap.y;
+    const double hw = 0.5 * w, hh = 0.5 * h;
+    std::int64_t inside = 0;
+    MARBLER_IVDEP
+    for (int i = 0; i < n; ++i) {
+        double dx = x[i] - cx, dy = y[i] - cy;
+        dx = dx > hw ? dx - w : (dx < -hw ? dx + w : dx);
+        dy = dy > hh ? dy - h : (dy < -hh ? dy + h : dy);
+        std::int64_t in = dx * dx + dy * dy < rr;
+        flag[i] = in;
+        inside += in;
+    }
+    return inside;
+}
+
+// ---- end wrapping bath ----
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 // x86-64: the AVX-512 drops, lines and combs below, and the AVX-512 and AVX2 variants.
 #define MARBLER_X86_VARIANTS 1
@@ -744,6 +782,13 @@ template <Variant V, int Dim>
         along[i] = (x[i] - cx) * nx + (y[i] - cy) * ny;
         below[i] = 0;
     }
+    if (op.wrap.x > 0.0) {
+        // A wrapping bath (Tools.cpp stretch): u modulo the period, into the teeth's span.
+        const double period = std::abs(ny) > 0.5 ? op.wrap.y : op.wrap.x;
+        MARBLER_IVDEP
+        for (int i = 0; i < n; ++i)
+            along[i] = along[i] - period * std::floor((along[i] - first) / period);
+    }
     // The last tooth at or below u: the largest k < intervals with teeth[k] <= u, a halving
     // at a time over the whole tile (a gather per point and halving).
     for (int step = top; step > 0; step >>= 1) {
@@ -1152,10 +1197,17 @@ template <int Dim>
     const double inkR = ink.x, inkG = ink.y, inkB = ink.z;
     const bool column = op.tool == Tool::Cylinder, volume = Dim == 3 && op.tool == Tool::Drop;
     const bool pushes = op.tool != Tool::Spray;
+    // A wrapping bath: the nearest image of the (wrapped) centre; the points are wrapped.
+    const bool wraps = Dim == 2 && op.wrap.x > 0.0;
+    const double ww = op.wrap.x, wh = op.wrap.y;
     std::int64_t stopped = 0;
     MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = Dim == 3 ? z[i] - cz : 0.0;
+        if (wraps) {
+            dx = dx > 0.5 * ww ? dx - ww : (dx < -0.5 * ww ? dx + ww : dx);
+            dy = dy > 0.5 * wh ? dy - wh : (dy < -0.5 * wh ? dy + wh : dy);
+        }
         if (column) {
             double along = dx * ax + dy * ay + dz * az;
             dx = dx - along * ax;
@@ -1241,6 +1293,8 @@ traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& til
             tile.w[i] = 1.0;
             tile.r[i] = tile.g[i] = tile.b[i] = 0.0;
         }
+    const bool wraps = dimension == 2 && count > 0 && ops[0].wrap.x > 0.0;
+    if (wraps) wrapTile(tile, n, ops[0].wrap);
     for (std::size_t k = 0; k < count && n > 0; ++k) {
         const PreparedOp& op = ops[k];
         traversed += static_cast<std::uint64_t>(n);
@@ -1255,7 +1309,8 @@ traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& til
                 n = drop<V, 2>(op, tile, n, colors);
                 break;
             case Tool::Spray:
-                if (ink2(op, tile, n, false) != 0) n = compact(tile, n, 2, op.color, colors);
+                if ((wraps ? sprayWrapped2(op, tile, n) : ink2(op, tile, n, false)) != 0)
+                    n = compact(tile, n, 2, op.color, colors);
                 break;
             case Tool::Line:
                 lineOrComb<V, 2, false>(op, tile, n);
@@ -1274,6 +1329,7 @@ traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& til
                 break;
             case Tool::Stretch:
                 stretch2(op, tile, n);
+                if (wraps) wrapTile(tile, n, op.wrap);
                 break;
             case Tool::Flow:
                 if (op.field == FlowField::Cavity)

@@ -100,6 +100,28 @@ TEST(PaperCli, WritesTheLibrarysGenomeBesideAndInsideTheImage) {
     EXPECT_EQ(expected.operations.size(), 3u);
 }
 
+TEST(PaperCli, ThePostsRecipeIsTheDefaultAndWrapsAndClassicIsKept) {
+    fs::path dir = test::outputDir("paper-recipes");
+    for (const char* recipe : {"", "post", "classic"}) {
+        const std::string name = std::string("sheet-") + (*recipe ? recipe : "default");
+        std::vector<std::string> args = {"paper", "--size", "40x30mm",
+                                         "--dpi", "30",     "--seed",
+                                         "8",     "-o",     (dir / (name + ".png")).string()};
+        if (*recipe) args.insert(args.end(), {"--recipe", recipe});
+        test::RunResult r = runMarbler(args);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        PaperOptions options;
+        options.width = 40.0;
+        options.height = 30.0;
+        options.recipe = std::string(recipe) == "classic" ? PaperRecipe::Classic : PaperRecipe::Post;
+        const std::string file = test::readFile(dir / (name + ".marble.json"));
+        EXPECT_EQ(file, serializeGenome(paperGenome(8, options))) << name;
+        // The post's paper is a straight-repeat tile: its genome says the bath wraps.
+        EXPECT_EQ(file.find("\"wrap\": true") != std::string::npos, options.recipe == PaperRecipe::Post)
+            << name;
+    }
+}
+
 TEST(PaperCli, TheImageHasThePixelSizeAndResolutionAsked) {
     fs::path dir = test::outputDir("paper-size");
     struct Case {
@@ -145,6 +167,8 @@ TEST(PaperCli, BadOptionsExit2WithOneLineAndLeaveNoFile) {
                                                          {"--seed", "-4"},
                                                          {"--bogus"},
                                                          {"stray"},
+                                                         {"--recipe", "turkish"},
+                                                         {"--recipe"},
                                                          {"--size", "2000x2000cm", "--dpi", "1000"}};
     for (const std::vector<std::string>& bad : cases) {
         std::vector<std::string> args = {"paper", "--size", "5x7cm", "--dpi", "20", "--seed", "3", "-o", out};
@@ -172,7 +196,8 @@ TEST(PaperCli, BadOptionsExit2WithOneLineAndLeaveNoFile) {
 TEST(PaperCli, HelpDescribesEveryOption) {
     test::RunResult r = runMarbler({"paper", "--help"});
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* option : {"--size", "--dpi", "--colors", "--passes", "--pastel", "--seed", "-o"})
+    for (const char* option :
+         {"--size", "--dpi", "--colors", "--passes", "--pastel", "--seed", "-o", "--recipe"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 

@@ -3,6 +3,7 @@
 #include "marbler/Paper.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Operators.h"
 #include "marbler/Tools.h"
 
 #include <glm/geometric.hpp>
@@ -18,8 +19,10 @@ double luma(Color c) {
     return (0.299 * c.r + 0.587 * c.g + 0.114 * c.b) / 255.0;
 }
 
+/// Options of the classic recipe (the tests below the post's are of it).
 PaperOptions sheet(double width, double height, int colors = 5, int passes = 3, bool pastel = false) {
     PaperOptions options;
+    options.recipe = PaperRecipe::Classic;
     options.width = width;
     options.height = height;
     options.colors = colors;
@@ -246,6 +249,202 @@ TEST(PaperGenome, BadOptionsAreRefused) {
     EXPECT_THROW(paperGenome(1, sheet(210, 297, 5, -1)), InputError);
     EXPECT_THROW(paperGenome(1, sheet(210, 297, 5, MaxPaperPasses + 1)), InputError);
 }
+
+// ---- The post's recipe (docs/paper.md) ----
+
+PaperOptions postSheet(double width, double height, int colors = 5, int passes = 3) {
+    PaperOptions options;
+    options.width = width;
+    options.height = height;
+    options.colors = colors;
+    options.passes = passes;
+    return options;
+}
+
+TEST(PaperPostRecipe, IsTheDefaultAndReproducibleFromTheSeed) {
+    EXPECT_EQ(PaperOptions{}.recipe, PaperRecipe::Post);
+    const std::string text = serializeGenome(paperGenome(42, PaperOptions{}));
+    EXPECT_EQ(text, serializeGenome(paperGenome(42, postSheet(210, 297))));
+    EXPECT_NE(text, serializeGenome(paperGenome(43, PaperOptions{})));
+    // The classic recipe is another design from the same seed, and stays what it was.
+    EXPECT_NE(text, serializeGenome(paperGenome(42, sheet(210, 297))));
+    EXPECT_EQ(paperGenome(42, sheet(210, 297)).meta.toJson()["generator"], PaperGeneratorVersion);
+    EXPECT_EQ(paperGenome(42, PaperOptions{}).meta.toJson()["generator"], PaperPostGeneratorVersion);
+}
+
+TEST(PaperPostRecipe, IsAValidWrappedVersion3GenomeThatRoundTrips) {
+    Genome g = paperGenome(7, postSheet(210, 297));
+    EXPECT_TRUE(g.wrap);
+    EXPECT_NO_THROW(validateGenome(g, "paper"));
+    EXPECT_EQ(toJson(g)["version"], 3);
+    EXPECT_EQ(parseGenome(serializeGenome(g), "paper.marble.json"), g);
+    EXPECT_EQ(g.meta.toJson()["paper"]["recipe"], "post");
+}
+
+TEST(PaperPostRecipe, TheSpacingIsTwoCentimetresAtA4) {
+    EXPECT_DOUBLE_EQ(paperPostSpacing(210, 297, 5), 20.0);
+    EXPECT_NEAR(paperPostSpacing(420, 594, 5), 20.0 * std::sqrt(2.0), 1e-9);
+}
+
+TEST(PaperPostRecipe, TheBathIsTheFirstColourAndTheDropsArePaintedCirclesNewestOnTop) {
+    for (int colors : {1, 2, 5, 9}) {
+        Genome g = paperGenome(300 + colors, postSheet(210, 297, colors));
+        ASSERT_EQ(static_cast<int>(g.palette.size()), colors);
+        EXPECT_EQ(g.background, g.palette.front());
+        // Sprays (they push nothing: a later circle covers what it lies on), one layer for each
+        // colour after the first, in palette order, every one laid.
+        std::vector<int> perColour(static_cast<std::size_t>(colors), 0);
+        int lastColour = 1;
+        for (const Operation& op : g.initial) {
+            ASSERT_EQ(op.tool, Tool::Spray);
+            ASSERT_GE(op.color, lastColour);
+            lastColour = op.color;
+            ++perColour[static_cast<std::size_t>(op.color)];
+        }
+        EXPECT_EQ(perColour[0], 0);
+        for (int color = 1; color < colors; ++color)
+            EXPECT_GT(perColour[static_cast<std::size_t>(color)], 50) << color;
+    }
+}
+
+TEST(PaperPostRecipe, DropRadiiAreThreeQuartersToOneSpacingShrinkingByTheGoldenRatio) {
+    const double spacing = paperPostSpacing(210, 297, 6);
+    EXPECT_DOUBLE_EQ(paperPostRadii(spacing, 1).x, 0.75 * spacing);
+    EXPECT_DOUBLE_EQ(paperPostRadii(spacing, 1).y, 1.0 * spacing);
+    for (int color = 2; color < 6; ++color) {
+        EXPECT_NEAR(paperPostRadii(spacing, color - 1).x / paperPostRadii(spacing, color).x, GoldenRatio,
+                    1e-12);
+        EXPECT_NEAR(paperPostRadii(spacing, color - 1).y / paperPostRadii(spacing, color).y, GoldenRatio,
+                    1e-12);
+    }
+    std::vector<double> least(6, 1e300), most(6, 0.0);
+    for (std::uint64_t seed = 0; seed < 4; ++seed)
+        for (const Operation& op : paperGenome(seed, postSheet(210, 297, 6)).initial) {
+            glm::dvec2 radii = paperPostRadii(spacing, op.color);
+            EXPECT_GE(op.radius, radii.x - 0.005);
+            EXPECT_LE(op.radius, radii.y + 0.005);
+            least[std::size_t(op.color)] = std::min(least[std::size_t(op.color)], op.radius);
+            most[std::size_t(op.color)] = std::max(most[std::size_t(op.color)], op.radius);
+        }
+    // The draws cover the range, not a part of it.
+    for (int color = 1; color < 6; ++color) {
+        glm::dvec2 radii = paperPostRadii(spacing, color);
+        EXPECT_LT(least[std::size_t(color)], radii.x + 0.05 * (radii.y - radii.x)) << color;
+        EXPECT_GT(most[std::size_t(color)], radii.y - 0.05 * (radii.y - radii.x)) << color;
+    }
+}
+
+TEST(PaperPostRecipe, TheFirstPassShiftsTwoToSevenSpacingsAndEachLaterOneByTheGoldenRatioLess) {
+    const double spacing = paperPostSpacing(210, 297, 5);
+    EXPECT_EQ(paperPostFirstShift(spacing), glm::dvec2(2.0 * spacing, 7.0 * spacing));
+    double least = 1e300, most = 0.0;
+    int positive = 0, negative = 0, alongX = 0, alongY = 0;
+    for (std::uint64_t seed = 0; seed < 40; ++seed) {
+        Genome g = paperGenome(seed, postSheet(210, 297, 5, 4));
+        ASSERT_EQ(g.operations.size(), 4u);
+        const double first = std::abs(g.operations[0].shift);
+        EXPECT_GE(first, 2.0 * spacing - 0.005);
+        EXPECT_LE(first, 7.0 * spacing + 0.005);
+        least = std::min(least, first);
+        most = std::max(most, first);
+        for (std::size_t pass = 1; pass < g.operations.size(); ++pass)
+            EXPECT_NEAR(std::abs(g.operations[pass].shift), first / std::pow(GoldenRatio, double(pass)),
+                        0.011);
+        for (const Operation& op : g.operations) {
+            (op.shift > 0.0 ? positive : negative) += 1;
+            (op.angle == 0.0 ? alongX : alongY) += 1;
+        }
+    }
+    EXPECT_LT(least, 2.5 * spacing);
+    EXPECT_GT(most, 6.5 * spacing);
+    EXPECT_GT(positive, 40);
+    EXPECT_GT(negative, 40);
+    EXPECT_GT(alongX, 40);
+    EXPECT_GT(alongY, 40);
+}
+
+TEST(PaperPostRecipe, ToothGapsGrowByTheGoldenRatioPerPassAndTheTeethEndAtTheBorders) {
+    const double w = 210, h = 297;
+    const double spacing = paperPostSpacing(w, h, 5);
+    for (int pass = 1; pass < 5; ++pass)
+        EXPECT_NEAR(paperPostToothGap(spacing, pass).x / paperPostToothGap(spacing, pass - 1).x, GoldenRatio,
+                    1e-12);
+    EXPECT_EQ(paperPostToothGap(spacing, 0), glm::dvec2(0.5 * spacing, 1.0 * spacing));
+    std::vector<double> meanGap(4, 0.0);
+    for (std::uint64_t seed = 0; seed < 20; ++seed) {
+        Genome g = paperGenome(seed, postSheet(w, h, 5, 4));
+        for (std::size_t pass = 0; pass < g.operations.size(); ++pass) {
+            const Operation& op = g.operations[pass];
+            ASSERT_TRUE(op.angle == 0.0 || op.angle == 90.0) << op.angle;
+            EXPECT_EQ(op.center, op.angle == 0.0 ? glm::dvec3(0.0) : glm::dvec3(w, 0.0, 0.0));
+            const double extent = op.angle == 0.0 ? h : w;
+            ASSERT_GE(op.teeth.size(), 2u);
+            EXPECT_EQ(op.teeth.front(), 0.0);
+            EXPECT_EQ(op.teeth.back(), extent);
+            const glm::dvec2 gaps = paperPostToothGap(spacing, int(pass));
+            for (std::size_t i = 1; i < op.teeth.size(); ++i) {
+                double gap = op.teeth[i] - op.teeth[i - 1];
+                // The last gap ends at the border: at least half a gap (a shorter one merges).
+                const double least = i + 1 == op.teeth.size() ? 0.5 : 1.0;
+                EXPECT_GE(gap, least * std::min(gaps.x, 0.5 * extent) - 0.011);
+                // 1.8 gaps at most, the last one (merged with a short remainder) 2.3.
+                EXPECT_LE(gap, 2.3 * gaps.y + 0.02);
+            }
+            meanGap[pass] += extent / double(op.teeth.size() - 1);
+            // The shift follows the |sin|^p profile with one of the kernel's exact powers.
+            EXPECT_TRUE(op.power == 0.5 || op.power == 1.0 || op.power == 2.0) << op.power;
+        }
+    }
+    for (std::size_t pass = 1; pass < meanGap.size(); ++pass)
+        EXPECT_GT(meanGap[pass], meanGap[pass - 1] * 1.2) << pass;
+}
+
+TEST(PaperPostRecipe, BleedsForThePostsBlur) {
+    Genome g = paperGenome(5, postSheet(210, 297));
+    EXPECT_DOUBLE_EQ(g.bleed, 20.0 / 25.0);
+}
+
+TEST(PaperPostRecipe, HugeOrThinSheetsStayWithinTheFormatsLimits) {
+    for (auto [w, h] : {std::pair{10000.0, 10000.0}, std::pair{100000.0, 10.0}, std::pair{3.0, 2.0}}) {
+        Genome g = paperGenome(3, postSheet(w, h, MaxPaperColors, MaxPaperPasses));
+        EXPECT_LE(g.initial.size() + g.operations.size(), MaxEntries);
+        for (const Operation& op : g.operations)
+            EXPECT_LE(op.teeth.size(), MaxTeeth);
+        EXPECT_NO_THROW(validateGenome(g, "huge")) << w << " x " << h;
+    }
+}
+
+TEST(PaperPostRecipe, BreedingAWrappedPaperGivesValidChildrenThatWrapWhileTheyCan) {
+    // The window breeds from a new paper: every operator's children are valid, and a child
+    // keeps the wrap exactly when all its steps can wrap (a drop or comb it was given cannot).
+    PaperOptions options = postSheet(60, 40, 4, 3);
+    const Genome a = paperGenome(1, options), b = paperGenome(2, options);
+    const Genome plain = paperGenome(3, sheet(60, 40, 4, 3)); // classic: drops, no wrap
+    int wrapped = 0;
+    for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Swap,
+                               GeneticOperator::Reinit}) {
+        BreedRequest request;
+        request.op = op;
+        request.parents = op == GeneticOperator::Alter || op == GeneticOperator::Reinit
+                              ? std::vector<Genome>{a}
+                              : std::vector<Genome>{a, op == GeneticOperator::Swap ? plain : b};
+        request.seed = 11;
+        request.count = 6;
+        request.strength = 0.8;
+        std::vector<Genome> children;
+        ASSERT_NO_THROW(children = breed(request)) << int(op);
+        for (const Genome& child : children) {
+            EXPECT_NO_THROW(validateGenome(child, "child"));
+            if (child.wrap) {
+                EXPECT_TRUE(canWrap(child));
+            }
+            wrapped += child.wrap;
+        }
+    }
+    EXPECT_GT(wrapped, 0);
+}
+
+// ---- end of the post's recipe ----
 
 } // namespace
 } // namespace marbler

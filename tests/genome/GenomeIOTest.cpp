@@ -770,3 +770,93 @@ TEST(Registry, DefaultsLieInTheirRanges) {
             }
         }
 }
+
+// ---- Wrapping bath (docs/genome-format.md, "Wrapping bath") ----
+
+namespace wrapping {
+
+/// A wrapped bath of 200 x 100 with a spray and a stretch, and `extra` steps appended.
+std::string wrappedText(const std::string& version, const std::string& wrap,
+                        const std::string& extraInitial = "", const std::string& extraOperations = "") {
+    return R"({"format": "marbler-genome", "version": )" + version +
+           R"(, "dimension": 2, "size": [200, 100], "background": "#ffffff", "palette": ["#000000"],
+      "wrap": )" +
+           wrap + R"(,
+      "initial": [{"tool": "spray", "center": [195, 5], "radius": 20, "color": 0})" +
+           extraInitial + R"(],
+      "operations": [{"tool": "stretch", "origin": [0, 0], "angle": 0, "teeth": [-10, 40, 90], "shift": 30, "power": 1})" +
+           extraOperations + "]}";
+}
+
+std::string parseError(const std::string& text) {
+    try {
+        parseGenome(text, "w.json");
+    } catch (const GenomeError& e) {
+        return e.what();
+    }
+    return "(loaded without error)";
+}
+
+TEST(WrappingBath, ReadsWritesAndNeedsVersion3) {
+    Genome g = parseGenome(wrappedText("3", "true"), "w.json");
+    EXPECT_TRUE(g.wrap);
+    nlohmann::ordered_json saved = toJson(g);
+    EXPECT_EQ(saved["version"], 3);
+    EXPECT_EQ(saved["wrap"], true);
+    EXPECT_EQ(parseGenome(serializeGenome(g), "again.json"), g);
+    // Without the wrap the same design is version 2 and the file has no "wrap".
+    g.wrap = false;
+    EXPECT_EQ(toJson(g)["version"], 2);
+    EXPECT_FALSE(toJson(g).contains("wrap"));
+    EXPECT_FALSE(parseGenome(wrappedText("3", "false"), "w.json").wrap);
+
+    EXPECT_EQ(parseError(wrappedText("2", "true")),
+              "w.json: wrap: needs format version 3 (the file says version 2)");
+    EXPECT_EQ(parseError(wrappedText("3", "1")), "w.json: wrap: must be true or false (got 1)");
+}
+
+TEST(WrappingBath, AStepThatCannotWrapIsRefusedWithItsPlace) {
+    auto expectRefused = [](const std::string& text, const std::string& where, const std::string& why) {
+        std::string error = parseError(text);
+        EXPECT_EQ(error.rfind("w.json: " + where + ": ", 0), 0u) << error;
+        EXPECT_NE(error.find(why), std::string::npos) << error;
+    };
+    expectRefused(
+        wrappedText("3", "true", R"(, {"tool": "drop", "center": [5, 5], "radius": 2, "color": 0})"),
+        "initial[1].tool", "a drop pushes the inks");
+    expectRefused(
+        wrappedText(
+            "3", "true", "",
+            R"(, {"tool": "comb", "origin": [0, 0], "angle": 0, "alpha": 5, "lambda": 2, "spacing": 10})"),
+        "operations[1].tool", "\"comb\" cannot wrap");
+    expectRefused(
+        wrappedText(
+            "3", "true", "",
+            R"(, {"tool": "stretch", "origin": [0, 0], "angle": 45, "teeth": [0, 100], "shift": 3, "power": 1})"),
+        "operations[1].angle", "along an axis");
+    // Along y (angle 90) the teeth must span the width, 200, not the height.
+    expectRefused(
+        wrappedText(
+            "3", "true", "",
+            R"(, {"tool": "stretch", "origin": [0, 0], "angle": 90, "teeth": [0, 100], "shift": 3, "power": 1})"),
+        "operations[1].teeth", "from the first tooth to the last 200 (the design's width; got 100)");
+    // The same steps are fine where the bath does not wrap.
+    EXPECT_NO_THROW(parseGenome(
+        wrappedText("3", "false", R"(, {"tool": "drop", "center": [5, 5], "radius": 2, "color": 0})"),
+        "w.json"));
+
+    Genome g = parseGenome(wrappedText("3", "true"), "w.json");
+    g.source = SourceImage{"picture.png"};
+    EXPECT_THROW(validateGenome(g, "mem"), GenomeError);
+    try {
+        validateGenome(g, "mem");
+    } catch (const GenomeError& e) {
+        EXPECT_STREQ(
+            e.what(),
+            "mem: wrap: a bath that wraps cannot have a source image (its edges would meet in a seam)");
+    }
+}
+
+} // namespace wrapping
+
+// ---- end wrapping bath ----

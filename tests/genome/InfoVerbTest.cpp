@@ -111,3 +111,18 @@ TEST(InfoVerb, Help) {
     EXPECT_EQ(run.exitCode, 0);
     EXPECT_NE(run.out.find("usage: marbler info GENOME"), std::string::npos) << run.out;
 }
+
+TEST(InfoVerb, SaysWhenTheBathWraps) {
+    const std::filesystem::path file = test::outputDir("info-wrap") / "tile.marble.json";
+    test::writeFile(file, R"({"format": "marbler-genome", "version": 3, "dimension": 2, "size": [200, 100],
+      "background": "#ffffff", "palette": ["#000000"], "wrap": true,
+      "initial": [{"tool": "spray", "center": [195, 5], "radius": 20, "color": 0}], "operations": []})");
+    test::RunResult run = test::runMarbler({"info", file.string()});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("version:    3\n"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("wrap:       the bath wraps: a straight-repeat tile\n"), std::string::npos)
+        << run.out;
+    // Without the wrap, no line.
+    run = test::runMarbler({"info", genomeFile("valid", "base-2d-v2")});
+    EXPECT_EQ(run.out.find("wrap:"), std::string::npos) << run.out;
+}

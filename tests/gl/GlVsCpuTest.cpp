@@ -9,6 +9,7 @@
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Growth.h"
+#include "marbler/Paper.h"
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
 #include "marbler/gl/Backend.h"
@@ -345,6 +346,24 @@ TEST_F(GlVsCpu, StylusDesignsAtALargerSize) {
         settings.height = 160;
         settings.aa = "none";
         expectMatchesCpu(g.genome, settings, g.name + " 240");
+    }
+}
+
+TEST_F(GlVsCpu, AWrappingBathAndItsNeighbouringTiles) {
+    // A wrapping bath (docs/genome-format.md): marbler paper's default recipe, over the tile and
+    // half of each neighbour, hard and soft-edged.
+    PaperOptions options;
+    options.width = 80.0;
+    options.height = 60.0;
+    for (double bleed : {0.0, 0.8}) {
+        Genome g = paperGenome(4, options);
+        ASSERT_TRUE(g.wrap);
+        g.bleed = bleed;
+        RenderSettings settings;
+        settings.width = 160;
+        settings.height = 120;
+        settings.region = Region{-40.0, -30.0, 120.0, 90.0};
+        expectMatchesCpu(g, settings, "wrapping paper, bleed " + std::to_string(bleed));
     }
 }
 

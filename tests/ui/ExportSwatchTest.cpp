@@ -7,6 +7,7 @@
 #include "WaitFor.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/Paper.h"
 #include "marbler/Vector.h"
 #include "shared/DesignDialog.h"
 #include "shared/RenderService.h"
@@ -195,6 +196,65 @@ TEST_F(ExportSwatchTest, RepeatExportIsTheMirrorTileOfAPlainExport) {
         }
     EXPECT_EQ(mismatches, 0);
     // Not trivially symmetric: the design itself is no mirror of itself.
+    EXPECT_NE(plain, plain.mirrored(true, false));
+}
+
+TEST_F(ExportSwatchTest, StraightRepeatIsOfferedWhereTheBathWrapsAndRepeatsTheDesign) {
+    // A design whose bath does not wrap has the mirror repeat only.
+    ExportSettingsDialog plainSettings(test::loadExample("five-stones.marble.json"));
+    EXPECT_EQ(plainSettings.findChild<QCheckBox*>(QStringLiteral("exportStraightRepeat")), nullptr);
+    EXPECT_FALSE(plainSettings.straightRepeatTile());
+
+    // marbler paper's default recipe wraps: both are offered, one at a time.
+    PaperOptions options;
+    options.width = 60.0;
+    options.height = 40.0;
+    const Genome genome = paperGenome(3, options);
+    ASSERT_TRUE(genome.wrap);
+    ExportSettingsDialog settings(genome);
+    auto* straight = settings.findChild<QCheckBox*>(QStringLiteral("exportStraightRepeat"));
+    auto* mirror = settings.findChild<QCheckBox*>(QStringLiteral("exportRepeat"));
+    ASSERT_NE(straight, nullptr);
+    ASSERT_NE(mirror, nullptr);
+    EXPECT_TRUE(straight->text().contains(QStringLiteral("Straight repeat")));
+    EXPECT_FALSE(straight->toolTip().isEmpty());
+    settings.setUnit(QStringLiteral("pixels"));
+    settings.setWidthValue(90.0);
+    straight->click();
+    EXPECT_TRUE(settings.straightRepeatTile());
+    const QSize one = settings.pixels();
+    auto* summary = settings.findChild<QLabel*>(QStringLiteral("exportPixels"));
+    EXPECT_TRUE(
+        summary->text().contains(QStringLiteral("%L1 × %L2").arg(2 * one.width()).arg(2 * one.height())))
+        << summary->text().toStdString();
+    mirror->click();
+    EXPECT_TRUE(settings.mirrorRepeatTile());
+    EXPECT_FALSE(settings.straightRepeatTile()) << "the two repeats exclude each other";
+    straight->click();
+    EXPECT_FALSE(settings.mirrorRepeatTile());
+
+    // The tile on disk is the plain export 2 x 2 (whose opposite edges meet without a seam:
+    // tests/render/WrapTest.cpp).
+    DesignDialog dialog(genome, mService.get(), QStringLiteral("vase"));
+    const QSize size(60, 40);
+    const QString plainFile = dir.filePath(QStringLiteral("plain.png"));
+    const QString tileFile = dir.filePath(QStringLiteral("straight.png"));
+    ASSERT_EQ(exportAndWait(dialog, [&] { return dialog.exportTo(plainFile, size, QStringLiteral("none")); }),
+              QString());
+    ASSERT_EQ(exportAndWait(dialog,
+                            [&] {
+                                return dialog.exportTo(tileFile, size, QStringLiteral("none"), std::nullopt,
+                                                       std::nullopt, 8, false, true);
+                            }),
+              QString());
+    const QImage plain(plainFile), tile(tileFile);
+    ASSERT_EQ(plain.size(), size);
+    ASSERT_EQ(tile.size(), size * 2);
+    int mismatches = 0;
+    for (int y = 0; y < tile.height(); ++y)
+        for (int x = 0; x < tile.width(); ++x)
+            mismatches += tile.pixel(x, y) != plain.pixel(x % size.width(), y % size.height());
+    EXPECT_EQ(mismatches, 0);
     EXPECT_NE(plain, plain.mirrored(true, false));
 }
 

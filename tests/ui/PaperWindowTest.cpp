@@ -28,13 +28,15 @@ protected:
         setOpenChooser({});
         WindowTest::TearDown();
     }
-    /// The cells holding a paper of this generator.
+    /// The cells holding a paper of this generator (either recipe; the window makes the default).
     std::vector<int> paperCells() {
         std::vector<int> cells;
-        for (int i = 0; i < CellCount; ++i)
-            if (model().cell(i) &&
-                model().cell(i)->meta.toJson().value("generator", std::string()) == PaperGeneratorVersion)
+        for (int i = 0; i < CellCount; ++i) {
+            if (!model().cell(i)) continue;
+            const std::string generator = model().cell(i)->meta.toJson().value("generator", std::string());
+            if (generator == PaperGeneratorVersion || generator == PaperPostGeneratorVersion)
                 cells.push_back(i);
+        }
         return cells;
     }
 };

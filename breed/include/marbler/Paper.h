@@ -28,8 +28,23 @@ inline constexpr const char* PaperGeneratorVersion = "marbler-paper-1";
 inline constexpr int MaxPaperColors = 16;
 inline constexpr int MaxPaperPasses = 10;
 
+/// What `meta.generator` says of a paper of the post's recipe (PaperRecipe::Post).
+inline constexpr const char* PaperPostGeneratorVersion = "marbler-paper-post-1";
+
+/// Which recipe makes the paper (docs/paper.md): the procedural marbled-paper post's, as
+/// published (the default), or Marbler's first one.
+enum class PaperRecipe {
+    Post,    ///< painted circles on the first colour, golden-ratio ranges, a bath that wraps
+    Classic, ///< drops that push each other, on a cream bath, with no wrap ("marbler-paper-1")
+};
+
+/// The golden ratio, by which the post's drop radii shrink per colour, its shifts per pass and
+/// by which its tooth gaps grow per pass.
+inline constexpr double GoldenRatio = 1.6180339887498948482;
+
 /// What a paper is made of. Sizes in millimetres.
 struct PaperOptions {
+    PaperRecipe recipe = PaperRecipe::Post;
     double width = 210.0; ///< A4 by default
     double height = 297.0;
     int colors = 5;      ///< 1 to MaxPaperColors inks, one layer of drops each
@@ -46,6 +61,22 @@ double paperSpacing(double width, double height, int colors);
 /// The radii of the drops of the colour layer `layer` (0 first): [lo, hi] = [0.4, 0.6] x
 /// spacing x 0.8^layer, so every later colour's drops are smaller.
 glm::dvec2 paperRadii(double spacing, int layer);
+
+/// The post's recipe: the smallest distance between two drop centres of one colour, 20 mm at A4
+/// (the post's 2 cm), growing as the fourth root of the sheet's area as paperSpacing does, and
+/// kept within the format's entry limit.
+double paperPostSpacing(double width, double height, int colors);
+
+/// The post's recipe: the radii of the drops of palette colour `color` (1 first; colour 0 is
+/// the bath): [0.75, 1.0] x spacing / phi^(color - 1).
+glm::dvec2 paperPostRadii(double spacing, int color);
+
+/// The post's recipe: the range of the first pass's shift, [2, 7] x spacing; pass k's shift is
+/// the first's / phi^k.
+glm::dvec2 paperPostFirstShift(double spacing);
+
+/// The post's recipe: the range of pass k's tooth gap, [0.5, 1.0] x spacing x phi^k.
+glm::dvec2 paperPostToothGap(double spacing, int pass);
 
 /// The marbled paper of a seed. Throws InputError for options out of range (a size not
 /// positive or above 100 m, colours or passes outside their bounds).

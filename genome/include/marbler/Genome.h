@@ -96,6 +96,9 @@ struct Genome {
     std::vector<Operation> operations; ///< strokes applied after `initial`
     std::optional<SourceImage> source;
     double bleed = 0.0; ///< version 2: soft ink edges, width in design units
+    /// Version 3 (Marbler's addition, docs/genome-format.md "Wrapping bath"): the bath is a
+    /// torus of the design's size, so the design repeats without a seam.
+    bool wrap = false;
     Meta meta;          ///< name, lineage and notes (Meta.h); not part of the design
 
     /// The folder relative paths of `source` are resolved against (the genome file's folder);
@@ -112,7 +115,7 @@ struct Genome {
     friend bool operator==(const Genome& a, const Genome& b) {
         return a.dimension == b.dimension && a.size == b.size && a.background == b.background &&
                a.palette == b.palette && a.initial == b.initial && a.operations == b.operations &&
-               a.source == b.source && a.bleed == b.bleed && a.meta == b.meta;
+               a.source == b.source && a.bleed == b.bleed && a.wrap == b.wrap && a.meta == b.meta;
     }
 };
 

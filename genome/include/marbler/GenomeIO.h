@@ -32,6 +32,11 @@ nlohmann::ordered_json toJson(const Genome& genome);
 /// parsing). Throws GenomeError with `name` as the file.
 void validateGenome(const Genome& genome, const std::string& name);
 
+/// Whether a bath of the genome's size could wrap (docs/genome-format.md, "Wrapping bath"):
+/// 2D, no source image, and every step one that commutes with the wrap. Whatever `wrap` says;
+/// breeding clears `wrap` of a child whose new steps cannot wrap.
+bool canWrap(const Genome& genome);
+
 /// Saves a genome atomically. Throws RuntimeFailure.
 void saveGenome(const Genome& genome, const std::filesystem::path& file);
 

@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -70,7 +71,22 @@ struct PreparedOp {
     /// The first integration step of each segment (the steps whose time lies on it), one more
     /// entry holding n: segment i runs the steps firstStep[i] to firstStep[i + 1] - 1.
     std::vector<int> firstStep;
+    /// A wrapping bath (docs/genome-format.md, "Wrapping bath"): the design's width and height,
+    /// the periods every step is taken modulo; (0, 0) where the bath does not wrap. A spray's
+    /// centre `c` is then stored wrapped into [0, w) x [0, h).
+    glm::dvec2 wrap{0.0};
 };
+
+/// x taken into [0, period): x - period floor(x / period) (the kernel and the shaders round alike).
+inline double wrapInto(double x, double period) {
+    return x - period * std::floor(x / period);
+}
+
+/// The nearest image of a difference d of two points in [0, period): d +- period where |d| is
+/// more than half the period.
+inline double nearestImage(double d, double period) {
+    return d > 0.5 * period ? d - period : (d < -0.5 * period ? d + period : d);
+}
 
 /// Prepares one entry of a genome of the given dimension.
 PreparedOp prepare(const Operation& op, int dimension);

@@ -230,6 +230,11 @@ struct GlRenderer::Impl {
         gl->glUniform1i(program.uniform("uPaths"), 5);
         gl->glUniform1i(program.uniform("uOpCount"), GLint(ops.size()));
         gl->glUniform1f(program.uniform("uBleed"), float(genome.bleed));
+        // A wrapping bath (docs/genome-format.md): the periods and their inverses, else 0.
+        const bool wraps = genome.wrap && genome.dimension == 2;
+        gl->glUniform4f(program.uniform("uWrap"), wraps ? float(genome.size.x) : 0.0f,
+                        wraps ? float(genome.size.y) : 0.0f, wraps ? float(1.0 / genome.size.x) : 0.0f,
+                        wraps ? float(1.0 / genome.size.y) : 0.0f);
         std::vector<float> inks(17 * 3, 0.0f);
         for (std::size_t k = 0; k < genome.palette.size() && k < 16; ++k) {
             glm::vec3 c = linearColor(genome.palette[k]);
