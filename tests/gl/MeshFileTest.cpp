@@ -136,6 +136,19 @@ TEST(MeshFiles, AnnouncedCountsAreCheckedBeforeReading) {
         << error;
 }
 
+TEST(MeshFiles, AFaceOfVerticesThatDoNotExistIsRefusedNotAborted) {
+    // Found by fuzz_mesh: assimp's triangulation asserts (and aborts) on an index past the
+    // vertices, which its validation step refuses first.
+    const fs::path dir = folder();
+    test::writeFile(dir / "dangling.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\n"
+                                          "property float y\nproperty float z\nelement face 1\n"
+                                          "property list uchar int vertex_indices\nend_header\n"
+                                          "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    const std::string error = errorOf(dir / "dangling.ply");
+    EXPECT_NE(error.find("dangling.ply: cannot load mesh: "), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+}
+
 TEST(MeshFiles, OtherKindsAreRefusedByWhatTheyAre) {
     const fs::path dir = folder();
     const std::string collada = "<?xml version=\"1.0\"?>\n<COLLADA xmlns=\"http://www.collada.org/2005/11/"

@@ -31,9 +31,11 @@ MeshData loadMesh(const std::string& file) {
         Assimp::BaseImporter* other = importer.GetImporter(i);
         if (importer.UnregisterLoader(other) == aiReturn_SUCCESS) delete other;
     }
+    // The scene is validated before any other step: an index past the vertices (a damaged PLY)
+    // would otherwise reach the triangulation's assertion, which aborts the process.
     const aiScene* scene = importer.ReadFile(
-        file, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                  aiProcess_PreTransformVertices | aiProcess_SortByPType);
+        file, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                  aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices | aiProcess_SortByPType);
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
         throw InputError(file + ": cannot load mesh: " + importer.GetErrorString());
     MeshData mesh;
