@@ -117,6 +117,14 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
         canvases->addWidget(mObject);
         mCanvas->setSlice(mSlice);
         mCompare->setSlice(mSlice);
+    } else {
+        // ---- Issue 23 (flatui): a flat design on an object beside the canvas, on demand
+        // (View ▸ Show on object), its object chosen in the view's corner.
+        mObject = new SolidObjectView(renderer, this);
+        mObject->setObjectName(QStringLiteral("objectView"));
+        mObject->offerObjects();
+        canvases->addWidget(mObject);
+        mObject->setVisible(QSettings().value(QStringLiteral("editor/objectPreview"), false).toBool());
     }
     setCentralWidget(canvases);
     mExports = new EditorExports(
@@ -352,6 +360,20 @@ void EditorWindow::buildMenus() {
     view->addAction(tr("&Play the making"), this,
                     [this] { mTimeline->playing() ? mTimeline->stop() : mTimeline->play(); })
         ->setShortcut(QKeySequence(Qt::Key_P));
+
+    // ---- Issue 23 (flatui): a flat design's object preview beside the canvas.
+    if (mObject && mDocument->design().dimension != 3) {
+        QAction* onObject = view->addAction(tr("Show on &object"));
+        onObject->setObjectName(QStringLiteral("showOnObject"));
+        onObject->setCheckable(true);
+        onObject->setChecked(mObject->isVisibleTo(this));
+        onObject->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+        onObject->setToolTip(tr("Show the design on an object beside the canvas, updated after each edit"));
+        connect(onObject, &QAction::toggled, this, [this](bool on) {
+            QSettings().setValue(QStringLiteral("editor/objectPreview"), on);
+            mObject->setVisible(on);
+        });
+    }
 
     // ---- Issue 27 (fix-canvas): the repeat preview, the bath's shapes in New design.
     QMenu* repeat = view->addMenu(tr("&Repeat preview"));

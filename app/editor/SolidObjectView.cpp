@@ -2,11 +2,16 @@
 
 #include "editor/SolidObjectView.h"
 
+#include "shared/MeshChooser.h"
 #include "shared/RenderService.h"
+#include "shared/StartDialog.h"
 
+#include <QComboBox>
+#include <QFileInfo>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPolygonF>
+#include <QSettings>
 
 #include <glm/geometric.hpp>
 
@@ -26,7 +31,54 @@ SolidObjectView::SolidObjectView(RenderService* renderer, QWidget* parent)
     connect(mRenderer, &RenderService::rendered, this, [this](std::uint64_t key, const QImage& image, bool) {
         if (key != mKey) return;
         mImage = image;
+        mMessage.clear();
         update();
+    });
+    connect(mRenderer, &RenderService::failed, this, [this](std::uint64_t key, const QString& message) {
+        if (key != mKey) return;
+        mImage = QImage();
+        mMessage = tr("Cannot show the design on this object: %1").arg(message);
+        update();
+    });
+}
+
+void SolidObjectView::offerObjects() {
+    if (mObjects) return;
+    mObjects = new QComboBox(this);
+    mObjects->setObjectName(QStringLiteral("objectPreviewMesh"));
+    mObjects->setToolTip(tr("The object the flat design is shown on, laid on its texture coordinates"));
+    for (const QString& name : meshNames())
+        mObjects->addItem(name, name);
+    const QString remembered =
+        QSettings().value(QStringLiteral("editor/flatMesh"), QStringLiteral("book")).toString();
+    const bool known = meshNames().contains(remembered) || QFileInfo(remembered).isFile();
+    mMesh = known ? remembered : QStringLiteral("book");
+    if (mObjects->findData(mMesh) < 0) mObjects->addItem(QFileInfo(mMesh).fileName(), mMesh);
+    mObjects->addItem(tr("Mesh file…"), QString());
+    mObjects->setCurrentIndex(mObjects->findData(mMesh));
+    mObjects->move(6, 6);
+    mObjects->adjustSize();
+    connect(mObjects, &QComboBox::activated, this, [this](int index) {
+        QString mesh = mObjects->itemData(index).toString();
+        if (mesh.isEmpty()) {
+            mesh = chooseMeshFile(window());
+            const QString problem = mesh.isEmpty() ? QString() : meshFileProblem(mesh);
+            if (mesh.isEmpty() || !problem.isEmpty()) {
+                mObjects->setCurrentIndex(std::max(0, mObjects->findData(mMesh)));
+                if (!problem.isEmpty()) {
+                    mMessage = problem;
+                    mImage = QImage();
+                    update();
+                }
+                return;
+            }
+            mesh = QFileInfo(mesh).absoluteFilePath();
+            if (mObjects->findData(mesh) < 0)
+                mObjects->insertItem(mObjects->count() - 1, QFileInfo(mesh).fileName(), mesh);
+            mObjects->setCurrentIndex(mObjects->findData(mesh));
+        }
+        QSettings().setValue(QStringLiteral("editor/flatMesh"), mesh);
+        setMesh(mesh);
     });
 }
 
@@ -36,7 +88,8 @@ SolidObjectView::~SolidObjectView() {
 
 void SolidObjectView::setDesign(const Genome& design) {
     // The design's own angle at first; after that the angle the user turned it to.
-    if (mDesign.dimension != 3) mAngle = viewAngleOf(design);
+    if (!mAngleSet) mAngle = viewAngleOf(design);
+    mAngleSet = true;
     mDesign = design;
     request(false);
 }
@@ -52,7 +105,9 @@ void SolidObjectView::setMesh(const QString& mesh) {
 }
 
 void SolidObjectView::request(bool previewOnly) {
-    if (mDesign.dimension != 3 || width() < 8 || height() < 8) return;
+    if (!mAngleSet || width() < 8 || height() < 8) return;
+    // A flat design's preview is optional: no render while it is hidden.
+    if (mDesign.dimension != 3 && !isVisible()) return;
     RenderRequest r;
     r.genome = mDesign;
     setViewAngle(r.genome, mAngle);
@@ -60,6 +115,7 @@ void SolidObjectView::request(bool previewOnly) {
     const int side = int(std::min(width(), height()) * dpr);
     r.size = QSize(side, side);
     r.mesh = mMesh;
+    r.flatOnObject = mDesign.dimension != 3;
     r.yaw = mAngle.yaw;
     r.pitch = mAngle.pitch;
     r.previewOnly = previewOnly;
@@ -70,7 +126,8 @@ void SolidObjectView::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.fillRect(rect(), palette().window());
     if (mImage.isNull()) {
-        p.drawText(rect(), Qt::AlignCenter, tr("Rendering…"));
+        p.drawText(rect().adjusted(8, 40, -8, -8), Qt::AlignCenter | Qt::TextWordWrap,
+                   mMessage.isEmpty() ? tr("Rendering…") : mMessage);
         return;
     }
     QSizeF size = QSizeF(mImage.size()) / devicePixelRatioF();
@@ -141,6 +198,10 @@ void SolidObjectView::paintSlice(QPainter& p) const {
 
 void SolidObjectView::resizeEvent(QResizeEvent*) {
     request(false);
+}
+
+void SolidObjectView::showEvent(QShowEvent*) {
+    if (mDesign.dimension != 3) request(false);
 }
 
 void SolidObjectView::mousePressEvent(QMouseEvent* event) {

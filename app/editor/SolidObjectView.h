@@ -1,6 +1,6 @@
 #pragma once
-/// The editor's view of a solid design on its object (EditorWindow.h shows it beside the
-/// cross-section).
+/// The editor's view of a design on an object: a solid beside its cross-section, a flat design
+/// (laid on the object's texture coordinates) beside the canvas (EditorWindow.h).
 
 #include "marbler/Genome.h"
 #include "marbler/Mesh.h"
@@ -15,15 +15,16 @@
 #include <cstdint>
 #include <optional>
 
+class QComboBox;
 class QPainter;
 
 namespace marbler::ui {
 
 class RenderService;
 
-/// A solid design on its object, turned by dragging (its angle kept in meta.view), the object
-/// chosen from the built-ins or a mesh file. Rendered by the render service, coarse while
-/// turning.
+/// A design on its object, turned by dragging (its angle kept in meta.view), the object chosen
+/// from the built-ins or a mesh file. Rendered by the render service, coarse while turning; a
+/// flat design only while the view is shown (it is optional beside a flat canvas).
 class SolidObjectView : public QWidget {
     Q_OBJECT
 public:
@@ -32,6 +33,15 @@ public:
     void setDesign(const Genome& design);
     void setMesh(const QString& mesh);
     QString mesh() const { return mMesh; }
+    /// Puts a box of objects in the view's corner (the built-ins and "Mesh file…"), for a flat
+    /// design, whose editor has no section controls; the object chosen is remembered in the
+    /// settings ("editor/flatMesh", the book at first).
+    void offerObjects();
+    /// The box offerObjects() made (null before).
+    QComboBox* objectBox() const { return mObjects; }
+    /// What the view says instead of an image ("Rendering…", why it cannot render); empty once
+    /// an image is shown.
+    QString message() const { return mMessage; }
     /// The cross-section the editor shows: drawn in the corner as a plane through the block.
     void setSlice(const Slice& slice);
     ViewAngle angle() const { return mAngle; }
@@ -40,6 +50,7 @@ public:
 protected:
     void paintEvent(QPaintEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
+    void showEvent(QShowEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
@@ -55,7 +66,10 @@ private:
     QImage mImage;
     QPointF mLast;
     bool mTurning = false;
+    bool mAngleSet = false; ///< the angle was taken from the first design
     std::optional<Slice> mSlice;
+    QComboBox* mObjects = nullptr;
+    QString mMessage;
 };
 
 } // namespace marbler::ui

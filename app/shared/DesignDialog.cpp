@@ -28,18 +28,21 @@
 
 namespace marbler::ui {
 
-DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent)
+DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent,
+                           const QString& flatMesh)
     : QDialog(parent)
     , mGenome(std::move(genome))
     , mRenderer(renderer)
     , mMesh(mesh) {
     const LineageInfo info = lineageOf(mGenome);
     setWindowTitle(tr("Design %1").arg(info.name.isEmpty() ? info.id : info.name));
-    const bool solid = mGenome.dimension == 3;
+    // A flat design on an object is seen as a solid is: turned, zoomed about the object, no swatch.
+    const bool flatOnObject = mGenome.dimension != 3 && !flatMesh.isEmpty();
+    const bool solid = mGenome.dimension == 3 || flatOnObject;
     // The swatch is set before the first render request (the canvas's first resize): no wasted
     // render.
     const bool swatch = !solid && QSettings().value(QStringLiteral("view/repeatSwatch"), false).toBool();
-    mView = new DesignView(mGenome, mRenderer, mMesh, swatch, this);
+    mView = new DesignView(mGenome, mRenderer, flatOnObject ? flatMesh : mMesh, swatch, this, flatOnObject);
     mExport = new DesignExport(this);
 
     // The zoom controls: buttons that never take the focus, so the keys keep working.
@@ -126,7 +129,7 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     buttons->addWidget(exportButton);
     buttons->addWidget(copy);
     buttons->addWidget(editor);
-    if (solid)
+    if (mGenome.dimension == 3)
         buttons->addWidget(makeBakeButton(
             this, [this] { return mGenome; }, mMesh, [this](const QString& file) { emit fileSaved(file); }));
     buttons->addStretch();

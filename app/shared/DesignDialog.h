@@ -26,7 +26,10 @@ class RenderService;
 class DesignDialog : public QDialog {
     Q_OBJECT
 public:
-    DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent = nullptr);
+    /// Shows `genome` large: a solid on `mesh`, a flat design flat, or on `flatMesh` (laid on its
+    /// texture coordinates) where that is not empty.
+    DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent = nullptr,
+                 const QString& flatMesh = QString());
     ~DesignDialog() override;
 
     const Genome& genome() const { return mGenome; }

@@ -29,19 +29,21 @@ QImage mirrorTiled(const QImage& image) {
 } // namespace
 
 DesignView::DesignView(const Genome& genome, RenderService* renderer, const QString& mesh, bool repeatSwatch,
-                       QWidget* parent)
+                       QWidget* parent, bool flatOnObject)
     : QWidget(parent)
     , mGenome(genome)
     , mRenderer(renderer)
     , mMesh(mesh)
+    , mFlatOnObject(flatOnObject && genome.dimension != 3)
+    , mOnObject(genome.dimension == 3 || mFlatOnObject)
     , mKey(renderer->newKey())
     , mAngle(viewAngleOf(mGenome))
-    , mSwatch(repeatSwatch && genome.dimension != 3) {
+    , mSwatch(repeatSwatch && !mOnObject) {
     setObjectName(QStringLiteral("designView"));
     setMinimumSize(320, 320);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
-    setToolTip(mGenome.dimension == 3 ? tr("Drag to turn the object; wheel, + and - zoom")
-                                      : tr("Wheel, + and - zoom about the pointer; drag to pan"));
+    setToolTip(mOnObject ? tr("Drag to turn the object; wheel, + and - zoom")
+                         : tr("Wheel, + and - zoom about the pointer; drag to pan"));
     mViewController.setDesignSize(mGenome.size.x, mGenome.size.y);
     mMessage = tr("rendering…");
     connect(mRenderer, &RenderService::rendered, this,
@@ -90,7 +92,7 @@ void DesignView::wheelEvent(QWheelEvent* event) {
 }
 
 QString DesignView::zoomText() const {
-    const double percent = 100.0 * (mGenome.dimension == 3 ? mObjectZoom : mViewController.scale());
+    const double percent = 100.0 * (mOnObject ? mObjectZoom : mViewController.scale());
     return tr("%L1 %").arg(percent, 0, 'f', percent < 10.0 ? 1 : 0);
 }
 
@@ -107,7 +109,7 @@ void DesignView::zoomOut() {
 }
 
 void DesignView::zoomAt(double factor, QPointF anchor) {
-    if (mGenome.dimension == 3)
+    if (mOnObject)
         // A solid zooms about its framed centre: its camera always looks there.
         mObjectZoom = std::clamp(mObjectZoom * factor, 0.25, 16.0);
     else
@@ -122,13 +124,13 @@ void DesignView::fitView() {
 }
 
 void DesignView::showOneToOne() {
-    if (mGenome.dimension == 3) return;
+    if (mOnObject) return;
     mViewController.oneToOne();
     viewChanged();
 }
 
 void DesignView::panBy(QPointF delta) {
-    if (mGenome.dimension == 3) return;
+    if (mOnObject) return;
     mViewController.panBy(delta * devicePixelRatioF());
     viewChanged();
 }
@@ -147,7 +149,7 @@ QRectF DesignView::imageTarget() const {
         target.moveCenter(QRectF(rect()).center());
         return target;
     }
-    if (mGenome.dimension != 3) {
+    if (!mOnObject) {
         const QRectF r = mViewController.toViewport(mImageRegion);
         return QRectF(r.topLeft() / ratio, r.size() / ratio);
     }
@@ -165,13 +167,14 @@ void DesignView::requestRender(bool previewOnly) {
     RenderRequest request;
     request.genome = mGenome;
     request.mesh = mMesh;
+    request.flatOnObject = mFlatOnObject;
     request.yaw = mAngle.yaw;
     request.pitch = mAngle.pitch;
     request.zoom = mObjectZoom;
     request.previewOnly = previewOnly;
     const QSize viewport = (size() * devicePixelRatioF()).expandedTo(QSize(32, 32));
-    mRequestSwatch = mSwatch && mGenome.dimension != 3;
-    if (mGenome.dimension == 3) {
+    mRequestSwatch = mSwatch && !mOnObject;
+    if (mOnObject) {
         request.size = viewport;
     } else if (mRequestSwatch) {
         // The whole design, whatever the zoom (the swatch judges the repeat, not a detail),
@@ -200,7 +203,7 @@ void DesignView::requestRender(bool previewOnly) {
 void DesignView::mousePressEvent(QMouseEvent* event) {
     mLastPos = event->position();
     mDragging = event->button() == Qt::LeftButton;
-    if (mDragging && mGenome.dimension != 3) setCursor(Qt::ClosedHandCursor);
+    if (mDragging && !mOnObject) setCursor(Qt::ClosedHandCursor);
 }
 
 void DesignView::mouseMoveEvent(QMouseEvent* event) {
@@ -208,7 +211,7 @@ void DesignView::mouseMoveEvent(QMouseEvent* event) {
     const QPointF d = event->position() - mLastPos;
     mLastPos = event->position();
     // While dragging only the quick pass is worth rendering; the release asks for the final one.
-    if (mGenome.dimension != 3)
+    if (!mOnObject)
         mViewController.panBy(d * devicePixelRatioF());
     else
         mAngle = mAngle.dragged(d.x(), d.y());
@@ -220,14 +223,14 @@ void DesignView::mouseReleaseEvent(QMouseEvent*) {
     mDragging = false;
     unsetCursor();
     requestRender();
-    if (mGenome.dimension != 3) return;
+    if (!mOnObject) return;
     // The angle belongs to the design: saved with it, and given back to its cell.
     setViewAngle(mGenome, mAngle);
     emit viewAngleChanged(mAngle);
 }
 
 void DesignView::setRepeatSwatch(bool on) {
-    if (mGenome.dimension == 3) on = false;
+    if (mOnObject) on = false;
     if (on == mSwatch) return;
     mSwatch = on;
     viewChanged();

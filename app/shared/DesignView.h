@@ -24,10 +24,12 @@ class RenderService;
 class DesignView : public QWidget {
     Q_OBJECT
 public:
-    /// Shows `genome` (a solid on `mesh`), rendered by `renderer` under a key of its own;
-    /// `repeatSwatch`: starts with the swatch on (before the first render, so none is wasted).
+    /// Shows `genome` (a solid on `mesh`; a flat design too when `flatOnObject`, laid on the
+    /// object's texture coordinates and turned and zoomed as a solid is), rendered by `renderer`
+    /// under a key of its own; `repeatSwatch`: starts with the swatch on (before the first
+    /// render, so none is wasted).
     DesignView(const Genome& genome, RenderService* renderer, const QString& mesh, bool repeatSwatch,
-               QWidget* parent = nullptr);
+               QWidget* parent = nullptr, bool flatOnObject = false);
     ~DesignView() override;
 
     /// Zoom and pan (flat designs; a solid's zoom magnifies its framed object).
@@ -84,6 +86,8 @@ private:
     Genome mGenome;
     RenderService* mRenderer;
     QString mMesh;
+    bool mFlatOnObject = false;
+    bool mOnObject = false; ///< a solid, or a flat design on an object: seen on the object
     std::uint64_t mKey;
     ViewController mViewController; ///< in device pixels of the canvas
     double mObjectZoom = 1.0;

@@ -2,11 +2,15 @@
 
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
+#include "marbler/ObjectView.h"
 #include "marbler/gl/GlRenderer.h"
+#include "marbler/gl/Meshes.h"
 #include "marbler/gl/RenderView.h"
 #include "shared/SourcePermissions.h"
 
 #include <QApplication>
+#include <QDateTime>
+#include <QFileInfo>
 #include <QTimer>
 
 #include <QMetaObject>
@@ -117,6 +121,7 @@ signals:
     void result(std::uint64_t key, std::uint64_t ticket, const QImage& image, bool final,
                 const QString& error);
     void backendChosen(const QString& name, const QString& why, bool useGl);
+    void meshFailed(const QString& mesh, const QString& message);
 
 private:
     /// Chooses the back end for a preference (already overridden by the environment).
@@ -151,6 +156,38 @@ private:
         return mGl.get();
     }
 
+    /// An object, loaded once and kept: a built-in by its name, a file by its path, size and time
+    /// (a file changed on disk is read again). Throws InputError (and emits meshFailed for a
+    /// file) when it cannot be read, or when a flat design needs texture coordinates it lacks.
+    std::shared_ptr<const MeshData> mesh(const QString& nameOrFile, bool needsUvs) {
+        QString id = nameOrFile;
+        const bool builtin = isBuiltinMesh(nameOrFile.toStdString());
+        if (!builtin) {
+            const QFileInfo info(nameOrFile);
+            id += QStringLiteral("|%1|%2").arg(info.size()).arg(info.lastModified().toMSecsSinceEpoch());
+        }
+        std::shared_ptr<const MeshData> data;
+        try {
+            if (auto it = mMeshes.find(id); it != mMeshes.end()) {
+                data = it->second;
+            } else {
+                if (!builtin && !QFileInfo(nameOrFile).isFile())
+                    throw InputError(nameOrFile.toStdString() + ": no such mesh file");
+                data = std::make_shared<const MeshData>(gl::meshByNameOrFile(nameOrFile.toStdString()));
+                // A few objects are plenty: the grid shows one, a large view or an editor another.
+                if (mMeshes.size() >= 4) mMeshes.clear();
+                mMeshes.emplace(id, data);
+            }
+            if (needsUvs && (data->uvs.size() != data->positions.size() || data->uvsArePatches))
+                throw InputError(nameOrFile.toStdString() +
+                                 ": the mesh has no texture coordinates (UVs) to lay a flat design on");
+        } catch (const InputError& e) {
+            if (!builtin) emit meshFailed(nameOrFile, QString::fromUtf8(e.what()));
+            throw;
+        }
+        return data;
+    }
+
     QImage renderPass(const RenderRequest& request, bool final,
                       std::shared_ptr<const CpuRenderer>& prepared) {
         const Genome& genome = request.genome;
@@ -158,22 +195,35 @@ private:
         control.cancel = &mQueue->abort;
         gl::ViewRequest view;
         view.useGl = mUseGl;
-        if (genome.dimension == 3 && !request.slice) {
-            // On the CPU back end GL only rasterises the object; without any GL the object is
-            // replaced by its middle cross-section below.
-            if (gl::GlRenderer* renderer = mUseGl ? mGl.get() : glRenderer()) {
-                gl::MeshSettings mesh;
-                const QSize size = final ? request.size : request.size / 2;
-                mesh.width = std::max(size.width(), 8);
-                mesh.height = std::max(size.height(), 8);
-                mesh.mesh = request.mesh.toStdString();
-                mesh.yaw = request.yaw;
-                mesh.pitch = request.pitch;
-                mesh.zoom = request.zoom;
-                mesh.supersample = final ? 3 : 1;
-                view.object = mesh;
-                return toQImage(gl::renderView(genome, view, renderer, &control));
+        if (!request.slice && (genome.dimension == 3 || request.flatOnObject)) {
+            const bool flat = genome.dimension != 3;
+            gl::MeshSettings object;
+            const QSize size = final ? request.size : request.size / 2;
+            object.width = std::max(size.width(), 8);
+            object.height = std::max(size.height(), 8);
+            object.mesh = request.mesh.toStdString();
+            object.yaw = request.yaw;
+            object.pitch = request.pitch;
+            object.zoom = request.zoom;
+            object.supersample = final ? 3 : 1;
+            view.object = object;
+            // Read first, so a file that cannot be shown says so on every back end.
+            const std::shared_ptr<const MeshData> data = mesh(request.mesh, flat);
+            if (mUseGl) {
+                try {
+                    return toQImage(gl::renderView(genome, view, mGl.get(), &control));
+                } catch (const Cancelled&) {
+                    throw;
+                } catch (const std::exception&) {
+                    // A GL that cannot draw a flat design on an object: the CPU can.
+                    if (!flat) throw;
+                }
+            } else if (!flat) {
+                // On the CPU back end GL, where there is any, rasterises a solid's object.
+                if (gl::GlRenderer* renderer = glRenderer())
+                    return toQImage(gl::renderView(genome, view, renderer, &control));
             }
+            return toQImage(renderObjectOnCpu(genome, *data, object, &control));
         }
         QSize full = request.size;
         if (!request.region) {
@@ -189,13 +239,6 @@ private:
         settings.width = size.width();
         settings.height = size.height();
         settings.region = request.region;
-        if (genome.dimension == 3 && !settings.region && !request.slice && request.zoom != 1.0) {
-            // The cross-section stands in for the object, so it takes the object's zoom, about
-            // its middle.
-            const double w = genome.size.x / request.zoom, h = genome.size.y / request.zoom;
-            settings.region = Region{(genome.size.x - w) / 2.0, (genome.size.y - h) / 2.0,
-                                     (genome.size.x + w) / 2.0, (genome.size.y + h) / 2.0};
-        }
         settings.aa = final ? request.aa.toStdString() : std::string("none");
         if (genome.dimension == 3) settings.slice = request.slice.value_or(Slice{2, genome.size.z / 2.0});
         if (mUseGl) {
@@ -216,6 +259,8 @@ private:
     bool mUseGl = false;
     std::unique_ptr<gl::GlRenderer> mGl;
     std::string mGlError; ///< why no GL renderer could be made (made once, never retried)
+    /// The objects loaded so far (mesh()), by name, or by a file's path, size and time.
+    std::map<QString, std::shared_ptr<const MeshData>> mMeshes;
 };
 
 RenderService::RenderService(Backend backend, QObject* parent)
@@ -236,6 +281,7 @@ void RenderService::start(Backend backend, gl::BackendPreference preference) {
     mWorker->moveToThread(&mThread);
     connect(&mThread, &QThread::finished, mWorker, &QObject::deleteLater);
     connect(mWorker, &RenderWorker::result, this, &RenderService::onResult);
+    connect(mWorker, &RenderWorker::meshFailed, this, &RenderService::meshUnreadable);
     connect(mWorker, &RenderWorker::backendChosen, this,
             [this](const QString& name, const QString& why, bool useGl) {
                 mBackendName = name;

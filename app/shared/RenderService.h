@@ -4,8 +4,10 @@
 /// gl::chooseBackend decides from the GL probe and the user's preference (a GPU renders on GL; a
 /// software rasteriser such as llvmpipe, or no GL, on the CPU). On the CPU, solid designs are
 /// still shown on their object where any GL context exists: GL rasterises only the object's
-/// positions and normals and the kernel colours them (gl::renderMeshHybrid); with no GL at all
-/// they are shown by their middle cross-section.
+/// positions and normals and the kernel colours them (gl::renderMeshHybrid); with no GL at all,
+/// and for flat designs on an object's texture coordinates wherever GL cannot draw them, the CPU
+/// rasterises the object too (renderObjectOnCpu). Objects are loaded (a built-in generated, a
+/// file read) once and kept, not once per cell and frame.
 /// Requests are keyed (a grid cell, a thumbnail): a newer request for a key supersedes an older
 /// one that has not finished, and only the newest result of a key is delivered. Each request is
 /// rendered twice: a fast preview, then the antialiased final image; the previews of all waiting
@@ -43,10 +45,12 @@ struct RenderRequest {
     /// cross-section), rendered exactly at `size`, whose proportions it must have: a zoomed or
     /// panned view. Unset: the whole design, fitted into `size` with its own proportions.
     std::optional<Region> region;
-    /// Solid (3D) genomes are shown on this object, seen from this orbit, framed and then
-    /// magnified by `zoom` (gl::MeshSettings; without GL their middle cross-section is
-    /// magnified as much).
+    /// Solid (3D) genomes, and flat ones when `flatOnObject`, are shown on this object (a built-in
+    /// name or a mesh file's path), seen from this orbit, framed and then magnified by `zoom`
+    /// (gl::MeshSettings).
     QString mesh = QString::fromLatin1(DefaultMesh);
+    /// A flat design shown on `mesh`, laid on its texture coordinates (FlatOnUvs), instead of flat.
+    bool flatOnObject = false;
     double yaw = 30.0, pitch = 20.0;
     double zoom = 1.0;
     /// Only the fast pass (while the user drags an object around).
@@ -113,6 +117,10 @@ signals:
     void becameIdle();
     /// The worker chose its back end (at start, and after each setPreference).
     void backendReady(const QString& name);
+    /// A mesh file could not be shown (missing, unreadable, no triangles, or no texture
+    /// coordinates for a flat design): the requests on it fail (failed) and this says why, so a
+    /// window can choose another object. Emitted for each request that met it.
+    void meshUnreadable(const QString& mesh, const QString& message);
 
 private:
     void start(Backend backend, gl::BackendPreference preference);

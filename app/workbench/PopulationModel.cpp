@@ -451,6 +451,7 @@ void PopulationModel::restoreSession(SavedSession session) {
     setCurrent(std::clamp(session.current, 0, int(mHistory.size()) - 1));
     mSessionSeed = session.seed;
     mMesh = session.mesh;
+    mFlatMesh = session.flatMesh;
     mSessionLabel = session.label;
     mEmptyStart = false;
     currentGenerationChanged();
@@ -465,6 +466,12 @@ void PopulationModel::setSessionLabel(const SessionLabel& label) {
 void PopulationModel::setMesh(const QString& mesh) {
     if (mesh == mMesh) return;
     mMesh = mesh;
+    autosave();
+}
+
+void PopulationModel::setFlatMesh(const QString& mesh) {
+    if (mesh == mFlatMesh) return;
+    mFlatMesh = mesh;
     autosave();
 }
 

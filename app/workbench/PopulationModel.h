@@ -214,9 +214,16 @@ public:
     /// The session's name and creation time, saved with it; setting them autosaves.
     const SessionLabel& sessionLabel() const { return mSessionLabel; }
     void setSessionLabel(const SessionLabel& label);
-    /// The object solid designs are shown on, kept with the session.
+    /// The object solid designs are shown on (a built-in name or a mesh file's path), kept with
+    /// the session.
     QString mesh() const { return mMesh; }
     void setMesh(const QString& mesh);
+    /// The object flat designs are shown on, laid on its texture coordinates (a built-in name or
+    /// a mesh file's path); empty (the default): flat. Kept with the session.
+    QString flatMesh() const { return mFlatMesh; }
+    void setFlatMesh(const QString& mesh);
+    /// The object a design of `dimension` is shown on: mesh() or flatMesh() (empty: flat).
+    QString objectFor(int dimension) const { return dimension == 3 ? mMesh : mFlatMesh; }
     /// The kind of the current grid: the dimension of its first design (2 when empty).
     int populationDimension() const;
 
@@ -261,6 +268,7 @@ private:
     /// Each generation's designs as session text (serializeSession); empty: to be made.
     std::vector<std::string> mSessionCells;
     QString mMesh = QString::fromLatin1(DefaultMesh);
+    QString mFlatMesh;
     SessionLabel mSessionLabel;
     QStringList mRemovedFavourites;
 };

@@ -9,6 +9,8 @@
 #include <QFileInfo>
 #include <QStandardPaths>
 
+#include <optional>
+
 #include <nlohmann/json.hpp>
 
 namespace marbler::ui {
@@ -65,6 +67,7 @@ std::string serializeSession(const PopulationModel& model, std::vector<std::stri
     if (!model.isEmptyWorkbench()) header["generation"] = model.current().number;
     header["dimension"] = model.populationDimension();
     header["mesh"] = model.mesh().toStdString();
+    if (!model.flatMesh().isEmpty()) header["flatMesh"] = model.flatMesh().toStdString();
     // The label goes before the generations: lists of sessions read only the head.
     const SessionLabel& label = model.sessionLabel();
     if (!label.name.isEmpty()) header["name"] = label.name.toStdString();
@@ -140,11 +143,16 @@ SavedSession parseSession(std::string_view text, const std::string& name) {
         (doc["dimension"].get<int>() != 2 && doc["dimension"].get<int>() != 3))
         bad(name, "dimension", "must be 2 or 3");
     session.dimension = doc["dimension"].get<int>();
-    if (doc.contains("mesh")) {
-        if (!doc["mesh"].is_string()) bad(name, "mesh", "must be a string");
-        const QString mesh = QString::fromStdString(doc["mesh"].get<std::string>());
-        if (meshNames().contains(mesh)) session.mesh = mesh; // an unknown object falls back to the vase
-    }
+    // An unknown object falls back to the vase (flat designs: to flat); a file's path is kept.
+    const auto object = [&](const char* key) -> std::optional<QString> {
+        if (!doc.contains(key)) return std::nullopt;
+        if (!doc[key].is_string()) bad(name, key, "must be a string");
+        const QString mesh = QString::fromStdString(doc[key].get<std::string>());
+        if (meshNames().contains(mesh) || QDir::isAbsolutePath(mesh)) return mesh;
+        return std::nullopt;
+    };
+    if (const auto mesh = object("mesh")) session.mesh = *mesh;
+    if (const auto mesh = object("flatMesh")) session.flatMesh = *mesh;
 
     if (doc.contains("name")) {
         if (!doc["name"].is_string()) bad(name, "name", "must be a string");

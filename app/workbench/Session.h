@@ -1,6 +1,6 @@
 #pragma once
 /// The breeding session on disk: every generation's nine designs, the current generation, the
-/// session seed, the population's kind and the object solid designs are shown on. The model
+/// session seed, the population's kind and the objects designs are shown on. The model
 /// writes it (atomically) after every change of the population, so a crash or a closed window
 /// loses nothing; the next start offers to resume it.
 ///
@@ -20,6 +20,9 @@
 /// `parent` (each generation grew from the one before), are still read. `name` and `created`
 /// (ISO 8601) label the session in the list of kept sessions (SessionStore.h); both are optional,
 /// as is `generation`, the current generation's number as the window shows it (for that list).
+/// `mesh` is the object solid designs are shown on and `flatMesh` (absent: flat) the one flat
+/// designs are shown on, each a built-in name or a mesh file's absolute path; a file that is
+/// gone is still read back (the window says so when it cannot show it, and shows a built-in).
 
 #include "marbler/Mesh.h"
 #include "workbench/PopulationModel.h"
@@ -40,6 +43,7 @@ struct SavedSession {
     std::uint64_t seed = 1;
     int dimension = 2; ///< 2: flat, 3: solid (the kind of the current grid)
     QString mesh = QString::fromLatin1(DefaultMesh);
+    QString flatMesh;     ///< empty: flat designs are shown flat
     SessionLabel label{}; ///< empty name, invalid time when the document has none
 };
 

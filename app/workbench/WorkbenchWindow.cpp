@@ -143,6 +143,18 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
     });
     connect(mRenderer, &RenderService::rendered, this, &WorkbenchWindow::onRendered);
     connect(mRenderer, &RenderService::failed, this, &WorkbenchWindow::onRenderFailed);
+    connect(mRenderer, &RenderService::meshUnreadable, this,
+            [this](const QString& mesh, const QString& message) {
+                // Other views may show another file; only the grid's own object is replaced. Replaced
+                // before the message, whose dialog runs an event loop in which more of these arrive.
+                const bool solid = mesh == this->mesh(), flat = mesh == flatMesh();
+                if (!solid && !flat) return;
+                const QString fallback = QString::fromLatin1(DefaultMesh);
+                if (solid) setMesh(fallback);
+                if (flat) setFlatMesh(fallback);
+                reportError(this, tr("Cannot show the mesh"),
+                            tr("%1\n\nThe designs are shown on the %2 instead.").arg(message, fallback));
+            });
 
     connect(this, &WorkbenchWindow::renderingFinished, mOperators, &OperatorActions::onRenderingFinished);
     connect(mModel, &PopulationModel::populationChanged, this, [this] {
@@ -323,6 +335,12 @@ void WorkbenchWindow::buildActions() {
         requestAllRenders();
         mLineage->update(); // solid designs' thumbnails show the object
     });
+    // Flat designs' object belongs to the session alone: a new one starts flat.
+    connect(mPopulation, &PopulationBar::flatMeshChanged, this, [this](const QString& mesh) {
+        mModel->setFlatMesh(mesh);
+        updateCells(); // whether the cells turn
+        requestAllRenders();
+    });
 }
 
 void WorkbenchWindow::buildDocks() {
@@ -435,12 +453,13 @@ void WorkbenchWindow::setStrength(double strength) {
 }
 
 void WorkbenchWindow::updateCells() {
+    mPopulation->setShownKind(mModel->populationDimension());
     for (int i = 0; i < CellCount; ++i) {
         DesignCell* c = mCells[std::size_t(i)];
         const Genome* g = mModel->cell(i);
         c->setHasDesign(g != nullptr);
         c->setSelectedParent(mModel->isSelected(i));
-        c->setOrbitEnabled(g && g->dimension == 3);
+        c->setOrbitEnabled(g && !objectFor(g->dimension).isEmpty());
         if (!g) {
             c->setCaption({});
             c->setChange({});
@@ -476,13 +495,14 @@ QString WorkbenchWindow::renderCacheKey(int index) const {
     if (!g) return {};
     const QSize size = mCells[std::size_t(index)]->size() * mCells[std::size_t(index)]->devicePixelRatioF();
     // Locks live in meta, and genomeId ignores meta, so a lock change keeps the image.
+    const QString object = objectFor(g->dimension);
     return QStringLiteral("%1/%2x%3/%4/%5/%6")
         .arg(QString::fromStdString(genomeId(*g)))
         .arg(size.width())
         .arg(size.height())
-        .arg(g->dimension == 3 ? mPopulation->mesh() : QString())
-        .arg(g->dimension == 3 ? cellViewAngle(index).yaw : 0.0)
-        .arg(g->dimension == 3 ? cellViewAngle(index).pitch : 0.0);
+        .arg(object)
+        .arg(object.isEmpty() ? 0.0 : cellViewAngle(index).yaw)
+        .arg(object.isEmpty() ? 0.0 : cellViewAngle(index).pitch);
 }
 
 ViewAngle WorkbenchWindow::cellViewAngle(int index) const {
@@ -522,7 +542,8 @@ void WorkbenchWindow::requestRender(int index, bool previewOnly) {
     request.genome = *g;
     const int margin = 12;
     request.size = ((c->size() - QSize(margin, margin)) * c->devicePixelRatioF()).expandedTo(QSize(16, 16));
-    request.mesh = mPopulation->mesh();
+    request.mesh = objectFor(g->dimension);
+    request.flatOnObject = g->dimension != 3 && !request.mesh.isEmpty();
     const ViewAngle angle = cellViewAngle(index);
     request.yaw = angle.yaw;
     request.pitch = angle.pitch;
@@ -1004,7 +1025,7 @@ void WorkbenchWindow::saveDesign(int index) {
 DesignDialog* WorkbenchWindow::openDesign(int index) {
     const Genome* g = mModel->cell(index);
     if (!g) return nullptr;
-    auto* dialog = new DesignDialog(*g, mRenderer, mPopulation->mesh(), this);
+    auto* dialog = new DesignDialog(*g, mRenderer, mPopulation->mesh(), this, mPopulation->flatMesh());
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     // Turning the object in the large view turns the design, where the cell still holds it.
     const std::string id = genomeId(*g);
@@ -1046,6 +1067,7 @@ void WorkbenchWindow::resumeSession(SavedSession session) {
     mModel->restoreSession(std::move(session));
     mPopulation->setDimension(dimension);
     setMesh(mModel->mesh());
+    setFlatMesh(mModel->flatMesh());
     statusBar()->showMessage(
         tr("Resumed the last session at generation %1").arg(mModel->generationLabel(mModel->currentIndex())),
         5000);
@@ -1064,6 +1086,18 @@ QString designCaption(const Genome& genome) {
 
 void WorkbenchWindow::setMesh(const QString& mesh) {
     mPopulation->setMesh(mesh);
+}
+
+QString WorkbenchWindow::flatMesh() const {
+    return mPopulation->flatMesh();
+}
+
+void WorkbenchWindow::setFlatMesh(const QString& mesh) {
+    mPopulation->setFlatMesh(mesh);
+}
+
+QComboBox* WorkbenchWindow::objectBox() const {
+    return mPopulation->objectBox();
 }
 
 } // namespace marbler::ui

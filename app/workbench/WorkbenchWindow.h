@@ -161,9 +161,18 @@ public:
     /// Brings back a saved session: its generations, the current one, the seed, the kind box
     /// and the object.
     void resumeSession(SavedSession session);
-    /// The object solid designs are shown on ("vase", "sphere", ...; see meshNames()).
+    /// The object solid designs are shown on ("vase", "sphere", ...; see meshNames(), or a mesh
+    /// file's path).
     QString mesh() const;
     void setMesh(const QString& mesh);
+    /// The object flat designs are shown on, as mesh(); empty (the default): flat. Kept with
+    /// the session.
+    QString flatMesh() const;
+    void setFlatMesh(const QString& mesh);
+    /// The object a design of `dimension` is shown on: mesh() or flatMesh() (empty: flat).
+    QString objectFor(int dimension) const { return dimension == 3 ? mesh() : flatMesh(); }
+    /// The "New population" bar's object box (tests).
+    QComboBox* objectBox() const;
     /// Brings a design of any generation back into the grid as a new generation (placed as
     /// PopulationModel::placeDesigns places it), so Back undoes it. A design of the other kind
     /// (solid among flat, or the reverse) starts a generation of its own, as an opened one does.

@@ -7,6 +7,7 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/ObjectView.h"
 #include "marbler/gl/GlRenderer.h"
 #include "marbler/gl/HybridMesh.h"
 #include "marbler/gl/Meshes.h"
@@ -343,8 +344,8 @@ TEST_F(ViewTest, LargeViewTurnsTheDesignAndZoomsTheObject) {
     EXPECT_EQ(dialog->zoomText(), QStringLiteral("200 %"));
     QTest::keyClick(dialog, Qt::Key_Minus);
     EXPECT_NEAR(dialog->objectZoom(), std::sqrt(2.0), 1e-9);
-    // With no GL here the middle cross-section stands in for the object, magnified alike:
-    // its final image is the middle half of the fitted one, rendered anew.
+    // With no GL here the CPU draws the object itself (no longer a cross-section standing in),
+    // magnified: its final image is the object zoomed, rendered anew.
     MARBLER_WAIT(dialog->imageIsFinal(), 120000);
     ASSERT_TRUE(dialog->imageIsFinal());
     const QImage magnified = dialog->image();
@@ -353,15 +354,14 @@ TEST_F(ViewTest, LargeViewTurnsTheDesignAndZoomsTheObject) {
     EXPECT_FALSE(dialog->findChild<QToolButton*>(QStringLiteral("zoomOneToOne"))->isEnabled());
     MARBLER_WAIT(dialog->imageIsFinal(), 120000);
     const Genome& g = *model().cell(6);
-    RenderSettings settings;
+    MeshSettings settings;
     settings.width = magnified.width();
     settings.height = magnified.height();
-    settings.aa = "rgss";
-    settings.slice = Slice{2, g.size.z / 2.0};
-    const double w = g.size.x / std::sqrt(2.0), h = g.size.y / std::sqrt(2.0);
-    settings.region =
-        Region{(g.size.x - w) / 2.0, (g.size.y - h) / 2.0, (g.size.x + w) / 2.0, (g.size.y + h) / 2.0};
-    EXPECT_EQ(magnified, toQImage(CpuRenderer(g).render(settings)));
+    settings.yaw = turned.yaw;
+    settings.pitch = turned.pitch;
+    settings.zoom = std::sqrt(2.0);
+    settings.supersample = 3;
+    EXPECT_EQ(magnified, toQImage(renderObjectOnCpu(g, builtinMesh(DefaultMesh), settings)));
     EXPECT_EQ(dialog->image().size(), magnified.size());
     EXPECT_NE(dialog->image(), magnified);
     dialog->close();
