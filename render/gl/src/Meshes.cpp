@@ -12,6 +12,19 @@
 
 namespace marbler::gl {
 
+namespace {
+
+/// assimp's message on one line, as every message of Marbler's is.
+std::string oneLine(std::string message) {
+    for (char& c : message)
+        if (c == '\n' || c == '\r') c = ' ';
+    while (!message.empty() && message.back() == ' ')
+        message.pop_back();
+    return message;
+}
+
+} // namespace
+
 MeshData loadMesh(const std::string& file) {
     try {
         detail::checkMeshFile(file);
@@ -31,13 +44,30 @@ MeshData loadMesh(const std::string& file) {
         Assimp::BaseImporter* other = importer.GetImporter(i);
         if (importer.UnregisterLoader(other) == aiReturn_SUCCESS) delete other;
     }
-    // The scene is validated before any other step: an index past the vertices (a damaged PLY)
-    // would otherwise reach the triangulation's assertion, which aborts the process.
-    const aiScene* scene = importer.ReadFile(
-        file, aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                  aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices | aiProcess_SortByPType);
+    // Read, then checked by Marbler before any of assimp's processing steps: a face naming a
+    // vertex past the last (a damaged PLY) would reach the triangulation's assertion, which
+    // aborts the whole process.
+    const aiScene* scene = importer.ReadFile(file, aiProcess_ValidateDataStructure);
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-        throw InputError(file + ": cannot load mesh: " + importer.GetErrorString());
+        throw InputError(file + ": cannot load mesh: " + oneLine(importer.GetErrorString()));
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh* in = scene->mMeshes[m];
+        for (unsigned f = 0; f < in->mNumFaces; ++f) {
+            const aiFace& face = in->mFaces[f];
+            if (face.mNumIndices == 0 || !face.mIndices)
+                throw InputError(file + ": cannot load mesh: face " + std::to_string(f + 1) +
+                                 " has no vertices");
+            for (unsigned k = 0; k < face.mNumIndices; ++k)
+                if (face.mIndices[k] >= in->mNumVertices)
+                    throw InputError(file + ": cannot load mesh: face " + std::to_string(f + 1) +
+                                     " names vertex " + std::to_string(face.mIndices[k] + 1) + " of " +
+                                     std::to_string(in->mNumVertices));
+        }
+    }
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                         aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                                         aiProcess_SortByPType);
+    if (!scene) throw InputError(file + ": cannot load mesh: " + oneLine(importer.GetErrorString()));
     MeshData mesh;
     // Texture coordinates only when every mesh has them: a mix would leave some faces without.
     bool everyMeshHasUvs = true;
