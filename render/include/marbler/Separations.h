@@ -1,6 +1,7 @@
 #pragma once
 /// Separations a printer can use (issue 29): each ink's *visible* region of a flat design, as
-/// vectors (one Inkscape layer per ink in the default `marbler svg`).
+/// vectors (one Inkscape layer per ink in the default `marbler svg`) and as raster masks
+/// (`marbler render --separations DIR`).
 ///
 /// The vector outlines of marbler/Vector.h are painted oldest first, later inks over earlier
 /// ones; a screen printer needs each ink knocked out instead: the part of its outline that no
@@ -9,11 +10,15 @@
 /// (10^-decimals design units), so a layer is exact to the tolerance and the layers tile the
 /// page without overlapping.
 
+#include "marbler/CpuRenderer.h"
 #include "marbler/Genome.h"
 #include "marbler/Vector.h"
 
 #include <glm/vec2.hpp>
 
+#include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,5 +55,44 @@ std::string layerLabel(const SeparatedDesign& design, const InkLayer& layer);
 /// inkscape:label from layerLabel and an id "background" or "ink-N") per layer, each holding
 /// one even-odd path filled with its colour.
 std::string toLayeredSvg(const SeparatedDesign& design, const SvgPage& page, int decimals);
+
+/// Raster separations: what each pixel of a render is made of, ink by ink, with the render's
+/// own samples (its antialiasing pattern), so recombining them gives the render back.
+struct RasterSeparations {
+    int width = 0, height = 0;
+    Color background;
+    std::vector<Color> palette;
+    /// One mask per layer (the background first, then each palette ink), width x height bytes
+    /// row by row: round(255 x the weight of the pixel's samples that show it).
+    std::vector<std::vector<std::uint8_t>> coverage;
+    /// Per pixel, the palette index of the ink that covers the most of it (the background:
+    /// index palette.size()); with no antialiasing, the one ink it shows.
+    std::vector<std::uint8_t> indices;
+};
+
+/// Renders the separations of a flat design, or of a solid's slice, on the CPU (settings as
+/// for CpuRenderer::render). A genome's `bleed` is drawn as its hard edges (as in the SVG).
+/// Throws InputError for a genome with a source image (its pixels are no inks), for more than
+/// 255 inks (an indexed PNG holds 256 colours) and for bad settings; Cancelled when cancelled.
+RasterSeparations renderSeparations(const Genome& genome, const RenderSettings& settings,
+                                    const RenderControl* control = nullptr);
+
+/// How separations are written.
+struct SeparationFileOptions {
+    int maskBits = 8;          ///< 8: coverage; 1: on where at least half the pixel is the ink
+    std::optional<double> dpi; ///< written into every file's resolution when set
+};
+
+/// The file names of separations: "background.png", "ink-N.png" (N from 1, palette order) and
+/// "indexed.png", in that order.
+std::vector<std::string> separationFileNames(std::size_t inks);
+
+/// Writes the separations into `folder` (made if missing): a greyscale PNG mask per layer
+/// (white where the ink is) and an indexed PNG whose palette is the inks in palette order, the
+/// background last. All files appear together or none. Returns the files written. Throws
+/// InputError for a mask depth other than 1 or 8, RuntimeFailure for I/O failures.
+std::vector<std::filesystem::path> writeSeparations(const RasterSeparations& separations,
+                                                    const std::filesystem::path& folder,
+                                                    const SeparationFileOptions& options = {});
 
 } // namespace marbler
