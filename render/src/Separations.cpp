@@ -325,6 +325,8 @@ std::vector<std::filesystem::path> writeSeparations(const RasterSeparations& sep
         throw InputError("a separation mask holds 1 or 8 bits a pixel (got " +
                          std::to_string(options.maskBits) + ")");
     std::error_code error;
+    if (std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error))
+        throw InputError("'" + folder.string() + "' is a file; separations are written into a folder");
     std::filesystem::create_directories(folder, error);
     if (error) throw RuntimeFailure("cannot make the folder '" + folder.string() + "': " + error.message());
     const std::vector<std::string> names = separationFileNames(separations.palette.size());

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 
 namespace marbler {
 namespace {
@@ -225,6 +226,13 @@ TEST(SeparationsCli, BadInputExitsTwoWithOneLineAndNoFiles) {
                folder.string()},
               "--slice");
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+    // A file where the folder should be is named, and stays as it was.
+    const auto file = dir / "a-file";
+    { std::ofstream(file) << "kept"; }
+    auto r = runMarbler({"render", good, "--separations", file.string()});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("a-file' is a file"), std::string::npos) << r.err;
+    EXPECT_EQ(test::readFile(file), "kept");
 }
 
 } // namespace

@@ -90,7 +90,8 @@ std::vector<std::string> separationFileNames(std::size_t inks);
 /// Writes the separations into `folder` (made if missing): a greyscale PNG mask per layer
 /// (white where the ink is) and an indexed PNG whose palette is the inks in palette order, the
 /// background last. All files appear together or none. Returns the files written. Throws
-/// InputError for a mask depth other than 1 or 8, RuntimeFailure for I/O failures.
+/// InputError for a mask depth other than 1 or 8 and where `folder` is a file, RuntimeFailure
+/// for I/O failures.
 std::vector<std::filesystem::path> writeSeparations(const RasterSeparations& separations,
                                                     const std::filesystem::path& folder,
                                                     const SeparationFileOptions& options = {});
