@@ -20,6 +20,7 @@ PACKAGES=(
     libglm-dev nlohmann-json3-dev
     libopenimageio-dev                           # EXR, JPEG and other formats; source images
     libpng-dev libtiff-dev                       # PNG and TIFF, written directly (fast start)
+    libpolyclipping-dev                          # polygon clipping: the SVG's inks knocked out
     libavcodec-dev libavformat-dev libavutil-dev  # videos and animated images (marbler-video.so)
     libswscale-dev libavfilter-dev               # pixel conversion; the GIF palette filters
     libwebp-dev                                  # the tests read animated WebP back with libwebpdemux

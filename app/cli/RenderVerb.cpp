@@ -2,6 +2,7 @@
 // end on request.
 
 #include "cli/Cli.h"
+#include "cli/RenderSeparations.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
@@ -66,6 +67,14 @@ options:
                             mirrors of both below), so every edge meets its own mirror image
                             and the tile wraps without a seam; the other options apply to the
                             design (--size and --dpi: each quarter has that print size)
+  --separations DIR         separations a printer can use, into the folder DIR (made if
+                            missing; -o is then optional): a mask per layer (background.png,
+                            ink-1.png, ... in palette order; white where the ink is, 8-bit
+                            coverage with --aa's samples) and indexed.png, whose palette is the
+                            inks and then the background; a flat design or a --slice; bleed
+                            drawn as hard edges, as in svg
+  --mask-bits 1|8           the masks' depth with --separations (default 8; 1: on where at
+                            least half the pixel is the ink, for screens)
   --progress                show progress on stderr even when it is not a terminal
   --quiet                   no progress line
   -h, --help                this text
@@ -77,16 +86,19 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
                  const std::filesystem::path& outFile);
 
 int render(std::span<const std::string> words) {
-    Args args = parseArgs(words,
-                          {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh",
-                           "view", "supersample", "cut", "threads", "repeat", "steps"},
-                          {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
+    Args args =
+        parseArgs(words,
+                  {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
+                   "supersample", "cut", "threads", "repeat", "steps", "separations", "mask-bits"},
+                  {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << RenderHelp;
         return ExitOk;
     }
     oneGenomeArgument(args, "render");
-    const std::optional<std::string> output = requiredOutput(args, "render", "OUT");
+    // --separations DIR may stand in for -o (RenderSeparations.h).
+    const std::optional<std::string> output =
+        separationsWithoutOutput(args) ? std::string() : requiredOutput(args, "render", "OUT");
     const std::filesystem::path outFile(*output);
 
     // Everything the command line can check is checked before the genome is read.
@@ -123,6 +135,8 @@ int render(std::span<const std::string> words) {
             throw InputError("--cut: the plane's normal NX,NY,NZ must not be zero (got '" + *cut + "')");
     }
 
+    if (args.has("mask-bits") && !args.has("separations"))
+        throw InputError("--mask-bits only applies with --separations");
     const int steps = parseIntOption(args, "steps", -1, 0, std::numeric_limits<int>::max());
 
     const std::string genomeName = args.positional[0];
@@ -193,6 +207,10 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
     }
     settings.width = width;
     settings.height = height;
+    if (args.has("separations")) {
+        writeRenderSeparations(args, genome, settings, exportOptions.dpi);
+        if (outFile.empty()) return ExitOk;
+    }
     const bool repeat = args.has("repeat");
     if (repeat && (2 * std::int64_t(width) > MaxImageSide || 2 * std::int64_t(height) > MaxImageSide ||
                    4 * std::int64_t(width) * height > MaxImagePixels))

@@ -91,9 +91,10 @@ struct CpuRenderer::Impl {
     /// row with all their samples, pixel by pixel, left to right. Each worker gets its own
     /// shader from `makeShader()`; `shade(row, i0, pixels, traced)` turns a traced tile into
     /// pixels i0 .. i0 + pixels - 1 of the row.
+    /// With `hardEdges`, a genome's bleed is not applied: colors[k] follows the hard rule.
     template <typename MakeShader>
     void traceRows(const RenderSettings& settings, int y0, int y1, const RenderControl* control,
-                   const MakeShader& makeShader) const;
+                   const MakeShader& makeShader, bool hardEdges = false) const;
 
     /// Renders rows [y0, y1) in linear light; `emit(row, linearRgb)` receives each finished row
     /// (width * 3 doubles, the weighted average of its samples) from the worker that made it.
@@ -114,7 +115,8 @@ void checkRows(const RenderSettings& settings, int y0, int y1) {
 
 template <typename MakeShader>
 void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1,
-                                  const RenderControl* control, const MakeShader& makeShader) const {
+                                  const RenderControl* control, const MakeShader& makeShader,
+                                  bool hardEdges) const {
     const AaPattern pattern = aaPattern(settings.aa);
     const SampleFrame frame = sampleFrame(shape, settings);
     const int width = settings.width;
@@ -128,8 +130,9 @@ void CpuRenderer::Impl::traceRows(const RenderSettings& settings, int y0, int y1
         auto tile = std::make_unique<kernel::Tile>();
         std::vector<int> colors(kernel::TileSize);
         std::vector<double> whereX(kernel::TileSize), whereY(kernel::TileSize);
-        std::vector<double> weight(bleed > 0.0 ? kernel::TileSize : 0), rgb(weight.size() * 3);
-        const std::optional<kernel::Bleed> layers = bleedFor(weight.data(), rgb.data());
+        std::vector<double> weight(bleed > 0.0 && !hardEdges ? kernel::TileSize : 0), rgb(weight.size() * 3);
+        const std::optional<kernel::Bleed> layers =
+            hardEdges ? std::nullopt : bleedFor(weight.data(), rgb.data());
         const Traced traced{colors.data(), whereX.data(), whereY.data(), layers ? weight.data() : nullptr,
                             layers ? rgb.data() : nullptr};
         std::vector<glm::dvec3> rowPart(static_cast<std::size_t>(samples));
@@ -309,6 +312,28 @@ void CpuRenderer::renderRows(const RenderSettings& settings, int y0, int y1, std
                 out[k + c] = code[c];
             }
     });
+}
+
+void CpuRenderer::renderRowsCoverage(const RenderSettings& settings, int y0, int y1, float* coverage,
+                                     const RenderControl* control) const {
+    checkRenderSettings(mImpl->shape, settings);
+    checkRows(settings, y0, y1);
+    const AaPattern pattern = aaPattern(settings.aa);
+    const int samples = static_cast<int>(pattern.offsets.size());
+    const std::size_t channels = mImpl->paletteLinear.size() + 1;
+    const std::size_t stride = std::size_t(settings.width) * channels;
+    std::fill(coverage, coverage + std::size_t(y1 - y0) * stride, 0.0f);
+    mImpl->traceRows(
+        settings, y0, y1, control,
+        [&] {
+            return [&](int j, int i0, int pixels, const Impl::Traced& traced) {
+                float* out = coverage + std::size_t(j - y0) * stride + std::size_t(i0) * channels;
+                for (int p = 0, k = 0; p < pixels; ++p, out += channels)
+                    for (int s = 0; s < samples; ++s, ++k)
+                        out[std::size_t(traced.colors[k] + 1)] += static_cast<float>(pattern.weights[s]);
+            };
+        },
+        true);
 }
 
 void CpuRenderer::renderRowsLinear(const RenderSettings& settings, int y0, int y1, float* rgb,

@@ -3,6 +3,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
+#include "marbler/Separations.h"
 #include "marbler/Threads.h"
 #include "marbler/Tools.h"
 
@@ -234,7 +235,17 @@ int decimalsFor(double tolerance) {
     return std::clamp(static_cast<int>(std::ceil(-std::log10(tolerance / 100.0))), 1, 9);
 }
 
-std::string toSvg(const VectorDesign& design, int decimals) {
+SvgPage pageAtDpi(double width, double height, double dpi) {
+    return {width / dpi * 25.4, height / dpi * 25.4};
+}
+
+std::string svgLength(double mm) {
+    std::string out;
+    appendNumber(out, mm, 3);
+    return out + "mm";
+}
+
+std::string toSvg(const VectorDesign& design, int decimals, const std::optional<SvgPage>& page) {
     std::string out;
     out.reserve(64 + design.vertexCount * (10 + 2 * decimals));
     auto number = [&](double v) { appendNumber(out, v, decimals); };
@@ -244,9 +255,15 @@ std::string toSvg(const VectorDesign& design, int decimals) {
     out += ' ';
     number(design.height);
     out += "\" width=\"";
-    number(design.width);
+    if (page)
+        out += svgLength(page->widthMm);
+    else
+        number(design.width);
     out += "\" height=\"";
-    number(design.height);
+    if (page)
+        out += svgLength(page->heightMm);
+    else
+        number(design.height);
     out += "\">\n<rect x=\"0\" y=\"0\" width=\"";
     number(design.width);
     out += "\" height=\"";
@@ -269,8 +286,9 @@ std::string toSvg(const VectorDesign& design, int decimals) {
     return out;
 }
 
-void writeSvg(const VectorDesign& design, const std::filesystem::path& file, int decimals) {
-    writeFileAtomically(file, toSvg(design, decimals));
+void writeSvg(const VectorDesign& design, const std::filesystem::path& file, int decimals, double dpi) {
+    writeFileAtomically(file, toLayeredSvg(knockOut(design, decimals),
+                                           pageAtDpi(design.width, design.height, dpi), decimals));
 }
 
 } // namespace marbler

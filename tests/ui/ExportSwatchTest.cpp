@@ -8,6 +8,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Paper.h"
+#include "marbler/Separations.h"
 #include "marbler/Vector.h"
 #include "shared/DesignDialog.h"
 #include "shared/RenderService.h"
@@ -106,7 +107,12 @@ TEST_F(ExportSwatchTest, SvgExportWritesWhatMarblerSvgWrites) {
     options.tolerance = t;
     const VectorDesign traced = traceDesign(genome, options);
     ASSERT_GT(traced.vertexCount, 0u);
-    EXPECT_EQ(pathVertices(written), traced.vertexCount);
+    // The printer's layers (Separations.h), as marbler svg writes by default.
+    std::size_t layered = 0;
+    for (const InkLayer& layer : knockOut(traced, decimalsFor(t)).layers)
+        for (const auto& ring : layer.rings)
+            layered += ring.size();
+    EXPECT_EQ(pathVertices(written), layered);
 
     const QString genomeFile = dir.filePath(QStringLiteral("stones.marble.json"));
     saveGenome(genome, genomeFile.toStdString());

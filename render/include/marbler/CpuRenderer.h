@@ -52,6 +52,13 @@ public:
     void renderRowsLinear(const RenderSettings& settings, int y0, int y1, float* rgb,
                           const RenderControl* control = nullptr) const;
 
+    /// What each pixel of rows [y0, y1) is made of (separations, marbler/Separations.h): for
+    /// each pixel, palette size + 1 floats, the summed weights of its samples that show the
+    /// background (or source image) first, then each ink in palette order; they add up to 1.
+    /// The hard colour rule: a genome's `bleed` is not applied.
+    void renderRowsCoverage(const RenderSettings& settings, int y0, int y1, float* coverage,
+                            const RenderControl* control = nullptr) const;
+
     /// The palette index seen at one design point (-1: background or source), by the vector
     /// kernel; for tests and picking.
     int colorIndexAt(const glm::dvec3& p) const;

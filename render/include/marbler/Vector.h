@@ -28,6 +28,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -81,15 +82,31 @@ struct VectorDesign {
 /// vertices would be needed.
 VectorDesign traceDesign(const Genome& genome, const VectorOptions& options = {});
 
+/// The printed size of an SVG: its width and height attributes in millimetres.
+struct SvgPage {
+    double widthMm = 0.0, heightMm = 0.0;
+};
+
+/// The page of a design whose design units are pixels at `dpi` (96, the CSS pixel, keeps the
+/// size an SVG without units has).
+SvgPage pageAtDpi(double width, double height, double dpi);
+
+/// A length of the page as an SVG attribute: millimetres to the micrometre, "264.583mm".
+std::string svgLength(double mm);
+
 /// The design as an SVG document: the viewBox is the design space in design units, the
-/// background a full rectangle, each outline a filled path. Coordinates are written with
-/// `decimals` digits after the point.
-std::string toSvg(const VectorDesign& design, int decimals);
+/// background a full rectangle, each outline a filled path (stacked: later outlines cover
+/// earlier ones). Coordinates are written with `decimals` digits after the point. The width and
+/// height are the page's in millimetres, or without units (design units) when there is none.
+std::string toSvg(const VectorDesign& design, int decimals,
+                  const std::optional<SvgPage>& page = std::nullopt);
 
 /// Digits after the point that keep rounding below a hundredth of the tolerance (1 to 9).
 int decimalsFor(double tolerance);
 
-/// Writes toSvg atomically. Throws RuntimeFailure for I/O failures.
-void writeSvg(const VectorDesign& design, const std::filesystem::path& file, int decimals);
+/// Writes what `marbler svg` writes by default, atomically: the layers a printer can use
+/// (marbler/Separations.h: knockOut, toLayeredSvg) on the page of `dpi` (96: a design unit is a
+/// CSS pixel). Throws RuntimeFailure for I/O failures.
+void writeSvg(const VectorDesign& design, const std::filesystem::path& file, int decimals, double dpi = 96.0);
 
 } // namespace marbler
