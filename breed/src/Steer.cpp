@@ -10,11 +10,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <mutex>
 #include <numeric>
 #include <set>
+#include <thread>
 
 namespace marbler {
 
@@ -204,7 +206,8 @@ double featureDistance(const DesignFeatures& a, const DesignFeatures& b) {
 }
 
 PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
-    const std::size_t first = rounds.size() > std::size_t(MaxSteerRounds) ? rounds.size() - MaxSteerRounds : 0;
+    const std::size_t first =
+        rounds.size() > std::size_t(MaxSteerRounds) ? rounds.size() - MaxSteerRounds : 0;
     const std::vector<PickRound> recent(rounds.begin() + std::ptrdiff_t(first), rounds.end());
     double weight = 1.0;
     for (std::size_t r = recent.size(); r-- > 0;) {
@@ -275,7 +278,8 @@ PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
         const std::string plural(toolSpec(Tool(t)).plural);
         say(d, 0.15, ("more " + plural).c_str(), ("fewer " + plural).c_str());
     }
-    std::stable_sort(words.begin(), words.end(), [](const Word& a, const Word& b) { return a.weight > b.weight; });
+    std::stable_sort(words.begin(), words.end(),
+                     [](const Word& a, const Word& b) { return a.weight > b.weight; });
     for (std::size_t k = 0; k < words.size() && k < 3; ++k)
         mWords.push_back(words[k].text);
 }
@@ -312,8 +316,9 @@ double PreferenceModel::score(const DesignFeatures& c) const {
 
 std::string PreferenceModel::explain() const {
     if (!mInformed) return {};
-    std::string text = mExplainedRounds == 1 ? "more like your last pick"
-                                             : "more like your last " + std::to_string(mExplainedRounds) + " picks";
+    std::string text = mExplainedRounds == 1
+                           ? "more like your last pick"
+                           : "more like your last " + std::to_string(mExplainedRounds) + " picks";
     if (mWords.empty()) return text + ": close to what you picked";
     text += ": ";
     for (std::size_t k = 0; k < mWords.size(); ++k)
@@ -353,7 +358,8 @@ SteerResult steerBreed(const SteerRequest& request) {
     for (std::size_t r = request.rounds.size(); r-- > 0 && mates.size() < base.parents.size() + 2;)
         for (const Genome& g : request.rounds[r].picked)
             if (g.dimension == base.parents.front().dimension &&
-                std::none_of(mates.begin(), mates.end(), [&](const Genome& m) { return genomeId(m) == genomeId(g); }))
+                std::none_of(mates.begin(), mates.end(),
+                             [&](const Genome& m) { return genomeId(m) == genomeId(g); }))
                 mates.push_back(g);
     const Family* family = nullptr;
     for (const Genome& parent : base.parents)
@@ -404,6 +410,21 @@ SteerResult steerBreed(const SteerRequest& request) {
     }
     std::vector<double> scores(pool.size());
     std::vector<Glimpse> poolLooks(pool.size());
+    {
+        // The looks on every core: each candidate's alone, so the order does not matter.
+        std::atomic<std::size_t> next{0};
+        const auto work = [&] {
+            for (std::size_t i = next++; i < pool.size(); i = next++)
+                featureCache().get(pool[i]);
+        };
+        const unsigned extra = std::min(std::max(std::thread::hardware_concurrency(), 1u) - 1, 15u);
+        std::vector<std::thread> threads;
+        for (unsigned t = 0; t < extra; ++t)
+            threads.emplace_back(work);
+        work();
+        for (std::thread& t : threads)
+            t.join();
+    }
     for (std::size_t i = 0; i < pool.size(); ++i) {
         const Seen seen = featureCache().get(pool[i]);
         scores[i] = model.score(seen.features);
@@ -411,7 +432,8 @@ SteerResult steerBreed(const SteerRequest& request) {
     }
     std::vector<std::size_t> order(pool.size());
     std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
     std::vector<std::size_t> chosen;
     const auto acceptable = [&](std::size_t i, double apart) {
         if (taken.count(genomeId(pool[i]))) return false;
@@ -441,7 +463,8 @@ SteerResult steerBreed(const SteerRequest& request) {
                 nearest = std::min(nearest, meanDeltaE(poolLooks[c], poolLooks[i]));
             far.push_back({nearest, i});
         }
-        std::stable_sort(far.begin(), far.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+        std::stable_sort(far.begin(), far.end(),
+                         [](const auto& a, const auto& b) { return a.first > b.first; });
         far.resize(std::max<std::size_t>(1, far.size() / 2));
         std::size_t best = far.front().second;
         for (const auto& [d, i] : far)
@@ -478,9 +501,10 @@ SteerResult steerBreed(const SteerRequest& request) {
             lineage.parents = parentIds;
             if (kinds[i] == "alter") lineage.strength = strokes;
             const std::size_t h = std::min(home[i], base.parents.size() - 1);
-            lineage.change = i < std::size_t(own.count) && pool[i].meta.lineage && pool[i].meta.lineage->change
-                                 ? *pool[i].meta.lineage->change
-                                 : describeChange(base.parents, h, child);
+            lineage.change =
+                i < std::size_t(own.count) && pool[i].meta.lineage && pool[i].meta.lineage->change
+                    ? *pool[i].meta.lineage->change
+                    : describeChange(base.parents, h, child);
             if (i < std::size_t(own.count) && pool[i].meta.lineage) {
                 lineage.strength = pool[i].meta.lineage->strength;
                 lineage.variation = pool[i].meta.lineage->variation;

@@ -38,7 +38,7 @@ using namespace marbler;
 int gSide = 48;
 
 struct Look {
-    std::vector<double> lab; // blurred L*a*b* per pixel
+    std::vector<double> lab;     // blurred L*a*b* per pixel
     std::vector<double> colours; // histogram: 4 x 4 x 4 bins of L*a*b*
     std::vector<double> texture; // histogram: 8 orientations x 2 magnitudes of the L* gradient
 };
@@ -84,12 +84,14 @@ Look lookOf(const Genome& genome) {
                     if (x < 0 || y < 0 || x >= gSide || y >= gSide) continue;
                     ++count;
                     for (int c = 0; c < 3; ++c)
-                        look.lab[std::size_t(3 * (j * gSide + i) + c)] += lab[std::size_t(3 * (y * gSide + x) + c)];
+                        look.lab[std::size_t(3 * (j * gSide + i) + c)] +=
+                            lab[std::size_t(3 * (y * gSide + x) + c)];
                 }
             for (int c = 0; c < 3; ++c)
                 look.lab[std::size_t(3 * (j * gSide + i) + c)] /= count;
             const double* p = &lab[std::size_t(3 * (j * gSide + i))];
-            const int bl = std::clamp(int(p[0] / 25.0), 0, 3), ba = std::clamp(int((p[1] + 100.0) / 50.0), 0, 3),
+            const int bl = std::clamp(int(p[0] / 25.0), 0, 3),
+                      ba = std::clamp(int((p[1] + 100.0) / 50.0), 0, 3),
                       bb = std::clamp(int((p[2] + 100.0) / 50.0), 0, 3);
             look.colours[std::size_t(bl * 16 + ba * 4 + bb)] += 1.0 / n;
             if (i + 1 < gSide && j + 1 < gSide) {
@@ -113,7 +115,8 @@ double pixelDistance(const Look& a, const Look& b) {
     double sum = 0.0;
     const std::size_t n = a.lab.size() / 3;
     for (std::size_t k = 0; k < n; ++k)
-        sum += std::sqrt(std::pow(a.lab[3 * k] - b.lab[3 * k], 2) + std::pow(a.lab[3 * k + 1] - b.lab[3 * k + 1], 2) +
+        sum += std::sqrt(std::pow(a.lab[3 * k] - b.lab[3 * k], 2) +
+                         std::pow(a.lab[3 * k + 1] - b.lab[3 * k + 1], 2) +
                          std::pow(a.lab[3 * k + 2] - b.lab[3 * k + 2], 2));
     return sum / double(n) / 100.0;
 }
@@ -174,7 +177,8 @@ struct Evaluator {
         const std::string id = genomeId(g);
         auto it = lookCache().find(id);
         if (it == lookCache().end()) it = lookCache().emplace(id, lookOf(g)).first;
-        return metric == Metric::Pixel ? pixelDistance(it->second, target) : statsDistance(it->second, target);
+        return metric == Metric::Pixel ? pixelDistance(it->second, target)
+                                       : statsDistance(it->second, target);
     }
 };
 
@@ -204,7 +208,8 @@ RunResult breedRun(Evaluator& distance, std::uint64_t seed, int generations, boo
         std::array<double, 9> d{};
         for (int i = 0; i < 9; ++i)
             d[std::size_t(i)] = distance(grid[std::size_t(i)]);
-        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return d[std::size_t(a)] < d[std::size_t(b)]; });
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int b) { return d[std::size_t(a)] < d[std::size_t(b)]; });
         const bool recombine = gen % 3 == 0;
         const int parentCount = recombine ? 2 : 1;
         std::vector<bool> selected(9, false);
@@ -270,9 +275,11 @@ std::vector<Target> targets(int count) {
     list.push_back({"nonpareil family (seed 90001)", familyGenome(*findFamily("nonpareil"), 90001)});
     list.push_back({"spanish-wave family (seed 90002)", familyGenome(*findFamily("spanish-wave"), 90002)});
     const std::string data = MARBLER_TEST_DATA;
-    list.push_back({"marbled-paper (hand-tuned paper)", loadGenome(data + "/examples/marbled-paper.marble.json")});
+    list.push_back(
+        {"marbled-paper (hand-tuned paper)", loadGenome(data + "/examples/marbled-paper.marble.json")});
     list.push_back({"ebru-hearts (hand-made)", loadGenome(data + "/examples/ebru-hearts.marble.json")});
-    list.push_back({"flame-comb-vortex (hand-made)", loadGenome(data + "/examples/flame-comb-vortex.marble.json")});
+    list.push_back(
+        {"flame-comb-vortex (hand-made)", loadGenome(data + "/examples/flame-comb-vortex.marble.json")});
     list.resize(std::min<std::size_t>(list.size(), std::size_t(count)));
     return list;
 }
@@ -284,13 +291,20 @@ int main(int argc, char** argv) {
     std::string modes = "classic,steered", metrics = "both";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
-        if (key == "--runs") runs = std::stoi(value);
-        else if (key == "--generations") generations = std::stoi(value);
-        else if (key == "--side") gSide = std::stoi(value);
-        else if (key == "--modes") modes = value;
-        else if (key == "--distance") metrics = value;
-        else if (key == "--targets") targetCount = std::stoi(value);
-        else if (key == "--only") only = std::stoi(value);
+        if (key == "--runs")
+            runs = std::stoi(value);
+        else if (key == "--generations")
+            generations = std::stoi(value);
+        else if (key == "--side")
+            gSide = std::stoi(value);
+        else if (key == "--modes")
+            modes = value;
+        else if (key == "--distance")
+            metrics = value;
+        else if (key == "--targets")
+            targetCount = std::stoi(value);
+        else if (key == "--only")
+            only = std::stoi(value);
         else {
             std::fprintf(stderr, "unknown option %s\n", key.c_str());
             return 2;
@@ -320,7 +334,8 @@ int main(int argc, char** argv) {
                     Summary& s = summaries[std::string(metricName) + " " + mode];
                     Evaluator distance{metric, target};
                     const RunResult run = breedRun(distance, seed, generations, mode == "steered");
-                    const std::vector<double> rnd = randomRun(distance, seed, std::max(169, run.shown.back()));
+                    const std::vector<double> rnd =
+                        randomRun(distance, seed, std::max(169, run.shown.back()));
                     const double same = rnd[std::size_t(run.shown.back() - 1)];
                     const double r169 = rnd[168];
                     int reach = -1;
@@ -342,22 +357,24 @@ int main(int argc, char** argv) {
                     s.random.push_back(same);
                     s.random169.push_back(r169);
                     s.ms.push_back(run.millisPerGeneration);
-                    std::printf("%-6s %-8s %-34s run %d: first nine %.3f, g5 %.3f, g10 %.3f, g%d %.3f (%d designs); "
-                                "random same budget %.3f, 169 %.3f; reaches random-169 at g%d; %.0f ms/generation\n",
-                                metricName, mode.c_str(), list[t].name.c_str(), r + 1, run.bestAfter[0],
-                                s.at5.back(), s.at10.back(), generations, run.bestAfter.back(), run.shown.back(),
-                                same, r169, reach, run.millisPerGeneration);
+                    std::printf(
+                        "%-6s %-8s %-34s run %d: first nine %.3f, g5 %.3f, g10 %.3f, g%d %.3f (%d designs); "
+                        "random same budget %.3f, 169 %.3f; reaches random-169 at g%d; %.0f ms/generation\n",
+                        metricName, mode.c_str(), list[t].name.c_str(), r + 1, run.bestAfter[0], s.at5.back(),
+                        s.at10.back(), generations, run.bestAfter.back(), run.shown.back(), same, r169, reach,
+                        run.millisPerGeneration);
                     std::fflush(stdout);
                 }
             }
         }
     }
     for (const auto& [name, s] : summaries)
-        std::printf("SUMMARY %s: breeding beat random search in %d of %d runs; medians: first nine %.3f, g5 %.3f, "
-                    "g10 %.3f, g%d %.3f, random same budget %.3f, random 169 %.3f; reached random-169 in %d runs "
-                    "(median generation %.0f); %.0f ms/generation (median)\n",
-                    name.c_str(), s.wins, s.total, medianOf(s.first), medianOf(s.at5), medianOf(s.at10),
-                    generations, medianOf(s.atEnd), medianOf(s.random), medianOf(s.random169), s.reached,
-                    medianOf(s.reachGens), medianOf(s.ms));
+        std::printf(
+            "SUMMARY %s: breeding beat random search in %d of %d runs; medians: first nine %.3f, g5 %.3f, "
+            "g10 %.3f, g%d %.3f, random same budget %.3f, random 169 %.3f; reached random-169 in %d runs "
+            "(median generation %.0f); %.0f ms/generation (median)\n",
+            name.c_str(), s.wins, s.total, medianOf(s.first), medianOf(s.at5), medianOf(s.at10), generations,
+            medianOf(s.atEnd), medianOf(s.random), medianOf(s.random169), s.reached, medianOf(s.reachGens),
+            medianOf(s.ms));
     return 0;
 }
