@@ -177,7 +177,8 @@ std::vector<PickRound> readPickRounds(const std::string& file) {
             for (std::size_t k = 0; k < entry[key].size(); ++k) {
                 if (!entry[key][k].is_string())
                     throw InputError(where + "/" + key + "/" + std::to_string(k) + ": expected a file name");
-                into.push_back(loadGenomeArgument("breed", (base / entry[key][k].get<std::string>()).string()));
+                into.push_back(
+                    loadGenomeArgument("breed", (base / entry[key][k].get<std::string>()).string()));
             }
         }
         rounds.push_back(std::move(round));
@@ -189,8 +190,9 @@ std::vector<PickRound> readPickRounds(const std::string& file) {
 
 int runBreed(std::span<const std::string> words) {
     return guarded("breed", [&] {
-        Args args = parseArgs(words, {"seed", "count", "strength", "o", "output", "passed", "picks", "candidates"},
-                              {"h", "help"});
+        Args args =
+            parseArgs(words, {"seed", "count", "strength", "o", "output", "passed", "picks", "candidates"},
+                      {"h", "help"});
         if (args.has("h") || args.has("help")) {
             std::cout << BreedHelp;
             return ExitOk;
