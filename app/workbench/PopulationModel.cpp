@@ -164,10 +164,7 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
             next.cells[std::size_t(i)] = children[child++];
         }
     }
-    if (!explanation.isEmpty()) {
-        next.description += tr(", steered");
-        mExplanations[int(mHistory.size())] = explanation;
-    }
+    if (!explanation.isEmpty()) mExplanations[int(mHistory.size())] = explanation;
     pushGeneration(std::move(next));
 }
 

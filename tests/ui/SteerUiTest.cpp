@@ -46,7 +46,6 @@ TEST_F(SteerUiTest, TheStatusLineSaysWhyTheChildrenWereChosen) {
     pickAndAlter(3);
     EXPECT_TRUE(statusLine().contains(QStringLiteral("more like your last 2 picks")))
         << statusLine().toStdString();
-    EXPECT_TRUE(statusLine().contains(QStringLiteral("steered"))) << statusLine().toStdString();
     // The children say where they come from (the ranked ones carry their rank).
     int ranked = 0;
     for (int i = 0; i < CellCount; ++i)
