@@ -8,6 +8,9 @@
 #include "marbler/ImageFormats.h"
 #include "marbler/Operators.h"
 #include "marbler/SourcePath.h"
+#include "marbler/Steer.h"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -28,6 +31,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* BreedHelp =
     R"(usage: marbler breed OPERATOR PARENT... --seed N [--count K] [--strength S] -o DIR
+                    [--passed FILE,...] [--picks ROUNDS.json] [--candidates N]
 
 Writes K children of the PARENT genome files (or PNG or TIFF images that carry genomes), made
 by a genetic operator, as DIR/child-01.marble.json, DIR/child-02.marble.json, ... (DIR is
@@ -52,11 +56,25 @@ Each child records meta.lineage (parents' ids, operator, seed, generation) and m
 A parent's source image is named from DIR; one outside DIR (which a genome may not read,
 see marbler render --help) is embedded in the child as a data: URI instead.
 
+Steering (docs/breeding.md): with --passed and --picks the children are ranked by what the
+picks say, as the window's "Steer by my picks" does: many candidates are drawn (the operator's
+own children, alteration at steps that shrink as picks agree, recombination with earlier picks,
+fresh designs) and the most promising K shown, the last one for exploration; a line
+"steered: ..." says why. The PARENTs are this round's picks, --passed the designs passed over
+beside them; ROUNDS.json holds the earlier rounds, oldest first:
+  {"rounds": [{"picked": ["a.marble.json"], "passed": ["b.marble.json", ...],
+               "disliked": ["c.marble.json"]}, ...]}
+(files relative to ROUNDS.json's folder; "disliked" marks "less like this"). With fewer than
+two rounds in all, breeding is as without steering.
+
 options:
   --seed N          the seed, a non-negative 64-bit integer (required)
   --count K         how many children, 1 to 1000 (default 8)
   --strength S      alteration strength, 0 to 1 (default 0.5; alter only)
   -o, --output DIR  the folder to write the children into (required)
+  --passed FILES    designs passed over beside the parents, comma-separated (steering)
+  --picks FILE      the earlier rounds of picks, as above (steering)
+  --candidates N    how many candidates steering ranks, K to 1000 (default 32)
   -h, --help        this text
 )";
 
@@ -119,11 +137,62 @@ void rebaseSource(Genome& child, const fs::path& dir) {
     if (std::optional<std::string> embedded = dataUriOf(parent.file)) child.source->image = *embedded;
 }
 
+/// The comma-separated entries of an option (empty entries skipped).
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        if (comma > start) out.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return out;
+}
+
+/// The rounds of --picks (see the help): each file relative to the JSON file's folder.
+std::vector<PickRound> readPickRounds(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError(file + ": cannot be read");
+    nlohmann::json json;
+    try {
+        json = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(file + ": not JSON (" + e.what() + ")");
+    }
+    if (!json.is_object() || !json.contains("rounds") || !json["rounds"].is_array())
+        throw InputError(file + ": expected {\"rounds\": [...]} at /");
+    const fs::path base = fs::path(file).parent_path();
+    std::vector<PickRound> rounds;
+    for (std::size_t r = 0; r < json["rounds"].size(); ++r) {
+        const nlohmann::json& entry = json["rounds"][r];
+        const std::string where = file + ": /rounds/" + std::to_string(r);
+        if (!entry.is_object()) throw InputError(where + ": expected an object");
+        PickRound round;
+        for (const char* key : {"picked", "passed", "disliked"}) {
+            if (!entry.contains(key)) continue;
+            if (!entry[key].is_array()) throw InputError(where + "/" + key + ": expected a list of files");
+            std::vector<Genome>& into = std::string(key) == "picked"   ? round.picked
+                                        : std::string(key) == "passed" ? round.passed
+                                                                       : round.disliked;
+            for (std::size_t k = 0; k < entry[key].size(); ++k) {
+                if (!entry[key][k].is_string())
+                    throw InputError(where + "/" + key + "/" + std::to_string(k) + ": expected a file name");
+                into.push_back(
+                    loadGenomeArgument("breed", (base / entry[key][k].get<std::string>()).string()));
+            }
+        }
+        rounds.push_back(std::move(round));
+    }
+    return rounds;
+}
+
 } // namespace
 
 int runBreed(std::span<const std::string> words) {
     return guarded("breed", [&] {
-        Args args = parseArgs(words, {"seed", "count", "strength", "o", "output"}, {"h", "help"});
+        Args args =
+            parseArgs(words, {"seed", "count", "strength", "o", "output", "passed", "picks", "candidates"},
+                      {"h", "help"});
         if (args.has("h") || args.has("help")) {
             std::cout << BreedHelp;
             return ExitOk;
@@ -163,7 +232,21 @@ int runBreed(std::span<const std::string> words) {
 
         // Everything is bred and serialised before the first byte is written, so bad input
         // never leaves a partial set of children.
-        std::vector<Genome> children = breed(request);
+        // Steering (issue 26): the rounds of picks, oldest first, then this one.
+        SteerRequest steer;
+        steer.breed = request;
+        steer.candidates = parseIntOption(args, "candidates", SteerCandidates, request.count, MaxChildren);
+        if (std::optional<std::string> picks = args.get("picks")) steer.rounds = readPickRounds(*picks);
+        if (args.has("passed") || args.has("picks")) {
+            PickRound now;
+            now.picked = request.parents;
+            if (std::optional<std::string> passed = args.get("passed"))
+                for (const std::string& file : splitList(*passed))
+                    now.passed.push_back(loadGenomeArgument("breed", file));
+            steer.rounds.push_back(std::move(now));
+        }
+        SteerResult steered = steerBreed(steer);
+        std::vector<Genome> children = std::move(steered.children);
         std::vector<std::string> texts;
         for (Genome& child : children) {
             rebaseSource(child, dir);
@@ -187,6 +270,7 @@ int runBreed(std::span<const std::string> words) {
         for (std::size_t i = 0; i < children.size(); ++i)
             std::cout << (dir / childName(static_cast<int>(i) + 1)).string() << "  "
                       << children[i].meta.name.value_or("") << '\n';
+        if (!steered.explanation.empty()) std::cout << "steered: " << steered.explanation << '\n';
         return ExitOk;
     });
 }

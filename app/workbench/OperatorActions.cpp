@@ -6,11 +6,13 @@
 #include <QLabel>
 #include <QMainWindow>
 #include <QMenu>
+#include <QSettings>
 #include <QSlider>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
 
+#include <algorithm>
 #include <cmath>
 
 namespace marbler::ui {
@@ -123,6 +125,45 @@ void OperatorActions::onRenderingFinished() {
 
 void OperatorActions::onPopulationChanged() {
     if (!mBreedingNow) mPendingOperator.reset();
+}
+
+void OperatorActions::addSteering(QMenu* breedMenu, PopulationModel* model) {
+    mSteer = breedMenu->addAction(tr("&Steer by my picks"));
+    mSteer->setObjectName(QStringLiteral("steerAction"));
+    mSteer->setCheckable(true);
+    mSteer->setChecked(QSettings().value(QStringLiteral("breed/steer"), true).toBool());
+    mSteer->setStatusTip(tr("Offspring are drawn from many candidates and ranked by what your picks so far "
+                            "say; the status line tells why"));
+    mSteer->setToolTip(mSteer->statusTip());
+    model->setSteering(mSteer->isChecked());
+    connect(mSteer, &QAction::toggled, this, [model](bool on) {
+        model->setSteering(on);
+        QSettings().setValue(QStringLiteral("breed/steer"), on);
+    });
+
+    mLessLike = breedMenu->addAction(tr("&Less like this"));
+    mLessLike->setObjectName(QStringLiteral("lessLikeAction"));
+    mLessLike->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_X));
+    mLessLike->setStatusTip(tr("Marks the selected designs as unlike what you have in mind: steering moves "
+                               "away from them"));
+    mLessLike->setToolTip(QStringLiteral("%1 (%2)").arg(
+        mLessLike->statusTip(), mLessLike->shortcut().toString(QKeySequence::NativeText)));
+    connect(mLessLike, &QAction::triggered, this, [this, model] {
+        const std::vector<int> cells = model->selectedCells();
+        if (cells.empty()) {
+            mWindow->statusBar()->showMessage(tr("Less like this: click the designs you do not want first"),
+                                              5000);
+            return;
+        }
+        const bool all = std::all_of(cells.begin(), cells.end(), [&](int i) { return model->isDisliked(i); });
+        for (int i : cells)
+            model->setDisliked(i, !all);
+        mWindow->statusBar()->showMessage(
+            all ? tr("%n design(s) no longer marked less like this", nullptr, int(cells.size()))
+                : tr("%n design(s) marked less like this: the next generation moves away from them", nullptr,
+                     int(cells.size())),
+            5000);
+    });
 }
 
 void OperatorActions::update(const PopulationModel& model) {

@@ -51,6 +51,14 @@ public:
     /// Each operator enabled when the model can breed with it, its tooltip saying why not.
     void update(const PopulationModel& model);
 
+    /// Adds the steering actions to `breedMenu` (issue 26, Steer.h): "Steer by my picks"
+    /// (checkable, remembered in the settings as breed/steer, on by default; sets the model's
+    /// steering) and "Less like this" (Ctrl+Shift+X: the selected designs are marked, or
+    /// unmarked when all of them already are, and let go as parents).
+    void addSteering(QMenu* breedMenu, PopulationModel* model);
+    QAction* steerAction() const { return mSteer; }
+    QAction* lessLikeAction() const { return mLessLike; }
+
 private:
     QMainWindow* mWindow;
     std::function<bool(GeneticOperator)> mApply;
@@ -60,6 +68,8 @@ private:
     QAction* mSwap = nullptr;
     QAction* mReinit = nullptr;
     QSlider* mStrength = nullptr;
+    QAction* mSteer = nullptr;
+    QAction* mLessLike = nullptr;
     QLabel* mStrengthLabel = nullptr;
     /// A generation bred here is still rendering; the click waiting for it.
     bool mBredRendering = false;

@@ -133,7 +133,19 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     request.generation = current().number + 1;
     for (int i = 0; i < CellCount; ++i)
         if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
-    std::vector<Genome> children = breed(request);
+    // Steering (issue 26): the offspring ranked by what the picks so far say.
+    std::vector<Genome> children;
+    QString explanation;
+    if (mSteering) {
+        SteerRequest steer;
+        steer.breed = request;
+        steer.rounds = pickRounds();
+        SteerResult steered = steerBreed(steer);
+        children = std::move(steered.children);
+        explanation = QString::fromStdString(steered.explanation);
+    } else {
+        children = breed(request);
+    }
     if (children.size() != std::size_t(request.count))
         throw RuntimeFailure("the operator made too few offspring");
 
@@ -152,8 +164,63 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
             next.cells[std::size_t(i)] = children[child++];
         }
     }
+    if (!explanation.isEmpty()) mExplanations[int(mHistory.size())] = explanation;
     pushGeneration(std::move(next));
 }
+
+// --- Steering (issue 26) ---
+std::vector<PickRound> PopulationModel::pickRounds() const {
+    std::vector<PickRound> rounds;
+    if (mEmptyStart) return rounds;
+    const auto roundOf = [&](const Generation& from, const std::vector<int>& picked) {
+        PickRound round;
+        for (int i = 0; i < CellCount; ++i) {
+            const auto& c = from.cells[std::size_t(i)];
+            if (!c) continue;
+            if (std::find(picked.begin(), picked.end(), i) != picked.end())
+                round.picked.push_back(*c);
+            else if (mDisliked.count(genomeId(*c)))
+                round.disliked.push_back(*c);
+            else
+                round.passed.push_back(*c);
+        }
+        return round;
+    };
+    rounds.push_back(roundOf(current(), selectedCells()));
+    for (int g = mCurrent; g >= 0 && mHistory[std::size_t(g)].parent >= 0;) {
+        const Generation& bred = mHistory[std::size_t(g)];
+        if (!bred.parentCells.empty())
+            rounds.push_back(roundOf(mHistory[std::size_t(bred.parent)], bred.parentCells));
+        g = bred.parent;
+    }
+    std::reverse(rounds.begin(), rounds.end());
+    return rounds;
+}
+
+void PopulationModel::setDisliked(int index, bool disliked) {
+    const Genome* g = cell(index);
+    if (!g) return;
+    const std::string id = genomeId(*g);
+    if (disliked == bool(mDisliked.count(id))) return;
+    if (disliked) {
+        mDisliked.insert(id);
+        setSelected(index, false);
+    } else {
+        mDisliked.erase(id);
+    }
+    emit selectionChanged();
+}
+
+bool PopulationModel::isDisliked(int index) const {
+    const Genome* g = cell(index);
+    return g && mDisliked.count(genomeId(*g));
+}
+
+QString PopulationModel::steerExplanation() const {
+    auto it = mExplanations.find(mCurrent);
+    return it == mExplanations.end() ? QString() : it->second;
+}
+// --- end steering ---
 
 QString PopulationModel::whyNoColourways(bool mix) const {
     if (QString why = whyNot(mix ? GeneticOperator::Recombine : GeneticOperator::Alter); !why.isEmpty())

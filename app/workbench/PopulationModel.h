@@ -6,6 +6,7 @@
 #include "marbler/Genome.h"
 #include "marbler/Mesh.h"
 #include "marbler/Operators.h"
+#include "marbler/Steer.h"
 #include "shared/Lineage.h"
 #include "shared/ViewController.h"
 
@@ -16,7 +17,9 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -107,6 +110,24 @@ public:
     /// "wildcard".
     bool wildcardCell() const { return mWildcard; }
     void setWildcardCell(bool on) { mWildcard = on; }
+    // --- Steering (issue 26, Steer.h) ---
+    /// Whether apply() ranks its offspring by what the picks so far say (on by default in the
+    /// window, off in a bare model): steerBreed over pickRounds().
+    bool steering() const { return mSteering; }
+    void setSteering(bool on) { mSteering = on; }
+    /// The rounds of picks that led to the current generation, oldest first: for each bred
+    /// generation on the way from the root, its parents' cells (picked) and the other designs
+    /// of the generation they were picked from (passed over, or disliked); then the current
+    /// generation's selection against its other cells.
+    std::vector<PickRound> pickRounds() const;
+    /// "Less like this" on a cell's design: steering treats it as passed over, twice as strongly.
+    /// Kept with the design's content for the session (not saved).
+    void setDisliked(int index, bool disliked);
+    bool isDisliked(int index) const;
+    /// Why the current generation's children were chosen ("more like your last 3 picks: finer
+    /// patterns"); empty when it was not steered.
+    QString steerExplanation() const;
+    // --- end steering ---
     /// The seed apply() would use for the next generation.
     std::uint64_t nextBreedSeed() const;
     /// Colourways (Colourways.h): keeps the selected parents and fills every other cell with
@@ -262,6 +283,9 @@ private:
     std::vector<int> mForwardChild;
     bool mEmptyStart = true;
     bool mWildcard = true;
+    bool mSteering = false;               ///< steering (issue 26)
+    std::set<std::string> mDisliked;      ///< genomeIds marked "less like this" (issue 26)
+    std::map<int, QString> mExplanations; ///< per steered generation, why (issue 26)
     QString mFavouritesFolder;
     std::vector<Favourite> mFavourites;
     QString mSessionFile;

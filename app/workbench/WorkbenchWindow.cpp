@@ -295,6 +295,7 @@ void WorkbenchWindow::buildActions() {
     mOperators = new OperatorActions(
         this, breedMenu, [this](GeneticOperator op) { return applyOperator(op); },
         [this] { return renderingDone(); });
+    mOperators->addSteering(breedMenu, mModel); // issue 26
 
     // One offspring cell a fresh design of the parents' family, against breeding fatigue.
     breedMenu->addSeparator();
@@ -465,7 +466,9 @@ void WorkbenchWindow::updateCells() {
             c->setChange({});
             continue;
         }
-        c->setCaption(designCaption(*g));
+        // Marked "less like this" (issue 26, steering): said on the cell.
+        c->setCaption(mModel->isDisliked(i) ? tr("%1 · less like this").arg(designCaption(*g))
+                                            : designCaption(*g));
         c->setChange(lineageOf(*g).change);
         const Locks locks = locksOf(*g);
         c->setLocked(locks.palette || locks.initial || locks.operations);
@@ -484,10 +487,13 @@ void WorkbenchWindow::updateActions() {
             tr("No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)"));
         return;
     }
-    mStatus->setGeneration(tr("Generation %1: %2 — %3 selected")
-                               .arg(mModel->generationLabel(mModel->currentIndex()))
-                               .arg(gen.description)
-                               .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n)));
+    QString line = tr("Generation %1: %2 — %3 selected")
+                       .arg(mModel->generationLabel(mModel->currentIndex()))
+                       .arg(gen.description)
+                       .arg(n == 1 ? tr("1 parent") : tr("%1 parents").arg(n));
+    // Why the children were chosen (issue 26, steering).
+    if (const QString why = mModel->steerExplanation(); !why.isEmpty()) line += tr(" — %1").arg(why);
+    mStatus->setGeneration(line);
 }
 
 QString WorkbenchWindow::renderCacheKey(int index) const {

@@ -308,13 +308,18 @@ struct Verdict {
 } // namespace
 
 Glimpse glimpseOf(const Genome& genome) {
+    return glimpseOf(genome, GlimpseSide);
+}
+
+Glimpse glimpseOf(const Genome& genome, int side) {
+    const int GlimpseSide = std::max(side, 1); // the glimpse's side for this call
     std::vector<std::array<double, 3>> inks;
     inks.reserve(genome.palette.size() + 1);
     inks.push_back(labOf(genome.background)); // index 0: no ink (the ground, or the source)
     for (Color c : genome.palette)
         inks.push_back(labOf(c));
     const std::vector<PreparedOp> ops = prepare(genome);
-    constexpr int Cells = GlimpseSide * GlimpseSide;
+    const int Cells = GlimpseSide * GlimpseSide;
     std::vector<int> counts(inks.size(), 0);
     Glimpse glimpse;
     glimpse.lab.reserve(3 * Cells);

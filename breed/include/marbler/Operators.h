@@ -153,6 +153,8 @@ struct Glimpse {
     double dominantShare = 0.0;
 };
 Glimpse glimpseOf(const Genome& genome);
+/// The same look over side x side cell centres (steering's features use a 16 x 16 one).
+Glimpse glimpseOf(const Genome& genome, int side);
 /// The mean CIE76 ΔE between two glimpses (of the same size).
 double meanDeltaE(const Glimpse& a, const Glimpse& b);
 

@@ -1,0 +1,113 @@
+#pragma once
+/// Breeding that steers (docs/breeding.md): a person's picks, and the designs they passed over,
+/// are the preferences a small model learns; each generation draws many candidate children (the
+/// requested operator, alteration at an adaptive step, recombination with earlier picks and
+/// fresh designs of the generators), ranks them by the model and shows the most promising, the
+/// last one kept for exploration.
+///
+/// The model is an *ideal point* over cheap features of a design (a 16 x 16 glimpse, Operators.h:
+/// its layout on an 8 x 8 grid, colour statistics, texture statistics, the kinds of strokes):
+/// every round says "what you have in mind is closer to the picked designs than to the ones passed
+/// over" (a half-space in feature space), so a candidate is scored by how far it breaks these
+/// constraints, newer rounds weighing more, and, among consistent candidates, by its closeness to
+/// the newest picks. "Less like this" marks a design as passed over twice as strongly.
+///
+/// Steps adapt: the distance between successive picks, relative to the spread of their rounds,
+/// sets how far alteration moves (large while picks disagree, smaller as they converge), with a
+/// scale of its own for the palette (colour features), the initial state (layout) and the
+/// strokes (texture).
+///
+/// Everything draws from Pcg32 streams derived from the request's seed, and the features use
+/// only IEEE basic operations: the same request gives the same children on every machine.
+
+#include "marbler/Genome.h"
+#include "marbler/Operators.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace marbler {
+
+/// The features the model compares designs by (see above), in comparable units.
+struct DesignFeatures {
+    std::vector<double> values;
+    /// Interpretable summaries, for the explanation: mean lightness (L*), warmth (a* + b* of
+    /// the cells, halved), chroma, contrast (std of L*), fineness (share of neighbouring cells
+    /// of different colour), and per tool the share of the strokes that use it.
+    double lightness = 0.0, warmth = 0.0, chroma = 0.0, contrast = 0.0, fineness = 0.0;
+    std::vector<double> toolShare;
+};
+/// The features of a design (about a millisecond; cached by content, so asking again is free).
+DesignFeatures designFeatures(const Genome& genome);
+/// The distance of two designs' features (0 for equal designs).
+double featureDistance(const DesignFeatures& a, const DesignFeatures& b);
+
+/// One generation a person chose from: the designs picked as parents, the ones passed over and
+/// the ones marked "less like this".
+struct PickRound {
+    std::vector<Genome> picked;
+    std::vector<Genome> passed;
+    std::vector<Genome> disliked;
+};
+
+/// The learned preference (see above), over up to MaxSteerRounds rounds, oldest first.
+class PreferenceModel {
+public:
+    explicit PreferenceModel(const std::vector<PickRound>& rounds);
+    /// Higher is more like the picks (0 at best; negative as constraints break).
+    double score(const DesignFeatures& candidate) const;
+    /// Whether two rounds or more have a pick and something to compare it with: the first
+    /// generation bred from a population is bred as without steering.
+    bool informed() const { return mInformed; }
+    /// The explanation in words: "more like your last 3 picks: finer patterns, warmer inks";
+    /// empty when nothing has been learned.
+    std::string explain() const;
+    /// The step scales (0..1, relative to the requested strength) for palette, initial state and
+    /// strokes: near 1 while picks disagree, smaller as they converge (1 without history).
+    struct Steps {
+        double palette = 1.0, initial = 1.0, strokes = 1.0;
+    };
+    Steps steps() const { return mSteps; }
+
+private:
+    struct Round {
+        std::vector<DesignFeatures> picked, passed;
+        std::vector<double> passedWeight;
+        double weight = 1.0;
+    };
+    std::vector<Round> mRounds;
+    bool mInformed = false;
+    int mInformedRounds = 0;
+    Steps mSteps;
+    int mExplainedRounds = 0;
+    std::vector<std::string> mWords;
+};
+
+/// The newest rounds the model reads.
+inline constexpr int MaxSteerRounds = 12;
+/// How many candidates a generation ranks by default.
+inline constexpr int SteerCandidates = 32;
+
+struct SteerRequest {
+    BreedRequest breed;            ///< the operator, parents, seed, count... as breed() takes them
+    std::vector<PickRound> rounds; ///< the person's picks, oldest first (the newest: these parents)
+    int candidates = SteerCandidates;
+};
+
+struct SteerResult {
+    std::vector<Genome> children;
+    std::string explanation; ///< PreferenceModel::explain(), empty without history
+    PreferenceModel::Steps steps;
+    double strokeStrength = 0.0; ///< the alteration strength used for the strokes
+};
+
+/// Children ranked by the preferences (see above): `breed.count` of them, the last an exploration
+/// (the best-liked candidate unlike the others). Without rounds that inform the model this is
+/// breed(request.breed). Each child has the lineage breed() writes (a fresh design: operator
+/// "wildcard"), plus `meta.lineage.steered`: its rank among the candidates. Throws what breed()
+/// throws, and InputError for candidates outside [count, MaxChildren].
+SteerResult steerBreed(const SteerRequest& request);
+
+} // namespace marbler

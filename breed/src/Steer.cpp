@@ -1,0 +1,522 @@
+#include "marbler/Steer.h"
+
+#include "marbler/ChangeSummary.h"
+#include "marbler/Colourways.h"
+#include "marbler/Error.h"
+#include "marbler/Families.h"
+#include "marbler/Generator.h"
+#include "marbler/Params.h"
+#include "marbler/Random.h"
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <set>
+#include <thread>
+
+namespace marbler {
+
+// Named, not anonymous: the unity build puts this file beside the other breed sources.
+namespace steerdetail {
+
+constexpr int LayoutSide = 8; // the glimpse's layout, averaged over 2 x 2 cells
+constexpr int LookSide = 16;  // a quarter of the child filter's glimpse: candidates are many
+constexpr std::uint64_t CandidateStream = 0x7374656572000000ULL;
+
+/// Weights of the feature groups: the layout has 192 values, the statistics a few, so each
+/// group adds about as much to a distance between two unlike designs.
+constexpr double LayoutWeight = 1.0 / 100.0;
+constexpr double ColourWeight = 4.0 / 100.0;
+constexpr double TextureWeight = 6.0;
+constexpr double ToolWeight = 1.5;
+
+double sq(double x) {
+    return x * x;
+}
+
+DesignFeatures computeFeatures(const Genome& genome, const Glimpse& look) {
+    constexpr int Side = LookSide;
+    constexpr int Block = Side / LayoutSide;
+    DesignFeatures f;
+    f.values.reserve(3 * LayoutSide * LayoutSide + 16 + ToolCount);
+    const auto lab = [&](int i, int j, int c) { return look.lab[std::size_t(3 * (j * Side + i) + c)]; };
+    // Layout: where light, dark and each hue lie.
+    for (int bj = 0; bj < LayoutSide; ++bj)
+        for (int bi = 0; bi < LayoutSide; ++bi)
+            for (int c = 0; c < 3; ++c) {
+                double sum = 0.0;
+                for (int j = 0; j < Block; ++j)
+                    for (int i = 0; i < Block; ++i)
+                        sum += lab(bi * Block + i, bj * Block + j, c);
+                f.values.push_back(sum / (Block * Block) * LayoutWeight);
+            }
+    // Colour statistics.
+    constexpr double Cells = Side * Side;
+    std::array<double, 3> mean{}, var{};
+    double chroma = 0.0, warmth = 0.0;
+    for (int j = 0; j < Side; ++j)
+        for (int i = 0; i < Side; ++i) {
+            for (int c = 0; c < 3; ++c)
+                mean[std::size_t(c)] += lab(i, j, c) / Cells;
+            chroma += std::sqrt(sq(lab(i, j, 1)) + sq(lab(i, j, 2))) / Cells;
+            warmth += 0.5 * (lab(i, j, 1) + lab(i, j, 2)) / Cells;
+        }
+    for (int j = 0; j < Side; ++j)
+        for (int i = 0; i < Side; ++i)
+            for (int c = 0; c < 3; ++c)
+                var[std::size_t(c)] += sq(lab(i, j, c) - mean[std::size_t(c)]) / Cells;
+    for (int c = 0; c < 3; ++c) {
+        f.values.push_back(mean[std::size_t(c)] * ColourWeight);
+        f.values.push_back(std::sqrt(var[std::size_t(c)]) * ColourWeight);
+    }
+    f.values.push_back(chroma * ColourWeight);
+    // Texture: how often neighbours differ, at one and at four cells, across and down, and how
+    // much one ink dominates.
+    std::array<double, 4> edges{};
+    const auto differs = [&](int i0, int j0, int i1, int j1) {
+        return lab(i0, j0, 0) != lab(i1, j1, 0) || lab(i0, j0, 1) != lab(i1, j1, 1) ||
+               lab(i0, j0, 2) != lab(i1, j1, 2);
+    };
+    for (int j = 0; j < Side; ++j)
+        for (int i = 0; i < Side; ++i) {
+            if (i + 1 < Side && differs(i, j, i + 1, j)) edges[0] += 1.0;
+            if (j + 1 < Side && differs(i, j, i, j + 1)) edges[1] += 1.0;
+            if (i + 3 < Side && differs(i, j, i + 3, j)) edges[2] += 1.0;
+            if (j + 3 < Side && differs(i, j, i, j + 3)) edges[3] += 1.0;
+        }
+    edges[0] /= Side * (Side - 1);
+    edges[1] /= Side * (Side - 1);
+    edges[2] /= Side * (Side - 3);
+    edges[3] /= Side * (Side - 3);
+    for (double e : edges)
+        f.values.push_back(e * TextureWeight);
+    f.values.push_back(look.dominantShare * TextureWeight);
+    // The kinds of strokes.
+    f.toolShare.assign(ToolCount, 0.0);
+    for (const Operation& op : genome.operations)
+        f.toolShare[std::size_t(op.tool)] += 1.0 / double(genome.operations.size());
+    for (double share : f.toolShare)
+        f.values.push_back(share * ToolWeight);
+
+    f.lightness = mean[0];
+    f.warmth = warmth;
+    f.chroma = chroma;
+    f.contrast = std::sqrt(var[0]);
+    f.fineness = 0.5 * (edges[0] + edges[1]);
+    return f;
+}
+
+/// Features (and the look they come from) by content: a generation's history is asked for
+/// again and again.
+struct Seen {
+    DesignFeatures features;
+    Glimpse look;
+};
+
+class FeatureCache {
+public:
+    Seen get(const Genome& genome) {
+        const std::string id = genomeId(genome);
+        {
+            std::lock_guard<std::mutex> lock(mMutex);
+            if (auto it = mMap.find(id); it != mMap.end()) return it->second;
+        }
+        Seen seen;
+        seen.look = glimpseOf(genome, LookSide);
+        seen.features = computeFeatures(genome, seen.look);
+        std::lock_guard<std::mutex> lock(mMutex);
+        if (mMap.size() >= 4096) mMap.clear();
+        mMap.emplace(id, seen);
+        return seen;
+    }
+
+private:
+    std::mutex mMutex;
+    std::map<std::string, Seen> mMap;
+};
+
+FeatureCache& featureCache() {
+    static FeatureCache cache;
+    return cache;
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+/// The distance of two feature vectors over one range of their values.
+double partDistance(const DesignFeatures& a, const DesignFeatures& b, std::size_t from, std::size_t to) {
+    double sum = 0.0;
+    to = std::min({to, a.values.size(), b.values.size()});
+    for (std::size_t k = from; k < to; ++k)
+        sum += sq(a.values[k] - b.values[k]);
+    return std::sqrt(sum);
+}
+
+constexpr std::size_t LayoutEnd = 3 * LayoutSide * LayoutSide;
+constexpr std::size_t ColourEnd = LayoutEnd + 7;
+constexpr std::size_t TextureEnd = ColourEnd + 5;
+
+/// How far the newest picks moved, against the spread of their rounds, over one feature range:
+/// near 1 (or more) while picks jump about, small as they settle.
+double movement(const std::vector<PickRound>& rounds, std::size_t from, std::size_t to) {
+    std::vector<double> ratios;
+    const std::size_t n = rounds.size();
+    for (std::size_t r = n > 3 ? n - 3 : 1; r < n; ++r) {
+        const PickRound& now = rounds[r];
+        const PickRound& before = rounds[r - 1];
+        if (now.picked.empty() || before.picked.empty()) continue;
+        const DesignFeatures a = designFeatures(now.picked.front());
+        const DesignFeatures b = designFeatures(before.picked.front());
+        std::vector<double> spread;
+        for (const Genome& g : now.passed)
+            spread.push_back(partDistance(a, designFeatures(g), from, to));
+        const double typical = median(spread);
+        if (typical <= 0.0) continue;
+        ratios.push_back(partDistance(a, b, from, to) / typical);
+    }
+    if (ratios.empty()) return 1.0;
+    const double mean = std::accumulate(ratios.begin(), ratios.end(), 0.0) / double(ratios.size());
+    return std::clamp(0.3 + 0.9 * mean, 0.15, 1.5);
+}
+
+/// The English words for one summary difference, or empty when it is too small to tell.
+struct Word {
+    double weight;
+    std::string text;
+};
+
+} // namespace steerdetail
+
+using namespace steerdetail;
+
+DesignFeatures designFeatures(const Genome& genome) {
+    return featureCache().get(genome).features;
+}
+
+double featureDistance(const DesignFeatures& a, const DesignFeatures& b) {
+    return partDistance(a, b, 0, a.values.size());
+}
+
+PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
+    const std::size_t first =
+        rounds.size() > std::size_t(MaxSteerRounds) ? rounds.size() - MaxSteerRounds : 0;
+    const std::vector<PickRound> recent(rounds.begin() + std::ptrdiff_t(first), rounds.end());
+    double weight = 1.0;
+    for (std::size_t r = recent.size(); r-- > 0;) {
+        const PickRound& in = recent[r];
+        Round round;
+        round.weight = weight;
+        weight *= 0.85; // newer rounds say more of what one has in mind now
+        for (const Genome& g : in.picked)
+            round.picked.push_back(designFeatures(g));
+        for (const Genome& g : in.passed) {
+            round.passed.push_back(designFeatures(g));
+            round.passedWeight.push_back(1.0);
+        }
+        for (const Genome& g : in.disliked) {
+            round.passed.push_back(designFeatures(g));
+            round.passedWeight.push_back(2.0);
+        }
+        if (!round.picked.empty() && !round.passed.empty()) ++mInformedRounds;
+        mRounds.insert(mRounds.begin(), std::move(round));
+    }
+    mInformed = mInformedRounds >= 2;
+    if (!mInformed) return;
+
+    mSteps.palette = movement(recent, LayoutEnd, ColourEnd);
+    mSteps.initial = movement(recent, 0, LayoutEnd);
+    mSteps.strokes = movement(recent, ColourEnd, mRounds.back().picked.front().values.size());
+
+    // The words: the newest rounds' picks against what they passed over.
+    DesignFeatures pickMean, passMean;
+    int picks = 0, passes = 0;
+    pickMean.toolShare.assign(ToolCount, 0.0);
+    passMean.toolShare.assign(ToolCount, 0.0);
+    const auto add = [](DesignFeatures& sum, const DesignFeatures& f) {
+        sum.lightness += f.lightness;
+        sum.warmth += f.warmth;
+        sum.chroma += f.chroma;
+        sum.contrast += f.contrast;
+        sum.fineness += f.fineness;
+        for (std::size_t t = 0; t < sum.toolShare.size() && t < f.toolShare.size(); ++t)
+            sum.toolShare[t] += f.toolShare[t];
+    };
+    for (std::size_t r = mRounds.size() > 3 ? mRounds.size() - 3 : 0; r < mRounds.size(); ++r) {
+        if (mRounds[r].picked.empty() || mRounds[r].passed.empty()) continue;
+        ++mExplainedRounds;
+        for (const DesignFeatures& f : mRounds[r].picked) {
+            add(pickMean, f);
+            ++picks;
+        }
+        for (const DesignFeatures& f : mRounds[r].passed) {
+            add(passMean, f);
+            ++passes;
+        }
+    }
+    const double p = 1.0 / std::max(picks, 1), q = 1.0 / std::max(passes, 1);
+    std::vector<Word> words;
+    const auto say = [&](double difference, double scale, const char* more, const char* less) {
+        const double z = difference / scale;
+        if (z > 1.0) words.push_back({z, more});
+        if (z < -1.0) words.push_back({-z, less});
+    };
+    say(pickMean.fineness * p - passMean.fineness * q, 0.04, "finer patterns", "broader patterns");
+    say(pickMean.warmth * p - passMean.warmth * q, 5.0, "warmer inks", "cooler inks");
+    say(pickMean.lightness * p - passMean.lightness * q, 6.0, "lighter", "darker");
+    say(pickMean.chroma * p - passMean.chroma * q, 6.0, "more vivid colours", "softer colours");
+    say(pickMean.contrast * p - passMean.contrast * q, 5.0, "more contrast", "less contrast");
+    for (int t = 0; t < ToolCount; ++t) {
+        const double d = pickMean.toolShare[std::size_t(t)] * p - passMean.toolShare[std::size_t(t)] * q;
+        const std::string plural(toolSpec(Tool(t)).plural);
+        say(d, 0.15, ("more " + plural).c_str(), ("fewer " + plural).c_str());
+    }
+    std::stable_sort(words.begin(), words.end(),
+                     [](const Word& a, const Word& b) { return a.weight > b.weight; });
+    for (std::size_t k = 0; k < words.size() && k < 3; ++k)
+        mWords.push_back(words[k].text);
+}
+
+double PreferenceModel::score(const DesignFeatures& c) const {
+    // Each round: the target is closer to the picks than to what was passed over, so a
+    // candidate closer to a passed-over design than to the round's nearest pick breaks it.
+    double broken = 0.0, total = 0.0;
+    for (const Round& round : mRounds) {
+        if (round.picked.empty() || round.passed.empty()) continue;
+        double toPick = 1e300;
+        for (const DesignFeatures& p : round.picked)
+            toPick = std::min(toPick, featureDistance(c, p));
+        double sum = 0.0, weights = 0.0;
+        for (std::size_t k = 0; k < round.passed.size(); ++k) {
+            sum += round.passedWeight[k] * std::max(0.0, toPick - featureDistance(c, round.passed[k]));
+            weights += round.passedWeight[k];
+        }
+        broken += round.weight * sum / weights;
+        total += round.weight;
+    }
+    if (total == 0.0) return 0.0;
+    // Among candidates that break nothing, the one nearest the newest picks.
+    double nearest = 0.0;
+    for (std::size_t r = mRounds.size(); r-- > 0;)
+        if (!mRounds[r].picked.empty()) {
+            nearest = 1e300;
+            for (const DesignFeatures& p : mRounds[r].picked)
+                nearest = std::min(nearest, featureDistance(c, p));
+            break;
+        }
+    return -(broken / total) - 0.15 * nearest;
+}
+
+std::string PreferenceModel::explain() const {
+    if (!mInformed) return {};
+    std::string text = mExplainedRounds == 1
+                           ? "more like your last pick"
+                           : "more like your last " + std::to_string(mExplainedRounds) + " picks";
+    if (mWords.empty()) return text + ": close to what you picked";
+    text += ": ";
+    for (std::size_t k = 0; k < mWords.size(); ++k)
+        text += (k ? ", " : "") + mWords[k];
+    return text;
+}
+
+SteerResult steerBreed(const SteerRequest& request) {
+    const BreedRequest& base = request.breed;
+    PreferenceModel model(request.rounds);
+    SteerResult result;
+    // Swap has two results; without what to learn from there is nothing to rank by.
+    if (!model.informed() || base.op == GeneticOperator::Swap) {
+        result.children = breed(base);
+        return result;
+    }
+    if (request.candidates < base.count || request.candidates > MaxChildren)
+        throw InputError("candidates must be between the count (" + std::to_string(base.count) + ") and " +
+                         std::to_string(MaxChildren) + " (got " + std::to_string(request.candidates) + ")");
+    // breed() checks the request (parents, count, strength, dimensions) and makes the
+    // requested operator's own candidates.
+    BreedRequest own = base;
+    own.childNumbers.clear();
+    std::vector<Genome> pool = breed(own);
+    std::vector<std::size_t> home(pool.size(), 0);
+    for (std::size_t i = 0; i < pool.size(); ++i)
+        if (base.op == GeneticOperator::Recombine) home[i] = i % base.parents.size();
+
+    result.steps = model.steps();
+    const double strokes = std::clamp(base.strength * result.steps.strokes, 0.02, 1.0);
+    const double palette = std::clamp(base.strength * result.steps.palette, 0.02, 1.0);
+    result.strokeStrength = strokes;
+
+    // The aids: alteration at the adaptive steps, recombination with the newest earlier picks,
+    // fresh designs of the generators.
+    std::vector<Genome> mates = base.parents;
+    for (std::size_t r = request.rounds.size(); r-- > 0 && mates.size() < base.parents.size() + 2;)
+        for (const Genome& g : request.rounds[r].picked)
+            if (g.dimension == base.parents.front().dimension &&
+                std::none_of(mates.begin(), mates.end(),
+                             [&](const Genome& m) { return genomeId(m) == genomeId(g); }))
+                mates.push_back(g);
+    const Family* family = nullptr;
+    for (const Genome& parent : base.parents)
+        if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
+    const int dimension = base.parents.front().dimension;
+    if (family && family->dimension != dimension) family = nullptr;
+    std::vector<std::string> kinds(pool.size(), std::string(operatorName(base.op)));
+    const int aids = request.candidates - int(pool.size());
+    for (int k = 0; k < aids; ++k) {
+        Pcg32 rng = childRng(base.seed, k, 0x61696473ULL, CandidateStream);
+        const std::size_t p = std::size_t(k) % base.parents.size();
+        const int kind = k % 4;
+        Genome g;
+        std::string name;
+        if (kind <= 1) {
+            // Alteration at the adaptive step, now and then a colourway at the palette's.
+            g = alterGenome(base.parents[p], std::clamp(strokes * rng.uniform(0.5, 1.5), 0.01, 1.0), rng);
+            if (!locksOf(g).palette && rng.chance(0.5 * result.steps.palette))
+                g = colourwayOf(g, palette, rng);
+            if (rng.chance(0.15 * result.steps.initial)) g = reinitGenome(g, rng);
+            name = "alter";
+        } else if (kind == 2 && mates.size() > 1) {
+            g = recombineGenomes(mates, p, rng);
+            name = "recombine";
+        } else {
+            const std::uint64_t seed = rng.nextUint();
+            // The parents' family (as the wildcard) or the free generator: some families take
+            // a second for one look (a rake's many tines), too slow to draw many of them.
+            const Family* source = family && rng.chance(0.5) ? family : nullptr;
+            g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
+            if (!g.meta.seed) g.meta.seed = seed;
+            name = "wildcard";
+        }
+        pool.push_back(std::move(g));
+        home.push_back(p);
+        kinds.push_back(name);
+    }
+
+    // Rank, then choose with diversity: no near-duplicate of a parent or of a child chosen before,
+    // no dull design; the last child explores (the best-liked of the most unlike half).
+    std::vector<Glimpse> looks;
+    double parentShare = 0.0;
+    std::set<std::string> taken;
+    for (const Genome& parent : base.parents) {
+        looks.push_back(featureCache().get(parent).look);
+        parentShare = std::max(parentShare, looks.back().dominantShare);
+        taken.insert(genomeId(parent));
+    }
+    std::vector<double> scores(pool.size());
+    std::vector<Glimpse> poolLooks(pool.size());
+    {
+        // The looks on every core: each candidate's alone, so the order does not matter.
+        std::atomic<std::size_t> next{0};
+        const auto work = [&] {
+            for (std::size_t i = next++; i < pool.size(); i = next++)
+                featureCache().get(pool[i]);
+        };
+        const unsigned extra = std::min(std::max(std::thread::hardware_concurrency(), 1u) - 1, 15u);
+        std::vector<std::thread> threads;
+        for (unsigned t = 0; t < extra; ++t)
+            threads.emplace_back(work);
+        work();
+        for (std::thread& t : threads)
+            t.join();
+    }
+    for (std::size_t i = 0; i < pool.size(); ++i) {
+        const Seen seen = featureCache().get(pool[i]);
+        scores[i] = model.score(seen.features);
+        poolLooks[i] = seen.look;
+    }
+    std::vector<std::size_t> order(pool.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return scores[a] > scores[b]; });
+    std::vector<std::size_t> chosen;
+    const auto acceptable = [&](std::size_t i, double apart) {
+        if (taken.count(genomeId(pool[i]))) return false;
+        if (poolLooks[i].dominantShare > DullShare && poolLooks[i].dominantShare > parentShare) return false;
+        for (const Glimpse& look : looks)
+            if (meanDeltaE(look, poolLooks[i]) < apart) return false;
+        return true;
+    };
+    const int exploit = base.count > 2 ? base.count - 1 : base.count;
+    for (double apart : {4.0 * NearDuplicateDeltaE, NearDuplicateDeltaE, -1.0})
+        for (std::size_t i : order) {
+            if (int(chosen.size()) >= exploit) break;
+            if (std::find(chosen.begin(), chosen.end(), i) != chosen.end() || !acceptable(i, apart)) continue;
+            chosen.push_back(i);
+            looks.push_back(poolLooks[i]);
+            taken.insert(genomeId(pool[i]));
+        }
+    if (int(chosen.size()) < base.count) {
+        // Exploration: among the candidates not chosen, the half farthest from the chosen ones,
+        // and of those the best liked.
+        std::vector<std::pair<double, std::size_t>> far;
+        for (std::size_t i : order) {
+            if (std::find(chosen.begin(), chosen.end(), i) != chosen.end() || taken.count(genomeId(pool[i])))
+                continue;
+            double nearest = 1e300;
+            for (std::size_t c : chosen)
+                nearest = std::min(nearest, meanDeltaE(poolLooks[c], poolLooks[i]));
+            far.push_back({nearest, i});
+        }
+        std::stable_sort(far.begin(), far.end(),
+                         [](const auto& a, const auto& b) { return a.first > b.first; });
+        far.resize(std::max<std::size_t>(1, far.size() / 2));
+        std::size_t best = far.front().second;
+        for (const auto& [d, i] : far)
+            if (scores[i] > scores[best]) best = i;
+        chosen.push_back(best);
+    }
+
+    // The lineage breed() writes, with the number each child goes to and its rank.
+    int generation = 0;
+    std::vector<std::string> parentIds;
+    for (const Genome& parent : base.parents) {
+        generation = std::max(generation, lineageGeneration(parent));
+        parentIds.push_back(genomeId(parent));
+    }
+    generation = base.generation.value_or(generation + 1);
+    for (std::size_t k = 0; k < chosen.size() && int(k) < base.count; ++k) {
+        const std::size_t i = chosen[k];
+        Genome child = pool[i];
+        const int number = base.childNumbers.empty() ? int(k) + 1 : base.childNumbers[k];
+        MetaLineage lineage;
+        lineage.seed = base.seed;
+        lineage.child = int(k) + 1;
+        lineage.generation = generation;
+        lineage.op = kinds[i];
+        const int rank = int(std::find(order.begin(), order.end(), i) - order.begin()) + 1;
+        lineage.other["steered"] = rank;
+        if (kinds[i] == "wildcard") {
+            lineage.change = "a fresh design, ranked like your picks";
+            child.meta.lineage = lineage;
+            if (child.meta.name)
+                child.meta.name = *child.meta.name + " (g" + std::to_string(generation) + " #" +
+                                  std::to_string(number) + ")";
+        } else {
+            lineage.parents = parentIds;
+            if (kinds[i] == "alter") lineage.strength = strokes;
+            const std::size_t h = std::min(home[i], base.parents.size() - 1);
+            lineage.change =
+                i < std::size_t(own.count) && pool[i].meta.lineage && pool[i].meta.lineage->change
+                    ? *pool[i].meta.lineage->change
+                    : describeChange(base.parents, h, child);
+            if (i < std::size_t(own.count) && pool[i].meta.lineage) {
+                lineage.strength = pool[i].meta.lineage->strength;
+                lineage.variation = pool[i].meta.lineage->variation;
+                lineage.redraws = pool[i].meta.lineage->redraws;
+            }
+            child.meta = childMeta(base.parents[h], generation, number, lineage);
+        }
+        child.meta.id = genomeId(child);
+        result.children.push_back(std::move(child));
+    }
+    result.explanation = model.explain();
+    return result;
+}
+
+} // namespace marbler

@@ -1,0 +1,149 @@
+// Breeding that steers (Steer.h): the preference model, adaptive steps, reproducibility and the
+// explanation in words.
+
+#include "marbler/Steer.h"
+#include "marbler/Error.h"
+#include "marbler/Families.h"
+#include "marbler/Generator.h"
+#include "marbler/GenomeIO.h"
+#include "marbler/Operators.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace marbler;
+
+namespace {
+
+Genome family(const char* name, std::uint64_t seed) {
+    return familyGenome(*findFamily(name), seed);
+}
+
+/// A round where a zebra was picked and designs of other families passed over.
+PickRound zebraRound(std::uint64_t seed) {
+    PickRound round;
+    round.picked.push_back(family("zebra", seed));
+    for (const char* other : {"stone", "chevron", "shawl", "spanish-wave", "first-paper", "french-curl"})
+        round.passed.push_back(family(other, seed + 17));
+    return round;
+}
+
+/// Rounds whose picks are `step`-strength alterations of each other (0: the same design kept),
+/// each passed over beside strong alterations of it.
+std::vector<PickRound> roundsAlong(const Genome& start, double step, std::uint64_t seed) {
+    std::vector<PickRound> rounds;
+    Genome pick = start;
+    for (int r = 0; r < 4; ++r) {
+        PickRound round;
+        round.picked.push_back(pick);
+        for (int k = 0; k < 8; ++k) {
+            Pcg32 rng(seed + std::uint64_t(r * 10 + k));
+            round.passed.push_back(alterGenome(pick, 0.9, rng));
+        }
+        rounds.push_back(round);
+        Pcg32 rng(seed + 999 + std::uint64_t(r));
+        if (step > 0.0) pick = alterGenome(pick, step, rng);
+    }
+    return rounds;
+}
+
+SteerRequest requestAfterZebras(std::uint64_t seed) {
+    SteerRequest request;
+    request.rounds = {zebraRound(1), zebraRound(2), zebraRound(3)};
+    request.breed.op = GeneticOperator::Alter;
+    request.breed.parents = {request.rounds.back().picked.front()};
+    request.breed.seed = seed;
+    request.breed.count = 8;
+    request.breed.strength = 0.5;
+    return request;
+}
+
+} // namespace
+
+TEST(Steer, TheModelRanksADesignLikeThePicksAboveOneUnlikeThem) {
+    const PreferenceModel model({zebraRound(1), zebraRound(2), zebraRound(3)});
+    ASSERT_TRUE(model.informed());
+    // Designs neither picked nor passed over: another zebra, and families passed over.
+    const double like = model.score(designFeatures(family("zebra", 4242)));
+    for (const char* other : {"stone", "chevron", "shawl", "spanish-wave"})
+        EXPECT_GT(like, model.score(designFeatures(family(other, 4242)))) << other;
+}
+
+TEST(Steer, LessLikeThisPushesAwayFromTheMarkedDesign) {
+    // The same rounds, once with a chevron passed over and once marked "less like this": the
+    // mark makes a chevron-like candidate score lower.
+    std::vector<PickRound> plain = {zebraRound(1), zebraRound(2)};
+    std::vector<PickRound> marked = plain;
+    const Genome chevron = marked.back().passed[1];
+    ASSERT_EQ(chevron.meta.family, std::optional<std::string>("chevron"));
+    marked.back().passed.erase(marked.back().passed.begin() + 1);
+    marked.back().disliked.push_back(chevron);
+    Pcg32 rng(777);
+    const DesignFeatures candidate = designFeatures(alterGenome(chevron, 0.1, rng));
+    EXPECT_LT(PreferenceModel(marked).score(candidate), PreferenceModel(plain).score(candidate));
+}
+
+TEST(Steer, StepsShrinkAsPicksConverge) {
+    const Genome start = family("first-paper", 31);
+    const PreferenceModel wandering(roundsAlong(start, 0.9, 5));
+    const PreferenceModel settling(roundsAlong(start, 0.0, 5));
+    EXPECT_LT(settling.steps().strokes, wandering.steps().strokes);
+    EXPECT_LT(settling.steps().strokes, 1.0);
+    // Picks that jump between families: the largest steps.
+    const PreferenceModel jumping({zebraRound(1), zebraRound(2), zebraRound(3)});
+    EXPECT_GE(jumping.steps().initial, settling.steps().initial);
+    // And the children: alteration at a smaller strength than asked once picks agree.
+    SteerRequest request;
+    request.rounds = roundsAlong(start, 0.0, 5);
+    request.breed.parents = {request.rounds.back().picked.front()};
+    request.breed.seed = 3;
+    request.breed.strength = 0.5;
+    EXPECT_LT(steerBreed(request).strokeStrength, 0.5);
+}
+
+TEST(Steer, TheSameRequestGivesTheSameChildrenAndAnotherSeedOthers) {
+    const auto ids = [](const SteerRequest& request) {
+        std::vector<std::string> out;
+        for (const Genome& child : steerBreed(request).children)
+            out.push_back(serializeGenome(child));
+        return out;
+    };
+    const std::vector<std::string> a = ids(requestAfterZebras(11));
+    EXPECT_EQ(a, ids(requestAfterZebras(11)));
+    EXPECT_NE(a, ids(requestAfterZebras(12)));
+}
+
+TEST(Steer, ChildrenAreValidDistinctRankedAndExplained) {
+    const SteerResult result = steerBreed(requestAfterZebras(11));
+    ASSERT_EQ(result.children.size(), 8u);
+    std::set<std::string> seen;
+    for (const Genome& child : result.children) {
+        EXPECT_NO_THROW(validateGenome(child, "child"));
+        EXPECT_TRUE(seen.insert(genomeId(child)).second) << "no two children alike";
+        const auto lineage = child.meta.toJson()["lineage"];
+        EXPECT_TRUE(lineage.contains("steered")) << lineage.dump();
+        EXPECT_EQ(lineage.value("generation", 0), 1 + lineageGeneration(result.children.front()) - 1);
+    }
+    EXPECT_EQ(result.explanation.rfind("more like your last 3 picks", 0), 0u) << result.explanation;
+    // Zebras against other families: their stroke kinds or looks are named.
+    EXPECT_NE(result.explanation.find(": "), std::string::npos) << result.explanation;
+}
+
+TEST(Steer, WithoutHistoryItBreedsAsBefore) {
+    SteerRequest request = requestAfterZebras(5);
+    request.rounds.resize(1); // one round: the first generation bred from a population
+    std::vector<std::string> steered, plain;
+    for (const Genome& g : steerBreed(request).children)
+        steered.push_back(serializeGenome(g));
+    for (const Genome& g : breed(request.breed))
+        plain.push_back(serializeGenome(g));
+    EXPECT_EQ(steered, plain);
+    EXPECT_TRUE(steerBreed(request).explanation.empty());
+}
+
+TEST(Steer, ABadCandidateCountIsRefused) {
+    SteerRequest request = requestAfterZebras(5);
+    request.candidates = 3;
+    EXPECT_THROW(steerBreed(request), InputError);
+}
