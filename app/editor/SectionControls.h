@@ -57,7 +57,7 @@ private:
     QSlider* mTurn;
     QLabel* mNormalError;
     std::optional<glm::dvec3> mTurned; ///< the turned section's normal; none: across the axis
-    bool mUpdating = false; ///< the widgets are being set to a slice (no feedback)
+    bool mUpdating = false;            ///< the widgets are being set to a slice (no feedback)
 };
 
 } // namespace marbler::ui

@@ -53,8 +53,8 @@ public:
 
     /// Adds the steering actions to `breedMenu` (issue 26, Steer.h): "Steer by my picks"
     /// (checkable, remembered in the settings as breed/steer, off by default: it does not yet beat
-    /// plain breeding, docs/breeding.md; sets the model's steering) and "Less like this" (Ctrl+Shift+X: the selected designs are marked, or
-    /// unmarked when all of them already are, and let go as parents).
+    /// plain breeding, docs/breeding.md; sets the model's steering) and "Less like this" (Ctrl+Shift+X: the
+    /// selected designs are marked, or unmarked when all of them already are, and let go as parents).
     void addSteering(QMenu* breedMenu, PopulationModel* model);
     QAction* steerAction() const { return mSteer; }
     QAction* lessLikeAction() const { return mLessLike; }

@@ -27,8 +27,7 @@ struct ScreenVertex {
 
 } // namespace
 
-void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal,
-                       double& cutOffset) {
+void checkMeshSettings(const MeshSettings& settings, glm::dvec3& cutNormal, double& cutOffset) {
     if (settings.width < 1 || settings.height < 1 || settings.width > MaxMeshSide ||
         settings.height > MaxMeshSide)
         throw InputError("mesh render size must be 1 to " + std::to_string(MaxMeshSide) +
@@ -162,7 +161,7 @@ MeshGBuffer rasterizeObject(const Genome& genome, const MeshData& mesh, const Me
                             const RenderControl* control) {
     glm::dvec3 cutNormal;
     double cutOffset = 0.0;
-    checkMeshSettings(genome, settings, cutNormal, cutOffset);
+    checkMeshSettings(settings, cutNormal, cutOffset);
     if (mesh.indices.empty() || mesh.indices.size() % 3 != 0) throw InputError("the object has no triangles");
     for (std::uint32_t index : mesh.indices)
         if (index >= mesh.positions.size())

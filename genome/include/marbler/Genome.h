@@ -99,7 +99,7 @@ struct Genome {
     /// Version 3 (Marbler's addition, docs/genome-format.md "Wrapping bath"): the bath is a
     /// torus of the design's size, so the design repeats without a seam.
     bool wrap = false;
-    Meta meta;          ///< name, lineage and notes (Meta.h); not part of the design
+    Meta meta; ///< name, lineage and notes (Meta.h); not part of the design
 
     /// The folder relative paths of `source` are resolved against (the genome file's folder);
     /// not part of the design and not saved.

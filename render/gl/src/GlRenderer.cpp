@@ -527,7 +527,7 @@ Image GlRenderer::render(const Genome& genome, const RenderSettings& settings) {
 Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings) {
     glm::dvec3 cutNormal;
     double cutOffset = 0.0;
-    checkMeshSettings(genome, settings, cutNormal, cutOffset);
+    checkMeshSettings(settings, cutNormal, cutOffset);
     const int n = settings.supersample;
     const bool flat = genome.dimension == 2;
     Impl& d = *mImpl;
@@ -614,7 +614,7 @@ Image GlRenderer::renderMesh(const Genome& genome, const MeshSettings& settings)
 MeshGBuffer GlRenderer::renderMeshGBuffer(const Genome& genome, const MeshSettings& settings) {
     glm::dvec3 cutNormal;
     double cutOffset = 0.0;
-    checkMeshSettings(genome, settings, cutNormal, cutOffset);
+    checkMeshSettings(settings, cutNormal, cutOffset);
     Impl& d = *mImpl;
     d.makeCurrent();
     auto* gl = d.gl;

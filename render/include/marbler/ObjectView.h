@@ -75,8 +75,7 @@ struct MeshGBuffer {
 /// The checks of an object render's settings (the size, supersampling, camera and cut);
 /// returns the cutting plane's unit normal and offset (0 without a cut). Throws
 /// InputError naming what is wrong.
-void checkMeshSettings(const Genome& genome, const MeshSettings& settings, glm::dvec3& cutNormal,
-                       double& cutOffset);
+void checkMeshSettings(const MeshSettings& settings, glm::dvec3& cutNormal, double& cutOffset);
 
 /// An object's vertices about its bounding-box centre, in its own units: what framing needs.
 struct FittedMesh {

@@ -66,10 +66,10 @@ Slice parseSlice(std::string_view text);
 /// does), and
 /// plane coordinate (0, 0) at `origin`, placed so the extent covers the whole design box.
 struct SlicePlane {
-    int uAxis = 0;      ///< the design axis along the plane's first coordinate
-    int vAxis = 1;      ///< the design axis along the plane's second coordinate
-    int normalAxis = 2; ///< the axis the plane lies across (a turned plane: tilted from)
-    double value = 0.0; ///< where it crosses that axis (a turned plane: p·normal)
+    int uAxis = 0;                     ///< the design axis along the plane's first coordinate
+    int vAxis = 1;                     ///< the design axis along the plane's second coordinate
+    int normalAxis = 2;                ///< the axis the plane lies across (a turned plane: tilted from)
+    double value = 0.0;                ///< where it crosses that axis (a turned plane: p·normal)
     bool turned = false;               ///< the plane is not across an axis
     glm::dvec3 uTurned{1.0, 0.0, 0.0}; ///< a turned plane's first axis
     glm::dvec3 vTurned{0.0, 1.0, 0.0}; ///< a turned plane's second axis
