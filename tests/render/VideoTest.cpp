@@ -266,7 +266,7 @@ void writeRawQuickTime(const fs::path& file, int frames) {
 }
 
 TEST(Video, OnlyCommonCodecsReachADecoder) {
-    const fs::path file = test::outputDir("video-allow-list") / "raw.mov";
+    const fs::path file = test::outputDir("video-codec-allow-list") / "raw.mov";
     writeRawQuickTime(file, 3);
     try {
         openVideoReader(file);
