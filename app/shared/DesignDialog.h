@@ -48,9 +48,9 @@ public:
                   std::optional<double> dpi = std::nullopt, std::optional<SolidExport> solid = std::nullopt,
                   int bitsPerSample = 8, bool mirrorRepeatTile = false, bool straightRepeatTile = false);
     /// Starts writing the design as SVG, as `marbler svg --tolerance` does (traceDesign and
-    /// toSvg, written atomically), on the export thread with the same progress box and
-    /// exportFinished. A solid or a design with a source image fails with the library's reason.
-    /// Returns false when an export is already running.
+    /// writeSvg: one layer per ink, knocked out, in mm; written atomically), on the export thread with the
+    /// same progress box and exportFinished. A solid or a design with a source image fails with the library's
+    /// reason. Returns false when an export is already running.
     bool exportSvgTo(const QString& file, double tolerance = 1.0);
     /// Puts the genome on the clipboard as genome text (the Copy genome button, Ctrl+C).
     void copyGenome();
