@@ -235,6 +235,12 @@ TEST(SourceFormat, AnExrAttributeLongerThanTheFileIsRefusedBeforeOpenExrReadsIt)
     }
     // The sound file still decodes.
     EXPECT_EQ(c.errorOf("own.exr"), "");
+    // Found by fuzz_source: an attribute's name is the file's bytes, a line break among them.
+    std::string named = exr;
+    named[8] = '\n';
+    const std::string error = c.errorOf("data:image/x-exr;base64," + base64(named));
+    EXPECT_NE(error.find("its attribute '\?"), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
 TEST(SourceFormatCli, ADisguisedSourceEndsTheRenderWithOneLine) {

@@ -60,6 +60,14 @@ constexpr std::array Signatures{
     Signature{"{"sv, 0, nullptr, "a JSON file"},
 };
 
+/// A name read from a file, fit for a one-line message: printable ASCII kept, anything else '?'.
+std::string printable(const std::string& name) {
+    std::string out;
+    for (char c : name.substr(0, 64))
+        out += c >= 0x20 && c < 0x7f ? c : '?';
+    return out;
+}
+
 } // namespace
 
 SourceFormat sniffSourceFormat(const unsigned char* bytes, std::size_t size) {
@@ -117,7 +125,7 @@ std::string checkExrHeader(const unsigned char* head, std::size_t size, std::uin
                                          std::uint32_t(head[at + 3]) << 24;
             at += 4;
             if (length > 0x7fffffffu || at + std::uint64_t(length) > fileSize)
-                return "a damaged OpenEXR image: its attribute '" + attribute + "' says " +
+                return "a damaged OpenEXR image: its attribute '" + printable(attribute) + "' says " +
                        std::to_string(length) + " bytes, more than the file holds";
             if (at + length > size) return "an OpenEXR header that does not end within 1 MiB";
             at += length;
