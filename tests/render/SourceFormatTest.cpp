@@ -243,6 +243,17 @@ TEST(SourceFormat, AnExrAttributeLongerThanTheFileIsRefusedBeforeOpenExrReadsIt)
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
+TEST(SourceFormat, AnExrInADataUrlIsReadOnlyWithinItsBytes) {
+    // Found by fuzz_source: this file's line offsets make OpenImageIO 2.4's memory reader copy
+    // from before its buffer (AddressSanitizer: heap-buffer-overflow). Refused or decoded, but
+    // never read outside the bytes (the sanitised test run would report it).
+    SourceCase c;
+    const std::string exr = test::readFile(test::dataDir() / "render" / "exr-negative-offset.exr");
+    ASSERT_GT(exr.size(), 100u);
+    const std::string error = c.errorOf("data:image/x-exr;base64," + base64(exr));
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+}
+
 TEST(SourceFormatCli, ADisguisedSourceEndsTheRenderWithOneLine) {
     SourceCase c;
     writeWith("dpx", c.dir / "x.dpx");

@@ -80,6 +80,35 @@ LinearRaster readRaster(OIIO::ImageInput& in, const std::string& name) {
     return raster;
 }
 
+/// Bytes in memory read by OpenImageIO's readers. OpenImageIO 2.4's own IOMemReader copies from
+/// any offset it is asked for, a negative one included (an OpenEXR line offset table can ask
+/// for one: found by fuzz_source, a heap read before the buffer); this one reads nothing
+/// outside the bytes.
+class BoundedMemReader final : public OIIO::Filesystem::IOProxy {
+public:
+    BoundedMemReader(const unsigned char* data, std::size_t size)
+        : IOProxy("", Read)
+        , mData(data)
+        , mSize(size) {}
+    const char* proxytype() const override { return "memreader"; }
+    std::size_t read(void* buf, std::size_t size) override {
+        const std::size_t got = pread(buf, size, m_pos);
+        m_pos += std::int64_t(got);
+        return got;
+    }
+    std::size_t pread(void* buf, std::size_t size, std::int64_t offset) override {
+        if (offset < 0 || std::uint64_t(offset) >= mSize) return 0;
+        size = std::min(size, mSize - std::size_t(offset));
+        std::memcpy(buf, mData + offset, size);
+        return size;
+    }
+    std::size_t size() const override { return mSize; }
+
+private:
+    const unsigned char* mData;
+    std::size_t mSize;
+};
+
 /// OpenImageIO's reader named `reader`, and only it: ImageInput::open(file) would pick one by
 /// the file's name and then try every format it knows.
 std::unique_ptr<OIIO::ImageInput> createReader(const std::string& reader, const std::string& name) {
@@ -190,7 +219,7 @@ public:
         if (!in->supports("ioproxy"))
             throw InputError("source image " + name + ": a " + reader +
                              " image cannot be read from a data URL; save it as a file beside the genome");
-        OIIO::Filesystem::IOMemReader memory(const_cast<unsigned char*>(data), size);
+        BoundedMemReader memory(data, size);
         if (!in->set_ioproxy(&memory))
             throw InputError("source image " + name + ": cannot decode: " + oneLine(in->geterror()));
         OIIO::ImageSpec spec;
