@@ -274,6 +274,19 @@ public:
     static void push(EditorDocument* doc, QUndoStack* stack, EditorState before, EditorState after,
                      const QString& text, int mergeId = -1, QString mergeKey = {}, Describe describe = {}) {
         if (before == after) return;
+        // A bath that wraps holds only steps that commute with the wrap: the file would not load
+        // again otherwise (docs/genome-format.md, "Wrapping bath").
+        if (after.design.wrap) {
+            const std::string why = wrapProblem(after.design);
+            if (!why.empty()) {
+                emit doc->editRefused(
+                    EditorDocument::tr(
+                        "Not done: this design's bath wraps (it is a straight-repeat tile), and "
+                        "%1. Edit ▸ Bath wraps turns the wrap off and allows every tool.")
+                        .arg(QString::fromStdString(why)));
+                return;
+            }
+        }
         doc->keepRedoBranch();
         // The state before is the one the stack is at: shared, so that lines can be compared.
         StatePtr from = doc->currentState();
@@ -501,6 +514,13 @@ void EditorDocument::setBleed(double bleed, int mergeId) {
     const QString text = describe(before, after);
     EditorCommand::push(this, &mUndo, std::move(before), std::move(after), text, mergeId,
                         QStringLiteral("bleed"), describe);
+}
+
+void EditorDocument::setWrap(bool wrap) {
+    EditorState after{mDesign, mMuted};
+    after.design.wrap = wrap;
+    EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after),
+                        wrap ? tr("Wrap the bath") : tr("Unwrap the bath"));
 }
 
 void EditorDocument::replaceDesign(const Genome& design, const QString& text) {

@@ -88,6 +88,9 @@ public:
     int addPaletteColor(Color color);
     void setBackground(Color color, int mergeId = -1);
     void setBleed(double bleed, int mergeId = -1);
+    /// Makes the bath wrap (a straight-repeat tile) or not, one undo step; wrapping is refused
+    /// (editRefused) where a step cannot wrap.
+    void setWrap(bool wrap);
     /// Replaces the whole design (a raster source chosen, a design dropped in), one undo step.
     void replaceDesign(const Genome& design, const QString& text);
 
@@ -139,6 +142,8 @@ signals:
     void fileNameChanged(const QString& file);
     /// A branch was made, switched to or dropped.
     void branchesChanged();
+    /// An edit was not made, and why (a step that cannot lie in a bath that wraps).
+    void editRefused(const QString& why);
 
 private:
     friend class EditorCommand;

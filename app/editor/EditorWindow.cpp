@@ -15,6 +15,7 @@
 #include "editor/Timeline.h"
 #include "editor/ToolOptions.h"
 #include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
 #include "marbler/Growth.h"
 #include "marbler/Params.h"
 #include "shared/DesignDialog.h"
@@ -329,6 +330,11 @@ void EditorWindow::buildMenus() {
         action->setShortcutContext(Qt::WindowShortcut);
         edit->addAction(action);
     }
+    edit->addSeparator();
+    mWrap = edit->addAction(tr("Bath &wraps (straight repeat)"));
+    mWrap->setObjectName(QStringLiteral("bathWraps"));
+    mWrap->setCheckable(true);
+    connect(mWrap, &QAction::triggered, this, [this](bool on) { mDocument->setWrap(on); });
 
     QMenu* tools = menuBar()->addMenu(tr("&Tools"));
     QToolBar* bar = addToolBar(tr("Tools"));
@@ -446,6 +452,12 @@ void EditorWindow::wireDocument() {
     connect(mDocument, &EditorDocument::stepsChanged, this, &EditorWindow::stepsChanged);
     connect(mDocument, &EditorDocument::modifiedChanged, this, &EditorWindow::updateTitle);
     connect(mDocument, &EditorDocument::fileNameChanged, this, &EditorWindow::updateTitle);
+    connect(mDocument, &EditorDocument::editRefused, this, [this](const QString& why) {
+        statusBar()->showMessage(why, 12000);
+        // The form shows the design's values again, not the refused one.
+        refreshForm();
+        updateWrap();
+    });
 
     // Gestures: one drag, one step.
     connect(mCanvas, &EditorCanvas::stepsMade, this,
@@ -609,7 +621,41 @@ void EditorWindow::designChanged() {
     if (!mFormEditing) refreshForm();
     // Keep the step list's details (a changed parameter shows in its row).
     if (!mFormEditing && !mDocument->dragActive()) stepsChanged();
+    updateWrap();
     updateTitle();
+}
+
+void EditorWindow::updateWrap() {
+    const Genome& design = mDocument->design();
+    const bool wraps = design.wrap;
+    Genome wrapped = design;
+    wrapped.wrap = true;
+    const std::string problem = wraps ? std::string() : wrapProblem(wrapped);
+    mWrap->setChecked(wraps);
+    mWrap->setEnabled(wraps || problem.empty());
+    mWrap->setToolTip(
+        wraps ? tr("The bath wraps: the design is a straight-repeat tile, and takes only spray and "
+                   "stretch along an axis. Turn it off to use every tool.")
+        : problem.empty() ? tr("Make the bath wrap: the design becomes a straight-repeat tile")
+                          : tr("This design cannot wrap: %1").arg(QString::fromStdString(problem)));
+    if (!mTools) return;
+    bool currentDisabled = false;
+    const std::vector<EditorTool> all = editorTools();
+    for (QAction* a : mTools->actions()) {
+        const auto found = std::find_if(all.begin(), all.end(),
+                                        [a](EditorTool t) { return t.index() == a->data().toInt(); });
+        if (found == all.end()) continue;
+        const EditorTool t = *found;
+        // The editor's own drop patterns lay drops; the picker changes nothing.
+        const bool may = t == EditorTool::Pick || (t.inRegistry() ? toolMayWrap(t.tool()) : false);
+        a->setEnabled(!wraps || may);
+        a->setToolTip(!wraps || may
+                          ? ui::toolTip(t)
+                          : tr("%1 (not in a bath that wraps: turn off Edit ▸ Bath wraps to use it)")
+                                .arg(ui::toolTip(t)));
+        if (a->isChecked() && !a->isEnabled()) currentDisabled = true;
+    }
+    if (currentDisabled) setTool(Tool::Spray);
 }
 
 void EditorWindow::stepsChanged() {

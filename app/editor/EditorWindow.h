@@ -152,6 +152,9 @@ private:
     void setCurrentInk(int index);
     /// The canvas's handles for the selected step, at the timeline's end only.
     void updateHandles();
+    /// A bath that wraps takes only spray and stretch along an axis: the other tools are
+    /// disabled (saying why), and Edit ▸ Bath wraps shows the state.
+    void updateWrap();
 
     EditorDocument* mDocument = nullptr;
     std::unique_ptr<EditorAutosave> mAutosave;
@@ -168,6 +171,7 @@ private:
     SolidObjectView* mObject = nullptr;
     SectionControls* mSection = nullptr; ///< a solid's section and object (none for a flat design)
     QActionGroup* mTools = nullptr;
+    QAction* mWrap = nullptr; ///< Edit ▸ Bath wraps
     QLabel* mStatus = nullptr;
     ToolSettings mToolSettings;
     Slice mSlice{2, 0.0};

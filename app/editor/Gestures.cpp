@@ -317,8 +317,17 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         const double half = std::hypot(design.size.x, design.size.y);
         const int n = std::clamp(s.teeth, 2, int(MaxTeeth));
         op.teeth.clear();
-        for (int i = 0; i < n; ++i)
-            op.teeth.push_back(-half + 2.0 * half * i / (n - 1));
+        if (design.wrap && dim == 2) {
+            // A bath that wraps takes a pass along an axis whose teeth span the design across
+            // it (docs/genome-format.md, "Wrapping bath"): the drag's nearest axis, edge to edge.
+            op.angle = 90.0 * std::round(op.angle / 90.0);
+            const double period = std::fmod(std::abs(op.angle), 180.0) == 0.0 ? design.size.y : design.size.x;
+            for (int i = 0; i < n; ++i)
+                op.teeth.push_back(i == n - 1 ? period : period * i / (n - 1));
+        } else {
+            for (int i = 0; i < n; ++i)
+                op.teeth.push_back(-half + 2.0 * half * i / (n - 1));
+        }
         ops.push_back(op);
         break;
     }

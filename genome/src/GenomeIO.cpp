@@ -808,13 +808,38 @@ void validateGenome(const Genome& genome, const std::string& name) {
 }
 
 bool canWrap(const Genome& genome) {
-    if (genome.dimension != 2 || genome.source) return false;
-    for (const std::vector<Operation>* list : {&genome.initial, &genome.operations})
-        for (const Operation& op : *list) {
-            std::string field;
-            if (!whyCannotWrap(op, genome.size, field).empty()) return false;
-        }
-    return true;
+    return wrapProblem(genome).empty();
+}
+
+std::string wrapProblem(const Genome& genome) {
+    // The loader's own rule and words, without the file's name in front.
+    const std::string name = "design";
+    try {
+        checkWraps(genome, name);
+    } catch (const GenomeError& e) {
+        return std::string(e.what()).substr(name.size() + 2);
+    }
+    return {};
+}
+
+bool toolMayWrap(Tool tool) {
+    switch (tool) {
+    case Tool::Spray:
+    case Tool::Stretch:
+        return true;
+    case Tool::Drop:
+    case Tool::Cylinder:
+    case Tool::Line:
+    case Tool::Comb:
+    case Tool::Wave:
+    case Tool::Circle:
+    case Tool::Sphere:
+    case Tool::Vortex:
+    case Tool::Flow:
+    case Tool::Stylus:
+        return false;
+    }
+    return false;
 }
 
 Json toJson(const Genome& genome) {

@@ -37,6 +37,14 @@ void validateGenome(const Genome& genome, const std::string& name);
 /// breeding clears `wrap` of a child whose new steps cannot wrap.
 bool canWrap(const Genome& genome);
 
+/// Why the genome's bath could not wrap, as the loader says it without the file's name
+/// ("operations[2].tool: a drop pushes ..."), or "" where it can.
+std::string wrapProblem(const Genome& genome);
+
+/// Whether a step of `tool` can ever lie in a bath that wraps (spray always, stretch along an
+/// axis); the editor offers only these tools for such a design.
+bool toolMayWrap(Tool tool);
+
 /// Saves a genome atomically. Throws RuntimeFailure.
 void saveGenome(const Genome& genome, const std::filesystem::path& file);
 
