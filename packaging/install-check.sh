@@ -35,7 +35,8 @@ dpkg -L marbler | sort >/tmp/marbler-files
 # What a desktop brings and the package does not need: a virtual display for the window, and
 # xdg-utils with the MIME and launcher databases to ask which program opens a genome file.
 step "installing xvfb and xdg-utils for the checks"
-apt-get install -y -qq xvfb xauth xdg-utils shared-mime-info desktop-file-utils >/tmp/apt-tools.log 2>&1 ||
+apt-get install -y -qq xvfb xauth xdg-utils libfile-mimeinfo-perl shared-mime-info desktop-file-utils \
+    >/tmp/apt-tools.log 2>&1 ||
     { tail -30 /tmp/apt-tools.log; fail "installing the tools of the check"; }
 
 id marbler-user >/dev/null 2>&1 || useradd -m marbler-user
@@ -43,9 +44,10 @@ as_user() { runuser -u marbler-user -- env HOME=/home/marbler-user "$@"; }
 home=/home/marbler-user
 
 step "marbler --help"
-as_user marbler --help | grep -q "^usage: marbler" || fail "marbler --help"
+help=$(as_user marbler --help) || fail "marbler --help"
+grep -q "^usage: marbler" <<<"$help" || fail "marbler --help prints no usage"
 man_page=$(dpkg -L marbler | grep '/man1/marbler.1.gz$') || fail "no manual page in the package"
-zcat "$man_page" | grep -q '^\.SH EXAMPLES' || fail "the manual page has no examples"
+grep -q '^\.SH EXAMPLES' <(zcat "$man_page") || fail "the manual page has no examples"
 test -f /usr/share/bash-completion/completions/marbler || fail "no bash completion"
 
 step "marbler render an example"
