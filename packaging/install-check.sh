@@ -39,6 +39,9 @@ apt-get install -y -qq xvfb xauth xdg-utils libfile-mimeinfo-perl shared-mime-in
     >/tmp/apt-tools.log 2>&1 ||
     { tail -30 /tmp/apt-tools.log; fail "installing the tools of the check"; }
 
+# A chroot made in a mktemp -d folder has a root of mode 0700, which no user but root can
+# enter; a real machine's is 0755.
+[ "$(stat -c %a /)" = 755 ] || chmod 755 /
 id marbler-user >/dev/null 2>&1 || useradd -m marbler-user
 as_user() { runuser -u marbler-user -- env HOME=/home/marbler-user "$@"; }
 home=/home/marbler-user
