@@ -2,7 +2,9 @@
 # Marbler's two developer commands (see README.md):
 #   ./dev.sh start   install what is missing, build, and start the workbench
 #   ./dev.sh test    install what is missing, build, and run every test
-# Both work on a fresh Debian 12 machine as root (or with sudo available).
+# Both work on a fresh Debian 12 machine as root (or with sudo available). And for people who
+# install Marbler rather than build it (docs/packaging.md):
+#   ./dev.sh package build the Debian package build-package/marbler_VERSION_amd64.deb
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -28,6 +30,9 @@ PACKAGES=(
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth                                   # a virtual display for the GL and window tests
     librsvg2-bin                                 # rsvg-convert: the svg tests rasterise `marbler svg` output
+    lintian appstream desktop-file-utils         # the package's checks (packaging/check-package.sh)
+    file                                         # CPack's shlibdeps finds the binaries with it
+    groff-base bash-completion                   # the manual page and completion tests (tests/packaging)
 )
 JOBS=$(nproc)
 
@@ -77,7 +82,24 @@ check_format() {
     fi
 }
 
+# package DIR: the Debian package of the build in DIR, packed by CPack with the prefix /usr
+# (packaging/Packaging.cmake), then its contents and metadata checked.
+package() {
+    local dir=$1
+    rm -f "$dir"/marbler_*.deb
+    (cd "$dir" && cpack -G DEB >cpack.log 2>&1) || { cat "$dir/cpack.log"; return 1; }
+    bash packaging/check-package.sh "$dir"/marbler_*_amd64.deb
+}
+
 case "${1:-}" in
+package)
+    install_missing
+    # A tree of its own without tests or benchmarks, configured for /usr, with the project's
+    # release flags (RelWithDebInfo: what every test runs; the package's files are stripped).
+    build build-package -DCMAKE_INSTALL_PREFIX=/usr -DMARBLER_BUILD_TESTS=OFF -DMARBLER_BUILD_BENCHMARKS=OFF
+    package build-package
+    echo "== $(ls build-package/marbler_*_amd64.deb): install it with  apt install ./$(ls build-package/marbler_*_amd64.deb)"
+    ;;
 start)
     install_missing
     build build
@@ -90,6 +112,8 @@ test)
     echo "== release build and tests"
     build build
     run_ctest build
+    echo "== the Debian package, packed from that build and checked"
+    package build
     echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
     # The sanitisers watch the code that reads what users and strangers hand Marbler (genome
     # files, images, meshes, videos), the renderers and breeding: the libraries, the CPU renderer
@@ -112,7 +136,7 @@ test)
     echo "== all tests passed"
     ;;
 *)
-    echo "usage: $0 start|test" >&2
+    echo "usage: $0 start|test|package" >&2
     exit 2
     ;;
 esac
