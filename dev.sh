@@ -28,6 +28,7 @@ PACKAGES=(
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth                                   # a virtual display for the GL and window tests
     librsvg2-bin                                 # rsvg-convert: the svg tests rasterise `marbler svg` output
+    qt6-l10n-tools                               # lrelease compiles the window's translations (translations/)
 )
 JOBS=$(nproc)
 
