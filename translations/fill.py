@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the translations of words*.py into marbler_tr.ts and marbler_de.ts.
 
-Run translations/update.sh first (lupdate gathers the words), then this; it fills every entry
-it has a translation for, keeps what Qt Linguist filled by hand, and lists what is missing.
+Run translations/update.sh first (lupdate gathers the words), then this, then update.sh again
+(lupdate's own layout). The tables win for the words they hold; other entries are kept as
+translated by hand (Qt Linguist), and those left unfinished are listed.
 Each translation is checked: the same placeholders (%1, %L1, %n) and an & where the source has
 one. Exits 1 when a check fails or an entry is left unfinished."""
 import glob
@@ -41,11 +42,11 @@ def fill(ts_path, language):
         for message in context.iter("message"):
             source = message.findtext("source")
             translation = message.find("translation")
-            if translation.get("type") != "unfinished":
-                continue  # translated already (by hand, in Linguist)
             entry = TABLE.get(source)
             if entry is None:
-                missing.append((context.findtext("name"), source))
+                # Not in the tables: kept as translated by hand (in Qt Linguist), or missing.
+                if translation.get("type") == "unfinished":
+                    missing.append((context.findtext("name"), source))
                 continue
             text = entry[language]
             forms = list(text) if isinstance(text, tuple) else [text]
@@ -58,7 +59,7 @@ def fill(ts_path, language):
                     slot.text = forms[min(i, len(forms) - 1)]
             else:
                 translation.text = forms[0]
-            del translation.attrib["type"]
+            translation.attrib.pop("type", None)
     tree.write(ts_path, encoding="utf-8", xml_declaration=True)
     # ElementTree drops the doctype lupdate writes; put it back so the file diffs cleanly.
     text = open(ts_path, encoding="utf-8").read()

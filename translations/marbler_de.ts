@@ -1093,7 +1093,7 @@
         <translation>Die Sprache des Fensters ab dem nächsten Start von Marbler</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>The language changes when Marbler starts again</source>
         <translation>Die Sprache wechselt beim nächsten Start von Marbler</translation>
     </message>
@@ -2916,7 +2916,7 @@ Familie: %2</translation>
 <context>
     <name>marbler::ui::PaletteEditor</name>
     <message>
-        <location filename="../app/editor/PaletteEditor.cpp" line="+67"/>
+        <location filename="../app/editor/PaletteEditor.cpp" line="+68"/>
         <source>Turkish ebru</source>
         <translation>Türkisches Ebru</translation>
     </message>
@@ -4008,7 +4008,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::ToolOptions</name>
     <message>
-        <location filename="../app/editor/ToolOptions.cpp" line="+47"/>
+        <location filename="../app/editor/ToolOptions.cpp" line="+46"/>
         <source>Pick</source>
         <translation>Auswählen</translation>
     </message>

@@ -1093,7 +1093,7 @@
         <translation>Marbler&apos;ın bir sonraki açılışından itibaren pencerenin dili</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>The language changes when Marbler starts again</source>
         <translation>Dil, Marbler yeniden başladığında değişir</translation>
     </message>
@@ -2911,7 +2911,7 @@ Aile: %2</translation>
 <context>
     <name>marbler::ui::PaletteEditor</name>
     <message>
-        <location filename="../app/editor/PaletteEditor.cpp" line="+67"/>
+        <location filename="../app/editor/PaletteEditor.cpp" line="+68"/>
         <source>Turkish ebru</source>
         <translation>Türk ebrusu</translation>
     </message>
@@ -4003,7 +4003,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::ToolOptions</name>
     <message>
-        <location filename="../app/editor/ToolOptions.cpp" line="+47"/>
+        <location filename="../app/editor/ToolOptions.cpp" line="+46"/>
         <source>Pick</source>
         <translation>Seç</translation>
     </message>
@@ -4020,7 +4020,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
     <message>
         <location line="+2"/>
         <source>Scatter</source>
-        <translation>Serpme</translation>
+        <translation>Saçma</translation>
     </message>
     <message>
         <location line="+9"/>

@@ -95,7 +95,7 @@ WORDS = [
 ("Pick", "Seç", "Auswählen"),
 ("Line of drops", "Damla dizisi", "Tropfenreihe"),
 ("Rings", "Halkalar", "Ringe"),
-("Scatter", "Serpme", "Streuen"),
+("Scatter", "Saçma", "Streuen"),
 ("Click to pick the ink there and select the step that laid it", "Oradaki boyayı seçmek ve onu seren adımı seçmek için tıklayın", "Klicken wählt die Farbe dort und den Schritt, der sie gelegt hat"),
 ("Drag to lay a line of drops from the press to the release", "Basılan yerden bırakılan yere bir damla dizisi sermek için sürükleyin", "Ziehen legt eine Tropfenreihe vom Drücken bis zum Loslassen"),
 ("Drag from the centre: concentric rings out to the release", "Merkezden sürükleyin: bırakılan yere kadar iç içe halkalar", "Von der Mitte ziehen: konzentrische Ringe bis zum Loslassen"),
