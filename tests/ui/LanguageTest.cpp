@@ -17,6 +17,7 @@
 #include "shared/Language.h"
 #include "shared/StartDialog.h"
 #include "workbench/OpenPlacement.h"
+#include "workbench/SessionStore.h"
 #include "workbench/SessionsDialog.h"
 #include "workbench/WorkbenchWindow.h"
 
@@ -24,6 +25,7 @@
 #include <QAbstractItemView>
 #include <QAction>
 #include <QComboBox>
+#include <QDateTime>
 #include <QDialog>
 #include <QDockWidget>
 #include <QGroupBox>
@@ -36,11 +38,13 @@
 #include <QSettings>
 #include <QSpinBox>
 #include <QTabBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTextEdit>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -308,6 +312,30 @@ TEST_F(LanguageMenuTest, NumbersInTheExportDialogFollowTheLanguage) {
     EXPECT_TRUE(de.contains(QLocale(QStringLiteral("de")).toString(value, 'f', 0)))
         << de.toStdString() << " vs " << en.toStdString();
     if (value >= 1000) EXPECT_NE(number.match(de).captured(), firstEnglish);
+}
+
+TEST_F(LanguageMenuTest, PlaySpeedsAndSessionDatesFollowTheLanguage) {
+    ASSERT_TRUE(ui::installLanguage(QStringLiteral("de")));
+    const QLocale german(QStringLiteral("de"));
+    QTemporaryDir recovery;
+    ui::EditorWindow editor(randomGenome(7, 2), mService.get(), QString(), nullptr, recovery.path());
+    editor.setUnsavedAnswer(ui::EditorWindow::UnsavedAnswer::Discard);
+    auto* speeds = editor.findChild<QComboBox*>(QStringLiteral("playSpeed"));
+    ASSERT_NE(speeds, nullptr);
+    bool fraction = false;
+    for (int i = 0; i < speeds->count(); ++i) {
+        const double speed = speeds->itemData(i).toDouble();
+        EXPECT_TRUE(speeds->itemText(i).startsWith(german.toString(speed)))
+            << speeds->itemText(i).toStdString();
+        fraction = fraction || speed != std::floor(speed);
+    }
+    EXPECT_TRUE(fraction) << "no fractional speed shows the decimal comma";
+    // A session's name carries its date, the month as the language names it.
+    const QDateTime march(QDate(2026, 3, 5), QTime(14, 30));
+    const QString name = ui::defaultSessionName(2, march);
+    EXPECT_TRUE(name.contains(german.toString(march.toLocalTime(), QStringLiteral("d MMM yyyy"))))
+        << name.toStdString();
+    EXPECT_NE(german.monthName(3, QLocale::ShortFormat), QLocale::c().monthName(3, QLocale::ShortFormat));
 }
 
 } // namespace
