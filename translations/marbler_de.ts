@@ -3914,7 +3914,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::Timeline</name>
     <message>
-        <location filename="../app/editor/Timeline.cpp" line="+36"/>
+        <location filename="../app/editor/Timeline.cpp" line="+45"/>
         <source>&amp;Compare</source>
         <translation>&amp;Vergleichen</translation>
     </message>
@@ -3930,12 +3930,12 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+124"/>
+        <location line="+123"/>
         <source>Play</source>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-121"/>
         <source>Play the making of the design, each step growing in; again to stop</source>
         <translation>Die Entstehung des Musters abspielen, jeder Schritt wächst herein; nochmals zum Anhalten</translation>
     </message>
@@ -3980,7 +3980,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Schneller abspielen</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+50"/>
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
     </message>

@@ -3909,7 +3909,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::Timeline</name>
     <message>
-        <location filename="../app/editor/Timeline.cpp" line="+36"/>
+        <location filename="../app/editor/Timeline.cpp" line="+45"/>
         <source>&amp;Compare</source>
         <translation>&amp;Karşılaştır</translation>
     </message>
@@ -3925,12 +3925,12 @@ Desenler gösterildikleri nesnede kalır.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+124"/>
+        <location line="+123"/>
         <source>Play</source>
         <translation>Oynat</translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-121"/>
         <source>Play the making of the design, each step growing in; again to stop</source>
         <translation>Desenin yapılışını oynat, her adım belirerek gelir; durdurmak için yine basın</translation>
     </message>
@@ -3975,7 +3975,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Daha hızlı oynat</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+50"/>
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
     </message>
