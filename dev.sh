@@ -33,6 +33,7 @@ PACKAGES=(
     lintian appstream desktop-file-utils         # the package's checks (packaging/check-package.sh)
     file                                         # CPack's shlibdeps finds the binaries with it
     groff-base bash-completion                   # the manual page and completion tests (tests/packaging)
+    qt6-l10n-tools                               # lrelease compiles the window's translations (translations/)
 )
 JOBS=$(nproc)
 

@@ -20,6 +20,7 @@
 #include "marbler/Params.h"
 #include "shared/DesignDialog.h"
 #include "shared/Help.h"
+#include "shared/Language.h"
 #include "shared/Lineage.h"
 #include "shared/RenderService.h"
 #include "shared/StartDialog.h"
@@ -406,6 +407,7 @@ void EditorWindow::buildMenus() {
     repeat->setToolTip(
         tr("Show the design tiled 3 × 3, plainly or as the mirror repeat tile, to judge its seams"));
     addBathSizeMenus(newMenu, [this](const Genome& g) { emit openEditorRequested(g, {}); });
+    addLanguageMenu(view, this); // issue 25: View ▸ Language
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* guide = help->addAction(tr("Editor &guide"), this, &EditorWindow::showGuide);
     guide->setObjectName(QStringLiteral("editorGuideAction"));
@@ -665,7 +667,7 @@ void EditorWindow::stepsChanged() {
         StepRow row;
         const Operation& op = mDocument->step(i);
         const ToolSpec& spec = toolSpec(op.tool);
-        row.name = QString::fromUtf8(spec.name.data(), qsizetype(spec.name.size()));
+        row.name = registryText(spec.name);
         if (spec.laysInk) row.name += tr(" · ink %1").arg(op.color + 1);
         row.detail = mDocument->stepName(i);
         row.muted = mDocument->isMuted(i);

@@ -62,7 +62,9 @@ private:
 } // namespace
 
 const std::vector<PalettePreset>& palettePresets() {
-    static const std::vector<PalettePreset> presets{
+    static std::vector<PalettePreset> presets;
+    // Refilled on each call, in the window's language (issue 25).
+    presets = {
         {PaletteEditor::tr("Turkish ebru"),
          {{0x1f, 0x4e, 0x79}, {0xc8, 0x55, 0x3d}, {0xe9, 0xc4, 0x6a}, {0x2a, 0x9d, 0x8f}},
          {0xf4, 0xec, 0xdc}},

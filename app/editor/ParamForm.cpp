@@ -1,6 +1,7 @@
 // The parameters of one step as widgets (ParamForm.h).
 
 #include "editor/ParamForm.h"
+#include "shared/Language.h"
 
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
@@ -105,7 +106,7 @@ void applyComponent(const ParamSpec& spec, Operation& op, int dimension, int com
 }
 
 QString text(std::string_view s) {
-    return QString::fromUtf8(s.data(), qsizetype(s.size()));
+    return registryText(s); // issue 25: the registry's words in the window's language
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // The editor's list of steps (StepList.h).
 
 #include "editor/StepList.h"
+#include "shared/Language.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -18,12 +19,12 @@ namespace {
 
 /// "drops", "vortices", "stretches": a tool's name for a count of its steps.
 QString plural(const QString& tool, std::size_t count) {
-    if (count == 1) return tool;
-    if (tool == QStringLiteral("vortex")) return QStringLiteral("vortices");
+    if (count == 1) return registryText(tool.toStdString()); // issue 25: in the window's language
+    if (tool == QStringLiteral("vortex")) return registryText("vortices");
     if (tool.endsWith(QLatin1Char('s')) || tool.endsWith(QLatin1Char('x')) ||
         tool.endsWith(QStringLiteral("ch")) || tool.endsWith(QStringLiteral("sh")))
-        return tool + QStringLiteral("es");
-    return tool + QStringLiteral("s");
+        return registryText((tool + QStringLiteral("es")).toStdString());
+    return registryText((tool + QStringLiteral("s")).toStdString());
 }
 
 } // namespace

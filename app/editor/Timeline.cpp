@@ -8,6 +8,7 @@
 #include <QElapsedTimer>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QSlider>
 #include <QTimer>
 #include <QToolButton>
@@ -25,6 +26,14 @@ constexpr double SecondsPerStep = 0.6;
 constexpr double LongestPlay = 12.0;
 /// The Speed box's factors of the normal pace.
 constexpr double Speeds[] = {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0};
+
+/// A step count, whole or to a tenth, as the window's locale writes it (issue 25), without group
+/// separators ("2000", "2,5" in German).
+QString timelineNumber(double value) {
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'f', std::floor(value) == value ? 0 : 1);
+}
 
 } // namespace
 
@@ -54,7 +63,7 @@ Timeline::Timeline(QWidget* parent)
         tr("Compare two states of the making side by side: the second slider picks the other"));
     mSpeed->setObjectName(QStringLiteral("playSpeed"));
     for (double f : Speeds)
-        mSpeed->addItem(tr("%1×").arg(f), f);
+        mSpeed->addItem(tr("%1×").arg(QLocale().toString(f)), f);
     mSpeed->setCurrentIndex(mSpeed->findData(1.0));
     mSpeed->setToolTip(
         tr("Play speed: 1× plays the whole making in at most 12 s (0.6 s a step); faster for a "
@@ -150,8 +159,7 @@ void Timeline::showGrowth() {
     mSlider->setValue(int(std::lround(mGrowth * PerStep)));
     mCompareSlider->setValue(int(std::lround(mCompare * PerStep)));
     mUpdating = false;
-    mLabel->setText(
-        tr("%1 / %2").arg(QString::number(mGrowth, 'f', std::floor(mGrowth) == mGrowth ? 0 : 1)).arg(mSteps));
+    mLabel->setText(tr("%1 / %2").arg(timelineNumber(mGrowth)).arg(mSteps));
     const bool on = comparing();
     emit captionsChanged(on ? caption(mGrowth) : QString(), on ? caption(mCompare) : QString());
 }
@@ -198,7 +206,7 @@ double Timeline::playSeconds() const {
 QString Timeline::caption(double g) const {
     if (g >= double(mSteps)) return tr("Now");
     if (g <= 0.0) return tr("Bare bath");
-    return tr("Step %1 of %2").arg(QString::number(g, 'f', std::floor(g) == g ? 0 : 1)).arg(mSteps);
+    return tr("Step %1 of %2").arg(timelineNumber(g)).arg(mSteps);
 }
 
 void Timeline::tick() {

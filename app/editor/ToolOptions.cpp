@@ -1,4 +1,5 @@
 #include "editor/ToolOptions.h"
+#include "shared/Language.h"
 
 #include "marbler/Params.h"
 #include "marbler/Sampling.h"
@@ -29,12 +30,11 @@ const ParamSpec& param(Tool tool, ParamField field) {
 }
 QString labelOf(Tool tool, ParamField field) {
     const std::string_view label = param(tool, field).label;
-    return QString::fromUtf8(label.data(), qsizetype(label.size()));
+    return registryText(label);
 }
 QString unitOf(Tool tool, ParamField field) {
     const std::string_view unit = param(tool, field).unit;
-    return unit.empty() ? QString()
-                        : QStringLiteral(" ") + QString::fromUtf8(unit.data(), qsizetype(unit.size()));
+    return unit.empty() ? QString() : QStringLiteral(" ") + registryText(unit);
 }
 
 } // namespace

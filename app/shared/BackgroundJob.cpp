@@ -30,10 +30,10 @@ BackgroundJob::BackgroundJob(QObject* owner, const JobBox& box, Work work, Finis
             } catch (const std::exception& e) {
                 outcome->kind = JobOutcome::Kind::Failed;
                 outcome->error = QString::fromStdString(e.what());
-                if (outcome->error.isEmpty()) outcome->error = tr("an unknown error");
+                if (outcome->error.isEmpty()) outcome->error = QObject::tr("an unknown error");
             }
         });
-    mBox = new QProgressDialog(box.label, tr("Cancel"), 0, box.busy ? 0 : 1000, box.parent);
+    mBox = new QProgressDialog(box.label, QObject::tr("Cancel"), 0, box.busy ? 0 : 1000, box.parent);
     mBox->setObjectName(box.objectName);
     mBox->setWindowModality(Qt::WindowModal);
     mBox->setMinimumDuration(box.minimumDurationMs);

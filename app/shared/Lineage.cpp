@@ -38,9 +38,9 @@ QString operatorLabel(const QString& name) {
 }
 
 QString LineageInfo::madeBy() const {
-    if (op.isEmpty()) return lineageText("(not bred)");
+    if (op.isEmpty()) return QCoreApplication::translate("Lineage", "(not bred)");
     const QString label = operatorLabel(op);
-    return varied ? lineageText("%1, varied").arg(label) : label;
+    return varied ? QCoreApplication::translate("Lineage", "%1, varied").arg(label) : label;
 }
 
 LineageInfo lineageOf(const Genome& genome) {

@@ -3,6 +3,7 @@
 #include "marbler/Families.h"
 #include "marbler/Mesh.h"
 #include "shared/ErrorReport.h"
+#include "shared/Language.h"
 #include "shared/MeshChooser.h"
 #include "shared/StartDialog.h"
 
@@ -149,10 +150,9 @@ void PopulationBar::fillFamilies() {
         QString label = QString::fromUtf8(f.name.data(), qsizetype(f.name.size()));
         label.replace(QLatin1Char('-'), QLatin1Char(' '));
         label[0] = label[0].toUpper();
-        mFamily->addItem(label, QString::fromUtf8(f.name.data(), qsizetype(f.name.size())));
-        mFamily->setItemData(mFamily->count() - 1,
-                             QString::fromUtf8(f.summary.data(), qsizetype(f.summary.size())),
-                             Qt::ToolTipRole);
+        mFamily->addItem(registryText(label.toStdString()),
+                         QString::fromUtf8(f.name.data(), qsizetype(f.name.size())));
+        mFamily->setItemData(mFamily->count() - 1, registryText(f.summary), Qt::ToolTipRole);
     }
     mFamily->setCurrentIndex(std::max(0, mFamily->findData(chosen)));
 }

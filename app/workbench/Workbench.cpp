@@ -5,6 +5,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeImage.h"
 #include "shared/ErrorReport.h"
+#include "shared/Language.h"
 #include "shared/RenderService.h"
 #include "shared/StartDialog.h"
 #include "workbench/Session.h"
@@ -261,6 +262,7 @@ int runWorkbench(int argc, char** argv) {
     // Ties the window to the installed launcher (app/desktop/marbler.desktop): its icon and name
     // in docks and task switchers (Wayland's app id).
     QGuiApplication::setDesktopFileName(QStringLiteral("marbler"));
+    installLanguage(chosenLanguage()); // issue 25: the window's words (MARBLER_LANGUAGE=tr|de|en)
 
     // The hidden options can also come from the environment: MARBLER_SCREENSHOT=FILE,
     // MARBLER_SEED=N, MARBLER_SOLID=1 (or 0 for flat), MARBLER_NO_START_DIALOG=1, and

@@ -13,6 +13,7 @@
 #include "shared/ErrorReport.h"
 #include "shared/GenomeClipboard.h"
 #include "shared/Help.h"
+#include "shared/Language.h"
 #include "shared/RenderService.h"
 #include "shared/SavedFiles.h"
 #include "shared/StartDialog.h"
@@ -362,6 +363,7 @@ void WorkbenchWindow::buildDocks() {
     lineageDock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
 
     mRendererMenu = new RendererMenu(this, mRenderer, viewMenu);
+    addLanguageMenu(viewMenu, this); // issue 25: View ▸ Language
 }
 
 void WorkbenchWindow::setRendererPreference(gl::BackendPreference preference) {
