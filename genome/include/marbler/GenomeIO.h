@@ -37,6 +37,11 @@ void validateGenome(const Genome& genome, const std::string& name);
 /// breeding clears `wrap` of a child whose new steps cannot wrap.
 bool canWrap(const Genome& genome);
 
+/// A wrap lattice's name in files and on the command line: "straight", "half-drop", "brick".
+std::string_view latticeName(Lattice lattice);
+/// The lattice of a name latticeName gives; nullopt for any other text.
+std::optional<Lattice> latticeFromName(std::string_view name);
+
 /// Saves a genome atomically. Throws RuntimeFailure.
 void saveGenome(const Genome& genome, const std::filesystem::path& file);
 
