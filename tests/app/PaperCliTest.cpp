@@ -169,6 +169,9 @@ TEST(PaperCli, BadOptionsExit2WithOneLineAndLeaveNoFile) {
                                                          {"stray"},
                                                          {"--recipe", "turkish"},
                                                          {"--recipe"},
+                                                         {"--repeat", "diagonal"},
+                                                         {"--recipe", "classic", "--repeat", "brick"},
+                                                         {"--size", "5x25cm", "--repeat", "half-drop"},
                                                          {"--size", "2000x2000cm", "--dpi", "1000"}};
     for (const std::vector<std::string>& bad : cases) {
         std::vector<std::string> args = {"paper", "--size", "5x7cm", "--dpi", "20", "--seed", "3", "-o", out};
