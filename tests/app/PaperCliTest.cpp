@@ -200,7 +200,7 @@ TEST(PaperCli, HelpDescribesEveryOption) {
     test::RunResult r = runMarbler({"paper", "--help"});
     EXPECT_EQ(r.exitCode, 0);
     for (const char* option :
-         {"--size", "--dpi", "--colors", "--passes", "--pastel", "--seed", "-o", "--recipe"})
+         {"--size", "--dpi", "--colors", "--passes", "--pastel", "--seed", "-o", "--recipe", "--repeat"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 
