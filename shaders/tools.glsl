@@ -67,6 +67,33 @@ uniform vec3 uInk[17];
 // A bath that wraps (docs/genome-format.md, "Wrapping bath"): (w, h, 1 / w, 1 / h), or all 0
 // where it does not (then the wrap below subtracts 0 and changes nothing).
 uniform vec4 uWrap;
+// The wrap's lattice (Tools.h PreparedOp::wrapShift): (0, h / 2) half-drop, (w / 2, 0) brick,
+// (0, 0) straight.
+uniform vec2 uWrapShift;
+
+// The nearest image over a half-drop or brick lattice of a difference d (Tools.h nearestImage):
+// the nearest in each of three columns (half-drop) or rows (brick), the first of the closest.
+vec2 latticeNearest(vec2 d) {
+    bool brick = uWrapShift.x > 0.0;
+    float a = brick ? d.y : d.x, b = brick ? d.x : d.y;
+    float along = brick ? uWrap.y : uWrap.x, across = brick ? uWrap.x : uWrap.y;
+    float drop = brick ? uWrapShift.x : uWrapShift.y;
+    float i0 = floor(a / along + 0.5);
+    vec2 best = vec2(0.0);
+    float bestLen = 3.4e38;
+    for (int k = -1; k <= 1; ++k) {
+        float i = i0 + float(k);
+        float ea = a - i * along;
+        float eb = b - i * drop;
+        eb -= across * floor(eb / across + 0.5);
+        float len2 = ea * ea + eb * eb;
+        if (len2 < bestLen) {
+            bestLen = len2;
+            best = vec2(ea, eb);
+        }
+    }
+    return brick ? best.yx : best;
+}
 #if MARBLER_HAS_SOURCE
 // A 2D raster start, stretched over the design space (sRGB texture: filtered in linear light).
 uniform sampler2D uSource;
@@ -245,7 +272,10 @@ bool pullBack(int k, inout vec3 p, inout int color, inout vec3 blend, inout floa
 
     vec3 rel = p - o0.xyz;
     // A wrapping bath: the nearest image of the centre (a spray's; no other form is allowed).
-    rel.xy -= uWrap.xy * floor(rel.xy * uWrap.zw + 0.5);
+    if (uWrapShift.x > 0.0 || uWrapShift.y > 0.0)
+        rel.xy = latticeNearest(rel.xy);
+    else
+        rel.xy -= uWrap.xy * floor(rel.xy * uWrap.zw + 0.5);
     vec3 across = rel - dot(rel, o1.xyz) * o1.xyz; // rel itself where nothing is projected out
     float len2 = dot(across, across);
 #if MARBLER_BLEED
@@ -325,7 +355,7 @@ vec3 pullBackVersion2(int k, vec3 p) {
     vec3 rel = p - o0.xyz;
     float u = dot(rel, o3.xyz);
     // A wrapping bath: u modulo the period across the pass, into the teeth's span.
-    float period = abs(o3.x) > 0.5 ? uWrap.x : uWrap.y;
+    float period = abs(o3.x) > 0.5 ? uWrap.x - uWrapShift.x : uWrap.y - uWrapShift.y;
     if (period > 0.0) {
         float first = texelFetch(uTeeth, int(o5.z)).x;
         u -= period * floor((u - first) / period);

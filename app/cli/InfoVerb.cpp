@@ -89,7 +89,10 @@ int runInfo(std::span<const std::string> words) {
         out << '\n';
         out << "background: " << toHex(genome.background) << '\n';
         if (genome.bleed > 0.0) out << "bleed:      " << number(genome.bleed) << " design units\n";
-        if (genome.wrap) out << "wrap:       the bath wraps: a straight-repeat tile\n";
+        if (genome.wrap && genome.lattice == Lattice::Straight)
+            out << "wrap:       the bath wraps: a straight-repeat tile\n";
+        else if (genome.wrap) // a half-drop or brick lattice (docs/genome-format.md)
+            out << "wrap:       the bath wraps: a " << latticeName(genome.lattice) << " repeat tile\n";
         out << "initial:    " << countsByTool(genome.initial) << '\n';
         out << "operations: " << countsByTool(genome.operations) << '\n';
         if (genome.source) {

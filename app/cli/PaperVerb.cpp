@@ -32,6 +32,9 @@ on a cream bath, with no wrap.
 
 options:
   --recipe NAME         post (default) or classic
+  --repeat LATTICE      the post's repeat: straight (default), half-drop (each column
+                        dropped half a sheet) or brick (each row moved half a sheet); its
+                        passes' teeth span the period the repeat needs (docs/genome-format.md)
   --size WxH{cm,mm,in}  the sheet, e.g. 21x29.7cm (default: A4, 21x29.7cm); the design is
                         measured in millimetres of it
   --dpi N               print resolution: the image is the size times N pixels (default 300)
@@ -51,9 +54,9 @@ std::filesystem::path genomeBeside(const std::filesystem::path& image) {
 }
 
 int paper(std::span<const std::string> words) {
-    Args args =
-        parseArgs(words, {"size", "dpi", "colors", "passes", "seed", "o", "output", "threads", "recipe"},
-                  {"pastel", "h", "help"});
+    Args args = parseArgs(
+        words, {"size", "dpi", "colors", "passes", "seed", "o", "output", "threads", "recipe", "repeat"},
+        {"pastel", "h", "help"});
     if (args.has("h") || args.has("help")) {
         std::cout << PaperHelp;
         return ExitOk;
@@ -70,6 +73,17 @@ int paper(std::span<const std::string> words) {
         options.recipe = PaperRecipe::Classic;
     else if (recipe != "post")
         throw InputError("--recipe: must be post or classic (got '" + recipe + "')");
+    // ---- --repeat (docs/genome-format.md, "Half-drop and brick repeats") ----
+    if (auto repeat = args.get("repeat")) {
+        const std::optional<Lattice> lattice = latticeFromName(*repeat);
+        if (!lattice)
+            throw InputError("--repeat: must be straight, half-drop or brick (got '" + *repeat + "')");
+        if (options.recipe == PaperRecipe::Classic && *lattice != Lattice::Straight)
+            throw InputError("--repeat " + *repeat +
+                             ": the classic recipe does not wrap; --recipe post makes repeats");
+        options.lattice = *lattice;
+    }
+    // ---- end --repeat ----
     // Millimetres, to the micrometre: "21x29.7cm" is 210 x 297, not 210.00000000000003.
     options.width = std::round(inches.first * 25.4 * 1000.0) / 1000.0;
     options.height = std::round(inches.second * 25.4 * 1000.0) / 1000.0;

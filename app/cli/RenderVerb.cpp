@@ -67,6 +67,11 @@ options:
                             mirrors of both below), so every edge meets its own mirror image
                             and the tile wraps without a seam; the other options apply to the
                             design (--size and --dpi: each quarter has that print size)
+  --yardage WxL{cm,mm,in}   a length of fabric of a design whose bath wraps (straight,
+                            half-drop or brick, docs/genome-format.md): W across, L along,
+                            the design repeated on its lattice at the print size --size of
+                            one tile and --dpi, e.g. --size 32x32cm --dpi 150 --yardage
+                            140x300cm; streamed by rows as large renders are
   --separations DIR         separations a printer can use, into the folder DIR (made if
                             missing; -o is then optional): a mask per layer (background.png,
                             ink-1.png, ... in palette order; white where the ink is, 8-bit
@@ -89,7 +94,7 @@ int render(std::span<const std::string> words) {
     Args args =
         parseArgs(words,
                   {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
-                   "supersample", "cut", "threads", "repeat", "steps", "separations", "mask-bits"},
+                   "supersample", "cut", "threads", "repeat", "steps", "separations", "mask-bits", "yardage"},
                   {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << RenderHelp;
@@ -124,6 +129,15 @@ int render(std::span<const std::string> words) {
         throw InputError("--repeat: '" + *repeat +
                          "' is not a repeat Marbler makes; 'mirror' is the one (an exact "
                          "straight repeat is impossible for drops)");
+    // ---- --yardage (docs/cli.md, "Yardage") ----
+    if (auto text = args.get("yardage")) {
+        parsePrintSize(*text);
+        if (!printSize) throw InputError("--yardage needs --size (the print size of one tile) and --dpi");
+        for (const char* other : {"repeat", "mesh", "slice", "separations", "gpu"})
+            if (args.has(other))
+                throw InputError(std::string("--yardage and --") + other + " exclude each other");
+    }
+    // ---- end --yardage ----
     const bool meshMode = args.has("mesh");
     if (meshMode && !args.has("view")) throw InputError("--mesh needs --view YAW,PITCH");
     for (const char* meshOnly : {"view", "supersample", "cut"})
@@ -207,6 +221,20 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
     }
     settings.width = width;
     settings.height = height;
+    // ---- --yardage: the region the tile covers, repeated to the fabric's size ----
+    if (auto text = args.get("yardage")) {
+        const std::pair<double, double> yardage = parsePrintSize(*text); // checked in render()
+        if (!genome.wrap || genome.dimension != 2)
+            throw InputError(withGenome("--yardage needs a design whose bath wraps (\"wrap\" in the genome; "
+                                        "marbler paper makes one), or its tiles would meet in seams"));
+        const Region tile = effectiveRegion(genome, settings);
+        const double across = yardage.first / printSize->first, along = yardage.second / printSize->second;
+        settings.region = Region{tile.x0, tile.y0, tile.x0 + (tile.x1 - tile.x0) * across,
+                                 tile.y0 + (tile.y1 - tile.y0) * along};
+        settings.width = pixelsOf(yardage.first * *exportOptions.dpi, "--yardage at --dpi (width)");
+        settings.height = pixelsOf(yardage.second * *exportOptions.dpi, "--yardage at --dpi (length)");
+    }
+    // ---- end --yardage ----
     if (args.has("separations")) {
         writeRenderSeparations(args, genome, settings, exportOptions.dpi);
         if (outFile.empty()) return ExitOk;

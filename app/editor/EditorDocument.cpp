@@ -281,7 +281,7 @@ public:
             if (!why.empty()) {
                 emit doc->editRefused(
                     EditorDocument::tr(
-                        "Not done: this design's bath wraps (it is a straight-repeat tile), and "
+                        "Not done: this design's bath wraps (it is a repeat tile), and "
                         "%1. Edit ▸ Bath wraps turns the wrap off and allows every tool.")
                         .arg(QString::fromStdString(why)));
                 return;
@@ -519,6 +519,7 @@ void EditorDocument::setBleed(double bleed, int mergeId) {
 void EditorDocument::setWrap(bool wrap) {
     EditorState after{mDesign, mMuted};
     after.design.wrap = wrap;
+    if (!wrap) after.design.lattice = Lattice::Straight; // a bath that does not wrap has no lattice
     EditorCommand::push(this, &mUndo, {mDesign, mMuted}, std::move(after),
                         wrap ? tr("Wrap the bath") : tr("Unwrap the bath"));
 }

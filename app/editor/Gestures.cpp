@@ -318,10 +318,15 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
         const int n = std::clamp(s.teeth, 2, int(MaxTeeth));
         op.teeth.clear();
         if (design.wrap && dim == 2) {
-            // A bath that wraps takes a pass along an axis whose teeth span the design across
-            // it (docs/genome-format.md, "Wrapping bath"): the drag's nearest axis, edge to edge.
+            // A bath that wraps takes a pass along an axis whose teeth span the lattice's period
+            // across it (docs/genome-format.md, "Wrapping bath"): the drag's nearest axis.
             op.angle = 90.0 * std::round(op.angle / 90.0);
-            const double period = std::fmod(std::abs(op.angle), 180.0) == 0.0 ? design.size.y : design.size.x;
+            // Across the pass a half-drop's pass along x, or a brick's along y, repeats at half
+            // the design (docs/genome-format.md, "Half-drop and brick repeats").
+            const bool alongX = std::fmod(std::abs(op.angle), 180.0) == 0.0;
+            double period = alongX ? design.size.y : design.size.x;
+            if ((alongX && design.lattice == Lattice::HalfDrop) || (!alongX && design.lattice == Lattice::Brick))
+                period /= 2.0;
             for (int i = 0; i < n; ++i)
                 op.teeth.push_back(i == n - 1 ? period : period * i / (n - 1));
         } else {

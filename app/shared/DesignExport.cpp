@@ -32,7 +32,8 @@ bool DesignExport::exportTo(const Genome& design, const ObjectView& object, cons
                             int bitsPerSample, bool mirrorRepeatTile, bool straightRepeatTile) {
     if (mJob) return false;
     // A straight repeat only where the bath wraps (then the render's edges meet exactly).
-    const bool straight = straightRepeatTile && design.wrap && design.dimension != 3;
+    const bool straight =
+        straightRepeatTile && design.wrap && design.lattice == Lattice::Straight && design.dimension != 3;
     const bool tile = (mirrorRepeatTile || straight) && design.dimension != 3;
     if (const QString problem = exportSizeProblem(tile ? pixels * 2 : pixels); !problem.isEmpty()) {
         reportError(mWindow, tr("Cannot export the image"), problem);

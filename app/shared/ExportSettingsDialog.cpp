@@ -117,7 +117,7 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
             tr("A seamless tile for print and textiles: the design and its mirror images 2 × 2, so "
                "every edge meets its own mirror image (marbler render --repeat mirror)"));
         form->addRow(tr("&Repeat"), mRepeat);
-        if (genome.wrap) {
+        if (genome.wrap && genome.lattice == Lattice::Straight) { // half-drop and brick: issue 29
             // A bath that wraps: the render's edges meet exactly, so the design repeats as it is.
             mStraight = new QCheckBox(tr("Straight repeat tile (2 × 2): the design repeated, twice the width "
                                          "and height"),

@@ -632,7 +632,10 @@ std::vector<Genome> breed(const BreedRequest& request) {
             }
             // A wrapping bath (docs/genome-format.md) stays one only while every step can wrap:
             // a child given a drop or a comb is a plain design.
-            if (child.wrap && !canWrap(child)) child.wrap = false;
+            if (child.wrap && !canWrap(child)) {
+                child.wrap = false;
+                child.lattice = Lattice::Straight; // issue 29: no lattice without a wrap
+            }
             return child;
         };
         std::optional<MetaVariation> variation;

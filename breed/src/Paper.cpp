@@ -2,6 +2,7 @@
 
 #include "marbler/Error.h"
 #include "marbler/Generator.h"
+#include "marbler/GenomeIO.h" // latticeName
 
 #include <algorithm>
 #include <cmath>
@@ -209,6 +210,7 @@ Genome postPaper(std::uint64_t seed, const PaperOptions& options) {
     g.dimension = 2;
     g.size = {w, h, 1000.0};
     g.wrap = true;
+    g.lattice = options.lattice;
     Pcg32 paletteRng(seed, PaperPaletteStream);
     Color unused;
     g.palette = paperPalette(paletteRng, options.colors, options.pastel, &unused);
@@ -238,7 +240,9 @@ Genome postPaper(std::uint64_t seed, const PaperOptions& options) {
     static constexpr double Powers[] = {0.5, 1.0, 2.0};
     for (int pass = 0; pass < options.passes; ++pass) {
         const bool alongX = passRng.chance(0.5);
-        const double extent = alongX ? h : w;
+        // Half-drop: an x-shift repeats every h / 2; brick: a y-shift every w / 2 (the lattice).
+        const bool halved = alongX ? options.lattice == Lattice::HalfDrop : options.lattice == Lattice::Brick;
+        const double extent = (alongX ? h : w) * (halved ? 0.5 : 1.0);
         Operation stretch;
         stretch.tool = Tool::Stretch;
         stretch.angle = alongX ? 0.0 : 90.0;
@@ -265,6 +269,7 @@ Genome postPaper(std::uint64_t seed, const PaperOptions& options) {
     paper["colors"] = options.colors;
     paper["passes"] = options.passes;
     paper["pastel"] = options.pastel;
+    if (options.lattice != Lattice::Straight) paper["repeat"] = std::string(latticeName(options.lattice));
     paper["spacing"] = spacing;
     g.meta.paper = paper;
     return g;
@@ -283,7 +288,16 @@ Genome paperGenome(std::uint64_t seed, const PaperOptions& options) {
     if (options.passes < 0 || options.passes > MaxPaperPasses)
         throw InputError("a paper has 0 to " + std::to_string(MaxPaperPasses) + " passes (got " +
                          std::to_string(options.passes) + ")");
-    if (options.recipe == PaperRecipe::Post) return postPaper(seed, options);
+    if (options.recipe == PaperRecipe::Post) {
+        // A spray's nearest image is sought among three columns or rows (genome-format.md).
+        if (options.lattice == Lattice::HalfDrop && options.height > 4.0 * options.width)
+            throw InputError("a half-drop paper can be at most 4 times as tall as it is wide");
+        if (options.lattice == Lattice::Brick && options.width > 4.0 * options.height)
+            throw InputError("a brick paper can be at most 4 times as wide as it is tall");
+        return postPaper(seed, options);
+    }
+    if (options.lattice != Lattice::Straight)
+        throw InputError("only the post's recipe wraps, so only it makes a half-drop or brick repeat");
     const double w = options.width, h = options.height;
     const double spacing = paperSpacing(w, h, options.colors);
 

@@ -124,11 +124,17 @@ void checkFreeForm(const Json& value, const std::string& where, const std::strin
 
 // ---- Wrapping bath (docs/genome-format.md, "Wrapping bath") ----
 
-/// Why one step cannot be taken modulo the design's size, or "" where it can: a spray (its disc
-/// wraps, it moves nothing) and a stretch along an axis whose teeth span the design across it
-/// (its shift is then a function of the position modulo the period). Every other tool moves
-/// points by amounts that are not periodic in the design's size.
-std::string whyCannotWrap(const Operation& op, const glm::dvec3& size, std::string& field) {
+/// Why one step cannot be taken modulo the design's lattice, or "" where it can: a spray (its
+/// disc wraps, it moves nothing) and a stretch along an axis whose teeth span the period the
+/// lattice gives across the pass (its shift is then a function of the position modulo that
+/// period). Every other tool moves points by amounts that are not periodic in the design's size.
+///
+/// A stretch shifts along one axis by a function of the other coordinate, so it commutes with a
+/// lattice vector (a, b) when that function's period divides the vector's component across the
+/// pass. Straight: x-shifts need period h, y-shifts w. Half-drop ((w, h/2), (0, h)): an x-shift
+/// by f(y) needs f(y + h/2) = f(y), so h/2; a y-shift by g(x) needs w. Brick ((w, 0), (w/2, h)):
+/// an x-shift needs h; a y-shift needs w/2.
+std::string whyCannotWrap(const Operation& op, const glm::dvec3& size, Lattice lattice, std::string& field) {
     field = "tool";
     const std::string tool(toolSpec(op.tool).name);
     switch (op.tool) {
@@ -141,13 +147,18 @@ std::string whyCannotWrap(const Operation& op, const glm::dvec3& size, std::stri
                    formatNumber(op.angle) + ")";
         field = "teeth";
         const bool alongX = std::fmod(std::abs(op.angle), 180.0) == 0.0; // N along y
-        const double period = alongX ? size.y : size.x;
+        const bool halved = alongX ? lattice == Lattice::HalfDrop : lattice == Lattice::Brick;
+        const double period = (alongX ? size.y : size.x) * (halved ? 0.5 : 1.0);
         const double span = op.teeth.empty() ? 0.0 : op.teeth.back() - op.teeth.front();
         if (!(std::abs(span - period) <= 1e-9 * period))
-            return "a stretch in a bath that wraps must have teeth spanning the design across the pass, from "
-                   "the first tooth to the last " +
-                   formatNumber(period) + " (the design's " + (alongX ? "height" : "width") + "; got " +
-                   formatNumber(span) + ")";
+            return "a stretch in a bath that wraps must have teeth spanning " +
+                   std::string(halved ? "half " : "") +
+                   "the design across the pass, from the first tooth to the last " + formatNumber(period) +
+                   " (" + (halved ? "half " : "") + "the design's " + (alongX ? "height" : "width") +
+                   (halved ? std::string(", as a ") + (lattice == Lattice::HalfDrop ? "half-drop" : "brick") +
+                                 " repeat needs"
+                           : std::string()) +
+                   "; got " + formatNumber(span) + ")";
         return "";
     }
     case Tool::Drop:
@@ -171,6 +182,16 @@ std::string whyCannotWrap(const Operation& op, const glm::dvec3& size, std::stri
 /// wrap (whyCannotWrap).
 void checkWraps(const Genome& genome, const std::string& name) {
     if (genome.dimension != 2) throw GenomeError(name, "wrap", "only 2D designs can wrap");
+    // A spray's nearest image is found among three columns (half-drop) or rows (brick) of the
+    // lattice, which is exact while the tile is at most 4 times as long across them.
+    if (genome.lattice == Lattice::HalfDrop && genome.size.y > 4.0 * genome.size.x)
+        throw GenomeError(name, "wrap",
+                          "a half-drop repeat needs a design at most 4 times as tall as it is wide (got " +
+                              formatNumber(genome.size.x) + " x " + formatNumber(genome.size.y) + ")");
+    if (genome.lattice == Lattice::Brick && genome.size.x > 4.0 * genome.size.y)
+        throw GenomeError(name, "wrap",
+                          "a brick repeat needs a design at most 4 times as wide as it is tall (got " +
+                              formatNumber(genome.size.x) + " x " + formatNumber(genome.size.y) + ")");
     if (genome.source)
         throw GenomeError(name, "wrap",
                           "a bath that wraps cannot have a source image (its edges would meet in a seam)");
@@ -178,7 +199,7 @@ void checkWraps(const Genome& genome, const std::string& name) {
          {std::pair{&genome.initial, "initial"}, std::pair{&genome.operations, "operations"}})
         for (std::size_t i = 0; i < list->size(); ++i) {
             std::string field;
-            std::string why = whyCannotWrap((*list)[i], genome.size, field);
+            std::string why = whyCannotWrap((*list)[i], genome.size, genome.lattice, field);
             if (!why.empty()) throw GenomeError(name, member(indexed(key, i), field), why);
         }
 }
@@ -369,8 +390,16 @@ public:
         // ---- Wrapping bath (docs/genome-format.md, "Wrapping bath") ----
         if (auto it = root.find("wrap"); it != root.end()) {
             needVersion(3, "wrap");
-            if (!it->is_boolean()) fail("wrap", "must be true or false (got " + describe(*it) + ")");
-            genome.wrap = it->get<bool>();
+            if (it->is_boolean()) {
+                genome.wrap = it->get<bool>();
+            } else if (auto lattice =
+                           it->is_string() ? latticeFromName(it->get<std::string>()) : std::nullopt) {
+                genome.wrap = true;
+                genome.lattice = *lattice;
+            } else {
+                fail("wrap", "must be true, false, \"straight\", \"half-drop\" or \"brick\" (got " +
+                                 describe(*it) + ")");
+            }
         }
         // ---- end wrapping bath ----
         if (auto it = root.find("meta"); it != root.end()) {
@@ -807,6 +836,24 @@ void validateGenome(const Genome& genome, const std::string& name) {
     checkFreeForm(genome.meta.toJson(), "meta", name, 1);
 }
 
+std::string_view latticeName(Lattice lattice) {
+    switch (lattice) {
+    case Lattice::Straight:
+        return "straight";
+    case Lattice::HalfDrop:
+        return "half-drop";
+    case Lattice::Brick:
+        return "brick";
+    }
+    return "straight";
+}
+
+std::optional<Lattice> latticeFromName(std::string_view name) {
+    for (Lattice lattice : {Lattice::Straight, Lattice::HalfDrop, Lattice::Brick})
+        if (latticeName(lattice) == name) return lattice;
+    return std::nullopt;
+}
+
 bool canWrap(const Genome& genome) {
     return wrapProblem(genome).empty();
 }
@@ -866,7 +913,9 @@ Json toJson(const Genome& genome) {
     root["operations"] = std::move(operations);
     if (genome.source) root["source"] = Json{{"image", genome.source->image}};
     if (genome.bleed != 0.0) root["bleed"] = number(genome.bleed);
-    if (genome.wrap) root["wrap"] = true;
+    if (genome.wrap && genome.lattice == Lattice::Straight) root["wrap"] = true;
+    if (genome.wrap && genome.lattice != Lattice::Straight)
+        root["wrap"] = std::string(latticeName(genome.lattice));
     if (!genome.meta.empty()) root["meta"] = genome.meta.toJson();
     return root;
 }

@@ -98,6 +98,11 @@ glm::dvec3 push(const PreparedOp& op, const glm::dvec3& p, double sign, bool acr
 /// P - C, of the nearest images of P and C where the bath wraps (C is stored wrapped).
 glm::dvec3 fromCentre(const PreparedOp& op, const glm::dvec3& p) {
     if (!(op.wrap.x > 0.0)) return p - op.c;
+    if (op.wrapShift.x > 0.0 || op.wrapShift.y > 0.0) {
+        const glm::dvec2 q = wrapPoint(p.x, p.y, op.wrap, op.wrapShift);
+        const glm::dvec2 d = nearestImage(q - glm::dvec2(op.c), op.wrap, op.wrapShift);
+        return {d.x, d.y, p.z - op.c.z};
+    }
     return {nearestImage(wrapInto(p.x, op.wrap.x) - op.c.x, op.wrap.x),
             nearestImage(wrapInto(p.y, op.wrap.y) - op.c.y, op.wrap.y), p.z - op.c.z};
 }
@@ -124,7 +129,8 @@ glm::dvec3 stretch(const PreparedOp& op, const glm::dvec3& p, double sign) {
     double u = glm::dot(p - op.c, op.n);
     if (op.wrap.x > 0.0 && !op.teeth.empty()) {
         // A wrapping bath: u modulo the design's size across the pass, into the teeth's span.
-        const double period = std::abs(op.n.y) > 0.5 ? op.wrap.y : op.wrap.x;
+        const double period =
+            std::abs(op.n.y) > 0.5 ? op.wrap.y - op.wrapShift.y : op.wrap.x - op.wrapShift.x;
         u -= period * std::floor((u - op.teeth.front()) / period);
     }
     return p + sign * stretchShift(op, u) * op.m;
@@ -321,8 +327,13 @@ std::vector<PreparedOp> prepare(const Genome& genome) {
     if (genome.wrap && genome.dimension == 2)
         for (PreparedOp& op : ops) {
             op.wrap = {genome.size.x, genome.size.y};
-            if (op.tool == Tool::Spray)
-                op.c = {wrapInto(op.c.x, op.wrap.x), wrapInto(op.c.y, op.wrap.y), 0.0};
+            op.wrapShift = genome.lattice == Lattice::HalfDrop ? glm::dvec2(0.0, 0.5 * genome.size.y)
+                           : genome.lattice == Lattice::Brick  ? glm::dvec2(0.5 * genome.size.x, 0.0)
+                                                               : glm::dvec2(0.0);
+            if (op.tool == Tool::Spray) {
+                const glm::dvec2 c = wrapPoint(op.c.x, op.c.y, op.wrap, op.wrapShift);
+                op.c = {c.x, c.y, 0.0};
+            }
         }
     return ops;
 }

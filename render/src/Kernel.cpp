@@ -236,10 +236,19 @@ template <typename T> [[gnu::always_inline]] inline void slide(T* a, int to, int
 
 /// Takes the tile's points into [0, w) x [0, h) (Tools.h wrapInto): at the start of a wrapped
 /// design's trace and after each step that moves them, so a spray needs one image only.
-[[gnu::always_inline]] inline void wrapTile(Tile& t, int n, const glm::dvec2& size) {
+[[gnu::always_inline]] inline void wrapTile(Tile& t, int n, const glm::dvec2& size, const glm::dvec2& shift) {
     double* __restrict x = t.x;
     double* __restrict y = t.y;
     const double w = size.x, h = size.y;
+    if (shift.x > 0.0 || shift.y > 0.0) {
+        // A half-drop or brick lattice (Tools.h wrapPoint).
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec2 q = wrapPoint(x[i], y[i], size, shift);
+            x[i] = q.x;
+            y[i] = q.y;
+        }
+        return;
+    }
     MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         x[i] = x[i] - w * std::floor(x[i] / w);
@@ -263,6 +272,20 @@ template <typename T> [[gnu::always_inline]] inline void slide(T* a, int to, int
         dy = dy > hh ? dy - h : (dy < -hh ? dy + h : dy);
         std::int64_t in = dx * dx + dy * dy < rr;
         flag[i] = in;
+        inside += in;
+    }
+    return inside;
+}
+
+/// sprayWrapped2 on a half-drop or brick lattice: the nearest of the images of three columns
+/// or rows (Tools.h nearestImage).
+inline std::int64_t sprayLattice2(const PreparedOp& op, Tile& t, int n) {
+    const double cx = op.c.x, cy = op.c.y, rr = op.r * op.r;
+    std::int64_t inside = 0;
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec2 d = nearestImage(glm::dvec2(t.x[i] - cx, t.y[i] - cy), op.wrap, op.wrapShift);
+        std::int64_t in = d.x * d.x + d.y * d.y < rr;
+        t.flag[i] = in;
         inside += in;
     }
     return inside;
@@ -784,7 +807,7 @@ template <Variant V, int Dim>
     }
     if (op.wrap.x > 0.0) {
         // A wrapping bath (Tools.cpp stretch): u modulo the period, into the teeth's span.
-        const double period = std::abs(ny) > 0.5 ? op.wrap.y : op.wrap.x;
+        const double period = std::abs(ny) > 0.5 ? op.wrap.y - op.wrapShift.y : op.wrap.x - op.wrapShift.x;
         MARBLER_IVDEP
         for (int i = 0; i < n; ++i)
             along[i] = along[i] - period * std::floor((along[i] - first) / period);
@@ -1199,12 +1222,17 @@ template <int Dim>
     const bool pushes = op.tool != Tool::Spray;
     // A wrapping bath: the nearest image of the (wrapped) centre; the points are wrapped.
     const bool wraps = Dim == 2 && op.wrap.x > 0.0;
+    const bool lattice = wraps && (op.wrapShift.x > 0.0 || op.wrapShift.y > 0.0);
     const double ww = op.wrap.x, wh = op.wrap.y;
     std::int64_t stopped = 0;
     MARBLER_IVDEP
     for (int i = 0; i < n; ++i) {
         double dx = x[i] - cx, dy = y[i] - cy, dz = Dim == 3 ? z[i] - cz : 0.0;
-        if (wraps) {
+        if (lattice) {
+            const glm::dvec2 d = nearestImage(glm::dvec2(dx, dy), op.wrap, op.wrapShift);
+            dx = d.x;
+            dy = d.y;
+        } else if (wraps) {
             dx = dx > 0.5 * ww ? dx - ww : (dx < -0.5 * ww ? dx + ww : dx);
             dy = dy > 0.5 * wh ? dy - wh : (dy < -0.5 * wh ? dy + wh : dy);
         }
@@ -1294,7 +1322,8 @@ traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& til
             tile.r[i] = tile.g[i] = tile.b[i] = 0.0;
         }
     const bool wraps = dimension == 2 && count > 0 && ops[0].wrap.x > 0.0;
-    if (wraps) wrapTile(tile, n, ops[0].wrap);
+    if (wraps) wrapTile(tile, n, ops[0].wrap, ops[0].wrapShift);
+    const bool lattice = wraps && (ops[0].wrapShift.x > 0.0 || ops[0].wrapShift.y > 0.0);
     for (std::size_t k = 0; k < count && n > 0; ++k) {
         const PreparedOp& op = ops[k];
         traversed += static_cast<std::uint64_t>(n);
@@ -1309,7 +1338,9 @@ traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& til
                 n = drop<V, 2>(op, tile, n, colors);
                 break;
             case Tool::Spray:
-                if ((wraps ? sprayWrapped2(op, tile, n) : ink2(op, tile, n, false)) != 0)
+                if ((lattice ? sprayLattice2(op, tile, n)
+                     : wraps ? sprayWrapped2(op, tile, n)
+                             : ink2(op, tile, n, false)) != 0)
                     n = compact(tile, n, 2, op.color, colors);
                 break;
             case Tool::Line:
@@ -1329,7 +1360,7 @@ traceTileBody(const PreparedOp* ops, std::size_t count, int dimension, Tile& til
                 break;
             case Tool::Stretch:
                 stretch2(op, tile, n);
-                if (wraps) wrapTile(tile, n, op.wrap);
+                if (wraps) wrapTile(tile, n, op.wrap, op.wrapShift);
                 break;
             case Tool::Flow:
                 if (op.field == FlowField::Cavity)

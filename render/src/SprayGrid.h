@@ -21,6 +21,7 @@ struct Bleed;
 struct SprayGrid {
     std::size_t first = 0;            ///< the index in the reversed operations where the run starts
     double width = 0.0, height = 0.0; ///< the design's size (the wrap's periods)
+    glm::dvec2 shift{0.0};            ///< the lattice (PreparedOp::wrapShift): 0 for straight
     int cols = 1, rows = 1;
     double cellWidth = 1.0, cellHeight = 1.0;
     struct Spray {

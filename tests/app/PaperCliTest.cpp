@@ -169,6 +169,9 @@ TEST(PaperCli, BadOptionsExit2WithOneLineAndLeaveNoFile) {
                                                          {"stray"},
                                                          {"--recipe", "turkish"},
                                                          {"--recipe"},
+                                                         {"--repeat", "diagonal"},
+                                                         {"--recipe", "classic", "--repeat", "brick"},
+                                                         {"--size", "5x25cm", "--repeat", "half-drop"},
                                                          {"--size", "2000x2000cm", "--dpi", "1000"}};
     for (const std::vector<std::string>& bad : cases) {
         std::vector<std::string> args = {"paper", "--size", "5x7cm", "--dpi", "20", "--seed", "3", "-o", out};
@@ -197,7 +200,7 @@ TEST(PaperCli, HelpDescribesEveryOption) {
     test::RunResult r = runMarbler({"paper", "--help"});
     EXPECT_EQ(r.exitCode, 0);
     for (const char* option :
-         {"--size", "--dpi", "--colors", "--passes", "--pastel", "--seed", "-o", "--recipe"})
+         {"--size", "--dpi", "--colors", "--passes", "--pastel", "--seed", "-o", "--recipe", "--repeat"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 

@@ -444,6 +444,35 @@ TEST(PaperPostRecipe, BreedingAWrappedPaperGivesValidChildrenThatWrapWhileTheyCa
     EXPECT_GT(wrapped, 0);
 }
 
+TEST(PaperPostRecipe, BreedingAHalfDropPaperKeepsItsLatticeOrDropsTheWrapWhole) {
+    // Issue 29: a child that keeps the wrap keeps the parents' lattice (and its steps fit it); a
+    // child that loses it is a plain design, written and read back as the same genome.
+    PaperOptions options = postSheet(60, 40, 4, 3);
+    options.lattice = Lattice::HalfDrop;
+    const Genome a = paperGenome(1, options), b = paperGenome(2, options);
+    const Genome plain = paperGenome(3, sheet(60, 40, 4, 3));
+    int wrapped = 0, plainChildren = 0;
+    for (GeneticOperator op : {GeneticOperator::Alter, GeneticOperator::Recombine, GeneticOperator::Swap}) {
+        BreedRequest request;
+        request.op = op;
+        request.parents = op == GeneticOperator::Alter
+                              ? std::vector<Genome>{a}
+                              : std::vector<Genome>{a, op == GeneticOperator::Swap ? plain : b};
+        request.seed = 12;
+        request.count = 6;
+        request.strength = 0.8;
+        for (const Genome& child : breed(request)) {
+            EXPECT_NO_THROW(validateGenome(child, "child"));
+            EXPECT_EQ(child.lattice, child.wrap ? Lattice::HalfDrop : Lattice::Straight);
+            EXPECT_EQ(parseGenome(serializeGenome(child), "child").lattice, child.lattice);
+            wrapped += child.wrap;
+            plainChildren += !child.wrap;
+        }
+    }
+    EXPECT_GT(wrapped, 0);
+    EXPECT_GT(plainChildren, 0); // the swap with a classic paper's drops
+}
+
 // ---- end of the post's recipe ----
 
 } // namespace

@@ -812,7 +812,8 @@ TEST(WrappingBath, ReadsWritesAndNeedsVersion3) {
 
     EXPECT_EQ(parseError(wrappedText("2", "true")),
               "w.json: wrap: needs format version 3 (the file says version 2)");
-    EXPECT_EQ(parseError(wrappedText("3", "1")), "w.json: wrap: must be true or false (got 1)");
+    EXPECT_EQ(parseError(wrappedText("3", "1")),
+              R"(w.json: wrap: must be true, false, "straight", "half-drop" or "brick" (got 1))");
 }
 
 TEST(WrappingBath, AStepThatCannotWrapIsRefusedWithItsPlace) {
@@ -855,6 +856,80 @@ TEST(WrappingBath, AStepThatCannotWrapIsRefusedWithItsPlace) {
             e.what(),
             "mem: wrap: a bath that wraps cannot have a source image (its edges would meet in a seam)");
     }
+}
+
+TEST(WrappingBath, HalfDropAndBrickLatticesAreReadWrittenAndChecked) {
+    // The straight lattice by name is `true`, and is written so.
+    Genome straight = parseGenome(wrappedText("3", R"("straight")"), "w.json");
+    EXPECT_TRUE(straight.wrap);
+    EXPECT_EQ(straight.lattice, Lattice::Straight);
+    EXPECT_EQ(toJson(straight)["wrap"], true);
+    EXPECT_EQ(straight, parseGenome(wrappedText("3", "true"), "w.json"));
+
+    // Brick: the x-shift's teeth span the height (100) as in a straight repeat.
+    Genome brick = parseGenome(wrappedText("3", R"("brick")"), "w.json");
+    EXPECT_TRUE(brick.wrap);
+    EXPECT_EQ(brick.lattice, Lattice::Brick);
+    EXPECT_EQ(toJson(brick)["wrap"], "brick");
+    EXPECT_EQ(toJson(brick)["version"], 3);
+    EXPECT_EQ(parseGenome(serializeGenome(brick), "again.json"), brick);
+
+    auto expectRefused = [](const std::string& text, const std::string& where, const std::string& why) {
+        std::string error = parseError(text);
+        EXPECT_EQ(error.rfind("w.json: " + where + ": ", 0), 0u) << error;
+        EXPECT_NE(error.find(why), std::string::npos) << error;
+    };
+    // Half-drop: an x-shift by a function of y must repeat every h / 2 (50), not h.
+    expectRefused(
+        wrappedText("3", R"("half-drop")"), "operations[0].teeth",
+        "from the first tooth to the last 50 (half the design's height, as a half-drop repeat needs; "
+        "got 100)");
+    // ... and a y-shift by a function of x every w (200), as straight.
+    const std::string halfDropOk = R"({"format": "marbler-genome", "version": 3, "dimension": 2,
+      "size": [200, 100], "background": "#ffffff", "palette": ["#000000"], "wrap": "half-drop",
+      "initial": [{"tool": "spray", "center": [195, 5], "radius": 20, "color": 0}],
+      "operations": [
+        {"tool": "stretch", "origin": [0, 0], "angle": 0, "teeth": [-10, 15, 40], "shift": 30, "power": 1},
+        {"tool": "stretch", "origin": [0, 0], "angle": 90, "teeth": [0, 120, 200], "shift": 8, "power": 2}]})";
+    const Genome halfDrop = parseGenome(halfDropOk, "w.json");
+    EXPECT_EQ(halfDrop.lattice, Lattice::HalfDrop);
+    EXPECT_EQ(toJson(halfDrop)["wrap"], "half-drop");
+    // Brick: a y-shift by a function of x must repeat every w / 2 (100).
+    expectRefused(
+        wrappedText(
+            "3", R"("brick")", "",
+            R"(, {"tool": "stretch", "origin": [0, 0], "angle": 90, "teeth": [0, 200], "shift": 3, "power": 1})"),
+        "operations[1].teeth", "last 100 (half the design's width, as a brick repeat needs; got 200)");
+    EXPECT_NO_THROW(parseGenome(
+        wrappedText(
+            "3", R"("brick")", "",
+            R"(, {"tool": "stretch", "origin": [0, 0], "angle": 270, "teeth": [0, 100], "shift": 3, "power": 1})"),
+        "w.json"));
+
+    // A lattice the format does not know, or in an older version.
+    expectRefused(wrappedText("3", R"("diagonal")"), "wrap",
+                  R"(must be true, false, "straight", "half-drop" or "brick" (got "diagonal"))");
+    expectRefused(wrappedText("3", "1"), "wrap", "must be true, false");
+    expectRefused(wrappedText("2", R"("brick")"), "wrap", "needs format version 3 (the file says version 2)");
+
+    // A tile too long across the columns or rows whose images a spray compares with.
+    Genome tall = halfDrop;
+    tall.size = {20, 100, 1000};
+    tall.operations.clear();
+    try {
+        validateGenome(tall, "mem");
+        ADD_FAILURE() << "a half-drop tile 5 times as tall as wide was accepted";
+    } catch (const GenomeError& e) {
+        EXPECT_STREQ(e.what(),
+                     "mem: wrap: a half-drop repeat needs a design at most 4 times as tall as it is "
+                     "wide (got 20 x 100)");
+    }
+    Genome wide = brick;
+    wide.size = {500, 100, 1000};
+    wide.operations.clear();
+    EXPECT_THROW(validateGenome(wide, "mem"), GenomeError);
+    wide.lattice = Lattice::Straight;
+    EXPECT_NO_THROW(validateGenome(wide, "mem"));
 }
 
 } // namespace wrapping

@@ -122,6 +122,14 @@ TEST(InfoVerb, SaysWhenTheBathWraps) {
     EXPECT_NE(run.out.find("version:    3\n"), std::string::npos) << run.out;
     EXPECT_NE(run.out.find("wrap:       the bath wraps: a straight-repeat tile\n"), std::string::npos)
         << run.out;
+    // A half-drop lattice is named (issue 29).
+    std::string text = test::readFile(file);
+    text.replace(text.find("\"wrap\": true"), 12, "\"wrap\": \"half-drop\"");
+    test::writeFile(file, text);
+    run = test::runMarbler({"info", file.string()});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("wrap:       the bath wraps: a half-drop repeat tile\n"), std::string::npos)
+        << run.out;
     // Without the wrap, no line.
     run = test::runMarbler({"info", genomeFile("valid", "base-2d-v2")});
     EXPECT_EQ(run.out.find("wrap:"), std::string::npos) << run.out;

@@ -367,6 +367,28 @@ TEST_F(GlVsCpu, AWrappingBathAndItsNeighbouringTiles) {
     }
 }
 
+TEST_F(GlVsCpu, HalfDropAndBrickBathsOverSeveralTiles) {
+    // The wrap's lattices (docs/genome-format.md, "Half-drop and brick repeats"): the shader's
+    // three-column nearest image and halved stretch periods draw what the CPU kernel draws,
+    // over a region of 2 x 2 tiles and more, hard and soft-edged.
+    for (Lattice lattice : {Lattice::HalfDrop, Lattice::Brick})
+        for (double bleed : {0.0, 0.8}) {
+            PaperOptions options;
+            options.width = 80.0;
+            options.height = 60.0;
+            options.lattice = lattice;
+            Genome g = paperGenome(4, options);
+            ASSERT_EQ(g.lattice, lattice);
+            g.bleed = bleed;
+            RenderSettings settings;
+            settings.width = 200;
+            settings.height = 150;
+            settings.region = Region{-50.0, -37.5, 150.0, 112.5};
+            expectMatchesCpu(g, settings,
+                             std::string(latticeName(lattice)) + " paper, bleed " + std::to_string(bleed));
+        }
+}
+
 TEST_F(GlVsCpu, AStylusBeyondASoftwareRasterisersLoopLimitIsRefused) {
     // llvmpipe ends every loop of a shader invocation after 65535 iterations in all, silently;
     // a rake dragging ink along 240 points at four samples a pixel runs more. The GL back end

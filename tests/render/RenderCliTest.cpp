@@ -227,6 +227,78 @@ TEST(RenderCli, MirrorRepeatWrapsWithoutASeam) {
         "--repeat", out);
 }
 
+// ---- Half-drop and brick repeats: marbler paper --repeat, render --yardage ----
+
+TEST(RenderCli, YardageOfAHalfDropOrBrickPaperRepeatsOnItsLatticeWithoutASeam) {
+    const auto dir = test::outputDir("cli-yardage");
+    // A 6 x 4 cm tile at 50.8 dpi is 120 x 80 pixels; 15 x 10 cm of fabric, 300 x 200.
+    struct Case {
+        const char* repeat;
+        int ax, ay, bx, by; // the lattice's vectors in pixels
+    };
+    for (const Case& c : {Case{"half-drop", 120, 40, 0, 80}, Case{"brick", 120, 0, 60, 80}}) {
+        SCOPED_TRACE(c.repeat);
+        const std::string name = std::string("tile-") + c.repeat;
+        auto r = runMarbler({"paper", "--repeat", c.repeat, "--size", "6x4cm", "--dpi", "50.8", "--seed", "5",
+                             "--colors", "4", "-o", (dir / (name + ".png")).string()});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const std::string genome = (dir / (name + ".marble.json")).string();
+        EXPECT_NE(test::readFile(genome).find(std::string("\"wrap\": \"") + c.repeat + "\""),
+                  std::string::npos);
+        r = runMarbler({"render", genome, "--size", "6x4cm", "--dpi", "50.8", "--yardage", "15x10cm", "-o",
+                        (dir / (name + "-yardage.png")).string()});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const Image tile = test::readImage8(dir / (name + ".png"));
+        const Image yard = test::readImage8(dir / (name + "-yardage.png"));
+        ASSERT_EQ(tile.width, 120);
+        ASSERT_EQ(tile.height, 80);
+        ASSERT_EQ(yard.width, 300);
+        ASSERT_EQ(yard.height, 200);
+        // Pixels of `a` at (x, y) against `b` at (x + dx, y + dy): how many differ by more than
+        // the rounding of a soft edge, of how many compared.
+        auto differing = [](const Image& a, const Image& b, int dx, int dy) {
+            int count = 0, compared = 0;
+            for (int y = 0; y < a.height; ++y)
+                for (int x = 0; x < a.width; ++x) {
+                    if (x + dx < 0 || y + dy < 0 || x + dx >= b.width || y + dy >= b.height) continue;
+                    ++compared;
+                    const std::uint8_t* p = a.row(y) + std::size_t(x) * 3;
+                    const std::uint8_t* q = b.row(y + dy) + std::size_t(x + dx) * 3;
+                    for (int k = 0; k < 3; ++k)
+                        if (std::abs(int(p[k]) - int(q[k])) > 2) {
+                            ++count;
+                            break;
+                        }
+                }
+            return std::pair{count, compared};
+        };
+        // The fabric starts with the tile, and repeats by each lattice vector.
+        auto [first, firstOf] = differing(tile, yard, 0, 0);
+        EXPECT_LE(first, firstOf / 1000) << "the tile at the fabric's top left";
+        for (auto [dx, dy] :
+             {std::pair{c.ax, c.ay}, std::pair{c.bx, c.by}, std::pair{c.ax - c.bx, c.ay - c.by}}) {
+            auto [moved, of] = differing(yard, yard, dx, dy);
+            EXPECT_GT(of, 10000);
+            EXPECT_LE(moved, of / 1000) << "moved by " << dx << ", " << dy;
+        }
+        // Not a straight repeat: moved by the tile's width (half-drop) or height (brick) it differs.
+        auto [straight, of] = differing(yard, yard, c.ay == 0 ? 0 : 120, c.ay == 0 ? 80 : 0);
+        EXPECT_GT(straight, of / 10);
+    }
+    // A design whose bath does not wrap has no yardage; --yardage needs the tile's print size.
+    auto r = runMarbler({"render", test::examplePath("flame-comb-vortex.marble.json"), "--size", "6x4cm",
+                         "--dpi", "50", "--yardage", "15x10cm", "-o", (dir / "no.png").string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--yardage needs a design whose bath wraps"), std::string::npos) << r.err;
+    r = runMarbler({"render", (dir / "tile-brick.marble.json").string(), "--dpi", "50", "--yardage",
+                    "15x10cm", "-o", (dir / "no.png").string()});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--yardage needs --size"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "no.png"));
+}
+
+// ---- end half-drop and brick repeats ----
+
 TEST(RenderCli, HelpDescribesEveryOption) {
     auto r = runMarbler({"render", "--help"});
     EXPECT_EQ(r.exitCode, 0);

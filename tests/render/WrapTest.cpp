@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <string>
+#include <utility>
 
 namespace marbler {
 namespace {
@@ -185,6 +187,125 @@ TEST(WrappingBath, TheKernelMatchesTheReferenceInEveryVariant) {
         setCpuKernelForTesting("");
     }
 }
+
+// ---- Half-drop and brick repeats (docs/genome-format.md, "Wrapping bath", lattices) ----
+
+/// wrappedDesign on a lattice: its stretches' teeth span the period the lattice gives across
+/// each pass (half the height for an x-shift in half-drop, half the width for a y-shift in brick).
+Genome latticeDesign(Lattice lattice, double bleed) {
+    const bool halfDrop = lattice == Lattice::HalfDrop, brick = lattice == Lattice::Brick;
+    const std::string x = halfDrop ? "[0, 10, 25, 45]" : "[0, 20, 45, 70, 90]"; // across an x-shift
+    const std::string y = brick ? "[0, 30, 45, 60]" : "[0, 30, 55, 90, 120]";   // across a y-shift
+    const std::string x2 = halfDrop ? "[-45, -20, 0]" : "[-90, -50, 0]";
+    Genome g = parseGenome(R"({
+      "format": "marbler-genome", "version": 3, "dimension": 2, "size": [120, 90],
+      "background": "#203040", "palette": ["#203040", "#e0b040", "#b03020", "#f0f0e0"],
+      "wrap": ")" + std::string(latticeName(lattice)) +
+                               R"(",
+      "initial": [
+        {"tool": "spray", "center": [5, 5], "radius": 20, "color": 1},
+        {"tool": "spray", "center": [118, 45], "radius": 15, "color": 2},
+        {"tool": "spray", "center": [60, 88], "radius": 18, "color": 3},
+        {"tool": "spray", "center": [60, 45], "radius": 12, "color": 1},
+        {"tool": "spray", "center": [-3, 70], "radius": 9, "color": 3},
+        {"tool": "spray", "center": [100, 10], "radius": 7, "color": 2}
+      ],
+      "operations": [
+        {"tool": "stretch", "origin": [0, 0], "angle": 0, "teeth": )" +
+                               x + R"(, "shift": 35, "power": 1},
+        {"tool": "stretch", "origin": [120, 0], "angle": 90, "teeth": )" +
+                               y + R"(, "shift": -25, "power": 2},
+        {"tool": "stretch", "origin": [0, 0], "angle": 180, "teeth": )" +
+                               x2 + R"(, "shift": 10, "power": 0.5}
+      ]
+    })",
+                           "lattice");
+    g.bleed = bleed;
+    return g;
+}
+
+/// The largest channel difference between two renders of one size.
+int largestDifference(const Image& a, const Image& b) {
+    int worst = 0;
+    for (std::size_t k = 0; k < a.rgb.size() && k < b.rgb.size(); ++k)
+        worst = std::max(worst, std::abs(int(a.rgb[k]) - int(b.rgb[k])));
+    return worst;
+}
+
+struct LatticeCase {
+    Lattice lattice;
+    int ax, ay, bx, by; ///< its vectors, in pixels (a design unit a pixel)
+};
+
+const LatticeCase Lattices[] = {{Lattice::Straight, 120, 0, 0, 90},
+                                {Lattice::HalfDrop, 120, 45, 0, 90},
+                                {Lattice::Brick, 120, 0, 60, 90}};
+
+TEST(WrapLattice, ARegionLargerThanATileEqualsItselfShiftedByEachLatticeVector) {
+    for (const LatticeCase& lc : Lattices)
+        for (double bleed : {0.0, 1.5}) {
+            SCOPED_TRACE(std::string(latticeName(lc.lattice)) + ", bleed " + std::to_string(bleed));
+            const Genome g = latticeDesign(lc.lattice, bleed);
+            // A region of about 2.5 x 2.8 tiles, off the design's origin: every seam of the
+            // tile lies inside it, and the same region moved by a lattice vector is the same.
+            const Image region = CpuRenderer(g).render(over(-50, -40, 300, 250));
+            for (auto [dx, dy] : {std::pair{lc.ax, lc.ay}, std::pair{lc.bx, lc.by}, std::pair{-lc.ax, -lc.ay},
+                                  std::pair{lc.ax + lc.bx, lc.ay + lc.by}}) {
+                const Image moved = CpuRenderer(g).render(over(-50 + dx, -40 + dy, 300, 250));
+                EXPECT_LE(largestDifference(region, moved), 1) << "moved by " << dx << ", " << dy;
+            }
+            // Not a straight repeat where the lattice is another: moved by (w, 0) or (0, h) the
+            // region differs.
+            if (lc.lattice != Lattice::Straight) {
+                const int dx = lc.lattice == Lattice::HalfDrop ? 120 : 0;
+                const int dy = lc.lattice == Lattice::HalfDrop ? 0 : 90;
+                EXPECT_GT(
+                    largestDifference(region, CpuRenderer(g).render(over(-50 + dx, -40 + dy, 300, 250))), 50);
+            }
+            // The renderer and the scalar reference agree everywhere in the region.
+            EXPECT_LE(largestDifference(region, referenceRender(g, over(-50, -40, 300, 250))), 1);
+        }
+}
+
+TEST(WrapLattice, TheTileIsTheSameWhereverTheWrapChoosesTheStraightLattice) {
+    // "wrap": "straight" is "wrap": true, and a straight design renders as before (the same
+    // bytes as its wrap: true twin; the file says true).
+    Genome g = latticeDesign(Lattice::Straight, 0.0);
+    EXPECT_TRUE(g.wrap);
+    EXPECT_EQ(g.lattice, Lattice::Straight);
+    EXPECT_EQ(toJson(g)["wrap"], true);
+    const Image a = CpuRenderer(g).render(over(-20, -10, 160, 120));
+    const Image b = CpuRenderer(wrappedDesign(0.0)).render(over(-20, -10, 160, 120));
+    EXPECT_EQ(a.rgb, b.rgb);
+}
+
+TEST(WrapLattice, ManySpraysOnEachLatticeRenderAsTheReferenceInEveryVariant) {
+    // A half-drop or brick paper's hundreds of circles go through the spray grid: the same
+    // pixels as the reference, hard and soft, over the tile and beyond it.
+    for (Lattice lattice : {Lattice::HalfDrop, Lattice::Brick}) {
+        PaperOptions options;
+        options.width = 90.0;
+        options.height = 70.0;
+        options.colors = 6;
+        options.lattice = lattice;
+        for (double bleed : {0.0, 0.8}) {
+            Genome g = paperGenome(6, options);
+            ASSERT_GT(g.initial.size(), 40u);
+            ASSERT_EQ(g.lattice, lattice);
+            g.bleed = bleed;
+            const RenderSettings settings = over(-30, -20, 150, 110);
+            const Image want = referenceRender(g, settings);
+            for (const std::string& variant : cpuKernelsSupported()) {
+                setCpuKernelForTesting(variant);
+                EXPECT_LE(largestDifference(CpuRenderer(g).render(settings), want), 1)
+                    << latticeName(lattice) << ", " << variant << ", bleed " << bleed;
+            }
+            setCpuKernelForTesting("");
+        }
+    }
+}
+
+// ---- end half-drop and brick repeats ----
 
 } // namespace
 } // namespace marbler

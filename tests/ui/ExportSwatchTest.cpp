@@ -210,6 +210,18 @@ TEST_F(ExportSwatchTest, StraightRepeatIsOfferedWhereTheBathWrapsAndRepeatsTheDe
     ExportSettingsDialog plainSettings(test::loadExample("five-stones.marble.json"));
     EXPECT_EQ(plainSettings.findChild<QCheckBox*>(QStringLiteral("exportStraightRepeat")), nullptr);
     EXPECT_FALSE(plainSettings.straightRepeatTile());
+    // A half-drop or brick bath (issue 29): copying the tile 2 x 2 would make seams, so only
+    // the mirror repeat is offered, and the plain export is the tile.
+    for (Lattice lattice : {Lattice::HalfDrop, Lattice::Brick}) {
+        PaperOptions options;
+        options.width = 60.0;
+        options.height = 40.0;
+        options.lattice = lattice;
+        ExportSettingsDialog latticeSettings(paperGenome(3, options));
+        EXPECT_EQ(latticeSettings.findChild<QCheckBox*>(QStringLiteral("exportStraightRepeat")), nullptr);
+        EXPECT_NE(latticeSettings.findChild<QCheckBox*>(QStringLiteral("exportRepeat")), nullptr);
+        EXPECT_FALSE(latticeSettings.straightRepeatTile());
+    }
 
     // marbler paper's default recipe wraps: both are offered, one at a time.
     PaperOptions options;

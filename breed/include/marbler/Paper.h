@@ -50,6 +50,9 @@ struct PaperOptions {
     int colors = 5;      ///< 1 to MaxPaperColors inks, one layer of drops each
     int passes = 3;      ///< 0 to MaxPaperPasses stretch passes
     bool pastel = false; ///< pale, soft inks on a white bath instead of random ones
+    /// The post's wrap lattice (docs/genome-format.md, "Half-drop and brick repeats"): its passes'
+    /// teeth span the period the lattice needs. Only the post's recipe wraps.
+    Lattice lattice = Lattice::Straight;
 };
 
 /// The smallest distance between two drop centres of one colour, in millimetres, for a sheet of

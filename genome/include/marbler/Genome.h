@@ -86,6 +86,11 @@ struct SourceImage {
     friend bool operator==(const SourceImage&, const SourceImage&) = default;
 };
 
+/// The lattice a wrapping bath repeats on (docs/genome-format.md, "Wrapping bath"), for a design
+/// of size w x h: straight (w, 0), (0, h); half-drop (w, h / 2), (0, h), each column dropped half
+/// a tile below the one to its left; brick (w, 0), (w / 2, h), each row moved half a tile right.
+enum class Lattice { Straight, HalfDrop, Brick };
+
 /// A whole design.
 struct Genome {
     int dimension = 2;
@@ -99,6 +104,9 @@ struct Genome {
     /// Version 3 (Marbler's addition, docs/genome-format.md "Wrapping bath"): the bath is a
     /// torus of the design's size, so the design repeats without a seam.
     bool wrap = false;
+    /// The lattice of the wrap (`"wrap": "half-drop"` or `"brick"`); Straight where `wrap` is
+    /// false.
+    Lattice lattice = Lattice::Straight;
     Meta meta; ///< name, lineage and notes (Meta.h); not part of the design
 
     /// The folder relative paths of `source` are resolved against (the genome file's folder);
@@ -115,7 +123,8 @@ struct Genome {
     friend bool operator==(const Genome& a, const Genome& b) {
         return a.dimension == b.dimension && a.size == b.size && a.background == b.background &&
                a.palette == b.palette && a.initial == b.initial && a.operations == b.operations &&
-               a.source == b.source && a.bleed == b.bleed && a.wrap == b.wrap && a.meta == b.meta;
+               a.source == b.source && a.bleed == b.bleed && a.wrap == b.wrap && a.lattice == b.lattice &&
+               a.meta == b.meta;
     }
 };
 

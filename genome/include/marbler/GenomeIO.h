@@ -45,6 +45,11 @@ std::string wrapProblem(const Genome& genome);
 /// axis); the editor offers only these tools for such a design.
 bool toolMayWrap(Tool tool);
 
+/// A wrap lattice's name in files and on the command line: "straight", "half-drop", "brick".
+std::string_view latticeName(Lattice lattice);
+/// The lattice of a name latticeName gives; nullopt for any other text.
+std::optional<Lattice> latticeFromName(std::string_view name);
+
 /// Saves a genome atomically. Throws RuntimeFailure.
 void saveGenome(const Genome& genome, const std::filesystem::path& file);
 

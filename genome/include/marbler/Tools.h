@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace marbler {
@@ -75,6 +76,11 @@ struct PreparedOp {
     /// the periods every step is taken modulo; (0, 0) where the bath does not wrap. A spray's
     /// centre `c` is then stored wrapped into [0, w) x [0, h).
     glm::dvec2 wrap{0.0};
+    /// The wrap's lattice (Genome.h Lattice) as the shift one period brings across it: (0, h / 2)
+    /// for half-drop (a step of w in x drops h / 2 in y), (w / 2, 0) for brick (a step of h in y
+    /// moves w / 2 in x), (0, 0) for straight. A stretch's period across its pass is then
+    /// wrap - wrapShift along that axis.
+    glm::dvec2 wrapShift{0.0};
 };
 
 /// x taken into [0, period): x - period floor(x / period) (the kernel and the shaders round alike).
@@ -86,6 +92,51 @@ inline double wrapInto(double x, double period) {
 /// more than half the period.
 inline double nearestImage(double d, double period) {
     return d > 0.5 * period ? d - period : (d < -0.5 * period ? d + period : d);
+}
+
+/// A point taken into the tile [0, w) x [0, h) of the lattice (PreparedOp::wrap, wrapShift):
+/// half-drop first takes whole columns off (k = floor(x / w): x -= k w, y -= k h / 2), brick
+/// whole rows, then both coordinates go through wrapInto (all a straight lattice does).
+inline glm::dvec2 wrapPoint(double x, double y, const glm::dvec2& size, const glm::dvec2& shift) {
+    if (shift.y > 0.0) {
+        const double k = std::floor(x / size.x);
+        x = x - k * size.x;
+        y = y - k * shift.y;
+    } else if (shift.x > 0.0) {
+        const double k = std::floor(y / size.y);
+        y = y - k * size.y;
+        x = x - k * shift.x;
+    }
+    return {wrapInto(x, size.x), wrapInto(y, size.y)};
+}
+
+/// The nearest image over the lattice of a difference d of two points of the tile: for a
+/// straight lattice each axis alone (nearestImage); for half-drop the nearest in each of the
+/// three columns of images nearest in x (i0 - 1, i0, i0 + 1), for brick in each of three rows,
+/// the first of the closest kept. Three are enough while the tile is at most 4 times as long
+/// across them as along (the validator's rule): a fourth column lies 3w/2 away, the best of
+/// these within sqrt(w^2 + h^2 / 16).
+inline glm::dvec2 nearestImage(glm::dvec2 d, const glm::dvec2& size, const glm::dvec2& shift) {
+    if (!(shift.x > 0.0) && !(shift.y > 0.0)) return {nearestImage(d.x, size.x), nearestImage(d.y, size.y)};
+    // Brick is half-drop with the axes swapped.
+    const bool brick = shift.x > 0.0;
+    const double a = brick ? d.y : d.x, b = brick ? d.x : d.y;
+    const double along = brick ? size.y : size.x, across = brick ? size.x : size.y;
+    const double drop = brick ? shift.x : shift.y;
+    const double i0 = std::floor(a / along + 0.5);
+    double bestA = 0.0, bestB = 0.0, best = std::numeric_limits<double>::infinity();
+    for (double i = i0 - 1.0; i <= i0 + 1.0; i += 1.0) {
+        const double ea = a - i * along;
+        double eb = b - i * drop;
+        eb = eb - across * std::floor(eb / across + 0.5);
+        const double len2 = ea * ea + eb * eb;
+        if (len2 < best) {
+            best = len2;
+            bestA = ea;
+            bestB = eb;
+        }
+    }
+    return brick ? glm::dvec2(bestB, bestA) : glm::dvec2(bestA, bestB);
 }
 
 /// Prepares one entry of a genome of the given dimension.

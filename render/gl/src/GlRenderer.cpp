@@ -235,6 +235,10 @@ struct GlRenderer::Impl {
         gl->glUniform4f(program.uniform("uWrap"), wraps ? float(genome.size.x) : 0.0f,
                         wraps ? float(genome.size.y) : 0.0f, wraps ? float(1.0 / genome.size.x) : 0.0f,
                         wraps ? float(1.0 / genome.size.y) : 0.0f);
+        // Its lattice: the shift one period brings across it (Tools.h PreparedOp::wrapShift).
+        gl->glUniform2f(program.uniform("uWrapShift"),
+                        wraps && genome.lattice == Lattice::Brick ? float(0.5 * genome.size.x) : 0.0f,
+                        wraps && genome.lattice == Lattice::HalfDrop ? float(0.5 * genome.size.y) : 0.0f);
         std::vector<float> inks(17 * 3, 0.0f);
         for (std::size_t k = 0; k < genome.palette.size() && k < 16; ++k) {
             glm::vec3 c = linearColor(genome.palette[k]);
