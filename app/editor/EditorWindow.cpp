@@ -10,7 +10,6 @@
 #include "editor/PaletteEditor.h"
 #include "editor/ParamForm.h"
 #include "editor/Recovery.h"
-#include "editor/SectionControls.h"
 #include "editor/StepList.h"
 #include "editor/Timeline.h"
 #include "editor/ToolOptions.h"
@@ -23,6 +22,7 @@
 #include "shared/Language.h"
 #include "shared/Lineage.h"
 #include "shared/RenderService.h"
+#include "shared/SectionControls.h"
 #include "shared/StartDialog.h"
 
 #include <QAbstractSpinBox>

@@ -11,6 +11,7 @@
 #include "shared/Lineage.h"
 #include "shared/RenderService.h"
 #include "shared/SavedFiles.h"
+#include "shared/SectionControls.h"
 
 #include <QAction>
 #include <QDir>
@@ -21,6 +22,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -86,6 +88,23 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     mSwatchButton->setEnabled(!solid);
     connect(mSwatchButton, &QToolButton::toggled, this, &DesignDialog::setRepeatSwatch);
     zoomBar->addWidget(mSwatchButton);
+    // A solid: a cross-section instead of the object, across an axis or turned to any normal.
+    if (mGenome.dimension == 3) {
+        mLastSection = Slice{2, mGenome.size.z / 2.0};
+        mSectionButton =
+            tool(QStringLiteral("showSection"), tr("Section"),
+                 tr("Show a cross-section of the solid instead of the object; move it and turn it "
+                    "to any angle below (S)"));
+        mSectionButton->setCheckable(true);
+        connect(mSectionButton, &QToolButton::toggled, this,
+                [this](bool on) { setSection(on ? std::optional<Slice>(mLastSection) : std::nullopt); });
+        zoomBar->addWidget(mSectionButton);
+        mSectionControls = new SectionControls([this] { return mGenome.size; }, mLastSection, this, false);
+        mSectionControls->setObjectName(QStringLiteral("sectionControls"));
+        mSectionControls->hide();
+        connect(mSectionControls, &SectionControls::sliceChosen, this,
+                [this](const Slice& slice) { setSection(slice); });
+    }
 
     auto* save = new QPushButton(tr("&Save genome…"), this);
     save->setToolTip(tr("Save the design as a genome file (Ctrl+S)"));
@@ -122,6 +141,7 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     addKey(QStringLiteral("copyGenomeAction"), QKeySequence::Copy, copy);
     addKey(QStringLiteral("repeatSwatchAction"), QKeySequence(Qt::Key_R), mSwatchButton);
     addKey(QStringLiteral("openInEditorAction"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D), editor);
+    if (mSectionButton) addKey(QStringLiteral("showSectionAction"), QKeySequence(Qt::Key_S), mSectionButton);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
     auto* buttons = new QHBoxLayout;
@@ -137,7 +157,13 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(zoomBar);
     layout->addWidget(mView, 1);
+    if (mSectionControls) layout->addWidget(mSectionControls);
     layout->addLayout(buttons);
+    // Enter in a field (the section's normal) confirms that field; it is no click of a button.
+    for (QPushButton* button : findChildren<QPushButton*>()) {
+        button->setAutoDefault(false);
+        button->setDefault(false);
+    }
     resize(720, 800);
     mZoomLabel->setText(zoomText());
     if (swatch) {
@@ -211,6 +237,23 @@ bool DesignDialog::repeatSwatch() const {
     return mView->repeatSwatch();
 }
 
+void DesignDialog::setSection(const std::optional<Slice>& slice) {
+    if (mGenome.dimension != 3) return;
+    if (slice) mLastSection = *slice;
+    {
+        const QSignalBlocker block(mSectionButton);
+        mSectionButton->setChecked(slice.has_value());
+    }
+    mSectionControls->setVisible(slice.has_value());
+    if (slice) mSectionControls->showSlice(*slice);
+    mView->setSection(slice);
+    mZoomLabel->setText(zoomText());
+}
+
+const std::optional<Slice>& DesignDialog::section() const {
+    return mView->section();
+}
+
 void DesignDialog::setRepeatSwatch(bool on) {
     if (mGenome.dimension == 3) on = false;
     if (mSwatchButton->isChecked() != on) {
@@ -237,6 +280,8 @@ QString DesignDialog::suggestedExportFile() const {
 
 void DesignDialog::exportImage() {
     ExportSettingsDialog settingsDialog(mGenome, this);
+    // The cross-section shown is the one exported, until the user chooses otherwise.
+    if (const auto& section = mView->section()) settingsDialog.setSolidExport(SolidExport{false, *section});
     if (settingsDialog.exec() != QDialog::Accepted) return;
     QSettings settings;
     const QString extension = settingsDialog.extension();

@@ -22,6 +22,7 @@ namespace marbler::ui {
 class DesignExport;
 class DesignView;
 class RenderService;
+class SectionControls;
 
 class DesignDialog : public QDialog {
     Q_OBJECT
@@ -93,6 +94,11 @@ public:
     /// to the canvas whatever the zoom, to judge the repeat. image() is then the tiled image.
     void setRepeatSwatch(bool on);
     bool repeatSwatch() const;
+    /// A solid shown by this cross-section (across an axis, or turned to any normal) instead of
+    /// on its object; none: on its object (the Section button, S). Export image starts with the
+    /// section shown. Flat designs ignore it.
+    void setSection(const std::optional<Slice>& slice);
+    const std::optional<Slice>& section() const;
 
 signals:
     /// The user turned the solid object; the angle is already in genome()'s meta.view.
@@ -121,6 +127,9 @@ private:
     DesignExport* mExport = nullptr; ///< the export pipeline
     QLabel* mZoomLabel = nullptr;
     QToolButton* mSwatchButton = nullptr;
+    QToolButton* mSectionButton = nullptr;       ///< a solid: show a cross-section (S)
+    SectionControls* mSectionControls = nullptr; ///< where the section lies and how it is turned
+    Slice mLastSection{2, 0.0};                  ///< the section shown last (shown again on S)
 };
 
 /// Asks for a file name (offering the design's name made safe, in the folder used last) and saves

@@ -109,6 +109,7 @@ void DesignView::zoomOut() {
 }
 
 void DesignView::zoomAt(double factor, QPointF anchor) {
+    if (mSection) return; // the cross-section is shown whole
     if (mOnObject)
         // A solid zooms about its framed centre: its camera always looks there.
         mObjectZoom = std::clamp(mObjectZoom * factor, 0.25, 16.0);
@@ -156,8 +157,8 @@ QRectF DesignView::imageTarget() const {
     // A solid's image fills the canvas (a cross-section keeps its proportions), magnified by
     // the zoom asked for since.
     const QRectF area(rect());
-    const QSizeF size =
-        QSizeF(mImage.size()).scaled(area.size(), Qt::KeepAspectRatio) * (mObjectZoom / mImageZoom);
+    const double zoom = mSection ? 1.0 : mObjectZoom / mImageZoom;
+    const QSizeF size = QSizeF(mImage.size()).scaled(area.size(), Qt::KeepAspectRatio) * zoom;
     QRectF target(QPointF(0, 0), size);
     target.moveCenter(area.center());
     return target;
@@ -174,7 +175,12 @@ void DesignView::requestRender(bool previewOnly) {
     request.previewOnly = previewOnly;
     const QSize viewport = (size() * devicePixelRatioF()).expandedTo(QSize(32, 32));
     mRequestSwatch = mSwatch && !mOnObject;
-    if (mOnObject) {
+    if (mSection && mGenome.dimension == 3) {
+        // The whole cross-section, fitted into the canvas with its own proportions.
+        request.slice = mSection;
+        request.size = viewport;
+        request.zoom = 1.0;
+    } else if (mOnObject) {
         request.size = viewport;
     } else if (mRequestSwatch) {
         // The whole design, whatever the zoom (the swatch judges the repeat, not a detail),
@@ -195,7 +201,7 @@ void DesignView::requestRender(bool previewOnly) {
         request.size = window->pixels.size();
     }
     mRequestRegion = request.region;
-    mRequestZoom = mObjectZoom;
+    mRequestZoom = mSection ? 1.0 : mObjectZoom;
     mImageFinal = false; // what is shown now stands in for the view until its render comes
     mRenderer->request(mKey, std::move(request));
 }
@@ -210,6 +216,8 @@ void DesignView::mouseMoveEvent(QMouseEvent* event) {
     if (!mDragging) return;
     const QPointF d = event->position() - mLastPos;
     mLastPos = event->position();
+    // A cross-section does not turn: the section controls move it.
+    if (mSection) return;
     // While dragging only the quick pass is worth rendering; the release asks for the final one.
     if (!mOnObject)
         mViewController.panBy(d * devicePixelRatioF());
@@ -223,7 +231,7 @@ void DesignView::mouseReleaseEvent(QMouseEvent*) {
     mDragging = false;
     unsetCursor();
     requestRender();
-    if (!mOnObject) return;
+    if (!mOnObject || mSection) return;
     // The angle belongs to the design: saved with it, and given back to its cell.
     setViewAngle(mGenome, mAngle);
     emit viewAngleChanged(mAngle);
@@ -233,6 +241,14 @@ void DesignView::setRepeatSwatch(bool on) {
     if (mOnObject) on = false;
     if (on == mSwatch) return;
     mSwatch = on;
+    viewChanged();
+}
+
+void DesignView::setSection(const std::optional<Slice>& slice) {
+    if (mGenome.dimension != 3) return;
+    mSection = slice;
+    setToolTip(mSection ? tr("The cross-section: the section controls below move and turn it")
+                        : tr("Drag to turn the object; wheel, + and - zoom"));
     viewChanged();
 }
 

@@ -61,6 +61,10 @@ public:
     /// the canvas whatever the zoom. image() is then the tiled image.
     void setRepeatSwatch(bool on);
     bool repeatSwatch() const { return mSwatch; }
+    /// A solid shown by this cross-section (the whole plane fitted to the canvas) instead of on
+    /// its object; none: on its object again. Flat designs ignore it.
+    void setSection(const std::optional<Slice>& slice);
+    const std::optional<Slice>& section() const { return mSection; }
 
 signals:
     /// The zoom or the part shown changed (zoomText() says the new zoom).
@@ -104,6 +108,7 @@ private:
     QPointF mLastPos;
     bool mDragging = false;
     bool mSwatch = false;        ///< the repeat swatch is on
+    std::optional<Slice> mSection; ///< a solid shown by this cross-section, not on its object
     bool mRequestSwatch = false; ///< the newest request is for the swatch
     bool mImageSwatch = false;   ///< mImage is the swatch (tiled), centred on the canvas
 };

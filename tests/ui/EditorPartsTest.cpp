@@ -9,11 +9,11 @@
 #include "editor/EditorFiles.h"
 #include "editor/EditorWindow.h"
 #include "editor/HistoryDock.h"
-#include "editor/SectionControls.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/Params.h"
+#include "shared/SectionControls.h"
 
 #include <QComboBox>
 #include <QDir>

@@ -12,6 +12,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
+#include "shared/DesignDialog.h"
 #include "shared/DesignExport.h"
 #include "shared/ExportSettingsDialog.h"
 #include "shared/RenderService.h"
@@ -429,6 +430,61 @@ TEST(TurnedSectionExportTest, ExportImageWritesTheSectionAtATypedNormal) {
     EXPECT_EQ(differing(CpuRenderer(g).render(settings)), 0);
     settings.slice = Slice{2, solid->slice.value};
     EXPECT_GT(differing(CpuRenderer(g).render(settings)), 0) << "not the axis section";
+}
+
+TEST(TurnedSectionLargeViewTest, TheLargeViewShowsASectionTurnedToATypedNormal) {
+    const Genome g = shells();
+    RenderService service(RenderService::Backend::Cpu);
+    DesignDialog dialog(g, &service, QStringLiteral("sphere"));
+    dialog.resize(640, 720);
+    dialog.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&dialog));
+    dialog.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&dialog));
+    auto* controls = dialog.findChild<QWidget*>(QStringLiteral("sectionControls"));
+    ASSERT_NE(controls, nullptr);
+    EXPECT_FALSE(controls->isVisible()) << "the object first";
+    EXPECT_FALSE(dialog.section().has_value());
+
+    // S: the cross-section across z through the middle, its controls below the view.
+    QTest::keyClick(&dialog, Qt::Key_S);
+    ASSERT_TRUE(dialog.section().has_value());
+    EXPECT_TRUE(controls->isVisible());
+    EXPECT_EQ(dialog.section()->axis, 2);
+    EXPECT_DOUBLE_EQ(dialog.section()->value, 300.0);
+
+    // A typed normal turns it; the view shows the renderer's section at that normal.
+    auto* normal = controls->findChild<QLineEdit*>(QStringLiteral("sliceNormal"));
+    ASSERT_NE(normal, nullptr);
+    normal->setFocus();
+    QTest::keyClicks(normal, QStringLiteral("1, 1, 0"));
+    QTest::keyClick(normal, Qt::Key_Return);
+    ASSERT_TRUE(dialog.section().has_value());
+    ASSERT_TRUE(dialog.section()->normal.has_value());
+    const glm::dvec3 n = glm::normalize(glm::dvec3(1, 1, 0));
+    EXPECT_NEAR(glm::length(*dialog.section()->normal - n), 0.0, 1e-12);
+    MARBLER_WAIT(dialog.imageIsFinal(), 60000);
+    const QImage shown = dialog.image();
+    ASSERT_FALSE(shown.isNull());
+    RenderSettings settings;
+    settings.width = shown.width();
+    settings.height = shown.height();
+    settings.aa = "rgss";
+    settings.slice = *dialog.section();
+    const QImage expected = toQImage(CpuRenderer(g).render(settings));
+    EXPECT_EQ(shown, expected.convertToFormat(shown.format())) << "the renderer's turned section";
+    settings.slice = Slice{2, 300.0};
+    EXPECT_NE(shown, toQImage(CpuRenderer(g).render(settings)).convertToFormat(shown.format()))
+        << "not the section across z";
+
+    // S again: the object, the controls gone; and back to the section last shown.
+    QTest::keyClick(&dialog, Qt::Key_S);
+    EXPECT_FALSE(dialog.section().has_value());
+    EXPECT_FALSE(controls->isVisible());
+    QTest::keyClick(&dialog, Qt::Key_S);
+    ASSERT_TRUE(dialog.section().has_value());
+    ASSERT_TRUE(dialog.section()->normal.has_value());
+    EXPECT_NEAR(glm::length(*dialog.section()->normal - n), 0.0, 1e-12);
 }
 
 } // namespace turned_section_test

@@ -1,8 +1,9 @@
 #pragma once
-/// The tool panel's controls of a solid design (EditorWindow.h): the cross-section the canvas
-/// shows (its axis or, turned, its normal typed or set by the tilt and turn handles; where along
-/// it by a slider and a number) and the object the design is shown on. They say what the user chose; the
-/// window sets the section everywhere.
+/// The controls of a solid design's cross-section, in the editor's tool panel (EditorWindow.h)
+/// and the large view (DesignDialog.h): the section shown (its axis or, turned, its normal typed
+/// or set by the tilt and turn handles; where along it by a slider and a number) and, in the
+/// editor, the object the design is shown on. They say what the user chose; the window sets the
+/// section everywhere.
 
 #include "marbler/Sampling.h"
 
@@ -25,8 +26,10 @@ namespace marbler::ui {
 class SectionControls : public QWidget {
     Q_OBJECT
 public:
-    /// Showing `slice` of a block whose size `size` tells (asked at each change).
-    SectionControls(std::function<glm::dvec3()> size, const Slice& slice, QWidget* parent = nullptr);
+    /// Showing `slice` of a block whose size `size` tells (asked at each change); `withObject`:
+    /// the object box too (the editor's panel; the large view has its own object).
+    SectionControls(std::function<glm::dvec3()> size, const Slice& slice, QWidget* parent = nullptr,
+                    bool withObject = true);
     /// Shows `slice` in the axis box, the slider and the number, whichever moved it (no
     /// sliceChosen follows).
     void showSlice(const Slice& slice);

@@ -1,6 +1,6 @@
-// The tool panel's controls of a solid design (SectionControls.h).
+// The controls of a solid design's cross-section (SectionControls.h).
 
-#include "editor/SectionControls.h"
+#include "shared/SectionControls.h"
 
 #include "shared/StartDialog.h"
 
@@ -33,7 +33,8 @@ QString normalNumber(double value) {
 
 } // namespace
 
-SectionControls::SectionControls(std::function<glm::dvec3()> size, const Slice& slice, QWidget* parent)
+SectionControls::SectionControls(std::function<glm::dvec3()> size, const Slice& slice, QWidget* parent,
+                                 bool withObject)
     : QWidget(parent)
     , mSize(std::move(size))
     , mAxis(new QComboBox(this))
@@ -123,6 +124,10 @@ SectionControls::SectionControls(std::function<glm::dvec3()> size, const Slice& 
     mMesh->setToolTip(tr("The object the design is shown on (drag the object to turn it)"));
     meshRow->addWidget(mMesh);
     layout->addLayout(meshRow);
+    if (!withObject) {
+        meshRow->itemAt(0)->widget()->hide();
+        mMesh->hide();
+    }
     connect(mMesh, &QComboBox::activated, this, &SectionControls::chooseMesh);
 }
 
