@@ -1,6 +1,7 @@
 #include "workbench/SessionsController.h"
 
 #include "shared/ErrorReport.h"
+#include "shared/Help.h"
 #include "workbench/SessionStore.h"
 #include "workbench/SessionsDialog.h"
 #include "workbench/WorkbenchWindow.h"
@@ -59,8 +60,8 @@ void SessionsController::fillRecent() {
         if (session.id == current) continue;
         if (++shown > 9) break;
         QAction* action = mRecent->addAction(
-            QStringLiteral("&%1 %2 — %3").arg(shown).arg(session.name, describeSession(session)), this,
-            [this, id = session.id] { resume(id); });
+            QStringLiteral("&%1 %2 — %3").arg(shown).arg(labelSafe(session.name), describeSession(session)),
+            this, [this, id = session.id] { resume(id); });
         action->setData(session.id);
     }
     if (shown == 0) mRecent->addAction(tr("No other sessions"))->setEnabled(false);

@@ -25,6 +25,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QKeySequence>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
@@ -397,6 +398,46 @@ TEST_F(SessionsTest, StartDialogOffersTheOtherKeptSessions) {
     StartDialog alone(StartChoice{2, QStringLiteral("vase"), true, 4, 3});
     EXPECT_EQ(alone.otherSessionsBox(), nullptr);
     EXPECT_EQ(alone.resumeOtherButton(), nullptr);
+}
+
+/// What a button or menu entry shows of its text: "&&" as "&", other '&'s (mnemonics) gone.
+QString shownLabel(QString text) {
+    text.replace(QStringLiteral("&&"), QStringLiteral("\x01"));
+    text.remove(QLatin1Char('&'));
+    return text.replace(QStringLiteral("\x01"), QStringLiteral("&"));
+}
+
+// Issue 29: "&" in a session's name made a keyboard mnemonic of the next letter on the start
+// dialog's resume button (and in File ▸ Resume session) and vanished from the label.
+TEST_F(SessionsTest, AnAmpersandInASessionNameIsShownAndMakesNoMnemonic) {
+    StartChoice offer{2, QStringLiteral("vase"), true, 4, 3};
+    offer.resumeName = QStringLiteral("Tom & Jerry");
+    StartDialog dialog(offer);
+    ASSERT_NE(dialog.resumeButton(), nullptr);
+    EXPECT_TRUE(shownLabel(dialog.resumeButton()->text()).contains(QStringLiteral("“Tom & Jerry”")))
+        << dialog.resumeButton()->text().toStdString();
+    EXPECT_EQ(QKeySequence::mnemonic(dialog.resumeButton()->text()), QKeySequence(Qt::ALT | Qt::Key_R));
+
+    answerNew(2);
+    QString keptId;
+    {
+        WorkbenchWindow window(&service);
+        startSession(window, options);
+        keptId = window.currentSessionId();
+        ASSERT_TRUE(window.renameSession(keptId, QStringLiteral("Salt & Pepper")));
+    }
+    WorkbenchWindow window(&service);
+    StartOptions flat = options;
+    flat.dimension = 2;
+    startSession(window, flat);
+    emit window.recentSessionsMenu()->aboutToShow();
+    QAction* entry = nullptr;
+    for (QAction* a : window.recentSessionsMenu()->actions())
+        if (a->data().toString() == keptId) entry = a;
+    ASSERT_NE(entry, nullptr);
+    EXPECT_TRUE(shownLabel(entry->text()).contains(QStringLiteral("Salt & Pepper")))
+        << entry->text().toStdString();
+    EXPECT_EQ(QKeySequence::mnemonic(entry->text()), QKeySequence(Qt::ALT | Qt::Key_1));
 }
 
 // Favourites: removing one is undoable.
