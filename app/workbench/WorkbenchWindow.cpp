@@ -10,6 +10,7 @@
 #include "marbler/ImageFormats.h"
 #include "marbler/Paper.h"
 #include "shared/DesignDialog.h"
+#include "shared/DesignExport.h"
 #include "shared/ErrorReport.h"
 #include "shared/GenomeClipboard.h"
 #include "shared/Help.h"
@@ -1040,6 +1041,11 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
         if (shown && genomeId(*shown) == id) mModel->setCellView(index, angle);
     });
     connect(dialog, &DesignDialog::fileSaved, this, &WorkbenchWindow::noteSavedFile);
+    // Issue 29: a cancelled export said nothing anywhere.
+    connect(dialog, &DesignDialog::exportFinished, this,
+            [this](const QString& file, bool written, const QString& error) {
+                if (!written && error.isEmpty()) statusBar()->showMessage(exportCancelledMessage(file), 8000);
+            });
     connect(dialog, &DesignDialog::openInEditorRequested, this,
             [this](const Genome& design) { openEditor(design); });
     connect(dialog, &DesignDialog::genomeCopied, this, [this](const QString& name) {

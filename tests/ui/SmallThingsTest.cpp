@@ -1,0 +1,66 @@
+// Smaller things issue 29 saw in the window: a cancelled export said nothing and the large view's
+// title turned into the last message; Show in folder did nothing without a file manager.
+
+#include "TestUtil.h"
+
+#include "UiTestSupport.h"
+#include "WaitFor.h"
+#include "marbler/GenomeIO.h"
+#include "shared/DesignDialog.h"
+#include "shared/SavedFiles.h"
+#include "workbench/OpenPlacement.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/WorkbenchWindow.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QClipboard>
+#include <QComboBox>
+#include <QDir>
+#include <QFileInfo>
+#include <QImage>
+#include <QLabel>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+
+#include <gtest/gtest.h>
+
+using namespace marbler;
+using namespace marbler::ui;
+
+namespace small_things_test {
+
+class SmallThingsTest : public test::WindowTest {};
+
+TEST_F(SmallThingsTest, ACancelledExportSaysSoAndTheLargeViewKeepsItsTitle) {
+    test::ErrorCapture errors;
+    DesignDialog* dialog = mWindow->openDesign(2);
+    ASSERT_NE(dialog, nullptr);
+    const QString title = dialog->windowTitle();
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    QSignalSpy finished(dialog, &DesignDialog::exportFinished);
+    ASSERT_TRUE(dialog->exportTo(dir.filePath(QStringLiteral("big.png")), QSize(6000, 6000),
+                                 QStringLiteral("grid4")));
+    dialog->cancelExport();
+    MARBLER_WAIT_EQ(finished.size(), 1, 120000);
+    ASSERT_FALSE(finished.front().at(1).toBool());
+    const QString said = mWindow->statusBar()->currentMessage();
+    EXPECT_TRUE(said.contains(QStringLiteral("cancelled"))) << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("big.png"))) << said.toStdString();
+    EXPECT_TRUE(errors.messages.isEmpty());
+
+    // A written export: the window's note says where; the large view still names its design.
+    const QString small = dir.filePath(QStringLiteral("small.png"));
+    ASSERT_TRUE(dialog->exportTo(small, QSize(32, 20), QStringLiteral("none")));
+    MARBLER_WAIT_EQ(finished.size(), 2, 120000);
+    ASSERT_TRUE(finished.back().at(1).toBool());
+    EXPECT_EQ(dialog->windowTitle(), title);
+    EXPECT_EQ(mWindow->savedFileNotice()->file(), QFileInfo(small).absoluteFilePath());
+    dialog->close();
+}
+
+} // namespace small_things_test
