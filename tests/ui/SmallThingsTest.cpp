@@ -63,4 +63,27 @@ TEST_F(SmallThingsTest, ACancelledExportSaysSoAndTheLargeViewKeepsItsTitle) {
     dialog->close();
 }
 
+TEST_F(SmallThingsTest, ShowInFolderWithoutAFileManagerSaysSoAndCopiesThePath) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    const QString file = dir.filePath(QStringLiteral("sheet.png"));
+    int asked = 0;
+    setUrlOpener([&asked](const QUrl&) {
+        ++asked;
+        return false; // no file manager answers
+    });
+    SavedFileNotice* notice = mWindow->savedFileNotice();
+    notice->showFile(file);
+    QApplication::clipboard()->clear();
+    notice->showInFolderButton()->click();
+    setUrlOpener({});
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(QApplication::clipboard()->text(),
+              QDir::toNativeSeparators(QFileInfo(file).absoluteFilePath()));
+    const QString said = notice->pathLabel()->text();
+    EXPECT_TRUE(said.contains(QStringLiteral("No file manager"))) << said.toStdString();
+    EXPECT_TRUE(said.contains(QStringLiteral("clipboard"))) << said.toStdString();
+    EXPECT_TRUE(notice->isVisibleTo(mWindow.get()));
+}
+
 } // namespace small_things_test
