@@ -661,6 +661,9 @@ QString WorkbenchWindow::populationFamily() const {
 }
 
 void WorkbenchWindow::newRandomPopulation(int dimension) {
+    // Colourways vary one design's palette; a new population has no design picked for them, and
+    // the mode left on made the operators recolour instead of breed (issue 29).
+    if (colourwaysMode()) setColourwaysMode(false);
     QSettings().setValue(QStringLiteral("population/dimension"), dimension);
     mPopulation->setDimension(dimension);
     QSettings().setValue(QStringLiteral("population/family"), populationFamily());

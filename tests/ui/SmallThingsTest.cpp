@@ -86,4 +86,38 @@ TEST_F(SmallThingsTest, ShowInFolderWithoutAFileManagerSaysSoAndCopiesThePath) {
     EXPECT_TRUE(notice->isVisibleTo(mWindow.get()));
 }
 
+TEST_F(SmallThingsTest, TheKindBoxFollowsTheGridThroughBackAndForward) {
+    auto* kind = mWindow->findChild<QComboBox*>(QStringLiteral("kindCombo"));
+    ASSERT_NE(kind, nullptr);
+    ASSERT_EQ(model().populationDimension(), 2);
+    EXPECT_EQ(kind->currentData().toInt(), 2);
+    mWindow->newRandomPopulation(3);
+    ASSERT_EQ(model().populationDimension(), 3);
+    EXPECT_EQ(kind->currentData().toInt(), 3);
+    EXPECT_EQ(kind->currentText(), QStringLiteral("Solid designs"));
+    // Back to the flat grid: the box no longer says "Solid designs" over it.
+    mWindow->backAction()->trigger();
+    ASSERT_EQ(model().populationDimension(), 2);
+    EXPECT_EQ(kind->currentData().toInt(), 2) << kind->currentText().toStdString();
+    mWindow->forwardAction()->trigger();
+    ASSERT_EQ(model().populationDimension(), 3);
+    EXPECT_EQ(kind->currentData().toInt(), 3);
+    // A kind chosen over a grid stays chosen: New random makes it.
+    kind->setCurrentIndex(kind->findData(2));
+    EXPECT_EQ(kind->currentData().toInt(), 2);
+    mWindow->newRandomPopulation(kind->currentData().toInt());
+    EXPECT_EQ(model().populationDimension(), 2);
+}
+
+TEST_F(SmallThingsTest, NewRandomTurnsColourwaysOff) {
+    model().clearSelection();
+    model().setSelected(0, true);
+    mWindow->setColourwaysMode(true);
+    ASSERT_TRUE(mWindow->colourwaysMode());
+    ASSERT_TRUE(mWindow->colourwaysAction()->isChecked());
+    mWindow->newRandomPopulation(2);
+    EXPECT_FALSE(mWindow->colourwaysMode());
+    EXPECT_FALSE(mWindow->colourwaysAction()->isChecked()) << "the tool bar's button is up";
+}
+
 } // namespace small_things_test
