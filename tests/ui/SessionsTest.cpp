@@ -440,6 +440,44 @@ TEST_F(SessionsTest, AnAmpersandInASessionNameIsShownAndMakesNoMnemonic) {
     EXPECT_EQ(QKeySequence::mnemonic(entry->text()), QKeySequence(Qt::ALT | Qt::Key_1));
 }
 
+// Issue 29: File ▸ Sessions had no "New session"; starting afresh meant quitting.
+TEST_F(SessionsTest, NewSessionStartsAFreshPopulationAndKeepsTheCurrentOne) {
+    answerNew(2);
+    WorkbenchWindow window(&service);
+    startSession(window, options);
+    breed(window, 2);
+    const QString oldId = window.currentSessionId();
+    const std::vector<std::string> oldDesigns = designs(*window.model());
+    ASSERT_EQ(window.model()->history().size(), 3u);
+
+    auto* action = window.findChild<QAction*>(QStringLiteral("newSessionAction"));
+    ASSERT_NE(action, nullptr);
+    ASSERT_TRUE(action->isEnabled());
+    EXPECT_FALSE(action->text().isEmpty());
+    action->trigger();
+
+    const QString newId = window.currentSessionId();
+    EXPECT_FALSE(newId.isEmpty());
+    EXPECT_NE(newId, oldId);
+    ASSERT_EQ(window.model()->history().size(), 1u) << "a first generation of its own";
+    EXPECT_EQ(window.model()->populationDimension(), 2);
+    for (const std::string& design : designs(*window.model()))
+        EXPECT_EQ(std::count(oldDesigns.begin(), oldDesigns.end(), design), 0) << "new designs";
+    const QString said = window.statusBar()->currentMessage();
+    EXPECT_TRUE(said.contains(QStringLiteral("new session"))) << said.toStdString();
+
+    // Both are kept on disk; the old one whole, with its three generations.
+    QStringList ids;
+    for (const KeptSession& k : store().list())
+        ids << k.id;
+    EXPECT_TRUE(ids.contains(oldId)) << ids.join(',').toStdString();
+    MARBLER_WAIT(store().find(newId).has_value() && QFileInfo::exists(store().find(newId)->file), 10000);
+    EXPECT_EQ(loadSession(store().find(oldId)->file).history.size(), 3u);
+    // And the old one can be resumed from the menu.
+    EXPECT_TRUE(window.resumeKeptSession(oldId));
+    EXPECT_EQ(designs(*window.model()), oldDesigns);
+}
+
 // Favourites: removing one is undoable.
 
 TEST_F(SessionsTest, RemovedFavouriteCanBeRestoredAndItsFileComesBack) {
