@@ -23,6 +23,7 @@
 #include "workbench/HelpMenu.h"
 #include "workbench/OpenPlacement.h"
 #include "workbench/OperatorActions.h"
+#include "workbench/PaperDialog.h"
 #include "workbench/PopulationBar.h"
 #include "workbench/RendererMenu.h"
 #include "workbench/SessionsController.h"
@@ -251,8 +252,9 @@ void WorkbenchWindow::buildActions() {
     picture->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
     picture->setStatusTip(
         tr("Nine flat designs whose bath is a picture you pick: flows and strokes carry its colours"));
-    QAction* newPaperAction = fileMenu->addAction(
-        tr("New marbled &paper"), this, [this] { newPaper(QRandomGenerator::global()->generate64()); });
+    QAction* newPaperAction = fileMenu->addAction(tr("New marbled &paper…"), this, [this] {
+        if (const std::optional<PaperChoice> paper = askPaper(this)) newPaper(paper->seed, paper->options);
+    });
     newPaperAction->setObjectName(QStringLiteral("newPaperAction"));
     newPaperAction->setStatusTip(
         tr("A procedural marbled paper (as marbler paper makes) into the grid, to breed from"));
@@ -849,7 +851,17 @@ bool WorkbenchWindow::copyDesign(int cell) {
 }
 
 std::vector<int> WorkbenchWindow::newPaper(std::uint64_t seed) {
-    const Genome paper = paperGenome(seed, PaperOptions{});
+    return newPaper(seed, PaperOptions{});
+}
+
+std::vector<int> WorkbenchWindow::newPaper(std::uint64_t seed, const PaperOptions& options) {
+    Genome paper;
+    try {
+        paper = paperGenome(seed, options);
+    } catch (const Error& e) {
+        reportError(this, tr("Cannot make the paper"), QString::fromStdString(e.what()));
+        return {};
+    }
     const QString name = QString::fromStdString(paper.meta.name.value_or(""));
     return placeOpened({paper}, {name}, -1, tr("Marbled paper %1 (seed %2)").arg(name).arg(seed));
 }

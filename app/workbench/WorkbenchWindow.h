@@ -29,6 +29,9 @@
 
 class QAction;
 class QComboBox;
+namespace marbler {
+struct PaperOptions;
+}
 class QDialog;
 class QLabel;
 class QListWidget;
@@ -131,8 +134,11 @@ public:
     EditorWindow* recover(const RecoveredDesign& design);
     /// File ▸ New marbled paper: the A4 paper `marbler paper --seed SEED` makes (Paper.h) goes
     /// into the grid as an opened design does (placeOpened), a starting point to breed from.
-    /// Returns the cells filled. The menu's action (object name "newPaperAction") draws a seed.
+    /// Returns the cells filled. The menu's action (object name "newPaperAction") asks for the
+    /// sheet, inks, passes, pastel and seed first (PaperDialog.h).
     std::vector<int> newPaper(std::uint64_t seed);
+    /// As newPaper(seed), with the options of `marbler paper` (size, colours, passes, pastel).
+    std::vector<int> newPaper(std::uint64_t seed, const PaperOptions& options);
     /// Edit ▸ Copy design (Ctrl+C): puts a cell's genome on the clipboard as genome text; -1:
     /// the focused cell when it holds a design, else the first selected one. Says so on the
     /// status bar; false when there is no design to copy.
