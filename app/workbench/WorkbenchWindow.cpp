@@ -45,6 +45,7 @@
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QHeaderView>
+#include <QImageReader>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
@@ -680,6 +681,7 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
     std::vector<Genome> designs;
     QStringList errors;
     QStringList names;
+    QString picture; ///< the first plain picture: offered to Marble a picture (issue 29)
     for (const QString& file : files) {
         try {
             std::vector<std::string> warnings;
@@ -687,45 +689,69 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
             designs.push_back(loadDesign(file.toStdString(), &warnings));
             names << QFileInfo(file).fileName();
             if (!warnings.empty()) statusBar()->showMessage(QString::fromStdString(warnings.front()), 8000);
-        } catch (const Error& e) {
+        } catch (const GenomeError& e) {
+            // A design whose genome is broken is reported, never taken for a picture.
             errors << QString::fromStdString(e.what());
+        } catch (const Error& e) {
+            if (picture.isEmpty() && QImageReader(file).canRead())
+                picture = file;
+            else
+                errors << QString::fromStdString(e.what());
         }
     }
     // Several files dropped on one cell have no single target: they go where opened files go.
     placeOpened(designs, names, designs.size() == 1 ? cell : -1);
+    bool pictureTaken = true;
+    if (!picture.isEmpty()) {
+        pictureTaken = offerMarblePicture(this, picture) && !marblePicture(picture).empty();
+        if (!pictureTaken && designs.empty())
+            statusBar()->showMessage(
+                tr("Nothing opened: %1 holds no design").arg(QFileInfo(picture).fileName()), 8000);
+    }
     if (!errors.isEmpty()) {
         reportError(this, tr("Cannot open a design"),
                     tr("These files could not be loaded; the population is unchanged by them.\n\n%1")
                         .arg(errors.join(QStringLiteral("\n"))));
         return false;
     }
-    return true;
+    return pictureTaken;
 }
 
 std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened, const QStringList& names,
                                               int cell, const QString& describe) {
     if (opened.empty()) return {};
     // One kind per generation: flat and solid designs cannot breed together, and the grid's
-    // object, previews and operators all assume one kind. The first design decides.
-    const int kind = opened.front().dimension;
-    std::vector<Genome> designs;
-    QStringList accepted, refused;
+    // object, previews and operators all assume one kind. Designs of the grid's kind (of the
+    // first design's, on an empty workbench) go where opened designs go; those of the other kind
+    // then start a generation of their own (issue 29: they were refused).
+    int kind = mModel->isEmptyWorkbench() ? opened.front().dimension : mModel->populationDimension();
+    std::vector<Genome> designs, others;
+    QStringList accepted, otherNames;
     for (std::size_t k = 0; k < opened.size(); ++k) {
         const QString name = int(k) < names.size() ? names[int(k)] : tr("design %1").arg(k + 1);
-        if (opened[k].dimension == kind) {
-            designs.push_back(opened[k]);
-            accepted << name;
-        } else {
-            refused << name;
-        }
+        (opened[k].dimension == kind ? designs : others).push_back(opened[k]);
+        (opened[k].dimension == kind ? accepted : otherNames) << name;
     }
-    if (!refused.isEmpty())
-        reportError(
-            this, tr("Some designs were not opened"),
-            tr("A generation holds one kind of design, and %1 is %2, so these %3 designs were not opened; "
-               "open them on their own:\n\n%4")
-                .arg(names.value(0), kind == 3 ? tr("solid") : tr("flat"),
-                     kind == 3 ? tr("flat") : tr("solid"), refused.join(QStringLiteral("\n"))));
+    if (designs.empty()) {
+        designs = std::move(others);
+        accepted = otherNames;
+        kind = designs.front().dimension;
+    } else if (!others.empty()) {
+        std::vector<int> used = placeOpened(designs, accepted, cell, describe);
+        if (used.empty()) return used; // the question was cancelled: nothing of either kind
+        const QString kindName = kind == 3 ? tr("solid") : tr("flat");
+        const QString otherKind = kind == 3 ? tr("flat") : tr("solid");
+        const QString description = tr("Opened %1").arg(otherNames.join(QStringLiteral(", ")));
+        mModel->startGenerationOf(others, description, 0);
+        mPopulation->setDimension(others.front().dimension);
+        statusBar()->showMessage(tr("Opened %1 and %2: the %3 designs are a generation of their own, the %4 "
+                                    "ones one generation back (%5)")
+                                     .arg(accepted.join(QStringLiteral(", ")),
+                                          otherNames.join(QStringLiteral(", ")), otherKind, kindName,
+                                          mBack->shortcut().toString(QKeySequence::NativeText)),
+                                 15000);
+        return used;
+    }
     const QString description =
         describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
 

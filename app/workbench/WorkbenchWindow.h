@@ -95,7 +95,8 @@ public:
     /// Loads genome files into the grid as a new generation (see placeOpened()): into the
     /// selected cells, then free ones, asking first when designs would be replaced; one file
     /// dropped on a cell goes into that cell (`cell`). A file that does not load is reported and
-    /// changes nothing. Returns whether all loaded.
+    /// changes nothing. A picture without a design in it is offered to Marble a picture
+    /// (offerMarblePicture). Returns whether all loaded (a picture: whether it was marbled).
     bool openFiles(const QStringList& files, int cell = -1);
     /// Puts opened designs (files, favourites, dropped designs) into the grid; `names` say what
     /// they are in messages, `cell` is an explicit target (a drop on a cell) or -1. Designs of

@@ -120,4 +120,72 @@ TEST_F(SmallThingsTest, NewRandomTurnsColourwaysOff) {
     EXPECT_FALSE(mWindow->colourwaysAction()->isChecked()) << "the tool bar's button is up";
 }
 
+TEST_F(SmallThingsTest, ADroppedPhotoIsOfferedToMarbleAPicture) {
+    test::ErrorCapture errors;
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    // A plain photo: pixels and nothing of Marbler.
+    QImage photo(64, 48, QImage::Format_RGB32);
+    for (int y = 0; y < photo.height(); ++y)
+        for (int x = 0; x < photo.width(); ++x)
+            photo.setPixel(x, y, qRgb(4 * x, 5 * y, 128));
+    const QString file = dir.filePath(QStringLiteral("harbour.png"));
+    ASSERT_TRUE(photo.save(file));
+    QStringList offered;
+    setPictureOffer([&offered](QWidget*, const QString& picture) {
+        offered << picture;
+        return true;
+    });
+    const std::size_t generations = model().history().size();
+    mWindow->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
+    test::dropFiles(mWindow.get(), {file});
+    setPictureOffer({});
+    EXPECT_EQ(offered, QStringList{file});
+    EXPECT_TRUE(errors.messages.isEmpty()) << errors.messages.join(QStringLiteral("\n")).toStdString();
+    ASSERT_EQ(model().history().size(), generations + 1);
+    EXPECT_TRUE(model().current().description.contains(QStringLiteral("harbour.png")))
+        << model().current().description.toStdString();
+    int marbled = 0;
+    for (int i = 0; i < CellCount; ++i)
+        if (const Genome* g = model().cell(i);
+            g && g->source && g->source->image.find("harbour.png") != std::string::npos)
+            ++marbled;
+    EXPECT_EQ(marbled, CellCount) << "nine designs whose bath is the photo";
+}
+
+TEST_F(SmallThingsTest, FlatAndSolidDroppedTogetherBothOpen) {
+    test::ErrorCapture errors;
+    setOpenChooser(
+        [](QWidget*, const OpenQuestion&) -> std::optional<OpenChoice> { return OpenChoice::Replace; });
+    const QString flat = QString::fromStdString(test::examplePath("five-stones.marble.json"));
+    const QString solid = QString::fromStdString(test::examplePath("slate-block.marble.json"));
+    const Genome flatDesign = loadGenome(flat.toStdString());
+    const Genome solidDesign = loadGenome(solid.toStdString());
+    ASSERT_EQ(flatDesign.dimension, 2);
+    ASSERT_EQ(solidDesign.dimension, 3);
+    const std::size_t generations = model().history().size();
+    mWindow->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(mWindow.get()));
+    test::dropFiles(mWindow.get(), {solid, flat});
+    setOpenChooser({});
+    EXPECT_TRUE(errors.messages.isEmpty()) << errors.messages.join(QStringLiteral("\n")).toStdString();
+    // The solid one is a generation of its own, shown now; the flat one went into the flat grid,
+    // one generation back.
+    ASSERT_EQ(model().history().size(), generations + 2);
+    EXPECT_EQ(model().populationDimension(), 3);
+    auto holds = [this](const Genome& design) {
+        for (int i = 0; i < CellCount; ++i)
+            if (model().cell(i) && serializeGenome(*model().cell(i)) == serializeGenome(design)) return true;
+        return false;
+    };
+    EXPECT_TRUE(holds(solidDesign));
+    const QString said = mWindow->statusBar()->currentMessage();
+    EXPECT_TRUE(said.contains(QStringLiteral("slate-block")) && said.contains(QStringLiteral("five-stones")))
+        << said.toStdString();
+    mWindow->backAction()->trigger();
+    EXPECT_EQ(model().populationDimension(), 2);
+    EXPECT_TRUE(holds(flatDesign));
+}
+
 } // namespace small_things_test
