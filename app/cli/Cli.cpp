@@ -48,7 +48,7 @@ Args parseArgs(std::span<const std::string> words, const std::vector<std::string
             value = name.substr(eq + 1);
             name = name.substr(0, eq);
         }
-        if (contains(flags, name)) {
+        if (contains(flags, name) || contains(CommonFlags, name)) {
             if (value) throw InputError("option --" + name + " takes no value");
             args.options[name] = "";
         } else if (contains(valued, name)) {

@@ -32,9 +32,15 @@ struct Args {
     std::optional<std::string> get(const std::string& name) const;
 };
 
+/// The flags every verb takes besides its own (issue 29: `paper --quiet` was refused while
+/// `render --quiet` was not): -h/--help, --quiet (no progress line) and --progress (a progress
+/// line even when stderr is no terminal). A verb with no progress to show accepts the last two
+/// and does nothing with them, so one script's options fit every verb.
+inline const std::vector<std::string> CommonFlags = {"h", "help", "quiet", "progress"};
+
 /// Parses `words` (after the verb). `valued` lists options that take a value, `flags` those
-/// that do not (both without the leading dashes; `-o` is spelled "o"). Throws InputError for
-/// an unknown option or a missing value.
+/// that do not (both without the leading dashes; `-o` is spelled "o"); CommonFlags are always
+/// accepted. Throws InputError for an unknown option or a missing value.
 Args parseArgs(std::span<const std::string> words, const std::vector<std::string>& valued,
                const std::vector<std::string>& flags);
 

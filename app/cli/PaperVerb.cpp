@@ -44,6 +44,8 @@ options:
   --seed N              the seed, a non-negative 64-bit integer (required)
   -o, --output OUT      the image to write (required): .png, .tif/.tiff, .jpg/.jpeg, .exr
   --threads N           worker threads (default: every core)
+  --progress            show progress on stderr even when it is not a terminal
+  --quiet               no progress line
   -h, --help            this text
 )";
 
@@ -56,7 +58,7 @@ std::filesystem::path genomeBeside(const std::filesystem::path& image) {
 int paper(std::span<const std::string> words) {
     Args args = parseArgs(
         words, {"size", "dpi", "colors", "passes", "seed", "o", "output", "threads", "recipe", "repeat"},
-        {"pastel", "h", "help"});
+        {"pastel"});
     if (args.has("h") || args.has("help")) {
         std::cout << PaperHelp;
         return ExitOk;
@@ -103,7 +105,13 @@ int paper(std::span<const std::string> words) {
 
     ExportOptions exportOptions;
     exportOptions.dpi = dpi;
-    renderToFile(genome, settings, image, exportOptions);
+    ProgressLine progress(args);
+    RenderControl control;
+    control.progress = [&](double f) {
+        progress.show("rendering " + std::to_string(static_cast<int>(f * 100.0)) + "%");
+    };
+    renderToFile(genome, settings, image, exportOptions, &control);
+    progress.finish();
     try {
         saveGenome(genome, genomeFile);
     } catch (...) {

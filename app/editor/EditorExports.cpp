@@ -8,6 +8,7 @@
 #include "editor/SolidObjectView.h"
 #include "marbler/Mesh.h"
 #include "shared/DesignDialog.h"
+#include "shared/DesignExport.h"
 #include "shared/ErrorReport.h"
 #include "shared/SavedFiles.h"
 
@@ -33,6 +34,10 @@ void EditorExports::exportImage() {
                                     mObject ? mObject->mesh() : QString::fromLatin1(DefaultMesh), mWindow);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     connect(dialog, &DesignDialog::fileSaved, this, &EditorExports::fileSaved);
+    connect(dialog, &DesignDialog::exportFinished, this,
+            [this](const QString& file, bool written, const QString& error) {
+                if (!written && error.isEmpty()) emit message(exportCancelledMessage(file), 8000);
+            });
     // It is open in this editor already.
     if (auto* again = dialog->findChild<QWidget*>(QStringLiteral("openInEditor"))) again->hide();
     dialog->show();

@@ -12,6 +12,7 @@
 #include "marbler/RenderToFile.h"
 #include "shared/BackgroundJob.h"
 #include "shared/ErrorReport.h"
+#include "shared/Help.h"
 #include "shared/Lineage.h"
 #include "shared/SavedFiles.h"
 
@@ -283,7 +284,7 @@ void EditorFiles::fillRecentMenu(QMenu* menu) {
     menu->clear();
     const QStringList files = recentFiles();
     for (const QString& f : files) {
-        QAction* a = menu->addAction(QFileInfo(f).fileName(), this, [this, f] {
+        QAction* a = menu->addAction(labelSafe(QFileInfo(f).fileName()), this, [this, f] {
             try {
                 emit openEditorRequested(loadDesign(f.toStdString()), f);
             } catch (const Error& e) {

@@ -178,7 +178,8 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     });
     connect(mExport, &DesignExport::finished, this,
             [this](const QString& file, bool written, const QString& error) {
-                if (written) setWindowTitle(tr("Exported %1").arg(QFileInfo(file).fileName()));
+                // The title keeps naming the design (issue 29); where the file went is said by
+                // the window's status bar (fileSaved), a cancel by exportFinished's receivers.
                 emit exportFinished(file, written, error);
                 if (written) emit fileSaved(file);
             });

@@ -18,6 +18,10 @@
 
 namespace marbler::ui {
 
+QString exportCancelledMessage(const QString& file) {
+    return DesignExport::tr("Export cancelled: %1 was not written").arg(QFileInfo(file).fileName());
+}
+
 DesignExport::DesignExport(QWidget* window)
     : QObject(window)
     , mWindow(window) {}

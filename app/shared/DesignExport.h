@@ -19,6 +19,9 @@ class QWidget;
 
 namespace marbler::ui {
 
+/// What a window's status bar says when an export of `file` was cancelled.
+QString exportCancelledMessage(const QString& file);
+
 class DesignExport : public QObject {
     Q_OBJECT
 public:

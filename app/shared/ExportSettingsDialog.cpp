@@ -33,6 +33,44 @@ void growToShowWrapped(QWidget* dialog, QLabel* label) {
     dialog->layout()->activate();
 }
 
+/// An antialiasing pattern as the dialog names it (issue 29: "rgss", "rooks8" are jargon).
+struct AaChoice {
+    QString label;
+    QString tip;
+};
+
+AaChoice aaChoice(const std::string& name) {
+    const int samples = int(aaPattern(name).offsets.size());
+    if (name == "none")
+        return {QObject::tr("Off (1 sample, fastest)"),
+                QObject::tr("One sample a pixel: hard, stepped edges")};
+    if (name == "rgss")
+        return {QObject::tr("Smooth (4 samples, default)"),
+                QObject::tr("Four samples a pixel on a rotated grid: smooth edges at a small cost")};
+    if (name == "quincunx")
+        return {QObject::tr("Soft (5 samples)"),
+                QObject::tr("Five samples a pixel, the centre weighted most: slightly soft edges")};
+    if (name == "checker4")
+        return {QObject::tr("Fine checkerboard (%1 samples)").arg(samples),
+                QObject::tr("Samples on every other square of a 4 × 4 grid")};
+    if (name == "rooks8")
+        return {QObject::tr("Fine (%1 samples)").arg(samples),
+                QObject::tr("Eight samples a pixel, each in a row and a column of its own: fine edges")};
+    if (name.rfind("grid", 0) == 0) {
+        const int n = name.back() - '0';
+        return {
+            QObject::tr("Grid %1 × %1 (%2 samples)").arg(n).arg(samples),
+            QObject::tr("Samples on a regular %1 × %1 grid a pixel: finer and slower as it grows").arg(n)};
+    }
+    return {QString::fromStdString(name), QString()};
+}
+
+/// Where Export image keeps what was chosen last (issue 29: it forgot, back to 2,048 px).
+const QString WidthKey = QStringLiteral("files/exportWidthPixels");
+const QString UnitKey = QStringLiteral("files/exportUnit");
+const QString DpiKey = QStringLiteral("files/exportDpi");
+const QString AaKey = QStringLiteral("files/exportAa");
+
 } // namespace
 
 QString exportSizeProblem(QSize pixels) {
@@ -99,10 +137,16 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     mDpi->setToolTip(tr("Dots per inch: turns a print size into pixels, and is written into the file"));
     mAa = new QComboBox(this);
     mAa->setObjectName(QStringLiteral("exportAa"));
-    for (const std::string& name : aaPatternNames())
-        mAa->addItem(QString::fromStdString(name));
-    mAa->setCurrentText(QStringLiteral("rgss"));
-    mAa->setToolTip(tr("Antialiasing pattern: more samples, smoother edges, slower"));
+    // Plain words for the patterns; the command line's name (--aa) is the item's data and is
+    // said in its tooltip, so a user can repeat an export from a script.
+    for (const std::string& name : aaPatternNames()) {
+        const AaChoice choice = aaChoice(name);
+        mAa->addItem(choice.label, QString::fromStdString(name));
+        mAa->setItemData(mAa->count() - 1,
+                         tr("%1 (marbler render --aa %2)").arg(choice.tip, QString::fromStdString(name)),
+                         Qt::ToolTipRole);
+    }
+    mAa->setToolTip(tr("Antialiasing: more samples a pixel give smoother edges and a slower render"));
     mPixels = new QLabel(this);
     mPixels->setObjectName(QStringLiteral("exportPixels"));
     mPixels->setWordWrap(true);
@@ -250,6 +294,18 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
         if (perInch() > 0.0) mPixelWidth = mWidth->value() / perInch() * mDpi->value();
         updateSummary();
     });
+    {
+        // The size, unit, resolution and antialiasing of the last export, kept in pixels so the
+        // unit shows them as they were chosen.
+        const QSettings settings;
+        mDpi->setValue(settings.value(DpiKey, 300).toInt());
+        const int aa = mAa->findData(settings.value(AaKey, QStringLiteral("rgss")).toString());
+        mAa->setCurrentIndex(aa >= 0 ? aa : mAa->findData(QStringLiteral("rgss")));
+        mPixelWidth = std::clamp(settings.value(WidthKey, 2048.0).toDouble(), 1.0, 1e7);
+        const int unit = mUnit->findText(settings.value(UnitKey, tr("pixels")).toString());
+        mUnit->setCurrentIndex(std::max(unit, 0));
+        showWidth();
+    }
     updateSummary();
 }
 
@@ -299,10 +355,28 @@ void ExportSettingsDialog::updateSummary() {
                     .arg(s.width() / double(mDpi->value()), 0, 'f', 2)
                     .arg(s.height() / double(mDpi->value()), 0, 'f', 2)
                     .arg(mDpi->value());
-    mPixels->setText(problem.isEmpty() ? text : problem);
+    mPixels->setText(problem.isEmpty() ? text : problem + QLatin1Char(' ') + widestThatFits(tile ? 2 : 1));
     mPixels->setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("color: #c03030"));
     mButtons->button(QDialogButtonBox::Ok)->setEnabled(problem.isEmpty());
     growToShowWrapped(this, mPixels);
+}
+
+QString ExportSettingsDialog::widestThatFits(int tiles) const {
+    // The largest width whose image (times the tile's 2 x 2) keeps within every limit.
+    const double a = aspect();
+    double w = std::min(double(MaxImageSide) / tiles, double(MaxImageSide) / (tiles * std::max(a, 1e-9)));
+    w = std::min(w, std::sqrt(double(MaxImagePixels) / (tiles * tiles * std::max(a, 1e-9))));
+    w = std::floor(w);
+    while (w > 1 && !exportSizeProblem(QSize(int(w) * tiles, int(std::round(w * a)) * tiles)).isEmpty())
+        w -= 1;
+    if (perInch() <= 0.0)
+        return tr("The widest that fits is %L1 pixels: type at most that in Width.").arg(w, 0, 'f', 0);
+    const double inUnit = std::floor(w / mDpi->value() * perInch() * 1000.0) / 1000.0;
+    return tr("The widest that fits is %L1 %2 at %3 dpi: type at most that in Width, or lower the "
+              "resolution.")
+        .arg(inUnit, 0, 'f', 3)
+        .arg(unit())
+        .arg(mDpi->value());
 }
 
 void ExportSettingsDialog::setUnit(const QString& unit) {
@@ -409,7 +483,7 @@ std::optional<double> ExportSettingsDialog::dpi() const {
     return double(mDpi->value());
 }
 std::string ExportSettingsDialog::aa() const {
-    return mAa->currentText().toStdString();
+    return mAa->currentData().toString().toStdString();
 }
 
 void ExportSettingsDialog::accept() {
@@ -420,6 +494,11 @@ void ExportSettingsDialog::accept() {
         reportError(this, tr("The image is too large"), problem);
         return;
     }
+    QSettings settings;
+    settings.setValue(WidthKey, mPixelWidth);
+    settings.setValue(UnitKey, unit());
+    settings.setValue(DpiKey, mDpi->value());
+    settings.setValue(AaKey, QString::fromStdString(aa()));
     QDialog::accept();
 }
 

@@ -82,6 +82,9 @@ private:
     void showWidth();
     void updateSummary();
     bool isSvg() const;
+    /// What to type when the size is too large: the widest image that fits the renderer's
+    /// limits, in the unit shown (`tiles`: 2 for a repeat tile's 2 x 2).
+    QString widestThatFits(int tiles) const;
 
     Genome mGenome;
     double mPixelWidth = 2048.0; ///< the chosen width in pixels, exact whatever unit shows it

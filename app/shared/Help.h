@@ -18,6 +18,9 @@ QList<QAction*> shortcutActions(const QWidget* window);
 QString shortcutKeys(const QAction* action);
 /// An action's words as the guide shows them: "&Open designs…" -> "Open designs".
 QString plainActionText(const QAction* action);
+/// A user's words (a session's or a file's name) made fit for a button's or an action's label:
+/// each '&' doubled, so "Tom & Jerry" shows as written and makes no keyboard mnemonic.
+QString labelSafe(const QString& userText);
 /// The guide's table of shortcuts: keys (as the platform writes them), what they do, and the
 /// menu that holds the action.
 QString shortcutTableHtml(const QList<QAction*>& actions);

@@ -2,10 +2,12 @@
 
 #include "shared/Lineage.h"
 
+#include <QClipboard>
 #include <QDesktopServices>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QRegularExpression>
@@ -87,7 +89,13 @@ SavedFileNotice::SavedFileNotice(QWidget* parent)
     layout->addWidget(mPath);
     layout->addWidget(mShowInFolder);
     connect(mShowInFolder, &QToolButton::clicked, this, [this] {
-        if (!mFile.isEmpty()) openUrl(QUrl::fromLocalFile(folder()));
+        if (mFile.isEmpty() || openUrl(QUrl::fromLocalFile(folder()))) return;
+        // No file manager answered (issue 29: the button did nothing): the path goes to the
+        // clipboard, to paste into whatever the user opens files with, and the note says so.
+        QGuiApplication::clipboard()->setText(QDir::toNativeSeparators(mFile));
+        mPath->setText(tr("No file manager opened %1; the file's path is copied to the clipboard: %2")
+                           .arg(QDir::toNativeSeparators(folder()), QDir::toNativeSeparators(mFile)));
+        mHide.start();
     });
     mHide.setSingleShot(true);
     mHide.setInterval(NoticeMilliseconds);

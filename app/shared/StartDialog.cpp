@@ -1,6 +1,7 @@
 #include "shared/StartDialog.h"
 
 #include "marbler/Mesh.h"
+#include "shared/Help.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -74,7 +75,7 @@ StartDialog::StartDialog(const StartChoice& defaults, QWidget* parent)
 
     if (defaults.resumeGeneration > 0) {
         const QString named =
-            defaults.resumeName.isEmpty() ? QString() : tr(" “%1”").arg(defaults.resumeName);
+            defaults.resumeName.isEmpty() ? QString() : tr(" “%1”").arg(labelSafe(defaults.resumeName));
         mResume = new QPushButton(tr("&Resume the last session%1 (generation %2, %3)")
                                       .arg(named)
                                       .arg(defaults.resumeGeneration)

@@ -1,8 +1,10 @@
 #include "workbench/OpenPlacement.h"
 
 #include <QCheckBox>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
 #include <QVBoxLayout>
@@ -122,6 +124,32 @@ std::optional<OpenChoice> chooseOpenPlacement(QWidget* parent, const OpenQuestio
     dialog.exec();
     if (dialog.choice() && dialog.dontAskAgain()) rememberOpenChoice(*dialog.choice(), false);
     return dialog.choice();
+}
+
+namespace {
+
+PictureOffer& pictureOfferHook() {
+    static PictureOffer hook;
+    return hook;
+}
+
+} // namespace
+
+void setPictureOffer(PictureOffer offer) {
+    pictureOfferHook() = std::move(offer);
+}
+
+bool offerMarblePicture(QWidget* parent, const QString& file) {
+    if (pictureOfferHook()) return pictureOfferHook()(parent, file);
+    QMessageBox box(QMessageBox::Question, QObject::tr("Marble a picture?"),
+                    QObject::tr("%1 is a picture without a Marbler design in it.\n\nMarble it: nine designs "
+                                "whose bath is the picture, as File ▸ Marble a picture makes?")
+                        .arg(QFileInfo(file).fileName()),
+                    QMessageBox::Cancel, parent);
+    QPushButton* marble = box.addButton(QObject::tr("&Marble the picture"), QMessageBox::AcceptRole);
+    box.setDefaultButton(marble);
+    box.exec();
+    return box.clickedButton() == marble;
 }
 
 } // namespace marbler::ui

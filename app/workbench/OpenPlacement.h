@@ -62,4 +62,10 @@ using OpenChooser = std::function<std::optional<OpenChoice>(QWidget* parent, con
 void setOpenChooser(OpenChooser chooser);
 std::optional<OpenChoice> chooseOpenPlacement(QWidget* parent, const OpenQuestion& question);
 
+/// A dropped or opened picture without a design in it (issue 29: "has no genome"): asks whether
+/// to marble it (File ▸ Marble a picture); a function installed for tests answers instead.
+using PictureOffer = std::function<bool(QWidget* parent, const QString& file)>;
+void setPictureOffer(PictureOffer offer);
+bool offerMarblePicture(QWidget* parent, const QString& file);
+
 } // namespace marbler::ui

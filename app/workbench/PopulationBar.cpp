@@ -36,6 +36,7 @@ PopulationBar::PopulationBar(QToolBar* bar, QAction* newRandom)
     bar->addWidget(kindLabel);
 
     mDimension = new QComboBox(bar);
+    mDimension->setObjectName(QStringLiteral("kindCombo"));
     mDimension->addItem(tr("2D designs"), 2);
     mDimension->addItem(tr("Solid designs"), 3);
     mDimension->setToolTip(
@@ -127,6 +128,10 @@ void PopulationBar::setShownKind(int dimension) {
     if (dimension == mShownKind) return;
     mShownKind = dimension;
     fillObjects();
+    // The grid's kind changed (Back, the lineage, Ctrl+Z, a design of the other kind): the kind
+    // box follows, so it never says "Solid designs" over a flat grid (issue 29). A kind chosen
+    // while the grid stays of one kind is left as chosen.
+    setDimension(dimension);
 }
 
 int PopulationBar::dimension() const {

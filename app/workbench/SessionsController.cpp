@@ -1,6 +1,9 @@
 #include "workbench/SessionsController.h"
 
 #include "shared/ErrorReport.h"
+#include "shared/Help.h"
+#include "workbench/PopulationModel.h"
+#include "workbench/Session.h"
 #include "workbench/SessionStore.h"
 #include "workbench/SessionsDialog.h"
 #include "workbench/WorkbenchWindow.h"
@@ -8,6 +11,7 @@
 #include <QAction>
 #include <QFileInfo>
 #include <QMenu>
+#include <QRandomGenerator>
 #include <QStatusBar>
 
 namespace marbler::ui {
@@ -16,6 +20,13 @@ SessionsController::SessionsController(WorkbenchWindow* window, PopulationModel*
     : QObject(window)
     , mWindow(window)
     , mModel(model) {
+    // Issue 29: File ▸ Sessions had no way to start afresh but quitting and answering the start
+    // question differently.
+    mNewSession = fileMenu->addAction(tr("&New session"), this, [this] { newSession(); });
+    mNewSession->setObjectName(QStringLiteral("newSessionAction"));
+    mNewSession->setStatusTip(tr("Start a new breeding session with a random population of the kind "
+                                 "shown; this one stays kept under File ▸ Sessions"));
+    mNewSession->setToolTip(mNewSession->statusTip());
     mSessionsAction = fileMenu->addAction(tr("&Sessions…"), this, [this] { openDialog(); });
     mSessionsAction->setStatusTip(tr("Every breeding session is kept: resume, rename or delete one"));
     mRecent = fileMenu->addMenu(tr("&Resume session"));
@@ -24,6 +35,7 @@ SessionsController::SessionsController(WorkbenchWindow* window, PopulationModel*
     // Until startSession names the session folder there is no store to show.
     mSessionsAction->setEnabled(false);
     mRecent->setEnabled(false);
+    mNewSession->setEnabled(false);
 
     connect(mModel, &PopulationModel::sessionSaveFailed, this, [this](const QString& message) {
         // Once as a message, after that on the status bar: every change would fail the same way.
@@ -43,6 +55,42 @@ void SessionsController::setStore(const QString& sessionFolder) {
     mFolder = sessionFolder;
     mSessionsAction->setEnabled(!sessionFolder.isEmpty());
     mRecent->setEnabled(!sessionFolder.isEmpty());
+    mNewSession->setEnabled(!sessionFolder.isEmpty());
+}
+
+bool SessionsController::newSession() {
+    if (mFolder.isEmpty()) return false;
+    const int dimension = mModel->populationDimension();
+    // The new population is drawn in a model of its own, from a fresh seed, and comes in as a
+    // resumed session does: the current one was saved with its last change and stays kept.
+    PopulationModel fresh;
+    fresh.setSessionSeed(QRandomGenerator::global()->generate64());
+    KeptSession kept;
+    try {
+        fresh.newRandomPopulation(dimension, mWindow->populationFamily().toStdString());
+        kept = SessionStore(mFolder).create(dimension);
+    } catch (const std::exception& e) {
+        reportError(mWindow, tr("Cannot start a new session"), QString::fromStdString(e.what()));
+        return false;
+    }
+    SavedSession session;
+    session.history = fresh.history();
+    session.current = int(session.history.size()) - 1;
+    session.seed = fresh.sessionSeed();
+    session.dimension = dimension;
+    session.mesh = mWindow->mesh();
+    session.flatMesh = mWindow->flatMesh();
+    session.label = {kept.name, kept.created};
+    const QString previous = mModel->sessionLabel().name;
+    mModel->setSessionFile({});
+    mWindow->resumeSession(std::move(session));
+    mModel->setSessionFile(kept.file);
+    mWindow->statusBar()->showMessage(
+        previous.isEmpty()
+            ? tr("Started a new session “%1”").arg(kept.name)
+            : tr("Started a new session “%1”; “%2” is kept under File ▸ Sessions").arg(kept.name, previous),
+        15000);
+    return true;
 }
 
 QString SessionsController::currentId() const {
@@ -59,8 +107,8 @@ void SessionsController::fillRecent() {
         if (session.id == current) continue;
         if (++shown > 9) break;
         QAction* action = mRecent->addAction(
-            QStringLiteral("&%1 %2 — %3").arg(shown).arg(session.name, describeSession(session)), this,
-            [this, id = session.id] { resume(id); });
+            QStringLiteral("&%1 %2 — %3").arg(shown).arg(labelSafe(session.name), describeSession(session)),
+            this, [this, id = session.id] { resume(id); });
         action->setData(session.id);
     }
     if (shown == 0) mRecent->addAction(tr("No other sessions"))->setEnabled(false);

@@ -30,6 +30,10 @@ public:
     void setStore(const QString& sessionFolder);
     QString storeFolder() const { return mFolder; }
     QString currentId() const;
+    /// File ▸ New session: a random population of the kind shown, in a session of its own; the
+    /// current one stays kept. Returns false (reported) when none could be started.
+    bool newSession();
+    QAction* newSessionAction() const { return mNewSession; }
     bool resume(const QString& id);
     bool rename(const QString& id, const QString& name);
     QString remove(const QString& id);
@@ -43,6 +47,7 @@ private:
     PopulationModel* mModel;
     QString mFolder;
     QAction* mSessionsAction = nullptr;
+    QAction* mNewSession = nullptr;
     QMenu* mRecent = nullptr;
     QPointer<SessionsDialog> mDialog;
     bool mSaveFailureShown = false;

@@ -10,6 +10,7 @@
 #include "marbler/ImageFormats.h"
 #include "marbler/Paper.h"
 #include "shared/DesignDialog.h"
+#include "shared/DesignExport.h"
 #include "shared/ErrorReport.h"
 #include "shared/GenomeClipboard.h"
 #include "shared/Help.h"
@@ -23,6 +24,7 @@
 #include "workbench/HelpMenu.h"
 #include "workbench/OpenPlacement.h"
 #include "workbench/OperatorActions.h"
+#include "workbench/PaperDialog.h"
 #include "workbench/PopulationBar.h"
 #include "workbench/RendererMenu.h"
 #include "workbench/SessionsController.h"
@@ -44,6 +46,7 @@
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QHeaderView>
+#include <QImageReader>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
@@ -251,8 +254,9 @@ void WorkbenchWindow::buildActions() {
     picture->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
     picture->setStatusTip(
         tr("Nine flat designs whose bath is a picture you pick: flows and strokes carry its colours"));
-    QAction* newPaperAction = fileMenu->addAction(
-        tr("New marbled &paper"), this, [this] { newPaper(QRandomGenerator::global()->generate64()); });
+    QAction* newPaperAction = fileMenu->addAction(tr("New marbled &paper…"), this, [this] {
+        if (const std::optional<PaperChoice> paper = askPaper(this)) newPaper(paper->seed, paper->options);
+    });
     newPaperAction->setObjectName(QStringLiteral("newPaperAction"));
     newPaperAction->setStatusTip(
         tr("A procedural marbled paper (as marbler paper makes) into the grid, to breed from"));
@@ -662,6 +666,9 @@ QString WorkbenchWindow::populationFamily() const {
 }
 
 void WorkbenchWindow::newRandomPopulation(int dimension) {
+    // Colourways vary one design's palette; a new population has no design picked for them, and
+    // the mode left on made the operators recolour instead of breed (issue 29).
+    if (colourwaysMode()) setColourwaysMode(false);
     QSettings().setValue(QStringLiteral("population/dimension"), dimension);
     mPopulation->setDimension(dimension);
     QSettings().setValue(QStringLiteral("population/family"), populationFamily());
@@ -676,6 +683,7 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
     std::vector<Genome> designs;
     QStringList errors;
     QStringList names;
+    QString picture; ///< the first plain picture: offered to Marble a picture (issue 29)
     for (const QString& file : files) {
         try {
             std::vector<std::string> warnings;
@@ -683,45 +691,69 @@ bool WorkbenchWindow::openFiles(const QStringList& files, int cell) {
             designs.push_back(loadDesign(file.toStdString(), &warnings));
             names << QFileInfo(file).fileName();
             if (!warnings.empty()) statusBar()->showMessage(QString::fromStdString(warnings.front()), 8000);
-        } catch (const Error& e) {
+        } catch (const GenomeError& e) {
+            // A design whose genome is broken is reported, never taken for a picture.
             errors << QString::fromStdString(e.what());
+        } catch (const Error& e) {
+            if (picture.isEmpty() && QImageReader(file).canRead())
+                picture = file;
+            else
+                errors << QString::fromStdString(e.what());
         }
     }
     // Several files dropped on one cell have no single target: they go where opened files go.
     placeOpened(designs, names, designs.size() == 1 ? cell : -1);
+    bool pictureTaken = true;
+    if (!picture.isEmpty()) {
+        pictureTaken = offerMarblePicture(this, picture) && !marblePicture(picture).empty();
+        if (!pictureTaken && designs.empty())
+            statusBar()->showMessage(
+                tr("Nothing opened: %1 holds no design").arg(QFileInfo(picture).fileName()), 8000);
+    }
     if (!errors.isEmpty()) {
         reportError(this, tr("Cannot open a design"),
                     tr("These files could not be loaded; the population is unchanged by them.\n\n%1")
                         .arg(errors.join(QStringLiteral("\n"))));
         return false;
     }
-    return true;
+    return pictureTaken;
 }
 
 std::vector<int> WorkbenchWindow::placeOpened(const std::vector<Genome>& opened, const QStringList& names,
                                               int cell, const QString& describe) {
     if (opened.empty()) return {};
     // One kind per generation: flat and solid designs cannot breed together, and the grid's
-    // object, previews and operators all assume one kind. The first design decides.
-    const int kind = opened.front().dimension;
-    std::vector<Genome> designs;
-    QStringList accepted, refused;
+    // object, previews and operators all assume one kind. Designs of the grid's kind (of the
+    // first design's, on an empty workbench) go where opened designs go; those of the other kind
+    // then start a generation of their own (issue 29: they were refused).
+    int kind = mModel->isEmptyWorkbench() ? opened.front().dimension : mModel->populationDimension();
+    std::vector<Genome> designs, others;
+    QStringList accepted, otherNames;
     for (std::size_t k = 0; k < opened.size(); ++k) {
         const QString name = int(k) < names.size() ? names[int(k)] : tr("design %1").arg(k + 1);
-        if (opened[k].dimension == kind) {
-            designs.push_back(opened[k]);
-            accepted << name;
-        } else {
-            refused << name;
-        }
+        (opened[k].dimension == kind ? designs : others).push_back(opened[k]);
+        (opened[k].dimension == kind ? accepted : otherNames) << name;
     }
-    if (!refused.isEmpty())
-        reportError(
-            this, tr("Some designs were not opened"),
-            tr("A generation holds one kind of design, and %1 is %2, so these %3 designs were not opened; "
-               "open them on their own:\n\n%4")
-                .arg(names.value(0), kind == 3 ? tr("solid") : tr("flat"),
-                     kind == 3 ? tr("flat") : tr("solid"), refused.join(QStringLiteral("\n"))));
+    if (designs.empty()) {
+        designs = std::move(others);
+        accepted = otherNames;
+        kind = designs.front().dimension;
+    } else if (!others.empty()) {
+        std::vector<int> used = placeOpened(designs, accepted, cell, describe);
+        if (used.empty()) return used; // the question was cancelled: nothing of either kind
+        const QString kindName = kind == 3 ? tr("solid") : tr("flat");
+        const QString otherKind = kind == 3 ? tr("flat") : tr("solid");
+        const QString description = tr("Opened %1").arg(otherNames.join(QStringLiteral(", ")));
+        mModel->startGenerationOf(others, description, 0);
+        mPopulation->setDimension(others.front().dimension);
+        statusBar()->showMessage(tr("Opened %1 and %2: the %3 designs are a generation of their own, the %4 "
+                                    "ones one generation back (%5)")
+                                     .arg(accepted.join(QStringLiteral(", ")),
+                                          otherNames.join(QStringLiteral(", ")), otherKind, kindName,
+                                          mBack->shortcut().toString(QKeySequence::NativeText)),
+                                 15000);
+        return used;
+    }
     const QString description =
         describe.isEmpty() ? tr("Opened %1").arg(accepted.join(QStringLiteral(", "))) : describe;
 
@@ -847,7 +879,17 @@ bool WorkbenchWindow::copyDesign(int cell) {
 }
 
 std::vector<int> WorkbenchWindow::newPaper(std::uint64_t seed) {
-    const Genome paper = paperGenome(seed, PaperOptions{});
+    return newPaper(seed, PaperOptions{});
+}
+
+std::vector<int> WorkbenchWindow::newPaper(std::uint64_t seed, const PaperOptions& options) {
+    Genome paper;
+    try {
+        paper = paperGenome(seed, options);
+    } catch (const Error& e) {
+        reportError(this, tr("Cannot make the paper"), QString::fromStdString(e.what()));
+        return {};
+    }
     const QString name = QString::fromStdString(paper.meta.name.value_or(""));
     return placeOpened({paper}, {name}, -1, tr("Marbled paper %1 (seed %2)").arg(name).arg(seed));
 }
@@ -1042,6 +1084,11 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
         if (shown && genomeId(*shown) == id) mModel->setCellView(index, angle);
     });
     connect(dialog, &DesignDialog::fileSaved, this, &WorkbenchWindow::noteSavedFile);
+    // Issue 29: a cancelled export said nothing anywhere.
+    connect(dialog, &DesignDialog::exportFinished, this,
+            [this](const QString& file, bool written, const QString& error) {
+                if (!written && error.isEmpty()) statusBar()->showMessage(exportCancelledMessage(file), 8000);
+            });
     connect(dialog, &DesignDialog::openInEditorRequested, this,
             [this](const Genome& design) { openEditor(design); });
     connect(dialog, &DesignDialog::genomeCopied, this, [this](const QString& name) {

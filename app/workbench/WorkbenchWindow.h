@@ -29,6 +29,9 @@
 
 class QAction;
 class QComboBox;
+namespace marbler {
+struct PaperOptions;
+}
 class QDialog;
 class QLabel;
 class QListWidget;
@@ -92,7 +95,8 @@ public:
     /// Loads genome files into the grid as a new generation (see placeOpened()): into the
     /// selected cells, then free ones, asking first when designs would be replaced; one file
     /// dropped on a cell goes into that cell (`cell`). A file that does not load is reported and
-    /// changes nothing. Returns whether all loaded.
+    /// changes nothing. A picture without a design in it is offered to Marble a picture
+    /// (offerMarblePicture). Returns whether all loaded (a picture: whether it was marbled).
     bool openFiles(const QStringList& files, int cell = -1);
     /// Puts opened designs (files, favourites, dropped designs) into the grid; `names` say what
     /// they are in messages, `cell` is an explicit target (a drop on a cell) or -1. Designs of
@@ -131,8 +135,11 @@ public:
     EditorWindow* recover(const RecoveredDesign& design);
     /// File ▸ New marbled paper: the A4 paper `marbler paper --seed SEED` makes (Paper.h) goes
     /// into the grid as an opened design does (placeOpened), a starting point to breed from.
-    /// Returns the cells filled. The menu's action (object name "newPaperAction") draws a seed.
+    /// Returns the cells filled. The menu's action (object name "newPaperAction") asks for the
+    /// sheet, inks, passes, pastel and seed first (PaperDialog.h).
     std::vector<int> newPaper(std::uint64_t seed);
+    /// As newPaper(seed), with the options of `marbler paper` (size, colours, passes, pastel).
+    std::vector<int> newPaper(std::uint64_t seed, const PaperOptions& options);
     /// Edit ▸ Copy design (Ctrl+C): puts a cell's genome on the clipboard as genome text; -1:
     /// the focused cell when it holds a design, else the first selected one. Says so on the
     /// status bar; false when there is no design to copy.

@@ -17,10 +17,22 @@
 namespace marbler {
 namespace fs = std::filesystem;
 
+std::string writeFailureMessage(const fs::path& file, int error, const std::string& reason) {
+    if (error == ENOSPC || error == EDQUOT) {
+        std::error_code ec;
+        fs::path whole = fs::absolute(file, ec);
+        if (ec) whole = file;
+        const fs::path folder = whole.parent_path().empty() ? fs::path(".") : whole.parent_path();
+        return "the disk is full: could not write " + whole.string() + " (free some space in " +
+               folder.string() + " or choose another folder)";
+    }
+    return "cannot write " + file.string() + ": " + (reason.empty() ? std::strerror(error) : reason);
+}
+
 namespace {
 
 [[noreturn]] void writeFailure(const fs::path& file, int error) {
-    throw RuntimeFailure("cannot write " + file.string() + ": " + std::strerror(error));
+    throw RuntimeFailure(writeFailureMessage(file, error));
 }
 
 fs::path folderOf(const fs::path& file) {

@@ -204,5 +204,42 @@ TEST(PaperCli, HelpDescribesEveryOption) {
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 
+// Issue 29: `paper --quiet` was refused while `render --quiet` was taken. The common flags
+// (Cli.h CommonFlags) work on every verb, and paper shows its progress like render.
+TEST(PaperCli, EveryVerbTakesTheCommonOptions) {
+    const fs::path dir = test::outputDir("paper-common-options");
+    const std::string example = (test::dataDir() / "examples" / "five-stones.marble.json").string();
+    const std::vector<std::vector<std::string>> runs = {
+        {"paper", "--size", "2x3cm", "--dpi", "30", "--seed", "4", "-o", (dir / "quiet.png").string()},
+        {"info", example},
+        {"random", "--dimension", "2", "--seed", "3", "-o", (dir / "random.marble.json").string()},
+        {"svg", example, "-o", (dir / "design.svg").string()},
+    };
+    for (const std::vector<std::string>& run : runs) {
+        for (const char* flag : {"--quiet", "--progress"}) {
+            std::vector<std::string> args = run;
+            args.emplace_back(flag);
+            test::RunResult r = runMarbler(args);
+            EXPECT_EQ(r.exitCode, 0) << run[0] << ' ' << flag << ": " << r.err;
+            EXPECT_EQ(r.err.find("unknown option"), std::string::npos) << r.err;
+        }
+    }
+    EXPECT_TRUE(fs::exists(dir / "quiet.png"));
+    EXPECT_TRUE(fs::exists(dir / "quiet.marble.json"));
+
+    // paper says how far it is with --progress, and nothing with --quiet.
+    test::RunResult shown = runMarbler({"paper", "--size", "2x3cm", "--dpi", "30", "--seed", "4",
+                                        "--progress", "-o", (dir / "shown.png").string()});
+    EXPECT_EQ(shown.exitCode, 0) << shown.err;
+    EXPECT_NE(shown.err.find("rendering"), std::string::npos) << shown.err;
+    test::RunResult quiet = runMarbler({"paper", "--size", "2x3cm", "--dpi", "30", "--seed", "4", "--quiet",
+                                        "--progress", "-o", (dir / "still.png").string()});
+    EXPECT_EQ(quiet.exitCode, 0) << quiet.err;
+    EXPECT_EQ(quiet.err, "");
+
+    test::RunResult help = runMarbler({"paper", "--help"});
+    EXPECT_NE(help.out.find("--quiet"), std::string::npos);
+}
+
 } // namespace
 } // namespace marbler

@@ -25,6 +25,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QKeySequence>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
@@ -397,6 +398,84 @@ TEST_F(SessionsTest, StartDialogOffersTheOtherKeptSessions) {
     StartDialog alone(StartChoice{2, QStringLiteral("vase"), true, 4, 3});
     EXPECT_EQ(alone.otherSessionsBox(), nullptr);
     EXPECT_EQ(alone.resumeOtherButton(), nullptr);
+}
+
+/// What a button or menu entry shows of its text: "&&" as "&", other '&'s (mnemonics) gone.
+QString shownLabel(QString text) {
+    text.replace(QStringLiteral("&&"), QStringLiteral("\x01"));
+    text.remove(QLatin1Char('&'));
+    return text.replace(QStringLiteral("\x01"), QStringLiteral("&"));
+}
+
+// Issue 29: "&" in a session's name made a keyboard mnemonic of the next letter on the start
+// dialog's resume button (and in File ▸ Resume session) and vanished from the label.
+TEST_F(SessionsTest, AnAmpersandInASessionNameIsShownAndMakesNoMnemonic) {
+    StartChoice offer{2, QStringLiteral("vase"), true, 4, 3};
+    offer.resumeName = QStringLiteral("Tom & Jerry");
+    StartDialog dialog(offer);
+    ASSERT_NE(dialog.resumeButton(), nullptr);
+    EXPECT_TRUE(shownLabel(dialog.resumeButton()->text()).contains(QStringLiteral("“Tom & Jerry”")))
+        << dialog.resumeButton()->text().toStdString();
+    EXPECT_EQ(QKeySequence::mnemonic(dialog.resumeButton()->text()), QKeySequence(Qt::ALT | Qt::Key_R));
+
+    answerNew(2);
+    QString keptId;
+    {
+        WorkbenchWindow window(&service);
+        startSession(window, options);
+        keptId = window.currentSessionId();
+        ASSERT_TRUE(window.renameSession(keptId, QStringLiteral("Salt & Pepper")));
+    }
+    WorkbenchWindow window(&service);
+    StartOptions flat = options;
+    flat.dimension = 2;
+    startSession(window, flat);
+    emit window.recentSessionsMenu()->aboutToShow();
+    QAction* entry = nullptr;
+    for (QAction* a : window.recentSessionsMenu()->actions())
+        if (a->data().toString() == keptId) entry = a;
+    ASSERT_NE(entry, nullptr);
+    EXPECT_TRUE(shownLabel(entry->text()).contains(QStringLiteral("Salt & Pepper")))
+        << entry->text().toStdString();
+    EXPECT_EQ(QKeySequence::mnemonic(entry->text()), QKeySequence(Qt::ALT | Qt::Key_1));
+}
+
+// Issue 29: File ▸ Sessions had no "New session"; starting afresh meant quitting.
+TEST_F(SessionsTest, NewSessionStartsAFreshPopulationAndKeepsTheCurrentOne) {
+    answerNew(2);
+    WorkbenchWindow window(&service);
+    startSession(window, options);
+    breed(window, 2);
+    const QString oldId = window.currentSessionId();
+    const std::vector<std::string> oldDesigns = designs(*window.model());
+    ASSERT_EQ(window.model()->history().size(), 3u);
+
+    auto* action = window.findChild<QAction*>(QStringLiteral("newSessionAction"));
+    ASSERT_NE(action, nullptr);
+    ASSERT_TRUE(action->isEnabled());
+    EXPECT_FALSE(action->text().isEmpty());
+    action->trigger();
+
+    const QString newId = window.currentSessionId();
+    EXPECT_FALSE(newId.isEmpty());
+    EXPECT_NE(newId, oldId);
+    ASSERT_EQ(window.model()->history().size(), 1u) << "a first generation of its own";
+    EXPECT_EQ(window.model()->populationDimension(), 2);
+    for (const std::string& design : designs(*window.model()))
+        EXPECT_EQ(std::count(oldDesigns.begin(), oldDesigns.end(), design), 0) << "new designs";
+    const QString said = window.statusBar()->currentMessage();
+    EXPECT_TRUE(said.contains(QStringLiteral("new session"))) << said.toStdString();
+
+    // Both are kept on disk; the old one whole, with its three generations.
+    QStringList ids;
+    for (const KeptSession& k : store().list())
+        ids << k.id;
+    EXPECT_TRUE(ids.contains(oldId)) << ids.join(',').toStdString();
+    MARBLER_WAIT(store().find(newId).has_value() && QFileInfo::exists(store().find(newId)->file), 10000);
+    EXPECT_EQ(loadSession(store().find(oldId)->file).history.size(), 3u);
+    // And the old one can be resumed from the menu.
+    EXPECT_TRUE(window.resumeKeptSession(oldId));
+    EXPECT_EQ(designs(*window.model()), oldDesigns);
 }
 
 // Favourites: removing one is undoable.

@@ -3,10 +3,18 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace marbler {
+
+/// The message of a failed write of `file`: "cannot write FILE: REASON", where REASON is
+/// strerror(error), or `reason` when given (a library's words); a full disk (ENOSPC, or a used-up
+/// quota, EDQUOT) is said in plain words with the folder to free space in (issue 29: "Write
+/// Error" and "TIFFAppendToStrip: Write error at scanline 3008" said neither). The one home of
+/// that wording for every writer.
+std::string writeFailureMessage(const std::filesystem::path& file, int error, const std::string& reason = {});
 
 /// A file (or folder) written under a hidden temporary name beside its target and renamed over
 /// the target by commit(), after its contents are flushed to disk. The temporary lives in the

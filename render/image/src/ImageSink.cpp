@@ -5,6 +5,7 @@
 #include "ImageSink.h"
 
 #include "SrgbProfile.h"
+#include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeImage.h"
 #include "marbler/Image.h"
@@ -38,7 +39,11 @@ struct File {
     }
 };
 
-[[noreturn]] void failWrite(const SinkTarget& target, const std::string& reason) {
+/// `error` is the errno of the failed write, when one is known: a full disk is said in plain
+/// words whatever the library's own message (writeFailureMessage).
+[[noreturn]] void failWrite(const SinkTarget& target, const std::string& reason, int error = 0) {
+    if (error == ENOSPC || error == EDQUOT)
+        throw RuntimeFailure(writeFailureMessage(target.displayName, error));
     throw RuntimeFailure("cannot write '" + target.displayName + "': " + reason);
 }
 
@@ -117,7 +122,7 @@ public:
             png_set_text(mState.png, mState.info, texts, textCount);
             png_write_info(mState.png, mState.info);
         });
-        if (!ok) failWrite(target, mState.message);
+        if (!ok) failWrite(target, mState.message, errno);
     }
 
     bool linearFloat() const override { return false; }
@@ -130,17 +135,19 @@ public:
             png_bytep row = const_cast<png_bytep>(bytes + std::size_t(y - y0) * stride);
             ok = pngCall(mState, [&] { png_write_row(mState.png, row); });
         }
-        if (!ok) failWrite(mTarget, mState.message);
+        if (!ok) failWrite(mTarget, mState.message, errno);
     }
 
     void finish() override {
-        if (!pngCall(mState, [&] { png_write_end(mState.png, nullptr); })) failWrite(mTarget, mState.message);
+        if (!pngCall(mState, [&] { png_write_end(mState.png, nullptr); }))
+            failWrite(mTarget, mState.message, errno);
         std::FILE* handle = std::exchange(mFile.handle, nullptr);
         if (std::fflush(handle) != 0 || std::ferror(handle)) {
+            const int error = errno;
             std::fclose(handle);
-            failWrite(mTarget, std::strerror(errno));
+            failWrite(mTarget, std::strerror(error), error);
         }
-        if (std::fclose(handle) != 0) failWrite(mTarget, std::strerror(errno));
+        if (std::fclose(handle) != 0) failWrite(mTarget, std::strerror(errno), errno);
     }
 
 private:
@@ -176,7 +183,10 @@ public:
         });
         tiffMessage.clear();
         mTiff = TIFFOpen(target.file.c_str(), "w");
-        if (!mTiff) failWrite(target, tiffMessage.empty() ? std::strerror(errno) : tiffMessage);
+        if (!mTiff) {
+            const int error = errno;
+            failWrite(target, tiffMessage.empty() ? std::strerror(error) : tiffMessage, error);
+        }
         TIFFSetField(mTiff, TIFFTAG_IMAGEWIDTH, std::uint32_t(target.width));
         TIFFSetField(mTiff, TIFFTAG_IMAGELENGTH, std::uint32_t(target.height));
         TIFFSetField(mTiff, TIFFTAG_SAMPLESPERPIXEL, 3);
@@ -238,8 +248,9 @@ public:
         tiffMessage.clear();
         TIFF* tiff = std::exchange(mTiff, nullptr);
         if (!TIFFFlush(tiff)) {
+            const int error = errno;
             TIFFClose(tiff);
-            failWrite(mTarget, tiffMessage.empty() ? "write failed" : tiffMessage);
+            failWrite(mTarget, tiffMessage.empty() ? "write failed" : tiffMessage, error);
         }
         TIFFClose(tiff);
     }
@@ -250,7 +261,7 @@ private:
     void flushStrip() {
         tiffMessage.clear();
         if (TIFFWriteEncodedStrip(mTiff, mStrip++, mPending.data(), tmsize_t(mPending.size())) < 0)
-            failWrite(mTarget, tiffMessage.empty() ? "write failed" : tiffMessage);
+            failWrite(mTarget, tiffMessage.empty() ? "write failed" : tiffMessage, errno);
         mPending.clear();
     }
 
@@ -271,21 +282,25 @@ public:
         mFile.handle = std::fopen(target.file.c_str(), "wb");
         if (!mFile.handle) failWrite(target, std::strerror(errno));
         if (std::fprintf(mFile.handle, "P6\n%d %d\n255\n", target.width, target.height) < 0)
-            failWrite(target, std::strerror(errno));
+            failWrite(target, std::strerror(errno), errno);
     }
 
     bool linearFloat() const override { return false; }
 
     void writeRows(int y0, int y1, const void* rows) override {
         const std::size_t count = std::size_t(y1 - y0) * std::size_t(mTarget.width) * 3;
-        if (std::fwrite(rows, 1, count, mFile.handle) != count) failWrite(mTarget, std::strerror(errno));
+        if (std::fwrite(rows, 1, count, mFile.handle) != count)
+            failWrite(mTarget, std::strerror(errno), errno);
     }
 
     void finish() override {
         std::FILE* handle = std::exchange(mFile.handle, nullptr);
         bool flushed = std::fflush(handle) == 0 && !std::ferror(handle);
         int error = errno;
-        if (std::fclose(handle) != 0 || !flushed) failWrite(mTarget, std::strerror(flushed ? errno : error));
+        if (std::fclose(handle) != 0 || !flushed) {
+            const int why = flushed ? errno : error;
+            failWrite(mTarget, std::strerror(why), why);
+        }
     }
 
 private:
