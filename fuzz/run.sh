@@ -4,13 +4,16 @@
 # (default 60) from the committed corpus, fuzz_image (genomes inside PNG and TIFF images) for
 # half as long from fuzz/corpus-image, and fuzz_source (a genome's source image through the
 # allow-list and the decoder) and fuzz_mesh (a mesh file through its checks and assimp) for
-# half as long each, from fuzz/corpus-source and fuzz/corpus-mesh. Exits non-zero on a finding; the crashing input is
-# left in build-fuzz/findings/.
+# half as long each, from fuzz/corpus-source and fuzz/corpus-mesh, and fuzz_session (a breeding
+# session file) and fuzz_recovery (an editor's recovery file, opened in the editor's document)
+# for half as long each, from fuzz/corpus-session and fuzz/corpus-recovery. Exits non-zero on a
+# finding; the crashing input is left in build-fuzz/findings/.
 #   fuzz/run.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_TO_RUN=${1:-60}
-# In CI (CI=true) the targets that are still young (fuzz_source, fuzz_mesh) replay their
+# In CI (CI=true) the targets that are still young (fuzz_source, fuzz_mesh, fuzz_session,
+# fuzz_recovery) replay their
 # committed corpora, every finding included, instead of mutating: a new finding belongs to a
 # developer's long run (fuzz/run.sh 600), not to a random failure of someone else's change.
 YOUNG_TARGETS_RUN=(-max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))")
@@ -21,10 +24,12 @@ cmake -S . -B "$BUILD" -G Ninja \
     -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DMARBLER_FUZZ=ON -DMARBLER_SANITIZE=ON \
     -DMARBLER_BUILD_TESTS=OFF -DMARBLER_BUILD_GUI=OFF -DMARBLER_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build "$BUILD" --target fuzz_genome fuzz_image fuzz_source fuzz_mesh -j "$(nproc)"
+cmake --build "$BUILD" --target fuzz_genome fuzz_image fuzz_source fuzz_mesh fuzz_session fuzz_recovery \
+    -j "$(nproc)"
 
 # New inputs go to a corpus under the build folder; the committed seeds are only read.
-mkdir -p "$BUILD/corpus" "$BUILD/corpus-image" "$BUILD/corpus-source" "$BUILD/corpus-mesh" "$BUILD/findings"
+mkdir -p "$BUILD/corpus" "$BUILD/corpus-image" "$BUILD/corpus-source" "$BUILD/corpus-mesh" \
+    "$BUILD/corpus-session" "$BUILD/corpus-recovery" "$BUILD/findings"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 "$BUILD/fuzz/fuzz_genome" "$BUILD/corpus" fuzz/corpus \
@@ -47,4 +52,17 @@ LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
 LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
 "$BUILD/fuzz/fuzz_mesh" "$BUILD/corpus-mesh" fuzz/corpus-mesh \
     "${YOUNG_TARGETS_RUN[@]}" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
+    -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+# Sessions: a session may hold thousands of designs, but inputs here are at most 256 KiB (a
+# real session of one generation is some 150 KiB); the parsed designs take a few times that.
+# One allocation over 1 GiB is a finding. Qt's own buffers are not leaks (fuzz/lsan.supp).
+LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
+"$BUILD/fuzz/fuzz_session" "$BUILD/corpus-session" fuzz/corpus-session \
+    "${YOUNG_TARGETS_RUN[@]}" -max_len=262144 -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=10 \
+    -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+# Recovery files: one design (at most 2 x 16 MiB, Recovery.cpp), read and opened in the
+# editor's document twice; inputs here are at most 64 KiB. One allocation over 1 GiB is a finding.
+LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
+"$BUILD/fuzz/fuzz_recovery" "$BUILD/corpus-recovery" fuzz/corpus-recovery \
+    "${YOUNG_TARGETS_RUN[@]}" -max_len=65536 -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=10 \
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1

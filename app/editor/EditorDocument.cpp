@@ -14,12 +14,13 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <unordered_set>
 #include <utility>
 
 namespace marbler::ui {
 
-/// What one edit changes, whole: the design and the muted flags (a genome is a few kilobytes,
-/// so whole snapshots are simpler and safer than diffs). Commands and branches share them.
+/// One state of the document: the design and the muted flags. Only the present state is held
+/// whole (EditorDocument::mDesign, mMuted); the history holds what each edit changed.
 struct EditorState {
     Genome design;
     std::vector<bool> muted;
@@ -27,13 +28,193 @@ struct EditorState {
     bool operator==(const EditorState& o) const { return design == o.design && muted == o.muted; }
 };
 
-using StatePtr = std::shared_ptr<const EditorState>;
+namespace {
+
+/// A run of a list replaced: from index `at`, `removed` gave way to `inserted`; or, for a step
+/// moved (`rotated` != 0), the run of `length` from `at` turned by one, its first entry moved to
+/// its end (+1) or its last to its front (-1), which holds no entries at all. Applying it to the
+/// list before gives the list after, reverting it the other way, exactly.
+template <class T> struct ListSplice {
+    std::size_t at = 0;
+    std::vector<T> removed;
+    std::vector<T> inserted;
+    int rotated = 0;
+    std::size_t length = 0;
+
+    /// The smallest splice from `a` to `b`: what lies between their common head and tail.
+    static ListSplice between(const std::vector<T>& a, const std::vector<T>& b) {
+        std::size_t head = 0;
+        const std::size_t shorter = std::min(a.size(), b.size());
+        while (head < shorter && a[head] == b[head])
+            ++head;
+        std::size_t tail = 0;
+        while (tail < shorter - head && a[a.size() - 1 - tail] == b[b.size() - 1 - tail])
+            ++tail;
+        ListSplice s;
+        s.at = head;
+        const auto first = static_cast<std::ptrdiff_t>(head);
+        const auto last = static_cast<std::ptrdiff_t>(tail);
+        if (a.size() == b.size() && a.size() - head - tail >= 2) {
+            // A step moved far turns the run between, however long: keep the turn, not the run.
+            const auto run = [&](const std::vector<T>& v) {
+                return std::vector<T>(v.begin() + first, v.end() - last);
+            };
+            std::vector<T> turned = run(a);
+            std::rotate(turned.begin(), turned.begin() + 1, turned.end());
+            const std::vector<T> after = run(b);
+            if (turned == after)
+                s.rotated = 1;
+            else {
+                std::rotate(turned.begin(), turned.end() - 2, turned.end());
+                if (turned == after) s.rotated = -1;
+            }
+            if (s.rotated != 0) {
+                s.length = after.size();
+                return s;
+            }
+        }
+        s.removed.assign(a.begin() + first, a.end() - last);
+        s.inserted.assign(b.begin() + first, b.end() - last);
+        return s;
+    }
+    static void replace(std::vector<T>& v, std::size_t at, const std::vector<T>& out,
+                        const std::vector<T>& in) {
+        const auto first = v.begin() + static_cast<std::ptrdiff_t>(at);
+        v.insert(v.erase(first, first + static_cast<std::ptrdiff_t>(out.size())), in.begin(), in.end());
+    }
+    void turn(std::vector<T>& v, int direction) const {
+        const auto first = v.begin() + static_cast<std::ptrdiff_t>(at);
+        const auto last = first + static_cast<std::ptrdiff_t>(length);
+        std::rotate(first, direction > 0 ? first + 1 : last - 1, last);
+    }
+    void apply(std::vector<T>& v) const {
+        if (rotated != 0)
+            turn(v, rotated);
+        else
+            replace(v, at, removed, inserted);
+    }
+    void revert(std::vector<T>& v) const {
+        if (rotated != 0)
+            turn(v, -rotated);
+        else
+            replace(v, at, inserted, removed);
+    }
+    bool empty() const { return rotated == 0 && removed.empty() && inserted.empty(); }
+};
+
+/// The heap and inline bytes of one step (its vectors included).
+std::size_t bytesOf(const Operation& op) {
+    return sizeof(Operation) + op.teeth.capacity() * sizeof(double) +
+           op.path.capacity() * sizeof(glm::dvec2) + op.pressure.capacity() * sizeof(double);
+}
+
+/// A design without its steps: everything an edit may change besides them.
+Genome headerOf(const Genome& g) {
+    Genome h;
+    h.dimension = g.dimension;
+    h.size = g.size;
+    h.background = g.background;
+    h.palette = g.palette;
+    h.source = g.source;
+    h.bleed = g.bleed;
+    h.wrap = g.wrap;
+    h.meta = g.meta;
+    h.baseDirectory = g.baseDirectory;
+    h.fileName = g.fileName;
+    h.allowExternalSource = g.allowExternalSource;
+    return h;
+}
+
+/// Whether two designs agree in everything but their steps (the fields that are not saved
+/// included, so that undo and redo give back exactly the genome that was there).
+bool sameHeader(const Genome& a, const Genome& b) {
+    return a.dimension == b.dimension && a.size == b.size && a.background == b.background &&
+           a.palette == b.palette && a.source == b.source && a.bleed == b.bleed && a.wrap == b.wrap &&
+           a.meta == b.meta && a.baseDirectory == b.baseDirectory && a.fileName == b.fileName &&
+           a.allowExternalSource == b.allowExternalSource;
+}
+
+} // namespace
+
+/// What one edit changed, and only that: the steps and muted flags replaced (a splice of each
+/// list) and, when something else changed (an ink, the background, a new design), the design's
+/// other fields before and after. An edit of one step of a 10,000-step design holds two steps,
+/// not two designs, so the history grows with the edits made, not with the design's size
+/// (docs/performance.md, "Long editing sessions"). Immutable: commands and branches share them,
+/// and a shared edit is how two lines of history are known to share a state.
+struct EditorDelta {
+    std::optional<Genome> headerBefore; ///< set only when the fields besides the steps changed
+    std::optional<Genome> headerAfter;
+    ListSplice<Operation> initial;
+    ListSplice<Operation> operations;
+    ListSplice<bool> muted;
+    std::size_t bytes = sizeof(EditorDelta); ///< what it holds, for EditorDocument::historyBytes
+
+    static EditorDelta between(const EditorState& a, const EditorState& b) {
+        EditorDelta d;
+        if (!sameHeader(a.design, b.design)) {
+            d.headerBefore = headerOf(a.design);
+            d.headerAfter = headerOf(b.design);
+            for (const Genome* h : {&*d.headerBefore, &*d.headerAfter})
+                d.bytes += sizeof(Genome) + h->palette.capacity() * sizeof(Color) +
+                           (h->source ? h->source->image.capacity() : 0) + h->baseDirectory.capacity() +
+                           h->fileName.capacity() + toJson(*h).dump().size(); // meta, roughly
+        }
+        d.initial = ListSplice<Operation>::between(a.design.initial, b.design.initial);
+        d.operations = ListSplice<Operation>::between(a.design.operations, b.design.operations);
+        d.muted = ListSplice<bool>::between(a.muted, b.muted);
+        for (const auto* list :
+             {&d.initial.removed, &d.initial.inserted, &d.operations.removed, &d.operations.inserted})
+            for (const Operation& op : *list)
+                d.bytes += bytesOf(op);
+        d.bytes += (d.muted.removed.size() + d.muted.inserted.size() + 7) / 8;
+        return d;
+    }
+
+    /// Turns the state before the edit into the one after it (forward) or back.
+    void step(EditorState& s, bool forward) const {
+        if (headerAfter) {
+            Genome h = forward ? *headerAfter : *headerBefore;
+            h.initial = std::move(s.design.initial);
+            h.operations = std::move(s.design.operations);
+            s.design = std::move(h);
+        }
+        if (forward) {
+            initial.apply(s.design.initial);
+            operations.apply(s.design.operations);
+            muted.apply(s.muted);
+        } else {
+            initial.revert(s.design.initial);
+            operations.revert(s.design.operations);
+            muted.revert(s.muted);
+        }
+    }
+
+    /// Whether the list of steps must be rebuilt after it (EditorDocument::stepsChanged): steps
+    /// added, removed, moved or muted, or a step's tool changed; not for a parameter edit of one
+    /// step.
+    bool structural() const {
+        if (!muted.empty() || initial.rotated != 0 || operations.rotated != 0 ||
+            initial.removed.size() != initial.inserted.size() ||
+            operations.removed.size() != operations.inserted.size())
+            return true;
+        int changed = 0;
+        for (const auto* part : {&initial, &operations})
+            for (std::size_t i = 0; i < part->removed.size(); ++i) {
+                if (part->removed[i] == part->inserted[i]) continue;
+                if (part->removed[i].tool != part->inserted[i].tool) changed += 2;
+                ++changed;
+            }
+        return changed > 1;
+    }
+};
+
+using EditPtr = std::shared_ptr<const EditorDelta>;
 
 struct EditorDocument::Line {
     struct Edit {
         QString text;
-        StatePtr before;
-        StatePtr after;
+        EditPtr edit;
     };
     std::vector<Edit> edits;
 };
@@ -202,26 +383,6 @@ EditorState unpack(Genome design) {
     return s;
 }
 
-/// Whether the list of steps must be rebuilt: steps added, removed, moved or muted, or a step's
-/// tool changed; not for a parameter edit of one step.
-bool stepsDiffer(const Genome& a, const std::vector<bool>& mutedA, const Genome& b,
-                 const std::vector<bool>& mutedB) {
-    if (mutedA != mutedB || a.initial.size() != b.initial.size() ||
-        a.operations.size() != b.operations.size())
-        return true;
-    int changed = 0;
-    const auto compare = [&](const std::vector<Operation>& x, const std::vector<Operation>& y) {
-        for (std::size_t i = 0; i < x.size(); ++i) {
-            if (x[i] == y[i]) continue;
-            if (x[i].tool != y[i].tool) changed += 2;
-            ++changed;
-        }
-    };
-    compare(a.initial, b.initial);
-    compare(a.operations, b.operations);
-    return changed > 1;
-}
-
 /// "comb 3: spacing 18 → 23": the parameter changes of step i (ChangeSummary's words).
 QString describeStepEdit(const Genome& before, const Genome& after, std::size_t i) {
     const Operation& a = stepOf(before, i);
@@ -239,40 +400,47 @@ QString describeStepEdit(const Genome& before, const Genome& after, std::size_t 
 
 } // namespace
 
-/// One edit: the states before and after. Consecutive edits with the same merge id and target
-/// (one drag of a slider or a handle) merge into one, named by the change from the first state
-/// to the last.
+/// One edit: what it changed (EditorDelta), applied to the document's present state by redo
+/// and taken back by undo. Consecutive edits with the same merge id and target (one drag of a
+/// slider or a handle) merge into one, named by the change from the first state to the last.
 class EditorCommand : public QUndoCommand {
 public:
-    EditorCommand(EditorDocument* doc, StatePtr before, StatePtr after, const QString& text, int mergeId,
-                  QString mergeKey, Describe describe)
+    EditorCommand(EditorDocument* doc, EditPtr edit, const QString& text, int mergeId, QString mergeKey,
+                  Describe describe)
         : QUndoCommand(text)
         , mDoc(doc)
-        , mBefore(std::move(before))
-        , mAfter(std::move(after))
+        , mEdit(std::move(edit))
         , mMergeId(mergeId < 0 ? -1 : mergeId)
         , mMergeKey(std::move(mergeKey))
         , mDescribe(std::move(describe)) {}
 
-    void undo() override { mDoc->restore(mBefore->design, mBefore->muted); }
-    void redo() override { mDoc->restore(mAfter->design, mAfter->muted); }
+    void undo() override { mDoc->applyEdit(*mEdit, false); }
+    void redo() override { mDoc->applyEdit(*mEdit, true); }
     int id() const override { return mMergeId; }
 
     bool mergeWith(const QUndoCommand* other) override {
         const auto* o = dynamic_cast<const EditorCommand*>(other);
         if (!o || o->mMergeId != mMergeId || o->mMergeKey != mMergeKey || mMergeKey.isEmpty()) return false;
-        mAfter = o->mAfter;
-        setText(mDescribe ? mDescribe(*mBefore, *mAfter) : o->text());
+        // QUndoStack::push has applied `other`: the document is at the merged edit's end, and
+        // its start is found by taking both edits back.
+        const EditorState after{mDoc->mDesign, mDoc->mMuted};
+        EditorState before = after;
+        o->mEdit->step(before, false);
+        mEdit->step(before, false);
+        mEdit = std::make_shared<const EditorDelta>(EditorDelta::between(before, after));
+        setText(mDescribe ? mDescribe(before, after) : o->text());
         // A drag that ends where it began (a colour dialog cancelled) leaves no entry behind,
         // and the design as clean as it was.
-        setObsolete(*mBefore == *mAfter);
+        setObsolete(before == after);
         return true;
     }
 
-    /// Pushes an edit of `doc` from its present state to `after` (applying it); an edit that
-    /// changes nothing is no command. Undone edits the push drops are kept as a branch first.
-    static void push(EditorDocument* doc, QUndoStack* stack, EditorState before, EditorState after,
-                     const QString& text, int mergeId = -1, QString mergeKey = {}, Describe describe = {}) {
+    /// Pushes an edit of `doc` from its present state `before` to `after` (applying it); an
+    /// edit that changes nothing is no command. Undone edits the push drops are kept as a
+    /// branch first.
+    static void push(EditorDocument* doc, QUndoStack* stack, const EditorState& before,
+                     const EditorState& after, const QString& text, int mergeId = -1, QString mergeKey = {},
+                     Describe describe = {}) {
         if (before == after) return;
         // A bath that wraps holds only steps that commute with the wrap: the file would not load
         // again otherwise (docs/genome-format.md, "Wrapping bath").
@@ -288,19 +456,16 @@ public:
             }
         }
         doc->keepRedoBranch();
-        // The state before is the one the stack is at: shared, so that lines can be compared.
-        StatePtr from = doc->currentState();
-        stack->push(new EditorCommand(doc, from, std::make_shared<const EditorState>(std::move(after)), text,
-                                      mergeId, std::move(mergeKey), std::move(describe)));
+        stack->push(
+            new EditorCommand(doc, std::make_shared<const EditorDelta>(EditorDelta::between(before, after)),
+                              text, mergeId, std::move(mergeKey), std::move(describe)));
     }
 
-    const StatePtr& before() const { return mBefore; }
-    const StatePtr& after() const { return mAfter; }
+    const EditPtr& edit() const { return mEdit; }
 
 private:
     EditorDocument* mDoc;
-    StatePtr mBefore;
-    StatePtr mAfter;
+    EditPtr mEdit;
     int mMergeId;
     QString mMergeKey; ///< what the edit changes ("step:3"): only edits of one target merge
     Describe mDescribe;
@@ -311,7 +476,7 @@ EditorDocument::EditorDocument(Genome design, QObject* parent)
     EditorState s = unpack(std::move(design));
     mDesign = std::move(s.design);
     mMuted = std::move(s.muted);
-    mOpened = std::make_shared<const EditorState>(EditorState{mDesign, mMuted});
+    mOpened = std::make_shared<const EditorDelta>();
     mSaved = mOpened;
     connect(&mUndo, &QUndoStack::cleanChanged, this, [this](bool clean) {
         if (!mQuiet) emit modifiedChanged(!clean);
@@ -582,28 +747,47 @@ void EditorDocument::noteFileOnDisk() {
     mDiskHash = mFileName.isEmpty() ? QByteArray() : hashOfFile(mFileName);
 }
 
-void EditorDocument::restore(const Genome& design, const std::vector<bool>& muted) {
-    const bool structural = stepsDiffer(mDesign, mMuted, design, muted);
-    mDesign = design;
-    mMuted = muted;
+void EditorDocument::applyEdit(const EditorDelta& edit, bool forward) {
+    // A history switch sets the state itself, at its end.
     if (mQuiet) return;
+    EditorState s{std::move(mDesign), std::move(mMuted)};
+    edit.step(s, forward);
+    mDesign = std::move(s.design);
+    mMuted = std::move(s.muted);
     emit changed();
-    if (structural) emit stepsChanged();
+    if (edit.structural()) emit stepsChanged();
+}
+
+std::size_t EditorDocument::historyBytes() const {
+    std::unordered_set<const EditorDelta*> seen;
+    std::size_t bytes = 0;
+    const auto count = [&](const EditPtr& e, const QString& text) {
+        bytes += sizeof(Line::Edit) + static_cast<std::size_t>(text.capacity()) * sizeof(QChar);
+        if (seen.insert(e.get()).second) bytes += e->bytes;
+    };
+    for (int k = 0; k < mUndo.count(); ++k) {
+        const auto* c = static_cast<const EditorCommand*>(mUndo.command(k));
+        count(c->edit(), c->text());
+    }
+    for (const auto& branch : mBranches)
+        for (const Line::Edit& e : branch->edits)
+            count(e.edit, e.text);
+    return bytes;
 }
 
 // ---- history as a tree ------------------------------------------------------------------------
 
-StatePtr EditorDocument::currentState() const {
+EditPtr EditorDocument::currentState() const {
     const int index = mUndo.index();
     if (index == 0) return mOpened;
-    return static_cast<const EditorCommand*>(mUndo.command(index - 1))->after();
+    return static_cast<const EditorCommand*>(mUndo.command(index - 1))->edit();
 }
 
 EditorDocument::Line EditorDocument::currentLine() const {
     Line line;
     for (int k = 0; k < mUndo.count(); ++k) {
         const auto* c = static_cast<const EditorCommand*>(mUndo.command(k));
-        line.edits.push_back({c->text(), c->before(), c->after()});
+        line.edits.push_back({c->text(), c->edit()});
     }
     return line;
 }
@@ -613,7 +797,7 @@ namespace {
 /// How many edits two lines share from their start (their states are shared, not copied).
 std::size_t sharedEdits(const EditorDocument::Line& a, const EditorDocument::Line& b) {
     std::size_t k = 0;
-    while (k < a.edits.size() && k < b.edits.size() && a.edits[k].after == b.edits[k].after)
+    while (k < a.edits.size() && k < b.edits.size() && a.edits[k].edit == b.edits[k].edit)
         ++k;
     return k;
 }
@@ -649,15 +833,25 @@ void EditorDocument::switchToBranch(std::size_t k) {
     const Line left = currentLine();
     if (sharedEdits(left, *target) < left.edits.size()) mBranches.push_back(std::make_shared<Line>(left));
 
-    // The stack is made anew from the branch's edits (their states shared, not copied), at its
-    // newest edit, clean where the saved state is on it; one change is signalled at the end.
+    // The branch's newest state: back from the present one to where the lines part, then
+    // forward along the branch.
+    EditorState s{std::move(mDesign), std::move(mMuted)};
+    const std::size_t fork = sharedEdits(left, *target);
+    std::size_t at = static_cast<std::size_t>(mUndo.index());
+    while (at > fork)
+        left.edits[--at].edit->step(s, false);
+    for (; at < target->edits.size(); ++at)
+        target->edits[at].edit->step(s, true);
+
+    // The stack is made anew from the branch's edits (shared, not copied), at its newest edit,
+    // clean where the saved state is on it; one change is signalled at the end.
     const bool wasModified = isModified();
     mQuiet = true;
     mUndo.clear();
     int cleanAt = mSaved == mOpened ? 0 : -1;
     for (const Line::Edit& e : target->edits) {
-        mUndo.push(new EditorCommand(this, e.before, e.after, e.text, -1, {}, {}));
-        if (mSaved && e.after == mSaved) cleanAt = mUndo.index();
+        mUndo.push(new EditorCommand(this, e.edit, e.text, -1, {}, {}));
+        if (mSaved && e.edit == mSaved) cleanAt = mUndo.index();
     }
     if (cleanAt >= 0) {
         const int tip = mUndo.index();
@@ -668,9 +862,8 @@ void EditorDocument::switchToBranch(std::size_t k) {
         mUndo.resetClean();
     }
     mQuiet = false;
-    const StatePtr now = currentState();
-    mDesign = now->design;
-    mMuted = now->muted;
+    mDesign = std::move(s.design);
+    mMuted = std::move(s.muted);
     emit changed();
     emit stepsChanged();
     if (wasModified != isModified()) emit modifiedChanged(isModified());

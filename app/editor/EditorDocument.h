@@ -28,6 +28,8 @@ namespace marbler::ui {
 
 /// One state of the document: the design and its muted flags (EditorDocument.cpp).
 struct EditorState;
+/// What one edit changed: the steps, flags and fields replaced (EditorDocument.cpp).
+struct EditorDelta;
 
 class EditorDocument : public QObject {
     Q_OBJECT
@@ -130,8 +132,12 @@ public:
     /// Makes branch `k` the current line, at its newest edit; the line left becomes a branch.
     /// One undo step is not made: the history itself is switched.
     void switchToBranch(std::size_t k);
-    /// One line of history: its edits in order, each the states before and after it.
+    /// One line of history: its edits in order, each what it changed.
     struct Line;
+
+    /// The bytes the history holds (the undo stack and every branch): it grows with what the
+    /// edits changed, not with the design's size, since only the present design is held whole.
+    std::size_t historyBytes() const;
 
 signals:
     /// The design changed (any edit, undo or redo).
@@ -147,21 +153,23 @@ signals:
 
 private:
     friend class EditorCommand;
-    /// Applies a new state (design and muted flags); used by the commands' undo and redo.
-    void restore(const Genome& design, const std::vector<bool>& muted);
+    /// Applies an edit to the present state (forward) or takes it back; the commands' undo and
+    /// redo.
+    void applyEdit(const EditorDelta& edit, bool forward);
     /// Before an edit is pushed: a redo tail that the push would drop is kept as a branch.
     void keepRedoBranch();
     Line currentLine() const;
-    /// The state the stack is at now, as shared by its commands (the opened state at index 0).
-    std::shared_ptr<const EditorState> currentState() const;
+    /// The edit the stack is at now, as shared by its commands and branches (mOpened at index
+    /// 0): a state is known by the edit that reached it.
+    std::shared_ptr<const EditorDelta> currentState() const;
 
     Genome mDesign;
     std::vector<bool> mMuted; ///< one flag a step
     QUndoStack mUndo;
     QString mFileName;
     QByteArray mDiskHash;                       ///< the file's bytes (a hash) as last read or written
-    std::shared_ptr<const EditorState> mOpened; ///< the state at the start of every line
-    std::shared_ptr<const EditorState> mSaved;  ///< the state last saved (null: none kept)
+    std::shared_ptr<const EditorDelta> mOpened; ///< stands for the state at the start of every line
+    std::shared_ptr<const EditorDelta> mSaved;  ///< the edit that reached the state last saved (null: none)
     std::vector<std::shared_ptr<Line>> mBranches;
     bool mQuiet = false; ///< a history switch in progress: signals once at its end
 

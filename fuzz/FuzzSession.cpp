@@ -1,0 +1,73 @@
+// libFuzzer target: bytes from the fuzzer as a breeding session file (workbench/Session.h), as a
+// session folder copied from another machine or damaged by a crash can hold. parseSession must
+// read it or refuse it with an InputError (a GenomeError naming the generation and cell); what
+// it accepts must hold the promises the window relies on (a current generation that exists,
+// parents earlier than their children, nine cells each, designs that save and read back). Any
+// other exception, a crash, a sanitizer report or a hang is a finding. Qt is Debian's, not
+// instrumented: coverage comes from Marbler's own code (Session.cpp, PopulationModel.cpp and the
+// genome reader), which is.
+
+#include "marbler/Error.h"
+#include "marbler/GenomeIO.h"
+#include "workbench/Session.h"
+
+#include <QCoreApplication>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace {
+
+[[noreturn]] void sessionFinding(const char* what, const std::string& detail = {}) {
+    std::fprintf(stderr, "fuzz_session: %s\n%s\n", what, detail.c_str());
+    std::abort();
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
+    // QString, QDateTime and QFileInfo need no application, but the window always has one: read
+    // sessions as it does.
+    static std::unique_ptr<QCoreApplication> app = std::make_unique<QCoreApplication>(*argc, *argv);
+    // A line a skipped file or step logs is the expected outcome, not worth printing a million times.
+    qInstallMessageHandler([](QtMsgType, const QMessageLogContext&, const QString&) {});
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    marbler::ui::SavedSession session;
+    try {
+        session = marbler::ui::parseSession(text, "fuzz.json");
+    } catch (const marbler::InputError&) {
+        return 0; // refused, with its message: the expected outcome for most inputs
+    } catch (const std::exception& e) {
+        sessionFinding("an exception other than InputError", e.what());
+    }
+    if (session.history.empty()) sessionFinding("an accepted session without generations");
+    if (session.current < 0 || std::size_t(session.current) >= session.history.size())
+        sessionFinding("an accepted session whose current generation does not exist");
+    if (session.dimension != 2 && session.dimension != 3)
+        sessionFinding("an accepted session of dimension not 2 or 3");
+    for (std::size_t k = 0; k < session.history.size(); ++k) {
+        const auto& g = session.history[k];
+        if (g.parent >= int(k) || (k == 0 && g.parent != -1) || (k > 0 && g.parent < 0))
+            sessionFinding("an accepted generation whose parent is not an earlier one", std::to_string(k));
+        for (const auto& cell : g.cells) {
+            if (!cell) continue;
+            // A design the session held is a genome file's design: it saves and reads back.
+            try {
+                const std::string saved = marbler::serializeGenome(*cell);
+                if (!(marbler::parseGenome(saved, "saved") == *cell))
+                    sessionFinding("a session's design that does not read back as saved", saved);
+            } catch (const marbler::Error& e) {
+                sessionFinding("a session's design that does not save and read back", e.what());
+            }
+        }
+    }
+    return 0;
+}
