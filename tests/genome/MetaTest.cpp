@@ -191,6 +191,24 @@ TEST(Meta, AChildKeepsItsParentsKeysBetweenItsNameAndItsLineage) {
                                      R"j("family":"f","lineage":{"generation":3},"id":"bb"})j");
 }
 
+// Issue 29: a design carries the user's note (meta.note), read, written and kept, by its bred
+// children too (as every key but name, seed, generator, id and lineage).
+TEST(Meta, ANoteIsReadWrittenAndKept) {
+    const auto meta = Meta::fromJson(
+        nlohmann::ordered_json::parse(R"({"name": "Harbour Green", "note": "for the scarf"})"));
+    ASSERT_TRUE(meta.note.has_value());
+    EXPECT_EQ(*meta.note, "for the scarf");
+    EXPECT_EQ(meta.toJson().dump(), R"({"name":"Harbour Green","note":"for the scarf"})");
+    EXPECT_EQ(meta.keptByChild().note.value_or(""), "for the scarf");
+    Meta erased = meta;
+    erased.erase(MetaKey::Note);
+    EXPECT_EQ(erased.toJson().dump(), R"({"name":"Harbour Green"})");
+    // A note that is no string is kept as it was, not read.
+    const auto odd = Meta::fromJson(nlohmann::ordered_json::parse(R"({"note": 3})"));
+    EXPECT_FALSE(odd.note.has_value());
+    EXPECT_EQ(odd.toJson().dump(), R"({"note":3})");
+}
+
 TEST(Meta, EveryExampleKeepsItsBytesThroughLoadAndSave) {
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(test::dataDir() / "examples"))
