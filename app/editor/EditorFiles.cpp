@@ -90,7 +90,8 @@ QString EditorFiles::displayName() const {
     // A design named other than its file says both: renamed, the title follows.
     const QString name = lineageOf(mDocument->design()).name;
     const QString fileName = QFileInfo(file).fileName();
-    if (name.isEmpty() || fileName == name + QStringLiteral(".marble.json")) return fileName;
+    if (name.isEmpty() || name == tr("Untitled design") || fileName == name + QStringLiteral(".marble.json"))
+        return fileName;
     return tr("%1 (%2)").arg(name, fileName);
 }
 
