@@ -14,6 +14,7 @@
 #include "shared/ErrorReport.h"
 #include "shared/Help.h"
 #include "shared/Lineage.h"
+#include "shared/RenameDialog.h"
 #include "shared/SavedFiles.h"
 
 #include <QAction>
@@ -86,7 +87,13 @@ EditorFiles::EditorFiles(EditorDocument* document, QWidget* window, std::functio
 
 QString EditorFiles::displayName() const {
     const QString file = mDocument->fileName();
-    return file.isEmpty() ? nameOf(mDocument->design()) : QFileInfo(file).fileName();
+    if (file.isEmpty()) return nameOf(mDocument->design());
+    // A design named other than its file says both: renamed, the title follows.
+    const QString name = lineageOf(mDocument->design()).name;
+    const QString fileName = QFileInfo(file).fileName();
+    if (name.isEmpty() || name == tr("Untitled design") || fileName == name + QStringLiteral(".marble.json"))
+        return fileName;
+    return tr("%1 (%2)").arg(name, fileName);
 }
 
 bool EditorFiles::save() {
@@ -146,6 +153,11 @@ bool EditorFiles::saveAs() {
     const QString file = withDesignExtension(chosen);
     if (file != chosen && !mayOverwrite(file)) return false;
     QSettings().setValue(QStringLiteral("files/saveDir"), QFileInfo(file).absolutePath());
+    // A file name the user typed (not the one offered) names the design, one undo step: reopened,
+    // it is called what its file is.
+    Genome named = mDocument->fileGenome();
+    if (QFileInfo(file).fileName() != QFileInfo(suggested).fileName() && adoptFileName(named, file))
+        mDocument->replaceDesign(named, tr("Name “%1”").arg(QString::fromStdString(*named.meta.name)));
     return saveTo(file);
 }
 

@@ -21,6 +21,7 @@
 #include "shared/Help.h"
 #include "shared/Language.h"
 #include "shared/Lineage.h"
+#include "shared/RenameDialog.h"
 #include "shared/RenderService.h"
 #include "shared/SectionControls.h"
 #include "shared/StartDialog.h"
@@ -325,6 +326,11 @@ void EditorWindow::buildMenus() {
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
+    QAction* rename = edit->addAction(tr("Re&name…"), this, [this] { renameDesign(); });
+    rename->setObjectName(QStringLiteral("renameDesignAction"));
+    rename->setShortcut(QKeySequence(Qt::Key_F2));
+    rename->setStatusTip(tr("Names the design and gives it a note (one undo step)"));
+    edit->addSeparator();
     // The step list's own actions (Ctrl+D, Del, M), for the whole window: one action a key, as
     // two with the same key would be ambiguous where both apply and neither would run.
     for (QAction* action : mSteps->actions()) {
@@ -460,6 +466,8 @@ void EditorWindow::wireDocument() {
         refreshForm();
         updateWrap();
     });
+    // A rename (and its undo) changes the title.
+    connect(mDocument, &EditorDocument::changed, this, &EditorWindow::updateTitle);
 
     // Gestures: one drag, one step.
     connect(mCanvas, &EditorCanvas::stepsMade, this,
@@ -743,6 +751,16 @@ void EditorWindow::updateTitle() {
 
 bool EditorWindow::save() {
     return mFiles->save();
+}
+
+RenameDialog* EditorWindow::renameDesign() {
+    return askRename(this, mDocument->design(), [this](const QString& name, const QString& note) {
+        Genome named = mDocument->fileGenome();
+        setNameAndNote(named, name, note);
+        if (named.meta == mDocument->fileGenome().meta) return;
+        mDocument->replaceDesign(named, tr("Rename to “%1”").arg(name));
+        statusBar()->showMessage(tr("Renamed to “%1”").arg(name), 4000);
+    });
 }
 
 bool EditorWindow::saveAs() {

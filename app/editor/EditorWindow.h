@@ -45,6 +45,7 @@ class SectionControls;
 class EditorCanvas;
 class ParamForm;
 class PaletteEditor;
+class RenameDialog;
 class RenderService;
 class StepList;
 class Timeline;
@@ -92,6 +93,9 @@ public:
     /// File ▸ Save, Save as…, Reload and the design into an image (EditorFiles.h).
     bool save();
     bool saveAs();
+    /// Edit ▸ Rename… (F2): asks for the design's name and note (not modal); the rename is one
+    /// undo step and the title follows. Returns the dialog.
+    RenameDialog* renameDesign();
     bool saveTo(const QString& file);
     bool reloadFromDisk();
     bool writeDesignImage(const QString& image);

@@ -9,6 +9,7 @@
 #include "shared/ErrorReport.h"
 #include "shared/GenomeClipboard.h"
 #include "shared/Lineage.h"
+#include "shared/RenameDialog.h"
 #include "shared/RenderService.h"
 #include "shared/SavedFiles.h"
 #include "shared/SectionControls.h"
@@ -122,7 +123,14 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     connect(editor, &QPushButton::clicked, this, [this] { emit openInEditorRequested(mGenome); });
     auto* close = new QPushButton(tr("Close"), this);
     connect(save, &QPushButton::clicked, this, [this] {
-        if (const QString file = saveGenomeWithDialog(this, mGenome); !file.isEmpty()) emit fileSaved(file);
+        Genome saved;
+        const QString file = saveGenomeWithDialog(this, mGenome, &saved);
+        if (file.isEmpty()) return;
+        if (saved.meta.name != mGenome.meta.name) {
+            rename(QString::fromStdString(saved.meta.name.value_or("")), noteOf(saved));
+            emit renamed(mGenome);
+        }
+        emit fileSaved(file);
     });
     connect(exportButton, &QPushButton::clicked, this, &DesignDialog::exportImage);
     connect(copy, &QPushButton::clicked, this, &DesignDialog::copyGenome);
@@ -142,6 +150,11 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     addKey(QStringLiteral("repeatSwatchAction"), QKeySequence(Qt::Key_R), mSwatchButton);
     addKey(QStringLiteral("openInEditorAction"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D), editor);
     if (mSectionButton) addKey(QStringLiteral("showSectionAction"), QKeySequence(Qt::Key_S), mSectionButton);
+    auto* renameAction = new QAction(tr("Rename…"), this);
+    renameAction->setObjectName(QStringLiteral("renameDesignAction"));
+    renameAction->setShortcut(QKeySequence(Qt::Key_F2));
+    connect(renameAction, &QAction::triggered, this, [this] { askName(); });
+    addAction(renameAction);
     connect(close, &QPushButton::clicked, this, &QDialog::close);
 
     auto* buttons = new QHBoxLayout;
@@ -341,7 +354,19 @@ bool DesignDialog::isExporting() const {
     return mExport->isRunning();
 }
 
-QString saveGenomeWithDialog(QWidget* parent, const Genome& genome) {
+RenameDialog* DesignDialog::askName() {
+    return askRename(this, mGenome, [this](const QString& name, const QString& note) {
+        rename(name, note);
+        emit renamed(mGenome);
+    });
+}
+
+void DesignDialog::rename(const QString& name, const QString& note) {
+    setNameAndNote(mGenome, name, note);
+    setWindowTitle(tr("Design %1").arg(name));
+}
+
+QString saveGenomeWithDialog(QWidget* parent, const Genome& genome, Genome* saved) {
     QSettings settings;
     const QString suggested = suggestedFile(
         genome, settings.value(QStringLiteral("files/saveDir")).toString(), QStringLiteral(".marble.json"));
@@ -350,7 +375,12 @@ QString saveGenomeWithDialog(QWidget* parent, const Genome& genome) {
     if (file.isEmpty()) return {};
     if (!file.endsWith(QStringLiteral(".json"))) file += QStringLiteral(".marble.json");
     settings.setValue(QStringLiteral("files/saveDir"), QFileInfo(file).absolutePath());
-    return saveGenomeTo(parent, genome, file) ? file : QString();
+    // A file name the user typed names the design: reopened, it is called what its file is.
+    Genome named = genome;
+    if (QFileInfo(file).fileName() != QFileInfo(suggested).fileName()) adoptFileName(named, file);
+    if (!saveGenomeTo(parent, named, file)) return {};
+    if (saved) *saved = std::move(named);
+    return file;
 }
 
 bool saveGenomeTo(QWidget* parent, const Genome& genome, const QString& file) {

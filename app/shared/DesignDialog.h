@@ -21,6 +21,7 @@ namespace marbler::ui {
 
 class DesignExport;
 class DesignView;
+class RenameDialog;
 class RenderService;
 class SectionControls;
 
@@ -99,6 +100,10 @@ public:
     /// section shown. Flat designs ignore it.
     void setSection(const std::optional<Slice>& slice);
     const std::optional<Slice>& section() const;
+    /// F2: asks for the design's name and note (not modal); returns the dialog.
+    RenameDialog* askName();
+    /// Names the design shown (meta.name, meta.note) and says so in the title; no signal.
+    void rename(const QString& name, const QString& note);
 
 signals:
     /// The user turned the solid object; the angle is already in genome()'s meta.view.
@@ -113,6 +118,9 @@ signals:
     void exportFinished(const QString& file, bool written, const QString& error);
     /// "Open in editor": the workbench opens the design in an editor window.
     void openInEditorRequested(const marbler::Genome& design);
+    /// The user named the design (F2, or Save genome under a name of their own); genome() has the
+    /// name and note. The window may give another name (unique in its session) with rename().
+    void renamed(const marbler::Genome& design);
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;
@@ -135,7 +143,9 @@ private:
 /// Asks for a file name (offering the design's name made safe, in the folder used last) and saves
 /// the genome atomically; errors are reported. Returns the file written, empty when cancelled or
 /// failed.
-QString saveGenomeWithDialog(QWidget* parent, const Genome& genome);
+/// When the user typed a file name of their own, the design saved takes it as its name
+/// (adoptFileName, RenameDialog.h); `saved`, when given, receives the design as written.
+QString saveGenomeWithDialog(QWidget* parent, const Genome& genome, Genome* saved = nullptr);
 /// Saves the genome atomically to a file; errors are reported. Returns success.
 bool saveGenomeTo(QWidget* parent, const Genome& genome, const QString& file);
 

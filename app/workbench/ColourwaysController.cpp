@@ -7,19 +7,40 @@
 
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
+#include "marbler/ImageFile.h"
 #include "marbler/Sheet.h"
 
 #include <QAction>
 #include <QFileInfo>
 #include <QMainWindow>
 #include <QMenu>
+#include <QPainter>
 #include <QProgressDialog>
+#include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
 
 #include <algorithm>
 
 namespace marbler::ui {
+
+void drawSheetTexts(Image& sheet, const std::vector<SheetText>& texts) {
+    // Painted straight into the sheet's pixels (a QImage over its buffer), on the job's thread.
+    QImage image(sheet.rgb.data(), sheet.width, sheet.height, sheet.width * 3, QImage::Format_RGB888);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    for (const SheetText& text : texts) {
+        QFont font = painter.font();
+        font.setPixelSize(std::max(8, text.height * 7 / 10));
+        painter.setFont(font);
+        // Dark on a light sheet: the sheet's paper is white.
+        painter.setPen(QColor(0x33, 0x33, 0x33));
+        const QRect box(text.x, text.y, text.width, text.height);
+        const QString line = QString::fromStdString(text.text);
+        painter.drawText(box, Qt::AlignLeft | Qt::AlignVCenter,
+                         painter.fontMetrics().elidedText(line, Qt::ElideRight, box.width()));
+    }
+}
 
 ColourwaysController::ColourwaysController(QMainWindow* window, PopulationModel* model,
                                            std::function<QAction*(GeneticOperator)> operatorAction,
@@ -42,7 +63,15 @@ void ColourwaysController::buildActions(QMenu* breedMenu, QToolBar* bar) {
     connect(mMode, &QAction::toggled, this, &ColourwaysController::onToggled);
     mExportSheet = breedMenu->addAction(tr("&Export colourway sheet…"), this, [this] { exportSheet(); });
     mExportSheet->setObjectName(QStringLiteral("exportSheetAction"));
-    mExportSheet->setStatusTip(tr("The grid's designs side by side in one PNG or TIFF image"));
+    mExportSheet->setStatusTip(tr("The grid's designs side by side in one PNG or TIFF image, each named"));
+    mSheetChips = breedMenu->addAction(tr("Colourway sheet with ink c&hips"));
+    mSheetChips->setObjectName(QStringLiteral("sheetChipsAction"));
+    mSheetChips->setCheckable(true);
+    mSheetChips->setChecked(QSettings().value(QStringLiteral("sheet/chips"), false).toBool());
+    mSheetChips->setStatusTip(
+        tr("Put each design's inks, with their hex values, under its name on the sheet"));
+    connect(mSheetChips, &QAction::toggled, this,
+            [](bool on) { QSettings().setValue(QStringLiteral("sheet/chips"), on); });
     bar->addAction(mMode);
 }
 
@@ -145,9 +174,14 @@ bool ColourwaysController::exportSheet(const QString& chosen) {
     }
     QString file = chosen;
     if (file.isEmpty()) {
-        file = askSaveFile(mWindow, tr("Export colourway sheet"),
-                           suggestedFile(designs.front(), {}, QStringLiteral(" colourways.png")),
-                           tr("PNG image (*.png);;TIFF image (*.tif *.tiff)"));
+        // Named after the design the colourways are of: the generation's parent when it was bred.
+        const Genome* parent = nullptr;
+        for (int i : mModel->current().parentCells)
+            if (!parent) parent = mModel->cell(i);
+        file = askSaveFile(
+            mWindow, tr("Export colourway sheet"),
+            suggestedFile(parent ? *parent : designs.front(), {}, QStringLiteral(" colourways.png")),
+            tr("PNG image (*.png);;TIFF image (*.tif *.tiff)"));
         if (file.isEmpty()) return false;
     }
     if (QFileInfo(file).suffix().isEmpty()) file += QStringLiteral(".png");
@@ -156,6 +190,8 @@ bool ColourwaysController::exportSheet(const QString& chosen) {
     settings.cellWidth = mSheetCellWidth;
     settings.gap = std::max(4, mSheetCellWidth / 25);
     settings.aa = "rgss";
+    settings.labels = true;
+    settings.chips = mSheetChips && mSheetChips->isChecked();
     try {
         sheetLayout(designs, settings); // a bad layout is said before any work starts
     } catch (const Error& e) {
@@ -173,7 +209,9 @@ bool ColourwaysController::exportSheet(const QString& chosen) {
     BackgroundJob* job = BackgroundJob::start(
         this, box,
         [designs = std::move(designs), settings, path](const RenderControl& control) {
-            writeSheet(designs, settings, path, &control);
+            Image sheet = renderSheet(designs, settings, &control);
+            drawSheetTexts(sheet, sheetTexts(designs, sheetLayout(designs, settings), settings));
+            writeImage(sheet, path);
         },
         [this, file](const JobOutcome& outcome) {
             mSheetRunning = false;

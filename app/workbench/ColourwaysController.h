@@ -5,6 +5,7 @@
 /// actions and the sheet's state; the window asks it before breeding and when its actions change.
 
 #include "marbler/Operators.h"
+#include "marbler/Sheet.h"
 
 #include <QObject>
 #include <QString>
@@ -20,6 +21,9 @@ namespace marbler::ui {
 
 class PopulationModel;
 
+/// Draws a sheet's label texts (sheetTexts, Sheet.h) into its pixels with the window's font.
+void drawSheetTexts(Image& sheet, const std::vector<SheetText>& texts);
+
 class ColourwaysController : public QObject {
     Q_OBJECT
 public:
@@ -34,6 +38,9 @@ public:
     void buildActions(QMenu* breedMenu, QToolBar* bar);
     QAction* modeAction() const { return mMode; }
     QAction* exportSheetAction() const { return mExportSheet; }
+    /// Breed ▸ Colourway sheet with ink chips: each design's inks and their hex values under its
+    /// name on the sheet (remembered).
+    QAction* sheetChipsAction() const { return mSheetChips; }
 
     bool isOn() const;
     void setOn(bool on);
@@ -61,6 +68,7 @@ private:
     std::function<void(const QString&)> mNoteSavedFile;
     QAction* mMode = nullptr;
     QAction* mExportSheet = nullptr;
+    QAction* mSheetChips = nullptr;
     int mSheetCellWidth = 600;
     bool mSheetRunning = false;
 };

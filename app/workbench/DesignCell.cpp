@@ -28,10 +28,22 @@ DesignCell::DesignCell(int index, QWidget* parent)
 }
 
 void DesignCell::setChange(const QString& change) {
-    const QString help =
-        tr("Click to choose as a parent, double-click to open large, right-click for locks and "
-           "favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.");
-    setToolTip(change.isEmpty() ? help : tr("Changed: %1\n\n%2").arg(change, help));
+    mChange = change;
+    updateToolTip();
+}
+
+void DesignCell::setNote(const QString& note) {
+    mNote = note;
+    updateToolTip();
+}
+
+void DesignCell::updateToolTip() {
+    QString tip =
+        tr("Click to choose as a parent, double-click to open large, F2 to rename, right-click for "
+           "locks and favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.");
+    if (!mChange.isEmpty()) tip = tr("Changed: %1\n\n%2").arg(mChange, tip);
+    if (!mNote.isEmpty()) tip = tr("Note: %1\n\n%2").arg(mNote, tip);
+    setToolTip(tip);
 }
 
 void DesignCell::setImage(const QImage& image) {
@@ -225,6 +237,9 @@ void DesignCell::keyPressEvent(QKeyEvent* event) {
         break;
     case Qt::Key_F:
         emit favouriteRequested(mIndex);
+        break;
+    case Qt::Key_F2:
+        if (mHasDesign) emit renameRequested(mIndex);
         break;
     case Qt::Key_Menu:
         emit contextMenuRequested(mIndex, mapToGlobal(rect().center()));

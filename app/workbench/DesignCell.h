@@ -33,6 +33,8 @@ public:
     /// What the design changed from its parent in words (meta.lineage.change), said first in the
     /// cell's tooltip; empty for a design that was not bred.
     void setChange(const QString& change);
+    /// The user's note on the design (meta.note), said first in the cell's tooltip.
+    void setNote(const QString& note);
     /// Whether the design has a lock: a padlock drawn at the caption's end (drawn, not a
     /// character, so it shows without an emoji font).
     void setLocked(bool locked);
@@ -51,6 +53,8 @@ signals:
     void clicked(int index);
     void openRequested(int index);
     void favouriteRequested(int index);
+    /// F2: name the design.
+    void renameRequested(int index);
     void contextMenuRequested(int index, const QPoint& globalPos);
     /// Arrow keys: move the focus by (dx, dy) cells.
     void focusMoveRequested(int index, int dx, int dy);
@@ -76,10 +80,14 @@ protected:
     void focusOutEvent(QFocusEvent* event) override;
 
 private:
+    void updateToolTip();
+
     int mIndex;
     QImage mImage;
     QString mCaption;
     QString mError;
+    QString mChange;
+    QString mNote;
     bool mHasDesign = false;
     bool mSelected = false;
     bool mLocked = false;

@@ -3,6 +3,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "shared/ErrorReport.h"
+#include "shared/RenameDialog.h"
 #include "shared/RenderService.h"
 #include "workbench/DesignCell.h"
 #include "workbench/LineagePanel.h"
@@ -132,7 +133,10 @@ void FavouritesShelf::update() {
     for (std::size_t i = 0; i < favourites.size(); ++i) {
         const LineageInfo info = lineageOf(favourites[i].genome);
         auto* item = new QListWidgetItem(info.displayName(), mList);
-        item->setToolTip(QStringLiteral("%1\n%2").arg(item->text(), favourites[i].file));
+        const QString note = noteOf(favourites[i].genome);
+        item->setToolTip(note.isEmpty()
+                             ? QStringLiteral("%1\n%2").arg(item->text(), favourites[i].file)
+                             : QStringLiteral("%1\n%2\n%3").arg(item->text(), note, favourites[i].file));
         item->setIcon(placeholder);
         RenderRequest request;
         request.genome = favourites[i].genome;
@@ -167,11 +171,28 @@ void FavouritesShelf::showMenu(const QPoint& pos) {
     if (QListWidgetItem* item = mList->itemAt(pos)) {
         const int row = mList->row(item);
         menu.addAction(tr("Put into the grid"), this, [this, row] { emit restoreRequested(row); });
+        menu.addAction(tr("Rename…"), this, [this, row] { rename(row); })
+            ->setShortcut(QKeySequence(Qt::Key_F2));
         menu.addAction(tr("Remove from favourites"), this, [this, row] { remove(row); });
         menu.addSeparator();
     }
     menu.addAction(mRestore);
     menu.exec(mList->viewport()->mapToGlobal(pos));
+}
+
+RenameDialog* FavouritesShelf::rename(int favourite) {
+    const auto& favourites = mModel->favourites();
+    if (favourite < 0 || favourite >= int(favourites.size())) return nullptr;
+    const QString file = favourites[std::size_t(favourite)].file;
+    return askRename(mWindow, favourites[std::size_t(favourite)].genome,
+                     [this, favourite, file](const QString& name, const QString& note) {
+                         const auto& now = mModel->favourites();
+                         // The shelf changed meanwhile: the favourite is found by its file.
+                         if (favourite >= int(now.size()) || now[std::size_t(favourite)].file != file) return;
+                         if (mModel->renameFavourite(favourite, name, note).isEmpty())
+                             reportError(mWindow, tr("Cannot rename the favourite"),
+                                         tr("%1 could not be written").arg(QDir::toNativeSeparators(file)));
+                     });
 }
 
 bool FavouritesShelf::remove(int favourite) {

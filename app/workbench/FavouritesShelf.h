@@ -23,6 +23,7 @@ class QStatusBar;
 namespace marbler::ui {
 
 class PopulationModel;
+class RenameDialog;
 class RenderService;
 
 class FavouritesShelf : public QObject {
@@ -54,6 +55,9 @@ public:
     bool keep(int cell);
     /// Removes a favourite (into the trash), saying how to undo it.
     bool remove(int favourite);
+    /// F2 or "Rename…": asks for a favourite's name and note; its file is written again with
+    /// them. Returns the dialog (not modal), or nullptr when there is no such favourite.
+    RenameDialog* rename(int favourite);
     /// Brings back the favourite removed last; false when there is none or it cannot be.
     bool restoreRemoved();
     /// The list anew from the model, thumbnails asked for.

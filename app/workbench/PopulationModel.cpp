@@ -5,6 +5,7 @@
 #include "marbler/Families.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
+#include "shared/RenameDialog.h"
 #include "workbench/Session.h"
 #include "workbench/Trash.h"
 
@@ -415,7 +416,81 @@ void PopulationModel::setCellView(int index, const ViewAngle& view) {
     autosave();
 }
 
+void PopulationModel::uniqueNames(Generation& generation) const {
+    // Two different designs of a session never share a name: two branches both breed a
+    // "(g4 #1)", a family draws the same words twice. The same design again keeps its name.
+    std::map<std::string, std::vector<const Genome*>> named;
+    const auto add = [&](const Genome& g) {
+        if (g.meta.name) named[*g.meta.name].push_back(&g);
+    };
+    for (const Generation& earlier : mHistory)
+        for (const auto& design : earlier.cells)
+            if (design) add(*design);
+    for (const Favourite& f : mFavourites)
+        add(f.genome);
+    const auto idOf = [](const Genome& g) { return g.meta.id ? *g.meta.id : genomeId(g); };
+    for (auto& design : generation.cells) {
+        if (!design || !design->meta.name) continue;
+        auto found = named.find(*design->meta.name);
+        if (found != named.end()) {
+            const std::string id = idOf(*design);
+            const bool other = std::any_of(found->second.begin(), found->second.end(),
+                                           [&](const Genome* g) { return idOf(*g) != id; });
+            if (other) {
+                std::set<std::string> taken;
+                for (const auto& entry : named)
+                    taken.insert(entry.first);
+                design->meta.name = uniqueName(*design->meta.name, taken);
+            }
+        }
+        add(*design);
+    }
+}
+
+std::set<std::string> PopulationModel::sessionNames(const std::string& except) const {
+    std::set<std::string> names;
+    const auto add = [&](const Genome& g) {
+        if (g.meta.name && (except.empty() || genomeId(g) != except)) names.insert(*g.meta.name);
+    };
+    for (const Generation& generation : mHistory)
+        for (const auto& design : generation.cells)
+            if (design) add(*design);
+    for (const Favourite& f : mFavourites)
+        add(f.genome);
+    return names;
+}
+
+QString PopulationModel::renameCell(int index, const QString& name, const QString& note, bool exact) {
+    if (!cell(index)) return {};
+    Genome& design = *currentMutable().cells[std::size_t(index)];
+    const QString given =
+        exact ? name : QString::fromStdString(uniqueName(name.toStdString(), sessionNames(genomeId(design))));
+    setNameAndNote(design, given, note);
+    if (std::size_t(mCurrent) < mSessionCells.size()) mSessionCells[std::size_t(mCurrent)].clear();
+    emit cellChanged(index);
+    autosave();
+    return given;
+}
+
+QString PopulationModel::renameFavourite(int index, const QString& name, const QString& note) {
+    if (index < 0 || index >= int(mFavourites.size())) return {};
+    Favourite& f = mFavourites[std::size_t(index)];
+    Genome renamed = f.genome;
+    const QString given =
+        QString::fromStdString(uniqueName(name.toStdString(), sessionNames(genomeId(renamed))));
+    setNameAndNote(renamed, given, note);
+    try {
+        saveGenome(renamed, f.file.toStdString());
+    } catch (const Error&) {
+        return {};
+    }
+    f.genome = std::move(renamed);
+    emit favouritesChanged();
+    return given;
+}
+
 void PopulationModel::pushGeneration(Generation generation) {
+    uniqueNames(generation);
     if (mEmptyStart) {
         // The first designs replace the empty placeholder: they are generation 1.
         mEmptyStart = false;

@@ -172,6 +172,17 @@ public:
     /// Changes the angle a cell's solid design is seen from, in place like the locks (the
     /// angle lives in the design's meta.view, so it travels with it).
     void setCellView(int index, const ViewAngle& view);
+    /// Names a cell's design (meta.name, and meta.note; an empty note removes it), in place like
+    /// the locks. A name another design of the session has (any generation, a favourite) gets a
+    /// number: a second "Harbour Green" is "Harbour Green 2". With `exact`, the name is kept as
+    /// given (a file name the user chose). Returns the name given; empty when the cell is empty.
+    QString renameCell(int index, const QString& name, const QString& note, bool exact = false);
+    /// Names a favourite, its file written again; the name made unique as renameCell does.
+    /// Returns the name given; empty when there is no such favourite or its file cannot be written.
+    QString renameFavourite(int index, const QString& name, const QString& note);
+    /// Every name the session's designs have (all generations, the favourites), but those of the
+    /// design with id `except` (a design keeps its own name).
+    std::set<std::string> sessionNames(const std::string& except = {}) const;
 
     /// Generation history: every generation in the order they were made (a child always after
     /// its parent), each naming its parent.
@@ -263,6 +274,8 @@ private:
     /// Adds a generation as a child of the current one (a root when it replaces the empty
     /// placeholder) and makes it current.
     void pushGeneration(Generation generation);
+    /// Gives a new generation's designs names no other design of the session has.
+    void uniqueNames(Generation& generation) const;
     /// The wildcard that takes the place of `replaced`, the last offspring of `request`.
     Genome wildcard(const BreedRequest& request, const Genome& replaced) const;
     /// The generation goForward() goes to, -1 when the current one has no child.

@@ -15,6 +15,7 @@
 #include "shared/GenomeClipboard.h"
 #include "shared/Help.h"
 #include "shared/Language.h"
+#include "shared/RenameDialog.h"
 #include "shared/RenderService.h"
 #include "shared/SavedFiles.h"
 #include "shared/StartDialog.h"
@@ -54,6 +55,7 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QRandomGenerator>
+#include <QRegularExpression>
 #include <QScrollBar>
 #include <QSettings>
 #include <QSignalBlocker>
@@ -101,6 +103,7 @@ WorkbenchWindow::WorkbenchWindow(RenderService* renderer, QWidget* parent)
         connect(cell, &DesignCell::openRequested, this, &WorkbenchWindow::openDesign);
         connect(cell, &DesignCell::favouriteRequested, this, &WorkbenchWindow::keepFavourite);
         connect(cell, &DesignCell::contextMenuRequested, this, &WorkbenchWindow::showCellMenu);
+        connect(cell, &DesignCell::renameRequested, this, [this](int i) { renameDesign(i); });
         connect(cell, &DesignCell::focusMoveRequested, this, &WorkbenchWindow::onFocusMove);
         connect(cell, &DesignCell::orbitDragged, this, &WorkbenchWindow::onOrbit);
         connect(cell, &DesignCell::filesDropped, this,
@@ -285,6 +288,10 @@ void WorkbenchWindow::buildActions() {
     mPasteDesign->setObjectName(QStringLiteral("pasteDesignAction"));
     mPasteDesign->setShortcut(QKeySequence::Paste);
     mPasteDesign->setStatusTip(tr("Puts the genome on the clipboard into the grid, as File ▸ Open does"));
+    mRename = editMenu->addAction(tr("&Rename…"), this, [this] { renameDesign(); });
+    mRename->setObjectName(QStringLiteral("renameDesignAction"));
+    mRename->setShortcut(QKeySequence(Qt::Key_F2));
+    mRename->setStatusTip(tr("Names the focused design (else the first selected one) and gives it a note"));
     editMenu->addSeparator();
     QAction* clearSelection =
         editMenu->addAction(tr("Clear &selection"), mModel, &PopulationModel::clearSelection);
@@ -470,12 +477,14 @@ void WorkbenchWindow::updateCells() {
         if (!g) {
             c->setCaption({});
             c->setChange({});
+            c->setNote({});
             continue;
         }
         // Marked "less like this" (issue 26, steering): said on the cell.
         c->setCaption(mModel->isDisliked(i) ? tr("%1 · less like this").arg(designCaption(*g))
                                             : designCaption(*g));
         c->setChange(lineageOf(*g).change);
+        c->setNote(noteOf(*g));
         const Locks locks = locksOf(*g);
         c->setLocked(locks.palette || locks.initial || locks.operations);
     }
@@ -944,6 +953,8 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
     });
     menu.addAction(tr("Keep as favourite"), this, [this, index] { keepFavourite(index); })
         ->setShortcut(QKeySequence(Qt::Key_F));
+    menu.addAction(tr("Rename…"), this, [this, index] { renameDesign(index); })
+        ->setShortcut(mRename->shortcut());
     menu.addAction(tr("Save design…"), this, [this, index] { saveDesign(index); });
     menu.addAction(tr("Copy design"), this, [this, index] { copyDesign(index); })
         ->setShortcut(mCopyDesign->shortcut());
@@ -1069,7 +1080,39 @@ void WorkbenchWindow::setSheetCellWidth(int width) {
 void WorkbenchWindow::saveDesign(int index) {
     const Genome* g = mModel->cell(index);
     if (!g) return;
-    if (const QString file = saveGenomeWithDialog(this, *g); !file.isEmpty()) noteSavedFile(file);
+    Genome saved;
+    const QString file = saveGenomeWithDialog(this, *g, &saved);
+    if (file.isEmpty()) return;
+    // Saved under a name of the user's own: the design is called that in the grid too.
+    if (saved.meta.name != g->meta.name) {
+        mModel->renameCell(index, QString::fromStdString(saved.meta.name.value_or("")), noteOf(saved), true);
+        updateCells();
+    }
+    noteSavedFile(file);
+}
+
+RenameDialog* WorkbenchWindow::renameDesign(int index) {
+    if (index < 0 && mFavourites->list()->hasFocus() && mFavourites->list()->currentRow() >= 0)
+        return mFavourites->rename(mFavourites->list()->currentRow());
+    if (index < 0) index = designToCopy();
+    const Genome* g = index >= 0 && index < CellCount ? mModel->cell(index) : nullptr;
+    if (!g) {
+        statusBar()->showMessage(tr("Nothing to rename: click or select a design first"), 5000);
+        return nullptr;
+    }
+    const std::string id = genomeId(*g);
+    return askRename(this, *g, [this, index, id](const QString& name, const QString& note) {
+        const Genome* shown = mModel->cell(index);
+        if (!shown || genomeId(*shown) != id) return; // the grid moved on meanwhile
+        const QString given = mModel->renameCell(index, name, note);
+        updateCells();
+        statusBar()->showMessage(given == name ? tr("Renamed design %1 to “%2”").arg(index + 1).arg(given)
+                                               : tr("Renamed design %1 to “%2”: another design of this "
+                                                    "session is called “%3”")
+                                                     .arg(index + 1)
+                                                     .arg(given, name),
+                                 5000);
+    });
 }
 
 DesignDialog* WorkbenchWindow::openDesign(int index) {
@@ -1089,6 +1132,15 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
             [this](const QString& file, bool written, const QString& error) {
                 if (!written && error.isEmpty()) statusBar()->showMessage(exportCancelledMessage(file), 8000);
             });
+    // Named in the large view: the cell's design takes the name (unique in the session).
+    connect(dialog, &DesignDialog::renamed, this, [this, index, id, dialog](const Genome& design) {
+        const Genome* shown = mModel->cell(index);
+        if (!shown || genomeId(*shown) != id) return;
+        const QString name = QString::fromStdString(design.meta.name.value_or(""));
+        const QString given = mModel->renameCell(index, name, noteOf(design));
+        if (given != name) dialog->rename(given, noteOf(design));
+        updateCells();
+    });
     connect(dialog, &DesignDialog::openInEditorRequested, this,
             [this](const Genome& design) { openEditor(design); });
     connect(dialog, &DesignDialog::genomeCopied, this, [this](const QString& name) {
@@ -1135,7 +1187,11 @@ QString WorkbenchWindow::mesh() const {
 QString designCaption(const Genome& genome) {
     const LineageInfo info = lineageOf(genome);
     QString caption = info.displayName();
-    if (!info.op.isEmpty()) caption += QStringLiteral(" · ") + info.madeBy();
+    // The operator is said beside the name breeding gave ("… (g3 #5) · Recombine"); a name the
+    // user gave (renamed, saved under a name of their own) stands alone.
+    static const QRegularExpression bredName(QStringLiteral(R"(\(g\d+ #\d+\)$)"));
+    if (!info.op.isEmpty() && (info.name.isEmpty() || bredName.match(info.name).hasMatch()))
+        caption += QStringLiteral(" · ") + info.madeBy();
     return caption;
 }
 

@@ -51,6 +51,7 @@ class FavouritesShelf;
 class HelpMenu;
 class OperatorActions;
 class PopulationBar;
+class RenameDialog;
 class RendererMenu;
 class RenderService;
 struct RecoveredDesign;
@@ -221,6 +222,12 @@ public:
     /// Shows a cell's design large (double-click, Enter); returns the dialog (not modal, deleted
     /// on close), or nullptr for an empty cell.
     DesignDialog* openDesign(int index);
+    /// F2 or Rename…: asks for the name and note of a cell's design (-1: the focused design, else
+    /// the first selected; a favourite when the shelf has the focus). Returns the dialog (not
+    /// modal, deleted on close), or nullptr when there is no design to name.
+    RenameDialog* renameDesign(int index = -1);
+    /// Edit ▸ Rename… (F2).
+    QAction* renameAction() const { return mRename; }
     /// Remembers the renderer preference (View ▸ Renderer) and has the service choose again,
     /// which re-renders every design.
     void setRendererPreference(gl::BackendPreference preference);
@@ -331,6 +338,7 @@ private:
     QTimer mResizeTimer;
     QAction* mCopyDesign = nullptr;
     QAction* mPasteDesign = nullptr;
+    QAction* mRename = nullptr;
 };
 
 /// The caption a cell shows under a design: its name (a bred design's carries " (gN #K)",

@@ -207,6 +207,12 @@ std::vector<Genome> colourways(const ColourwayRequest& request) {
         if (!request.mix) lineage.strength = request.strength;
         lineage.generation = generation;
         child.meta = childMeta(homeParent, generation, number, std::move(lineage));
+        // Named from its own inks, not the parent's ("Russet Current" in purple is "Purple Current").
+        if (child.meta.name) {
+            const std::string& bred = *child.meta.name;
+            const std::size_t suffix = bred.rfind(" (g");
+            child.meta.name = recolouredName(bred.substr(0, suffix), homeParent, child) + bred.substr(suffix);
+        }
         // What changed, in words, as every bred child says (ChangeSummary.h): inks and ground only.
         child.meta.lineage->change = describeChange(homeParent, child);
         child.meta.id = genomeId(child);

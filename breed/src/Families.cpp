@@ -784,7 +784,7 @@ Genome familyGenome(const Family& family, std::uint64_t seed) {
     if (g.initial.size() + g.operations.size() > MaxEntries)
         g.initial.resize(MaxEntries - g.operations.size());
     g.meta = Meta{};
-    g.meta.name = randomName(seed, g);
+    g.meta.name = randomName(seed, g, recipe->family.name);
     g.meta.seed = seed;
     g.meta.generator = FamiliesVersion;
     g.meta.family = std::string(recipe->family.name);

@@ -293,27 +293,58 @@ struct ColorWord {
     const char* word;
     Color color;
 };
-constexpr std::array<ColorWord, 36> ColorWords{{
-    {"Carmine", {150, 0, 24}},      {"Crimson", {196, 30, 58}},    {"Cinnabar", {227, 66, 52}},
-    {"Coral", {240, 128, 110}},     {"Rose", {215, 120, 150}},     {"Madder", {165, 40, 70}},
-    {"Russet", {128, 70, 27}},      {"Umber", {99, 81, 71}},       {"Sepia", {112, 66, 20}},
-    {"Ochre", {204, 119, 34}},      {"Amber", {230, 150, 20}},     {"Saffron", {244, 196, 48}},
-    {"Sand", {214, 190, 150}},      {"Ivory", {240, 234, 214}},    {"Olive", {128, 128, 0}},
-    {"Moss", {100, 130, 60}},       {"Sage", {150, 175, 130}},     {"Jade", {0, 168, 107}},
-    {"Malachite", {20, 110, 60}},   {"Verdigris", {67, 179, 174}}, {"Teal", {0, 128, 128}},
-    {"Azure", {40, 130, 220}},      {"Cobalt", {0, 71, 171}},      {"Lapis", {38, 97, 156}},
-    {"Indigo", {55, 45, 125}},      {"Violet", {130, 80, 180}},    {"Plum", {120, 50, 100}},
-    {"Lilac", {190, 160, 210}},     {"Slate", {112, 128, 144}},    {"Charcoal", {54, 62, 70}},
-    {"Pearl", {212, 212, 205}},     {"Ebony", {30, 28, 26}},       {"Emerald", {50, 190, 70}},
-    {"Chartreuse", {150, 215, 40}}, {"Prussian", {0, 49, 83}},     {"Spruce", {35, 88, 82}},
+constexpr std::array<ColorWord, 40> ColorWords{{
+    {"Carmine", {150, 0, 24}},      {"Crimson", {196, 30, 58}},      {"Cinnabar", {227, 66, 52}},
+    {"Coral", {240, 128, 110}},     {"Rose", {215, 120, 150}},       {"Madder", {165, 40, 70}},
+    {"Russet", {128, 70, 27}},      {"Umber", {99, 81, 71}},         {"Sepia", {112, 66, 20}},
+    {"Ochre", {204, 119, 34}},      {"Amber", {230, 150, 20}},       {"Saffron", {244, 196, 48}},
+    {"Sand", {214, 190, 150}},      {"Ivory", {240, 234, 214}},      {"Olive", {128, 128, 0}},
+    {"Moss", {100, 130, 60}},       {"Sage", {150, 175, 130}},       {"Jade", {0, 168, 107}},
+    {"Malachite", {20, 110, 60}},   {"Verdigris", {67, 179, 174}},   {"Teal", {0, 128, 128}},
+    {"Azure", {40, 130, 220}},      {"Cobalt", {0, 71, 171}},        {"Lapis", {38, 97, 156}},
+    {"Indigo", {55, 45, 125}},      {"Violet", {130, 80, 180}},      {"Plum", {120, 50, 100}},
+    {"Lilac", {190, 160, 210}},     {"Slate", {112, 128, 144}},      {"Charcoal", {54, 62, 70}},
+    {"Pearl", {212, 212, 205}},     {"Ebony", {30, 28, 26}},         {"Emerald", {50, 190, 70}},
+    {"Chartreuse", {150, 215, 40}}, {"Prussian", {0, 49, 83}},       {"Spruce", {35, 88, 82}},
+    {"Purple", {110, 35, 135}},     {"Harbour Green", {52, 98, 78}}, {"Rust", {170, 75, 40}},
+    {"Mauve", {160, 110, 150}},
 }};
 
-constexpr std::array<const char*, 32> Nouns{
-    "Tide",   "Stone",   "Quarry",   "Feather", "Peacock", "Bouquet", "Nonpareil", "Chevron",
-    "Lagoon", "Ember",   "Tapestry", "Current", "Agate",   "Marble",  "Ripple",    "Whorl",
-    "Delta",  "Orchard", "Harbour",  "Flame",   "Fern",    "Shell",   "Meadow",    "Dune",
-    "Veil",   "Spiral",  "Lattice",  "Estuary", "Garden",  "Mosaic",  "Cloud",     "Wake",
+/// Nouns for a design of no family: none of them a family's own word ("Peacock" is a peacock's).
+constexpr std::array<const char*, 26> Nouns{
+    "Tide",    "Quarry",  "Lagoon", "Ember",  "Tapestry", "Current", "Marble", "Ripple",  "Delta",
+    "Orchard", "Harbour", "Flame",  "Fern",   "Shell",    "Meadow",  "Dune",   "Veil",    "Spiral",
+    "Lattice", "Estuary", "Garden", "Mosaic", "Cloud",    "Wake",    "Drift",  "Reverie",
 };
+
+/// Each family's own words, so that a design is named as what it is ("Cobalt Peacock", never
+/// "Sage Bouquet" for a peacock). A family missing here takes the nouns above.
+struct FamilyWords {
+    std::string_view family;
+    std::array<const char*, 4> nouns;
+};
+constexpr std::array<FamilyWords, 20> FamilyNouns{{
+    {"stone", {"Stone", "Pebble", "Cobble", "Battal"}},
+    {"gel-git", {"Come-and-Go", "Current", "Tide", "Drift"}},
+    {"chevron", {"Chevron", "Arrow", "Zigzag", "Herringbone"}},
+    {"nonpareil", {"Nonpareil", "Comb", "Stitch", "Row"}},
+    {"bouquet", {"Bouquet", "Fan", "Posy", "Spray"}},
+    {"peacock", {"Peacock", "Plume", "Eye", "Feather"}},
+    {"french-curl", {"Curl", "Snail", "Scroll", "Whorl"}},
+    {"spanish-wave", {"Wave", "Swell", "Shimmer", "Crest"}},
+    {"birds-nest", {"Nest", "Twig", "Thicket", "Bramble"}},
+    {"shawl", {"Shawl", "Paisley", "Drape", "Fringe"}},
+    {"tiger-eye", {"Tiger Eye", "Gleam", "Glint", "Cat's Eye"}},
+    {"zebra", {"Zebra", "Stripe", "Bar", "Band"}},
+    {"first-paper", {"First Paper", "Vein", "Ground", "Leaf"}},
+    {"hearts", {"Heart", "Valentine", "Locket", "Keepsake"}},
+    {"tulip", {"Tulip", "Petal", "Bloom", "Bud"}},
+    {"carnation", {"Carnation", "Frill", "Pink", "Ruffle"}},
+    {"curls", {"Curl", "Loop", "Flourish", "Coil"}},
+    {"veined", {"Vein", "Seam", "Lode", "Thread"}},
+    {"agate", {"Agate", "Geode", "Band", "Onyx"}},
+    {"granite", {"Granite", "Grain", "Speckle", "Quartz"}},
+}};
 
 /// The stretch passes of a procedural marbled paper: one to three passes across the whole
 /// design, each at a right angle to the one before, with teeth a jittered spacing apart from
@@ -460,12 +491,75 @@ int mainInk(const Genome& genome) {
     return static_cast<int>(std::max_element(share.begin(), share.end()) - share.begin());
 }
 
-std::string randomName(std::uint64_t seed, const Genome& genome) {
+std::vector<std::string> familyNouns(std::string_view family) {
+    for (const FamilyWords& f : FamilyNouns)
+        if (f.family == family) return {f.nouns.begin(), f.nouns.end()};
+    return {Nouns.begin(), Nouns.end()};
+}
+
+std::string paletteWords(const Genome& genome, int most) {
+    if (genome.palette.empty()) return {};
+    // The inks by what they cover of the initial state, most first (as mainInk); equal shares in
+    // palette order.
+    std::vector<double> share(genome.palette.size(), 0.0);
+    for (const Operation& op : genome.initial) {
+        if (!toolSpec(op.tool).laysInk || op.color < 0 || op.color >= static_cast<int>(share.size()))
+            continue;
+        const double r = std::max(op.radius, 1.0);
+        share[static_cast<std::size_t>(op.color)] += genome.dimension == 3 ? r * r * r : r * r;
+    }
+    std::vector<std::size_t> order(share.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return share[a] > share[b]; });
+    std::vector<std::string> words;
+    for (std::size_t i : order) {
+        if (static_cast<int>(words.size()) >= most) break;
+        std::string word = colorWord(genome.palette[i]);
+        if (std::find(words.begin(), words.end(), word) == words.end()) words.push_back(std::move(word));
+    }
+    std::string out;
+    for (std::size_t i = 0; i < words.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == words.size() ? " and " : ", ") + words[i];
+    return out;
+}
+
+std::string randomName(std::uint64_t seed, const Genome& genome, std::string_view family) {
     Pcg32 rng(seed, NameStream);
     const int ink = mainInk(genome);
     std::string adjective = ink >= 0 ? colorWord(genome.palette[static_cast<std::size_t>(ink)]) : "Quiet";
-    std::string noun = Nouns[rng.below(Nouns.size())];
-    return adjective + " " + noun;
+    const std::vector<std::string> nouns = familyNouns(family);
+    return adjective + " " + nouns[rng.below(static_cast<std::uint32_t>(nouns.size()))];
+}
+
+std::string recolouredName(const std::string& name, const Genome& parent, const Genome& colourway) {
+    // The parent's own colour word, when its name starts with it, gives way to the colourway's.
+    std::string noun = name;
+    if (const int ink = mainInk(parent); ink >= 0) {
+        const std::string word = colorWord(parent.palette[static_cast<std::size_t>(ink)]);
+        if (noun.rfind(word + " ", 0) == 0)
+            noun.erase(0, word.size() + 1);
+        else if (noun == word)
+            noun.clear();
+    }
+    if (noun.empty()) return paletteWords(colourway, 2);
+    return paletteWords(colourway, 1) + " " + noun;
+}
+
+std::string uniqueName(const std::string& name, const std::set<std::string>& taken) {
+    if (!taken.count(name)) return name;
+    // A bred name's number goes before its " (gN #K)", so that its children, named from the
+    // root, carry it too.
+    std::string root = name, suffix;
+    if (auto pos = name.rfind(" (g"); pos != std::string::npos && name.back() == ')') {
+        root = name.substr(0, pos);
+        suffix = name.substr(pos);
+    }
+    for (int n = 2;; ++n) {
+        std::string candidate = root + " " + std::to_string(n) + suffix;
+        if (!taken.count(candidate)) return candidate;
+    }
 }
 
 std::vector<Color> randomPalette(Pcg32& rng, Color* background) {

@@ -219,6 +219,8 @@ const char* keyName(MetaKey key) {
         return "view";
     case MetaKey::Locks:
         return "locks";
+    case MetaKey::Note:
+        return "note";
     }
     return "";
 }
@@ -238,6 +240,7 @@ Json written(const Meta& m) {
     if (m.editor) out["editor"] = writeEditor(*m.editor);
     if (m.view) out["view"] = writeView(*m.view);
     if (m.locks) out["locks"] = writeLocks(*m.locks);
+    put(out, "note", m.note);
     putOther(out, m.other);
     return out;
 }
@@ -256,6 +259,8 @@ Meta Meta::fromJson(const nlohmann::ordered_json& json) {
             take(m.name, key, v, m.other, readString);
         } else if (key == "id") {
             take(m.id, key, v, m.other, readString);
+        } else if (key == "note") {
+            take(m.note, key, v, m.other, readString);
         } else if (key == "family") {
             take(m.family, key, v, m.other, readString);
         } else if (key == "seed") {
@@ -344,6 +349,9 @@ void Meta::erase(MetaKey key) {
         break;
     case MetaKey::Locks:
         locks.reset();
+        break;
+    case MetaKey::Note:
+        note.reset();
         break;
     }
     // Gone as from a JSON object: set again, it comes after the keys there are.

@@ -114,7 +114,7 @@ TEST(Meta, UnknownKeysSurviveInTheirPlace) {
     const char* text = R"({"note":"by hand","name":"Mine","lineage":{"mine":[1,2],"generation":4},)"
                        R"("view":{"yaw":10,"roll":5},"zzz":{"deep":[true,null]}})";
     const Meta m = Meta::fromJson(Json::parse(text));
-    EXPECT_EQ(m.other["note"], "by hand");
+    EXPECT_EQ(m.note.value_or(""), "by hand"); // a known key since issue 29, kept in its place
     EXPECT_EQ(m.other["zzz"]["deep"][0], true);
     EXPECT_EQ(m.lineage->other["mine"][1], 2);
     EXPECT_EQ(m.view->other["roll"], 5);
@@ -189,6 +189,24 @@ TEST(Meta, AChildKeepsItsParentsKeysBetweenItsNameAndItsLineage) {
     child.name = "Stone (g3 #1)";
     EXPECT_EQ(child.toJson().dump(), R"j({"name":"Stone (g3 #1)","note":"n","locks":{"palette":true},)j"
                                      R"j("family":"f","lineage":{"generation":3},"id":"bb"})j");
+}
+
+// Issue 29: a design carries the user's note (meta.note), read, written and kept, by its bred
+// children too (as every key but name, seed, generator, id and lineage).
+TEST(Meta, ANoteIsReadWrittenAndKept) {
+    const auto meta = Meta::fromJson(
+        nlohmann::ordered_json::parse(R"({"name": "Harbour Green", "note": "for the scarf"})"));
+    ASSERT_TRUE(meta.note.has_value());
+    EXPECT_EQ(*meta.note, "for the scarf");
+    EXPECT_EQ(meta.toJson().dump(), R"({"name":"Harbour Green","note":"for the scarf"})");
+    EXPECT_EQ(meta.keptByChild().note.value_or(""), "for the scarf");
+    Meta erased = meta;
+    erased.erase(MetaKey::Note);
+    EXPECT_EQ(erased.toJson().dump(), R"({"name":"Harbour Green"})");
+    // A note that is no string is kept as it was, not read.
+    const auto odd = Meta::fromJson(nlohmann::ordered_json::parse(R"({"note": 3})"));
+    EXPECT_FALSE(odd.note.has_value());
+    EXPECT_EQ(odd.toJson().dump(), R"({"note":3})");
 }
 
 TEST(Meta, EveryExampleKeepsItsBytesThroughLoadAndSave) {

@@ -158,5 +158,62 @@ TEST(Sheet, WritesPngAndTiffWithoutAGenome) {
     }
 }
 
+// Issue 29: a colourway sheet says what each design is: its name under it and, optionally, its
+// inks as chips with their hex values.
+TEST(Sheet, LabelsNameEachDesignAndChipsShowItsInks) {
+    const auto designs = colourwaySet(5);
+    SheetSettings settings;
+    settings.cellWidth = 140;
+    settings.gap = 6;
+    settings.paper = {0xff, 0xff, 0xff};
+    const SheetLayout plain = sheetLayout(designs, settings);
+    EXPECT_TRUE(sheetTexts(designs, plain, settings).empty()) << "no labels unless asked";
+
+    settings.labels = true;
+    const SheetLayout named = sheetLayout(designs, settings);
+    EXPECT_GT(named.labelHeight, 0);
+    EXPECT_EQ(named.height, plain.height + named.rows * named.labelHeight);
+    const std::vector<SheetText> names = sheetTexts(designs, named, settings);
+    ASSERT_EQ(names.size(), designs.size());
+    for (std::size_t i = 0; i < designs.size(); ++i) {
+        EXPECT_EQ(names[i].text, *designs[i].meta.name);
+        // Under its cell, inside the sheet, not over the next row.
+        EXPECT_EQ(names[i].x, named.cellX(int(i)));
+        EXPECT_GE(names[i].y, named.cellY(int(i)) + named.cellHeight);
+        EXPECT_LE(names[i].y + names[i].height, named.cellY(int(i)) + named.cellHeight + named.labelHeight);
+    }
+    EXPECT_TRUE(sheetChips(designs, named, settings).empty());
+
+    settings.chips = true;
+    const SheetLayout chipped = sheetLayout(designs, settings);
+    const std::vector<SheetText> texts = sheetTexts(designs, chipped, settings);
+    const std::vector<SheetChip> chips = sheetChips(designs, chipped, settings);
+    std::size_t inks = 0;
+    for (const Genome& g : designs)
+        inks += g.palette.size();
+    ASSERT_EQ(chips.size(), inks) << "every ink has a chip at this width";
+    ASSERT_EQ(texts.size(), designs.size() + inks);
+    EXPECT_EQ(texts[1].text, toHex(designs[0].palette[0]));
+    // The chips are painted in their inks' colours, where the plain sheet has its paper.
+    const Image sheet = renderSheet(designs, settings);
+    ASSERT_EQ(sheet.height, chipped.height);
+    for (const SheetChip& chip : chips) {
+        const std::uint8_t* p = sheet.row(chip.y + chip.side / 2) + std::size_t(chip.x + chip.side / 2) * 3;
+        EXPECT_EQ(Color(p[0], p[1], p[2]), chip.color);
+    }
+    // The cells are the same renders as before, moved down by the rows' labels.
+    const Image plainSheet = [&] {
+        SheetSettings s = settings;
+        s.labels = s.chips = false;
+        return renderSheet(designs, s);
+    }();
+    const int last = int(designs.size()) - 1;
+    for (int row = 0; row < chipped.cellHeight; ++row)
+        EXPECT_EQ(std::memcmp(sheet.row(chipped.cellY(last) + row) + std::size_t(chipped.cellX(last)) * 3,
+                              plainSheet.row(plain.cellY(last) + row) + std::size_t(plain.cellX(last)) * 3,
+                              std::size_t(chipped.cellWidth) * 3),
+                  0);
+}
+
 } // namespace
 } // namespace marbler

@@ -20,6 +20,7 @@
 #include <QTemporaryDir>
 
 #include <cstring>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -134,15 +135,22 @@ TEST_F(ColourwaysUiTest, ExportsTheSheetThroughTheFileQuestion) {
     settings.cellWidth = 40;
     settings.gap = 4;
     settings.aa = "rgss";
+    settings.labels = true; // each design named under it (issue 29)
     const Image expected = renderSheet(designs, settings);
+    const SheetLayout layout = sheetLayout(designs, settings);
     QImage image(file);
     ASSERT_FALSE(image.isNull());
     image = image.convertToFormat(QImage::Format_RGB888);
     ASSERT_EQ(image.width(), expected.width);
     ASSERT_EQ(image.height(), expected.height);
-    for (int y = 0; y < image.height(); ++y)
-        ASSERT_EQ(std::memcmp(image.constScanLine(y), expected.row(y), std::size_t(expected.width) * 3), 0)
-            << "row " << y;
+    // The cells are the renderer's (the labels' text is the window's font).
+    for (int c = 0; c < CellCount; ++c)
+        for (int y = layout.cellY(c); y < layout.cellY(c) + layout.cellHeight; ++y)
+            ASSERT_EQ(std::memcmp(image.constScanLine(y) + layout.cellX(c) * 3,
+                                  expected.row(y) + std::size_t(layout.cellX(c)) * 3,
+                                  std::size_t(layout.cellWidth) * 3),
+                      0)
+                << "cell " << c << " row " << y;
 
     // Cancelled by the question: nothing is started.
     setSaveFileAsker([](QWidget*, const QString&, const QString&, const QString&) { return QString(); });
@@ -199,6 +207,66 @@ TEST_F(ColourwaysUiTest, TheSheetsBoxAndMessagesStay) {
     EXPECT_FALSE(QFileInfo::exists(file));
     EXPECT_TRUE(QDir(dir.path()).isEmpty())
         << QDir(dir.path()).entryList(QDir::Files).join(' ').toStdString();
+}
+
+// The colourway sheet names each design under it, offers the parent's name as its file, and on
+// request shows each design's inks with their hex values.
+TEST_F(ColourwaysUiTest, TheColourwaySheetIsLabelledAndNamedAfterTheParent) {
+    test::ErrorCapture errors;
+    QTemporaryDir dir;
+    model().setSelected(1, true);
+    const std::string parentName = model().cell(1)->meta.name.value_or("");
+    mWindow->setColourwaysMode(true);
+    MARBLER_WAIT(model().current().parentCells.size() == 1, 5000);
+    // Colourways are named from their own inks, each name its own.
+    std::set<std::string> names;
+    for (int c = 0; c < CellCount; ++c)
+        names.insert(model().cell(c)->meta.name.value_or(""));
+    EXPECT_EQ(names.size(), std::size_t(CellCount));
+    auto* chips = mWindow->findChild<QAction*>(QStringLiteral("sheetChipsAction"));
+    ASSERT_NE(chips, nullptr);
+    chips->setChecked(true);
+    const QString file = QDir(dir.path()).filePath(QStringLiteral("sheet.png"));
+    QString offered;
+    setSaveFileAsker([&](QWidget*, const QString&, const QString& suggested, const QString&) {
+        offered = suggested;
+        return file;
+    });
+    mWindow->setSheetCellWidth(160);
+    mWindow->exportSheetAction()->trigger();
+    EXPECT_EQ(QFileInfo(offered).fileName(),
+              QString::fromStdString(parentName) + QStringLiteral(" colourways.png"));
+    MARBLER_WAIT(!mWindow->sheetExportRunning(), 60000);
+    ASSERT_TRUE(errors.messages.isEmpty()) << errors.messages.join(QStringLiteral("; ")).toStdString();
+
+    std::vector<Genome> designs;
+    for (int c = 0; c < CellCount; ++c)
+        designs.push_back(*model().cell(c));
+    SheetSettings settings;
+    settings.cellWidth = 160;
+    settings.gap = std::max(4, 160 / 25);
+    settings.labels = settings.chips = true;
+    const SheetLayout layout = sheetLayout(designs, settings);
+    QImage image(file);
+    ASSERT_FALSE(image.isNull());
+    image = image.convertToFormat(QImage::Format_RGB888);
+    ASSERT_EQ(image.height(), layout.height);
+    // Each name's box and each hex value's box has ink on the paper: the text was drawn.
+    for (const SheetText& text : sheetTexts(designs, layout, settings)) {
+        int dark = 0;
+        for (int y = text.y; y < text.y + text.height; ++y)
+            for (int x = text.x; x < text.x + text.width; ++x)
+                if (qGray(image.pixel(x, y)) < 160) ++dark;
+        EXPECT_GT(dark, 10) << "no text drawn for “" << text.text << "”";
+    }
+    // The chips show the inks.
+    for (const SheetChip& chip : sheetChips(designs, layout, settings))
+        EXPECT_EQ(image.pixel(chip.x + chip.side / 2, chip.y + chip.side / 2),
+                  qRgb(chip.color.r, chip.color.g, chip.color.b));
+    // To look at it: MARBLER_KEEP_SHEET=path keeps a copy.
+    if (qEnvironmentVariableIsSet("MARBLER_KEEP_SHEET"))
+        image.save(qEnvironmentVariable("MARBLER_KEEP_SHEET"));
+    chips->setChecked(false); // a remembered setting: the next test starts without
 }
 
 } // namespace

@@ -17,7 +17,9 @@
 #include "marbler/Random.h"
 
 #include <cstdint>
+#include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace marbler {
@@ -47,8 +49,21 @@ std::string colorWord(Color color);
 /// The palette index of a design's main ink: the one covering the most of its initial state
 /// (-1 for an empty palette).
 int mainInk(const Genome& genome);
-/// An evocative two-word name for a design: the colour word of its main ink and a noun drawn
-/// from the seed ("Cobalt Tide" for a mostly blue design), so names never contradict colours.
-std::string randomName(std::uint64_t seed, const Genome& genome);
+/// An evocative name for a design: the colour word of its main ink and a noun drawn from the
+/// seed among its family's own words ("Cobalt Peacock"; Families.h names the families; none:
+/// words of no family), so names never contradict colours or pattern.
+std::string randomName(std::uint64_t seed, const Genome& genome, std::string_view family = {});
+/// The nouns a family's designs are named with (words of no family for an unknown one).
+std::vector<std::string> familyNouns(std::string_view family);
+/// A palette in words: the colour words of the inks covering the most (distinct, at most `most`,
+/// the main ink first), "Purple", "Russet and Harbour Green", "Ochre, Slate and Ivory".
+std::string paletteWords(const Genome& genome, int most = 2);
+/// The name of a colourway of `parent` (whose name, without a bred suffix, is `name`): the
+/// colourway's own colour word in place of the parent's ("Russet Current" in purple is "Purple
+/// Current"); a name that is only the parent's colour becomes the colourway's palette words.
+std::string recolouredName(const std::string& name, const Genome& parent, const Genome& colourway);
+/// `name` made unique among `taken` (the names a session has given): itself when free, else
+/// "name 2", "name 3", ... so two different designs never share a name.
+std::string uniqueName(const std::string& name, const std::set<std::string>& taken);
 
 } // namespace marbler

@@ -63,7 +63,7 @@ struct MetaLocks {
 };
 
 /// The keys Meta knows, for erase().
-enum class MetaKey { Name, Id, Lineage, Family, Seed, Generator, Paper, Editor, View, Locks };
+enum class MetaKey { Name, Id, Lineage, Family, Seed, Generator, Paper, Editor, View, Locks, Note };
 
 /// A genome's `meta`, typed.
 class Meta {
@@ -78,6 +78,7 @@ public:
     std::optional<MetaEditor> editor;
     std::optional<MetaView> view;
     std::optional<MetaLocks> locks;
+    std::optional<std::string> note; ///< the user's note on the design (the window's tooltip)
     /// Keys Meta does not know, and known keys whose value it cannot read, as they were.
     nlohmann::ordered_json other = nlohmann::ordered_json::object();
 
@@ -85,7 +86,7 @@ public:
     static Meta fromJson(const nlohmann::ordered_json& json);
     /// The meta object: a key read and not changed is written as it was read, in its place;
     /// keys set since come after, in a fixed order (name, seed, generator, family, paper,
-    /// lineage, id, editor, view, locks), then unknown keys added since.
+    /// lineage, id, editor, view, locks, note), then unknown keys added since.
     nlohmann::ordered_json toJson() const;
     /// Whether there is nothing to write.
     bool empty() const;
