@@ -94,7 +94,7 @@
         <translation>%1: wählen Sie .glb, .gltf oder .obj</translation>
     </message>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="+302"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="+373"/>
         <source>Save design</source>
         <translation>Muster speichern</translation>
     </message>
@@ -104,12 +104,72 @@
         <translation>Marbler-Genome (*.marble.json)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>Cannot save the design</source>
         <translation>Das Muster kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/shared/ExportSettingsDialog.cpp" line="+41"/>
+        <location filename="../app/shared/ExportSettingsDialog.cpp" line="+45"/>
+        <source>Off (1 sample, fastest)</source>
+        <translation>Aus (1 Abtastung, am schnellsten)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One sample a pixel: hard, stepped edges</source>
+        <translation>Eine Abtastung je Pixel: harte, gestufte Kanten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Smooth (4 samples, default)</source>
+        <translation>Glatt (4 Abtastungen, Standard)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Four samples a pixel on a rotated grid: smooth edges at a small cost</source>
+        <translation>Vier Abtastungen je Pixel auf einem gedrehten Raster: glatte Kanten bei geringem Aufwand</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Soft (5 samples)</source>
+        <translation>Weich (5 Abtastungen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Five samples a pixel, the centre weighted most: slightly soft edges</source>
+        <translation>Fünf Abtastungen je Pixel, die Mitte am stärksten gewichtet: leicht weiche Kanten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fine checkerboard (%1 samples)</source>
+        <translation>Feines Schachbrett (%1 Abtastungen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Samples on every other square of a 4 × 4 grid</source>
+        <translation>Abtastungen auf jedem zweiten Feld eines 4 × 4-Rasters</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fine (%1 samples)</source>
+        <translation>Fein (%1 Abtastungen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Eight samples a pixel, each in a row and a column of its own: fine edges</source>
+        <translation>Acht Abtastungen je Pixel, jede in einer eigenen Zeile und Spalte: feine Kanten</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Grid %1 × %1 (%2 samples)</source>
+        <translation>Raster %1 × %1 (%2 Abtastungen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Samples on a regular %1 × %1 grid a pixel: finer and slower as it grows</source>
+        <translation>Abtastungen auf einem regelmäßigen %1 × %1-Raster je Pixel: je größer, desto feiner und langsamer</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>The image would be %1 × %2 pixels: choose a size of at least 1 pixel.</source>
         <translation>Das Bild hätte %1 × %2 Pixel: wählen Sie eine Größe von mindestens 1 Pixel.</translation>
     </message>
@@ -152,6 +212,25 @@
         <location filename="../app/workbench/WorkbenchPicture.cpp" line="+25"/>
         <source>Pictures (%1);;All files (*)</source>
         <translation>Bilder (%1);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/workbench/OpenPlacement.cpp" line="+144"/>
+        <source>Marble a picture?</source>
+        <translation>Ein Bild marmorieren?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is a picture without a Marbler design in it.
+
+Marble it: nine designs whose bath is the picture, as File ▸ Marble a picture makes?</source>
+        <translation>%1 ist ein Bild ohne Marbler-Muster darin.
+
+Es marmorieren: neun Muster, deren Bad das Bild ist, wie Datei ▸ Ein Bild marmorieren sie erzeugt?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Marble the picture</source>
+        <translation>Bild &amp;marmorieren</translation>
     </message>
 </context>
 <context>
@@ -953,7 +1032,7 @@
         <translation>%1 ein- oder ausblenden</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>Keys</source>
         <translation>Tasten</translation>
     </message>
@@ -1243,7 +1322,7 @@
 <context>
     <name>marbler::ui::ColourwaysController</name>
     <message>
-        <location filename="../app/workbench/ColourwaysController.cpp" line="+35"/>
+        <location filename="../app/workbench/ColourwaysController.cpp" line="+56"/>
         <source>&amp;Colourways</source>
         <translation>&amp;Farbvarianten</translation>
     </message>
@@ -1259,11 +1338,21 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>The grid&apos;s designs side by side in one PNG or TIFF image</source>
-        <translation>Die Muster des Rasters nebeneinander in einem PNG- oder TIFF-Bild</translation>
+        <source>The grid&apos;s designs side by side in one PNG or TIFF image, each named</source>
+        <translation>Die Muster des Rasters nebeneinander in einem PNG- oder TIFF-Bild, jedes mit seinem Namen</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+1"/>
+        <source>Colourway sheet with ink c&amp;hips</source>
+        <translation>Farbvarianten-Bogen mit Farbfel&amp;dern</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Put each design&apos;s inks, with their hex values, under its name on the sheet</source>
+        <translation>Die Farben jedes Musters mit ihren Hex-Werten auf dem Bogen unter seinen Namen setzen</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Colourways off: the operators breed whole designs again</source>
         <translation>Farbvarianten aus: die Operatoren züchten wieder ganze Muster</translation>
     </message>
@@ -1324,29 +1413,29 @@
         <translation>Noch keine Muster für einen Bogen</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+41"/>
+        <location line="+10"/>
+        <location line="+45"/>
         <source>Export colourway sheet</source>
         <translation>Farbvarianten-Bogen exportieren</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-43"/>
         <source>PNG image (*.png);;TIFF image (*.tif *.tiff)</source>
         <translation>PNG-Bild (*.png);;TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <location line="+22"/>
+        <location line="+14"/>
+        <location line="+24"/>
         <source>Cannot export the colourway sheet</source>
         <translation>Der Farbvarianten-Bogen kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-18"/>
         <source>Rendering the colourway sheet…</source>
         <translation>Der Farbvarianten-Bogen wird gerendert…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>Colourway sheet cancelled</source>
         <translation>Farbvarianten-Bogen abgebrochen</translation>
     </message>
@@ -1364,9 +1453,9 @@
         <translation>Muster %1</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Click to choose as a parent, double-click to open large, right-click for locks and favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.</source>
-        <translation>Klicken, um es als Elternteil zu wählen, Doppelklick öffnet es groß, Rechtsklick für Sperren und Favoriten. Legen Sie hier eine Genomdatei oder ein von Marbler exportiertes PNG oder TIFF ab, um es zu laden.</translation>
+        <location line="+16"/>
+        <source>Click to choose as a parent, double-click to open large, F2 to rename, right-click for locks and favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.</source>
+        <translation>Klicken, um es als Elternteil zu wählen, Doppelklick öffnet es groß, F2 benennt es um, Rechtsklick für Sperren und Favoriten. Legen Sie hier eine Genomdatei oder ein von Marbler exportiertes PNG oder TIFF ab, um es zu laden.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1378,7 +1467,16 @@
 %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+1"/>
+        <source>Note: %1
+
+%2</source>
+        <translation>Notiz: %1
+
+%2</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>selected as a parent</source>
         <translation>als Elternteil gewählt</translation>
     </message>
@@ -1403,12 +1501,13 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::DesignDialog</name>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="-276"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="-349"/>
+        <location line="+325"/>
         <source>Design %1</source>
         <translation>Muster %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="-306"/>
         <source>Zoom out (-, wheel)</source>
         <translation>Verkleinern (-, Mausrad)</translation>
     </message>
@@ -1468,7 +1567,17 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Das ganze Muster als Spiegelrapport 2 × 2 gekachelt zeigen, um den Rapport zu beurteilen (R)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
+        <source>Section</source>
+        <translation>Schnitt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show a cross-section of the solid instead of the object; move it and turn it to any angle below (S)</source>
+        <translation>Statt des Objekts einen Querschnitt des räumlichen Musters zeigen; unten lässt er sich verschieben und in jeden Winkel drehen (S)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&amp;Save genome…</source>
         <translation>Genom &amp;speichern…</translation>
     </message>
@@ -1513,12 +1622,12 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Schließen</translation>
     </message>
     <message>
-        <location line="+51"/>
-        <source>Exported %1</source>
-        <translation>%1 exportiert</translation>
+        <location line="+29"/>
+        <source>Rename…</source>
+        <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+153"/>
         <source>Export image</source>
         <translation>Bild exportieren</translation>
     </message>
@@ -1541,7 +1650,12 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::DesignExport</name>
     <message>
-        <location filename="../app/shared/DesignExport.cpp" line="+38"/>
+        <location filename="../app/shared/DesignExport.cpp" line="+22"/>
+        <source>Export cancelled: %1 was not written</source>
+        <translation>Export abgebrochen: %1 wurde nicht geschrieben</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <location line="+76"/>
         <source>Cannot export the image</source>
         <translation>Das Bild kann nicht exportiert werden</translation>
@@ -1556,11 +1670,12 @@ hier ein Muster öffnen oder ablegen</translation>
     <name>marbler::ui::DesignView</name>
     <message>
         <location filename="../app/shared/DesignView.cpp" line="+45"/>
+        <location line="+206"/>
         <source>Drag to turn the object; wheel, + and - zoom</source>
         <translation>Ziehen dreht das Objekt; Mausrad, + und - zoomen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-205"/>
         <source>Wheel, + and - zoom about the pointer; drag to pan</source>
         <translation>Mausrad, + und - zoomen um den Mauszeiger; Ziehen verschiebt</translation>
     </message>
@@ -1579,6 +1694,11 @@ hier ein Muster öffnen oder ablegen</translation>
         <source>%L1 %</source>
         <translation>%L1 %</translation>
     </message>
+    <message>
+        <location line="+154"/>
+        <source>The cross-section: the section controls below move and turn it</source>
+        <translation>Der Querschnitt: die Schnitt-Regler unten verschieben und drehen ihn</translation>
+    </message>
 </context>
 <context>
     <name>marbler::ui::EditorCanvas</name>
@@ -1596,7 +1716,12 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorDocument</name>
     <message>
-        <location filename="../app/editor/EditorDocument.cpp" line="+366"/>
+        <location filename="../app/editor/EditorDocument.cpp" line="+451"/>
+        <source>Not done: this design&apos;s bath wraps (it is a repeat tile), and %1. Edit ▸ Bath wraps turns the wrap off and allows every tool.</source>
+        <translation>Nicht ausgeführt: das Bad dieses Musters läuft um (es ist eine Rapportkachel), und %1. Bearbeiten ▸ Umlaufendes Bad schaltet das Umlaufen aus und erlaubt jedes Werkzeug.</translation>
+    </message>
+    <message>
+        <location line="+93"/>
         <source>Add %1</source>
         <translation>%1 hinzufügen</translation>
     </message>
@@ -1656,7 +1781,17 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Verlaufen: %1 → %2</translation>
     </message>
     <message>
-        <location line="+190"/>
+        <location line="+15"/>
+        <source>Wrap the bath</source>
+        <translation>Umlaufendes Bad einschalten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unwrap the bath</source>
+        <translation>Umlaufendes Bad ausschalten</translation>
+    </message>
+    <message>
+        <location line="+211"/>
         <source>Delete ink %1: %2</source>
         <translation>Farbe %1 löschen: %2</translation>
     </message>
@@ -1669,7 +1804,7 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorExports</name>
     <message>
-        <location filename="../app/editor/EditorExports.cpp" line="+43"/>
+        <location filename="../app/editor/EditorExports.cpp" line="+48"/>
         <location line="+29"/>
         <source>An animation is being written already</source>
         <translation>Eine Animation wird bereits geschrieben</translation>
@@ -1693,17 +1828,23 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorFiles</name>
     <message>
-        <location filename="../app/editor/EditorFiles.cpp" line="+43"/>
+        <location filename="../app/editor/EditorFiles.cpp" line="+45"/>
         <source>Designs (*.marble.json *.json *.png *.tif *.tiff);;All files (*)</source>
         <translation>Muster (*.marble.json *.json *.png *.tif *.tiff);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+44"/>
         <source>Untitled design</source>
         <translation>Unbenanntes Muster</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+2"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Save a design opened from an image</source>
         <translation>Ein aus einem Bild geöffnetes Muster speichern</translation>
     </message>
@@ -1738,7 +1879,12 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Marbler-Muster (*.marble.json)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+11"/>
+        <source>Name “%1”</source>
+        <translation>Namen „%1“ vergeben</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>The file was changed</source>
         <translation>Die Datei wurde geändert</translation>
     </message>
@@ -1862,7 +2008,7 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorWindow</name>
     <message>
-        <location filename="../app/editor/EditorWindow.cpp" line="+223"/>
+        <location filename="../app/editor/EditorWindow.cpp" line="+225"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
@@ -2022,7 +2168,22 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Ctrl+Y</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+4"/>
+        <source>Re&amp;name…</source>
+        <translation>&amp;Umbenennen…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Names the design and gives it a note (one undo step)</source>
+        <translation>Benennt das Muster und gibt ihm eine Notiz (ein Rückgängig-Schritt)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Bath &amp;wraps (straight repeat)</source>
+        <translation>Umlaufendes &amp;Bad (gerader Rapport)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
@@ -2147,7 +2308,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>&lt;h2&gt;Der Editor&lt;/h2&gt;&lt;p&gt;Ein Muster ist eine Liste von Schritten: Farben, aufs Bad getropft, dann Züge, die sie bewegen. Wählen Sie ein Werkzeug, dann klicken oder ziehen Sie auf der Zeichenfläche; ein neuer Schritt kommt nach dem gewählten Schritt (oder an die Stelle der Zeitleiste), und die Zeichenfläche zeigt das Muster direkt danach. Der Stift zeichnet freihändig: sein Pfad folgt dem Ziehen (auch dem Druck eines Grafikstifts), das Bedienfeld stellt Zug, Reichweite und Rechen ein, und die Punkte seines Pfads sind seine Griffe.&lt;/p&gt;&lt;p&gt;Wählen Sie einen Schritt, um ihn im Formular oder mit seinen Griffen zu ändern, wie weit zurück er auch liegt; in der Liste schalten Sie ihn stumm, duplizieren, verschieben oder löschen ihn. Rückgängig und Wiederholen wirken von überall; Bearbeitungen, die Sie rückgängig machen und dann durch eine neue verlassen, bleiben unter Verlauf ▸ Andere Zweige, einen Klick entfernt.&lt;/p&gt;&lt;p&gt;Die Zeitleiste fährt durch die Entstehung des Musters, spielt sie ab und vergleicht zwei Zustände. Farben enthält die Palette und die Farbe des Bades.&lt;/p&gt;&lt;h3&gt;Tasten&lt;/h3&gt;</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+56"/>
         <source>Added as step %1 of %2; the timeline shows the design up to it (End shows all)</source>
         <translation>Als Schritt %1 von %2 hinzugefügt; die Zeitleiste zeigt das Muster bis dahin (Ende zeigt alles)</translation>
     </message>
@@ -2177,7 +2338,27 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Palette: %1</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+55"/>
+        <source>The bath wraps: the design is a repeat tile, and takes only spray and stretch along an axis. Turn it off to use every tool.</source>
+        <translation>Das Bad läuft um: das Muster ist eine Rapportkachel und nimmt nur Sprühen und Dehnen entlang einer Achse an. Schalten Sie es aus, um jedes Werkzeug zu nutzen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Make the bath wrap: the design becomes a straight-repeat tile</source>
+        <translation>Das Bad umlaufen lassen: das Muster wird eine Kachel mit geradem Rapport</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This design cannot wrap: %1</source>
+        <translation>Das Bad dieses Musters kann nicht umlaufen: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 (not in a bath that wraps: turn off Edit ▸ Bath wraps to use it)</source>
+        <translation>%1 (nicht in einem umlaufenden Bad: schalten Sie Bearbeiten ▸ Umlaufendes Bad aus, um es zu nutzen)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source> · ink %1</source>
         <translation> · Farbe %1</translation>
     </message>
@@ -2193,6 +2374,16 @@ hier ein Muster öffnen oder ablegen</translation>
         <location line="+55"/>
         <source>%1[*] — Marbler editor</source>
         <translation>%1[*] — Marbler-Editor</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Rename to “%1”</source>
+        <translation>In „%1“ umbenennen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Renamed to “%1”</source>
+        <translation>In „%1“ umbenannt</translation>
     </message>
 </context>
 <context>
@@ -2249,11 +2440,12 @@ hier ein Muster öffnen oder ablegen</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+177"/>
         <source>pixels</source>
         <translation>Pixel</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-176"/>
         <source>cm</source>
         <translation>cm</translation>
     </message>
@@ -2278,9 +2470,14 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Punkte pro Zoll: macht aus einer Druckgröße Pixel und wird in die Datei geschrieben</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Antialiasing pattern: more samples, smoother edges, slower</source>
-        <translation>Kantenglättungsmuster: mehr Abtastungen, glattere Kanten, langsamer</translation>
+        <location line="+9"/>
+        <source>%1 (marbler render --aa %2)</source>
+        <translation>%1 (marbler render --aa %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Antialiasing: more samples a pixel give smoother edges and a slower render</source>
+        <translation>Kantenglättung: mehr Abtastungen je Pixel ergeben glattere Kanten und ein langsameres Rendering</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2413,7 +2610,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>&amp;Position</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+95"/>
         <source>Vector outlines in design units (%L1 × %L2)</source>
         <translation>Vektorumrisse in Mustereinheiten (%L1 × %L2)</translation>
     </message>
@@ -2433,7 +2630,17 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation> (%1 × %2 Zoll bei %3 dpi)</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+19"/>
+        <source>The widest that fits is %L1 pixels: type at most that in Width.</source>
+        <translation>Die größte passende Breite ist %L1 Pixel: geben Sie unter Breite höchstens diesen Wert ein.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The widest that fits is %L1 %2 at %3 dpi: type at most that in Width, or lower the resolution.</source>
+        <translation>Die größte passende Breite ist %L1 %2 bei %3 dpi: geben Sie unter Breite höchstens diesen Wert ein oder verringern Sie die Auflösung.</translation>
+    </message>
+    <message>
+        <location line="+119"/>
         <source>The image is too large</source>
         <translation>Das Bild ist zu groß</translation>
     </message>
@@ -2441,7 +2648,7 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::FavouritesShelf</name>
     <message>
-        <location filename="../app/workbench/FavouritesShelf.cpp" line="+58"/>
+        <location filename="../app/workbench/FavouritesShelf.cpp" line="+59"/>
         <source>&amp;Restore removed favourite</source>
         <translation>Entfernten Favoriten &amp;wiederherstellen</translation>
     </message>
@@ -2471,7 +2678,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Den entfernten Favoriten zurücklegen (%1)</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+49"/>
         <source>Cannot keep the favourite</source>
         <translation>Der Favorit kann nicht behalten werden</translation>
     </message>
@@ -2487,11 +2694,26 @@ hier ein Muster öffnen oder ablegen</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Rename…</source>
+        <translation>Umbenennen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Remove from favourites</source>
         <translation>Aus den Favoriten entfernen</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
+        <source>Cannot rename the favourite</source>
+        <translation>Der Favorit kann nicht umbenannt werden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 could not be written</source>
+        <translation>%1 konnte nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Cannot remove the favourite</source>
         <translation>Der Favorit kann nicht entfernt werden</translation>
     </message>
@@ -2719,7 +2941,7 @@ Familie: %2</translation>
 <context>
     <name>marbler::ui::OpenPlacementDialog</name>
     <message>
-        <location filename="../app/workbench/OpenPlacement.cpp" line="+27"/>
+        <location filename="../app/workbench/OpenPlacement.cpp" line="-120"/>
         <source>design %1</source>
         <translation>Muster %1</translation>
     </message>
@@ -3029,6 +3251,139 @@ Familie: %2</translation>
     </message>
 </context>
 <context>
+    <name>marbler::ui::PaperDialog</name>
+    <message>
+        <location filename="../app/workbench/PaperDialog.cpp" line="+32"/>
+        <source>A5 (148 × 210 mm)</source>
+        <translation>A5 (148 × 210 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A4 (210 × 297 mm)</source>
+        <translation>A4 (210 × 297 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A3 (297 × 420 mm)</source>
+        <translation>A3 (297 × 420 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Letter (8.5 × 11 in)</source>
+        <translation>Letter (8,5 × 11 Zoll)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Square (300 × 300 mm)</source>
+        <translation>Quadrat (300 × 300 mm)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>New marbled paper</source>
+        <translation>Neues Marmorpapier</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Custom size</source>
+        <translation>Eigene Größe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The sheet the paper is made for; the design is measured in its millimetres (marbler paper --size)</source>
+        <translation>Der Bogen, für den das Papier gemacht wird; das Muster wird in seinen Millimetern gemessen (marbler paper --size)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The sheet&apos;s width in millimetres</source>
+        <translation>Die Breite des Bogens in Millimetern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The sheet&apos;s height in millimetres</source>
+        <translation>Die Höhe des Bogens in Millimetern</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Inks, one layer of drops each, each later one smaller (marbler paper --colors)</source>
+        <translation>Farben, je eine Schicht Tropfen, jede spätere kleiner (marbler paper --colors)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Combing passes along the sheet, each weaker than the one before (marbler paper --passes)</source>
+        <translation>Kammdurchgänge entlang des Bogens, jeder schwächer als der vorige (marbler paper --passes)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pastel inks on a white bath</source>
+        <translation>&amp;Pastellfarben auf weißem Bad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pale, soft inks instead of random ones on cream (marbler paper --pastel)</source>
+        <translation>Blasse, weiche Farben statt zufälliger Farben auf Creme (marbler paper --pastel)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Golden-ratio drops, wrapping (the post&apos;s)</source>
+        <translation>Tropfen im Goldenen Schnitt, umlaufend (Rezept des Beitrags)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Classic drops on cream</source>
+        <translation>Klassische Tropfen auf Creme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>marbler paper --recipe post or classic</source>
+        <translation>marbler paper --recipe post oder classic</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The same seed and options make the same paper (marbler paper --seed)</source>
+        <translation>Derselbe Startwert und dieselben Optionen ergeben dasselbe Papier (marbler paper --seed)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Sheet</source>
+        <translation>Bo&amp;gen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Width</source>
+        <translation>&amp;Breite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Height</source>
+        <translation>&amp;Höhe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Colours</source>
+        <translation>&amp;Farben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Combing &amp;passes</source>
+        <translation>Kamm&amp;durchgänge</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Recipe</source>
+        <translation>&amp;Rezept</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;eed</source>
+        <translation>&amp;Startwert</translation>
+    </message>
+</context>
+<context>
     <name>marbler::ui::ParamForm</name>
     <message>
         <location filename="../app/editor/ParamForm.cpp" line="+210"/>
@@ -3149,7 +3504,7 @@ Ziehen zeigt die Änderung sofort</translation>
         <translation> Neue Population: </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>2D designs</source>
         <translation>2D-Muster</translation>
     </message>
@@ -3218,7 +3573,7 @@ The designs stay on what they were shown on.</source>
 Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+46"/>
         <source>Mixed families</source>
         <translation>Gemischte Familien</translation>
     </message>
@@ -3231,7 +3586,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::PopulationModel</name>
     <message>
-        <location filename="../app/workbench/PopulationModel.cpp" line="+36"/>
+        <location filename="../app/workbench/PopulationModel.cpp" line="+37"/>
         <source>Empty workbench</source>
         <translation>Leere Werkbank</translation>
     </message>
@@ -3336,9 +3691,42 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Neue zufällige Population</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+212"/>
         <source>%1 (branch %2)</source>
         <translation>%1 (Zweig %2)</translation>
+    </message>
+</context>
+<context>
+    <name>marbler::ui::RenameDialog</name>
+    <message>
+        <location filename="../app/shared/RenameDialog.cpp" line="+17"/>
+        <source>Rename design</source>
+        <translation>Muster umbenennen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The design&apos;s name: shown under it, offered as its file name, kept in the file</source>
+        <translation>Der Name des Musters: wird darunter gezeigt, als Dateiname vorgeschlagen und in der Datei gespeichert</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A note for yourself (optional)</source>
+        <translation>Eine Notiz für Sie selbst (optional)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shown in the design&apos;s tooltip and kept in its file (meta.note)</source>
+        <translation>Wird im Tooltip des Musters gezeigt und in seiner Datei gespeichert (meta.note)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>N&amp;ote:</source>
+        <translation>No&amp;tiz:</translation>
     </message>
 </context>
 <context>
@@ -3402,12 +3790,17 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::SavedFileNotice</name>
     <message>
-        <location filename="../app/shared/SavedFiles.cpp" line="+83"/>
+        <location filename="../app/shared/SavedFiles.cpp" line="+85"/>
         <source>Show in folder</source>
         <translation>Im Ordner zeigen</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+11"/>
+        <source>No file manager opened %1; the file&apos;s path is copied to the clipboard: %2</source>
+        <translation>Kein Dateimanager hat %1 geöffnet; der Pfad der Datei wurde in die Zwischenablage kopiert: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
@@ -3420,7 +3813,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::SectionControls</name>
     <message>
-        <location filename="../app/editor/SectionControls.cpp" line="+51"/>
+        <location filename="../app/shared/SectionControls.cpp" line="+52"/>
         <source>Section</source>
         <translation>Schnitt</translation>
     </message>
@@ -3505,7 +3898,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Das Objekt, auf dem das Muster gezeigt wird (Ziehen am Objekt dreht es)</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+81"/>
         <location line="+17"/>
         <source>n·p = </source>
         <translation>n·p = </translation>
@@ -3537,7 +3930,17 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::SessionsController</name>
     <message>
-        <location filename="../app/workbench/SessionsController.cpp" line="+19"/>
+        <location filename="../app/workbench/SessionsController.cpp" line="+25"/>
+        <source>&amp;New session</source>
+        <translation>Neue Si&amp;tzung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start a new breeding session with a random population of the kind shown; this one stays kept under File ▸ Sessions</source>
+        <translation>Eine neue Zuchtsitzung mit einer zufälligen Population der gezeigten Art beginnen; diese bleibt unter Datei ▸ Sitzungen aufbewahrt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Sessions…</source>
         <translation>&amp;Sitzungen…</translation>
     </message>
@@ -3552,7 +3955,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Sitzung &amp;fortsetzen</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Cannot save the session</source>
         <translation>Die Sitzung kann nicht gespeichert werden</translation>
     </message>
@@ -3571,7 +3974,22 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Die Sitzung konnte nicht gespeichert werden: %1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+24"/>
+        <source>Cannot start a new session</source>
+        <translation>Eine neue Sitzung kann nicht begonnen werden</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Started a new session “%1”</source>
+        <translation>Neue Sitzung „%1“ begonnen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Started a new session “%1”; “%2” is kept under File ▸ Sessions</source>
+        <translation>Neue Sitzung „%1“ begonnen; „%2“ bleibt unter Datei ▸ Sitzungen</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>No other sessions</source>
         <translation>Keine anderen Sitzungen</translation>
     </message>
@@ -3725,7 +4143,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::StartDialog</name>
     <message>
-        <location filename="../app/shared/StartDialog.cpp" line="+58"/>
+        <location filename="../app/shared/StartDialog.cpp" line="+59"/>
         <source>Marbler — what to breed</source>
         <translation>Marbler — was züchten</translation>
     </message>
@@ -4423,7 +4841,7 @@ Wenn nicht, bleiben sie %3 Tage unter Datei ▸ Ungespeicherte Muster wiederhers
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/workbench/WorkbenchWindow.cpp" line="+900"/>
+        <location filename="../app/workbench/WorkbenchWindow.cpp" line="+951"/>
         <source>Open in editor</source>
         <translation>Im Editor öffnen</translation>
     </message>
@@ -4514,7 +4932,7 @@ Wenn nicht, bleiben sie %3 Tage unter Datei ▸ Ungespeicherte Muster wiederhers
         <translation>Ein Bild marmorieren</translation>
     </message>
     <message>
-        <location filename="../app/workbench/WorkbenchWindow.cpp" line="-826"/>
+        <location filename="../app/workbench/WorkbenchWindow.cpp" line="-872"/>
         <source>Marbler designs (*.marble.json *.json *.png *.tif *.tiff);;Genome files (*.marble.json *.json);;Images with a genome (*.png *.tif *.tiff);;All files (*)</source>
         <translation>Marbler-Muster (*.marble.json *.json *.png *.tif *.tiff);;Genomdateien (*.marble.json *.json);;Bilder mit Genom (*.png *.tif *.tiff);;Alle Dateien (*)</translation>
     </message>
@@ -4524,13 +4942,13 @@ Wenn nicht, bleiben sie %3 Tage unter Datei ▸ Ungespeicherte Muster wiederhers
         <translation>Marbler — Evolutionswerkbank</translation>
     </message>
     <message>
-        <location line="+23"/>
-        <location line="+773"/>
+        <location line="+24"/>
+        <location line="+818"/>
         <source>Brought back a favourite</source>
         <translation>Einen Favoriten zurückgeholt</translation>
     </message>
     <message>
-        <location line="-771"/>
+        <location line="-816"/>
         <source>Cannot use the dropped design</source>
         <translation>Das abgelegte Muster kann nicht verwendet werden</translation>
     </message>
@@ -4669,12 +5087,7 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Neun flache Muster, deren Bad ein Bild Ihrer Wahl ist: Strömungen und Züge tragen seine Farben</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>New marbled &amp;paper</source>
-        <translation>Neues Marmor&amp;papier</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>A procedural marbled paper (as marbler paper makes) into the grid, to breed from</source>
         <translation>Ein prozedurales Marmorpapier (wie marbler paper es macht) ins Raster, zum Weiterzüchten</translation>
     </message>
@@ -4734,7 +5147,7 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Legt das Genom aus der Zwischenablage ins Raster, wie Datei ▸ Öffnen</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Clear &amp;selection</source>
         <translation>Auswahl &amp;aufheben</translation>
     </message>
@@ -4754,12 +5167,12 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Neue Population</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+143"/>
         <source>%1 · less like this</source>
         <translation>%1 · weniger davon</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)</source>
         <translation>Noch keine Muster: erzeugen Sie eine neue zufällige Population (Strg+N) oder öffnen Sie Muster (Strg+O)</translation>
     </message>
@@ -4804,12 +5217,12 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Generation %1 mit %2 gezüchtet</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>Cannot make a random population</source>
         <translation>Keine zufällige Population möglich</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+36"/>
         <source>Cannot open a design</source>
         <translation>Ein Muster kann nicht geöffnet werden</translation>
     </message>
@@ -4823,46 +5236,58 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
 %1</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <location line="+134"/>
+        <location line="+18"/>
+        <location line="+143"/>
         <source>design %1</source>
         <translation>Muster %1</translation>
     </message>
     <message>
-        <location line="-124"/>
-        <source>Some designs were not opened</source>
-        <translation>Einige Muster wurden nicht geöffnet</translation>
+        <location line="-625"/>
+        <source>New marbled &amp;paper…</source>
+        <translation>Neues Marmor&amp;papier…</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>A generation holds one kind of design, and %1 is %2, so these %3 designs were not opened; open them on their own:
-
-%4</source>
-        <translation>Eine Generation enthält eine Art von Mustern, und %1 ist %2, daher wurden diese %3 Muster nicht geöffnet; öffnen Sie sie für sich:
-
-%4</translation>
+        <location line="+31"/>
+        <source>&amp;Rename…</source>
+        <translation>&amp;Umbenennen…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>Names the focused design (else the first selected one) and gives it a note</source>
+        <translation>Benennt das fokussierte Muster (sonst das erste gewählte) und gibt ihm eine Notiz</translation>
+    </message>
+    <message>
+        <location line="+426"/>
+        <source>Nothing opened: %1 holds no design</source>
+        <translation>Nichts geöffnet: %1 enthält kein Muster</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <location line="+1"/>
-        <location line="+64"/>
+        <location line="+75"/>
         <source>solid</source>
         <translation>räumlich</translation>
     </message>
     <message>
-        <location line="-65"/>
+        <location line="-76"/>
         <location line="+1"/>
-        <location line="+64"/>
+        <location line="+75"/>
         <source>flat</source>
         <translation>flach</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-74"/>
+        <location line="+12"/>
         <source>Opened %1</source>
         <translation>%1 geöffnet</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="-9"/>
+        <source>Opened %1 and %2: the %3 designs are a generation of their own, the %4 ones one generation back (%5)</source>
+        <translation>%1 und %2 geöffnet: die %3en Muster bilden eine eigene Generation, die %4en liegen eine Generation zurück (%5)</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>Nothing opened: the grid is as it was</source>
         <translation>Nichts geöffnet: das Raster ist unverändert</translation>
     </message>
@@ -4893,12 +5318,17 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+205"/>
+        <location line="+263"/>
         <source>Copied %1 to the clipboard as genome text</source>
         <translation>%1 als Genomtext in die Zwischenablage kopiert</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-248"/>
+        <source>Cannot make the paper</source>
+        <translation>Das Papier kann nicht erzeugt werden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Marbled paper %1 (seed %2)</source>
         <translation>Marmorpapier %1 (Startwert %2)</translation>
     </message>
@@ -4944,6 +5374,11 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>Rename…</source>
+        <translation>Umbenennen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Save design…</source>
         <translation>Muster speichern…</translation>
     </message>
@@ -4983,7 +5418,22 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Operatoren behalten die Züge dieses Musters</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+120"/>
+        <source>Nothing to rename: click or select a design first</source>
+        <translation>Nichts umzubenennen: klicken oder wählen Sie zuerst ein Muster</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Renamed design %1 to “%2”</source>
+        <translation>Muster %1 in „%2“ umbenannt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Renamed design %1 to “%2”: another design of this session is called “%3”</source>
+        <translation>Muster %1 in „%2“ umbenannt: ein anderes Muster dieser Sitzung heißt „%3“</translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>design %1 of generation %2</source>
         <translation>Muster %1 von Generation %2</translation>
     </message>

@@ -94,7 +94,7 @@
         <translation>%1: .glb, .gltf veya .obj seçin</translation>
     </message>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="+302"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="+373"/>
         <source>Save design</source>
         <translation>Deseni kaydet</translation>
     </message>
@@ -104,12 +104,72 @@
         <translation>Marbler genomları (*.marble.json)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>Cannot save the design</source>
         <translation>Desen kaydedilemiyor</translation>
     </message>
     <message>
-        <location filename="../app/shared/ExportSettingsDialog.cpp" line="+41"/>
+        <location filename="../app/shared/ExportSettingsDialog.cpp" line="+45"/>
+        <source>Off (1 sample, fastest)</source>
+        <translation>Kapalı (1 örnek, en hızlı)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One sample a pixel: hard, stepped edges</source>
+        <translation>Piksel başına bir örnek: sert, basamaklı kenarlar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Smooth (4 samples, default)</source>
+        <translation>Pürüzsüz (4 örnek, varsayılan)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Four samples a pixel on a rotated grid: smooth edges at a small cost</source>
+        <translation>Döndürülmüş bir ızgarada piksel başına dört örnek: az bir bedelle pürüzsüz kenarlar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Soft (5 samples)</source>
+        <translation>Yumuşak (5 örnek)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Five samples a pixel, the centre weighted most: slightly soft edges</source>
+        <translation>Piksel başına beş örnek, en çok merkez ağırlıklı: hafifçe yumuşak kenarlar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fine checkerboard (%1 samples)</source>
+        <translation>İnce dama (%1 örnek)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Samples on every other square of a 4 × 4 grid</source>
+        <translation>4 × 4 bir ızgarada bir kare atlayarak dizilen örnekler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fine (%1 samples)</source>
+        <translation>İnce (%1 örnek)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Eight samples a pixel, each in a row and a column of its own: fine edges</source>
+        <translation>Piksel başına sekiz örnek, her biri kendi satırında ve kendi sütununda: ince kenarlar</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Grid %1 × %1 (%2 samples)</source>
+        <translation>Izgara %1 × %1 (%2 örnek)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Samples on a regular %1 × %1 grid a pixel: finer and slower as it grows</source>
+        <translation>Piksel başına düzenli bir %1 × %1 ızgarada örnekler: büyüdükçe daha ince ve daha yavaş</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>The image would be %1 × %2 pixels: choose a size of at least 1 pixel.</source>
         <translation>Görüntü %1 × %2 piksel olurdu: en az 1 piksellik bir boyut seçin.</translation>
     </message>
@@ -152,6 +212,25 @@
         <location filename="../app/workbench/WorkbenchPicture.cpp" line="+25"/>
         <source>Pictures (%1);;All files (*)</source>
         <translation>Resimler (%1);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/workbench/OpenPlacement.cpp" line="+144"/>
+        <source>Marble a picture?</source>
+        <translation>Resim ebrulansın mı?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is a picture without a Marbler design in it.
+
+Marble it: nine designs whose bath is the picture, as File ▸ Marble a picture makes?</source>
+        <translation>%1, içinde Marbler deseni olmayan bir resim.
+
+Ebrulansın mı? Dosya ▸ Bir resmi ebrula komutunun yaptığı gibi, teknesi bu resim olan dokuz desen yapılır.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Marble the picture</source>
+        <translation>Resmi &amp;ebrula</translation>
     </message>
 </context>
 <context>
@@ -953,7 +1032,7 @@
         <translation>%1 göster veya gizle</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>Keys</source>
         <translation>Tuşlar</translation>
     </message>
@@ -1243,7 +1322,7 @@
 <context>
     <name>marbler::ui::ColourwaysController</name>
     <message>
-        <location filename="../app/workbench/ColourwaysController.cpp" line="+35"/>
+        <location filename="../app/workbench/ColourwaysController.cpp" line="+56"/>
         <source>&amp;Colourways</source>
         <translation>&amp;Renk seçenekleri</translation>
     </message>
@@ -1259,11 +1338,21 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>The grid&apos;s designs side by side in one PNG or TIFF image</source>
-        <translation>Izgaradaki desenler yan yana, tek bir PNG veya TIFF görüntüsünde</translation>
+        <source>The grid&apos;s designs side by side in one PNG or TIFF image, each named</source>
+        <translation>Izgaradaki desenler yan yana, tek bir PNG veya TIFF görüntüsünde, her biri adıyla</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+1"/>
+        <source>Colourway sheet with ink c&amp;hips</source>
+        <translation>Renk seçenekleri sayfasında &amp;boya örnekleri</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Put each design&apos;s inks, with their hex values, under its name on the sheet</source>
+        <translation>Her desenin boyalarını onaltılık değerleriyle birlikte sayfada adının altına koy</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Colourways off: the operators breed whole designs again</source>
         <translation>Renk seçenekleri kapalı: işlemler yine desenlerin tamamını üretir</translation>
     </message>
@@ -1324,29 +1413,29 @@
         <translation>Sayfaya konacak desen henüz yok</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+41"/>
+        <location line="+10"/>
+        <location line="+45"/>
         <source>Export colourway sheet</source>
         <translation>Renk seçenekleri sayfasını dışa aktar</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-43"/>
         <source>PNG image (*.png);;TIFF image (*.tif *.tiff)</source>
         <translation>PNG görüntüsü (*.png);;TIFF görüntüsü (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <location line="+22"/>
+        <location line="+14"/>
+        <location line="+24"/>
         <source>Cannot export the colourway sheet</source>
         <translation>Renk seçenekleri sayfası dışa aktarılamıyor</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-18"/>
         <source>Rendering the colourway sheet…</source>
         <translation>Renk seçenekleri sayfası işleniyor…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>Colourway sheet cancelled</source>
         <translation>Renk seçenekleri sayfası iptal edildi</translation>
     </message>
@@ -1364,9 +1453,9 @@
         <translation>Desen %1</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Click to choose as a parent, double-click to open large, right-click for locks and favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.</source>
-        <translation>Ebeveyn seçmek için tıklayın, büyük açmak için çift tıklayın, kilitler ve gözdeler için sağ tıklayın. Yüklemek için buraya bir genom dosyası ya da Marbler&apos;ın dışa aktardığı bir PNG veya TIFF bırakın.</translation>
+        <location line="+16"/>
+        <source>Click to choose as a parent, double-click to open large, F2 to rename, right-click for locks and favourites. Drop a genome file, or a PNG or TIFF Marbler exported, here to load it.</source>
+        <translation>Ebeveyn seçmek için tıklayın, büyük açmak için çift tıklayın, yeniden adlandırmak için F2&apos;ye basın, kilitler ve gözdeler için sağ tıklayın. Yüklemek için buraya bir genom dosyası ya da Marbler&apos;ın dışa aktardığı bir PNG veya TIFF bırakın.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1378,7 +1467,16 @@
 %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+1"/>
+        <source>Note: %1
+
+%2</source>
+        <translation>Not: %1
+
+%2</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>selected as a parent</source>
         <translation>ebeveyn olarak seçili</translation>
     </message>
@@ -1403,12 +1501,13 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::DesignDialog</name>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="-276"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="-349"/>
+        <location line="+325"/>
         <source>Design %1</source>
         <translation>Desen %1</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="-306"/>
         <source>Zoom out (-, wheel)</source>
         <translation>Uzaklaştır (-, tekerlek)</translation>
     </message>
@@ -1468,7 +1567,17 @@ burada bir desen açın veya bırakın</translation>
         <translation>Tekrarı değerlendirmek için desenin tamamını ayna tekrarı olarak 2 × 2 döşenmiş göster (R)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
+        <source>Section</source>
+        <translation>Kesit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show a cross-section of the solid instead of the object; move it and turn it to any angle below (S)</source>
+        <translation>Nesne yerine katı desenin bir kesitini göster; aşağıda onu taşıyıp istediğiniz açıya döndürebilirsiniz (S)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&amp;Save genome…</source>
         <translation>Genomu &amp;kaydet…</translation>
     </message>
@@ -1513,12 +1622,12 @@ burada bir desen açın veya bırakın</translation>
         <translation>Kapat</translation>
     </message>
     <message>
-        <location line="+51"/>
-        <source>Exported %1</source>
-        <translation>%1 dışa aktarıldı</translation>
+        <location line="+29"/>
+        <source>Rename…</source>
+        <translation>Yeniden adlandır…</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+153"/>
         <source>Export image</source>
         <translation>Görüntüyü dışa aktar</translation>
     </message>
@@ -1541,7 +1650,12 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::DesignExport</name>
     <message>
-        <location filename="../app/shared/DesignExport.cpp" line="+38"/>
+        <location filename="../app/shared/DesignExport.cpp" line="+22"/>
+        <source>Export cancelled: %1 was not written</source>
+        <translation>Dışa aktarım iptal edildi: %1 yazılmadı</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <location line="+76"/>
         <source>Cannot export the image</source>
         <translation>Görüntü dışa aktarılamıyor</translation>
@@ -1556,11 +1670,12 @@ burada bir desen açın veya bırakın</translation>
     <name>marbler::ui::DesignView</name>
     <message>
         <location filename="../app/shared/DesignView.cpp" line="+45"/>
+        <location line="+206"/>
         <source>Drag to turn the object; wheel, + and - zoom</source>
         <translation>Nesneyi döndürmek için sürükleyin; tekerlek, + ve - yakınlaştırır</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-205"/>
         <source>Wheel, + and - zoom about the pointer; drag to pan</source>
         <translation>Tekerlek, + ve - imleç çevresinde yakınlaştırır; kaydırmak için sürükleyin</translation>
     </message>
@@ -1579,6 +1694,11 @@ burada bir desen açın veya bırakın</translation>
         <source>%L1 %</source>
         <translation>%%L1</translation>
     </message>
+    <message>
+        <location line="+154"/>
+        <source>The cross-section: the section controls below move and turn it</source>
+        <translation>Kesit: aşağıdaki kesit denetimleri onu taşır ve döndürür</translation>
+    </message>
 </context>
 <context>
     <name>marbler::ui::EditorCanvas</name>
@@ -1596,7 +1716,12 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorDocument</name>
     <message>
-        <location filename="../app/editor/EditorDocument.cpp" line="+366"/>
+        <location filename="../app/editor/EditorDocument.cpp" line="+451"/>
+        <source>Not done: this design&apos;s bath wraps (it is a repeat tile), and %1. Edit ▸ Bath wraps turns the wrap off and allows every tool.</source>
+        <translation>Yapılmadı: bu desenin teknesi kenarlardan sarılır (desen bir tekrar karosudur) ve %1. Düzen ▸ Tekne kenarlardan sarılır sarmayı kapatır ve her araca izin verir.</translation>
+    </message>
+    <message>
+        <location line="+93"/>
         <source>Add %1</source>
         <translation>%1 ekle</translation>
     </message>
@@ -1656,7 +1781,17 @@ burada bir desen açın veya bırakın</translation>
         <translation>Yayılma: %1 → %2</translation>
     </message>
     <message>
-        <location line="+190"/>
+        <location line="+15"/>
+        <source>Wrap the bath</source>
+        <translation>Tekneyi kenarlardan sar</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unwrap the bath</source>
+        <translation>Tekneyi kenarlardan sarmayı kaldır</translation>
+    </message>
+    <message>
+        <location line="+211"/>
         <source>Delete ink %1: %2</source>
         <translation>Boya %1 sil: %2</translation>
     </message>
@@ -1669,7 +1804,7 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorExports</name>
     <message>
-        <location filename="../app/editor/EditorExports.cpp" line="+43"/>
+        <location filename="../app/editor/EditorExports.cpp" line="+48"/>
         <location line="+29"/>
         <source>An animation is being written already</source>
         <translation>Bir animasyon zaten yazılıyor</translation>
@@ -1693,17 +1828,23 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorFiles</name>
     <message>
-        <location filename="../app/editor/EditorFiles.cpp" line="+43"/>
+        <location filename="../app/editor/EditorFiles.cpp" line="+45"/>
         <source>Designs (*.marble.json *.json *.png *.tif *.tiff);;All files (*)</source>
         <translation>Desenler (*.marble.json *.json *.png *.tif *.tiff);;Tüm dosyalar (*)</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+44"/>
         <source>Untitled design</source>
         <translation>Adsız desen</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+2"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Save a design opened from an image</source>
         <translation>Bir görüntüden açılan deseni kaydet</translation>
     </message>
@@ -1738,7 +1879,12 @@ burada bir desen açın veya bırakın</translation>
         <translation>Marbler desenleri (*.marble.json)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+11"/>
+        <source>Name “%1”</source>
+        <translation>“%1” adını ver</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>The file was changed</source>
         <translation>Dosya değiştirildi</translation>
     </message>
@@ -1862,7 +2008,7 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorWindow</name>
     <message>
-        <location filename="../app/editor/EditorWindow.cpp" line="+223"/>
+        <location filename="../app/editor/EditorWindow.cpp" line="+225"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
@@ -2022,7 +2168,22 @@ burada bir desen açın veya bırakın</translation>
         <translation>Ctrl+Y</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+4"/>
+        <source>Re&amp;name…</source>
+        <translation>Yeniden &amp;adlandır…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Names the design and gives it a note (one undo step)</source>
+        <translation>Desene bir ad ve bir not verir (tek geri alma adımı)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Bath &amp;wraps (straight repeat)</source>
+        <translation>Tekne &amp;kenarlardan sarılır (düz tekrar)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Tools</source>
         <translation>&amp;Araçlar</translation>
     </message>
@@ -2147,7 +2308,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>&lt;h2&gt;Düzenleyici&lt;/h2&gt;&lt;p&gt;Bir desen bir adımlar listesidir: önce tekneye serpilen boyalar, sonra onları hareket ettiren çekişler. Bir araç seçin, sonra tuvale tıklayın veya sürükleyin; yeni adım seçili adımın (ya da zaman çizelgesindeki noktanın) ardına gelir ve tuval deseni o adımın hemen sonrasıyla gösterir. Biz serbest elle çizer: izi sürüklemeyi izler (kalemin basıncını da), panel çekişini, erimini ve tarağını belirler, izinin noktaları da tutamaçlarıdır.&lt;/p&gt;&lt;p&gt;Bir adımı, ne kadar geride olursa olsun, formda ya da tutamaçlarıyla değiştirmek için seçin; listeden susturun, çoğaltın, taşıyın veya silin. Geri al ve yinele her yerden çalışır; geri alıp sonra başka bir düzenlemeyle bıraktığınız düzenlemeler Geçmiş ▸ Diğer dallar altında, bir tık ötede kalır.&lt;/p&gt;&lt;p&gt;Zaman çizelgesi desenin yapılışında gezinir, onu oynatır ve iki durumu karşılaştırır. Boyalar paleti ve teknenin rengini tutar.&lt;/p&gt;&lt;h3&gt;Tuşlar&lt;/h3&gt;</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+56"/>
         <source>Added as step %1 of %2; the timeline shows the design up to it (End shows all)</source>
         <translation>%2 adımın %1. adımı olarak eklendi; zaman çizelgesi deseni bu adıma kadar gösteriyor (End hepsini gösterir)</translation>
     </message>
@@ -2177,7 +2338,27 @@ burada bir desen açın veya bırakın</translation>
         <translation>Palet: %1</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+55"/>
+        <source>The bath wraps: the design is a repeat tile, and takes only spray and stretch along an axis. Turn it off to use every tool.</source>
+        <translation>Tekne kenarlardan sarılır: desen bir tekrar karosudur ve yalnızca serpme ile bir eksen boyunca germe alır. Her aracı kullanmak için bunu kapatın.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Make the bath wrap: the design becomes a straight-repeat tile</source>
+        <translation>Tekneyi kenarlardan sar: desen düz tekrarlı bir karo olur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This design cannot wrap: %1</source>
+        <translation>Bu desenin teknesi kenarlardan sarılamaz: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 (not in a bath that wraps: turn off Edit ▸ Bath wraps to use it)</source>
+        <translation>%1 (kenarlardan sarılan bir teknede olmaz: kullanmak için Düzen ▸ Tekne kenarlardan sarılır seçeneğini kapatın)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source> · ink %1</source>
         <translation> · boya %1</translation>
     </message>
@@ -2192,6 +2373,16 @@ burada bir desen açın veya bırakın</translation>
         <location line="+55"/>
         <source>%1[*] — Marbler editor</source>
         <translation>%1[*] — Marbler düzenleyicisi</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Rename to “%1”</source>
+        <translation>“%1” olarak yeniden adlandır</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Renamed to “%1”</source>
+        <translation>“%1” olarak yeniden adlandırıldı</translation>
     </message>
 </context>
 <context>
@@ -2248,11 +2439,12 @@ burada bir desen açın veya bırakın</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+177"/>
         <source>pixels</source>
         <translation>piksel</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-176"/>
         <source>cm</source>
         <translation>cm</translation>
     </message>
@@ -2277,9 +2469,14 @@ burada bir desen açın veya bırakın</translation>
         <translation>İnç başına nokta: baskı boyutunu piksele çevirir ve dosyaya yazılır</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Antialiasing pattern: more samples, smoother edges, slower</source>
-        <translation>Kenar yumuşatma düzeni: daha çok örnek, daha yumuşak kenarlar, daha yavaş</translation>
+        <location line="+9"/>
+        <source>%1 (marbler render --aa %2)</source>
+        <translation>%1 (marbler render --aa %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Antialiasing: more samples a pixel give smoother edges and a slower render</source>
+        <translation>Kenar yumuşatma: piksel başına daha çok örnek, daha yumuşak kenarlar ve daha yavaş bir işleme demektir</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2412,7 +2609,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>&amp;Konum</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+95"/>
         <source>Vector outlines in design units (%L1 × %L2)</source>
         <translation>Desen birimiyle vektör dış çizgileri (%L1 × %L2)</translation>
     </message>
@@ -2432,7 +2629,17 @@ burada bir desen açın veya bırakın</translation>
         <translation> (%3 dpi&apos;de %1 × %2 inç)</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+19"/>
+        <source>The widest that fits is %L1 pixels: type at most that in Width.</source>
+        <translation>Sığan en büyük genişlik %L1 piksel: Genişlik alanına en çok bunu yazın.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The widest that fits is %L1 %2 at %3 dpi: type at most that in Width, or lower the resolution.</source>
+        <translation>%3 dpi&apos;de sığan en büyük genişlik %L1 %2: Genişlik alanına en çok bunu yazın ya da çözünürlüğü düşürün.</translation>
+    </message>
+    <message>
+        <location line="+119"/>
         <source>The image is too large</source>
         <translation>Görüntü çok büyük</translation>
     </message>
@@ -2440,7 +2647,7 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::FavouritesShelf</name>
     <message>
-        <location filename="../app/workbench/FavouritesShelf.cpp" line="+58"/>
+        <location filename="../app/workbench/FavouritesShelf.cpp" line="+59"/>
         <source>&amp;Restore removed favourite</source>
         <translation>Kaldırılan gözdeyi &amp;geri getir</translation>
     </message>
@@ -2470,7 +2677,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>Kaldırılan gözdeyi geri koy (%1)</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+49"/>
         <source>Cannot keep the favourite</source>
         <translation>Gözde saklanamıyor</translation>
     </message>
@@ -2486,11 +2693,26 @@ burada bir desen açın veya bırakın</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Rename…</source>
+        <translation>Yeniden adlandır…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Remove from favourites</source>
         <translation>Gözdelerden kaldır</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
+        <source>Cannot rename the favourite</source>
+        <translation>Gözde yeniden adlandırılamıyor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 could not be written</source>
+        <translation>%1 yazılamadı</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Cannot remove the favourite</source>
         <translation>Gözde kaldırılamıyor</translation>
     </message>
@@ -2717,7 +2939,7 @@ Aile: %2</translation>
 <context>
     <name>marbler::ui::OpenPlacementDialog</name>
     <message>
-        <location filename="../app/workbench/OpenPlacement.cpp" line="+27"/>
+        <location filename="../app/workbench/OpenPlacement.cpp" line="-120"/>
         <source>design %1</source>
         <translation>desen %1</translation>
     </message>
@@ -3024,6 +3246,139 @@ Aile: %2</translation>
     </message>
 </context>
 <context>
+    <name>marbler::ui::PaperDialog</name>
+    <message>
+        <location filename="../app/workbench/PaperDialog.cpp" line="+32"/>
+        <source>A5 (148 × 210 mm)</source>
+        <translation>A5 (148 × 210 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A4 (210 × 297 mm)</source>
+        <translation>A4 (210 × 297 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A3 (297 × 420 mm)</source>
+        <translation>A3 (297 × 420 mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Letter (8.5 × 11 in)</source>
+        <translation>Letter (8,5 × 11 inç)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Square (300 × 300 mm)</source>
+        <translation>Kare (300 × 300 mm)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>New marbled paper</source>
+        <translation>Yeni ebru kâğıdı</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Custom size</source>
+        <translation>Özel boyut</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The sheet the paper is made for; the design is measured in its millimetres (marbler paper --size)</source>
+        <translation>Ebru kâğıdının yapılacağı kâğıt; desen bu kâğıdın milimetreleriyle ölçülür (marbler paper --size)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The sheet&apos;s width in millimetres</source>
+        <translation>Kâğıdın milimetre cinsinden genişliği</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The sheet&apos;s height in millimetres</source>
+        <translation>Kâğıdın milimetre cinsinden yüksekliği</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Inks, one layer of drops each, each later one smaller (marbler paper --colors)</source>
+        <translation>Boyalar: her biri bir damla katmanı, sonraki her biri bir öncekinden küçük (marbler paper --colors)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Combing passes along the sheet, each weaker than the one before (marbler paper --passes)</source>
+        <translation>Kâğıt boyunca tarak geçişleri, her biri bir öncekinden daha zayıf (marbler paper --passes)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pastel inks on a white bath</source>
+        <translation>Beyaz teknede &amp;pastel boyalar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pale, soft inks instead of random ones on cream (marbler paper --pastel)</source>
+        <translation>Krem teknede rastgele boyalar yerine soluk, yumuşak boyalar (marbler paper --pastel)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Golden-ratio drops, wrapping (the post&apos;s)</source>
+        <translation>Altın oranlı damlalar, kenarlardan sarılan (yazıdaki tarif)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Classic drops on cream</source>
+        <translation>Krem teknede klasik damlalar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>marbler paper --recipe post or classic</source>
+        <translation>marbler paper --recipe post veya classic</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The same seed and options make the same paper (marbler paper --seed)</source>
+        <translation>Aynı tohum ve seçenekler aynı kâğıdı yapar (marbler paper --seed)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Sheet</source>
+        <translation>&amp;Kâğıt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Width</source>
+        <translation>&amp;Genişlik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Height</source>
+        <translation>&amp;Yükseklik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Colours</source>
+        <translation>&amp;Renkler</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Combing &amp;passes</source>
+        <translation>&amp;Tarak geçişleri</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Recipe</source>
+        <translation>Tar&amp;if</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;eed</source>
+        <translation>T&amp;ohum</translation>
+    </message>
+</context>
+<context>
     <name>marbler::ui::ParamForm</name>
     <message>
         <location filename="../app/editor/ParamForm.cpp" line="+210"/>
@@ -3144,7 +3499,7 @@ Değişikliği anında görmek için sürükleyin</translation>
         <translation> Yeni topluluk: </translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>2D designs</source>
         <translation>2B desenler</translation>
     </message>
@@ -3213,7 +3568,7 @@ The designs stay on what they were shown on.</source>
 Desenler gösterildikleri nesnede kalır.</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+46"/>
         <source>Mixed families</source>
         <translation>Karışık aileler</translation>
     </message>
@@ -3226,7 +3581,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::PopulationModel</name>
     <message>
-        <location filename="../app/workbench/PopulationModel.cpp" line="+36"/>
+        <location filename="../app/workbench/PopulationModel.cpp" line="+37"/>
         <source>Empty workbench</source>
         <translation>Boş tezgâh</translation>
     </message>
@@ -3331,9 +3686,42 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Yeni rastgele topluluk</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+212"/>
         <source>%1 (branch %2)</source>
         <translation>%1 (dal %2)</translation>
+    </message>
+</context>
+<context>
+    <name>marbler::ui::RenameDialog</name>
+    <message>
+        <location filename="../app/shared/RenameDialog.cpp" line="+17"/>
+        <source>Rename design</source>
+        <translation>Deseni yeniden adlandır</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The design&apos;s name: shown under it, offered as its file name, kept in the file</source>
+        <translation>Desenin adı: altında gösterilir, dosya adı olarak önerilir, dosyada saklanır</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A note for yourself (optional)</source>
+        <translation>Kendiniz için bir not (isteğe bağlı)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shown in the design&apos;s tooltip and kept in its file (meta.note)</source>
+        <translation>Desenin araç ipucunda gösterilir ve dosyasında saklanır (meta.note)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Name:</source>
+        <translation>&amp;Ad:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>N&amp;ote:</source>
+        <translation>&amp;Not:</translation>
     </message>
 </context>
 <context>
@@ -3397,12 +3785,17 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::SavedFileNotice</name>
     <message>
-        <location filename="../app/shared/SavedFiles.cpp" line="+83"/>
+        <location filename="../app/shared/SavedFiles.cpp" line="+85"/>
         <source>Show in folder</source>
         <translation>Klasörde göster</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+11"/>
+        <source>No file manager opened %1; the file&apos;s path is copied to the clipboard: %2</source>
+        <translation>%1 hiçbir dosya yöneticisinde açılamadı; dosyanın yolu panoya kopyalandı: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Saved %1</source>
         <translation>%1 kaydedildi</translation>
     </message>
@@ -3415,7 +3808,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::SectionControls</name>
     <message>
-        <location filename="../app/editor/SectionControls.cpp" line="+51"/>
+        <location filename="../app/shared/SectionControls.cpp" line="+52"/>
         <source>Section</source>
         <translation>Kesit</translation>
     </message>
@@ -3500,7 +3893,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Desenin üzerinde gösterildiği nesne (döndürmek için nesneyi sürükleyin)</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+81"/>
         <location line="+17"/>
         <source>n·p = </source>
         <translation>n·p = </translation>
@@ -3532,7 +3925,17 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::SessionsController</name>
     <message>
-        <location filename="../app/workbench/SessionsController.cpp" line="+19"/>
+        <location filename="../app/workbench/SessionsController.cpp" line="+25"/>
+        <source>&amp;New session</source>
+        <translation>Yeni o&amp;turum</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start a new breeding session with a random population of the kind shown; this one stays kept under File ▸ Sessions</source>
+        <translation>Gösterilen türden rastgele bir toplulukla yeni bir üretim oturumu başlat; bu oturum Dosya ▸ Oturumlar altında saklanır</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Sessions…</source>
         <translation>&amp;Oturumlar…</translation>
     </message>
@@ -3547,7 +3950,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Oturumu &amp;sürdür</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Cannot save the session</source>
         <translation>Oturum kaydedilemiyor</translation>
     </message>
@@ -3566,7 +3969,22 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Oturum kaydedilemedi: %1</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+24"/>
+        <source>Cannot start a new session</source>
+        <translation>Yeni oturum başlatılamıyor</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Started a new session “%1”</source>
+        <translation>Yeni bir oturum başlatıldı: “%1”</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Started a new session “%1”; “%2” is kept under File ▸ Sessions</source>
+        <translation>Yeni bir oturum başlatıldı: “%1”; “%2” Dosya ▸ Oturumlar altında saklanıyor</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>No other sessions</source>
         <translation>Başka oturum yok</translation>
     </message>
@@ -3720,7 +4138,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::StartDialog</name>
     <message>
-        <location filename="../app/shared/StartDialog.cpp" line="+58"/>
+        <location filename="../app/shared/StartDialog.cpp" line="+59"/>
         <source>Marbler — what to breed</source>
         <translation>Marbler — ne üretilsin</translation>
     </message>
@@ -4418,7 +4836,7 @@ Açılmazlarsa %3 gün boyunca Dosya ▸ Kaydedilmemiş desenleri kurtar… alt�
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/workbench/WorkbenchWindow.cpp" line="+900"/>
+        <location filename="../app/workbench/WorkbenchWindow.cpp" line="+951"/>
         <source>Open in editor</source>
         <translation>Düzenleyicide aç</translation>
     </message>
@@ -4509,7 +4927,7 @@ Açılmazlarsa %3 gün boyunca Dosya ▸ Kaydedilmemiş desenleri kurtar… alt�
         <translation>Bir resmi ebrula</translation>
     </message>
     <message>
-        <location filename="../app/workbench/WorkbenchWindow.cpp" line="-826"/>
+        <location filename="../app/workbench/WorkbenchWindow.cpp" line="-872"/>
         <source>Marbler designs (*.marble.json *.json *.png *.tif *.tiff);;Genome files (*.marble.json *.json);;Images with a genome (*.png *.tif *.tiff);;All files (*)</source>
         <translation>Marbler desenleri (*.marble.json *.json *.png *.tif *.tiff);;Genom dosyaları (*.marble.json *.json);;Genom taşıyan görüntüler (*.png *.tif *.tiff);;Tüm dosyalar (*)</translation>
     </message>
@@ -4519,13 +4937,13 @@ Açılmazlarsa %3 gün boyunca Dosya ▸ Kaydedilmemiş desenleri kurtar… alt�
         <translation>Marbler — evrim tezgâhı</translation>
     </message>
     <message>
-        <location line="+23"/>
-        <location line="+773"/>
+        <location line="+24"/>
+        <location line="+818"/>
         <source>Brought back a favourite</source>
         <translation>Bir gözde geri getirildi</translation>
     </message>
     <message>
-        <location line="-771"/>
+        <location line="-816"/>
         <source>Cannot use the dropped design</source>
         <translation>Bırakılan desen kullanılamıyor</translation>
     </message>
@@ -4664,12 +5082,7 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>Teknesi seçtiğiniz bir resim olan dokuz düz desen: akışlar ve çekişler onun renklerini taşır</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>New marbled &amp;paper</source>
-        <translation>Yeni ebru &amp;kâğıdı</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>A procedural marbled paper (as marbler paper makes) into the grid, to breed from</source>
         <translation>Üretmek için ızgaraya, yordamsal bir ebru kâğıdı (marbler paper&apos;ın yaptığı gibi)</translation>
     </message>
@@ -4729,7 +5142,7 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>Panodaki genomu, Dosya ▸ Aç gibi ızgaraya koyar</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Clear &amp;selection</source>
         <translation>&amp;Seçimi temizle</translation>
     </message>
@@ -4749,12 +5162,12 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>Yeni topluluk</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+143"/>
         <source>%1 · less like this</source>
         <translation>%1 · bunun gibi daha az</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>No designs yet: make a new random population (Ctrl+N) or open designs (Ctrl+O)</source>
         <translation>Henüz desen yok: yeni bir rastgele topluluk yapın (Ctrl+N) ya da desen açın (Ctrl+O)</translation>
     </message>
@@ -4799,12 +5212,12 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>%1. nesil %2 ile üretildi</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>Cannot make a random population</source>
         <translation>Rastgele topluluk yapılamıyor</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+36"/>
         <source>Cannot open a design</source>
         <translation>Bir desen açılamıyor</translation>
     </message>
@@ -4818,46 +5231,58 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
 %1</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <location line="+134"/>
+        <location line="+18"/>
+        <location line="+143"/>
         <source>design %1</source>
         <translation>desen %1</translation>
     </message>
     <message>
-        <location line="-124"/>
-        <source>Some designs were not opened</source>
-        <translation>Bazı desenler açılmadı</translation>
+        <location line="-625"/>
+        <source>New marbled &amp;paper…</source>
+        <translation>Yeni e&amp;bru kâğıdı…</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>A generation holds one kind of design, and %1 is %2, so these %3 designs were not opened; open them on their own:
-
-%4</source>
-        <translation>Bir nesil tek türden desen tutar ve %1 %2, bu yüzden bu %3 desenler açılmadı; onları ayrı açın:
-
-%4</translation>
+        <location line="+31"/>
+        <source>&amp;Rename…</source>
+        <translation>Yeniden &amp;adlandır…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>Names the focused design (else the first selected one) and gives it a note</source>
+        <translation>Odaktaki desene (yoksa ilk seçilene) bir ad ve bir not verir</translation>
+    </message>
+    <message>
+        <location line="+426"/>
+        <source>Nothing opened: %1 holds no design</source>
+        <translation>Hiçbir şey açılmadı: %1 desen içermiyor</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <location line="+1"/>
-        <location line="+64"/>
+        <location line="+75"/>
         <source>solid</source>
         <translation>katı</translation>
     </message>
     <message>
-        <location line="-65"/>
+        <location line="-76"/>
         <location line="+1"/>
-        <location line="+64"/>
+        <location line="+75"/>
         <source>flat</source>
         <translation>düz</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-74"/>
+        <location line="+12"/>
         <source>Opened %1</source>
         <translation>%1 açıldı</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="-9"/>
+        <source>Opened %1 and %2: the %3 designs are a generation of their own, the %4 ones one generation back (%5)</source>
+        <translation>%1 ve %2 açıldı: %3 desenler kendi başına bir nesil oldu, %4 olanlar bir nesil geride (%5)</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>Nothing opened: the grid is as it was</source>
         <translation>Hiçbir şey açılmadı: ızgara olduğu gibi</translation>
     </message>
@@ -4888,12 +5313,17 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+205"/>
+        <location line="+263"/>
         <source>Copied %1 to the clipboard as genome text</source>
         <translation>%1 panoya genom metni olarak kopyalandı</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-248"/>
+        <source>Cannot make the paper</source>
+        <translation>Kâğıt yapılamıyor</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Marbled paper %1 (seed %2)</source>
         <translation>Ebru kâğıdı %1 (tohum %2)</translation>
     </message>
@@ -4939,6 +5369,11 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>Rename…</source>
+        <translation>Yeniden adlandır…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Save design…</source>
         <translation>Deseni kaydet…</translation>
     </message>
@@ -4978,7 +5413,22 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>İşlemler bu desenin çekişlerini korur</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+120"/>
+        <source>Nothing to rename: click or select a design first</source>
+        <translation>Yeniden adlandırılacak bir şey yok: önce bir desene tıklayın ya da bir desen seçin</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Renamed design %1 to “%2”</source>
+        <translation>Desen %1, “%2” olarak yeniden adlandırıldı</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Renamed design %1 to “%2”: another design of this session is called “%3”</source>
+        <translation>Desen %1, “%2” olarak yeniden adlandırıldı: bu oturumdaki başka bir desenin adı da “%3”</translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>design %1 of generation %2</source>
         <translation>%2. neslin %1. deseni</translation>
     </message>

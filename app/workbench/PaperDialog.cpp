@@ -29,11 +29,12 @@ struct PaperSheet {
     const char* name;
     double width, height;
 };
-constexpr PaperSheet PaperSheets[] = {{"A5 (148 × 210 mm)", 148.0, 210.0},
-                                      {"A4 (210 × 297 mm)", 210.0, 297.0},
-                                      {"A3 (297 × 420 mm)", 297.0, 420.0},
-                                      {"Letter (8.5 × 11 in)", 215.9, 279.4},
-                                      {"Square (300 × 300 mm)", 300.0, 300.0}};
+constexpr PaperSheet PaperSheets[] = {
+    {QT_TRANSLATE_NOOP("marbler::ui::PaperDialog", "A5 (148 × 210 mm)"), 148.0, 210.0},
+    {QT_TRANSLATE_NOOP("marbler::ui::PaperDialog", "A4 (210 × 297 mm)"), 210.0, 297.0},
+    {QT_TRANSLATE_NOOP("marbler::ui::PaperDialog", "A3 (297 × 420 mm)"), 297.0, 420.0},
+    {QT_TRANSLATE_NOOP("marbler::ui::PaperDialog", "Letter (8.5 × 11 in)"), 215.9, 279.4},
+    {QT_TRANSLATE_NOOP("marbler::ui::PaperDialog", "Square (300 × 300 mm)"), 300.0, 300.0}};
 
 const QString PaperWidthKey = QStringLiteral("paper/width");
 const QString PaperHeightKey = QStringLiteral("paper/height");
