@@ -124,6 +124,31 @@ void checkFreeForm(const Json& value, const std::string& where, const std::strin
 
 // ---- Wrapping bath (docs/genome-format.md, "Wrapping bath") ----
 
+} // namespace
+
+/// The tools whose steps can lie in a bath that wraps (GenomeIO.h); whyCannotWrap says why not.
+bool toolMayWrap(Tool tool) {
+    switch (tool) {
+    case Tool::Spray:
+    case Tool::Stretch:
+        return true;
+    case Tool::Drop:
+    case Tool::Cylinder:
+    case Tool::Line:
+    case Tool::Comb:
+    case Tool::Wave:
+    case Tool::Circle:
+    case Tool::Sphere:
+    case Tool::Vortex:
+    case Tool::Flow:
+    case Tool::Stylus:
+        return false;
+    }
+    return false;
+}
+
+namespace {
+
 /// Why one step cannot be taken modulo the design's lattice, or "" where it can: a spray (its
 /// disc wraps, it moves nothing) and a stretch along an axis whose teeth span the period the
 /// lattice gives across the pass (its shift is then a function of the position modulo that
@@ -137,10 +162,12 @@ void checkFreeForm(const Json& value, const std::string& where, const std::strin
 std::string whyCannotWrap(const Operation& op, const glm::dvec3& size, Lattice lattice, std::string& field) {
     field = "tool";
     const std::string tool(toolSpec(op.tool).name);
-    switch (op.tool) {
-    case Tool::Spray:
-        return "";
-    case Tool::Stretch: {
+    if (op.tool == Tool::Drop)
+        return "a drop pushes the inks by amounts that never fall to zero, so it cannot wrap; a bath that "
+               "wraps takes spray (a drop that pushes nothing) instead";
+    if (!toolMayWrap(op.tool))
+        return "\"" + tool + "\" cannot wrap; a bath that wraps takes only spray and stretch along an axis";
+    if (op.tool == Tool::Stretch) {
         field = "angle";
         if (std::fmod(op.angle, 90.0) != 0.0)
             return "a stretch in a bath that wraps must run along an axis: angle 0, 90, 180 or 270 (got " +
@@ -159,23 +186,8 @@ std::string whyCannotWrap(const Operation& op, const glm::dvec3& size, Lattice l
                                  " repeat needs"
                            : std::string()) +
                    "; got " + formatNumber(span) + ")";
-        return "";
     }
-    case Tool::Drop:
-        return "a drop pushes the inks by amounts that never fall to zero, so it cannot wrap; a bath that "
-               "wraps takes spray (a drop that pushes nothing) instead";
-    case Tool::Cylinder:
-    case Tool::Line:
-    case Tool::Comb:
-    case Tool::Wave:
-    case Tool::Circle:
-    case Tool::Sphere:
-    case Tool::Vortex:
-    case Tool::Flow:
-    case Tool::Stylus:
-        break;
-    }
-    return "\"" + tool + "\" cannot wrap; a bath that wraps takes only spray and stretch along an axis";
+    return ""; // a spray: it moves nothing
 }
 
 /// A wrapping bath's rules: 2D, no source image, and every step one that commutes with the
@@ -867,26 +879,6 @@ std::string wrapProblem(const Genome& genome) {
         return std::string(e.what()).substr(name.size() + 2);
     }
     return {};
-}
-
-bool toolMayWrap(Tool tool) {
-    switch (tool) {
-    case Tool::Spray:
-    case Tool::Stretch:
-        return true;
-    case Tool::Drop:
-    case Tool::Cylinder:
-    case Tool::Line:
-    case Tool::Comb:
-    case Tool::Wave:
-    case Tool::Circle:
-    case Tool::Sphere:
-    case Tool::Vortex:
-    case Tool::Flow:
-    case Tool::Stylus:
-        return false;
-    }
-    return false;
 }
 
 Json toJson(const Genome& genome) {
