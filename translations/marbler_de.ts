@@ -329,7 +329,7 @@ Es marmorieren: neun Muster, deren Bad das Bild ist, wie Datei ▸ Ein Bild marm
 <context>
     <name>Registry</name>
     <message>
-        <location filename="registry-words.cpp" line="+25"/>
+        <location filename="registry-words.cpp" line="+26"/>
         <source>Centre</source>
         <translation>Mitte</translation>
     </message>
@@ -1721,7 +1721,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Nicht ausgeführt: das Bad dieses Musters läuft um (es ist eine Rapportkachel), und %1. Bearbeiten ▸ Umlaufendes Bad schaltet das Umlaufen aus und erlaubt jedes Werkzeug.</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+92"/>
         <source>Add %1</source>
         <translation>%1 hinzufügen</translation>
     </message>
@@ -2338,12 +2338,12 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Palette: %1</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+54"/>
         <source>The bath wraps: the design is a repeat tile, and takes only spray and stretch along an axis. Turn it off to use every tool.</source>
         <translation>Das Bad läuft um: das Muster ist eine Rapportkachel und nimmt nur Sprühen und Dehnen entlang einer Achse an. Schalten Sie es aus, um jedes Werkzeug zu nutzen.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Make the bath wrap: the design becomes a straight-repeat tile</source>
         <translation>Das Bad umlaufen lassen: das Muster wird eine Kachel mit geradem Rapport</translation>
     </message>
@@ -3253,7 +3253,7 @@ Familie: %2</translation>
 <context>
     <name>marbler::ui::PaperDialog</name>
     <message>
-        <location filename="../app/workbench/PaperDialog.cpp" line="+32"/>
+        <location filename="../app/workbench/PaperDialog.cpp" line="+33"/>
         <source>A5 (148 × 210 mm)</source>
         <translation>A5 (148 × 210 mm)</translation>
     </message>

@@ -329,7 +329,7 @@ Ebrulansın mı? Dosya ▸ Bir resmi ebrula komutunun yaptığı gibi, teknesi b
 <context>
     <name>Registry</name>
     <message>
-        <location filename="registry-words.cpp" line="+25"/>
+        <location filename="registry-words.cpp" line="+26"/>
         <source>Centre</source>
         <translation>Merkez</translation>
     </message>
@@ -1721,7 +1721,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>Yapılmadı: bu desenin teknesi kenarlardan sarılır (desen bir tekrar karosudur) ve %1. Düzen ▸ Tekne kenarlardan sarılır sarmayı kapatır ve her araca izin verir.</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+92"/>
         <source>Add %1</source>
         <translation>%1 ekle</translation>
     </message>
@@ -2338,12 +2338,12 @@ burada bir desen açın veya bırakın</translation>
         <translation>Palet: %1</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+54"/>
         <source>The bath wraps: the design is a repeat tile, and takes only spray and stretch along an axis. Turn it off to use every tool.</source>
         <translation>Tekne kenarlardan sarılır: desen bir tekrar karosudur ve yalnızca serpme ile bir eksen boyunca germe alır. Her aracı kullanmak için bunu kapatın.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Make the bath wrap: the design becomes a straight-repeat tile</source>
         <translation>Tekneyi kenarlardan sar: desen düz tekrarlı bir karo olur</translation>
     </message>
@@ -3248,7 +3248,7 @@ Aile: %2</translation>
 <context>
     <name>marbler::ui::PaperDialog</name>
     <message>
-        <location filename="../app/workbench/PaperDialog.cpp" line="+32"/>
+        <location filename="../app/workbench/PaperDialog.cpp" line="+33"/>
         <source>A5 (148 × 210 mm)</source>
         <translation>A5 (148 × 210 mm)</translation>
     </message>

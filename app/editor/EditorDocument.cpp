@@ -448,9 +448,8 @@ public:
             const std::string why = wrapProblem(after.design);
             if (!why.empty()) {
                 emit doc->editRefused(
-                    EditorDocument::tr(
-                        "Not done: this design's bath wraps (it is a repeat tile), and "
-                        "%1. Edit ▸ Bath wraps turns the wrap off and allows every tool.")
+                    EditorDocument::tr("Not done: this design's bath wraps (it is a repeat tile), and "
+                                       "%1. Edit ▸ Bath wraps turns the wrap off and allows every tool.")
                         .arg(QString::fromStdString(why)));
                 return;
             }

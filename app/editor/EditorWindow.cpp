@@ -643,10 +643,10 @@ void EditorWindow::updateWrap() {
     const std::string problem = wraps ? std::string() : wrapProblem(wrapped);
     mWrap->setChecked(wraps);
     mWrap->setEnabled(wraps || problem.empty());
-    mWrap->setToolTip(
-        wraps ? tr("The bath wraps: the design is a repeat tile, and takes only spray and "
-                   "stretch along an axis. Turn it off to use every tool.")
-        : problem.empty() ? tr("Make the bath wrap: the design becomes a straight-repeat tile")
+    mWrap->setToolTip(wraps ? tr("The bath wraps: the design is a repeat tile, and takes only spray and "
+                                 "stretch along an axis. Turn it off to use every tool.")
+                      : problem.empty()
+                          ? tr("Make the bath wrap: the design becomes a straight-repeat tile")
                           : tr("This design cannot wrap: %1").arg(QString::fromStdString(problem)));
     if (!mTools) return;
     bool currentDisabled = false;

@@ -325,7 +325,8 @@ std::vector<Operation> gestureSteps(EditorTool tool, const ToolSettings& s, cons
             // the design (docs/genome-format.md, "Half-drop and brick repeats").
             const bool alongX = std::fmod(std::abs(op.angle), 180.0) == 0.0;
             double period = alongX ? design.size.y : design.size.x;
-            if ((alongX && design.lattice == Lattice::HalfDrop) || (!alongX && design.lattice == Lattice::Brick))
+            if ((alongX && design.lattice == Lattice::HalfDrop) ||
+                (!alongX && design.lattice == Lattice::Brick))
                 period /= 2.0;
             for (int i = 0; i < n; ++i)
                 op.teeth.push_back(i == n - 1 ? period : period * i / (n - 1));

@@ -107,10 +107,10 @@ private:
     double mRequestZoom = 1.0;
     QPointF mLastPos;
     bool mDragging = false;
-    bool mSwatch = false;        ///< the repeat swatch is on
+    bool mSwatch = false;          ///< the repeat swatch is on
     std::optional<Slice> mSection; ///< a solid shown by this cross-section, not on its object
-    bool mRequestSwatch = false; ///< the newest request is for the swatch
-    bool mImageSwatch = false;   ///< mImage is the swatch (tiled), centred on the canvas
+    bool mRequestSwatch = false;   ///< the newest request is for the swatch
+    bool mImageSwatch = false;     ///< mImage is the swatch (tiled), centred on the canvas
 };
 
 } // namespace marbler::ui
