@@ -64,11 +64,6 @@ QString plainActionText(const QAction* action) {
     return text;
 }
 
-QString labelSafe(const QString& userText) {
-    QString text = userText;
-    return text.replace(QLatin1Char('&'), QStringLiteral("&&"));
-}
-
 QString shortcutTableHtml(const QList<QAction*>& actions) {
     QString html = QStringLiteral("<table cellspacing='0' cellpadding='3'>");
     html +=

@@ -20,7 +20,10 @@ QString shortcutKeys(const QAction* action);
 QString plainActionText(const QAction* action);
 /// A user's words (a session's or a file's name) made fit for a button's or an action's label:
 /// each '&' doubled, so "Tom & Jerry" shows as written and makes no keyboard mnemonic.
-QString labelSafe(const QString& userText);
+inline QString labelSafe(const QString& userText) {
+    QString text = userText;
+    return text.replace(QLatin1Char('&'), QStringLiteral("&&"));
+}
 /// The guide's table of shortcuts: keys (as the platform writes them), what they do, and the
 /// menu that holds the action.
 QString shortcutTableHtml(const QList<QAction*>& actions);
