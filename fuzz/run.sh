@@ -41,28 +41,26 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 "$BUILD/fuzz/fuzz_image" "$BUILD/corpus-image" fuzz/corpus-image \
     -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+# The young targets: NAME, corpus folder, then libFuzzer's limits. Qt's and assimp's own
+# buffers are not leaks (fuzz/lsan.supp).
+young() {
+    local target=$1 corpus=$2
+    shift 2
+    LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
+    "$BUILD/fuzz/$target" "$BUILD/$corpus" "fuzz/$corpus" \
+        "${YOUNG_TARGETS_RUN[@]}" "$@" -timeout=10 \
+        -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+}
 # Source images: the decoder may hold a raster of up to 64 megapixels (768 MiB) and the reader's
 # own buffer; one allocation over 2 GiB is a finding.
-LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
-"$BUILD/fuzz/fuzz_source" "$BUILD/corpus-source" fuzz/corpus-source \
-    "${YOUNG_TARGETS_RUN[@]}" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
-    -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+young fuzz_source corpus-source -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048
 # Meshes: within the caps (16 M vertices, 32 M triangles) assimp may allocate a few GiB for a
 # file that announces that much honestly; inputs here are at most 64 KiB, so far less.
-LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
-"$BUILD/fuzz/fuzz_mesh" "$BUILD/corpus-mesh" fuzz/corpus-mesh \
-    "${YOUNG_TARGETS_RUN[@]}" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
-    -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+young fuzz_mesh corpus-mesh -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048
 # Sessions: a session may hold thousands of designs, but inputs here are at most 256 KiB (a
 # real session of one generation is some 150 KiB); the parsed designs take a few times that.
-# One allocation over 1 GiB is a finding. Qt's own buffers are not leaks (fuzz/lsan.supp).
-LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
-"$BUILD/fuzz/fuzz_session" "$BUILD/corpus-session" fuzz/corpus-session \
-    "${YOUNG_TARGETS_RUN[@]}" -max_len=262144 -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=10 \
-    -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+# One allocation over 1 GiB is a finding.
+young fuzz_session corpus-session -max_len=262144 -rss_limit_mb=2048 -malloc_limit_mb=1024
 # Recovery files: one design (at most 2 x 16 MiB, Recovery.cpp), read and opened in the
 # editor's document twice; inputs here are at most 64 KiB. One allocation over 1 GiB is a finding.
-LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
-"$BUILD/fuzz/fuzz_recovery" "$BUILD/corpus-recovery" fuzz/corpus-recovery \
-    "${YOUNG_TARGETS_RUN[@]}" -max_len=65536 -rss_limit_mb=2048 -malloc_limit_mb=1024 -timeout=10 \
-    -artifact_prefix="$BUILD/findings/" -print_final_stats=1
+young fuzz_recovery corpus-recovery -max_len=65536 -rss_limit_mb=2048 -malloc_limit_mb=1024
