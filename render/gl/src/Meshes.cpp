@@ -2,6 +2,7 @@
 
 #include "MeshFileCheck.h"
 #include "marbler/Error.h"
+#include "marbler/OneLine.h"
 
 #include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
@@ -11,19 +12,6 @@
 #include <sstream>
 
 namespace marbler::gl {
-
-namespace {
-
-/// assimp's message on one line, as every message of Marbler's is.
-std::string oneLine(std::string message) {
-    for (char& c : message)
-        if (c == '\n' || c == '\r') c = ' ';
-    while (!message.empty() && message.back() == ' ')
-        message.pop_back();
-    return message;
-}
-
-} // namespace
 
 MeshData loadMesh(const std::string& file) {
     try {

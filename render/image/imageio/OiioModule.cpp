@@ -5,6 +5,7 @@
 #include "ImageSink.h"
 #include "SrgbProfile.h"
 #include "marbler/Error.h"
+#include "marbler/OneLine.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -23,22 +24,6 @@ namespace {
 /// bytes a pixel, 768 MiB at most) and the reader's own buffer of the image's native pixels.
 constexpr std::int64_t MaxSourceSide = 32768;
 constexpr std::int64_t MaxSourcePixels = std::int64_t(1) << 26;
-
-/// OpenImageIO's message on one line: its readers report each error of the format library on
-/// a line of its own ("PNG read error: IDAT: incorrect header check\nPNG library error"), and
-/// Marbler's messages are one line (cli.md).
-std::string oneLine(std::string message) {
-    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-        message.pop_back();
-    std::string out;
-    for (char c : message) {
-        if (c == '\n')
-            out += "; ";
-        else if (c != '\r')
-            out += c;
-    }
-    return out;
-}
 
 bool isLinearColorSpace(const OIIO::ImageSpec& spec) {
     std::string space = spec.get_string_attribute("oiio:ColorSpace");

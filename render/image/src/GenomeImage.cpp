@@ -8,6 +8,7 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/ImageFormats.h"
+#include "marbler/OneLine.h"
 
 #include <png.h>
 #include <tiffio.h>
@@ -102,13 +103,6 @@ private:
     std::span<const unsigned char> mBytes;
     std::uint64_t mOffset = 0;
 };
-
-/// Text from a library, made fit for one line of a message.
-std::string oneLine(std::string text) {
-    for (char& ch : text)
-        if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) == 0x7f) ch = ' ';
-    return text;
-}
 
 /// tEXt and zTXt chunks are Latin-1; the genome parser wants UTF-8.
 std::string latin1ToUtf8(std::string_view text) {
