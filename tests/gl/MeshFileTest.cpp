@@ -149,6 +149,56 @@ TEST(MeshFiles, AFaceOfVerticesThatDoNotExistIsRefusedNotAborted) {
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
+TEST(MeshFiles, APlyHeaderIsReadWholeBeforeAssimpSeesIt) {
+    // Found by fuzz_mesh (valgrind: "Invalid write of size 4" in Debian's assimp 5.2.4, past a
+    // 24-byte block): a property line with words left over and a second header after the first
+    // made assimp's PLY reader write past its buffers. Every line the format does not define is
+    // refused with the line.
+    const fs::path dir = folder();
+    const std::string body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    test::writeFile(dir / "found.ply",
+                    "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float yoperty "
+                    "floatoat z\nelement face 1\nproperty list uchar int vertex_indices\nend_h ascii 1.0\n"
+                    "end_header\n" +
+                        body);
+    std::string error = errorOf(dir / "found.ply");
+    EXPECT_EQ(error, (dir / "found.ply").string() +
+                         ": cannot load mesh: a PLY header with a bad property line: 'property float yoperty "
+                         "floatoat z'");
+    struct Case {
+        std::string header, why;
+    };
+    const std::string vertex = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+    const std::string face = "element face 1\nproperty list uchar int vertex_indices\n";
+    for (const Case& c : {
+             Case{"format ascii 1.0\n" + vertex + "format ascii 1.0\n" + face, "with a second format line"},
+             Case{"format ebcdic 1.0\n" + vertex + face, "that does not begin with a known format"},
+             Case{vertex + face, "that does not begin with a known format"},
+             Case{"comment first\nformat ascii 1.0\n" + vertex + face,
+                  "that does not begin with a known format"},
+             Case{"format ascii 1.0\nproperty float x\n" + vertex + face,
+                  "with a property before any element"},
+             Case{"format ascii 1.0\n" + vertex + "property float x\n" + face, "naming a property twice"},
+             Case{"format ascii 1.0\n" + vertex + face + "element vertex 1\n", "naming an element twice"},
+             Case{"format ascii 1.0\n" + vertex + "element face 1\nproperty list float int i\n",
+                  "with a bad property line"},
+             Case{"format ascii 1.0\n" + vertex + "element face 1 2\n", "with a bad element line"},
+             Case{"format ascii 1.0\n" + vertex + face + "end_h ascii 1.0\n",
+                  "with a line the format does not define"},
+         }) {
+        test::writeFile(dir / "bad.ply", "ply\n" + c.header + "end_header\n" + body);
+        error = errorOf(dir / "bad.ply");
+        EXPECT_NE(error.find("cannot load mesh: a PLY header " + c.why + ": '"), std::string::npos)
+            << c.header << "\n"
+            << error;
+    }
+    // Comments and obj_info lines are the format's own, anywhere after the format line.
+    test::writeFile(dir / "commented.ply", "ply\nformat ascii 1.0\ncomment made by hand\nobj_info a tetra\n" +
+                                               vertex + "comment faces next\n" + face + "end_header\n" +
+                                               body);
+    EXPECT_EQ(errorOf(dir / "commented.ply"), "");
+}
+
 TEST(MeshFiles, OtherKindsAreRefusedByWhatTheyAre) {
     const fs::path dir = folder();
     const std::string collada = "<?xml version=\"1.0\"?>\n<COLLADA xmlns=\"http://www.collada.org/2005/11/"

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace marbler::gl::detail {
 namespace {
@@ -61,12 +62,32 @@ std::string otherKind(const std::string& head) {
     return "";
 }
 
-/// PLY: every element's count from the header, within the caps and the file's size.
+/// The size of a PLY scalar type in bytes, or 0 for a name that is not one.
+int plyTypeSize(const std::string& type) {
+    static const std::pair<const char*, int> sizes[] = {
+        {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
+        {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
+        {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+    for (const auto& [name, size] : sizes)
+        if (type == name) return size;
+    return 0;
+}
+
+bool plyIntegerType(const std::string& type) {
+    return plyTypeSize(type) != 0 && type.find("float") == std::string::npos && type != "double";
+}
+
+/// PLY: the header exactly as the format defines it, and every element's count within the caps
+/// and the file's size. Debian's assimp writes past its buffers on some malformed headers (two
+/// "format" lines, a property line with words left over: found by fuzz_mesh), so a header is
+/// read whole here and anything the format does not define is refused before assimp sees it.
 void checkPly(std::istream& in, std::uint64_t fileSize) {
     std::string line, format;
     std::uint64_t headerBytes = 0, minimumBody = 0;
     std::uint64_t elementCount = 0, elementBytes = 0;
     std::string element;
+    std::vector<std::string> elements, properties;
+    auto bad = [&](const std::string& why) { refuse("a PLY header " + why + ": '" + line + "'"); };
     auto closeElement = [&] {
         if (element.empty()) return;
         if (element == "vertex") checkCap(elementCount, MaxMeshVertices, "vertices");
@@ -79,35 +100,54 @@ void checkPly(std::istream& in, std::uint64_t fileSize) {
         headerBytes += line.size() + 1;
         if (lines > 10000 || headerBytes > (1u << 20)) refuse("a PLY file whose header does not end");
         if (!line.empty() && line.back() == '\r') line.pop_back();
-        std::istringstream words(line);
-        std::string key;
-        words >> key;
-        if (key == "format") {
-            words >> format;
+        if (lines == 0) continue; // "ply", checked by the caller
+        std::istringstream stream(line);
+        std::vector<std::string> words;
+        for (std::string word; stream >> word;)
+            words.push_back(word);
+        const std::string key = words.empty() ? std::string() : words.front();
+        if (words.empty()) continue;
+        if (format.empty()) { // assimp wants it right after "ply", before any comment
+            if (words.size() != 3 || words[0] != "format" || words[2] != "1.0" ||
+                (words[1] != "ascii" && words[1] != "binary_little_endian" &&
+                 words[1] != "binary_big_endian"))
+                bad("that does not begin with a known format");
+            format = words[1];
+        } else if (key == "comment" || key == "obj_info") {
+            continue;
+        } else if (key == "format") {
+            bad("with a second format line");
         } else if (key == "element") {
             closeElement();
-            std::string n;
-            words >> element >> n;
-            if (n.empty() || n.size() > 19 || !std::all_of(n.begin(), n.end(), ::isdigit))
-                refuse("a PLY header with a bad count: '" + line + "'");
+            if (words.size() != 3) bad("with a bad element line");
+            element = words[1];
+            const std::string& n = words[2];
+            if (n.size() > 19 || !std::all_of(n.begin(), n.end(), ::isdigit)) bad("with a bad count");
+            if (std::find(elements.begin(), elements.end(), element) != elements.end())
+                bad("naming an element twice");
+            elements.push_back(element);
+            properties.clear();
             elementCount = std::stoull(n);
             elementBytes = 0;
         } else if (key == "property") {
-            std::string type;
-            words >> type;
-            static const std::pair<const char*, int> sizes[] = {
-                {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},   {"short", 2}, {"ushort", 2},
-                {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},    {"int32", 4}, {"uint32", 4},
-                {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}, {"list", 1}};
-            for (const auto& [name, size] : sizes)
-                if (type == name) elementBytes += std::uint64_t(size);
-        } else if (key == "end_header") {
+            if (element.empty()) bad("with a property before any element");
+            const bool list = words.size() == 5 && words[1] == "list";
+            if (list ? !plyIntegerType(words[2]) || plyTypeSize(words[3]) == 0
+                     : words.size() != 3 || plyTypeSize(words[1]) == 0)
+                bad("with a bad property line");
+            if (std::find(properties.begin(), properties.end(), words.back()) != properties.end())
+                bad("naming a property twice");
+            properties.push_back(words.back());
+            elementBytes += std::uint64_t(list ? plyTypeSize(words[2]) : plyTypeSize(words[1]));
+        } else if (key == "end_header" && words.size() == 1) {
             closeElement();
             if (headerBytes + minimumBody > fileSize)
                 refuse("a PLY file whose header announces more than the file holds (" + count(minimumBody) +
                        " bytes of elements at least, " + count(fileSize - std::min(fileSize, headerBytes)) +
                        " in the file)");
             return;
+        } else {
+            bad("with a line the format does not define");
         }
     }
     refuse("a PLY file whose header does not end");
