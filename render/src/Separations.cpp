@@ -1,5 +1,6 @@
 #include "marbler/Separations.h"
 
+#include "SvgNumber.h"
 #include "marbler/AtomicFile.h"
 #include "marbler/Error.h"
 
@@ -66,20 +67,6 @@ std::vector<std::vector<glm::dvec2>> toRings(const cl::Paths& paths, const Grid&
             ring.push_back(grid.toDesign(p));
     }
     return rings;
-}
-
-void writeCoordinate(std::string& out, double value, int decimals) {
-    char text[64];
-    auto [end, ec] = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, decimals);
-    if (ec != std::errc()) throw RuntimeFailure("a coordinate cannot be written");
-    std::string_view s(text, end - text);
-    if (s.find('.') != std::string_view::npos) {
-        while (s.back() == '0')
-            s.remove_suffix(1);
-        if (s.back() == '.') s.remove_suffix(1);
-    }
-    if (s == "-0") s = "0";
-    out.append(s);
 }
 
 /// One PNG written with libpng, which reports errors by longjmp: every libpng call is made in
@@ -222,7 +209,7 @@ std::string toLayeredSvg(const SeparatedDesign& design, const SvgPage& page, int
             vertices += ring.size();
     std::string out;
     out.reserve(1024 + vertices * (10 + 2 * decimals));
-    auto number = [&](double v) { writeCoordinate(out, v, decimals); };
+    auto number = [&](double v) { detail::appendSvgNumber(out, v, decimals); };
     out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     out += "<svg xmlns=\"http://www.w3.org/2000/svg\" "
            "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" width=\"";

@@ -1,5 +1,6 @@
 #include "marbler/Vector.h"
 
+#include "SvgNumber.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
@@ -149,20 +150,6 @@ std::size_t simplify(std::vector<glm::dvec2>& points, const VectorOptions& optio
     return dropped;
 }
 
-void appendNumber(std::string& out, double value, int decimals) {
-    char text[64];
-    auto [end, ec] = std::to_chars(text, text + sizeof text, value, std::chars_format::fixed, decimals);
-    if (ec != std::errc()) throw RuntimeFailure("a coordinate cannot be written");
-    std::string_view s(text, end - text);
-    if (s.find('.') != std::string_view::npos) {
-        while (s.back() == '0')
-            s.remove_suffix(1);
-        if (s.back() == '.') s.remove_suffix(1);
-    }
-    if (s == "-0") s = "0";
-    out.append(s);
-}
-
 } // namespace
 
 VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
@@ -241,14 +228,14 @@ SvgPage pageAtDpi(double width, double height, double dpi) {
 
 std::string svgLength(double mm) {
     std::string out;
-    appendNumber(out, mm, 3);
+    detail::appendSvgNumber(out, mm, 3);
     return out + "mm";
 }
 
 std::string toSvg(const VectorDesign& design, int decimals, const std::optional<SvgPage>& page) {
     std::string out;
     out.reserve(64 + design.vertexCount * (10 + 2 * decimals));
-    auto number = [&](double v) { appendNumber(out, v, decimals); };
+    auto number = [&](double v) { detail::appendSvgNumber(out, v, decimals); };
     out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     out += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 ";
     number(design.width);
