@@ -301,6 +301,19 @@ void DesignDialog::exportImage() {
     const QString extension = settingsDialog.extension();
     settings.setValue(QStringLiteral("files/exportExtension"), extension);
     settings.setValue(QStringLiteral("files/exportBits"), settingsDialog.bitsPerSample());
+    if (settingsDialog.separations()) {
+        // A folder for the masks and the indexed PNG (made if missing, as render --separations).
+        const QFileInfo suggested(suggestedExportFile());
+        const QString folder = askSaveFile(this, tr("Export separations into a folder"),
+                                           suggested.absolutePath() + QLatin1Char('/') +
+                                               suggested.completeBaseName() + tr(" separations"),
+                                           tr("Folders (*)"));
+        if (folder.isEmpty()) return;
+        settings.setValue(QStringLiteral("files/exportDir"), QFileInfo(folder).absolutePath());
+        exportSeparationsTo(folder, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()),
+                            settingsDialog.dpi(), settingsDialog.maskBits());
+        return;
+    }
     const bool svg = extension == QStringLiteral(".svg");
     QString file = askSaveFile(
         this, tr("Export image"), suggestedExportFile(),
@@ -315,6 +328,11 @@ void DesignDialog::exportImage() {
 
     if (QFileInfo(file).suffix().toLower() == QStringLiteral("svg")) {
         exportSvgTo(file, settingsDialog.tolerance());
+        return;
+    }
+    if (const std::optional<QString> profile = settingsDialog.printProfile()) {
+        exportCmykTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()),
+                     settingsDialog.dpi(), *profile, settingsDialog.intent(), settingsDialog.bitsPerSample());
         return;
     }
     exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi(),
@@ -345,6 +363,17 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
 
 bool DesignDialog::exportSvgTo(const QString& file, double tolerance) {
     return mExport->exportSvgTo(mGenome, file, tolerance);
+}
+
+bool DesignDialog::exportCmykTo(const QString& file, QSize pixels, const QString& aa,
+                                std::optional<double> dpi, const QString& profile, RenderingIntent intent,
+                                int bitsPerSample) {
+    return mExport->exportCmykTo(mGenome, file, pixels, aa, dpi, profile, intent, bitsPerSample);
+}
+
+bool DesignDialog::exportSeparationsTo(const QString& folder, QSize pixels, const QString& aa,
+                                       std::optional<double> dpi, int maskBits) {
+    return mExport->exportSeparationsTo(mGenome, folder, pixels, aa, dpi, maskBits);
 }
 
 void DesignDialog::cancelExport() {
