@@ -31,6 +31,29 @@
 
 namespace marbler::ui {
 
+namespace {
+/// What the repeat swatch shows, for its button: the mirror repeat, or a bath that wraps on its
+/// own lattice (DesignView::setRepeatSwatch); `solid`: shown on an object, with no swatch.
+QString swatchTip(const Genome& genome, bool solid) {
+    if (solid) return DesignDialog::tr("Flat designs only: a solid has no repeat tile");
+    if (!genome.wrap)
+        return DesignDialog::tr(
+            "Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat (R)");
+    switch (genome.lattice) {
+    case Lattice::Straight:
+        return DesignDialog::tr(
+            "Show the design repeated 2 × 2 as its straight repeat, to judge the repeat (R)");
+    case Lattice::HalfDrop:
+        return DesignDialog::tr(
+            "Show the design repeated 2 × 2 as its half-drop repeat, to judge the repeat (R)");
+    case Lattice::Brick:
+        return DesignDialog::tr(
+            "Show the design repeated 2 × 2 as its brick repeat, to judge the repeat (R)");
+    }
+    return {};
+}
+} // namespace
+
 DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent,
                            const QString& flatMesh)
     : QDialog(parent)
@@ -80,11 +103,7 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     zoomBar->addWidget(oneButton);
     zoomBar->addWidget(mZoomLabel);
     zoomBar->addStretch();
-    mSwatchButton =
-        tool(QStringLiteral("repeatSwatch"), tr("Repeat swatch"),
-             solid ? tr("Flat designs only: a solid has no repeat tile")
-                   : tr("Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat "
-                        "(R)"));
+    mSwatchButton = tool(QStringLiteral("repeatSwatch"), tr("Repeat swatch"), swatchTip(mGenome, solid));
     mSwatchButton->setCheckable(true);
     mSwatchButton->setEnabled(!solid);
     connect(mSwatchButton, &QToolButton::toggled, this, &DesignDialog::setRepeatSwatch);
