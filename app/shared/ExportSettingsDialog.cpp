@@ -252,7 +252,7 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
         auto* profileRow = new QHBoxLayout;
         profileRow->addWidget(mProfile, 1);
         profileRow->addWidget(mChooseProfile);
-        form->addRow(tr("&CMYK"), mCmyk);
+        form->addRow(tr("C&olours"), mCmyk);
         // A row of a layout has no buddy of its own: the label's mnemonic goes to the file field.
         auto* profileLabel = new QLabel(tr("&Printer profile"), this);
         profileLabel->setBuddy(mProfile);
