@@ -242,6 +242,35 @@ TEST_F(PrintExportTest, SeparationsIntoAFolderAreTheCommandLinesAndRecombineToTh
     EXPECT_EQ(indexedDiffer, 0u);
 }
 
+TEST_F(PrintExportTest, OneBitMasksForScreensAreChosenAndRemembered) {
+    const QString folder = dir.filePath(QStringLiteral("screens"));
+    setSaveFileAsker([&](QWidget*, const QString&, const QString&, const QString&) { return folder; });
+    DesignDialog dialog(genome, mService.get(), QStringLiteral("vase"));
+    dialog.show();
+    const QString error = exportThroughDialog(dialog, [&](ExportSettingsDialog& settings) {
+        auto* format = settings.findChild<QComboBox*>(QStringLiteral("exportFormat"));
+        format->setCurrentIndex(format->findText(QStringLiteral("Separations"), Qt::MatchStartsWith));
+        auto* masks = settings.findChild<QComboBox*>(QStringLiteral("exportMaskBits"));
+        masks->setCurrentIndex(masks->findData(1));
+        settings.setUnit(QStringLiteral("pixels"));
+        settings.setWidthValue(64);
+    });
+    ASSERT_EQ(error, QString());
+    // Each mask a 1-bit grey PNG (IHDR: bit depth 1, colour type 0).
+    for (const std::string& name : separationFileNames(genome.palette.size())) {
+        if (name == "indexed.png") continue;
+        const std::string png =
+            test::readFile((folder + QLatin1Char('/') + QString::fromStdString(name)).toStdString());
+        ASSERT_GT(png.size(), 26u) << name;
+        EXPECT_EQ(int(png[24]), 1) << name << ": bit depth";
+        EXPECT_EQ(int(png[25]), 0) << name << ": colour type";
+    }
+    // The next Export image starts with separations of 1-bit masks.
+    ExportSettingsDialog again(genome);
+    EXPECT_TRUE(again.separations());
+    EXPECT_EQ(again.maskBits(), 1);
+}
+
 TEST_F(PrintExportTest, SeparationsCanBeCancelledLeavingNoFolder) {
     DesignDialog dialog(genome, mService.get(), QStringLiteral("vase"));
     QSignalSpy finished(&dialog, &DesignDialog::exportFinished);
