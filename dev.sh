@@ -23,6 +23,7 @@ PACKAGES=(
     libopenimageio-dev                           # EXR, JPEG and other formats; source images
     libpng-dev libtiff-dev                       # PNG and TIFF, written directly (fast start)
     libpolyclipping-dev                          # polygon clipping: the SVG's inks knocked out
+    liblcms2-dev                                 # LittleCMS: render --icc converts to a printer's CMYK profile
     libavcodec-dev libavformat-dev libavutil-dev  # videos and animated images (marbler-video.so)
     libswscale-dev libavfilter-dev               # pixel conversion; the GIF palette filters
     libwebp-dev                                  # the tests read animated WebP back with libwebpdemux

@@ -94,7 +94,7 @@
         <translation>%1: wählen Sie .glb, .gltf oder .obj</translation>
     </message>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="+373"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="+421"/>
         <source>Save design</source>
         <translation>Muster speichern</translation>
     </message>
@@ -109,7 +109,7 @@
         <translation>Das Muster kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/shared/ExportSettingsDialog.cpp" line="+45"/>
+        <location filename="../app/shared/ExportSettingsDialog.cpp" line="+49"/>
         <source>Off (1 sample, fastest)</source>
         <translation>Aus (1 Abtastung, am schnellsten)</translation>
     </message>
@@ -169,7 +169,17 @@
         <translation>Abtastungen auf einem regelmäßigen %1 × %1-Raster je Pixel: je größer, desto feiner und langsamer</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+20"/>
+        <source>Printer profile</source>
+        <translation>Druckerprofil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ICC profiles (*.icc *.icm);;All files (*)</source>
+        <translation>ICC-Profile (*.icc *.icm);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>The image would be %1 × %2 pixels: choose a size of at least 1 pixel.</source>
         <translation>Das Bild hätte %1 × %2 Pixel: wählen Sie eine Größe von mindestens 1 Pixel.</translation>
     </message>
@@ -1032,7 +1042,7 @@ Es marmorieren: neun Muster, deren Bad das Bild ist, wie Datei ▸ Ein Bild marm
         <translation>%1 ein- oder ausblenden</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>Keys</source>
         <translation>Tasten</translation>
     </message>
@@ -1501,13 +1511,13 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::DesignDialog</name>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="-349"/>
-        <location line="+325"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="-374"/>
+        <location line="+350"/>
         <source>Design %1</source>
         <translation>Muster %1</translation>
     </message>
     <message>
-        <location line="-306"/>
+        <location line="-331"/>
         <source>Zoom out (-, wheel)</source>
         <translation>Verkleinern (-, Mausrad)</translation>
     </message>
@@ -1552,22 +1562,37 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Bildschirmpixel je Mustereinheit (100 %: eins zu eins)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Repeat swatch</source>
         <translation>Rapportmuster</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-68"/>
         <source>Flat designs only: a solid has no repeat tile</source>
         <translation>Nur flache Muster: ein räumliches hat keine Rapportkachel</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat (R)</source>
         <translation>Das ganze Muster als Spiegelrapport 2 × 2 gekachelt zeigen, um den Rapport zu beurteilen (R)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+4"/>
+        <source>Show the design repeated 2 × 2 as its straight repeat, to judge the repeat (R)</source>
+        <translation>Das Muster als geraden Rapport 2 × 2 wiederholt zeigen, um den Rapport zu beurteilen (R)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Show the design repeated 2 × 2 as its half-drop repeat, to judge the repeat (R)</source>
+        <translation>Das Muster als Halbversatz-Rapport 2 × 2 wiederholt zeigen, um den Rapport zu beurteilen (R)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Show the design repeated 2 × 2 as its brick repeat, to judge the repeat (R)</source>
+        <translation>Das Muster als Ziegel-Rapport 2 × 2 wiederholt zeigen, um den Rapport zu beurteilen (R)</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>Section</source>
         <translation>Schnitt</translation>
     </message>
@@ -1627,7 +1652,22 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location line="+153"/>
+        <location line="+154"/>
+        <source>Export separations into a folder</source>
+        <translation>Farbauszüge in einen Ordner exportieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> separations</source>
+        <translation> Farbauszüge</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Folders (*)</source>
+        <translation>Ordner (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Export image</source>
         <translation>Bild exportieren</translation>
     </message>
@@ -1642,7 +1682,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Bilder (*%1);;Alle Bilder (*.png *.tif *.tiff *.exr *.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+25"/>
         <source>the design</source>
         <translation>das Muster</translation>
     </message>
@@ -1650,13 +1690,15 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::DesignExport</name>
     <message>
-        <location filename="../app/shared/DesignExport.cpp" line="+22"/>
+        <location filename="../app/shared/DesignExport.cpp" line="+24"/>
         <source>Export cancelled: %1 was not written</source>
         <translation>Export abgebrochen: %1 wurde nicht geschrieben</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+76"/>
+        <location line="+69"/>
+        <location line="+21"/>
+        <location line="+38"/>
         <source>Cannot export the image</source>
         <translation>Das Bild kann nicht exportiert werden</translation>
     </message>
@@ -1669,13 +1711,13 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::DesignView</name>
     <message>
-        <location filename="../app/shared/DesignView.cpp" line="+45"/>
-        <location line="+206"/>
+        <location filename="../app/shared/DesignView.cpp" line="+49"/>
+        <location line="+218"/>
         <source>Drag to turn the object; wheel, + and - zoom</source>
         <translation>Ziehen dreht das Objekt; Mausrad, + und - zoomen</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="-217"/>
         <source>Wheel, + and - zoom about the pointer; drag to pan</source>
         <translation>Mausrad, + und - zoomen um den Mauszeiger; Ziehen verschiebt</translation>
     </message>
@@ -1685,7 +1727,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>wird gerendert…</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Cannot render: %1</source>
         <translation>Rendern nicht möglich: %1</translation>
     </message>
@@ -1695,7 +1737,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>%L1 %</translation>
     </message>
     <message>
-        <location line="+154"/>
+        <location line="+165"/>
         <source>The cross-section: the section controls below move and turn it</source>
         <translation>Der Querschnitt: die Schnitt-Regler unten verschieben und drehen ihn</translation>
     </message>
@@ -1708,7 +1750,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Mit dem aktuellen Werkzeug ziehen (Esc bricht ab); Ziehen mit mittlerer oder rechter Taste (oder Leertaste und Ziehen) verschiebt, das Mausrad zoomt, 0 passt ein, 1 zeigt eins zu eins</translation>
     </message>
     <message>
-        <location line="+430"/>
+        <location line="+442"/>
         <source>%1 %2s</source>
         <translation>%1 %2</translation>
     </message>
@@ -2419,12 +2461,22 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>OpenEXR (linear, Half-Float)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>SVG (vector)</source>
         <translation>SVG (Vektor)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>Separations (a mask per ink and an indexed PNG, in a folder)</source>
+        <translation>Farbauszüge (eine Maske je Farbe und ein indiziertes PNG, in einem Ordner)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>For screen and block printers: one greyscale mask per ink and the background, and an indexed PNG whose palette is the inks (marbler render --separations)</source>
+        <translation>Für Sieb- und Blockdrucker: eine Graustufenmaske je Farbe und für den Grund sowie ein indiziertes PNG, dessen Palette die Farben sind (marbler render --separations)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>The file format; a 16-bit TIFF keeps the smooth gradients of an antialiased render for further grading, EXR keeps linear light</source>
         <translation>Das Dateiformat; ein 16-Bit-TIFF bewahrt die weichen Verläufe eines kantengeglätteten Renderings für die weitere Farbkorrektur, EXR bewahrt lineares Licht</translation>
     </message>
@@ -2440,12 +2492,12 @@ hier ein Muster öffnen oder ablegen</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+177"/>
+        <location line="+243"/>
         <source>pixels</source>
         <translation>Pixel</translation>
     </message>
     <message>
-        <location line="-176"/>
+        <location line="-242"/>
         <source>cm</source>
         <translation>cm</translation>
     </message>
@@ -2536,6 +2588,96 @@ hier ein Muster öffnen oder ablegen</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Convert to printer profile (CMYK TIFF)…</source>
+        <translation>In Druckerprofil umwandeln (CMYK-TIFF)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Converts the TIFF from sRGB to the CMYK colours of a printer&apos;s ICC profile, which the print shop gives, and embeds it (marbler render --icc)</source>
+        <translation>Wandelt das TIFF von sRGB in die CMYK-Farben des ICC-Profils eines Druckers um, das die Druckerei liefert, und bettet es ein (marbler render --icc)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the printer&apos;s .icc file</source>
+        <translation>die .icc-Datei des Druckers</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The CMYK output profile of the press or paper, an .icc or .icm file</source>
+        <translation>Das CMYK-Ausgabeprofil der Druckmaschine oder des Papiers, eine .icc- oder .icm-Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;hoose…</source>
+        <translation>&amp;Wählen…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the printer&apos;s ICC profile</source>
+        <translation>Das ICC-Profil des Druckers wählen</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Perceptual (default: the whole image fitted to the press)</source>
+        <translation>Wahrnehmungsorientiert (Standard: das ganze Bild an die Druckmaschine angepasst)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Relative colorimetric (exact where printable)</source>
+        <translation>Relativ farbmetrisch (genau, wo druckbar)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Saturation (vivid, for graphics)</source>
+        <translation>Sättigung (lebhaft, für Grafiken)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Absolute colorimetric (proofing, paper white kept)</source>
+        <translation>Absolut farbmetrisch (Proof, Papierweiß bleibt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How colours the press cannot print are brought into its range (marbler render --intent)</source>
+        <translation>Wie Farben, die die Druckmaschine nicht drucken kann, in ihren Umfang gebracht werden (marbler render --intent)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>C&amp;olours</source>
+        <translation>F&amp;arben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Printer profile</source>
+        <translation>&amp;Druckerprofil</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Intent</source>
+        <translation>&amp;Priorität</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>8-bit coverage (antialiased edges)</source>
+        <translation>8-Bit-Deckung (geglättete Kanten)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1-bit (on or off, for screens)</source>
+        <translation>1 Bit (an oder aus, für Siebe)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Separations: each mask&apos;s pixels as the share of the ink in them, or on where at least half the pixel is the ink (marbler render --mask-bits)</source>
+        <translation>Farbauszüge: jedes Maskenpixel als Anteil der Farbe darin, oder an, wo mindestens das halbe Pixel die Farbe ist (marbler render --mask-bits)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Masks</source>
+        <translation>&amp;Masken</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Image</source>
         <translation>Bild</translation>
     </message>
@@ -2610,7 +2752,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>&amp;Position</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+111"/>
         <source>Vector outlines in design units (%L1 × %L2)</source>
         <translation>Vektorumrisse in Mustereinheiten (%L1 × %L2)</translation>
     </message>
@@ -2640,9 +2782,24 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Die größte passende Breite ist %L1 %2 bei %3 dpi: geben Sie unter Breite höchstens diesen Wert ein oder verringern Sie die Auflösung.</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+141"/>
         <source>The image is too large</source>
         <translation>Das Bild ist zu groß</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No printer profile</source>
+        <translation>Kein Druckerprofil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the printer&apos;s ICC profile (an .icc file from the print shop), or untick Convert to printer profile.</source>
+        <translation>Wählen Sie das ICC-Profil des Druckers (eine .icc-Datei der Druckerei) oder entfernen Sie den Haken bei In Druckerprofil umwandeln.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot use the printer profile</source>
+        <translation>Das Druckerprofil kann nicht verwendet werden</translation>
     </message>
 </context>
 <context>

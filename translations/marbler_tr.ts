@@ -94,7 +94,7 @@
         <translation>%1: .glb, .gltf veya .obj seçin</translation>
     </message>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="+373"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="+421"/>
         <source>Save design</source>
         <translation>Deseni kaydet</translation>
     </message>
@@ -109,7 +109,7 @@
         <translation>Desen kaydedilemiyor</translation>
     </message>
     <message>
-        <location filename="../app/shared/ExportSettingsDialog.cpp" line="+45"/>
+        <location filename="../app/shared/ExportSettingsDialog.cpp" line="+49"/>
         <source>Off (1 sample, fastest)</source>
         <translation>Kapalı (1 örnek, en hızlı)</translation>
     </message>
@@ -169,7 +169,17 @@
         <translation>Piksel başına düzenli bir %1 × %1 ızgarada örnekler: büyüdükçe daha ince ve daha yavaş</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+20"/>
+        <source>Printer profile</source>
+        <translation>Yazıcı profili</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ICC profiles (*.icc *.icm);;All files (*)</source>
+        <translation>ICC profilleri (*.icc *.icm);;Tüm dosyalar (*)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>The image would be %1 × %2 pixels: choose a size of at least 1 pixel.</source>
         <translation>Görüntü %1 × %2 piksel olurdu: en az 1 piksellik bir boyut seçin.</translation>
     </message>
@@ -1032,7 +1042,7 @@ Ebrulansın mı? Dosya ▸ Bir resmi ebrula komutunun yaptığı gibi, teknesi b
         <translation>%1 göster veya gizle</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>Keys</source>
         <translation>Tuşlar</translation>
     </message>
@@ -1501,13 +1511,13 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::DesignDialog</name>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="-349"/>
-        <location line="+325"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="-374"/>
+        <location line="+350"/>
         <source>Design %1</source>
         <translation>Desen %1</translation>
     </message>
     <message>
-        <location line="-306"/>
+        <location line="-331"/>
         <source>Zoom out (-, wheel)</source>
         <translation>Uzaklaştır (-, tekerlek)</translation>
     </message>
@@ -1552,22 +1562,37 @@ burada bir desen açın veya bırakın</translation>
         <translation>Desen birimi başına ekran pikseli (yüzde 100: bire bir)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Repeat swatch</source>
         <translation>Tekrar örneği</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-68"/>
         <source>Flat designs only: a solid has no repeat tile</source>
         <translation>Yalnızca düz desenler: katı desenin tekrar karosu yoktur</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat (R)</source>
         <translation>Tekrarı değerlendirmek için desenin tamamını ayna tekrarı olarak 2 × 2 döşenmiş göster (R)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+4"/>
+        <source>Show the design repeated 2 × 2 as its straight repeat, to judge the repeat (R)</source>
+        <translation>Tekrarı değerlendirmek için deseni düz tekrarıyla 2 × 2 göster (R)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Show the design repeated 2 × 2 as its half-drop repeat, to judge the repeat (R)</source>
+        <translation>Tekrarı değerlendirmek için deseni yarım kaydırmalı tekrarıyla 2 × 2 göster (R)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Show the design repeated 2 × 2 as its brick repeat, to judge the repeat (R)</source>
+        <translation>Tekrarı değerlendirmek için deseni tuğla tekrarıyla 2 × 2 göster (R)</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>Section</source>
         <translation>Kesit</translation>
     </message>
@@ -1627,7 +1652,22 @@ burada bir desen açın veya bırakın</translation>
         <translation>Yeniden adlandır…</translation>
     </message>
     <message>
-        <location line="+153"/>
+        <location line="+154"/>
+        <source>Export separations into a folder</source>
+        <translation>Renk ayrımlarını bir klasöre aktar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> separations</source>
+        <translation> renk ayrımları</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Folders (*)</source>
+        <translation>Klasörler (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Export image</source>
         <translation>Görüntüyü dışa aktar</translation>
     </message>
@@ -1642,7 +1682,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>Görüntüler (*%1);;Tüm görüntüler (*.png *.tif *.tiff *.exr *.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+25"/>
         <source>the design</source>
         <translation>desen</translation>
     </message>
@@ -1650,13 +1690,15 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::DesignExport</name>
     <message>
-        <location filename="../app/shared/DesignExport.cpp" line="+22"/>
+        <location filename="../app/shared/DesignExport.cpp" line="+24"/>
         <source>Export cancelled: %1 was not written</source>
         <translation>Dışa aktarım iptal edildi: %1 yazılmadı</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+76"/>
+        <location line="+69"/>
+        <location line="+21"/>
+        <location line="+38"/>
         <source>Cannot export the image</source>
         <translation>Görüntü dışa aktarılamıyor</translation>
     </message>
@@ -1669,13 +1711,13 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::DesignView</name>
     <message>
-        <location filename="../app/shared/DesignView.cpp" line="+45"/>
-        <location line="+206"/>
+        <location filename="../app/shared/DesignView.cpp" line="+49"/>
+        <location line="+218"/>
         <source>Drag to turn the object; wheel, + and - zoom</source>
         <translation>Nesneyi döndürmek için sürükleyin; tekerlek, + ve - yakınlaştırır</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="-217"/>
         <source>Wheel, + and - zoom about the pointer; drag to pan</source>
         <translation>Tekerlek, + ve - imleç çevresinde yakınlaştırır; kaydırmak için sürükleyin</translation>
     </message>
@@ -1685,7 +1727,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>işleniyor…</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Cannot render: %1</source>
         <translation>İşlenemiyor: %1</translation>
     </message>
@@ -1695,7 +1737,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>%%L1</translation>
     </message>
     <message>
-        <location line="+154"/>
+        <location line="+165"/>
         <source>The cross-section: the section controls below move and turn it</source>
         <translation>Kesit: aşağıdaki kesit denetimleri onu taşır ve döndürür</translation>
     </message>
@@ -1708,7 +1750,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>Geçerli araçla sürükleyin (Esc sürüklemeyi bırakır); orta veya sağ tuşla sürükleme (ya da Boşluk ve sürükleme) kaydırır, tekerlek yakınlaştırır, 0 sığdırır, 1 bire bir gösterir</translation>
     </message>
     <message>
-        <location line="+430"/>
+        <location line="+442"/>
         <source>%1 %2s</source>
         <translation>%1 %2</translation>
     </message>
@@ -2418,12 +2460,22 @@ burada bir desen açın veya bırakın</translation>
         <translation>OpenEXR (doğrusal yarım kayan nokta)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>SVG (vector)</source>
         <translation>SVG (vektör)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>Separations (a mask per ink and an indexed PNG, in a folder)</source>
+        <translation>Renk ayrımları (her boya için bir maske ve dizinli bir PNG, bir klasörde)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>For screen and block printers: one greyscale mask per ink and the background, and an indexed PNG whose palette is the inks (marbler render --separations)</source>
+        <translation>Serigrafi ve blok baskıcılar için: her boya ve zemin için bir gri tonlu maske ve paleti boyalar olan dizinli bir PNG (marbler render --separations)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>The file format; a 16-bit TIFF keeps the smooth gradients of an antialiased render for further grading, EXR keeps linear light</source>
         <translation>Dosya biçimi; 16 bit TIFF kenar yumuşatmalı bir işlemenin yumuşak geçişlerini sonraki renk ayarları için korur, EXR doğrusal ışığı korur</translation>
     </message>
@@ -2439,12 +2491,12 @@ burada bir desen açın veya bırakın</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+177"/>
+        <location line="+243"/>
         <source>pixels</source>
         <translation>piksel</translation>
     </message>
     <message>
-        <location line="-176"/>
+        <location line="-242"/>
         <source>cm</source>
         <translation>cm</translation>
     </message>
@@ -2535,6 +2587,96 @@ burada bir desen açın veya bırakın</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Convert to printer profile (CMYK TIFF)…</source>
+        <translation>Yazıcı profiline dönüştür (CMYK TIFF)…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Converts the TIFF from sRGB to the CMYK colours of a printer&apos;s ICC profile, which the print shop gives, and embeds it (marbler render --icc)</source>
+        <translation>TIFF&apos;i sRGB&apos;den matbaanın verdiği yazıcı ICC profilinin CMYK renklerine dönüştürür ve profili içine gömer (marbler render --icc)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the printer&apos;s .icc file</source>
+        <translation>yazıcının .icc dosyası</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The CMYK output profile of the press or paper, an .icc or .icm file</source>
+        <translation>Baskı makinesinin ya da kağıdın CMYK çıkış profili, bir .icc veya .icm dosyası</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;hoose…</source>
+        <translation>&amp;Seç…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose the printer&apos;s ICC profile</source>
+        <translation>Yazıcının ICC profilini seçin</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Perceptual (default: the whole image fitted to the press)</source>
+        <translation>Algısal (varsayılan: tüm görüntü baskıya uydurulur)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Relative colorimetric (exact where printable)</source>
+        <translation>Göreli kolorimetrik (basılabilen yerde tam)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Saturation (vivid, for graphics)</source>
+        <translation>Doygunluk (canlı, grafikler için)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Absolute colorimetric (proofing, paper white kept)</source>
+        <translation>Mutlak kolorimetrik (prova, kağıt beyazı korunur)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How colours the press cannot print are brought into its range (marbler render --intent)</source>
+        <translation>Baskı makinesinin basamadığı renklerin onun aralığına nasıl getirileceği (marbler render --intent)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>C&amp;olours</source>
+        <translation>&amp;Renkler</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Printer profile</source>
+        <translation>&amp;Yazıcı profili</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Intent</source>
+        <translation>&amp;Amaç</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>8-bit coverage (antialiased edges)</source>
+        <translation>8 bit kaplama (yumuşatılmış kenarlar)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1-bit (on or off, for screens)</source>
+        <translation>1 bit (açık ya da kapalı, serigrafi için)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Separations: each mask&apos;s pixels as the share of the ink in them, or on where at least half the pixel is the ink (marbler render --mask-bits)</source>
+        <translation>Renk ayrımları: her maske pikseli içindeki boya payı olarak ya da pikselin en az yarısı boyaysa açık (marbler render --mask-bits)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Masks</source>
+        <translation>&amp;Maskeler</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Image</source>
         <translation>Görüntü</translation>
     </message>
@@ -2609,7 +2751,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>&amp;Konum</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+111"/>
         <source>Vector outlines in design units (%L1 × %L2)</source>
         <translation>Desen birimiyle vektör dış çizgileri (%L1 × %L2)</translation>
     </message>
@@ -2639,9 +2781,24 @@ burada bir desen açın veya bırakın</translation>
         <translation>%3 dpi&apos;de sığan en büyük genişlik %L1 %2: Genişlik alanına en çok bunu yazın ya da çözünürlüğü düşürün.</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+141"/>
         <source>The image is too large</source>
         <translation>Görüntü çok büyük</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No printer profile</source>
+        <translation>Yazıcı profili yok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the printer&apos;s ICC profile (an .icc file from the print shop), or untick Convert to printer profile.</source>
+        <translation>Yazıcının ICC profilini (matbaadan bir .icc dosyası) seçin ya da Yazıcı profiline dönüştür seçeneğinin işaretini kaldırın.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot use the printer profile</source>
+        <translation>Yazıcı profili kullanılamıyor</translation>
     </message>
 </context>
 <context>

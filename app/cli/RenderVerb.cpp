@@ -7,7 +7,9 @@
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Growth.h"
+#include "marbler/ImageFormats.h"
 #include "marbler/ObjectView.h"
+#include "marbler/PrintProfile.h"
 #include "marbler/RenderToFile.h"
 #include "marbler/Repeat.h"
 #include "marbler/Sampling.h"
@@ -80,6 +82,14 @@ options:
                             drawn as hard edges, as in svg
   --mask-bits 1|8           the masks' depth with --separations (default 8; 1: on where at
                             least half the pixel is the ink, for screens)
+  --icc PRINTER.icc         a CMYK TIFF for a printer: the sRGB render converted by LittleCMS
+                            to the colour space of the given CMYK output (printer) profile,
+                            which is embedded; OUT must be .tif or .tiff; not with --mesh,
+                            --gpu, --repeat or --separations
+  --intent NAME             how --icc maps colours the printer cannot print: perceptual
+                            (default), relative, saturation or absolute (colorimetric)
+  --bits 8|16               bits a sample of the --icc TIFF (default 8; 16 from the linear
+                            average, for further grading)
   --progress                show progress on stderr even when it is not a terminal
   --quiet                   no progress line
   -h, --help                this text
@@ -91,11 +101,11 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
                  const std::filesystem::path& outFile);
 
 int render(std::span<const std::string> words) {
-    Args args =
-        parseArgs(words,
-                  {"o", "output", "width", "height", "aa", "region", "slice", "dpi", "size", "mesh", "view",
-                   "supersample", "cut", "threads", "repeat", "steps", "separations", "mask-bits", "yardage"},
-                  {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
+    Args args = parseArgs(words, {"o",       "output",  "width",  "height", "aa",          "region",
+                                  "slice",   "dpi",     "size",   "mesh",   "view",        "supersample",
+                                  "cut",     "threads", "repeat", "steps",  "separations", "mask-bits",
+                                  "yardage", "icc",     "intent", "bits"},
+                          {"gpu", "quiet", "progress", "allow-external-source", "help", "h"});
     if (args.has("help") || args.has("h")) {
         std::cout << RenderHelp;
         return ExitOk;
@@ -152,6 +162,28 @@ int render(std::span<const std::string> words) {
     if (args.has("mask-bits") && !args.has("separations"))
         throw InputError("--mask-bits only applies with --separations");
     const int steps = parseIntOption(args, "steps", -1, 0, std::numeric_limits<int>::max());
+    // ---- --icc: a CMYK TIFF for a printer's profile (marbler/PrintProfile.h) ----
+    for (const char* iccOnly : {"intent", "bits"})
+        if (args.has(iccOnly) && !args.has("icc"))
+            throw InputError(std::string("--") + iccOnly + " only applies with --icc");
+    if (auto icc = args.get("icc")) {
+        for (const char* other : {"mesh", "gpu", "repeat", "separations"})
+            if (args.has(other))
+                throw InputError(
+                    std::string("--icc and --") + other +
+                    " exclude each other (the CMYK TIFF is of the flat render, made on the CPU)");
+        if (const std::string ext = lowerExtension(outFile); ext != ".tif" && ext != ".tiff")
+            throw InputError("--icc writes a CMYK TIFF: OUT must end in .tif or .tiff (got '" +
+                             outFile.string() + "')");
+        if (auto intent = args.get("intent"); intent && !parseRenderingIntent(*intent))
+            throw InputError("--intent: '" + *intent +
+                             "' is not a rendering intent; perceptual, relative, saturation or absolute");
+        if (const int bits = parseIntOption(args, "bits", 8, 8, 16); bits != 8 && bits != 16)
+            throw InputError("--bits: must be 8 or 16 (got " + *args.get("bits") + ")");
+        // The profile is read and checked before the genome (and read again to convert).
+        loadPrintProfile(*icc);
+    }
+    // ---- end --icc ----
 
     const std::string genomeName = args.positional[0];
     Genome genome = loadGenomeArgument("render", genomeName);
@@ -304,6 +336,16 @@ int renderGenome(const Args& args, const std::string& genomeName, const Genome& 
         Image image = CpuRenderer(genome).render(settings, &control);
         progress.finish();
         writeImage(mirrorRepeat(image), outFile, exportOptions);
+        return ExitOk;
+    }
+    if (auto icc = args.get("icc")) {
+        // ---- --icc (checked in render()) ----
+        CmykTiffOptions cmyk;
+        cmyk.intent = parseRenderingIntent(args.get("intent").value_or("perceptual")).value();
+        cmyk.bitsPerSample = parseIntOption(args, "bits", 8, 8, 16);
+        cmyk.dpi = exportOptions.dpi;
+        renderToCmykTiff(genome, settings, outFile, loadPrintProfile(*icc), cmyk, &control);
+        progress.finish();
         return ExitOk;
     }
     renderToFile(genome, settings, outFile, exportOptions, &control);

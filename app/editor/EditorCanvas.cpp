@@ -172,11 +172,19 @@ void EditorCanvas::requestRender(const Genome& genome, bool previewOnly, double 
         // Any tile may show any part of the design: render all of it, at the view's scale (at
         // most 1024 pixels a side; the tiles are for judging seams, not detail).
         const QSizeF plane = planeSize();
-        const double scale = std::min(mView.scale(), 1024.0 / std::max(plane.width(), plane.height()));
+        // A bath that wraps (issue 29): the plane three tiles a side about the design, which the
+        // renderer fills with the design repeated on its own lattice (straight, half-drop or
+        // brick), where copies of the tile would fall between pixels.
+        const int tiles = tilesByLattice() ? 3 : 1;
+        const double scale =
+            std::min(mView.scale(), 1024.0 / (tiles * std::max(plane.width(), plane.height())));
+        const double origin = tiles == 3 ? -1.0 : 0.0;
         ViewController::Window whole;
-        whole.region = Region{0.0, 0.0, plane.width(), plane.height()};
-        whole.pixels = QRect(0, 0, std::max(1, int(std::lround(plane.width() * scale))),
-                             std::max(1, int(std::lround(plane.height() * scale))));
+        whole.region = Region{origin * plane.width(), origin * plane.height(),
+                              (origin + tiles) * plane.width(), (origin + tiles) * plane.height()};
+        // Whole pixels a tile, so its copies fall on the same pixels.
+        whole.pixels = QRect(0, 0, tiles * std::max(1, int(std::lround(plane.width() * scale))),
+                             tiles * std::max(1, int(std::lround(plane.height() * scale))));
         window = whole;
     }
     if (!window || genome.size.x <= 0) {
@@ -236,6 +244,10 @@ void EditorCanvas::setCaption(const QString& text) {
     if (text == mCaption) return;
     mCaption = text;
     update();
+}
+
+bool EditorCanvas::tilesByLattice() const {
+    return mRepeat == RepeatPreview::Plain && mDesign.wrap && mDesign.dimension == 2;
 }
 
 void EditorCanvas::setRepeatPreview(RepeatPreview mode) {
@@ -606,10 +618,13 @@ void EditorCanvas::paintEvent(QPaintEvent*) {
         const QRectF r = mView.toViewport(mShown.region);
         const double ratio = devicePixelRatioF();
         p.setRenderHint(QPainter::SmoothPixmapTransform);
-        if (mRepeat == RepeatPreview::Off) {
+        // The lattice's repeat came rendered whole (requestRender); a region wider than the design
+        // is that, until a new render replaces it.
+        const QSizeF plane = planeSize();
+        const bool rendered = mShown.region.x1 - mShown.region.x0 > 1.5 * plane.width();
+        if (mRepeat == RepeatPreview::Off || rendered) {
             p.drawImage(QRectF(r.topLeft() / ratio, r.size() / ratio), mShown.image);
         } else {
-            const QSizeF plane = planeSize();
             for (int j = -1; j <= 1; ++j)
                 for (int i = -1; i <= 1; ++i) {
                     const Region tile{i * plane.width(), j * plane.height(), (i + 1) * plane.width(),

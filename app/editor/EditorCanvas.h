@@ -82,11 +82,15 @@ public:
     /// The repeat preview: the design shown tiled 3 × 3 about itself, plainly repeated or
     /// mirrored as the mirror repeat tile lays it (the tiles left and right mirrored across the
     /// vertical edges, those above and below across the horizontal ones), to judge the seams.
+    /// Plain on a design whose bath wraps repeats it on its own lattice (straight, half-drop or
+    /// brick; issue 29): the render of the plane three tiles a side about it.
     /// Turning it on or off fits the view (on: all nine tiles). Gestures still land on the
     /// design in the middle.
     enum class RepeatPreview { Off, Plain, Mirror };
     void setRepeatPreview(RepeatPreview mode);
     RepeatPreview repeatPreview() const { return mRepeat; }
+    /// Whether the repeat preview shows the design on its wrap's lattice, rendered whole.
+    bool tilesByLattice() const;
     /// Fits, zooms about the centre, one to one (the window's View menu and tool bar).
     void fitView();
     void zoomIn();

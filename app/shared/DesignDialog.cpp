@@ -31,6 +31,29 @@
 
 namespace marbler::ui {
 
+namespace {
+/// What the repeat swatch shows, for its button: the mirror repeat, or a bath that wraps on its
+/// own lattice (DesignView::setRepeatSwatch); `solid`: shown on an object, with no swatch.
+QString swatchTip(const Genome& genome, bool solid) {
+    if (solid) return DesignDialog::tr("Flat designs only: a solid has no repeat tile");
+    if (!genome.wrap)
+        return DesignDialog::tr(
+            "Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat (R)");
+    switch (genome.lattice) {
+    case Lattice::Straight:
+        return DesignDialog::tr(
+            "Show the design repeated 2 × 2 as its straight repeat, to judge the repeat (R)");
+    case Lattice::HalfDrop:
+        return DesignDialog::tr(
+            "Show the design repeated 2 × 2 as its half-drop repeat, to judge the repeat (R)");
+    case Lattice::Brick:
+        return DesignDialog::tr(
+            "Show the design repeated 2 × 2 as its brick repeat, to judge the repeat (R)");
+    }
+    return {};
+}
+} // namespace
+
 DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString& mesh, QWidget* parent,
                            const QString& flatMesh)
     : QDialog(parent)
@@ -80,11 +103,7 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     zoomBar->addWidget(oneButton);
     zoomBar->addWidget(mZoomLabel);
     zoomBar->addStretch();
-    mSwatchButton =
-        tool(QStringLiteral("repeatSwatch"), tr("Repeat swatch"),
-             solid ? tr("Flat designs only: a solid has no repeat tile")
-                   : tr("Show the whole design tiled as its mirror repeat, 2 × 2, to judge the repeat "
-                        "(R)"));
+    mSwatchButton = tool(QStringLiteral("repeatSwatch"), tr("Repeat swatch"), swatchTip(mGenome, solid));
     mSwatchButton->setCheckable(true);
     mSwatchButton->setEnabled(!solid);
     connect(mSwatchButton, &QToolButton::toggled, this, &DesignDialog::setRepeatSwatch);
@@ -301,6 +320,19 @@ void DesignDialog::exportImage() {
     const QString extension = settingsDialog.extension();
     settings.setValue(QStringLiteral("files/exportExtension"), extension);
     settings.setValue(QStringLiteral("files/exportBits"), settingsDialog.bitsPerSample());
+    if (settingsDialog.separations()) {
+        // A folder for the masks and the indexed PNG (made if missing, as render --separations).
+        const QFileInfo suggested(suggestedExportFile());
+        const QString folder = askSaveFile(this, tr("Export separations into a folder"),
+                                           suggested.absolutePath() + QLatin1Char('/') +
+                                               suggested.completeBaseName() + tr(" separations"),
+                                           tr("Folders (*)"));
+        if (folder.isEmpty()) return;
+        settings.setValue(QStringLiteral("files/exportDir"), QFileInfo(folder).absolutePath());
+        exportSeparationsTo(folder, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()),
+                            settingsDialog.dpi(), settingsDialog.maskBits());
+        return;
+    }
     const bool svg = extension == QStringLiteral(".svg");
     QString file = askSaveFile(
         this, tr("Export image"), suggestedExportFile(),
@@ -315,6 +347,11 @@ void DesignDialog::exportImage() {
 
     if (QFileInfo(file).suffix().toLower() == QStringLiteral("svg")) {
         exportSvgTo(file, settingsDialog.tolerance());
+        return;
+    }
+    if (const std::optional<QString> profile = settingsDialog.printProfile()) {
+        exportCmykTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()),
+                     settingsDialog.dpi(), *profile, settingsDialog.intent(), settingsDialog.bitsPerSample());
         return;
     }
     exportTo(file, settingsDialog.pixels(), QString::fromStdString(settingsDialog.aa()), settingsDialog.dpi(),
@@ -345,6 +382,17 @@ bool DesignDialog::exportTo(const QString& file, QSize pixels, const QString& aa
 
 bool DesignDialog::exportSvgTo(const QString& file, double tolerance) {
     return mExport->exportSvgTo(mGenome, file, tolerance);
+}
+
+bool DesignDialog::exportCmykTo(const QString& file, QSize pixels, const QString& aa,
+                                std::optional<double> dpi, const QString& profile, RenderingIntent intent,
+                                int bitsPerSample) {
+    return mExport->exportCmykTo(mGenome, file, pixels, aa, dpi, profile, intent, bitsPerSample);
+}
+
+bool DesignDialog::exportSeparationsTo(const QString& folder, QSize pixels, const QString& aa,
+                                       std::optional<double> dpi, int maskBits) {
+    return mExport->exportSeparationsTo(mGenome, folder, pixels, aa, dpi, maskBits);
 }
 
 void DesignDialog::cancelExport() {

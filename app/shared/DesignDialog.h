@@ -54,6 +54,19 @@ public:
     /// same progress box and exportFinished. A solid or a design with a source image fails with the library's
     /// reason. Returns false when an export is already running.
     bool exportSvgTo(const QString& file, double tolerance = 1.0);
+    /// Starts rendering the design (flat) as a CMYK TIFF converted to the printer's ICC profile
+    /// `profile` (as marbler render --icc; issue 29), on the export thread with the same
+    /// progress box and exportFinished. A profile that is no CMYK printer profile fails with
+    /// the library's reason. Returns false when an export is already running or the size is
+    /// beyond the renderer's limits.
+    bool exportCmykTo(const QString& file, QSize pixels, const QString& aa, std::optional<double> dpi,
+                      const QString& profile, RenderingIntent intent = RenderingIntent::Perceptual,
+                      int bitsPerSample = 8);
+    /// Starts writing the design's separations into `folder` (as marbler render --separations: a
+    /// mask per ink, 8-bit coverage or 1-bit, and indexed.png), with the same progress box,
+    /// cancel and exportFinished (its file: the folder). Returns false as exportTo does.
+    bool exportSeparationsTo(const QString& folder, QSize pixels, const QString& aa = QStringLiteral("rgss"),
+                             std::optional<double> dpi = std::nullopt, int maskBits = 8);
     /// Puts the genome on the clipboard as genome text (the Copy genome button, Ctrl+C).
     void copyGenome();
     /// Stops a running export; no file is left behind.

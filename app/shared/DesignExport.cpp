@@ -3,8 +3,10 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
+#include "marbler/PrintProfile.h"
 #include "marbler/RenderToFile.h"
 #include "marbler/Repeat.h"
+#include "marbler/Separations.h"
 #include "marbler/Vector.h"
 #include "marbler/gl/GlRenderer.h"
 #include "marbler/gl/RenderView.h"
@@ -90,6 +92,58 @@ bool DesignExport::exportTo(const Genome& design, const ObjectView& object, cons
             // Rendered and written in strips, so memory stays bounded at any size.
             renderToFile(genome, view.raster, file.toStdString(), options, &control);
         }
+    });
+}
+
+namespace {
+/// The flat render an export of print files makes: the design at `pixels` with `aa`.
+RenderSettings flatRender(QSize pixels, const QString& aa) {
+    RenderSettings render;
+    render.width = std::max(1, pixels.width());
+    render.height = std::max(1, pixels.height());
+    render.aa = aa.toStdString();
+    return render;
+}
+} // namespace
+
+bool DesignExport::exportCmykTo(const Genome& design, const QString& file, QSize pixels, const QString& aa,
+                                std::optional<double> dpi, const QString& profile, RenderingIntent intent,
+                                int bitsPerSample) {
+    if (mJob) return false;
+    if (const QString problem = exportSizeProblem(pixels); !problem.isEmpty()) {
+        reportError(mWindow, tr("Cannot export the image"), problem);
+        return false;
+    }
+    Genome genome = design;
+    SourcePermissions::session().apply(genome);
+    CmykTiffOptions options;
+    options.intent = intent;
+    options.bitsPerSample = bitsPerSample;
+    options.dpi = dpi;
+    return start(file, [genome, render = flatRender(pixels, aa), file, profile = profile.toStdString(),
+                        options](const RenderControl& control) {
+        // The same steps as marbler render --icc: the profile read and checked, then the render
+        // converted strip by strip.
+        renderToCmykTiff(genome, render, file.toStdString(), loadPrintProfile(profile), options, &control);
+    });
+}
+
+bool DesignExport::exportSeparationsTo(const Genome& design, const QString& folder, QSize pixels,
+                                       const QString& aa, std::optional<double> dpi, int maskBits) {
+    if (mJob) return false;
+    if (const QString problem = exportSizeProblem(pixels); !problem.isEmpty()) {
+        reportError(mWindow, tr("Cannot export the image"), problem);
+        return false;
+    }
+    SeparationFileOptions options;
+    options.maskBits = maskBits;
+    options.dpi = dpi;
+    return start(folder, [genome = design, render = flatRender(pixels, aa), folder,
+                          options](const RenderControl& control) {
+        // The same steps as marbler render --separations, so the files are the same.
+        const RasterSeparations separations = renderSeparations(genome, render, &control);
+        if (control.cancelled()) throw Cancelled();
+        writeSeparations(separations, folder.toStdString(), options);
     });
 }
 

@@ -4,6 +4,7 @@
 /// tile) or traced to SVG, one at a time, as a BackgroundJob with its progress box.
 
 #include "marbler/Genome.h"
+#include "marbler/PrintProfile.h"
 #include "shared/BackgroundJob.h"
 #include "shared/ExportSettingsDialog.h"
 #include "shared/ViewController.h"
@@ -43,6 +44,15 @@ public:
     bool exportTo(const Genome& genome, const ObjectView& object, const QString& file, QSize pixels,
                   const QString& aa, std::optional<double> dpi, std::optional<SolidExport> solid,
                   int bitsPerSample, bool mirrorRepeatTile, bool straightRepeatTile = false);
+    /// Starts rendering `genome` (flat) to a CMYK TIFF in the colours of the printer profile
+    /// `profile` (marbler/PrintProfile.h, as marbler render --icc); see DesignDialog::exportCmykTo.
+    bool exportCmykTo(const Genome& genome, const QString& file, QSize pixels, const QString& aa,
+                      std::optional<double> dpi, const QString& profile, RenderingIntent intent,
+                      int bitsPerSample);
+    /// Starts writing `genome`'s separations into `folder` (marbler/Separations.h, as marbler
+    /// render --separations); see DesignDialog::exportSeparationsTo.
+    bool exportSeparationsTo(const Genome& genome, const QString& folder, QSize pixels, const QString& aa,
+                             std::optional<double> dpi, int maskBits);
     /// Starts writing `genome` as SVG; see DesignDialog::exportSvgTo.
     bool exportSvgTo(const Genome& genome, const QString& file, double tolerance);
     /// Stops a running export; no file is left behind.

@@ -28,6 +28,10 @@ QImage mirrorTiled(const QImage& image) {
 
 } // namespace
 
+Region swatchRegion(const Genome& genome) {
+    return Region{0.0, 0.0, 2.0 * genome.size.x, 2.0 * genome.size.y};
+}
+
 DesignView::DesignView(const Genome& genome, RenderService* renderer, const QString& mesh, bool repeatSwatch,
                        QWidget* parent, bool flatOnObject)
     : QWidget(parent)
@@ -51,8 +55,9 @@ DesignView::DesignView(const Genome& genome, RenderService* renderer, const QStr
                 if (key != mKey) return;
                 // The service delivers only the newest request's results: they show its view.
                 mImageSwatch = mRequestSwatch;
-                // Tiled once here, not at each paint (the tile is fitted to half the canvas).
-                mImage = mImageSwatch ? mirrorTiled(image) : image;
+                // Tiled once here, not at each paint (the tile is fitted to half the canvas). A
+                // bath that wraps came tiled on its own lattice, by the renderer (swatchRegion).
+                mImage = mImageSwatch && !mGenome.wrap ? mirrorTiled(image) : image;
                 mImageFinal = final;
                 if (mRequestRegion) mImageRegion = *mRequestRegion;
                 mImageZoom = mRequestZoom;
@@ -182,6 +187,17 @@ void DesignView::requestRender(bool previewOnly) {
         request.zoom = 1.0;
     } else if (mOnObject) {
         request.size = viewport;
+    } else if (mRequestSwatch && mGenome.wrap) {
+        // A bath that wraps (issue 29): the design repeats on its own lattice, straight,
+        // half-drop or brick, so the swatch is the render of the plane two tiles a side, exact
+        // where a copy of a half-drop tile would fall between pixels, fitted into the canvas.
+        const Region r = swatchRegion(mGenome);
+        const double w = r.x1 - r.x0, h = r.y1 - r.y0;
+        const double scale = std::min(viewport.width() / w, viewport.height() / h);
+        // Two whole pixels' worth a tile: its copies then fall on the same pixels.
+        request.size = QSize(2 * std::max(8, int(std::floor(w * scale / 2))),
+                             2 * std::max(8, int(std::floor(h * scale / 2))));
+        request.region = r;
     } else if (mRequestSwatch) {
         // The whole design, whatever the zoom (the swatch judges the repeat, not a detail),
         // fitted into half the canvas: tiled 2 x 2 it fills the canvas. The service fits the

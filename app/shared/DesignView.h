@@ -21,6 +21,10 @@ namespace marbler::ui {
 
 class RenderService;
 
+/// The part of the plane the repeat swatch of a design whose bath wraps shows: two tiles a side
+/// from the origin, which the renderer fills with the design repeated on its own lattice.
+Region swatchRegion(const Genome& genome);
+
 class DesignView : public QWidget {
     Q_OBJECT
 public:
@@ -58,7 +62,9 @@ public:
     /// Moves a flat design by a drag of `delta` widget pixels.
     void panBy(QPointF delta);
     /// The repeat swatch (flat designs): the whole design and its mirror images 2 x 2, fitted to
-    /// the canvas whatever the zoom. image() is then the tiled image.
+    /// the canvas whatever the zoom; a design whose bath wraps repeated 2 x 2 on its own lattice
+    /// (straight, half-drop or brick) instead, the render of swatchRegion. image() is then the
+    /// tiled image.
     void setRepeatSwatch(bool on);
     bool repeatSwatch() const { return mSwatch; }
     /// A solid shown by this cross-section (the whole plane fitted to the canvas) instead of on

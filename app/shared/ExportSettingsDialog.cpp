@@ -1,12 +1,16 @@
 #include "shared/ExportSettingsDialog.h"
 
+#include "marbler/Error.h"
 #include "shared/ErrorReport.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLayout>
 #include <QLineEdit>
@@ -70,8 +74,27 @@ const QString WidthKey = QStringLiteral("files/exportWidthPixels");
 const QString UnitKey = QStringLiteral("files/exportUnit");
 const QString DpiKey = QStringLiteral("files/exportDpi");
 const QString AaKey = QStringLiteral("files/exportAa");
+const QString ProfileKey = QStringLiteral("files/exportPrintProfile");
+const QString CmykKey = QStringLiteral("files/exportConvertToProfile");
+const QString IntentKey = QStringLiteral("files/exportIntent");
+const QString MaskBitsKey = QStringLiteral("files/exportMaskBits");
+
+/// The format item of separations (a folder, not a file extension).
+const QString SeparationsFormat = QStringLiteral(".separations");
+
+ProfileChooser& profileChooser() {
+    static ProfileChooser chooser = [](QWidget* parent, const QString& current) {
+        return QFileDialog::getOpenFileName(parent, QObject::tr("Printer profile"), current,
+                                            QObject::tr("ICC profiles (*.icc *.icm);;All files (*)"));
+    };
+    return chooser;
+}
 
 } // namespace
+
+void setProfileChooser(ProfileChooser chooser) {
+    profileChooser() = std::move(chooser);
+}
 
 QString exportSizeProblem(QSize pixels) {
     const std::int64_t w = pixels.width(), h = pixels.height();
@@ -106,7 +129,17 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
     mFormat->addItem(tr("OpenEXR (linear half float)"), QStringLiteral(".exr"));
     // Outlines exist for flat designs only (marbler/Vector.h); a source image is refused when
     // tracing, with the library's reason.
-    if (genome.dimension != 3) mFormat->addItem(tr("SVG (vector)"), QStringLiteral(".svg"));
+    if (genome.dimension != 3) {
+        mFormat->addItem(tr("SVG (vector)"), QStringLiteral(".svg"));
+        // What marbler render --separations writes (issue 29), into a folder.
+        mFormat->addItem(tr("Separations (a mask per ink and an indexed PNG, in a folder)"),
+                         SeparationsFormat);
+        mFormat->setItemData(
+            mFormat->count() - 1,
+            tr("For screen and block printers: one greyscale mask per ink and the background, "
+               "and an indexed PNG whose palette is the inks (marbler render --separations)"),
+            Qt::ToolTipRole);
+    }
     mFormat->setToolTip(tr("The file format; a 16-bit TIFF keeps the smooth gradients of an antialiased "
                            "render for further grading, EXR keeps linear light"));
     {
@@ -188,6 +221,67 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
             tr("SVG: the largest distance between neighbouring vertices of an outline, in design "
                "units; larger gives smaller files (marbler svg --tolerance)"));
         form->addRow(tr("&Tolerance"), mTolerance);
+        // ---- A CMYK TIFF for a printer's profile (issue 29; marbler render --icc) ----
+        const QSettings settings;
+        mCmyk = new QCheckBox(tr("Convert to printer profile (CMYK TIFF)…"), this);
+        mCmyk->setObjectName(QStringLiteral("exportCmyk"));
+        mCmyk->setToolTip(tr("Converts the TIFF from sRGB to the CMYK colours of a printer's ICC profile, "
+                             "which the print shop gives, and embeds it (marbler render --icc)"));
+        mProfile = new QLineEdit(settings.value(ProfileKey).toString(), this);
+        mProfile->setObjectName(QStringLiteral("exportProfile"));
+        mProfile->setPlaceholderText(tr("the printer's .icc file"));
+        mProfile->setToolTip(tr("The CMYK output profile of the press or paper, an .icc or .icm file"));
+        mChooseProfile = new QPushButton(tr("C&hoose…"), this);
+        mChooseProfile->setObjectName(QStringLiteral("exportChooseProfile"));
+        mChooseProfile->setToolTip(tr("Choose the printer's ICC profile"));
+        connect(mChooseProfile, &QPushButton::clicked, this, [this] {
+            const QString file = profileChooser()(this, mProfile->text());
+            if (file.isEmpty()) return;
+            mProfile->setText(file);
+            mCmyk->setChecked(true);
+        });
+        mIntent = new QComboBox(this);
+        mIntent->setObjectName(QStringLiteral("exportIntent"));
+        mIntent->addItem(tr("Perceptual (default: the whole image fitted to the press)"));
+        mIntent->addItem(tr("Relative colorimetric (exact where printable)"));
+        mIntent->addItem(tr("Saturation (vivid, for graphics)"));
+        mIntent->addItem(tr("Absolute colorimetric (proofing, paper white kept)"));
+        mIntent->setToolTip(tr("How colours the press cannot print are brought into its range "
+                               "(marbler render --intent)"));
+        mIntent->setCurrentIndex(std::clamp(settings.value(IntentKey, 0).toInt(), 0, 3));
+        auto* profileRow = new QHBoxLayout;
+        profileRow->addWidget(mProfile, 1);
+        profileRow->addWidget(mChooseProfile);
+        form->addRow(tr("C&olours"), mCmyk);
+        // A row of a layout has no buddy of its own: the label's mnemonic goes to the file field.
+        auto* profileLabel = new QLabel(tr("&Printer profile"), this);
+        profileLabel->setBuddy(mProfile);
+        form->addRow(profileLabel, profileRow);
+        form->addRow(tr("&Intent"), mIntent);
+        mCmyk->setChecked(settings.value(CmykKey, false).toBool() && !mProfile->text().isEmpty());
+        // The CMYK TIFF is of the design itself, not of a repeat tile.
+        connect(mCmyk, &QCheckBox::toggled, this, [this](bool on) {
+            if (on) {
+                mRepeat->setChecked(false);
+                if (mStraight) mStraight->setChecked(false);
+            }
+            updateSummary();
+        });
+        for (QCheckBox* tile : {mRepeat, mStraight})
+            if (tile)
+                connect(tile, &QCheckBox::toggled, this, [this](bool on) {
+                    if (on) mCmyk->setChecked(false);
+                });
+        // ---- Separations' masks ----
+        mMaskBits = new QComboBox(this);
+        mMaskBits->setObjectName(QStringLiteral("exportMaskBits"));
+        mMaskBits->addItem(tr("8-bit coverage (antialiased edges)"), 8);
+        mMaskBits->addItem(tr("1-bit (on or off, for screens)"), 1);
+        mMaskBits->setToolTip(
+            tr("Separations: each mask's pixels as the share of the ink in them, or on where "
+               "at least half the pixel is the ink (marbler render --mask-bits)"));
+        setMaskBits(settings.value(MaskBitsKey, 8).toInt());
+        form->addRow(tr("&Masks"), mMaskBits);
         connect(mRepeat, &QCheckBox::toggled, this, [this] { updateSummary(); });
     }
     form->addRow(tr("Image"), mPixels);
@@ -269,7 +363,12 @@ ExportSettingsDialog::ExportSettingsDialog(const Genome& genome, QWidget* parent
         } else {
             setTabOrder(mRepeat, mTolerance);
         }
-        last = mTolerance;
+        setTabOrder(mTolerance, mCmyk);
+        setTabOrder(mCmyk, mProfile);
+        setTabOrder(mProfile, mChooseProfile);
+        setTabOrder(mChooseProfile, mIntent);
+        setTabOrder(mIntent, mMaskBits);
+        last = mMaskBits;
     }
     if (mSolidView) {
         setTabOrder(mAa, mSolidView);
@@ -337,6 +436,17 @@ void ExportSettingsDialog::updateSummary() {
         mTolerance->setEnabled(svg);
     }
     if (mStraight) mStraight->setEnabled(!svg);
+    if (mCmyk) {
+        const bool tiff = extension() == QStringLiteral(".tif");
+        mCmyk->setEnabled(tiff);
+        // Choosing a profile ticks the conversion, so the button is there for any TIFF.
+        mChooseProfile->setEnabled(tiff);
+        mProfile->setEnabled(tiff && mCmyk->isChecked());
+        mIntent->setEnabled(tiff && mCmyk->isChecked());
+        mMaskBits->setEnabled(separations());
+        mRepeat->setEnabled(!svg && !separations());
+        if (mStraight) mStraight->setEnabled(!svg && !separations());
+    }
     if (svg) {
         mPixels->setText(
             tr("Vector outlines in design units (%L1 × %L2)").arg(mGenome.size.x).arg(mGenome.size.y));
@@ -426,13 +536,35 @@ double ExportSettingsDialog::tolerance() const {
     return mTolerance ? mTolerance->value() : 1.0;
 }
 bool ExportSettingsDialog::mirrorRepeatTile() const {
-    return mRepeat && mRepeat->isChecked() && !isSvg();
+    return mRepeat && mRepeat->isChecked() && !isSvg() && !separations();
 }
 void ExportSettingsDialog::setMirrorRepeatTile(bool on) {
     if (mRepeat) mRepeat->setChecked(on);
 }
 bool ExportSettingsDialog::straightRepeatTile() const {
-    return mStraight && mStraight->isChecked() && !isSvg();
+    return mStraight && mStraight->isChecked() && !isSvg() && !separations();
+}
+
+std::optional<QString> ExportSettingsDialog::printProfile() const {
+    if (!mCmyk || !mCmyk->isChecked() || extension() != QStringLiteral(".tif")) return std::nullopt;
+    return mProfile->text().trimmed();
+}
+void ExportSettingsDialog::setPrintProfile(const QString& file) {
+    if (!mCmyk) return;
+    mProfile->setText(file);
+    mCmyk->setChecked(!file.isEmpty());
+}
+RenderingIntent ExportSettingsDialog::intent() const {
+    return mIntent ? static_cast<RenderingIntent>(mIntent->currentIndex()) : RenderingIntent::Perceptual;
+}
+bool ExportSettingsDialog::separations() const {
+    return mFormat->currentData().toString() == SeparationsFormat;
+}
+int ExportSettingsDialog::maskBits() const {
+    return mMaskBits ? mMaskBits->currentData().toInt() : 8;
+}
+void ExportSettingsDialog::setMaskBits(int bits) {
+    if (mMaskBits) mMaskBits->setCurrentIndex(std::max(0, mMaskBits->findData(bits)));
 }
 void ExportSettingsDialog::setStraightRepeatTile(bool on) {
     if (mStraight) mStraight->setChecked(on);
@@ -494,7 +626,28 @@ void ExportSettingsDialog::accept() {
         reportError(this, tr("The image is too large"), problem);
         return;
     }
+    if (const std::optional<QString> profile = printProfile()) {
+        // Checked here, so a wrong file is said before the file name is asked.
+        if (profile->isEmpty()) {
+            reportError(this, tr("No printer profile"),
+                        tr("Choose the printer's ICC profile (an .icc file from the print shop), or untick "
+                           "Convert to printer profile."));
+            return;
+        }
+        try {
+            loadPrintProfile(profile->toStdString());
+        } catch (const InputError& e) {
+            reportError(this, tr("Cannot use the printer profile"), QString::fromStdString(e.what()));
+            return;
+        }
+    }
     QSettings settings;
+    if (mCmyk) {
+        settings.setValue(CmykKey, mCmyk->isChecked());
+        if (!mProfile->text().trimmed().isEmpty()) settings.setValue(ProfileKey, mProfile->text().trimmed());
+        settings.setValue(IntentKey, mIntent->currentIndex());
+        settings.setValue(MaskBitsKey, maskBits());
+    }
     settings.setValue(WidthKey, mPixelWidth);
     settings.setValue(UnitKey, unit());
     settings.setValue(DpiKey, mDpi->value());

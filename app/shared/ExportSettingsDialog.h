@@ -4,12 +4,14 @@
 /// renderer's limits before any work starts.
 
 #include "marbler/Genome.h"
+#include "marbler/PrintProfile.h"
 #include "marbler/Sampling.h"
 
 #include <QDialog>
 #include <QSize>
 #include <QString>
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -19,6 +21,7 @@ class QDialogButtonBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
+class QPushButton;
 class QSpinBox;
 
 namespace marbler::ui {
@@ -33,6 +36,11 @@ struct SolidExport {
 /// Why an image of this many pixels cannot be exported (empty when it can): the renderer's
 /// limits MaxImageSide and MaxImagePixels (marbler/Sampling.h), said in pixels and megapixels.
 QString exportSizeProblem(QSize pixels);
+
+/// How Export image asks for a printer's ICC profile: the file chosen, or empty when none
+/// (QFileDialog by default; tests replace it so no dialog blocks).
+using ProfileChooser = std::function<QString(QWidget* parent, const QString& current)>;
+void setProfileChooser(ProfileChooser chooser);
 
 /// The format, size and antialiasing of an exported image, in pixels or as a print size (cm, mm,
 /// inches) at a dpi; for a solid design, whether it shows the object or a cross-section. Changing the unit
@@ -68,6 +76,18 @@ public:
     /// for a design whose bath wraps; twice the size). It and the mirror repeat exclude each other.
     bool straightRepeatTile() const;
     void setStraightRepeatTile(bool on);
+    /// The printer's ICC profile a TIFF is converted to (Convert to printer profile, flat designs;
+    /// remembered as QSettings files/exportPrintProfile), when that is ticked and the format is
+    /// a TIFF; nullopt otherwise.
+    std::optional<QString> printProfile() const;
+    /// Ticks Convert to printer profile with `file` (empty: unticks it).
+    void setPrintProfile(const QString& file);
+    RenderingIntent intent() const;
+    /// Whether the format is Separations (a folder of masks and the indexed PNG; flat designs).
+    bool separations() const;
+    /// The separations' masks: 8 (coverage) or 1 (for screens).
+    int maskBits() const;
+    void setMaskBits(int bits);
     /// A solid design's view (unset for a flat design).
     std::optional<SolidExport> solidExport() const;
     void setSolidExport(const SolidExport& solid);
@@ -104,6 +124,11 @@ private:
     QDoubleSpinBox* mTolerance = nullptr; ///< flat designs: the SVG's tolerance
     QCheckBox* mRepeat = nullptr;         ///< flat designs: the mirror repeat tile
     QCheckBox* mStraight = nullptr;       ///< designs whose bath wraps: the straight repeat tile
+    QCheckBox* mCmyk = nullptr;           ///< flat designs: convert the TIFF to a printer profile
+    QLineEdit* mProfile = nullptr;        ///< the printer profile's file
+    QPushButton* mChooseProfile = nullptr;
+    QComboBox* mIntent = nullptr;   ///< the conversion's rendering intent
+    QComboBox* mMaskBits = nullptr; ///< separations: 8-bit coverage or 1-bit masks
     QDialogButtonBox* mButtons = nullptr;
 };
 
