@@ -24,6 +24,8 @@
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStyle>
+#include <QStyleOptionSlider>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -485,6 +487,100 @@ TEST(TurnedSectionLargeViewTest, TheLargeViewShowsASectionTurnedToATypedNormal) 
     ASSERT_TRUE(dialog.section().has_value());
     ASSERT_TRUE(dialog.section()->normal.has_value());
     EXPECT_NEAR(glm::length(*dialog.section()->normal - n), 0.0, 1e-12);
+}
+
+/// Drags the handle of `slider` by `pixels` to the right with the mouse, as a user does.
+void dragSlider(QSlider* slider, int pixels) {
+    QStyleOptionSlider option;
+    option.initFrom(slider);
+    option.orientation = slider->orientation();
+    option.minimum = slider->minimum();
+    option.maximum = slider->maximum();
+    option.sliderPosition = option.sliderValue = slider->value();
+    option.subControls = QStyle::SC_SliderHandle;
+    const QPoint from =
+        slider->style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider).center();
+    const QPoint to = from + QPoint(pixels, 0);
+    QTest::mousePress(slider, Qt::LeftButton, {}, from);
+    QTest::mouseMove(slider, (from + to) / 2);
+    QTest::mouseMove(slider, to);
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, to);
+}
+
+TEST_F(TurnedEditorTest, ALineOnASectionTurnedByItsHandlesIsTurnedByItsDirectionHandle) {
+    // Issue 23: the section turned by dragging its handles (not a typed normal), a line drawn on
+    // it, and the line turned in the section by its direction handle, all with the mouse.
+    open(shells());
+    auto* tilt = mEditor->findChild<QSlider*>(QStringLiteral("sliceTilt"));
+    auto* turn = mEditor->findChild<QSlider*>(QStringLiteral("sliceTurn"));
+    ASSERT_NE(tilt, nullptr);
+    ASSERT_NE(turn, nullptr);
+    dragSlider(tilt, tilt->width() / 3);
+    dragSlider(turn, turn->width() / 4);
+    ASSERT_GT(tilt->value(), 5) << "the tilt handle moved under the mouse";
+    ASSERT_GT(turn->value(), 5) << "the turn handle moved under the mouse";
+    const Slice slice = mEditor->canvas()->slice();
+    ASSERT_TRUE(slice.normal.has_value()) << "the dragged handles turned the section";
+    const glm::dvec3 n = *slice.normal;
+    EXPECT_NEAR(std::acos(std::abs(n.z)) * 180.0 / std::numbers::pi, tilt->value(), 1e-6)
+        << "tilted from z by the tilt handle's angle";
+    auto* shownNormal = mEditor->findChild<QLineEdit*>(QStringLiteral("sliceNormal"));
+    ASSERT_NE(shownNormal, nullptr);
+    EXPECT_FALSE(shownNormal->text().isEmpty()) << "the normal box says the handles' normal";
+
+    auto* line = mEditor->findChild<QAction*>(QStringLiteral("tool-line"));
+    ASSERT_NE(line, nullptr);
+    line->trigger();
+    glm::dvec3 middle, along;
+    sectionMiddle(middle, along);
+    drag(middle, middle + 90.0 * along);
+    const Genome drawn = mEditor->document()->design();
+    const Operation made = drawn.operations.back();
+    ASSERT_EQ(made.tool, Tool::Line);
+    EXPECT_NEAR(glm::dot(made.center, n), slice.value, 1e-6) << "on the turned section";
+    EXPECT_NEAR(glm::dot(made.direction, along), 1.0, 0.02) << "along the drag";
+    const QImage before = shownSection(drawn);
+    const std::string drawnText = serializeGenome(drawn);
+
+    // Selected, the line shows a direction handle an arm out the way it moves ink.
+    mEditor->selectStep(mEditor->document()->stepCount() - 1);
+    EditorCanvas* canvas = mEditor->canvas();
+    const QPointF centre = canvas->toWidget(made.center);
+    QPointF handle;
+    for (const auto& [kind, point] : canvas->handlePoints())
+        if (kind == EditorCanvas::Handle::Direction) handle = point;
+    ASSERT_FALSE(handle.isNull()) << "a solid's line has a direction handle";
+    const QPointF alongWidget = canvas->toWidget(made.center + along) - centre;
+    const QPointF arm = handle - centre;
+    EXPECT_NEAR(std::hypot(arm.x(), arm.y()), 70.0, 1.0);
+    EXPECT_NEAR((arm.x() * alongWidget.x() + arm.y() * alongWidget.y()) /
+                    (std::hypot(arm.x(), arm.y()) * std::hypot(alongWidget.x(), alongWidget.y())),
+                1.0, 0.02)
+        << "pointing along the line's drag";
+
+    // Dragged a quarter turn round: the line moves ink that way, still in the section.
+    const QPointF target = centre + QPointF(-arm.y(), arm.x()) * (100.0 / 70.0);
+    QTest::mousePress(canvas, Qt::LeftButton, {}, handle.toPoint());
+    QTest::mouseMove(canvas, ((handle + target) / 2).toPoint());
+    QTest::mouseMove(canvas, target.toPoint());
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, target.toPoint());
+    const Genome turnedDesign = mEditor->document()->design();
+    const Operation turned = turnedDesign.operations.back();
+    const glm::dvec3 expected = glm::normalize(canvas->toDesign(target) - made.center);
+    EXPECT_NEAR(glm::dot(turned.direction, expected), 1.0, 0.02) << "along the handle's drag";
+    EXPECT_NEAR(glm::dot(turned.direction, n), 0.0, 1e-9) << "in the section";
+    EXPECT_NEAR(glm::dot(turned.normal, n), 0.0, 1e-9) << "its normal in the section too";
+    EXPECT_NEAR(glm::dot(turned.direction, turned.normal), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(turned.direction), 1.0, 1e-12);
+    EXPECT_EQ(turned.center, made.center);
+    EXPECT_EQ(turned.alpha, made.alpha);
+    EXPECT_NO_THROW(validateGenome(turnedDesign, "line turned by its handle"));
+    // What the person sees is the renderer's section of the turned line, not the drawn one.
+    EXPECT_GT(changed(before, shownSection(turnedDesign)), 0.005);
+
+    mEditor->document()->undoStack()->undo();
+    EXPECT_EQ(serializeGenome(mEditor->document()->design()), drawnText)
+        << "the handle's edit undoes exactly";
 }
 
 } // namespace turned_section_test
