@@ -583,4 +583,62 @@ TEST_F(TurnedEditorTest, ALineOnASectionTurnedByItsHandlesIsTurnedByItsDirection
         << "the handle's edit undoes exactly";
 }
 
+TEST_F(TurnedEditorTest, ACircleOnASectionTurnedByMouseLeansItsAxisByItsHandle) {
+    // Issue 23's "Done when": circles about any axis by mouse on a section at any angle. The
+    // section turned by dragging its handles, a circle dragged on it (about the section's
+    // normal), then its axis leant by dragging its axis handle: every step with the mouse.
+    open(shells());
+    auto* tilt = mEditor->findChild<QSlider*>(QStringLiteral("sliceTilt"));
+    auto* turn = mEditor->findChild<QSlider*>(QStringLiteral("sliceTurn"));
+    ASSERT_NE(tilt, nullptr);
+    ASSERT_NE(turn, nullptr);
+    dragSlider(tilt, tilt->width() / 4);
+    dragSlider(turn, turn->width() / 2);
+    const Slice slice = mEditor->canvas()->slice();
+    ASSERT_TRUE(slice.normal.has_value()) << "the dragged handles turned the section";
+    const glm::dvec3 n = *slice.normal;
+
+    auto* circle = mEditor->findChild<QAction*>(QStringLiteral("tool-circle"));
+    ASSERT_NE(circle, nullptr);
+    circle->trigger();
+    glm::dvec3 middle, along;
+    sectionMiddle(middle, along);
+    drag(middle, middle + 110.0 * along);
+    const Operation made = mEditor->document()->design().operations.back();
+    ASSERT_EQ(made.tool, Tool::Circle);
+    const double pixel = 2.0 / mEditor->canvas()->view().scale();
+    EXPECT_NEAR(glm::dot(made.center, n), slice.value, 1e-6) << "on the turned section";
+    EXPECT_NEAR(made.radius, 110.0, pixel);
+    EXPECT_NEAR(glm::length(made.axis - n), 0.0, 1e-12) << "about the section's normal";
+    const std::string madeText = serializeGenome(mEditor->document()->design());
+    const QImage before = shownSection(mEditor->document()->design());
+
+    // The axis handle dragged half an arm further out, across the section's first axis: the
+    // axis leans that way by 30 degrees (sin = half), keeping its side of the section.
+    mEditor->selectStep(mEditor->document()->stepCount() - 1);
+    EditorCanvas* canvas = mEditor->canvas();
+    QPointF axisHandle;
+    for (const auto& [kind, point] : canvas->handlePoints())
+        if (kind == EditorCanvas::Handle::Axis) axisHandle = point;
+    ASSERT_FALSE(axisHandle.isNull()) << "a solid's circle has an axis handle";
+    const QPointF centre = canvas->toWidget(made.center);
+    const glm::dvec3 across = glm::normalize(glm::cross(n, along));
+    const QPointF acrossWidget = canvas->toWidget(made.center + across) - centre;
+    const QPointF target = centre + 70.0 * acrossWidget / std::hypot(acrossWidget.x(), acrossWidget.y());
+    QTest::mousePress(canvas, Qt::LeftButton, {}, axisHandle.toPoint());
+    QTest::mouseMove(canvas, ((axisHandle + target) / 2).toPoint());
+    QTest::mouseMove(canvas, target.toPoint());
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, target.toPoint());
+    const Genome leant = mEditor->document()->design();
+    const Operation turned = leant.operations.back();
+    EXPECT_NEAR(glm::dot(turned.axis, n), std::sqrt(0.75), 0.03) << "30 degrees from the normal";
+    EXPECT_GT(glm::dot(turned.axis, across), 0.4) << "leaning the drag's way";
+    EXPECT_NEAR(glm::length(turned.axis), 1.0, 1e-12);
+    EXPECT_EQ(turned.center, made.center);
+    EXPECT_NO_THROW(validateGenome(leant, "circle leant by its handle"));
+    EXPECT_GT(changed(before, shownSection(leant)), 0.005) << "the section shows the leant circle";
+    mEditor->document()->undoStack()->undo();
+    EXPECT_EQ(serializeGenome(mEditor->document()->design()), madeText);
+}
+
 } // namespace turned_section_test
