@@ -1032,7 +1032,7 @@ Es marmorieren: neun Muster, deren Bad das Bild ist, wie Datei ▸ Ein Bild marm
         <translation>%1 ein- oder ausblenden</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>Keys</source>
         <translation>Tasten</translation>
     </message>
@@ -1703,12 +1703,12 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorCanvas</name>
     <message>
-        <location filename="../app/editor/EditorCanvas.cpp" line="+63"/>
+        <location filename="../app/editor/EditorCanvas.cpp" line="+85"/>
         <source>Drag with the current tool (Esc drops the drag); middle or right drag (or Space and drag) pans, the wheel zooms, 0 fits, 1 shows one to one</source>
         <translation>Mit dem aktuellen Werkzeug ziehen (Esc bricht ab); Ziehen mit mittlerer oder rechter Taste (oder Leertaste und Ziehen) verschiebt, das Mausrad zoomt, 0 passt ein, 1 zeigt eins zu eins</translation>
     </message>
     <message>
-        <location line="+430"/>
+        <location line="+467"/>
         <source>%1 %2s</source>
         <translation>%1 %2</translation>
     </message>
@@ -2008,7 +2008,7 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorWindow</name>
     <message>
-        <location filename="../app/editor/EditorWindow.cpp" line="+225"/>
+        <location filename="../app/editor/EditorWindow.cpp" line="+227"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
@@ -4125,12 +4125,17 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Mesh-Datei…</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+42"/>
+        <source>The design on its object: drag to turn it; drag the block in the corner to turn the cross-section</source>
+        <translation>Das Muster auf seinem Objekt: Ziehen dreht es; Ziehen am Block in der Ecke dreht den Querschnitt</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>Rendering…</source>
         <translation>Wird gerendert…</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+64"/>
         <source>n·p = %1</source>
         <translation>n·p = %1</translation>
     </message>

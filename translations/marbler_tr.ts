@@ -1032,7 +1032,7 @@ Ebrulansın mı? Dosya ▸ Bir resmi ebrula komutunun yaptığı gibi, teknesi b
         <translation>%1 göster veya gizle</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+8"/>
         <source>Keys</source>
         <translation>Tuşlar</translation>
     </message>
@@ -1703,12 +1703,12 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorCanvas</name>
     <message>
-        <location filename="../app/editor/EditorCanvas.cpp" line="+63"/>
+        <location filename="../app/editor/EditorCanvas.cpp" line="+85"/>
         <source>Drag with the current tool (Esc drops the drag); middle or right drag (or Space and drag) pans, the wheel zooms, 0 fits, 1 shows one to one</source>
         <translation>Geçerli araçla sürükleyin (Esc sürüklemeyi bırakır); orta veya sağ tuşla sürükleme (ya da Boşluk ve sürükleme) kaydırır, tekerlek yakınlaştırır, 0 sığdırır, 1 bire bir gösterir</translation>
     </message>
     <message>
-        <location line="+430"/>
+        <location line="+467"/>
         <source>%1 %2s</source>
         <translation>%1 %2</translation>
     </message>
@@ -2008,7 +2008,7 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorWindow</name>
     <message>
-        <location filename="../app/editor/EditorWindow.cpp" line="+225"/>
+        <location filename="../app/editor/EditorWindow.cpp" line="+227"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
@@ -4120,12 +4120,17 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Ağ dosyası…</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+42"/>
+        <source>The design on its object: drag to turn it; drag the block in the corner to turn the cross-section</source>
+        <translation>Nesnesi üzerindeki desen: döndürmek için sürükleyin; kesiti döndürmek için köşedeki bloğu sürükleyin</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>Rendering…</source>
         <translation>İşleniyor…</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+64"/>
         <source>n·p = %1</source>
         <translation>n·p = %1</translation>
     </message>

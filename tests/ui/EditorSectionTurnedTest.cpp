@@ -8,6 +8,7 @@
 #include "editor/EditorDocument.h"
 #include "editor/EditorWindow.h"
 #include "editor/Gestures.h"
+#include "editor/SolidObjectView.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
@@ -639,6 +640,71 @@ TEST_F(TurnedEditorTest, ACircleOnASectionTurnedByMouseLeansItsAxisByItsHandle) 
     EXPECT_GT(changed(before, shownSection(leant)), 0.005) << "the section shows the leant circle";
     mEditor->document()->undoStack()->undo();
     EXPECT_EQ(serializeGenome(mEditor->document()->design()), madeText);
+}
+
+TEST_F(TurnedEditorTest, DraggingTheSectionsPlaneInTheObjectViewsCornerTurnsIt) {
+    // Issue 23: the section turned by dragging a handle on the view, not only the panel's
+    // sliders or a typed normal: the block and plane in the object view's corner, dragged right,
+    // turn the normal about y, dragged down about x, through the same point of the middle.
+    open(shells());
+    auto* view = mEditor->findChild<SolidObjectView*>(QStringLiteral("objectView"));
+    ASSERT_NE(view, nullptr);
+    ASSERT_TRUE(view->isVisible());
+    const Slice was = mEditor->canvas()->slice();
+    ASSERT_FALSE(was.normal.has_value());
+    const ViewAngle angle = view->angle();
+    const glm::dvec3 size = mEditor->document()->design().size;
+    const SlicePlane before = slicePlane(3, was, size);
+    const glm::dvec3 middle = 0.5 * size;
+    const glm::dvec3 kept = middle - (glm::dot(before.normal(), middle) - before.value) * before.normal();
+    const QImage shownBefore = shownSection(mEditor->document()->design());
+
+    const QPoint press = view->sliceInset().center().toPoint();
+    auto dragBy = [&](QPoint by) {
+        QTest::mousePress(view, Qt::LeftButton, {}, press);
+        QTest::mouseMove(view, press + by / 2);
+        QTest::mouseMove(view, press + by);
+        QTest::mouseRelease(view, Qt::LeftButton, {}, press + by);
+    };
+    dragBy(QPoint(40, 0));
+    Slice slice = mEditor->canvas()->slice();
+    ASSERT_TRUE(slice.normal.has_value()) << "the drag turned the section";
+    const double a = 40 * 0.01;
+    EXPECT_NEAR(glm::length(*slice.normal - glm::dvec3(std::sin(a), 0.0, std::cos(a))), 0.0, 1e-9)
+        << "about y, its tip to the right";
+    EXPECT_NEAR(slice.value, glm::dot(*slice.normal, kept), 1e-6) << "through the same point";
+    auto* tilt = mEditor->findChild<QSlider*>(QStringLiteral("sliceTilt"));
+    ASSERT_NE(tilt, nullptr);
+    EXPECT_EQ(tilt->value(), int(std::lround(a * 180.0 / std::numbers::pi))) << "the panel shows the tilt";
+    auto* normalBox = mEditor->findChild<QLineEdit*>(QStringLiteral("sliceNormal"));
+    ASSERT_NE(normalBox, nullptr);
+    EXPECT_FALSE(normalBox->text().isEmpty());
+    EXPECT_EQ(view->angle().yaw, angle.yaw) << "the object did not turn";
+    EXPECT_EQ(view->angle().pitch, angle.pitch);
+
+    // Down: about x, the tip down (y falls).
+    const glm::dvec3 n0 = *slice.normal;
+    dragBy(QPoint(0, 30));
+    slice = mEditor->canvas()->slice();
+    ASSERT_TRUE(slice.normal.has_value());
+    const double b = 30 * 0.01;
+    const glm::dvec3 expected(n0.x, n0.y * std::cos(b) - n0.z * std::sin(b),
+                              n0.y * std::sin(b) + n0.z * std::cos(b));
+    EXPECT_NEAR(glm::length(*slice.normal - expected), 0.0, 1e-9);
+    EXPECT_LT(slice.normal->y, 0.0);
+
+    // The canvas shows the renderer's section at the new plane, and it differs.
+    const QImage shownAfter = shownSection(mEditor->document()->design());
+    EXPECT_GT(changed(shownBefore, shownAfter), 0.01);
+
+    // A drag elsewhere on the view turns the object and leaves the section.
+    const QPoint middleOfView(view->width() / 2, view->height() / 3);
+    QTest::mousePress(view, Qt::LeftButton, {}, middleOfView);
+    QTest::mouseMove(view, middleOfView + QPoint(20, 0));
+    QTest::mouseMove(view, middleOfView + QPoint(40, 0));
+    QTest::mouseRelease(view, Qt::LeftButton, {}, middleOfView + QPoint(40, 0));
+    EXPECT_NE(view->angle().yaw, angle.yaw) << "the object turned";
+    EXPECT_EQ(*mEditor->canvas()->slice().normal, *slice.normal) << "the section stayed";
 }
 
 } // namespace turned_section_test
