@@ -707,4 +707,47 @@ TEST_F(TurnedEditorTest, DraggingTheSectionsPlaneInTheObjectViewsCornerTurnsIt) 
     EXPECT_EQ(*mEditor->canvas()->slice().normal, *slice.normal) << "the section stayed";
 }
 
+TEST_F(TurnedEditorTest, ASolidWavesDirectionHandleTurnsTheWayItShiftsInk) {
+    // Issue 23: a wave's handle is its shift (`normal`, the way its drag went), and turning it
+    // turns the wave's `direction` with it, both in the section, square to each other.
+    open(shells());
+    auto* wave = mEditor->findChild<QAction*>(QStringLiteral("tool-wave"));
+    ASSERT_NE(wave, nullptr);
+    wave->trigger();
+    glm::dvec3 middle, along;
+    sectionMiddle(middle, along);
+    drag(middle, middle + 80.0 * along);
+    const Operation made = mEditor->document()->design().operations.back();
+    ASSERT_EQ(made.tool, Tool::Wave);
+    EXPECT_NEAR(glm::dot(made.normal, along), 1.0, 0.02) << "the shift along the drag";
+    mEditor->selectStep(mEditor->document()->stepCount() - 1);
+    EditorCanvas* canvas = mEditor->canvas();
+    const QPointF centre = canvas->toWidget(made.center);
+    QPointF handle;
+    for (const auto& [kind, point] : canvas->handlePoints())
+        if (kind == EditorCanvas::Handle::Direction) handle = point;
+    ASSERT_FALSE(handle.isNull()) << "a solid's wave has a direction handle";
+    const QPointF alongWidget = canvas->toWidget(made.center + along) - centre;
+    const QPointF arm = handle - centre;
+    EXPECT_NEAR((arm.x() * alongWidget.x() + arm.y() * alongWidget.y()) /
+                    (std::hypot(arm.x(), arm.y()) * std::hypot(alongWidget.x(), alongWidget.y())),
+                1.0, 0.02)
+        << "pointing the way the wave shifts ink";
+    // Turned by 45 degrees.
+    const QPointF target = centre + QPointF(arm.x() - arm.y(), arm.y() + arm.x());
+    QTest::mousePress(canvas, Qt::LeftButton, {}, handle.toPoint());
+    QTest::mouseMove(canvas, ((handle + target) / 2).toPoint());
+    QTest::mouseMove(canvas, target.toPoint());
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, target.toPoint());
+    const Genome turnedDesign = mEditor->document()->design();
+    const Operation turned = turnedDesign.operations.back();
+    const glm::dvec3 n = slicePlane(3, canvas->slice(), turnedDesign.size).normal();
+    const glm::dvec3 expected = glm::normalize(canvas->toDesign(target) - made.center);
+    EXPECT_NEAR(glm::dot(turned.normal, expected), 1.0, 0.02) << "the shift along the handle's drag";
+    EXPECT_NEAR(glm::dot(turned.normal, n), 0.0, 1e-9);
+    EXPECT_NEAR(glm::dot(turned.direction, n), 0.0, 1e-9);
+    EXPECT_NEAR(glm::dot(turned.direction, turned.normal), 0.0, 1e-12);
+    EXPECT_NO_THROW(validateGenome(turnedDesign, "wave turned by its handle"));
+}
+
 } // namespace turned_section_test
