@@ -43,6 +43,28 @@ bool hasPath(Tool tool) {
     return findParam(tool, ParamField::Path) != nullptr;
 }
 
+// ---- Issue 23: a solid stroke's direction handle ----
+/// A solid's stroke (line, comb, wave) has a direction handle where its tool's 3D parameters
+/// have a direction (registry). The handle points the way the stroke moves ink: `direction`,
+/// but a wave's shift is its `normal` (the wave gesture drags along that).
+bool hasSolidDirection(Tool tool) {
+    const auto params = toolSpec(tool).params3D;
+    return std::any_of(params.begin(), params.end(),
+                       [](const ParamSpec& p) { return p.field == ParamField::Direction; });
+}
+glm::dvec3& solidMotion(Operation& op) {
+    return toolSpec(op.tool).editor.gesture == EditorGesture::Wave ? op.normal : op.direction;
+}
+glm::dvec3& solidAcross(Operation& op) {
+    return toolSpec(op.tool).editor.gesture == EditorGesture::Wave ? op.direction : op.normal;
+}
+/// `w` turned by the angle (cosine c, sine s) about the unit `n`.
+glm::dvec3 turnedAbout(const glm::dvec3& w, const glm::dvec3& n, double c, double s) {
+    const glm::dvec3 along = glm::dot(w, n) * n, flat = w - along;
+    return along + c * flat + s * glm::cross(n, flat);
+}
+// ---- end issue 23 ----
+
 /// How long a free-hand stroke's live preview may take (ms): 25 a second, with room to spare.
 constexpr double PreviewTargetMs = 35.0;
 /// The smallest fraction of the view's pixels such a preview is rendered at.
@@ -346,6 +368,17 @@ std::vector<std::pair<EditorCanvas::Handle, QPointF>> EditorCanvas::handlePoints
         const QPointF plane = toPlane(op->center) + QPointF(op->radius, 0.0);
         points.emplace_back(Handle::Radius, mView.toViewport(plane) / devicePixelRatioF());
     }
+    if (mDesign.dimension == 3 && hasSolidDirection(op->tool)) {
+        // Issue 23: the way the stroke moves ink, as it lies in the section (a whole arm out).
+        Operation step = *op;
+        const SlicePlane plane = slicePlane(3, mSlice, mDesign.size);
+        const glm::dvec3 motion = solidMotion(step);
+        const glm::dvec3 lean = motion - glm::dot(motion, plane.normal()) * plane.normal();
+        const glm::dvec3 way = glm::length(lean) > 1e-9 ? lean / glm::length(lean) : -plane.v();
+        const QPointF d = toWidget(op->center + way) - centre;
+        const double length = std::hypot(d.x(), d.y());
+        if (length > 0.0) points.emplace_back(Handle::Direction, centre + ArmLength * d / length);
+    }
     if (mDesign.dimension == 3 && findParam(op->tool, ParamField::Axis)) {
         // The axis's lean out of the section, along the way it leans: sin(tilt) from half an arm
         // (across the section) to an arm and a half (lying in it).
@@ -372,7 +405,33 @@ Operation EditorCanvas::movedStep(Handle handle, QPointF widget) const {
     }
     case Handle::Direction: {
         const QPointF d = widget - toWidget(op.center);
-        if (std::hypot(d.x(), d.y()) > 1.0) op.angle = std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi;
+        if (std::hypot(d.x(), d.y()) <= 1.0) break;
+        if (mDesign.dimension != 3) {
+            op.angle = std::atan2(d.y(), d.x()) * 180.0 / std::numbers::pi;
+            break;
+        }
+        // Issue 23: a solid stroke turned in the section, about its normal, so that the way it
+        // moves ink points at the drag; both its vectors turn together and stay unit and square
+        // to each other. One that moved ink across the section is laid along the drag.
+        const SlicePlane plane = slicePlane(3, mSlice, mDesign.size);
+        const glm::dvec3 n = plane.normal();
+        glm::dvec3 want = at - op.center;
+        want -= glm::dot(want, n) * n;
+        if (glm::length(want) < 1e-12) break;
+        want = glm::normalize(want);
+        glm::dvec3& motion = solidMotion(op);
+        glm::dvec3& across = solidAcross(op);
+        const glm::dvec3 lean = motion - glm::dot(motion, n) * n;
+        if (glm::length(lean) > 1e-9) {
+            const glm::dvec3 was = glm::normalize(lean);
+            const double c = glm::dot(was, want), s = glm::dot(glm::cross(was, want), n);
+            motion = glm::normalize(turnedAbout(motion, n, c, s));
+            across = glm::normalize(turnedAbout(across, n, c, s));
+        } else {
+            motion = want;
+            const glm::dvec3 rest = across - glm::dot(across, want) * want;
+            across = glm::length(rest) > 1e-9 ? glm::normalize(rest) : glm::normalize(glm::cross(n, want));
+        }
         break;
     }
     case Handle::Radius: {

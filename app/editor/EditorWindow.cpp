@@ -118,6 +118,8 @@ EditorWindow::EditorWindow(Genome design, RenderService* renderer, const QString
         mObject = new SolidObjectView(renderer, this);
         mObject->setObjectName(QStringLiteral("objectView"));
         canvases->addWidget(mObject);
+        // Issue 23: the section's plane dragged in the object view's corner turns it.
+        connect(mObject, &SolidObjectView::sliceTurned, this, &EditorWindow::setSlice);
         mCanvas->setSlice(mSlice);
         mCompare->setSlice(mSlice);
     } else {

@@ -96,6 +96,8 @@ void SolidObjectView::setDesign(const Genome& design) {
 
 void SolidObjectView::setSlice(const Slice& slice) {
     mSlice = slice;
+    setToolTip(tr("The design on its object: drag to turn it; drag the block in the corner to turn the "
+                  "cross-section"));
     update();
 }
 
@@ -153,8 +155,7 @@ void SolidObjectView::paintSlice(QPainter& p) const {
     p.setRenderHint(QPainter::Antialiasing);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(30, 30, 30, 200));
-    p.drawRoundedRect(QRectF(origin.x() - 8.0, origin.y() - Side * 1.5, Side * 2.9, Side * 1.5 + 8.0), 6.0,
-                      6.0);
+    p.drawRoundedRect(sliceInset(), 6.0, 6.0);
     p.setBrush(Qt::NoBrush);
     p.setPen(QPen(QColor(220, 220, 220, 200), 1.0));
     const glm::dvec3 corner[8] = {
@@ -204,23 +205,64 @@ void SolidObjectView::showEvent(QShowEvent*) {
     if (mDesign.dimension != 3) request(false);
 }
 
+// ---- Issue 23: the section turned by dragging its plane in the corner ----
+QRectF SolidObjectView::sliceInset() const {
+    // As paintSlice draws it: the block's oblique view, 64 pixels a side, in the bottom left.
+    constexpr double Side = 64.0;
+    const QPointF origin(12.0, height() - 14.0);
+    return QRectF(origin.x() - 8.0, origin.y() - Side * 1.5, Side * 2.9, Side * 1.5 + 8.0);
+}
+
+namespace {
+/// Radians a pixel of drag in the corner turns the section's normal.
+constexpr double SliceTurnPerPixel = 0.01;
+} // namespace
+
 void SolidObjectView::mousePressEvent(QMouseEvent* event) {
-    mTurning = true;
     mLast = event->position();
+    if (mSlice && mDesign.dimension == 3 && sliceInset().contains(event->position())) {
+        mTurningSlice = true;
+        return;
+    }
+    mTurning = true;
 }
 
 void SolidObjectView::mouseMoveEvent(QMouseEvent* event) {
-    if (!mTurning) return;
     const QPointF d = event->position() - mLast;
+    if (mTurningSlice) {
+        mLast = event->position();
+        // The normal's tip follows the drag in the corner's view: right about y, down about x.
+        const SlicePlane plane = slicePlane(3, *mSlice, mDesign.size);
+        glm::dvec3 n = plane.normal();
+        const double a = SliceTurnPerPixel * d.x(), b = SliceTurnPerPixel * d.y();
+        n = {n.x * std::cos(a) + n.z * std::sin(a), n.y, -n.x * std::sin(a) + n.z * std::cos(a)};
+        n = {n.x, n.y * std::cos(b) - n.z * std::sin(b), n.y * std::sin(b) + n.z * std::cos(b)};
+        n = glm::normalize(n);
+        // Through the old plane's point nearest the block's middle, kept within the block.
+        const glm::dvec3 middle = 0.5 * mDesign.size;
+        const glm::dvec3 kept = middle - (glm::dot(plane.normal(), middle) - plane.value) * plane.normal();
+        const glm::dvec2 range = sliceOffsetRange(n, mDesign.size);
+        int nearest = 0;
+        for (int i = 1; i < 3; ++i)
+            if (std::abs(n[i]) > std::abs(n[nearest])) nearest = i;
+        Slice turned{nearest, std::clamp(glm::dot(n, kept), range.x, range.y), n};
+        const SlicePlane onAxis = slicePlane(3, turned, mDesign.size);
+        if (!onAxis.turned) turned = Slice{onAxis.normalAxis, onAxis.value};
+        emit sliceTurned(turned);
+        return;
+    }
+    if (!mTurning) return;
     mLast = event->position();
     mAngle = mAngle.dragged(d.x(), d.y());
     request(true);
 }
 
 void SolidObjectView::mouseReleaseEvent(QMouseEvent*) {
+    if (std::exchange(mTurningSlice, false)) return;
     if (!mTurning) return;
     mTurning = false;
     request(false);
 }
+// ---- end issue 23 ----
 
 } // namespace marbler::ui

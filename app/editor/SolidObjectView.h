@@ -9,6 +9,7 @@
 
 #include <QImage>
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 #include <QWidget>
 
@@ -46,6 +47,14 @@ public:
     void setSlice(const Slice& slice);
     ViewAngle angle() const { return mAngle; }
     const QImage& image() const { return mImage; }
+    /// Issue 23: where a solid's block and section plane are drawn, in the corner; dragging
+    /// there turns the section (sliceTurned), not the object.
+    QRectF sliceInset() const;
+
+signals:
+    /// The user turned the section by dragging its plane in the corner: horizontally about the
+    /// block's y axis, vertically about its x axis, through the same point nearest the middle.
+    void sliceTurned(const marbler::Slice& slice);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -66,6 +75,7 @@ private:
     QImage mImage;
     QPointF mLast;
     bool mTurning = false;
+    bool mTurningSlice = false; ///< a drag in the corner's inset turns the section
     bool mAngleSet = false; ///< the angle was taken from the first design
     std::optional<Slice> mSlice;
     QComboBox* mObjects = nullptr;

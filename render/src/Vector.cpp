@@ -107,6 +107,55 @@ private:
     std::atomic<std::size_t>& mGaps;
 };
 
+// ---- Issue 23: outlines on a wrapping bath ----
+/// Where the bath wraps, `outline` (traced in the plane: every step of such a bath commutes with
+/// the lattice's translations, so its forward maps carry the lattice's images of a circle to the
+/// images of its outline) and each of its images over the lattice whose box reaches into the
+/// tile [0, w) x [0, h): ink that a pass carries out over one edge comes back in over the other.
+/// Elsewhere the outline alone, where its box reaches the design space. Empty: it shows nowhere.
+/// `lo` and `hi` bound the outline as traced.
+std::vector<InkOutline> imagesInTile(InkOutline outline, const glm::dvec2& lo, const glm::dvec2& hi,
+                                     const Genome& genome) {
+    const double w = genome.size.x, h = genome.size.y;
+    auto reaches = [&](const glm::dvec2& o) {
+        return hi.x + o.x > 0.0 && hi.y + o.y > 0.0 && lo.x + o.x < w && lo.y + o.y < h;
+    };
+    std::vector<InkOutline> images;
+    if (!genome.wrap) {
+        if (reaches(glm::dvec2(0.0))) images.push_back(std::move(outline));
+        return images;
+    }
+    // The lattice of the tile: (w, h/2) and (0, h) half-drop, (w, 0) and (w/2, h) brick.
+    const glm::dvec2 shift = genome.lattice == Lattice::HalfDrop ? glm::dvec2(0.0, 0.5 * h)
+                             : genome.lattice == Lattice::Brick  ? glm::dvec2(0.5 * w, 0.0)
+                                                                 : glm::dvec2(0.0);
+    const glm::dvec2 a(w, shift.y), b(shift.x, h);
+    auto add = [&](long i, long j) {
+        const glm::dvec2 o = double(i) * a + double(j) * b;
+        if (!reaches(o)) return;
+        InkOutline image = outline;
+        if (i != 0 || j != 0)
+            for (glm::dvec2& p : image.points)
+                p += o;
+        images.push_back(std::move(image));
+    };
+    // Each image's offset is i a + j b; b.x = 0 but for brick and a.y = 0 but for half-drop, so
+    // one index's range follows from one coordinate and the other's from the first (with a margin).
+    if (shift.x > 0.0) {
+        for (long j = long(std::floor(-hi.y / h)) - 2; j <= long(std::ceil((h - lo.y) / h)) + 2; ++j)
+            for (long i = long(std::floor((-hi.x - double(j) * b.x) / w)) - 2;
+                 i <= long(std::ceil((w - lo.x - double(j) * b.x) / w)) + 2; ++i)
+                add(i, j);
+    } else {
+        for (long i = long(std::floor(-hi.x / w)) - 2; i <= long(std::ceil((w - lo.x) / w)) + 2; ++i)
+            for (long j = long(std::floor((-hi.y - double(i) * a.y) / h)) - 2;
+                 j <= long(std::ceil((h - lo.y - double(i) * a.y) / h)) + 2; ++j)
+                add(i, j);
+    }
+    return images;
+}
+// ---- end issue 23 ----
+
 /// Distance from p to the segment a-b.
 double distanceToSegment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
     glm::dvec2 ab = b - a;
@@ -178,7 +227,7 @@ VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
     // Outlines are independent: one worker per core takes the next ink from a counter. The
     // vertex cap counts every vertex traced, so whether it is reached does not depend on timing.
     std::atomic<std::size_t> traced{0}, gaps{0}, next{0};
-    std::vector<std::optional<InkOutline>> outlines(inks.size());
+    std::vector<std::vector<InkOutline>> outlines(inks.size()); // empty: shows nowhere
     std::vector<std::size_t> dropped(inks.size(), 0);
     std::atomic<bool> stop{false}; // a failed outline stops the others after their current one
     auto worker = [&] {
@@ -189,15 +238,15 @@ VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
             outline.color = ops[inks[k]].color;
             outline.points = tracer.trace();
             // An outline whose bounding box misses the design space cannot colour any of it
-            // (its region lies inside that box).
+            // (its region lies inside that box); on a wrapping bath its images may.
             glm::dvec2 lo(INFINITY), hi(-INFINITY);
             for (const glm::dvec2& p : outline.points) {
                 lo = glm::min(lo, p);
                 hi = glm::max(hi, p);
             }
-            if (hi.x <= 0.0 || hi.y <= 0.0 || lo.x >= design.width || lo.y >= design.height) continue;
             dropped[k] = simplify(outline.points, options);
-            outlines[k] = std::move(outline);
+            outlines[k] = imagesInTile(std::move(outline), lo, hi, genome);
+            if (outlines[k].empty()) dropped[k] = 0;
         }
     };
     int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1,
@@ -206,13 +255,15 @@ VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
 
     design.gapsAtDepthCap = gaps.load();
     for (std::size_t k = 0; k < inks.size(); ++k) {
-        if (!outlines[k]) {
+        if (outlines[k].empty()) {
             ++design.outlinesOutside;
             continue;
         }
         design.droppedAsStraight += dropped[k];
-        design.vertexCount += outlines[k]->points.size();
-        design.outlines.push_back(std::move(*outlines[k]));
+        for (InkOutline& outline : outlines[k]) {
+            design.vertexCount += outline.points.size();
+            design.outlines.push_back(std::move(outline));
+        }
     }
     return design;
 }

@@ -449,15 +449,16 @@ std::pair<int, int> rasterSizeOf(const Genome& genome) {
     return {256, 256};
 }
 
-TEST(SvgLayers, EachLayerAloneCoversThePixelsOfItsInk) {
-    // The issue's promise to a screen printer: each layer, printed alone, is where its ink
-    // shows in the raster render (the hard colour rule at each pixel's centre), within 0.5 %
-    // of the page, and together the layers cover every pixel once.
-    const auto dir = test::outputDir("svg-layers");
-    for (const NamedGenome& g : flatGenomes(dir, Dragging::With)) {
+/// The issue's promise to a screen printer: each layer of `marbler svg`'s file of `g`, printed
+/// alone, is where its ink shows in the raster render (the hard colour rule at each pixel's
+/// centre), within 0.5 % of the page, and together the layers cover every pixel once.
+/// At the tolerance `tolerance` (design units).
+void expectLayersAreTheRendersInks(const NamedGenome& g, const std::filesystem::path& dir,
+                                   const std::string& tolerance = "1") {
+    {
         SCOPED_TRACE(g.name);
         const auto svgFile = dir / (g.name + ".svg");
-        auto r = runMarbler({"svg", g.file.string(), "-o", svgFile.string(), "--tolerance", "1"});
+        auto r = runMarbler({"svg", g.file.string(), "-o", svgFile.string(), "--tolerance", tolerance});
         ASSERT_EQ(r.exitCode, 0) << r.err;
         const std::string svg = test::readFile(svgFile);
         const std::vector<SvgLayer> layers = parseLayers(svg);
@@ -510,6 +511,7 @@ TEST(SvgLayers, EachLayerAloneCoversThePixelsOfItsInk) {
                 inkPixels += isInk;
                 clearlyWrong += isInk ? coverage < 64 : coverage > 191;
             }
+
             const double page = double(inkAt.size());
             EXPECT_LE(std::abs(area - double(inkPixels)), 0.005 * page)
                 << "the layer covers " << area << " pixels, the ink " << inkPixels;
@@ -524,6 +526,50 @@ TEST(SvgLayers, EachLayerAloneCoversThePixelsOfItsInk) {
         for (int sum : coverageAt)
             notOnce += std::abs(sum - 255) > 64;
         EXPECT_LE(double(notOnce), 0.005 * double(coverageAt.size())) << "pixels not covered once";
+    }
+}
+
+TEST(SvgLayers, EachLayerAloneCoversThePixelsOfItsInk) {
+    const auto dir = test::outputDir("svg-layers");
+    for (const NamedGenome& g : flatGenomes(dir, Dragging::With))
+        expectLayersAreTheRendersInks(g, dir);
+}
+
+TEST(SvgLayers, AWrappingBathsInkCarriedOverAnEdgeComesBackOverTheOther) {
+    // Issue 23: where the bath wraps, a painted circle laid across an edge of the tile, and ink a
+    // pass carries out over one edge, show on the other side in the render, and so in each layer
+    // of the SVG (the lattice's images of each outline, cut at the tile's edges). Sprays across
+    // every edge and corner on each lattice, and stretches along both axes on the straight one.
+    const auto dir = test::outputDir("svg-layers-wrap");
+    for (const Lattice lattice : {Lattice::Straight, Lattice::HalfDrop, Lattice::Brick}) {
+        const std::string name = lattice == Lattice::Straight   ? "wrap-straight"
+                                 : lattice == Lattice::HalfDrop ? "wrap-half-drop"
+                                                                : "wrap-brick";
+        SCOPED_TRACE(name);
+        Genome genome = parseGenome(R"({
+          "format": "marbler-genome", "version": 3, "dimension": 2, "size": [120, 90],
+          "background": "#203040", "palette": ["#203040", "#e0b040", "#b03020", "#f0f0e0"],
+          "wrap": true,
+          "initial": [
+            {"tool": "spray", "center": [5, 5], "radius": 20, "color": 1},
+            {"tool": "spray", "center": [118, 45], "radius": 15, "color": 2},
+            {"tool": "spray", "center": [60, 88], "radius": 18, "color": 3},
+            {"tool": "spray", "center": [60, 45], "radius": 12, "color": 1},
+            {"tool": "spray", "center": [-3, 70], "radius": 9, "color": 3},
+            {"tool": "spray", "center": [100, 10], "radius": 7, "color": 2}
+          ],
+          "operations": [
+            {"tool": "stretch", "origin": [0, 0], "angle": 0, "teeth": [0, 20, 45, 70, 90], "shift": 35, "power": 1},
+            {"tool": "stretch", "origin": [120, 0], "angle": 90, "teeth": [0, 30, 55, 90, 120], "shift": -25, "power": 2}
+          ]
+        })",
+                                    name);
+        genome.lattice = lattice;
+        if (lattice != Lattice::Straight) genome.operations.clear();
+        const auto file = dir / (name + ".marble.json");
+        saveGenome(genome, file);
+        // A tenth of a design unit is a fifth of a pixel of the 256-pixel raster.
+        expectLayersAreTheRendersInks({name, genome, file}, dir, "0.1");
     }
 }
 

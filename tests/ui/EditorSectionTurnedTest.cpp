@@ -8,6 +8,7 @@
 #include "editor/EditorDocument.h"
 #include "editor/EditorWindow.h"
 #include "editor/Gestures.h"
+#include "editor/SolidObjectView.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
@@ -24,6 +25,8 @@
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStyle>
+#include <QStyleOptionSlider>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -485,6 +488,266 @@ TEST(TurnedSectionLargeViewTest, TheLargeViewShowsASectionTurnedToATypedNormal) 
     ASSERT_TRUE(dialog.section().has_value());
     ASSERT_TRUE(dialog.section()->normal.has_value());
     EXPECT_NEAR(glm::length(*dialog.section()->normal - n), 0.0, 1e-12);
+}
+
+/// Drags the handle of `slider` by `pixels` to the right with the mouse, as a user does.
+void dragSlider(QSlider* slider, int pixels) {
+    QStyleOptionSlider option;
+    option.initFrom(slider);
+    option.orientation = slider->orientation();
+    option.minimum = slider->minimum();
+    option.maximum = slider->maximum();
+    option.sliderPosition = option.sliderValue = slider->value();
+    option.subControls = QStyle::SC_SliderHandle;
+    const QPoint from =
+        slider->style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider).center();
+    const QPoint to = from + QPoint(pixels, 0);
+    QTest::mousePress(slider, Qt::LeftButton, {}, from);
+    QTest::mouseMove(slider, (from + to) / 2);
+    QTest::mouseMove(slider, to);
+    QTest::mouseRelease(slider, Qt::LeftButton, {}, to);
+}
+
+TEST_F(TurnedEditorTest, ALineOnASectionTurnedByItsHandlesIsTurnedByItsDirectionHandle) {
+    // Issue 23: the section turned by dragging its handles (not a typed normal), a line drawn on
+    // it, and the line turned in the section by its direction handle, all with the mouse.
+    open(shells());
+    auto* tilt = mEditor->findChild<QSlider*>(QStringLiteral("sliceTilt"));
+    auto* turn = mEditor->findChild<QSlider*>(QStringLiteral("sliceTurn"));
+    ASSERT_NE(tilt, nullptr);
+    ASSERT_NE(turn, nullptr);
+    dragSlider(tilt, tilt->width() / 3);
+    dragSlider(turn, turn->width() / 4);
+    ASSERT_GT(tilt->value(), 5) << "the tilt handle moved under the mouse";
+    ASSERT_GT(turn->value(), 5) << "the turn handle moved under the mouse";
+    const Slice slice = mEditor->canvas()->slice();
+    ASSERT_TRUE(slice.normal.has_value()) << "the dragged handles turned the section";
+    const glm::dvec3 n = *slice.normal;
+    EXPECT_NEAR(std::acos(std::abs(n.z)) * 180.0 / std::numbers::pi, tilt->value(), 1e-6)
+        << "tilted from z by the tilt handle's angle";
+    auto* shownNormal = mEditor->findChild<QLineEdit*>(QStringLiteral("sliceNormal"));
+    ASSERT_NE(shownNormal, nullptr);
+    EXPECT_FALSE(shownNormal->text().isEmpty()) << "the normal box says the handles' normal";
+
+    auto* line = mEditor->findChild<QAction*>(QStringLiteral("tool-line"));
+    ASSERT_NE(line, nullptr);
+    line->trigger();
+    glm::dvec3 middle, along;
+    sectionMiddle(middle, along);
+    drag(middle, middle + 90.0 * along);
+    const Genome drawn = mEditor->document()->design();
+    const Operation made = drawn.operations.back();
+    ASSERT_EQ(made.tool, Tool::Line);
+    EXPECT_NEAR(glm::dot(made.center, n), slice.value, 1e-6) << "on the turned section";
+    EXPECT_NEAR(glm::dot(made.direction, along), 1.0, 0.02) << "along the drag";
+    const QImage before = shownSection(drawn);
+    const std::string drawnText = serializeGenome(drawn);
+
+    // Selected, the line shows a direction handle an arm out the way it moves ink.
+    mEditor->selectStep(mEditor->document()->stepCount() - 1);
+    EditorCanvas* canvas = mEditor->canvas();
+    const QPointF centre = canvas->toWidget(made.center);
+    QPointF handle;
+    for (const auto& [kind, point] : canvas->handlePoints())
+        if (kind == EditorCanvas::Handle::Direction) handle = point;
+    ASSERT_FALSE(handle.isNull()) << "a solid's line has a direction handle";
+    const QPointF alongWidget = canvas->toWidget(made.center + along) - centre;
+    const QPointF arm = handle - centre;
+    EXPECT_NEAR(std::hypot(arm.x(), arm.y()), 70.0, 1.0);
+    EXPECT_NEAR((arm.x() * alongWidget.x() + arm.y() * alongWidget.y()) /
+                    (std::hypot(arm.x(), arm.y()) * std::hypot(alongWidget.x(), alongWidget.y())),
+                1.0, 0.02)
+        << "pointing along the line's drag";
+
+    // Dragged a quarter turn round: the line moves ink that way, still in the section.
+    const QPointF target = centre + QPointF(-arm.y(), arm.x()) * (100.0 / 70.0);
+    QTest::mousePress(canvas, Qt::LeftButton, {}, handle.toPoint());
+    QTest::mouseMove(canvas, ((handle + target) / 2).toPoint());
+    QTest::mouseMove(canvas, target.toPoint());
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, target.toPoint());
+    const Genome turnedDesign = mEditor->document()->design();
+    const Operation turned = turnedDesign.operations.back();
+    const glm::dvec3 expected = glm::normalize(canvas->toDesign(target) - made.center);
+    EXPECT_NEAR(glm::dot(turned.direction, expected), 1.0, 0.02) << "along the handle's drag";
+    EXPECT_NEAR(glm::dot(turned.direction, n), 0.0, 1e-9) << "in the section";
+    EXPECT_NEAR(glm::dot(turned.normal, n), 0.0, 1e-9) << "its normal in the section too";
+    EXPECT_NEAR(glm::dot(turned.direction, turned.normal), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(turned.direction), 1.0, 1e-12);
+    EXPECT_EQ(turned.center, made.center);
+    EXPECT_EQ(turned.alpha, made.alpha);
+    EXPECT_NO_THROW(validateGenome(turnedDesign, "line turned by its handle"));
+    // What the person sees is the renderer's section of the turned line, not the drawn one.
+    EXPECT_GT(changed(before, shownSection(turnedDesign)), 0.005);
+
+    mEditor->document()->undoStack()->undo();
+    EXPECT_EQ(serializeGenome(mEditor->document()->design()), drawnText)
+        << "the handle's edit undoes exactly";
+}
+
+TEST_F(TurnedEditorTest, ACircleOnASectionTurnedByMouseLeansItsAxisByItsHandle) {
+    // Issue 23's "Done when": circles about any axis by mouse on a section at any angle. The
+    // section turned by dragging its handles, a circle dragged on it (about the section's
+    // normal), then its axis leant by dragging its axis handle: every step with the mouse.
+    open(shells());
+    auto* tilt = mEditor->findChild<QSlider*>(QStringLiteral("sliceTilt"));
+    auto* turn = mEditor->findChild<QSlider*>(QStringLiteral("sliceTurn"));
+    ASSERT_NE(tilt, nullptr);
+    ASSERT_NE(turn, nullptr);
+    dragSlider(tilt, tilt->width() / 4);
+    dragSlider(turn, turn->width() / 2);
+    const Slice slice = mEditor->canvas()->slice();
+    ASSERT_TRUE(slice.normal.has_value()) << "the dragged handles turned the section";
+    const glm::dvec3 n = *slice.normal;
+
+    auto* circle = mEditor->findChild<QAction*>(QStringLiteral("tool-circle"));
+    ASSERT_NE(circle, nullptr);
+    circle->trigger();
+    glm::dvec3 middle, along;
+    sectionMiddle(middle, along);
+    drag(middle, middle + 110.0 * along);
+    const Operation made = mEditor->document()->design().operations.back();
+    ASSERT_EQ(made.tool, Tool::Circle);
+    const double pixel = 2.0 / mEditor->canvas()->view().scale();
+    EXPECT_NEAR(glm::dot(made.center, n), slice.value, 1e-6) << "on the turned section";
+    EXPECT_NEAR(made.radius, 110.0, pixel);
+    EXPECT_NEAR(glm::length(made.axis - n), 0.0, 1e-12) << "about the section's normal";
+    const std::string madeText = serializeGenome(mEditor->document()->design());
+    const QImage before = shownSection(mEditor->document()->design());
+
+    // The axis handle dragged half an arm further out, across the section's first axis: the
+    // axis leans that way by 30 degrees (sin = half), keeping its side of the section.
+    mEditor->selectStep(mEditor->document()->stepCount() - 1);
+    EditorCanvas* canvas = mEditor->canvas();
+    QPointF axisHandle;
+    for (const auto& [kind, point] : canvas->handlePoints())
+        if (kind == EditorCanvas::Handle::Axis) axisHandle = point;
+    ASSERT_FALSE(axisHandle.isNull()) << "a solid's circle has an axis handle";
+    const QPointF centre = canvas->toWidget(made.center);
+    const glm::dvec3 across = glm::normalize(glm::cross(n, along));
+    const QPointF acrossWidget = canvas->toWidget(made.center + across) - centre;
+    const QPointF target = centre + 70.0 * acrossWidget / std::hypot(acrossWidget.x(), acrossWidget.y());
+    QTest::mousePress(canvas, Qt::LeftButton, {}, axisHandle.toPoint());
+    QTest::mouseMove(canvas, ((axisHandle + target) / 2).toPoint());
+    QTest::mouseMove(canvas, target.toPoint());
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, target.toPoint());
+    const Genome leant = mEditor->document()->design();
+    const Operation turned = leant.operations.back();
+    EXPECT_NEAR(glm::dot(turned.axis, n), std::sqrt(0.75), 0.03) << "30 degrees from the normal";
+    EXPECT_GT(glm::dot(turned.axis, across), 0.4) << "leaning the drag's way";
+    EXPECT_NEAR(glm::length(turned.axis), 1.0, 1e-12);
+    EXPECT_EQ(turned.center, made.center);
+    EXPECT_NO_THROW(validateGenome(leant, "circle leant by its handle"));
+    EXPECT_GT(changed(before, shownSection(leant)), 0.005) << "the section shows the leant circle";
+    mEditor->document()->undoStack()->undo();
+    EXPECT_EQ(serializeGenome(mEditor->document()->design()), madeText);
+}
+
+TEST_F(TurnedEditorTest, DraggingTheSectionsPlaneInTheObjectViewsCornerTurnsIt) {
+    // Issue 23: the section turned by dragging a handle on the view, not only the panel's
+    // sliders or a typed normal: the block and plane in the object view's corner, dragged right,
+    // turn the normal about y, dragged down about x, through the same point of the middle.
+    open(shells());
+    auto* view = mEditor->findChild<SolidObjectView*>(QStringLiteral("objectView"));
+    ASSERT_NE(view, nullptr);
+    ASSERT_TRUE(view->isVisible());
+    const Slice was = mEditor->canvas()->slice();
+    ASSERT_FALSE(was.normal.has_value());
+    const ViewAngle angle = view->angle();
+    const glm::dvec3 size = mEditor->document()->design().size;
+    const SlicePlane before = slicePlane(3, was, size);
+    const glm::dvec3 middle = 0.5 * size;
+    const glm::dvec3 kept = middle - (glm::dot(before.normal(), middle) - before.value) * before.normal();
+    const QImage shownBefore = shownSection(mEditor->document()->design());
+
+    const QPoint press = view->sliceInset().center().toPoint();
+    auto dragBy = [&](QPoint by) {
+        QTest::mousePress(view, Qt::LeftButton, {}, press);
+        QTest::mouseMove(view, press + by / 2);
+        QTest::mouseMove(view, press + by);
+        QTest::mouseRelease(view, Qt::LeftButton, {}, press + by);
+    };
+    dragBy(QPoint(40, 0));
+    Slice slice = mEditor->canvas()->slice();
+    ASSERT_TRUE(slice.normal.has_value()) << "the drag turned the section";
+    const double a = 40 * 0.01;
+    EXPECT_NEAR(glm::length(*slice.normal - glm::dvec3(std::sin(a), 0.0, std::cos(a))), 0.0, 1e-9)
+        << "about y, its tip to the right";
+    EXPECT_NEAR(slice.value, glm::dot(*slice.normal, kept), 1e-6) << "through the same point";
+    auto* tilt = mEditor->findChild<QSlider*>(QStringLiteral("sliceTilt"));
+    ASSERT_NE(tilt, nullptr);
+    EXPECT_EQ(tilt->value(), int(std::lround(a * 180.0 / std::numbers::pi))) << "the panel shows the tilt";
+    auto* normalBox = mEditor->findChild<QLineEdit*>(QStringLiteral("sliceNormal"));
+    ASSERT_NE(normalBox, nullptr);
+    EXPECT_FALSE(normalBox->text().isEmpty());
+    EXPECT_EQ(view->angle().yaw, angle.yaw) << "the object did not turn";
+    EXPECT_EQ(view->angle().pitch, angle.pitch);
+
+    // Down: about x, the tip down (y falls).
+    const glm::dvec3 n0 = *slice.normal;
+    dragBy(QPoint(0, 30));
+    slice = mEditor->canvas()->slice();
+    ASSERT_TRUE(slice.normal.has_value());
+    const double b = 30 * 0.01;
+    const glm::dvec3 expected(n0.x, n0.y * std::cos(b) - n0.z * std::sin(b),
+                              n0.y * std::sin(b) + n0.z * std::cos(b));
+    EXPECT_NEAR(glm::length(*slice.normal - expected), 0.0, 1e-9);
+    EXPECT_LT(slice.normal->y, 0.0);
+
+    // The canvas shows the renderer's section at the new plane, and it differs.
+    const QImage shownAfter = shownSection(mEditor->document()->design());
+    EXPECT_GT(changed(shownBefore, shownAfter), 0.01);
+
+    // A drag elsewhere on the view turns the object and leaves the section.
+    const QPoint middleOfView(view->width() / 2, view->height() / 3);
+    QTest::mousePress(view, Qt::LeftButton, {}, middleOfView);
+    QTest::mouseMove(view, middleOfView + QPoint(20, 0));
+    QTest::mouseMove(view, middleOfView + QPoint(40, 0));
+    QTest::mouseRelease(view, Qt::LeftButton, {}, middleOfView + QPoint(40, 0));
+    EXPECT_NE(view->angle().yaw, angle.yaw) << "the object turned";
+    EXPECT_EQ(*mEditor->canvas()->slice().normal, *slice.normal) << "the section stayed";
+}
+
+TEST_F(TurnedEditorTest, ASolidWavesDirectionHandleTurnsTheWayItShiftsInk) {
+    // Issue 23: a wave's handle is its shift (`normal`, the way its drag went), and turning it
+    // turns the wave's `direction` with it, both in the section, square to each other.
+    open(shells());
+    auto* wave = mEditor->findChild<QAction*>(QStringLiteral("tool-wave"));
+    ASSERT_NE(wave, nullptr);
+    wave->trigger();
+    glm::dvec3 middle, along;
+    sectionMiddle(middle, along);
+    drag(middle, middle + 80.0 * along);
+    const Operation made = mEditor->document()->design().operations.back();
+    ASSERT_EQ(made.tool, Tool::Wave);
+    EXPECT_NEAR(glm::dot(made.normal, along), 1.0, 0.02) << "the shift along the drag";
+    mEditor->selectStep(mEditor->document()->stepCount() - 1);
+    EditorCanvas* canvas = mEditor->canvas();
+    const QPointF centre = canvas->toWidget(made.center);
+    QPointF handle;
+    for (const auto& [kind, point] : canvas->handlePoints())
+        if (kind == EditorCanvas::Handle::Direction) handle = point;
+    ASSERT_FALSE(handle.isNull()) << "a solid's wave has a direction handle";
+    const QPointF alongWidget = canvas->toWidget(made.center + along) - centre;
+    const QPointF arm = handle - centre;
+    EXPECT_NEAR((arm.x() * alongWidget.x() + arm.y() * alongWidget.y()) /
+                    (std::hypot(arm.x(), arm.y()) * std::hypot(alongWidget.x(), alongWidget.y())),
+                1.0, 0.02)
+        << "pointing the way the wave shifts ink";
+    // Turned by 45 degrees.
+    const QPointF target = centre + QPointF(arm.x() - arm.y(), arm.y() + arm.x());
+    QTest::mousePress(canvas, Qt::LeftButton, {}, handle.toPoint());
+    QTest::mouseMove(canvas, ((handle + target) / 2).toPoint());
+    QTest::mouseMove(canvas, target.toPoint());
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, target.toPoint());
+    const Genome turnedDesign = mEditor->document()->design();
+    const Operation turned = turnedDesign.operations.back();
+    const glm::dvec3 n = slicePlane(3, canvas->slice(), turnedDesign.size).normal();
+    const glm::dvec3 expected = glm::normalize(canvas->toDesign(target) - made.center);
+    EXPECT_NEAR(glm::dot(turned.normal, expected), 1.0, 0.02) << "the shift along the handle's drag";
+    EXPECT_NEAR(glm::dot(turned.normal, n), 0.0, 1e-9);
+    EXPECT_NEAR(glm::dot(turned.direction, n), 0.0, 1e-9);
+    EXPECT_NEAR(glm::dot(turned.direction, turned.normal), 0.0, 1e-12);
+    EXPECT_NO_THROW(validateGenome(turnedDesign, "wave turned by its handle"));
 }
 
 } // namespace turned_section_test
