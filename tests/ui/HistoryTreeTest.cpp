@@ -242,8 +242,11 @@ TEST_F(HistoryTreeTest, SessionRoundTripKeepsTheTree) {
     QFile in(file);
     ASSERT_TRUE(in.open(QIODevice::ReadOnly));
     const QByteArray text = in.readAll();
-    EXPECT_TRUE(text.contains("\"version\":2")) << text.left(200).toStdString();
-    EXPECT_TRUE(text.contains("\"parent\":1"));
+    EXPECT_TRUE(text.contains("\"version\":3")) << text.left(200).toStdString();
+    // Version 3: each generation in a file of its own, naming its parent.
+    QFile third(generationFile(generationsFolder(file), 3));
+    ASSERT_TRUE(third.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(third.readAll().contains("\"parent\":1"));
 
     const SavedSession saved = loadSession(file);
     EXPECT_EQ(treeSnapshot(saved.history), treeSnapshot(model().history()));
