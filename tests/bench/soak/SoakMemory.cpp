@@ -6,7 +6,10 @@
 // editor, the history's own bytes (EditorDocument::historyBytes). docs/performance.md, "Long
 // sessions", has the figures.
 //
-//   soak_memory [--edits N] [--generations N] [--seeds DIR]
+//   soak_memory [--edits N] [--generations N] [--breed-every N] [--seeds DIR]
+//
+// --breed-every N breeds every Nth generation only (default: every one) and makes the others by
+// placing designs, as large as bred ones: breeding the generator's designs takes seconds each.
 //
 // --seeds DIR also writes, into DIR/session and DIR/recovery, session and recovery files made by
 // the app's own code (the seed corpora of fuzz_session and fuzz_recovery).
@@ -28,6 +31,7 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -139,7 +143,25 @@ void soakEditor(long edits, const QString& seeds) {
     }
 }
 
-void soakWorkbench(long generations, const QString& seeds) {
+/// Puts 1 to 3 designs into the grid as one generation, beside a parent kept: variants of a few
+/// random designs, each named anew (what opening or bringing back designs makes; a generation as
+/// large as a bred one, made in a fraction of the time).
+void placeVariants(PopulationModel& model, std::mt19937_64& rng) {
+    static std::vector<Genome> pool;
+    if (pool.empty())
+        for (std::uint64_t seed = 1; seed <= 6; ++seed)
+            pool.push_back(randomGenome(seed, 2));
+    std::vector<Genome> designs;
+    for (int n = 1 + int(rng() % 3); n > 0; --n) {
+        Genome g = pool[rng() % pool.size()];
+        g.meta.name = "variant " + std::to_string(rng() % 1000000);
+        g.meta.id.reset();
+        designs.push_back(std::move(g));
+    }
+    model.placeDesigns(designs, QStringLiteral("Opened variants"), PopulationModel::Placement::KeepParents);
+}
+
+void soakWorkbench(long generations, long breedEvery, const QString& seeds) {
     QTemporaryDir dir;
     PopulationModel model;
     model.setSessionSeed(5);
@@ -147,6 +169,7 @@ void soakWorkbench(long generations, const QString& seeds) {
     model.setSessionFile(dir.filePath("session.json"));
     std::mt19937_64 rng(5);
     long done = 0;
+    row("workbench: generations", 0, -1);
     for (long mark : {10L, 100L, 1000L, 10000L}) {
         if (mark > generations) break;
         while (done < mark) {
@@ -155,7 +178,12 @@ void soakWorkbench(long generations, const QString& seeds) {
             const int a = int(rng() % CellCount);
             model.setSelected(a, true);
             if (!alter) model.setSelected((a + 1 + int(rng() % (CellCount - 1))) % CellCount, true);
-            model.apply(alter ? GeneticOperator::Alter : GeneticOperator::Recombine, 0.5);
+            // Breeding the generator's designs takes seconds a generation here: --breed-every N
+            // breeds every Nth generation and fills the others with placed designs.
+            if (done % breedEvery == 0)
+                model.apply(alter ? GeneticOperator::Alter : GeneticOperator::Recombine, 0.5);
+            else
+                placeVariants(model, rng);
             if (rng() % 10 == 0) model.goBack(); // branches, as a user trying again makes
             ++done;
             if (!seeds.isEmpty() && done == 3) {
@@ -197,7 +225,7 @@ void soakWorkbench(long generations, const QString& seeds) {
 
 int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
-    long edits = 10000, generations = 1000;
+    long edits = 10000, generations = 1000, breedEvery = 1;
     QString seeds;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
@@ -205,6 +233,8 @@ int main(int argc, char** argv) {
             edits = std::stol(argv[i + 1]);
         else if (flag == "--generations")
             generations = std::stol(argv[i + 1]);
+        else if (flag == "--breed-every")
+            breedEvery = std::max(1L, std::stol(argv[i + 1]));
         else if (flag == "--seeds")
             seeds = QString::fromLocal8Bit(argv[i + 1]);
         else {
@@ -218,6 +248,6 @@ int main(int argc, char** argv) {
                 std::string(11, '-').c_str(), std::string(11, '-').c_str(), std::string(14, '-').c_str());
     row("start", 0, -1);
     soakEditor(edits, seeds);
-    soakWorkbench(generations, seeds);
+    soakWorkbench(generations, breedEvery, seeds);
     return 0;
 }
