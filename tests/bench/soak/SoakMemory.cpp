@@ -65,6 +65,10 @@ void row(const char* what, long steps, double historyMiB) {
     std::fflush(stdout);
 }
 
+void writeText(const QString& file, const std::string& text) {
+    std::ofstream(QFile::encodeName(file).toStdString(), std::ios::binary) << text;
+}
+
 /// A random flat design, as a new population's are.
 Genome startDesign(std::uint64_t seed) {
     return randomGenome(seed, 2);
@@ -188,7 +192,9 @@ void soakWorkbench(long generations, long breedEvery, const QString& seeds) {
             ++done;
             if (!seeds.isEmpty() && done == 3) {
                 QDir().mkpath(seeds + "/session");
-                QFile::copy(dir.filePath("session.json"), seeds + "/session/flat-3-generations.json");
+                // One document (version 2, what parseSession reads): the autosave's version 3
+                // keeps its generations in files of their own.
+                writeText(seeds + "/session/flat-3-generations.json", serializeSession(model));
             }
         }
         // The model's own bytes where it counts them (PopulationModel::historyBytes; built against
@@ -217,7 +223,7 @@ void soakWorkbench(long generations, long breedEvery, const QString& seeds) {
         solid.setSessionSeed(9);
         solid.newRandomPopulation(3);
         solid.setSessionFile(dir.filePath("solid.json"));
-        QFile::copy(dir.filePath("solid.json"), seeds + "/session/solid-1-generation.json");
+        writeText(seeds + "/session/solid-1-generation.json", serializeSession(solid));
     }
 }
 
