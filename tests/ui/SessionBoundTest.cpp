@@ -7,20 +7,26 @@
 #include "WaitFor.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
+#include "shared/RenderService.h"
+#include "workbench/LineagePanel.h"
 #include "workbench/PopulationModel.h"
 #include "workbench/Session.h"
+#include "workbench/SessionStore.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QMainWindow>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidget>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <csignal>
 #include <random>
+#include <set>
 #include <string>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -193,6 +199,56 @@ TEST_F(LongSession, ResumesExactly) {
         EXPECT_EQ(designsOf(copy.generation(k)), made[std::size_t(k)]) << "generation " << k;
 }
 
+/// Whether an icon shows more than one colour (a thumbnail, not a blank).
+bool iconHasDetail(const QIcon& icon) {
+    const QImage image = icon.pixmap(QSize(44, 44)).toImage();
+    std::set<QRgb> colours;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            colours.insert(image.pixel(x, y));
+    return colours.size() > 1;
+}
+
+TEST(SessionLineage, ShowsAGenerationNotInMemory) {
+    QTemporaryDir dir;
+    RenderService service(RenderService::Backend::Cpu);
+    QMainWindow window;
+    PopulationModel model;
+    model.setSessionSeed(4);
+    LineagePanel panel(&window, &model, &service, [] { return QStringLiteral("vase"); });
+    window.addDockWidget(Qt::RightDockWidgetArea, panel.dock());
+    model.newRandomPopulation(2);
+    model.setSessionFile(dir.filePath(QStringLiteral("s.json")));
+    const std::vector<std::string> first = designsOf(model.current());
+    std::mt19937_64 rng(4);
+    while (model.history().size() < std::size_t(2 * PopulationModel::HeldGenerations + 4))
+        makeGeneration(model, rng, 1000);
+    ASSERT_FALSE(model.history()[0].held) << "the first generation is on disk only";
+    panel.update();
+    window.resize(900, 900);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+
+    // Its row, unfolded: its nine designs, read back, named as they were made.
+    QTreeWidget* tree = panel.tree();
+    const QList<QTreeWidgetItem*> rows =
+        tree->findItems(QStringLiteral("Generation 1"), Qt::MatchExactly | Qt::MatchRecursive, 0);
+    ASSERT_EQ(rows.size(), 1);
+    QTreeWidgetItem* row = rows.front();
+    row->setExpanded(true);
+    MARBLER_WAIT(row->childCount() == CellCount, 10000);
+    for (int i = 0; i < CellCount; ++i) {
+        const Genome design = parseGenome(first[std::size_t(i)], "first");
+        EXPECT_TRUE(row->child(i)->text(0).contains(QString::fromStdString(*design.meta.name)))
+            << row->child(i)->text(0).toStdString();
+    }
+    // Scrolled into view, its designs' thumbnails and its mosaic are rendered.
+    tree->scrollToItem(row, QAbstractItemView::PositionAtTop);
+    MARBLER_WAIT(iconHasDetail(row->child(0)->icon(0)), 120000);
+    MARBLER_WAIT(iconHasDetail(row->icon(0)), 120000);
+    MARBLER_WAIT(service.idle(), 120000);
+}
+
 TEST(SessionCrash, KilledWhileBreedingReopensWithEveryGeneration) {
     QTemporaryDir dir;
     const QString head = dir.filePath(QStringLiteral("crash.json"));
@@ -293,6 +349,41 @@ TEST(SessionFormat, AMissingGenerationFileIsNamed) {
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find(gone.toStdString()), std::string::npos) << e.what();
     }
+}
+
+TEST(SessionFormat, TheGenerationsFolderGoesWithItsSession) {
+    // Deleted (into the trash), brought back, and deleted for good: the folder follows the file.
+    QTemporaryDir dir;
+    SessionStore store(dir.path());
+    const KeptSession kept = store.create(2);
+    std::vector<std::vector<std::string>> made;
+    {
+        PopulationModel model;
+        model.setSessionSeed(6);
+        model.newRandomPopulation(2);
+        model.setSessionFile(kept.file);
+        std::mt19937_64 rng(6);
+        for (int n = 0; n < 3; ++n)
+            makeGeneration(model, rng, 1000);
+        for (int k = 0; k < int(model.history().size()); ++k)
+            made.push_back(designsOf(model.generation(k)));
+    }
+    ASSERT_TRUE(QFileInfo(generationsFolder(kept.file)).isDir());
+    ASSERT_EQ(store.list().size(), 1u) << "the folder is no session of its own";
+
+    const QString trashed = store.remove(kept.id);
+    EXPECT_FALSE(QFileInfo::exists(generationsFolder(kept.file)));
+    EXPECT_TRUE(QFileInfo(generationsFolder(trashed)).isDir());
+    EXPECT_EQ(store.restore(trashed), kept.id);
+    const SavedSession back = loadSession(kept.file);
+    ASSERT_EQ(back.history.size(), made.size());
+    for (int k = 0; k < int(made.size()); ++k)
+        EXPECT_EQ(designsOf(readGeneration(back.folder, k)), made[std::size_t(k)]);
+
+    const QString again = store.remove(kept.id);
+    store.emptyTrash(-1); // everything trashed before tomorrow
+    EXPECT_FALSE(QFileInfo::exists(again));
+    EXPECT_FALSE(QFileInfo::exists(generationsFolder(again))) << "the trash keeps no orphan folder";
 }
 
 TEST(SessionMemory, PackedGenerationsComeBackWithoutASessionFile) {
