@@ -122,8 +122,8 @@ void LineagePanel::update() {
             new QTreeWidgetItem(container, {tr("Generation %1").arg(mModel->generationLabel(k)),
                                             g.description, parents.join(QStringLiteral(", ")), QString()});
         item->setData(0, GenerationRole, k);
-        for (const auto& cell : g.cells)
-            if (cell) mGenerationItems.insert(thumbnailKey(*cell), item);
+        for (const CellInfo& cell : g.info)
+            if (cell.present) mGenerationItems.insert(thumbnailKey(cell), item);
         item->setIcon(0, mosaic(k));
         // Designs are added when the generation is first expanded.
         item->setChildIndicatorPolicy(QTreeWidgetItem::ShowIndicator);
@@ -185,14 +185,17 @@ void LineagePanel::update() {
 void LineagePanel::populateGeneration(QTreeWidgetItem* item) {
     if (item->childCount() > 0) return;
     const int generation = item->data(0, GenerationRole).toInt();
-    const auto& history = mModel->history();
-    if (generation < 0 || generation >= int(history.size())) return;
+    if (generation < 0 || generation >= int(mModel->history().size())) return;
+    // Read back when the generation is not in memory.
+    const Generation& g = mModel->generation(generation);
     for (int i = 0; i < CellCount; ++i)
-        if (history[std::size_t(generation)].cells[std::size_t(i)]) addDesign(item, generation, i);
+        if (g.cells[std::size_t(i)]) addDesign(item, generation, i);
 }
 
 void LineagePanel::addDesign(QTreeWidgetItem* parent, int generation, int cell) {
-    const Genome& g = *mModel->history()[std::size_t(generation)].cells[std::size_t(cell)];
+    const auto& design = mModel->generation(generation).cells[std::size_t(cell)];
+    if (!design) return; // could not be read back (the model said why)
+    const Genome& g = *design;
     const LineageInfo info = lineageOf(g);
     QStringList parents;
     for (const QString& p : info.parents)
@@ -209,6 +212,11 @@ void LineagePanel::addDesign(QTreeWidgetItem* parent, int generation, int cell) 
     const QString key = thumbnailKey(g);
     item->setIcon(0, icon(key));
     mDesignItems.insert(key, item);
+}
+
+QString LineagePanel::thumbnailKey(const CellInfo& info) const {
+    return QString::fromStdString(info.contentId) + QLatin1Char('/') +
+           (info.dimension == 3 ? mMesh() : QString());
 }
 
 QString LineagePanel::thumbnailKey(const Genome& genome) const {
@@ -233,12 +241,12 @@ QPixmap LineagePanel::mosaic(int generation) const {
     QPainter painter(&mosaic);
     painter.setRenderHint(QPainter::SmoothPixmapTransform);
     const int tile = (IconSide - 2) / 3;
-    const auto& cells = mModel->history()[std::size_t(generation)].cells;
+    const auto& cells = mModel->history()[std::size_t(generation)].info;
     for (int i = 0; i < CellCount; ++i) {
-        const auto& cell = cells[std::size_t(i)];
-        if (!cell) continue;
+        const CellInfo& cell = cells[std::size_t(i)];
+        if (!cell.present) continue;
         const QRect rect((i % 3) * (tile + 1), (i / 3) * (tile + 1), tile, tile);
-        if (const QImage* image = mThumbnails.object(thumbnailKey(*cell)))
+        if (const QImage* image = mThumbnails.object(thumbnailKey(cell)))
             painter.drawImage(rect, *image);
         else
             painter.fillRect(rect, mWindow->palette().color(QPalette::Mid));
@@ -255,11 +263,21 @@ void LineagePanel::requestThumbnails() {
          item && mTree->visualItemRect(item).top() < bottom; item = mTree->itemBelow(item)) {
         const QVariant generation = item->data(0, GenerationRole);
         if (!generation.isValid()) continue;
-        const auto& cells = history[std::size_t(generation.toInt())].cells;
+        const int k = generation.toInt();
         const QVariant cell = item->data(0, CellRole);
+        const auto wanted = [&](int i) { return !cell.isValid() || cell.toInt() == i; };
+        // A generation not in memory is read back only when a thumbnail it shows is missing.
+        const auto& info = history[std::size_t(k)].info;
+        bool missing = false;
         for (int i = 0; i < CellCount; ++i)
-            if (cells[std::size_t(i)] && (!cell.isValid() || cell.toInt() == i))
-                requestThumbnail(*cells[std::size_t(i)]);
+            if (info[std::size_t(i)].present && wanted(i)) {
+                const QString key = thumbnailKey(info[std::size_t(i)]);
+                missing = missing || (!mPending.contains(key) && !mThumbnails.contains(key));
+            }
+        if (!missing) continue;
+        const auto& cells = mModel->generation(k).cells;
+        for (int i = 0; i < CellCount; ++i)
+            if (cells[std::size_t(i)] && wanted(i)) requestThumbnail(*cells[std::size_t(i)]);
     }
 }
 

@@ -67,6 +67,8 @@ private:
     void requestThumbnails();
     void requestThumbnail(const Genome& genome);
     QString thumbnailKey(const Genome& genome) const;
+    /// The same key from what the model keeps of a design not in memory (issue 28).
+    QString thumbnailKey(const CellInfo& info) const;
     /// A generation's icon: its nine thumbnails in a 3 x 3 mosaic (blanks until they arrive).
     QPixmap mosaic(int generation) const;
     QPixmap icon(const QString& key) const;

@@ -35,6 +35,7 @@ PopulationModel::PopulationModel(QObject* parent)
     : QObject(parent) {
     mHistory.emplace_back();
     mHistory.back().description = tr("Empty workbench");
+    mStored.emplace_back();
 }
 
 const Genome* PopulationModel::cell(int index) const {
@@ -68,6 +69,7 @@ void PopulationModel::setSelected(int index, bool selected) {
     auto& flag = currentMutable().selected[std::size_t(index)];
     if (flag == selected) return;
     flag = selected;
+    selectionEdited();
     emit selectionChanged();
 }
 
@@ -75,6 +77,7 @@ void PopulationModel::clearSelection() {
     auto& sel = currentMutable().selected;
     if (std::none_of(sel.begin(), sel.end(), [](bool b) { return b; })) return;
     sel.fill(false);
+    selectionEdited();
     emit selectionChanged();
 }
 
@@ -140,7 +143,7 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     if (mSteering) {
         SteerRequest steer;
         steer.breed = request;
-        steer.rounds = pickRounds();
+        steer.rounds = steerRounds(request.parents);
         SteerResult steered = steerBreed(steer);
         children = std::move(steered.children);
         explanation = QString::fromStdString(steered.explanation);
@@ -170,7 +173,7 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
 }
 
 // --- Steering (issue 26) ---
-std::vector<PickRound> PopulationModel::pickRounds() const {
+template <typename Enough> std::vector<PickRound> PopulationModel::roundsNewestFirst(Enough enough) const {
     std::vector<PickRound> rounds;
     if (mEmptyStart) return rounds;
     const auto roundOf = [&](const Generation& from, const std::vector<int>& picked) {
@@ -188,12 +191,39 @@ std::vector<PickRound> PopulationModel::pickRounds() const {
         return round;
     };
     rounds.push_back(roundOf(current(), selectedCells()));
-    for (int g = mCurrent; g >= 0 && mHistory[std::size_t(g)].parent >= 0;) {
-        const Generation& bred = mHistory[std::size_t(g)];
-        if (!bred.parentCells.empty())
-            rounds.push_back(roundOf(mHistory[std::size_t(bred.parent)], bred.parentCells));
-        g = bred.parent;
+    // The generations on the way from the root, read back when they are not in memory.
+    for (int g = mCurrent; g >= 0 && mHistory[std::size_t(g)].parent >= 0 && !enough(rounds);) {
+        const int parent = mHistory[std::size_t(g)].parent;
+        const std::vector<int> cells = mHistory[std::size_t(g)].parentCells;
+        if (!cells.empty()) rounds.push_back(roundOf(generation(parent), cells));
+        g = parent;
     }
+    return rounds;
+}
+
+std::vector<PickRound> PopulationModel::pickRounds() const {
+    std::vector<PickRound> rounds = roundsNewestFirst([](const std::vector<PickRound>&) { return false; });
+    std::reverse(rounds.begin(), rounds.end());
+    return rounds;
+}
+
+std::vector<PickRound> PopulationModel::steerRounds(const std::vector<Genome>& parents) const {
+    // steerBreed reads the newest MaxSteerRounds rounds, and the newest picks until it has two
+    // mates besides the parents: the rounds up to there give the same offspring as all of them,
+    // without reading back every generation of a long session.
+    std::vector<PickRound> rounds = roundsNewestFirst([&](const std::vector<PickRound>& newest) {
+        if (newest.size() < std::size_t(MaxSteerRounds)) return false;
+        std::vector<Genome> mates = parents;
+        for (const PickRound& round : newest) {
+            if (mates.size() >= parents.size() + 2) break;
+            for (const Genome& g : round.picked)
+                if (g.dimension == parents.front().dimension &&
+                    std::none_of(mates.begin(), mates.end(),
+                                 [&](const Genome& m) { return genomeId(m) == genomeId(g); }))
+                    mates.push_back(g);
+        }
+        return mates.size() >= parents.size() + 2;
+    });
     std::reverse(rounds.begin(), rounds.end());
     return rounds;
 }
@@ -403,7 +433,7 @@ void PopulationModel::setCell(int index, const Genome& genome, const QString& de
 void PopulationModel::setCellLocks(int index, const Locks& locks) {
     if (!cell(index)) return;
     setLocks(*currentMutable().cells[std::size_t(index)], locks);
-    if (std::size_t(mCurrent) < mSessionCells.size()) mSessionCells[std::size_t(mCurrent)].clear();
+    currentChangedInPlace();
     emit cellChanged(index);
     autosave();
 }
@@ -411,7 +441,7 @@ void PopulationModel::setCellLocks(int index, const Locks& locks) {
 void PopulationModel::setCellView(int index, const ViewAngle& view) {
     if (!cell(index)) return;
     setViewAngle(*currentMutable().cells[std::size_t(index)], view);
-    if (std::size_t(mCurrent) < mSessionCells.size()) mSessionCells[std::size_t(mCurrent)].clear();
+    currentChangedInPlace();
     emit cellChanged(index);
     autosave();
 }
@@ -419,23 +449,24 @@ void PopulationModel::setCellView(int index, const ViewAngle& view) {
 void PopulationModel::uniqueNames(Generation& generation) const {
     // Two different designs of a session never share a name: two branches both breed a
     // "(g4 #1)", a family draws the same words twice. The same design again keeps its name.
-    std::map<std::string, std::vector<const Genome*>> named;
+    // By each design's info: the generations not in memory are not read back for their names.
+    std::map<std::string, std::vector<std::string>> named; ///< name: the ids of the designs so named
+    const auto idOf = [](const Genome& g) { return g.meta.id ? *g.meta.id : genomeId(g); };
     const auto add = [&](const Genome& g) {
-        if (g.meta.name) named[*g.meta.name].push_back(&g);
+        if (g.meta.name) named[*g.meta.name].push_back(idOf(g));
     };
     for (const Generation& earlier : mHistory)
-        for (const auto& design : earlier.cells)
-            if (design) add(*design);
+        for (const CellInfo& info : earlier.info)
+            if (info.present && info.name) named[*info.name].push_back(info.id);
     for (const Favourite& f : mFavourites)
         add(f.genome);
-    const auto idOf = [](const Genome& g) { return g.meta.id ? *g.meta.id : genomeId(g); };
     for (auto& design : generation.cells) {
         if (!design || !design->meta.name) continue;
         auto found = named.find(*design->meta.name);
         if (found != named.end()) {
             const std::string id = idOf(*design);
             const bool other = std::any_of(found->second.begin(), found->second.end(),
-                                           [&](const Genome* g) { return idOf(*g) != id; });
+                                           [&](const std::string& g) { return g != id; });
             if (other) {
                 std::set<std::string> taken;
                 for (const auto& entry : named)
@@ -453,8 +484,9 @@ std::set<std::string> PopulationModel::sessionNames(const std::string& except) c
         if (g.meta.name && (except.empty() || genomeId(g) != except)) names.insert(*g.meta.name);
     };
     for (const Generation& generation : mHistory)
-        for (const auto& design : generation.cells)
-            if (design) add(*design);
+        for (const CellInfo& info : generation.info)
+            if (info.present && info.name && (except.empty() || info.contentId != except))
+                names.insert(*info.name);
     for (const Favourite& f : mFavourites)
         add(f.genome);
     return names;
@@ -466,7 +498,7 @@ QString PopulationModel::renameCell(int index, const QString& name, const QStrin
     const QString given =
         exact ? name : QString::fromStdString(uniqueName(name.toStdString(), sessionNames(genomeId(design))));
     setNameAndNote(design, given, note);
-    if (std::size_t(mCurrent) < mSessionCells.size()) mSessionCells[std::size_t(mCurrent)].clear();
+    currentChangedInPlace();
     emit cellChanged(index);
     autosave();
     return given;
@@ -495,13 +527,17 @@ void PopulationModel::pushGeneration(Generation generation) {
         // The first designs replace the empty placeholder: they are generation 1.
         mEmptyStart = false;
         mHistory.clear();
-        mSessionCells.clear();
+        mStored.clear();
+        mHeld.clear();
         mForwardChild.clear();
         generation.parent = -1;
     } else {
         generation.parent = mCurrent;
     }
+    generation.held = true;
+    describeCells(generation);
     mHistory.push_back(std::move(generation));
+    mStored.emplace_back();
     numberGeneration(mHistory, mHistory.size() - 1);
     mForwardChild.resize(mHistory.size(), -1);
     setCurrent(int(mHistory.size()) - 1);
@@ -530,28 +566,34 @@ int PopulationModel::forwardTarget() const {
     return next.empty() ? -1 : next.back();
 }
 
+bool PopulationModel::bringBack(int index) {
+    return generation(index).held;
+}
+
 void PopulationModel::setCurrent(int index) {
     mCurrent = index;
+    touch(index);
     // Every generation on the way from the root was visited on the way here.
     for (int k = index; mHistory[std::size_t(k)].parent >= 0; k = mHistory[std::size_t(k)].parent)
         mForwardChild[std::size_t(mHistory[std::size_t(k)].parent)] = k;
 }
 
 void PopulationModel::goBack() {
-    if (!canGoBack()) return;
+    if (!canGoBack() || !bringBack(current().parent)) return;
     setCurrent(current().parent);
     currentGenerationChanged();
 }
 
 void PopulationModel::goForward() {
     const int next = forwardTarget();
-    if (next < 0) return;
+    if (next < 0 || !bringBack(next)) return;
     setCurrent(next);
     currentGenerationChanged();
 }
 
 void PopulationModel::goTo(int index) {
     if (mEmptyStart || index < 0 || index >= int(mHistory.size()) || index == mCurrent) return;
+    if (!bringBack(index)) return;
     setCurrent(index);
     currentGenerationChanged();
 }
@@ -564,10 +606,43 @@ void PopulationModel::setSessionFile(const QString& file) {
 bool PopulationModel::saveSession() {
     if (mSessionFile.isEmpty() || mEmptyStart) return true;
     try {
-        const QString folder = QFileInfo(mSessionFile).absolutePath();
+        // Generation files first, the head last: a crash in between leaves the head naming the
+        // generations written before (Session.h).
+        const QString folder = generationsFolder(mSessionFile);
         if (!QDir().mkpath(folder))
             throw RuntimeFailure("cannot create the session folder " + folder.toStdString());
-        writeFileAtomically(mSessionFile.toStdString(), serializeSession(*this, &mSessionCells));
+        if (folder != mDiskFolder) {
+            // A new place (the first save, or another file): every generation is written there,
+            // and those kept only in the old place are taken along.
+            for (std::size_t k = 0; k < mHistory.size(); ++k) {
+                Stored& stored = mStored[k];
+                if (!mHistory[k].held && stored.packed.isEmpty()) {
+                    const QString old = generationFile(mDiskFolder, int(k));
+                    QFile in(old);
+                    if (!in.open(QIODevice::ReadOnly))
+                        throw RuntimeFailure("cannot read " + old.toStdString() + ": " +
+                                             in.errorString().toStdString());
+                    stored.packed = qCompress(in.readAll());
+                }
+                stored.dirty = true;
+            }
+            mDiskFolder = folder;
+        }
+        for (std::size_t k = 0; k < mHistory.size(); ++k) {
+            Stored& stored = mStored[k];
+            if (!stored.dirty) continue;
+            const QString file = generationFile(folder, int(k));
+            if (mHistory[k].held) {
+                writeFileAtomically(QFile::encodeName(file).toStdString(), serializeGeneration(mHistory[k]));
+            } else {
+                const QByteArray text = qUncompress(stored.packed);
+                writeFileAtomically(QFile::encodeName(file).toStdString(),
+                                    std::string(text.constData(), std::size_t(text.size())));
+                stored.packed.clear(); // on disk now: read back from there
+            }
+            stored.dirty = false;
+        }
+        writeFileAtomically(QFile::encodeName(mSessionFile).toStdString(), serializeSessionHead(*this));
         return true;
     } catch (const std::exception& e) { // also the JSON library's (a folder name that is not UTF-8)
         emit sessionSaveFailed(QString::fromStdString(e.what()));
@@ -579,23 +654,117 @@ void PopulationModel::autosave() {
     saveSession();
 }
 
+const Generation& PopulationModel::generation(int index) const {
+    Generation& g = mHistory[std::size_t(index)];
+    if (!g.held) {
+        Stored& stored = mStored[std::size_t(index)];
+        try {
+            QString name;
+            QByteArray text;
+            if (!stored.packed.isEmpty()) {
+                text = qUncompress(stored.packed);
+                name = tr("generation %1 of the session").arg(generationLabel(index));
+            } else {
+                name = generationFile(mDiskFolder, index);
+                QFile in(name);
+                if (!in.open(QIODevice::ReadOnly))
+                    throw RuntimeFailure("cannot read back generation " + std::to_string(index) + " from " +
+                                         name.toStdString() + ": " + in.errorString().toStdString());
+                text = in.readAll();
+            }
+            Generation read = parseGenerationText(
+                std::string_view(text.constData(), std::size_t(text.size())), index, name.toStdString());
+            g.cells = std::move(read.cells);
+            g.held = true;
+        } catch (const std::exception& e) {
+            // Its designs stay unknown (empty cells) and the window says why.
+            emit const_cast<PopulationModel*>(this)->generationUnreadable(QString::fromStdString(e.what()));
+            return g;
+        }
+    }
+    touch(index);
+    return g;
+}
+
+void PopulationModel::touch(int index) const {
+    mHeld.erase(std::remove(mHeld.begin(), mHeld.end(), index), mHeld.end());
+    mHeld.push_back(index);
+    while (mHeld.size() > std::size_t(HeldGenerations) + 1) {
+        // The least recently used one, never the current generation nor the one just used.
+        const auto victim =
+            std::find_if(mHeld.begin(), mHeld.end(), [&](int k) { return k != mCurrent && k != index; });
+        if (victim == mHeld.end()) break;
+        const int k = *victim;
+        mHeld.erase(victim);
+        release(k);
+    }
+}
+
+void PopulationModel::release(int index) const {
+    Generation& g = mHistory[std::size_t(index)];
+    if (!g.held || mEmptyStart) return;
+    Stored& stored = mStored[std::size_t(index)];
+    // Its file is current on disk: read back from there; otherwise packed in memory.
+    if ((stored.dirty || mDiskFolder.isEmpty()) && stored.packed.isEmpty())
+        stored.packed = qCompress(QByteArray::fromStdString(serializeGeneration(g)));
+    g.cells = {};
+    g.held = false;
+}
+
+void PopulationModel::selectionEdited() {
+    if (std::size_t(mCurrent) >= mStored.size()) return;
+    mStored[std::size_t(mCurrent)].dirty = true;
+    mStored[std::size_t(mCurrent)].packed.clear();
+}
+
+void PopulationModel::currentChangedInPlace() {
+    describeCells(currentMutable());
+    selectionEdited();
+}
+
+std::size_t PopulationModel::historyBytes() const {
+    std::size_t bytes = mHistory.capacity() * sizeof(Generation) + mStored.capacity() * sizeof(Stored);
+    for (std::size_t k = 0; k < mHistory.size(); ++k) {
+        const Generation& g = mHistory[k];
+        bytes +=
+            std::size_t(g.description.capacity()) * sizeof(QChar) + g.parentCells.capacity() * sizeof(int);
+        for (const CellInfo& info : g.info)
+            bytes += info.contentId.capacity() + info.id.capacity() + (info.name ? info.name->capacity() : 0);
+        for (const auto& cell : g.cells)
+            if (cell) bytes += toJson(*cell).dump().size(); // the design, estimated by its text
+        bytes += std::size_t(mStored[k].packed.capacity());
+    }
+    return bytes;
+}
+
 void PopulationModel::restoreSession(SavedSession session) {
     if (session.history.empty()) return;
     mHistory = std::move(session.history);
-    mSessionCells.clear();
     for (std::size_t k = 0; k < mHistory.size(); ++k) {
         // A parent that is not an earlier generation would make a cycle: a root instead.
         int& parent = mHistory[k].parent;
         if (parent < -1 || parent >= int(k)) parent = -1;
         numberGeneration(mHistory, k);
+        if (mHistory[k].held) describeCells(mHistory[k]);
     }
+    // The generations not held are in the session's folder, and so are the others when there is
+    // one: nothing is written again until something changes.
+    mDiskFolder = session.folder;
+    mStored.assign(mHistory.size(), Stored{QByteArray(), session.folder.isEmpty()});
+    mHeld.clear();
+    mEmptyStart = false;
     mForwardChild.assign(mHistory.size(), -1);
-    setCurrent(std::clamp(session.current, 0, int(mHistory.size()) - 1));
+    // The newest held generations stay in memory, the others are packed (or left on disk).
+    const int current = std::clamp(session.current, 0, int(mHistory.size()) - 1);
+    mCurrent = current;
+    for (std::size_t k = 0; k < mHistory.size(); ++k)
+        if (mHistory[k].held) touch(int(k));
+    bringBack(current);
+    setCurrent(current);
     mSessionSeed = session.seed;
     mMesh = session.mesh;
     mFlatMesh = session.flatMesh;
     mSessionLabel = session.label;
-    mEmptyStart = false;
     currentGenerationChanged();
 }
 
@@ -718,6 +887,20 @@ void numberGeneration(std::vector<Generation>& history, std::size_t k) {
     for (std::size_t j = 0; j < k; ++j)
         branches = std::max(branches, history[j].branch);
     g.branch = branches + 1;
+}
+
+void describeCells(Generation& generation) {
+    for (int i = 0; i < CellCount; ++i) {
+        const auto& cell = generation.cells[std::size_t(i)];
+        CellInfo& info = generation.info[std::size_t(i)];
+        info = CellInfo{};
+        if (!cell) continue;
+        info.present = true;
+        info.dimension = cell->dimension;
+        info.contentId = genomeId(*cell);
+        info.id = cell->meta.id ? *cell->meta.id : info.contentId;
+        info.name = cell->meta.name;
+    }
 }
 
 void PopulationModel::currentGenerationChanged() {

@@ -10,6 +10,7 @@
 #include "shared/Lineage.h"
 #include "shared/ViewController.h"
 
+#include <QByteArray>
 #include <QDateTime>
 #include <QObject>
 #include <QString>
@@ -28,9 +29,25 @@ namespace marbler::ui {
 /// The grid holds this many designs (3 x 3).
 inline constexpr int CellCount = 9;
 
+/// What the model keeps of a design that is not in memory (issue 28): enough to name it, find its
+/// thumbnail and keep names unique, without the design itself.
+struct CellInfo {
+    bool present = false;            ///< the cell holds a design
+    int dimension = 2;               ///< 2: flat, 3: solid
+    std::string contentId;           ///< genomeId() of the design (thumbnails, "less like this")
+    std::string id;                  ///< meta.id, or the content id when it has none
+    std::optional<std::string> name; ///< meta.name
+};
+
 /// One state of the grid: what each cell holds, which cells are parents, and how it came to be.
 struct Generation {
+    /// The designs. In the model's history only the generations in memory hold them (`held`);
+    /// PopulationModel::generation() reads the others back.
     std::array<std::optional<Genome>, CellCount> cells;
+    /// Whether `cells` holds the designs; false in the model's history for a generation kept
+    /// packed or on disk (issue 28), whose `info` then says what its cells hold.
+    bool held = true;
+    std::array<CellInfo, CellCount> info{}; ///< set by describeCells() from `cells`
     std::array<bool, CellCount> selected{};
     QString description; ///< "Alter of 1 parent", "New random population", "Opened a.marble.json"
     /// The generation this one grew from (an index into the history, always an earlier one), or
@@ -49,6 +66,8 @@ struct Generation {
 /// Sets history[k]'s number and branch from its parent and the generations before it (see
 /// Generation). The parent must be -1 or an index below k.
 void numberGeneration(std::vector<Generation>& history, std::size_t k);
+/// Sets a generation's `info` from its cells.
+void describeCells(Generation& generation);
 
 /// A design kept aside on the favourites shelf, saved as a genome file.
 struct Favourite {
@@ -185,9 +204,21 @@ public:
     std::set<std::string> sessionNames(const std::string& except = {}) const;
 
     /// Generation history: every generation in the order they were made (a child always after
-    /// its parent), each naming its parent.
+    /// its parent), each naming its parent. Only a few generations hold their designs in memory
+    /// (`Generation::held`: the current one and the few last used); read the designs of any
+    /// generation with generation(), which brings them back.
     const Generation& current() const { return mHistory[std::size_t(mCurrent)]; }
     const std::vector<Generation>& history() const { return mHistory; }
+    /// A generation with its designs, read back (from the model's packed copy or the session's
+    /// folder) when they were not in memory. The reference stays valid until the next call that
+    /// may bring another generation back (generation(), pickRounds(), a new generation). When
+    /// they cannot be read back its cells are empty, and generationUnreadable says why.
+    const Generation& generation(int index) const;
+    /// The bytes the history holds in memory: designs held, packed generations, the small
+    /// fields (an estimate of the designs' size from their text). For the soak test and bench.
+    std::size_t historyBytes() const;
+    /// How many generations hold their designs in memory besides the current one.
+    static constexpr int HeldGenerations = 8;
     int currentIndex() const { return mCurrent; }
     /// The generations grown from one (indices, oldest first).
     std::vector<int> children(int index) const;
@@ -269,6 +300,9 @@ signals:
     void favouritesChanged();
     /// The session could not be autosaved (the message names the file and the reason).
     void sessionSaveFailed(const QString& message);
+    /// A generation's designs could not be read back from the session's folder (a file deleted
+    /// or damaged behind the window's back); the message names the file and the reason.
+    void generationUnreadable(const QString& message);
 
 private:
     /// Adds a generation as a child of the current one (a root when it replaces the empty
@@ -287,9 +321,24 @@ private:
     /// and saves the session.
     void currentGenerationChanged();
     Generation& currentMutable() { return mHistory[std::size_t(mCurrent)]; }
+    /// The current generation's designs changed in place: its info and its file are redone.
+    void currentChangedInPlace();
+    /// The rounds apply() steers by: the newest of pickRounds() that steerBreed reads.
+    std::vector<PickRound> steerRounds(const std::vector<Genome>& parents) const;
+    /// Brings a generation's designs back into memory; false (and generationUnreadable) when they
+    /// cannot be read back.
+    bool bringBack(int index);
+    /// The current generation's selection changed: its file is to be written again.
+    void selectionEdited();
+    /// The rounds of pickRounds(), newest first, stopping once `enough` says so.
+    template <typename Enough> std::vector<PickRound> roundsNewestFirst(Enough enough) const;
+    /// Marks a generation used; lets the least recently used ones go beyond HeldGenerations.
+    void touch(int index) const;
+    /// Drops a generation's designs from memory, packing them unless its file on disk is current.
+    void release(int index) const;
 
     std::uint64_t mSessionSeed = 1;
-    std::vector<Generation> mHistory;
+    mutable std::vector<Generation> mHistory; ///< designs brought back by generation() (const)
     int mCurrent = 0;
     /// Per generation, the child Forward goes to (-1: the newest child). Not saved: after a
     /// resume the way to the current generation is remembered again.
@@ -302,8 +351,17 @@ private:
     QString mFavouritesFolder;
     std::vector<Favourite> mFavourites;
     QString mSessionFile;
-    /// Each generation's designs as session text (serializeSession); empty: to be made.
-    std::vector<std::string> mSessionCells;
+    /// Per generation, how its designs are kept when not in memory (issue 28).
+    struct Stored {
+        QByteArray packed; ///< the generation's file text, compressed; empty: on disk (or held)
+        bool dirty = true; ///< its file in mDiskFolder is missing or older than the generation
+    };
+    mutable std::vector<Stored> mStored;
+    /// The generations holding designs besides the current one, the most recently used last.
+    mutable std::vector<int> mHeld;
+    /// The folder whose generation files are current for the generations not dirty (the
+    /// session's generations folder, Session.h); empty: none.
+    QString mDiskFolder;
     QString mMesh = QString::fromLatin1(DefaultMesh);
     QString mFlatMesh;
     SessionLabel mSessionLabel;

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 
 namespace marbler::ui {
@@ -112,6 +113,12 @@ std::string withLabel(const QString& file, const QString& name, const QDateTime&
 
 /// Writes a document's text atomically, keeping the file's modification time (a label changed
 /// is no change of the session, and the last changed session is the one offered next start).
+/// Moves a session's generations folder (Session.h) along with its file, when it has one.
+bool moveGenerations(const QString& from, const QString& to) {
+    const QString folder = generationsFolder(from);
+    return !QFileInfo(folder).isDir() || QDir().rename(folder, generationsFolder(to));
+}
+
 void rewriteKeepingTime(const QString& file, const std::string& text) {
     const QDateTime modified = QFileInfo(file).lastModified();
     writeFileAtomically(QFile::encodeName(file).toStdString(), text);
@@ -215,7 +222,8 @@ QStringList SessionStore::migrate(QStringList* problems) {
         const KeptSession head = describe(file);
         // The time it was last changed is the best known creation time of an old session.
         const KeptSession kept = create(head.dimension, head.modified);
-        if (!QDir().mkpath(folder()) || !QFile::rename(file, kept.file)) {
+        if (!QDir().mkpath(folder()) || !QFile::rename(file, kept.file) ||
+            !moveGenerations(file, kept.file)) {
             if (problems)
                 *problems << tr("%1 could not be moved to %2; it stays where it is").arg(file, kept.file);
             continue;
@@ -244,6 +252,9 @@ QString SessionStore::remove(const QString& id) {
     const QString trashed = moveToTrash(session->file, trashFolder());
     if (trashed.isEmpty())
         throw RuntimeFailure("cannot move " + session->file.toStdString() + " to the trash");
+    if (!moveGenerations(session->file, trashed))
+        throw RuntimeFailure("cannot move " + generationsFolder(session->file).toStdString() +
+                             " to the trash");
     return trashed;
 }
 
@@ -251,11 +262,22 @@ QString SessionStore::restore(const QString& trashed) {
     const QString file = restoreFromTrash(trashed, folder());
     if (file.isEmpty())
         throw RuntimeFailure("cannot bring back " + trashed.toStdString() + " from the trash");
+    if (!moveGenerations(trashed, file))
+        throw RuntimeFailure("cannot bring back " + generationsFolder(trashed).toStdString() +
+                             " from the trash");
     return QFileInfo(file).fileName().chopped(Suffix.size());
 }
 
 int SessionStore::emptyTrash(int days) {
-    return ui::emptyTrash(trashFolder(), days);
+    const int deleted = ui::emptyTrash(trashFolder(), days);
+    // A deleted session's generations folder goes with its file.
+    const QDir trash(trashFolder());
+    for (const QString& name :
+         trash.entryList({QStringLiteral("*.generations")}, QDir::Dirs | QDir::Hidden)) {
+        const QString file = trash.filePath(name.chopped(int(std::strlen(".generations"))) + Suffix);
+        if (!QFileInfo::exists(file)) QDir(trash.filePath(name)).removeRecursively();
+    }
+    return deleted;
 }
 
 } // namespace marbler::ui

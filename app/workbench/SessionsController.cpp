@@ -37,6 +37,10 @@ SessionsController::SessionsController(WorkbenchWindow* window, PopulationModel*
     mRecent->setEnabled(false);
     mNewSession->setEnabled(false);
 
+    connect(mModel, &PopulationModel::generationUnreadable, this, [this](const QString& message) {
+        mWindow->statusBar()->showMessage(
+            tr("A generation of the session could not be read back: %1").arg(message), 15000);
+    });
     connect(mModel, &PopulationModel::sessionSaveFailed, this, [this](const QString& message) {
         // Once as a message, after that on the status bar: every change would fail the same way.
         if (!mSaveFailureShown) {

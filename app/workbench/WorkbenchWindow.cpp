@@ -1152,9 +1152,10 @@ DesignDialog* WorkbenchWindow::openDesign(int index) {
 }
 
 void WorkbenchWindow::bringBackDesign(int generation, int cell) {
-    const auto& history = mModel->history();
-    if (generation < 0 || generation >= int(history.size()) || cell < 0 || cell >= CellCount) return;
-    const auto& design = history[std::size_t(generation)].cells[std::size_t(cell)];
+    if (generation < 0 || generation >= int(mModel->history().size()) || cell < 0 || cell >= CellCount)
+        return;
+    // A copy: the generation may be one read back, which the new generation lets go again.
+    const std::optional<Genome> design = mModel->generation(generation).cells[std::size_t(cell)];
     if (!design) return;
     const QString from =
         tr("design %1 of generation %2").arg(cell + 1).arg(mModel->generationLabel(generation));

@@ -242,8 +242,11 @@ TEST_F(HistoryTreeTest, SessionRoundTripKeepsTheTree) {
     QFile in(file);
     ASSERT_TRUE(in.open(QIODevice::ReadOnly));
     const QByteArray text = in.readAll();
-    EXPECT_TRUE(text.contains("\"version\":2")) << text.left(200).toStdString();
-    EXPECT_TRUE(text.contains("\"parent\":1"));
+    EXPECT_TRUE(text.contains("\"version\":3")) << text.left(200).toStdString();
+    // Version 3: each generation in a file of its own, naming its parent.
+    QFile third(generationFile(generationsFolder(file), 3));
+    ASSERT_TRUE(third.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(third.readAll().contains("\"parent\":1"));
 
     const SavedSession saved = loadSession(file);
     EXPECT_EQ(treeSnapshot(saved.history), treeSnapshot(model().history()));
@@ -318,8 +321,12 @@ TEST(HistorySessionTest, BadParentsAreNamedWhereTheyAre) {
         "that grows from none");
     EXPECT_EQ(fails(sessionText(2, {R"("parent":0,)"})),
               "s.json: generations[0].parent: must be -1: the first generation grows from none");
+    EXPECT_EQ(fails(sessionText(4, {R"("parent":-1,)"})),
+              "s.json: version: only version 1, 2 and 3 sessions are read");
+    // Version 3 keeps its generations in files of their own: its head is read from the file.
     EXPECT_EQ(fails(sessionText(3, {R"("parent":-1,)"})),
-              "s.json: version: only version 1 and 2 sessions are read");
+              "s.json: generations: a version 3 session keeps its generations in a folder beside it: open "
+              "the file, not its text");
     // A second root is a new start: its own branch.
     const SavedSession s =
         parseSession(sessionText(2, {R"("parent":-1,)", R"("parent":0,)", R"("parent":-1,)"}), "s");

@@ -51,8 +51,8 @@ namespace {
 /// Every generation's designs as text, for exact comparisons of whole sessions.
 std::vector<std::string> designs(const PopulationModel& model) {
     std::vector<std::string> result;
-    for (const Generation& g : model.history())
-        for (const auto& cell : g.cells)
+    for (int k = 0; k < int(model.history().size()); ++k)
+        for (const auto& cell : model.generation(k).cells)
             result.push_back(cell ? serializeGenome(*cell) : std::string("(empty)"));
     return result;
 }

@@ -851,7 +851,14 @@ std::vector<std::string> historySnapshot(const PopulationModel& model) {
 
 /// Every entry of a folder, hidden ones (a temporary file of an atomic write) included.
 QStringList folderEntries(const QString& folder) {
-    return QDir(folder).entryList(QDir::Files | QDir::Dirs | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
+    QStringList entries =
+        QDir(folder).entryList(QDir::Files | QDir::Dirs | QDir::Hidden | QDir::NoDotAndDotDot, QDir::Name);
+    // A session's generations folder (Session.h, version 3) goes with its file: no entry of its own.
+    entries.removeIf([&](const QString& name) {
+        return name.endsWith(QStringLiteral(".generations")) &&
+               QFileInfo(QDir(folder).filePath(name)).isDir();
+    });
+    return entries;
 }
 
 class SessionTest : public StartChoiceTest {
@@ -1071,11 +1078,13 @@ TEST_F(SessionTest, CorruptSessionIsReportedKeptAsBadAndAFreshOneStarts) {
 
     // Valid JSON holding a broken design: also kept aside (beside the first), named.
     const QString fresh = sessionFile();
-    std::string broken = test::readFile(fresh.toStdString());
+    // The designs are in the generation files beside the session's head (Session.h, version 3).
+    const std::string cells = generationFile(generationsFolder(fresh), 0).toStdString();
+    std::string broken = test::readFile(cells);
     const auto pos = broken.find("\"format\":\"marbler-genome\",\"version\":1,\"dimension\":2");
     ASSERT_NE(pos, std::string::npos) << broken.substr(0, 400);
     broken.replace(pos, 51, "\"format\":\"marbler-genome\",\"version\":1,\"dimension\":7");
-    test::writeFile(fresh.toStdString(), broken);
+    test::writeFile(cells, broken);
     EXPECT_THROW(loadSession(fresh), InputError);
     WorkbenchWindow again(&service);
     startSession(again, options);
