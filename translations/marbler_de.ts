@@ -1137,7 +1137,7 @@ Es marmorieren: neun Muster, deren Bad das Bild ist, wie Datei ▸ Ein Bild marm
         <translation>%1: die Mesh-Datei kann nicht gelesen werden (keine Berechtigung)</translation>
     </message>
     <message>
-        <location filename="../app/workbench/SessionStore.cpp" line="+126"/>
+        <location filename="../app/workbench/SessionStore.cpp" line="+133"/>
         <source>Solid session, %1</source>
         <translation>Räumliche Sitzung, %1</translation>
     </message>
@@ -1745,12 +1745,12 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorCanvas</name>
     <message>
-        <location filename="../app/editor/EditorCanvas.cpp" line="+63"/>
+        <location filename="../app/editor/EditorCanvas.cpp" line="+85"/>
         <source>Drag with the current tool (Esc drops the drag); middle or right drag (or Space and drag) pans, the wheel zooms, 0 fits, 1 shows one to one</source>
         <translation>Mit dem aktuellen Werkzeug ziehen (Esc bricht ab); Ziehen mit mittlerer oder rechter Taste (oder Leertaste und Ziehen) verschiebt, das Mausrad zoomt, 0 passt ein, 1 zeigt eins zu eins</translation>
     </message>
     <message>
-        <location line="+442"/>
+        <location line="+479"/>
         <source>%1 %2s</source>
         <translation>%1 %2</translation>
     </message>
@@ -2050,7 +2050,7 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorWindow</name>
     <message>
-        <location filename="../app/editor/EditorWindow.cpp" line="+225"/>
+        <location filename="../app/editor/EditorWindow.cpp" line="+227"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
@@ -3078,7 +3078,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>ein Neubeginn</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>Design %1: %2</source>
         <translation>Muster %1: %2</translation>
     </message>
@@ -3748,7 +3748,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Leere Werkbank</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+53"/>
         <source>%1 needs %2 or more parents</source>
         <translation>%1 braucht %2 oder mehr Eltern</translation>
     </message>
@@ -3818,7 +3818,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>%1 von %2 Eltern</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+100"/>
         <source>Design %1&apos;s palette is locked, and colourways change only the palette: unlock it first</source>
         <translation>Die Palette von Muster %1 ist gesperrt, und Farbvarianten ändern nur die Palette: entsperren Sie sie zuerst</translation>
     </message>
@@ -3848,9 +3848,14 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Neue zufällige Population</translation>
     </message>
     <message>
-        <location line="+212"/>
+        <location line="+218"/>
         <source>%1 (branch %2)</source>
         <translation>%1 (Zweig %2)</translation>
+    </message>
+    <message>
+        <location line="+109"/>
+        <source>generation %1 of the session</source>
+        <translation>Generation %1 der Sitzung</translation>
     </message>
 </context>
 <context>
@@ -4079,7 +4084,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::SessionStore</name>
     <message>
-        <location filename="../app/workbench/SessionStore.cpp" line="+85"/>
+        <location filename="../app/workbench/SessionStore.cpp" line="+86"/>
         <source>%1 could not be moved to %2; it stays where it is</source>
         <translation>%1 konnte nicht nach %2 verschoben werden; es bleibt, wo es ist</translation>
     </message>
@@ -4112,7 +4117,12 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Sitzung &amp;fortsetzen</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+10"/>
+        <source>A generation of the session could not be read back: %1</source>
+        <translation>Eine Generation der Sitzung konnte nicht zurückgelesen werden: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Cannot save the session</source>
         <translation>Die Sitzung kann nicht gespeichert werden</translation>
     </message>
@@ -4282,12 +4292,17 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Mesh-Datei…</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+42"/>
+        <source>The design on its object: drag to turn it; drag the block in the corner to turn the cross-section</source>
+        <translation>Das Muster auf seinem Objekt: Ziehen dreht es; Ziehen am Block in der Ecke dreht den Querschnitt</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>Rendering…</source>
         <translation>Wird gerendert…</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+64"/>
         <source>n·p = %1</source>
         <translation>n·p = %1</translation>
     </message>
@@ -5590,7 +5605,7 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Muster %1 in „%2“ umbenannt: ein anderes Muster dieser Sitzung heißt „%3“</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>design %1 of generation %2</source>
         <translation>Muster %1 von Generation %2</translation>
     </message>

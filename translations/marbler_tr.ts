@@ -1137,7 +1137,7 @@ Ebrulansın mı? Dosya ▸ Bir resmi ebrula komutunun yaptığı gibi, teknesi b
         <translation>%1: ağ dosyası okunamıyor (izin verilmedi)</translation>
     </message>
     <message>
-        <location filename="../app/workbench/SessionStore.cpp" line="+126"/>
+        <location filename="../app/workbench/SessionStore.cpp" line="+133"/>
         <source>Solid session, %1</source>
         <translation>Katı oturum, %1</translation>
     </message>
@@ -1745,12 +1745,12 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorCanvas</name>
     <message>
-        <location filename="../app/editor/EditorCanvas.cpp" line="+63"/>
+        <location filename="../app/editor/EditorCanvas.cpp" line="+85"/>
         <source>Drag with the current tool (Esc drops the drag); middle or right drag (or Space and drag) pans, the wheel zooms, 0 fits, 1 shows one to one</source>
         <translation>Geçerli araçla sürükleyin (Esc sürüklemeyi bırakır); orta veya sağ tuşla sürükleme (ya da Boşluk ve sürükleme) kaydırır, tekerlek yakınlaştırır, 0 sığdırır, 1 bire bir gösterir</translation>
     </message>
     <message>
-        <location line="+442"/>
+        <location line="+479"/>
         <source>%1 %2s</source>
         <translation>%1 %2</translation>
     </message>
@@ -2050,7 +2050,7 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorWindow</name>
     <message>
-        <location filename="../app/editor/EditorWindow.cpp" line="+225"/>
+        <location filename="../app/editor/EditorWindow.cpp" line="+227"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
@@ -3076,7 +3076,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>yeni bir başlangıç</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>Design %1: %2</source>
         <translation>Desen %1: %2</translation>
     </message>
@@ -3743,7 +3743,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Boş tezgâh</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+53"/>
         <source>%1 needs %2 or more parents</source>
         <translation>%1 için %2 veya daha çok ebeveyn gerekir</translation>
     </message>
@@ -3813,7 +3813,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>%2 ebeveynden %1</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+100"/>
         <source>Design %1&apos;s palette is locked, and colourways change only the palette: unlock it first</source>
         <translation>Desen %1 paleti kilitli ve renk seçenekleri yalnızca paleti değiştirir: önce kilidi açın</translation>
     </message>
@@ -3843,9 +3843,14 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Yeni rastgele topluluk</translation>
     </message>
     <message>
-        <location line="+212"/>
+        <location line="+218"/>
         <source>%1 (branch %2)</source>
         <translation>%1 (dal %2)</translation>
+    </message>
+    <message>
+        <location line="+109"/>
+        <source>generation %1 of the session</source>
+        <translation>oturumun %1. nesli</translation>
     </message>
 </context>
 <context>
@@ -4074,7 +4079,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::SessionStore</name>
     <message>
-        <location filename="../app/workbench/SessionStore.cpp" line="+85"/>
+        <location filename="../app/workbench/SessionStore.cpp" line="+86"/>
         <source>%1 could not be moved to %2; it stays where it is</source>
         <translation>%1, %2 konumuna taşınamadı; olduğu yerde kalıyor</translation>
     </message>
@@ -4107,7 +4112,12 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Oturumu &amp;sürdür</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+10"/>
+        <source>A generation of the session could not be read back: %1</source>
+        <translation>Oturumun bir nesli geri okunamadı: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Cannot save the session</source>
         <translation>Oturum kaydedilemiyor</translation>
     </message>
@@ -4277,12 +4287,17 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Ağ dosyası…</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+42"/>
+        <source>The design on its object: drag to turn it; drag the block in the corner to turn the cross-section</source>
+        <translation>Nesnesi üzerindeki desen: döndürmek için sürükleyin; kesiti döndürmek için köşedeki bloğu sürükleyin</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>Rendering…</source>
         <translation>İşleniyor…</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+64"/>
         <source>n·p = %1</source>
         <translation>n·p = %1</translation>
     </message>
@@ -5585,7 +5600,7 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>Desen %1, “%2” olarak yeniden adlandırıldı: bu oturumdaki başka bir desenin adı da “%3”</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>design %1 of generation %2</source>
         <translation>%2. neslin %1. deseni</translation>
     </message>
