@@ -76,7 +76,7 @@ private:
     QPointF mLast;
     bool mTurning = false;
     bool mTurningSlice = false; ///< a drag in the corner's inset turns the section
-    bool mAngleSet = false; ///< the angle was taken from the first design
+    bool mAngleSet = false;     ///< the angle was taken from the first design
     std::optional<Slice> mSlice;
     QComboBox* mObjects = nullptr;
     QString mMessage;

@@ -58,8 +58,8 @@ struct SavedSession {
     /// At least one generation, numbered (numberGeneration). A generation not `held` (version 3)
     /// is read back from `folder` when wanted.
     std::vector<Generation> history;
-    QString folder;                  ///< the generations folder of a version 3 session; empty: all are held
-    int current = 0;                 ///< index into history
+    QString folder;  ///< the generations folder of a version 3 session; empty: all are held
+    int current = 0; ///< index into history
     std::uint64_t seed = 1;
     int dimension = 2; ///< 2: flat, 3: solid (the kind of the current grid)
     QString mesh = QString::fromLatin1(DefaultMesh);
