@@ -5,7 +5,8 @@
 // parents earlier than their children, nine cells each, designs that save and read back). Any
 // other exception, a crash, a sanitizer report or a hang is a finding. Qt is Debian's, not
 // instrumented: coverage comes from Marbler's own code (Session.cpp, PopulationModel.cpp and the
-// genome reader), which is.
+// genome reader), which is. The same bytes are also read as one generation's file of a version 3
+// session (parseGenerationText), which the session's folder holds beside its head.
 
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
@@ -27,6 +28,34 @@ namespace {
     std::abort();
 }
 
+/// A design the session held is a genome file's design: it saves and reads back.
+void checkDesign(const marbler::Genome& design) {
+    try {
+        const std::string saved = marbler::serializeGenome(design);
+        if (!(marbler::parseGenome(saved, "saved") == design))
+            sessionFinding("a session's design that does not read back as saved", saved);
+    } catch (const marbler::Error& e) {
+        sessionFinding("a session's design that does not save and read back", e.what());
+    }
+}
+
+/// The same bytes as one generation's file of a version 3 session (g000001.json: its parent
+/// must come before it).
+void fuzzGenerationFile(std::string_view text) {
+    marbler::ui::Generation generation;
+    try {
+        generation = marbler::ui::parseGenerationText(text, 1, "g000001.json");
+    } catch (const marbler::InputError&) {
+        return;
+    } catch (const std::exception& e) {
+        sessionFinding("an exception other than InputError from a generation file", e.what());
+    }
+    if (generation.parent < -1 || generation.parent >= 1)
+        sessionFinding("an accepted generation file whose parent does not come before it");
+    for (const auto& cell : generation.cells)
+        if (cell) checkDesign(*cell);
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
@@ -40,6 +69,7 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
+    fuzzGenerationFile(text);
     marbler::ui::SavedSession session;
     try {
         session = marbler::ui::parseSession(text, "fuzz.json");
@@ -57,17 +87,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const auto& g = session.history[k];
         if (g.parent >= int(k) || (k == 0 && g.parent != -1) || (k > 0 && g.parent < 0))
             sessionFinding("an accepted generation whose parent is not an earlier one", std::to_string(k));
-        for (const auto& cell : g.cells) {
-            if (!cell) continue;
-            // A design the session held is a genome file's design: it saves and reads back.
-            try {
-                const std::string saved = marbler::serializeGenome(*cell);
-                if (!(marbler::parseGenome(saved, "saved") == *cell))
-                    sessionFinding("a session's design that does not read back as saved", saved);
-            } catch (const marbler::Error& e) {
-                sessionFinding("a session's design that does not save and read back", e.what());
-            }
-        }
+        for (const auto& cell : g.cells)
+            if (cell) checkDesign(*cell);
     }
     return 0;
 }
