@@ -5,6 +5,7 @@
 #include "shared/BakeObject.h"
 #include "TestUtil.h"
 #include "WaitFor.h"
+#include "editor/EditorWindow.h"
 #include "marbler/Bake.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Mesh.h"
@@ -24,9 +25,12 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
+
+#include <memory>
 
 namespace marbler::ui {
 namespace {
@@ -167,6 +171,42 @@ TEST_F(BakeObjectTest, AnotherFormatIsReportedAndNothingWritten) {
     EXPECT_TRUE(mErrors.front().contains(QStringLiteral("cube.fbx")));
     EXPECT_TRUE(written.isEmpty());
     EXPECT_TRUE(QDir(mFiles.path()).isEmpty());
+}
+
+TEST_F(BakeObjectTest, TheEditorBakesItsDesignAsMarblerBakeDoes) {
+    RenderService service(RenderService::Backend::Cpu);
+    auto* editor = new EditorWindow(test::loadExample("five-stones.marble.json"), &service, {}, nullptr, {});
+    editor->setAttribute(Qt::WA_DeleteOnClose, false);
+    std::unique_ptr<EditorWindow> owner(editor);
+    auto* menu = editor->findChild<QMenu*>(QStringLiteral("bakeObjectMenu"));
+    ASSERT_NE(menu, nullptr);
+    EXPECT_TRUE(menu->menuAction()->isVisible());
+    saveAs(QStringLiteral("editor book.glb"));
+    choose(editor, QStringLiteral("bakeOnto:book"));
+    const QString file = mFiles.filePath(QStringLiteral("editor book.glb"));
+    MARBLER_WAIT(menu->isEnabled() && (QFile::exists(file) || !mErrors.isEmpty()), 300000);
+    ASSERT_TRUE(mErrors.isEmpty()) << mErrors.join(QStringLiteral("; ")).toStdString();
+    EXPECT_TRUE(editor->statusBar()->currentMessage().contains(QStringLiteral("editor book.glb")))
+        << editor->statusBar()->currentMessage().toStdString();
+    // The design the editor holds, baked by `marbler bake`.
+    const QString design = mCli.filePath(QStringLiteral("editor.marble.json"));
+    {
+        QFile out(design);
+        ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+        out.write(QByteArray::fromStdString(serializeGenome(editor->document()->renderedDesign())));
+    }
+    EXPECT_TRUE(readAll(file) == cliBake(design, QStringLiteral("book"), WindowBakeTexture))
+        << "the editor's bake differs from marbler bake's";
+}
+
+TEST_F(BakeObjectTest, TheEditorOffersItForASolidDesignToo) {
+    RenderService service(RenderService::Backend::Cpu);
+    EditorWindow editor(test::loadExample("slate-block.marble.json"), &service, {}, nullptr, {});
+    editor.setAttribute(Qt::WA_DeleteOnClose, false);
+    auto* menu = editor.findChild<QMenu*>(QStringLiteral("bakeObjectMenu"));
+    ASSERT_NE(menu, nullptr);
+    EXPECT_NE(menu->findChild<QAction*>(QStringLiteral("bakeOnto:cube")), nullptr);
+    EXPECT_NE(menu->findChild<QAction*>(QStringLiteral("bakeOntoMeshFile")), nullptr);
 }
 
 TEST_F(BakeObjectTest, AMeshFileChosenIsBakedOntoThroughItsOwnUvs) {
