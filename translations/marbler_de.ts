@@ -58,28 +58,44 @@
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/shared/BakeObject.cpp" line="+21"/>
+        <location filename="../app/shared/BakeObject.cpp" line="+28"/>
         <source>Baking %1…</source>
         <translation>%1 wird gebacken…</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <location line="+31"/>
+        <location line="+30"/>
+        <location line="+13"/>
+        <location line="+18"/>
         <source>Cannot bake onto the object</source>
         <translation>Backen auf das Objekt nicht möglich</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="+12"/>
+        <source>&amp;Bake onto object</source>
+        <translation>Auf Objekt &amp;backen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write the object with the design baked into its texture, following the object&apos;s texture coordinates, for other 3D tools (glTF .glb or .gltf, OBJ; a %1 × %1 texture)</source>
+        <translation>Das Objekt mit dem entlang seiner Texturkoordinaten in seine Textur gebackenen Muster für andere 3D-Werkzeuge schreiben (glTF .glb oder .gltf, OBJ; eine %1 × %1-Textur)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The object shown (%1)…</source>
+        <translation>Das gezeigte Objekt (%1)…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Mesh file…</source>
+        <translation>&amp;Mesh-Datei…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>&amp;Bake onto object…</source>
         <translation>Auf Objekt &amp;backen…</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Write the object with the design baked into its texture, for other 3D tools (glTF .glb or .gltf, OBJ; a %1 × %1 texture)</source>
-        <translation>Das Objekt mit dem in seine Textur gebackenen Muster für andere 3D-Werkzeuge schreiben (glTF .glb oder .gltf, OBJ; eine %1 × %1-Textur)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-57"/>
         <source>Bake onto object</source>
         <translation>Auf Objekt backen</translation>
     </message>
@@ -94,7 +110,7 @@
         <translation>%1: wählen Sie .glb, .gltf oder .obj</translation>
     </message>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="+421"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="+423"/>
         <source>Save design</source>
         <translation>Muster speichern</translation>
     </message>
@@ -1511,13 +1527,13 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::DesignDialog</name>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="-374"/>
-        <location line="+350"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="-376"/>
+        <location line="+352"/>
         <source>Design %1</source>
         <translation>Muster %1</translation>
     </message>
     <message>
-        <location line="-331"/>
+        <location line="-333"/>
         <source>Zoom out (-, wheel)</source>
         <translation>Verkleinern (-, Mausrad)</translation>
     </message>
@@ -1652,7 +1668,7 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Umbenennen…</translation>
     </message>
     <message>
-        <location line="+154"/>
+        <location line="+156"/>
         <source>Export separations into a folder</source>
         <translation>Farbauszüge in einen Ordner exportieren</translation>
     </message>
@@ -2050,7 +2066,7 @@ hier ein Muster öffnen oder ablegen</translation>
 <context>
     <name>marbler::ui::EditorWindow</name>
     <message>
-        <location filename="../app/editor/EditorWindow.cpp" line="+227"/>
+        <location filename="../app/editor/EditorWindow.cpp" line="+229"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
@@ -2150,7 +2166,12 @@ hier ein Muster öffnen oder ablegen</translation>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
+        <source>Baked onto %1</source>
+        <translation>Auf das Objekt gebacken: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Send to &amp;grid</source>
         <translation>An das &amp;Raster senden</translation>
     </message>

@@ -58,28 +58,44 @@
         <translation>İptal</translation>
     </message>
     <message>
-        <location filename="../app/shared/BakeObject.cpp" line="+21"/>
+        <location filename="../app/shared/BakeObject.cpp" line="+28"/>
         <source>Baking %1…</source>
         <translation>%1 pişiriliyor…</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <location line="+31"/>
+        <location line="+30"/>
+        <location line="+13"/>
+        <location line="+18"/>
         <source>Cannot bake onto the object</source>
         <translation>Nesneye pişirilemiyor</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="+12"/>
+        <source>&amp;Bake onto object</source>
+        <translation>Nesneye &amp;pişir</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write the object with the design baked into its texture, following the object&apos;s texture coordinates, for other 3D tools (glTF .glb or .gltf, OBJ; a %1 × %1 texture)</source>
+        <translation>Deseni nesnenin doku koordinatlarını izleyerek dokusuna pişirilmiş nesneyi başka 3B araçlar için yaz (glTF .glb veya .gltf, OBJ; %1 × %1 doku)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The object shown (%1)…</source>
+        <translation>Gösterilen nesne (%1)…</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Mesh file…</source>
+        <translation>&amp;Ağ dosyası…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>&amp;Bake onto object…</source>
         <translation>Nesneye &amp;pişir…</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Write the object with the design baked into its texture, for other 3D tools (glTF .glb or .gltf, OBJ; a %1 × %1 texture)</source>
-        <translation>Deseni dokusuna pişirilmiş nesneyi başka 3B araçlar için yaz (glTF .glb veya .gltf, OBJ; %1 × %1 doku)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-57"/>
         <source>Bake onto object</source>
         <translation>Nesneye pişir</translation>
     </message>
@@ -94,7 +110,7 @@
         <translation>%1: .glb, .gltf veya .obj seçin</translation>
     </message>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="+421"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="+423"/>
         <source>Save design</source>
         <translation>Deseni kaydet</translation>
     </message>
@@ -1511,13 +1527,13 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::DesignDialog</name>
     <message>
-        <location filename="../app/shared/DesignDialog.cpp" line="-374"/>
-        <location line="+350"/>
+        <location filename="../app/shared/DesignDialog.cpp" line="-376"/>
+        <location line="+352"/>
         <source>Design %1</source>
         <translation>Desen %1</translation>
     </message>
     <message>
-        <location line="-331"/>
+        <location line="-333"/>
         <source>Zoom out (-, wheel)</source>
         <translation>Uzaklaştır (-, tekerlek)</translation>
     </message>
@@ -1652,7 +1668,7 @@ burada bir desen açın veya bırakın</translation>
         <translation>Yeniden adlandır…</translation>
     </message>
     <message>
-        <location line="+154"/>
+        <location line="+156"/>
         <source>Export separations into a folder</source>
         <translation>Renk ayrımlarını bir klasöre aktar</translation>
     </message>
@@ -2050,7 +2066,7 @@ burada bir desen açın veya bırakın</translation>
 <context>
     <name>marbler::ui::EditorWindow</name>
     <message>
-        <location filename="../app/editor/EditorWindow.cpp" line="+227"/>
+        <location filename="../app/editor/EditorWindow.cpp" line="+229"/>
         <source>Steps</source>
         <translation>Adımlar</translation>
     </message>
@@ -2150,7 +2166,12 @@ burada bir desen açın veya bırakın</translation>
         <translation>Ctrl+Shift+E</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
+        <source>Baked onto %1</source>
+        <translation>Nesneye pişirildi: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Send to &amp;grid</source>
         <translation>&amp;Izgaraya gönder</translation>
     </message>

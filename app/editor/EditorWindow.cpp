@@ -17,6 +17,7 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Growth.h"
 #include "marbler/Params.h"
+#include "shared/BakeObject.h"
 #include "shared/DesignDialog.h"
 #include "shared/Help.h"
 #include "shared/Language.h"
@@ -32,6 +33,7 @@
 #include <QCloseEvent>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QKeyEvent>
 #include <QLabel>
@@ -304,6 +306,12 @@ void EditorWindow::buildMenus() {
         ->setShortcut(QKeySequence(tr("Ctrl+E")));
     file->addAction(tr("Export &animation…"), this, &EditorWindow::exportAnimation)
         ->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
+    // The design, flat or solid, baked onto a built-in object or a mesh file (BakeObject.h).
+    file->addMenu(makeBakeMenu(
+        this, [this] { return mDocument->renderedDesign(); }, {},
+        [this](const QString& baked) {
+            statusBar()->showMessage(tr("Baked onto %1").arg(QDir::toNativeSeparators(baked)), 6000);
+        }));
     file->addSeparator();
     QAction* send = file->addAction(tr("Send to &grid"), this, [this] {
         emit sendToGrid(mDocument->renderedDesign());

@@ -181,9 +181,11 @@ DesignDialog::DesignDialog(Genome genome, RenderService* renderer, const QString
     buttons->addWidget(exportButton);
     buttons->addWidget(copy);
     buttons->addWidget(editor);
-    if (mGenome.dimension == 3)
-        buttons->addWidget(makeBakeButton(
-            this, [this] { return mGenome; }, mMesh, [this](const QString& file) { emit fileSaved(file); }));
+    // Flat and solid designs alike: onto the object shown (a flat one's only when it is on one),
+    // a built-in or a mesh file.
+    buttons->addWidget(makeBakeButton(
+        this, [this] { return mGenome; }, mGenome.dimension == 3 ? mMesh : flatMesh,
+        [this](const QString& file) { emit fileSaved(file); }));
     buttons->addStretch();
     buttons->addWidget(close);
     auto* layout = new QVBoxLayout(this);
