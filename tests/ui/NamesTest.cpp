@@ -27,16 +27,16 @@ namespace {
 
 using ui::RenameDialog;
 
-/// The rename dialog open over `parent` (any window), once it shows.
+/// The rename dialog open over `parent` (any window), once it shows; null when it does not.
 RenameDialog* openRenameDialog(QWidget* parent) {
     RenameDialog* dialog = nullptr;
-    QTest::qWaitFor(
+    const bool shown = QTest::qWaitFor(
         [&] {
             dialog = parent->findChild<RenameDialog*>();
             return dialog && dialog->isVisible();
         },
         5000);
-    return dialog;
+    return shown ? dialog : nullptr;
 }
 
 /// Types a name (replacing the one offered) and, when given, a note, then presses Enter.
