@@ -131,7 +131,9 @@ TEST_F(LongSession, HoldsFewGenerationsInMemory) {
     const std::size_t bound =
         std::size_t(PopulationModel::HeldGenerations + 1) * largest + std::size_t(Generations) * 24 * 1024;
     EXPECT_LE(model->historyBytes(), bound) << "of " << all << " bytes of designs in the session";
-    EXPECT_LT(model->historyBytes(), all / 5);
+    // Far less than all of them: a fifth of 300 generations; under the sanitisers' 40, of which
+    // the nine held are already more than a fifth, a half.
+    EXPECT_LT(model->historyBytes(), all / (Generations >= 100 ? 5 : 2));
 }
 
 TEST_F(LongSession, WritesOneFileForANewGeneration) {
