@@ -42,13 +42,14 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
     -max_total_time="$(( (SECONDS_TO_RUN + 1) / 2 ))" -max_len=65536 -rss_limit_mb=4096 -malloc_limit_mb=2048 -timeout=10 \
     -artifact_prefix="$BUILD/findings/" -print_final_stats=1
 # The young targets: NAME, corpus folder, then libFuzzer's limits. Qt's and assimp's own
-# buffers are not leaks (fuzz/lsan.supp).
+# buffers are not leaks (fuzz/lsan.supp). Their first input loads the image module and its
+# libraries (dlopen), which took over 10 s once on a busy machine: 30 s an input.
 young() {
     local target=$1 corpus=$2
     shift 2
     LSAN_OPTIONS=suppressions=$PWD/fuzz/lsan.supp \
     "$BUILD/fuzz/$target" "$BUILD/$corpus" "fuzz/$corpus" \
-        "${YOUNG_TARGETS_RUN[@]}" "$@" -timeout=10 \
+        "${YOUNG_TARGETS_RUN[@]}" "$@" -timeout=30 \
         -artifact_prefix="$BUILD/findings/" -print_final_stats=1
 }
 # Source images: the decoder may hold a raster of up to 64 megapixels (768 MiB) and the reader's
