@@ -2,6 +2,7 @@
 // in memory and writes one file per generation; nothing is lost (navigation back to the first
 // generation, resume after a crash, sessions saved by earlier releases).
 
+#include "PlacedVariants.h"
 #include "TestUtil.h"
 
 #include "WaitFor.h"
@@ -51,25 +52,12 @@ std::vector<std::string> designsOf(const Generation& g) {
 /// `breedEvery`th generation bred from a parent (breeding is slow with the generator's designs,
 /// seconds a generation here); going back now and then starts a branch.
 void makeGeneration(PopulationModel& model, std::mt19937_64& rng, int breedEvery = 25) {
-    static std::vector<Genome> pool;
-    if (pool.empty())
-        for (std::uint64_t seed = 1; seed <= 6; ++seed)
-            pool.push_back(randomGenome(seed, 2));
     model.clearSelection();
     model.setSelected(int(rng() % CellCount), true);
-    if (model.history().size() % std::size_t(breedEvery) == 0) {
+    if (model.history().size() % std::size_t(breedEvery) == 0)
         model.apply(GeneticOperator::Alter, 0.5);
-    } else {
-        std::vector<Genome> designs;
-        for (int n = 1 + int(rng() % 3); n > 0; --n) {
-            Genome g = pool[rng() % pool.size()];
-            g.meta.name = "variant " + std::to_string(rng() % 1000000);
-            g.meta.id.reset();
-            designs.push_back(std::move(g));
-        }
-        model.placeDesigns(designs, QStringLiteral("Opened variants"),
-                           PopulationModel::Placement::KeepParents);
-    }
+    else
+        test::placeVariants(model, rng);
     if (rng() % 10 == 0) model.goBack();
 }
 

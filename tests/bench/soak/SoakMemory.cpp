@@ -14,6 +14,7 @@
 // --seeds DIR also writes, into DIR/session and DIR/recovery, session and recovery files made by
 // the app's own code (the seed corpora of fuzz_session and fuzz_recovery).
 
+#include "PlacedVariants.h"
 #include "editor/EditorDocument.h"
 #include "editor/Recovery.h"
 #include "marbler/Generator.h"
@@ -147,24 +148,6 @@ void soakEditor(long edits, const QString& seeds) {
     }
 }
 
-/// Puts 1 to 3 designs into the grid as one generation, beside a parent kept: variants of a few
-/// random designs, each named anew (what opening or bringing back designs makes; a generation as
-/// large as a bred one, made in a fraction of the time).
-void placeVariants(PopulationModel& model, std::mt19937_64& rng) {
-    static std::vector<Genome> pool;
-    if (pool.empty())
-        for (std::uint64_t seed = 1; seed <= 6; ++seed)
-            pool.push_back(randomGenome(seed, 2));
-    std::vector<Genome> designs;
-    for (int n = 1 + int(rng() % 3); n > 0; --n) {
-        Genome g = pool[rng() % pool.size()];
-        g.meta.name = "variant " + std::to_string(rng() % 1000000);
-        g.meta.id.reset();
-        designs.push_back(std::move(g));
-    }
-    model.placeDesigns(designs, QStringLiteral("Opened variants"), PopulationModel::Placement::KeepParents);
-}
-
 void soakWorkbench(long generations, long breedEvery, const QString& seeds) {
     QTemporaryDir dir;
     PopulationModel model;
@@ -187,7 +170,7 @@ void soakWorkbench(long generations, long breedEvery, const QString& seeds) {
             if (done % breedEvery == 0)
                 model.apply(alter ? GeneticOperator::Alter : GeneticOperator::Recombine, 0.5);
             else
-                placeVariants(model, rng);
+                test::placeVariants(model, rng);
             if (rng() % 10 == 0) model.goBack(); // branches, as a user trying again makes
             ++done;
             if (!seeds.isEmpty() && done == 3) {
