@@ -154,15 +154,30 @@ glm::dvec3 flow(const PreparedOp& op, const glm::dvec3& p, double sign) {
     return op.c + x.x * op.m + x.y * op.n;
 }
 
-/// Stylus: every integration step in order (forward) or in reverse order (inverse).
+/// Whether step i surely leaves x where it is: the stylus is farther than its reach from x
+/// along the track (genome-format.md: such a step does not move the point), by a margin far
+/// above the rounding of stylusVelocity's u, so that every tine's |u| >= 1 there, v is exactly
+/// 0 and stylusStep would return x to the bit.
+bool stylusOutOfReach(const PreparedOp& op, const glm::dvec2& x, int i) {
+    const StylusStation& station = op.stations[static_cast<std::size_t>(i)];
+    const glm::dvec2 t = op.along[station.segment];
+    const double along = std::abs(glm::dot(x - station.s, t));
+    const double scale = op.reach + op.length + std::abs(0.5 * (op.tines - 1) * op.spacing) + std::abs(x.x) +
+                         std::abs(x.y) + std::abs(station.s.x) + std::abs(station.s.y);
+    return along > op.reach + 1e-9 * scale;
+}
+
+/// Stylus: every integration step in order (forward) or in reverse order (inverse), but for the
+/// steps that cannot move the point.
 glm::dvec3 stylus(const PreparedOp& op, const glm::dvec3& p, double sign) {
     glm::dvec2 x(p.x, p.y);
+    const bool stations = op.stations.size() == static_cast<std::size_t>(op.steps);
     if (sign > 0.0) {
         for (int i = 0; i < op.steps; ++i)
-            x = stylusStep(op, x, i, +1.0);
+            if (!stations || !stylusOutOfReach(op, x, i)) x = stylusStep(op, x, i, +1.0);
     } else {
         for (int i = op.steps; i-- > 0;)
-            x = stylusStep(op, x, i, -1.0);
+            if (!stations || !stylusOutOfReach(op, x, i)) x = stylusStep(op, x, i, -1.0);
     }
     return {x.x, x.y, 0.0};
 }

@@ -573,3 +573,49 @@ TEST(Atan, KeepsTheLibrarysSpecialValues) {
         EXPECT_EQ(vectorAtan(-x), -vectorAtan(x)) << x;
     }
 }
+
+TEST(Maps, TheStylusSkipsOnlyTheStepsThatLeaveAPointWhereItIs) {
+    // forwardMap and inverseMap skip the steps whose stylus is out of reach of the point along
+    // the track (genome-format.md allows it: the result is the same). Against every step run,
+    // bit for bit, on random strokes and rakes, at points on, near and far from the path.
+    Pcg32 rng(20261204);
+    int skippedSome = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const PreparedOp op = prepare(randomOperation(rng, Tool::Stylus, 2), 2);
+        for (int k = 0; k < 20; ++k) {
+            glm::dvec2 p(rng.uniform(-200, 1200), rng.uniform(-200, 1200));
+            if (k % 2 == 0) {
+                std::size_t at = static_cast<std::size_t>(rng.uniform(0, double(op.path.size() - 1)));
+                p = op.path[at] + rng.uniform(0, 1) * (op.path[at + 1] - op.path[at]) +
+                    glm::dvec2(rng.uniform(-40, 40), rng.uniform(-40, 40));
+            }
+            if (k % 5 == 0) {
+                // Exactly the reach ahead of a station along its track: the edge of the window.
+                const std::size_t i = static_cast<std::size_t>(rng.uniform(0, double(op.steps)));
+                const glm::dvec2 t = op.along[op.stations[i].segment];
+                p = op.stations[i].s + (k % 10 == 0 ? op.reach : -op.reach) * t +
+                    glm::dvec2(-t.y, t.x) * rng.uniform(-30, 30);
+            }
+            glm::dvec2 forward = p, backward = p;
+            int moved = 0;
+            for (int i = 0; i < op.steps; ++i) {
+                const glm::dvec2 next = stylusStep(op, forward, i, +1.0);
+                moved += next != forward;
+                forward = next;
+            }
+            for (int i = op.steps; i-- > 0;)
+                backward = stylusStep(op, backward, i, -1.0);
+            const glm::dvec3 f = forwardMap(op, {p.x, p.y, 0.0}), b = inverseMap(op, {p.x, p.y, 0.0});
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(f.x), std::bit_cast<std::uint64_t>(forward.x))
+                << trial << " " << k;
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(f.y), std::bit_cast<std::uint64_t>(forward.y))
+                << trial << " " << k;
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(b.x), std::bit_cast<std::uint64_t>(backward.x))
+                << trial << " " << k;
+            ASSERT_EQ(std::bit_cast<std::uint64_t>(b.y), std::bit_cast<std::uint64_t>(backward.y))
+                << trial << " " << k;
+            skippedSome += moved < op.steps;
+        }
+    }
+    EXPECT_GT(skippedSome, 1000) << "most points lie out of reach of most steps";
+}
