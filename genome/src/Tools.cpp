@@ -197,8 +197,10 @@ StylusStation stylusStation(const PreparedOp& op, double tau) {
     return {i, op.path[i] + into * t, op.pull * pressure};
 }
 
-glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau) {
-    const StylusStation station = stylusStation(op, tau);
+namespace {
+
+/// stylusVelocity with the station looked up.
+glm::dvec2 stylusVelocityAt(const PreparedOp& op, const glm::dvec2& p, const StylusStation& station) {
     const glm::dvec2 t = op.along[station.segment], n(-t.y, t.x);
     const glm::dvec2 s = station.s;
     const double c = station.c;
@@ -218,11 +220,21 @@ glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau)
     return v;
 }
 
+} // namespace
+
+glm::dvec2 stylusVelocity(const PreparedOp& op, const glm::dvec2& p, double tau) {
+    return stylusVelocityAt(op, p, stylusStation(op, tau));
+}
+
 glm::dvec2 stylusStep(const PreparedOp& op, const glm::dvec2& p, int i, double sign) {
     const double h = sign * op.step, tau = i * op.step + 0.5 * op.step;
-    glm::dvec2 next = p + h * stylusVelocity(op, p, tau);
+    // The station at tau: prepare() keeps them all (computed by the same call), else found.
+    const StylusStation station = static_cast<std::size_t>(i) < op.stations.size()
+                                      ? op.stations[static_cast<std::size_t>(i)]
+                                      : stylusStation(op, tau);
+    glm::dvec2 next = p + h * stylusVelocityAt(op, p, station);
     for (int iteration = 0; iteration < 100; ++iteration) {
-        glm::dvec2 again = p + h * stylusVelocity(op, 0.5 * (p + next), tau);
+        glm::dvec2 again = p + h * stylusVelocityAt(op, 0.5 * (p + next), station);
         bool settled = glm::length(again - next) < op.tolerance;
         next = again;
         if (settled) break;
