@@ -441,6 +441,46 @@ Genome alterGenome(const Genome& parent, double strength, Pcg32& rng) {
     return child;
 }
 
+Genome alterPart(const Genome& parent, DesignPart part, double strength, Pcg32& rng) {
+    Genome child = parent;
+    const Locks locks = locksOf(parent);
+    const bool relative = strength < FamilyKeepStrength && child.meta.has(MetaKey::Family);
+    // Indices of a random subset of `count` entries, each in with probability `p`, never empty.
+    const auto subset = [&](std::size_t count, double p) {
+        std::vector<std::size_t> chosen;
+        for (std::size_t i = 0; i < count; ++i)
+            if (rng.chance(p)) chosen.push_back(i);
+        if (chosen.empty() && count > 0) chosen.push_back(rng.below(static_cast<std::uint32_t>(count)));
+        return chosen;
+    };
+    switch (part) {
+    case DesignPart::Palette:
+        if (locks.palette || child.palette.empty()) break;
+        {
+            const std::size_t one = rng.below(static_cast<std::uint32_t>(child.palette.size()));
+            for (std::size_t i = 0; i < child.palette.size(); ++i)
+                if (i == one || rng.chance(0.25))
+                    child.palette[i] = nudgeColor(child.palette[i], 90.0 * strength, rng);
+            if (rng.chance(0.25)) child.background = nudgeColor(child.background, 45.0 * strength, rng);
+        }
+        break;
+    case DesignPart::Initial:
+        if (locks.initial) break;
+        for (std::size_t i : subset(child.initial.size(), 0.3))
+            perturb(child.initial[i], child, strength, rng, relative);
+        break;
+    case DesignPart::Strokes:
+        if (locks.operations) break;
+        {
+            const double n = static_cast<double>(child.operations.size());
+            for (std::size_t i : subset(child.operations.size(), n > 0.0 ? 1.0 / std::sqrt(n) : 0.0))
+                perturb(child.operations[i], child, strength, rng, relative);
+        }
+        break;
+    }
+    return child;
+}
+
 /// One crossover of the parents' stroke lists, the home parent's first.
 static std::vector<Operation> crossover(const std::vector<Genome>& parents, std::size_t home, Pcg32& rng);
 
@@ -531,7 +571,7 @@ static std::string describeVariation(const BreedRequest& request, const std::vec
     return "a variation of " + of + ": " + describeChange(repeated, child);
 }
 
-std::vector<Genome> breed(const BreedRequest& request) {
+void checkBreedRequest(const BreedRequest& request) {
     const GeneticOperator op = request.op;
     const auto parentCount = static_cast<int>(request.parents.size());
     const std::string name(operatorName(op));
@@ -561,6 +601,13 @@ std::vector<Genome> breed(const BreedRequest& request) {
         throw InputError("generation must be 1 or more (got " + std::to_string(*request.generation) + ")");
     if (!request.childNumbers.empty() && static_cast<int>(request.childNumbers.size()) != request.count)
         throw InputError("childNumbers must hold one number per child");
+}
+
+std::vector<Genome> breed(const BreedRequest& request) {
+    checkBreedRequest(request);
+    const GeneticOperator op = request.op;
+    const auto parentCount = static_cast<int>(request.parents.size());
+    const std::string name(operatorName(op));
 
     std::vector<std::string> parentIds;
     // The designs already in the generation: no child may repeat one (the window keeps the

@@ -789,5 +789,36 @@ TEST(OperatorNames, RoundTrip) {
     EXPECT_EQ(maxParents(GeneticOperator::Swap), 2);
 }
 
+TEST(AlterPart, EachPartChangesItselfAloneAndALockedPartStays) {
+    int changed[3] = {0, 0, 0};
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        const Genome parent = randomGenome(seed, 2);
+        ASSERT_FALSE(parent.operations.empty());
+        for (DesignPart part : {DesignPart::Palette, DesignPart::Initial, DesignPart::Strokes}) {
+            Pcg32 rng(seed * 31 + std::uint64_t(part));
+            const Genome child = alterPart(parent, part, 0.4, rng);
+            const bool palette = child.palette != parent.palette || child.background != parent.background;
+            const bool initial = child.initial != parent.initial;
+            const bool strokes = child.operations != parent.operations;
+            EXPECT_TRUE(part == DesignPart::Palette || !palette) << seed;
+            EXPECT_TRUE(part == DesignPart::Initial || !initial) << seed;
+            EXPECT_TRUE(part == DesignPart::Strokes || !strokes) << seed;
+            changed[int(part)] += palette || initial || strokes;
+            EXPECT_NO_THROW(validateGenome(child, "child"));
+        }
+        // Locked, the part stays as it is.
+        Genome locked = parent;
+        setLocks(locked, Locks{true, true, true});
+        for (DesignPart part : {DesignPart::Palette, DesignPart::Initial, DesignPart::Strokes}) {
+            Pcg32 rng(seed);
+            EXPECT_EQ(alterPart(locked, part, 0.8, rng), locked) << seed;
+        }
+    }
+    // Rounding to whole sRGB levels can leave a small nudge without effect now and then.
+    EXPECT_GE(changed[0], 10);
+    EXPECT_EQ(changed[1], 12);
+    EXPECT_EQ(changed[2], 12);
+}
+
 } // namespace
 } // namespace marbler

@@ -175,10 +175,20 @@ inline constexpr int MaxChildren = 1000;
 /// [1, MaxChildren], a strength outside [0, 1], a generation below 1 or childNumbers that are
 /// neither empty nor one per child.
 std::vector<Genome> breed(const BreedRequest& request);
+/// What breed() refuses, refused the same way (InputError), without breeding.
+void checkBreedRequest(const BreedRequest& request);
 
 /// The single operators, without lineage (breed adds it). Each returns a new genome whose
 /// meta is the home parent's; they honour the home parent's locks as described above.
 Genome alterGenome(const Genome& parent, double strength, Pcg32& rng);
+/// The parts of a design alterPart varies on its own.
+enum class DesignPart { Palette, Initial, Strokes };
+/// Alteration of one part only (steered breeding's small, separate steps): Palette nudges one
+/// ink by about 90 x `strength` sRGB levels and each other ink and the background now and
+/// then; Initial perturbs each initial entry with probability 0.3 (at least one); Strokes
+/// perturbs about the square root of the strokes' count of them (at least one). A locked part,
+/// or one with nothing in it, is returned unchanged.
+Genome alterPart(const Genome& parent, DesignPart part, double strength, Pcg32& rng);
 /// `home` indexes the parent whose initial state, palette and background the child keeps.
 Genome recombineGenomes(const std::vector<Genome>& parents, std::size_t home, Pcg32& rng);
 /// The initial state (and palette, background) of `home` with the operations of `other`.
