@@ -58,8 +58,9 @@ see marbler render --help) is embedded in the child as a data: URI instead.
 
 Steering (docs/breeding.md): with --passed and --picks the children are ranked by what the
 picks say, as the window's "Steer by my picks" does: many candidates are drawn (the operator's
-own children, alteration at steps that shrink as picks agree, recombination with earlier picks,
-fresh designs) and the most promising K shown, the last one for exploration; a line
+own children, variations of the palette, the strokes or the initial state at steps that adapt
+to the picks, recombination with earlier picks, fresh designs of every generator) and the most
+promising K shown, the last one for exploration; a line
 "steered: ..." says why. The PARENTs are this round's picks, --passed the designs passed over
 beside them; ROUNDS.json holds the earlier rounds, oldest first:
   {"rounds": [{"picked": ["a.marble.json"], "passed": ["b.marble.json", ...],
@@ -74,7 +75,7 @@ options:
   -o, --output DIR  the folder to write the children into (required)
   --passed FILES    designs passed over beside the parents, comma-separated (steering)
   --picks FILE      the earlier rounds of picks, as above (steering)
-  --candidates N    how many candidates steering ranks, K to 1000 (default 32)
+  --candidates N    how many candidates steering ranks, K to 1000 (default 24)
   -h, --help        this text
 )";
 

@@ -8,6 +8,8 @@
 #include "marbler/Params.h"
 #include "marbler/Random.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -42,7 +44,7 @@ DesignFeatures computeFeatures(const Genome& genome, const Glimpse& look) {
     constexpr int Side = LookSide;
     constexpr int Block = Side / LayoutSide;
     DesignFeatures f;
-    f.values.reserve(3 * LayoutSide * LayoutSide + 16 + ToolCount);
+    f.values.reserve(3 * LayoutSide * LayoutSide + 20 + ToolCount);
     const auto lab = [&](int i, int j, int c) { return look.lab[std::size_t(3 * (j * Side + i) + c)]; };
     // Layout: where light, dark and each hue lie.
     for (int bj = 0; bj < LayoutSide; ++bj)
@@ -94,6 +96,20 @@ DesignFeatures computeFeatures(const Genome& genome, const Glimpse& look) {
     edges[3] /= Side * (Side - 3);
     for (double e : edges)
         f.values.push_back(e * TextureWeight);
+    // Which way the ink edges run (a comb's lines across or down, a swirl's every way): the
+    // share of cells whose lightness changes mostly across, down, or along either diagonal,
+    // told with comparisons only (tan 67.5 degrees = 2.414).
+    std::array<double, 4> ways{};
+    for (int j = 0; j + 1 < Side; ++j)
+        for (int i = 0; i + 1 < Side; ++i) {
+            const double gx = lab(i + 1, j, 0) - lab(i, j, 0), gy = lab(i, j + 1, 0) - lab(i, j, 0);
+            const double ax = std::abs(gx), ay = std::abs(gy);
+            if (ax + ay < 2.0) continue;
+            const int way = ax > 2.414 * ay ? 0 : ay > 2.414 * ax ? 1 : gx * gy > 0.0 ? 2 : 3;
+            ways[std::size_t(way)] += 1.0 / ((Side - 1) * (Side - 1));
+        }
+    for (double w : ways)
+        f.values.push_back(w * TextureWeight);
     f.values.push_back(look.dominantShare * TextureWeight);
     // The kinds of strokes.
     f.toolShare.assign(ToolCount, 0.0);
@@ -162,7 +178,7 @@ double partDistance(const DesignFeatures& a, const DesignFeatures& b, std::size_
 
 constexpr std::size_t LayoutEnd = 3 * LayoutSide * LayoutSide;
 constexpr std::size_t ColourEnd = LayoutEnd + 7;
-constexpr std::size_t TextureEnd = ColourEnd + 5;
+constexpr std::size_t TextureEnd = ColourEnd + 9;
 
 /// How far the newest picks moved, against the spread of their rounds, over one feature range:
 /// near 1 (or more) while picks jump about, small as they settle.
@@ -185,6 +201,80 @@ double movement(const std::vector<PickRound>& rounds, std::size_t from, std::siz
     if (ratios.empty()) return 1.0;
     const double mean = std::accumulate(ratios.begin(), ratios.end(), 0.0) / double(ratios.size());
     return std::clamp(0.3 + 0.9 * mean, 0.15, 1.5);
+}
+
+/// About how much work one sample of a design's look takes, in operations applied: a stylus
+/// step counts for each tine and the velocities its solve evaluates (about 3.5), over the share
+/// of its steps within reach of a point; a flow's steps as many.
+double lookWork(const Genome& genome) {
+    double work = 0.0;
+    for (const Operation& op : genome.operations) {
+        if (op.tool == Tool::Stylus) {
+            double length = 0.0;
+            for (std::size_t i = 1; i < op.path.size(); ++i)
+                length += glm::length(op.path[i] - op.path[i - 1]);
+            const double reach = std::min(1.0, 2.0 * op.reach / std::max(length + 2.0 * op.reach, 1e-9));
+            work += 3.5 * op.steps * std::max(op.tines, 1) * reach;
+        } else if (op.tool == Tool::Flow) {
+            work += 3.5 * op.steps;
+        } else {
+            work += 1.0;
+        }
+    }
+    return work + double(genome.initial.size());
+}
+
+/// The ways a steered candidate varies its parent: one part of it (DesignPart), or all.
+enum class Way { Palette, Strokes, Initial, All, Count };
+constexpr std::array<const char*, std::size_t(Way::Count)> WayNames{"palette", "strokes", "initial", "all"};
+
+/// What the picks say about how to vary the newest pick: per way, the step the newest pick
+/// made that way was bred with (a steered child records its way and step; the requested
+/// strength before any), and how often picks came from that way lately. Every round in a row
+/// in which the same design was picked again (no child came closer) shrinks the steps by 0.6,
+/// so steps grow and shrink with the person's picks, as in a self-adaptive evolution strategy.
+struct Plan {
+    std::array<double, std::size_t(Way::Count)> step{};
+    std::array<double, std::size_t(Way::Count)> weight{};
+    int stale = 0; ///< rounds in a row that picked the same design again
+};
+
+Plan planFrom(const SteerRequest& request) {
+    Plan plan;
+    plan.step.fill(request.breed.strength);
+    plan.weight.fill(1.0);
+    const std::vector<PickRound>& rounds = request.rounds;
+    std::array<bool, std::size_t(Way::Count)> seen{};
+    double age = 1.0;
+    std::set<std::string> credited;
+    for (std::size_t r = rounds.size(); r-- > 0 && age > 0.1; age *= 0.7) {
+        if (rounds[r].picked.empty()) continue;
+        const Genome& pick = rounds[r].picked.front();
+        if (!pick.meta.lineage || !credited.insert(genomeId(pick)).second) continue;
+        const auto& other = pick.meta.lineage->other;
+        const auto way = other.find("way");
+        const auto step = other.find("step");
+        if (way == other.end() || !way->is_string() || step == other.end() || !step->is_number()) continue;
+        for (std::size_t w = 0; w < WayNames.size(); ++w)
+            if (way->get<std::string>() == WayNames[w]) {
+                plan.weight[w] += 2.0 * age;
+                if (!seen[w]) plan.step[w] = step->get<double>();
+                seen[w] = true;
+            }
+    }
+    for (std::size_t r = rounds.size(); r-- > 1;) {
+        if (rounds[r].picked.empty() || rounds[r - 1].picked.empty() ||
+            genomeId(rounds[r].picked.front()) != genomeId(rounds[r - 1].picked.front()))
+            break;
+        ++plan.stale;
+    }
+    // Two rounds without a closer child: smaller steps. Longer than that the pick sits on a
+    // plateau, where small steps change nothing the person sees: larger ones again.
+    double shrink = std::pow(0.6, std::min(plan.stale, 2));
+    if (plan.stale > 2) shrink *= std::pow(1.6, plan.stale - 2);
+    for (double& step : plan.step)
+        step = std::clamp(step * shrink, 0.02, 1.0);
+    return plan;
 }
 
 /// The English words for one summary difference, or empty when it is too small to tell.
@@ -339,18 +429,18 @@ SteerResult steerBreed(const SteerRequest& request) {
         throw InputError("candidates must be between the count (" + std::to_string(base.count) + ") and " +
                          std::to_string(MaxChildren) + " (got " + std::to_string(request.candidates) + ")");
     // breed() checks the request (parents, count, strength, dimensions) and makes the
-    // requested operator's own candidates.
+    // requested operator's own candidates; alteration's are the variations below, drawn by
+    // part and at the adapted steps.
+    checkBreedRequest(base);
     BreedRequest own = base;
     own.childNumbers.clear();
-    std::vector<Genome> pool = breed(own);
+    if (base.op == GeneticOperator::Alter) own.count = 0;
+    std::vector<Genome> pool = own.count > 0 ? breed(own) : std::vector<Genome>{};
     std::vector<std::size_t> home(pool.size(), 0);
     for (std::size_t i = 0; i < pool.size(); ++i)
         if (base.op == GeneticOperator::Recombine) home[i] = i % base.parents.size();
 
     result.steps = model.steps();
-    const double strokes = std::clamp(base.strength * result.steps.strokes, 0.02, 1.0);
-    const double palette = std::clamp(base.strength * result.steps.palette, 0.02, 1.0);
-    result.strokeStrength = strokes;
 
     // The aids: alteration at the adaptive steps, recombination with the newest earlier picks,
     // fresh designs of the generators.
@@ -367,35 +457,113 @@ SteerResult steerBreed(const SteerRequest& request) {
     const int dimension = base.parents.front().dimension;
     if (family && family->dimension != dimension) family = nullptr;
     std::vector<std::string> kinds(pool.size(), std::string(operatorName(base.op)));
+    std::vector<double> childSteps(pool.size(), 0.0);
+    std::vector<int> childWays(pool.size(), -1);
+    const Plan plan = planFrom(request);
+    result.strokeStrength = plan.step[std::size_t(Way::Strokes)];
     const int aids = request.candidates - int(pool.size());
     for (int k = 0; k < aids; ++k) {
         Pcg32 rng = childRng(base.seed, k, 0x61696473ULL, CandidateStream);
         const std::size_t p = std::size_t(k) % base.parents.size();
-        const int kind = k % 4;
+        // Every seventh a recombination with earlier picks or a fresh design; the others vary
+        // the parent one way, drawn by how often picks came that way lately, at a step drawn
+        // about that way's adapted one.
         Genome g;
-        std::string name;
-        if (kind <= 1) {
-            // Alteration at the adaptive step, now and then a colourway at the palette's.
-            g = alterGenome(base.parents[p], std::clamp(strokes * rng.uniform(0.5, 1.5), 0.01, 1.0), rng);
-            if (!locksOf(g).palette && rng.chance(0.5 * result.steps.palette))
-                g = colourwayOf(g, palette, rng);
-            if (rng.chance(0.15 * result.steps.initial)) g = reinitGenome(g, rng);
-            name = "alter";
-        } else if (kind == 2 && mates.size() > 1) {
-            g = recombineGenomes(mates, p, rng);
-            name = "recombine";
+        std::string name = "alter";
+        int way = -1;
+        double own = 0.0;
+        if (k % 7 == 6) {
+            if (mates.size() > 1 && rng.chance(0.5)) {
+                g = recombineGenomes(mates, p, rng);
+                name = "recombine";
+            } else {
+                const std::uint64_t seed = rng.nextUint();
+                // The parents' family (as the wildcard) or the free generator: some families take
+                // a second for one look (a rake's many tines), too slow to draw many of them.
+                const Family* source = family && rng.chance(0.5) ? family : nullptr;
+                g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
+                if (!g.meta.seed) g.meta.seed = seed;
+                name = "wildcard";
+            }
         } else {
-            const std::uint64_t seed = rng.nextUint();
-            // The parents' family (as the wildcard) or the free generator: some families take
-            // a second for one look (a rake's many tines), too slow to draw many of them.
-            const Family* source = family && rng.chance(0.5) ? family : nullptr;
-            g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
-            if (!g.meta.seed) g.meta.seed = seed;
-            name = "wildcard";
+            // The first of each way once, then by weight.
+            if (k < int(Way::Count)) {
+                way = k;
+            } else {
+                double total = 0.0;
+                for (double w : plan.weight)
+                    total += w;
+                double x = rng.uniform(0.0, total);
+                way = 0;
+                while (way + 1 < int(Way::Count) && x >= plan.weight[std::size_t(way)])
+                    x -= plan.weight[std::size_t(way++)];
+            }
+            own = std::clamp(plan.step[std::size_t(way)] * std::exp((0.5 + 0.15 * plan.stale) * rng.normal()),
+                             0.01, 1.0);
+            switch (Way(way)) {
+            case Way::Palette:
+                g = alterPart(base.parents[p], DesignPart::Palette, own, rng);
+                break;
+            case Way::Strokes:
+                g = alterPart(base.parents[p], DesignPart::Strokes, own, rng);
+                break;
+            case Way::Initial:
+                g = alterPart(base.parents[p], DesignPart::Initial, own, rng);
+                break;
+            case Way::All:
+            case Way::Count:
+                g = alterPart(alterGenome(base.parents[p], own, rng), DesignPart::Palette, own, rng);
+                break;
+            }
+        }
+        if (g.wrap && !canWrap(g)) {
+            g.wrap = false;
+            g.lattice = Lattice::Straight;
         }
         pool.push_back(std::move(g));
         home.push_back(p);
         kinds.push_back(name);
+        childSteps.push_back(own);
+        childWays.push_back(way);
+    }
+    // Fresh designs of every generator (the flat or solid families and the free generator), the
+    // best liked of them shown beside the pick's variations: picks steer the search beyond the
+    // pick's own family; more of them the longer no child comes closer.
+    std::vector<const Family*> generators;
+    for (const Family& f : allFamilies())
+        if (f.dimension == dimension) generators.push_back(&f);
+    generators.push_back(nullptr);
+    const std::size_t firstFresh = pool.size();
+    const int fresh = 8 + 6 * std::min(plan.stale, 3);
+    // A fresh design whose look costs far more than the parents' is drawn again (twice at
+    // most, then left out): a generation must not wait on strangers' looks.
+    double budget = 4000.0;
+    for (const Genome& parent : base.parents)
+        budget = std::max(budget, 2.0 * lookWork(parent));
+    for (int k = 0; k < fresh; ++k) {
+        Pcg32 rng = childRng(base.seed, k, 0x6672657368ULL, CandidateStream);
+        Genome g;
+        bool found = false;
+        for (int attempt = 0; attempt < 3 && !found; ++attempt) {
+            const Family* source = generators[rng.below(std::uint32_t(generators.size()))];
+            const std::uint64_t seed = rng.nextUint();
+            g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
+            if (!g.meta.seed) g.meta.seed = seed;
+            found = lookWork(g) <= budget;
+        }
+        if (!found) continue;
+        // Every other one in the pick's inks: a new pattern with the colours picks have tuned.
+        const Genome& pick = base.parents.front();
+        if (k % 2 == 1 && !pick.palette.empty() && !locksOf(pick).palette) {
+            for (std::size_t i = 0; i < g.palette.size(); ++i)
+                g.palette[i] = pick.palette[i % pick.palette.size()];
+            g.background = pick.background;
+        }
+        pool.push_back(std::move(g));
+        home.push_back(0);
+        kinds.push_back("wildcard");
+        childSteps.push_back(0.0);
+        childWays.push_back(-1);
     }
 
     // Rank, then choose with diversity: no near-duplicate of a parent or of a child chosen before,
@@ -443,6 +611,16 @@ SteerResult steerBreed(const SteerRequest& request) {
         return true;
     };
     const int exploit = base.count > 2 ? base.count - 1 : base.count;
+    // First the best-liked fresh designs (one; two once a pick is kept; half the children once it is
+    // kept again: a plateau, left by looking elsewhere), then the best liked of all.
+    const int freshShown = plan.stale >= 2 ? exploit / 2 : std::min(exploit / 3, plan.stale >= 1 ? 2 : 1);
+    for (std::size_t i : order) {
+        if (int(chosen.size()) >= freshShown) break;
+        if (i < firstFresh || !acceptable(i, NearDuplicateDeltaE)) continue;
+        chosen.push_back(i);
+        looks.push_back(poolLooks[i]);
+        taken.insert(genomeId(pool[i]));
+    }
     for (double apart : {4.0 * NearDuplicateDeltaE, NearDuplicateDeltaE, -1.0})
         for (std::size_t i : order) {
             if (int(chosen.size()) >= exploit) break;
@@ -499,7 +677,11 @@ SteerResult steerBreed(const SteerRequest& request) {
                                   std::to_string(number) + ")";
         } else {
             lineage.parents = parentIds;
-            if (kinds[i] == "alter") lineage.strength = strokes;
+            if (childWays[i] >= 0) {
+                lineage.strength = childSteps[i];
+                lineage.other["step"] = childSteps[i];
+                lineage.other["way"] = WayNames[std::size_t(childWays[i])];
+            }
             const std::size_t h = std::min(home[i], base.parents.size() - 1);
             lineage.change =
                 i < std::size_t(own.count) && pool[i].meta.lineage && pool[i].meta.lineage->change
@@ -515,7 +697,22 @@ SteerResult steerBreed(const SteerRequest& request) {
         child.meta.id = genomeId(child);
         result.children.push_back(std::move(child));
     }
+    // Why: what the picks say, and how the children vary the newest pick.
+    double total = 0.0;
+    for (double w : plan.weight)
+        total += w;
+    std::size_t most = 0;
+    for (std::size_t w = 0; w < WayNames.size(); ++w) {
+        result.ways.push_back({WayNames[w], plan.step[w], plan.weight[w] / total});
+        if (plan.weight[w] > plan.weight[most]) most = w;
+    }
     result.explanation = model.explain();
+    if (plan.weight[most] > 1.0)
+        result.explanation +=
+            most == std::size_t(Way::All)
+                ? "; varying everything, as your last picks came"
+                : std::string("; varying mostly the ") + WayNames[most] + ", as your last picks came";
+    if (plan.stale > 0) result.explanation += "; smaller steps: no child came closer last time";
     return result;
 }
 

@@ -147,3 +147,69 @@ TEST(Steer, ABadCandidateCountIsRefused) {
     request.candidates = 3;
     EXPECT_THROW(steerBreed(request), InputError);
 }
+
+namespace {
+
+/// The way and step a steered child records, or ("", 0).
+std::pair<std::string, double> wayOf(const Genome& child) {
+    if (!child.meta.lineage) return {"", 0.0};
+    const auto& other = child.meta.lineage->other;
+    if (!other.contains("way") || !other.contains("step")) return {"", 0.0};
+    return {other["way"].get<std::string>(), other["step"].get<double>()};
+}
+
+const SteerWay& way(const SteerResult& result, const std::string& name) {
+    for (const SteerWay& w : result.ways)
+        if (w.way == name) return w;
+    throw std::runtime_error("no way " + name);
+}
+
+} // namespace
+
+TEST(Steer, APickPassesItsStepOnAndAPickKeptAgainShrinksThenWidensIt) {
+    SteerRequest request = requestAfterZebras(11);
+    const SteerResult first = steerBreed(request);
+    ASSERT_EQ(first.ways.size(), 4u);
+    // Children that vary one way record it; pick one of them.
+    const Genome* pick = nullptr;
+    for (const Genome& child : first.children)
+        if (!wayOf(child).first.empty()) pick = &child;
+    ASSERT_NE(pick, nullptr);
+    const auto [name, step] = wayOf(*pick);
+    EXPECT_GT(step, 0.0);
+    EXPECT_LE(step, 1.0);
+
+    PickRound round;
+    round.picked = {*pick};
+    for (const Genome& child : first.children)
+        if (&child != pick) round.passed.push_back(child);
+    request.rounds.push_back(round);
+    request.breed.parents = {*pick};
+    const SteerResult second = steerBreed(request);
+    EXPECT_DOUBLE_EQ(way(second, name).step, std::clamp(step, 0.02, 1.0)) << name;
+    for (const SteerWay& w : second.ways)
+        if (w.way != name) EXPECT_GT(way(second, name).weight, w.weight) << "picks came " << name;
+    EXPECT_NE(second.explanation.find("as your last picks came"), std::string::npos) << second.explanation;
+
+    // The same design picked again: no child came closer, smaller steps.
+    std::vector<double> steps;
+    for (int again = 1; again <= 4; ++again) {
+        request.rounds.push_back(round);
+        const SteerResult kept = steerBreed(request);
+        steps.push_back(way(kept, name).step);
+        EXPECT_NE(kept.explanation.find("smaller steps"), std::string::npos) << kept.explanation;
+    }
+    EXPECT_LT(steps[0], way(second, name).step);
+    EXPECT_LT(steps[1], steps[0]);
+    // Stuck longer: a plateau, where only larger steps change anything.
+    EXPECT_GT(steps[2], steps[1]);
+    EXPECT_GT(steps[3], steps[2]);
+}
+
+TEST(Steer, AFreshDesignLikeThePicksIsAmongTheChildren) {
+    const SteerResult result = steerBreed(requestAfterZebras(11));
+    int fresh = 0;
+    for (const Genome& child : result.children)
+        fresh += child.meta.lineage && child.meta.lineage->op == std::optional<std::string>("wildcard");
+    EXPECT_GE(fresh, 1);
+}

@@ -1,9 +1,10 @@
 #pragma once
 /// Breeding that steers (docs/breeding.md): a person's picks, and the designs they passed over,
-/// are the preferences a small model learns; each generation draws many candidate children (the
-/// requested operator, alteration at an adaptive step, recombination with earlier picks and
-/// fresh designs of the generators), ranks them by the model and shows the most promising, the
-/// last one kept for exploration.
+/// are the preferences a small model learns; each generation draws many candidate children
+/// (variations of one part of the pick at adapted steps, the requested operator's own children
+/// for recombination and a new initial state, recombination with earlier picks, fresh designs
+/// of every generator), ranks them by the model and shows the most promising, the best-liked
+/// fresh design among them, the last one kept for exploration.
 ///
 /// The model is an *ideal point* over cheap features of a design (a 16 x 16 glimpse, Operators.h:
 /// its layout on an 8 x 8 grid, colour statistics, texture statistics, the kinds of strokes):
@@ -12,10 +13,10 @@
 /// constraints, newer rounds weighing more, and, among consistent candidates, by its closeness to
 /// the newest picks. "Less like this" marks a design as passed over twice as strongly.
 ///
-/// Steps adapt: the distance between successive picks, relative to the spread of their rounds,
-/// sets how far alteration moves (large while picks disagree, smaller as they converge), with a
-/// scale of its own for the palette (colour features), the initial state (layout) and the
-/// strokes (texture).
+/// Steps adapt as in a self-adaptive evolution strategy: most candidates vary one part of the
+/// pick (its palette, strokes or initial state, or all), each recording in its lineage the way
+/// and the step it was made with; a pick passes its step on, ways that picks came from lately
+/// get more candidates, and a design picked again (no child came closer) shrinks the steps.
 ///
 /// Everything draws from Pcg32 streams derived from the request's seed, and the features use
 /// only IEEE basic operations: the same request gives the same children on every machine.
@@ -88,7 +89,7 @@ private:
 /// The newest rounds the model reads.
 inline constexpr int MaxSteerRounds = 12;
 /// How many candidates a generation ranks by default.
-inline constexpr int SteerCandidates = 32;
+inline constexpr int SteerCandidates = 24;
 
 struct SteerRequest {
     BreedRequest breed;            ///< the operator, parents, seed, count... as breed() takes them
@@ -96,11 +97,22 @@ struct SteerRequest {
     int candidates = SteerCandidates;
 };
 
+/// How a steered generation varies the newest pick one way (docs/breeding.md): the palette,
+/// the strokes, the initial state, or all of them.
+struct SteerWay {
+    std::string way;     ///< "palette", "strokes", "initial" or "all"
+    double step = 0.0;   ///< the alteration strength its candidates are drawn about
+    double weight = 0.0; ///< its share of the candidates (the ways add up to 1)
+};
+
 struct SteerResult {
     std::vector<Genome> children;
-    std::string explanation; ///< PreferenceModel::explain(), empty without history
+    /// Why these children: PreferenceModel::explain(), then how they vary the pick ("mostly
+    /// the strokes; smaller steps: no child came closer last time"); empty without history.
+    std::string explanation;
     PreferenceModel::Steps steps;
     double strokeStrength = 0.0; ///< the alteration strength used for the strokes
+    std::vector<SteerWay> ways;  ///< how the candidates vary the pick, per way
 };
 
 /// Children ranked by the preferences (see above): `breed.count` of them, the last an exploration
