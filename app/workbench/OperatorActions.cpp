@@ -131,7 +131,7 @@ void OperatorActions::addSteering(QMenu* breedMenu, PopulationModel* model) {
     mSteer = breedMenu->addAction(tr("&Steer by my picks"));
     mSteer->setObjectName(QStringLiteral("steerAction"));
     mSteer->setCheckable(true);
-    mSteer->setChecked(QSettings().value(QStringLiteral("breed/steer"), false).toBool());
+    mSteer->setChecked(QSettings().value(QStringLiteral("breed/steer"), true).toBool());
     mSteer->setStatusTip(tr("Offspring are drawn from many candidates and ranked by what your picks so far "
                             "say; the status line tells why"));
     mSteer->setToolTip(mSteer->statusTip());

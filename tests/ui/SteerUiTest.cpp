@@ -37,9 +37,7 @@ protected:
 TEST_F(SteerUiTest, TheStatusLineSaysWhyTheChildrenWereChosen) {
     ASSERT_NE(steer(), nullptr);
     EXPECT_TRUE(steer()->isCheckable());
-    // Off by default while it does not beat plain breeding (docs/breeding.md); turned on here.
-    EXPECT_FALSE(steer()->isChecked()) << "off by default";
-    steer()->setChecked(true);
+    EXPECT_TRUE(steer()->isChecked()) << "on by default";
     mWindow->setPopulationFamily(QStringLiteral("zebra"));
     mWindow->newRandomPopulation(2);
     pickAndAlter(0);
@@ -58,6 +56,16 @@ TEST_F(SteerUiTest, TheStatusLineSaysWhyTheChildrenWereChosen) {
     EXPECT_FALSE(statusLine().contains(QStringLiteral("more like"))) << statusLine().toStdString();
     model().goForward();
     EXPECT_TRUE(statusLine().contains(QStringLiteral("more like"))) << statusLine().toStdString();
+}
+
+TEST_F(SteerUiTest, OnUntilTurnedOff) {
+    // Measured to beat plain breeding and random search (docs/performance.md): on by default.
+    QSettings().remove(QStringLiteral("breed/steer"));
+    WorkbenchWindow fresh(mService.get());
+    QAction* action = fresh.findChild<QAction*>(QStringLiteral("steerAction"));
+    ASSERT_NE(action, nullptr);
+    EXPECT_TRUE(action->isChecked());
+    EXPECT_TRUE(fresh.model()->steering());
 }
 
 TEST_F(SteerUiTest, TurnedOffItBreedsAsBeforeAndIsRemembered) {
