@@ -571,6 +571,13 @@ static std::string describeVariation(const BreedRequest& request, const std::vec
     return "a variation of " + of + ": " + describeChange(repeated, child);
 }
 
+void keepWrapValid(Genome& child) {
+    if (child.wrap && !canWrap(child)) {
+        child.wrap = false;
+        child.lattice = Lattice::Straight;
+    }
+}
+
 void checkBreedRequest(const BreedRequest& request) {
     const GeneticOperator op = request.op;
     const auto parentCount = static_cast<int>(request.parents.size());
@@ -677,12 +684,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
                     variedFrom = repeated;
                 }
             }
-            // A wrapping bath (docs/genome-format.md) stays one only while every step can wrap:
-            // a child given a drop or a comb is a plain design.
-            if (child.wrap && !canWrap(child)) {
-                child.wrap = false;
-                child.lattice = Lattice::Straight; // issue 29: no lattice without a wrap
-            }
+            keepWrapValid(child);
             return child;
         };
         std::optional<MetaVariation> variation;

@@ -203,6 +203,13 @@ double movement(const std::vector<PickRound>& rounds, std::size_t from, std::siz
     return std::clamp(0.3 + 0.9 * mean, 0.15, 1.5);
 }
 
+/// A fresh design of a family, or of the free generator (null), that knows its seed.
+Genome freshDesign(const Family* source, std::uint64_t seed, int dimension) {
+    Genome g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
+    if (!g.meta.seed) g.meta.seed = seed;
+    return g;
+}
+
 /// About how much work one sample of a design's look takes, in operations applied: a stylus
 /// step counts for each tine and the velocities its solve evaluates (about 3.5), over the share
 /// of its steps within reach of a point; a flow's steps as many.
@@ -481,8 +488,7 @@ SteerResult steerBreed(const SteerRequest& request) {
                 // The parents' family (as the wildcard) or the free generator: some families take
                 // a second for one look (a rake's many tines), too slow to draw many of them.
                 const Family* source = family && rng.chance(0.5) ? family : nullptr;
-                g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
-                if (!g.meta.seed) g.meta.seed = seed;
+                g = freshDesign(source, seed, dimension);
                 name = "wildcard";
             }
         } else {
@@ -516,10 +522,7 @@ SteerResult steerBreed(const SteerRequest& request) {
                 break;
             }
         }
-        if (g.wrap && !canWrap(g)) {
-            g.wrap = false;
-            g.lattice = Lattice::Straight;
-        }
+        keepWrapValid(g);
         pool.push_back(std::move(g));
         home.push_back(p);
         kinds.push_back(name);
@@ -547,8 +550,7 @@ SteerResult steerBreed(const SteerRequest& request) {
         for (int attempt = 0; attempt < 3 && !found; ++attempt) {
             const Family* source = generators[rng.below(std::uint32_t(generators.size()))];
             const std::uint64_t seed = rng.nextUint();
-            g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
-            if (!g.meta.seed) g.meta.seed = seed;
+            g = freshDesign(source, seed, dimension);
             found = lookWork(g) <= budget;
         }
         if (!found) continue;

@@ -175,6 +175,9 @@ inline constexpr int MaxChildren = 1000;
 /// [1, MaxChildren], a strength outside [0, 1], a generation below 1 or childNumbers that are
 /// neither empty nor one per child.
 std::vector<Genome> breed(const BreedRequest& request);
+/// A wrapping bath (docs/genome-format.md) stays one only while every step can wrap: a child
+/// given a drop or a comb becomes a plain design, without a lattice (issue 29).
+void keepWrapValid(Genome& child);
 /// What breed() refuses, refused the same way (InputError), without breeding.
 void checkBreedRequest(const BreedRequest& request);
 
