@@ -1,7 +1,6 @@
 #include "marbler/Steer.h"
 
 #include "marbler/ChangeSummary.h"
-#include "marbler/Colourways.h"
 #include "marbler/Error.h"
 #include "marbler/Families.h"
 #include "marbler/Generator.h"
@@ -237,9 +236,10 @@ constexpr std::array<const char*, std::size_t(Way::Count)> WayNames{"palette", "
 
 /// What the picks say about how to vary the newest pick: per way, the step the newest pick
 /// made that way was bred with (a steered child records its way and step; the requested
-/// strength before any), and how often picks came from that way lately. Every round in a row
-/// in which the same design was picked again (no child came closer) shrinks the steps by 0.6,
-/// so steps grow and shrink with the person's picks, as in a self-adaptive evolution strategy.
+/// strength before any), and how often picks came from that way lately. The first two rounds in
+/// a row in which the same design was picked again (no child came closer) shrink the steps by
+/// 0.6 each; later ones, a plateau, widen them by 1.6 each: steps follow the person's picks, as
+/// in a self-adaptive evolution strategy.
 struct Plan {
     std::array<double, std::size_t(Way::Count)> step{};
     std::array<double, std::size_t(Way::Count)> weight{};
