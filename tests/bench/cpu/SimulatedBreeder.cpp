@@ -6,7 +6,8 @@
 // generator), keeping the closest.
 //
 //   bench_simulated_breeder [--runs R] [--generations G] [--side S] [--modes classic,steered]
-//                           [--distance pixel|stats|both] [--targets N] [--only K]
+//                           [--distance pixel|stats|both] [--targets N] [--only K] [--first-run N]
+//                           [--trace 1]
 //
 // Prints one line per run and a summary per mode and distance: wins against random search with
 // the same budget, medians of the best distance after the first nine, 5, 10 and 20 generations,
@@ -36,6 +37,7 @@ namespace {
 using namespace marbler;
 
 int gSide = 48;
+bool gTrace = false; // --trace 1: a line per generation, what was picked and how it was made
 
 struct Look {
     std::vector<double> lab;     // blurred L*a*b* per pixel
@@ -210,6 +212,23 @@ RunResult breedRun(Evaluator& distance, std::uint64_t seed, int generations, boo
             d[std::size_t(i)] = distance(grid[std::size_t(i)]);
         std::stable_sort(order.begin(), order.end(),
                          [&](int a, int b) { return d[std::size_t(a)] < d[std::size_t(b)]; });
+        if (gTrace) {
+            const Genome& pick = grid[std::size_t(order[0])];
+            std::string how = "first nine";
+            if (pick.meta.lineage) {
+                const MetaLineage& l = *pick.meta.lineage;
+                how = l.op.value_or("?");
+                if (l.other.contains("way")) how += "/" + l.other["way"].get<std::string>();
+                if (l.other.contains("step")) how += " " + std::to_string(l.other["step"].get<double>());
+                if (l.other.contains("steered"))
+                    how += " rank " + std::to_string(l.other["steered"].get<int>());
+            }
+            std::printf("  g%-2d best %.3f picked %.3f (%s); shown:", gen - 1, best, d[std::size_t(order[0])],
+                        how.c_str());
+            for (int i = 0; i < 9; ++i)
+                std::printf(" %.3f", d[std::size_t(order[std::size_t(i)])]);
+            std::printf("\n");
+        }
         const bool recombine = gen % 3 == 0;
         const int parentCount = recombine ? 2 : 1;
         std::vector<bool> selected(9, false);
@@ -287,7 +306,7 @@ std::vector<Target> targets(int count) {
 } // namespace
 
 int main(int argc, char** argv) {
-    int runs = 3, generations = 20, targetCount = 5, only = -1;
+    int runs = 3, generations = 20, targetCount = 5, only = -1, firstRun = 1;
     std::string modes = "classic,steered", metrics = "both";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
@@ -305,6 +324,10 @@ int main(int argc, char** argv) {
             targetCount = std::stoi(value);
         else if (key == "--only")
             only = std::stoi(value);
+        else if (key == "--first-run")
+            firstRun = std::max(1, std::stoi(value));
+        else if (key == "--trace")
+            gTrace = value == "1";
         else {
             std::fprintf(stderr, "unknown option %s\n", key.c_str());
             return 2;
@@ -325,7 +348,7 @@ int main(int argc, char** argv) {
     std::map<std::string, Summary> summaries;
     for (std::size_t t = 0; t < list.size(); ++t) {
         if (only >= 0 && int(t) != only) continue;
-        for (int r = 0; r < runs; ++r) {
+        for (int r = firstRun - 1; r < firstRun - 1 + runs; ++r) {
             lookCache().clear();
             const Look target = lookOf(list[t].genome);
             const std::uint64_t seed = 7919ULL * (t + 1) + 104729ULL * std::uint64_t(r + 1);
