@@ -463,6 +463,14 @@ SteerResult steerBreed(const SteerRequest& request) {
         if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
     const int dimension = base.parents.front().dimension;
     if (family && family->dimension != dimension) family = nullptr;
+    // A person working within one family (every design of the rounds is of the parents' family,
+    // as a population of one family chosen in the tool bar makes): fresh designs of it only.
+    bool oneFamily = family != nullptr;
+    for (const PickRound& round : request.rounds)
+        for (const auto* designs : {&round.picked, &round.passed, &round.disliked})
+            for (const Genome& g : *designs)
+                oneFamily =
+                    oneFamily && g.meta.family == std::optional<std::string>(std::string(family->name));
     std::vector<std::string> kinds(pool.size(), std::string(operatorName(base.op)));
     std::vector<double> childSteps(pool.size(), 0.0);
     std::vector<int> childWays(pool.size(), -1);
@@ -487,7 +495,7 @@ SteerResult steerBreed(const SteerRequest& request) {
                 const std::uint64_t seed = rng.nextUint();
                 // The parents' family (as the wildcard) or the free generator: some families take
                 // a second for one look (a rake's many tines), too slow to draw many of them.
-                const Family* source = family && rng.chance(0.5) ? family : nullptr;
+                const Family* source = family && (rng.chance(0.5) || oneFamily) ? family : nullptr;
                 g = freshDesign(source, seed, dimension);
                 name = "wildcard";
             }
@@ -534,8 +542,8 @@ SteerResult steerBreed(const SteerRequest& request) {
     // pick's own family; more of them the longer no child comes closer.
     std::vector<const Family*> generators;
     for (const Family& f : allFamilies())
-        if (f.dimension == dimension) generators.push_back(&f);
-    generators.push_back(nullptr);
+        if (f.dimension == dimension && (!oneFamily || f.name == family->name)) generators.push_back(&f);
+    if (!oneFamily) generators.push_back(nullptr);
     const std::size_t firstFresh = pool.size();
     const int fresh = 8 + 6 * std::min(plan.stale, 3);
     // A fresh design whose look costs far more than the parents' is drawn again (twice at

@@ -213,3 +213,22 @@ TEST(Steer, AFreshDesignLikeThePicksIsAmongTheChildren) {
         fresh += child.meta.lineage && child.meta.lineage->op == std::optional<std::string>("wildcard");
     EXPECT_GE(fresh, 1);
 }
+
+TEST(Steer, WithinOneFamilyFreshDesignsAreOfIt) {
+    // Every design of the rounds a zebra (a population of one family chosen in the tool bar):
+    // the fresh designs among the children are zebras too.
+    SteerRequest request;
+    request.rounds = roundsAlong(family("zebra", 31), 0.5, 5);
+    for (const PickRound& round : request.rounds)
+        for (const Genome& g : round.passed)
+            ASSERT_EQ(g.meta.family, std::optional<std::string>("zebra"));
+    request.breed.parents = {request.rounds.back().picked.front()};
+    request.breed.seed = 9;
+    request.breed.strength = 0.5;
+    int fresh = 0;
+    for (const Genome& child : steerBreed(request).children) {
+        EXPECT_EQ(child.meta.family, std::optional<std::string>("zebra"));
+        fresh += child.meta.lineage && child.meta.lineage->op == std::optional<std::string>("wildcard");
+    }
+    EXPECT_GE(fresh, 1);
+}
