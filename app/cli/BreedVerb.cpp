@@ -65,8 +65,8 @@ promising K shown, the last one for exploration; a line
 beside them; ROUNDS.json holds the earlier rounds, oldest first:
   {"rounds": [{"picked": ["a.marble.json"], "passed": ["b.marble.json", ...],
                "disliked": ["c.marble.json"]}, ...]}
-(files relative to ROUNDS.json's folder; "disliked" marks "less like this"). With fewer than
-two rounds in all, breeding is as without steering.
+(files relative to ROUNDS.json's folder; "disliked" marks "less like this"). Without a round
+that has a pick and a design passed over, breeding is as without steering.
 
 options:
   --seed N          the seed, a non-negative 64-bit integer (required)

@@ -27,6 +27,14 @@ namespace steerdetail {
 constexpr int LayoutSide = 8; // the glimpse's layout, averaged over 2 x 2 cells
 constexpr int LookSide = 16;  // a quarter of the child filter's glimpse: candidates are many
 constexpr std::uint64_t CandidateStream = 0x7374656572000000ULL;
+/// The fresh designs' budget of look work (lookWork): as many looks of the parents', and at least
+/// this much.
+constexpr double FreshParentLooks = 16.0;
+constexpr double FreshFloorWork = 2000.0;
+/// Fresh designs drawn a generation (more while picks stall).
+constexpr int FreshDesigns = 8;
+/// How much closeness to the newest pick counts among candidates that break no round.
+constexpr double NearestWeight = 0.05;
 
 /// Weights of the feature groups: the layout has 192 values, the statistics a few, so each
 /// group adds about as much to a distance between two unlike designs.
@@ -34,6 +42,10 @@ constexpr double LayoutWeight = 1.0 / 100.0;
 constexpr double ColourWeight = 4.0 / 100.0;
 constexpr double TextureWeight = 6.0;
 constexpr double ToolWeight = 1.5;
+constexpr double HistogramWeight = 2.0;   // the colour histogram's shares
+constexpr double OrientationWeight = 7.0; // the edge orientations' shares, at two scales
+constexpr int ColourBins = 4 * 7;         // four lightnesses by six hues and grey
+constexpr int OrientationBins = 9;        // eight orientations and "no edge", per scale
 
 double sq(double x) {
     return x * x;
@@ -43,7 +55,7 @@ DesignFeatures computeFeatures(const Genome& genome, const Glimpse& look) {
     constexpr int Side = LookSide;
     constexpr int Block = Side / LayoutSide;
     DesignFeatures f;
-    f.values.reserve(3 * LayoutSide * LayoutSide + 20 + ToolCount);
+    f.values.reserve(3 * LayoutSide * LayoutSide + 20 + ColourBins + 2 * OrientationBins + ToolCount);
     const auto lab = [&](int i, int j, int c) { return look.lab[std::size_t(3 * (j * Side + i) + c)]; };
     // Layout: where light, dark and each hue lie.
     for (int bj = 0; bj < LayoutSide; ++bj)
@@ -110,6 +122,45 @@ DesignFeatures computeFeatures(const Genome& genome, const Glimpse& look) {
     for (double w : ways)
         f.values.push_back(w * TextureWeight);
     f.values.push_back(look.dominantShare * TextureWeight);
+    // The colour histogram: the share of cells of each lightness (quarters of L*) and hue (six
+    // sectors of 60 degrees, or grey below a chroma of 10), told with comparisons only
+    // (tan 60 degrees = 1.73205).
+    std::array<double, ColourBins> colours{};
+    for (int j = 0; j < Side; ++j)
+        for (int i = 0; i < Side; ++i) {
+            const double l = lab(i, j, 0), a = lab(i, j, 1), b = lab(i, j, 2);
+            const int light = l < 25.0 ? 0 : l < 50.0 ? 1 : l < 75.0 ? 2 : 3;
+            int hue = 6;
+            if (a * a + b * b >= 100.0) {
+                const double ab = std::abs(b), aa = std::abs(a);
+                const bool steep = ab >= 1.73205 * aa;
+                hue = b >= 0.0 ? (steep ? 1 : a > 0.0 ? 0 : 2) : (steep ? 4 : a < 0.0 ? 3 : 5);
+            }
+            colours[std::size_t(light * 7 + hue)] += 1.0 / Cells;
+        }
+    for (double c : colours)
+        f.values.push_back(c * HistogramWeight);
+    // The orientations of lightness edges at one and two cells: eight sectors of 22.5 degrees
+    // (tan 22.5 = 0.41421, tan 67.5 = 2.41421), and the share of cells with an edge.
+    for (int step : {1, 2}) {
+        std::array<double, OrientationBins> bins{};
+        const double share = 1.0 / ((Side - step) * (Side - step));
+        for (int j = 0; j + step < Side; ++j)
+            for (int i = 0; i + step < Side; ++i) {
+                double gx = lab(i + step, j, 0) - lab(i, j, 0), gy = lab(i, j + step, 0) - lab(i, j, 0);
+                if (std::abs(gx) + std::abs(gy) < 2.0) continue;
+                if (gy < 0.0 || (gy == 0.0 && gx < 0.0)) {
+                    gx = -gx;
+                    gy = -gy;
+                }
+                const double ax = std::abs(gx);
+                const int near = gy < 0.41421 * ax ? 0 : gy < ax ? 1 : gy < 2.41421 * ax ? 2 : 3;
+                bins[std::size_t(gx >= 0.0 ? near : 7 - near)] += share;
+                bins[8] += share;
+            }
+        for (double b : bins)
+            f.values.push_back(b * OrientationWeight);
+    }
     // The kinds of strokes.
     f.toolShare.assign(ToolCount, 0.0);
     for (const Operation& op : genome.operations)
@@ -178,6 +229,18 @@ double partDistance(const DesignFeatures& a, const DesignFeatures& b, std::size_
 constexpr std::size_t LayoutEnd = 3 * LayoutSide * LayoutSide;
 constexpr std::size_t ColourEnd = LayoutEnd + 7;
 constexpr std::size_t TextureEnd = ColourEnd + 9;
+constexpr std::size_t HistogramEnd = TextureEnd + ColourBins;
+constexpr std::size_t OrientationEnd = HistogramEnd + 2 * OrientationBins;
+
+/// The squared distances of two designs' features per group (FeatureGroup).
+std::array<double, FeatureGroups> groupSquares(const DesignFeatures& a, const DesignFeatures& b) {
+    constexpr std::array<std::size_t, FeatureGroups + 1> bounds{
+        0, LayoutEnd, ColourEnd, TextureEnd, HistogramEnd, OrientationEnd, 1u << 30};
+    std::array<double, FeatureGroups> out{};
+    for (std::size_t g = 0; g < FeatureGroups; ++g)
+        out[g] = sq(partDistance(a, b, bounds[g], bounds[g + 1]));
+    return out;
+}
 
 /// How far the newest picks moved, against the spread of their rounds, over one feature range:
 /// near 1 (or more) while picks jump about, small as they settle.
@@ -209,10 +272,12 @@ Genome freshDesign(const Family* source, std::uint64_t seed, int dimension) {
     return g;
 }
 
-/// About how much work one sample of a design's look takes, in operations applied: a stylus
-/// step counts for each tine and the velocities its solve evaluates (about 3.5), over the share
-/// of its steps within reach of a point; a flow's steps as many.
+/// About how much work one sample of a design's look takes, in drops applied: a stylus step
+/// counts for each tine, over the share of its steps within reach of a point, as much as twenty
+/// drops (the velocities its solve evaluates; measured on the families' designs); a flow's steps
+/// as much.
 double lookWork(const Genome& genome) {
+    constexpr double StepWork = 20.0;
     double work = 0.0;
     for (const Operation& op : genome.operations) {
         if (op.tool == Tool::Stylus) {
@@ -220,9 +285,9 @@ double lookWork(const Genome& genome) {
             for (std::size_t i = 1; i < op.path.size(); ++i)
                 length += glm::length(op.path[i] - op.path[i - 1]);
             const double reach = std::min(1.0, 2.0 * op.reach / std::max(length + 2.0 * op.reach, 1e-9));
-            work += 3.5 * op.steps * std::max(op.tines, 1) * reach;
+            work += StepWork * op.steps * std::max(op.tines, 1) * reach;
         } else if (op.tool == Tool::Flow) {
-            work += 3.5 * op.steps;
+            work += StepWork * op.steps;
         } else {
             work += 1.0;
         }
@@ -302,6 +367,14 @@ double featureDistance(const DesignFeatures& a, const DesignFeatures& b) {
     return partDistance(a, b, 0, a.values.size());
 }
 
+double PreferenceModel::distance(const DesignFeatures& a, const DesignFeatures& b) const {
+    const std::array<double, FeatureGroups> squares = groupSquares(a, b);
+    double sum = 0.0;
+    for (std::size_t g = 0; g < FeatureGroups; ++g)
+        sum += mGroupWeights[g] * squares[g];
+    return std::sqrt(sum);
+}
+
 PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
     const std::size_t first =
         rounds.size() > std::size_t(MaxSteerRounds) ? rounds.size() - MaxSteerRounds : 0;
@@ -325,8 +398,9 @@ PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
         if (!round.picked.empty() && !round.passed.empty()) ++mInformedRounds;
         mRounds.insert(mRounds.begin(), std::move(round));
     }
-    mInformed = mInformedRounds >= 2;
+    mInformed = mInformedRounds >= 1;
     if (!mInformed) return;
+    learnGroupWeights();
 
     mSteps.palette = movement(recent, LayoutEnd, ColourEnd);
     mSteps.initial = movement(recent, 0, LayoutEnd);
@@ -389,10 +463,10 @@ double PreferenceModel::score(const DesignFeatures& c) const {
         if (round.picked.empty() || round.passed.empty()) continue;
         double toPick = 1e300;
         for (const DesignFeatures& p : round.picked)
-            toPick = std::min(toPick, featureDistance(c, p));
+            toPick = std::min(toPick, distance(c, p));
         double sum = 0.0, weights = 0.0;
         for (std::size_t k = 0; k < round.passed.size(); ++k) {
-            sum += round.passedWeight[k] * std::max(0.0, toPick - featureDistance(c, round.passed[k]));
+            sum += round.passedWeight[k] * std::max(0.0, toPick - distance(c, round.passed[k]));
             weights += round.passedWeight[k];
         }
         broken += round.weight * sum / weights;
@@ -405,10 +479,39 @@ double PreferenceModel::score(const DesignFeatures& c) const {
         if (!mRounds[r].picked.empty()) {
             nearest = 1e300;
             for (const DesignFeatures& p : mRounds[r].picked)
-                nearest = std::min(nearest, featureDistance(c, p));
+                nearest = std::min(nearest, distance(c, p));
             break;
         }
-    return -(broken / total) - 0.15 * nearest;
+    return -(broken / total) - NearestWeight * nearest;
+}
+
+void PreferenceModel::learnGroupWeights() {
+    // The newest pick is the closest yet to what the person has in mind: a group of features by
+    // which earlier picks lie nearer to it than what they were passed over for is a group the
+    // person goes by. Each group is weighed by how often it orders such pairs as the picks did.
+    const DesignFeatures& newest = mRounds.back().picked.front();
+    std::array<double, FeatureGroups> agree{};
+    double pairs = 0.0;
+    for (std::size_t r = 0; r + 1 < mRounds.size(); ++r)
+        for (const DesignFeatures& pick : mRounds[r].picked) {
+            const std::array<double, FeatureGroups> toPick = groupSquares(pick, newest);
+            if (std::all_of(toPick.begin(), toPick.end(), [](double d) { return d == 0.0; })) continue;
+            for (const DesignFeatures& passed : mRounds[r].passed) {
+                const std::array<double, FeatureGroups> toPassed = groupSquares(passed, newest);
+                for (std::size_t g = 0; g < FeatureGroups; ++g)
+                    agree[g] += toPick[g] < toPassed[g] ? 1.0 : toPick[g] == toPassed[g] ? 0.5 : 0.0;
+                pairs += 1.0;
+            }
+        }
+    if (pairs < 8.0) return;
+    double total = 0.0;
+    for (std::size_t g = 0; g < FeatureGroups; ++g) {
+        // Chance is a half; a group that orders no better than chance keeps a little weight.
+        mGroupWeights[g] = sq(std::max(0.05, 2.0 * agree[g] / pairs - 1.0));
+        total += mGroupWeights[g];
+    }
+    for (double& w : mGroupWeights)
+        w *= double(FeatureGroups) / total;
 }
 
 std::string PreferenceModel::explain() const {
@@ -545,12 +648,14 @@ SteerResult steerBreed(const SteerRequest& request) {
         if (f.dimension == dimension && (!oneFamily || f.name == family->name)) generators.push_back(&f);
     if (!oneFamily) generators.push_back(nullptr);
     const std::size_t firstFresh = pool.size();
-    const int fresh = 8 + 6 * std::min(plan.stale, 3);
-    // A fresh design whose look costs far more than the parents' is drawn again (twice at
-    // most, then left out): a generation must not wait on strangers' looks.
-    double budget = 4000.0;
+    const int fresh = FreshDesigns + 6 * std::min(plan.stale, 3);
+    // The fresh designs' looks share a budget of work: as much as FreshParentLooks looks of the
+    // parents', and at least FreshFloorWork (a dozen small designs). One that does not fit is
+    // drawn again (twice at most), then left out: a generation must not wait on strangers' looks.
+    double parentWork = 0.0;
     for (const Genome& parent : base.parents)
-        budget = std::max(budget, 2.0 * lookWork(parent));
+        parentWork = std::max(parentWork, lookWork(parent));
+    double budget = std::max(FreshFloorWork, FreshParentLooks * parentWork);
     for (int k = 0; k < fresh; ++k) {
         Pcg32 rng = childRng(base.seed, k, 0x6672657368ULL, CandidateStream);
         Genome g;
@@ -559,7 +664,9 @@ SteerResult steerBreed(const SteerRequest& request) {
             const Family* source = generators[rng.below(std::uint32_t(generators.size()))];
             const std::uint64_t seed = rng.nextUint();
             g = freshDesign(source, seed, dimension);
-            found = lookWork(g) <= budget;
+            const double work = lookWork(g);
+            found = work <= budget;
+            if (found) budget -= work;
         }
         if (!found) continue;
         // Every other one in the pick's inks: a new pattern with the colours picks have tuned.
@@ -620,24 +727,38 @@ SteerResult steerBreed(const SteerRequest& request) {
             if (meanDeltaE(look, poolLooks[i]) < apart) return false;
         return true;
     };
-    const int exploit = base.count > 2 ? base.count - 1 : base.count;
-    // First the best-liked fresh designs (one; two once a pick is kept; half the children once it is
-    // kept again: a plateau, left by looking elsewhere), then the best liked of all.
-    const int freshShown = plan.stale >= 2 ? exploit / 2 : std::min(exploit / 3, plan.stale >= 1 ? 2 : 1);
-    for (std::size_t i : order) {
-        if (int(chosen.size()) >= freshShown) break;
-        if (i < firstFresh || !acceptable(i, NearDuplicateDeltaE)) continue;
+    const auto choose = [&](std::size_t i) {
         chosen.push_back(i);
         looks.push_back(poolLooks[i]);
         taken.insert(genomeId(pool[i]));
+    };
+    const int exploit = base.count > 2 ? base.count - 1 : base.count;
+    // First the best-liked fresh designs (one; two once a pick is kept; half the children once it is
+    // kept again: a plateau, left by looking elsewhere).
+    const int freshShown = plan.stale >= 2 ? exploit / 2 : std::min(exploit / 3, plan.stale >= 1 ? 2 : 1);
+    for (std::size_t i : order) {
+        if (int(chosen.size()) >= freshShown) break;
+        if (i >= firstFresh && acceptable(i, NearDuplicateDeltaE)) choose(i);
     }
+    // Then the best liked of each way of varying the pick, and of the other candidates of the
+    // pick (the operator's own children, recombinations): the model's ranking is a guess, and
+    // the person's pick among different moves tells more than among near neighbours.
+    for (int stratum = 0; stratum <= int(Way::Count); ++stratum)
+        for (std::size_t i : order) {
+            if (int(chosen.size()) >= exploit) break;
+            const bool fits = stratum < int(Way::Count)
+                                  ? childWays[i] == stratum
+                                  : i < firstFresh && childWays[i] < 0 && kinds[i] != "wildcard";
+            if (fits && acceptable(i, 4.0 * NearDuplicateDeltaE)) {
+                choose(i);
+                break;
+            }
+        }
+    // Then the best liked of all.
     for (double apart : {4.0 * NearDuplicateDeltaE, NearDuplicateDeltaE, -1.0})
         for (std::size_t i : order) {
             if (int(chosen.size()) >= exploit) break;
-            if (std::find(chosen.begin(), chosen.end(), i) != chosen.end() || !acceptable(i, apart)) continue;
-            chosen.push_back(i);
-            looks.push_back(poolLooks[i]);
-            taken.insert(genomeId(pool[i]));
+            if (std::find(chosen.begin(), chosen.end(), i) == chosen.end() && acceptable(i, apart)) choose(i);
         }
     if (int(chosen.size()) < base.count) {
         // Exploration: among the candidates not chosen, the half farthest from the chosen ones,

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 using namespace marbler;
@@ -60,6 +61,10 @@ SteerRequest requestAfterZebras(std::uint64_t seed) {
 }
 
 } // namespace
+
+namespace {
+std::pair<std::string, double> wayOf(const Genome& child);
+}
 
 TEST(Steer, TheModelRanksADesignLikeThePicksAboveOneUnlikeThem) {
     const PreferenceModel model({zebraRound(1), zebraRound(2), zebraRound(3)});
@@ -132,7 +137,7 @@ TEST(Steer, ChildrenAreValidDistinctRankedAndExplained) {
 
 TEST(Steer, WithoutHistoryItBreedsAsBefore) {
     SteerRequest request = requestAfterZebras(5);
-    request.rounds.resize(1); // one round: the first generation bred from a population
+    request.rounds.clear(); // nothing picked yet
     std::vector<std::string> steered, plain;
     for (const Genome& g : steerBreed(request).children)
         steered.push_back(serializeGenome(g));
@@ -140,6 +145,57 @@ TEST(Steer, WithoutHistoryItBreedsAsBefore) {
         plain.push_back(serializeGenome(g));
     EXPECT_EQ(steered, plain);
     EXPECT_TRUE(steerBreed(request).explanation.empty());
+}
+
+TEST(Steer, TheFirstPickAlreadySteers) {
+    // One round: the pick from the first nine against the eight passed over. The first bred
+    // generation learns from it (a generation sooner than before).
+    SteerRequest request = requestAfterZebras(5);
+    request.rounds.resize(1);
+    const SteerResult result = steerBreed(request);
+    EXPECT_EQ(result.explanation.rfind("more like your last pick", 0), 0u) << result.explanation;
+    for (const Genome& child : result.children)
+        EXPECT_TRUE(child.meta.toJson()["lineage"].contains("steered"));
+}
+
+TEST(Steer, TheModelWeighsTheFeaturesThePicksGoBy) {
+    // Every round a zebra in inks of its own is picked over designs of other families: by the kinds
+    // of strokes every earlier pick is nearer the newest than what it was passed over for, so that
+    // group weighs most; a group that orders them no better than chance weighs little.
+    std::vector<PickRound> rounds;
+    for (int r = 0; r < 5; ++r) {
+        PickRound round;
+        Genome pick = family("zebra", 100 + std::uint64_t(r));
+        Pcg32 rng(300 + std::uint64_t(r));
+        pick = alterPart(pick, DesignPart::Palette, 1.0, rng);
+        round.picked.push_back(pick);
+        for (const char* other : {"stone", "chevron", "shawl", "spanish-wave", "first-paper", "french-curl"})
+            round.passed.push_back(family(other, 200 + std::uint64_t(r)));
+        rounds.push_back(round);
+    }
+    const PreferenceModel model(rounds);
+    const auto& w = model.groupWeights();
+    EXPECT_EQ(*std::max_element(w.begin(), w.end()), w[std::size_t(FeatureGroup::Tools)]);
+    EXPECT_GT(w[std::size_t(FeatureGroup::Tools)], 1.0);
+    EXPECT_LT(*std::min_element(w.begin(), w.end()), 0.5);
+    double sum = 0.0;
+    for (double v : w)
+        sum += v;
+    EXPECT_NEAR(sum, double(FeatureGroups), 1e-9);
+    // Without such a history every group weighs the same.
+    const PreferenceModel once({rounds.front()});
+    for (double v : once.groupWeights())
+        EXPECT_EQ(v, 1.0);
+}
+
+TEST(Steer, TheChildrenTryEveryWayOfVaryingThePick) {
+    // The model's ranking is a guess: the children show the best liked of each way (palette,
+    // strokes, initial state, all), so the person's pick says which way to go.
+    const SteerResult result = steerBreed(requestAfterZebras(11));
+    std::set<std::string> ways;
+    for (const Genome& child : result.children)
+        if (!wayOf(child).first.empty()) ways.insert(wayOf(child).first);
+    EXPECT_GE(ways.size(), 3u) << "ways among the children: " << ways.size();
 }
 
 TEST(Steer, ABadCandidateCountIsRefused) {

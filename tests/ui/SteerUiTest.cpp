@@ -41,8 +41,9 @@ TEST_F(SteerUiTest, TheStatusLineSaysWhyTheChildrenWereChosen) {
     mWindow->setPopulationFamily(QStringLiteral("zebra"));
     mWindow->newRandomPopulation(2);
     pickAndAlter(0);
-    // One round of picks: bred as without steering.
-    EXPECT_FALSE(statusLine().contains(QStringLiteral("more like"))) << statusLine().toStdString();
+    // The first pick already steers.
+    EXPECT_TRUE(statusLine().contains(QStringLiteral("more like your last pick")))
+        << statusLine().toStdString();
     pickAndAlter(3);
     EXPECT_TRUE(statusLine().contains(QStringLiteral("more like your last 2 picks")))
         << statusLine().toStdString();
@@ -51,11 +52,16 @@ TEST_F(SteerUiTest, TheStatusLineSaysWhyTheChildrenWereChosen) {
     for (int i = 0; i < CellCount; ++i)
         ranked += model().cell(i)->meta.toJson()["lineage"].contains("steered");
     EXPECT_GE(ranked, CellCount - 2);
-    // Going back shows the generation before, which was not steered; forward again, the reason.
+    // Going back shows the generation before, with its own reason; back to the first, none.
+    model().goBack();
+    EXPECT_TRUE(statusLine().contains(QStringLiteral("more like your last pick")))
+        << statusLine().toStdString();
     model().goBack();
     EXPECT_FALSE(statusLine().contains(QStringLiteral("more like"))) << statusLine().toStdString();
     model().goForward();
-    EXPECT_TRUE(statusLine().contains(QStringLiteral("more like"))) << statusLine().toStdString();
+    model().goForward();
+    EXPECT_TRUE(statusLine().contains(QStringLiteral("more like your last 2 picks")))
+        << statusLine().toStdString();
 }
 
 TEST_F(SteerUiTest, OnUntilTurnedOff) {

@@ -30,6 +30,7 @@ TEST_F(WildcardTest, TheLastOffspringCellIsAFreshDesignOfTheParentsFamily) {
     EXPECT_TRUE(toggle()->isChecked()) << "on by default";
     mWindow->setPopulationFamily(QStringLiteral("nonpareil"));
     mWindow->newRandomPopulation(2);
+    model().setSteering(false); // alteration's own children beside the wildcard
     model().clearSelection();
     model().setSelected(0, true);
     const std::string parentId = genomeId(*model().cell(0));
@@ -54,6 +55,7 @@ TEST_F(WildcardTest, TheLastOffspringCellIsAFreshDesignOfTheParentsFamily) {
 TEST_F(WildcardTest, TheToggleIsRememberedAndTurnsItOff) {
     mWindow->setPopulationFamily(QStringLiteral("peacock"));
     mWindow->newRandomPopulation(2);
+    model().setSteering(false); // alteration's own children in every cell
     toggle()->setChecked(false);
     EXPECT_FALSE(model().wildcardCell());
     EXPECT_EQ(QSettings().value(QStringLiteral("breed/wildcard")).toBool(), false);

@@ -177,6 +177,7 @@ TEST_F(WorkbenchTest, OperatorButtonsFollowParentCount) {
 }
 
 TEST_F(WorkbenchTest, OperatorKeepsParentsAndFillsNineCells) {
+    model().setSteering(false); // the operator's own children (steering mixes in others: SteerUiTest)
     model().setSelected(0, true);
     model().setSelected(4, true);
     const auto before = snapshot(model());
@@ -406,6 +407,7 @@ TEST(PopulationModelTest, EveryNewRandomPopulationIsNew) {
 // One vocabulary: the window's words and numbers agree everywhere.
 
 TEST_F(WorkbenchTest, GenerationsAndOperatorsAreNamedAlikeEverywhere) {
+    model().setSteering(false); // the operator's own children (steering mixes in others: SteerUiTest)
     model().setSelected(4, true);
     ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Reinit));
     EXPECT_TRUE(mWindow->statusBar()->currentMessage().contains(QStringLiteral("eneration 2")))

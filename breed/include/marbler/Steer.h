@@ -3,15 +3,18 @@
 /// are the preferences a small model learns; each generation draws many candidate children
 /// (variations of one part of the pick at adapted steps, the requested operator's own children
 /// for recombination and a new initial state, recombination with earlier picks, fresh designs
-/// of every generator), ranks them by the model and shows the most promising, the best-liked
-/// fresh design among them, the last one kept for exploration.
+/// of every generator), ranks them by the model and shows the most promising: the best-liked
+/// fresh design, the best liked of each way of varying the pick, then the best liked of all, the
+/// last one kept for exploration.
 ///
 /// The model is an *ideal point* over cheap features of a design (a 16 x 16 glimpse, Operators.h:
-/// its layout on an 8 x 8 grid, colour statistics, texture statistics, the kinds of strokes):
-/// every round says "what you have in mind is closer to the picked designs than to the ones passed
-/// over" (a half-space in feature space), so a candidate is scored by how far it breaks these
-/// constraints, newer rounds weighing more, and, among consistent candidates, by its closeness to
-/// the newest picks. "Less like this" marks a design as passed over twice as strongly.
+/// its layout on an 8 x 8 grid, colour statistics, texture statistics, a colour histogram, the
+/// orientations of its edges, the kinds of strokes): every round says "what you have in mind is
+/// closer to the picked designs than to the ones passed over" (a half-space in feature space), so
+/// a candidate is scored by how far it breaks these constraints, newer rounds weighing more, and,
+/// among consistent candidates, by its closeness to the newest picks. Distances weigh the feature
+/// groups by how well each orders the earlier picks as the person did (groupWeights). "Less like
+/// this" marks a design as passed over twice as strongly.
 ///
 /// Steps adapt as in a self-adaptive evolution strategy: most candidates vary one part of the
 /// pick (its palette, strokes or initial state, or all), each recording in its lineage the way
@@ -24,6 +27,7 @@
 #include "marbler/Genome.h"
 #include "marbler/Operators.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -44,6 +48,9 @@ struct DesignFeatures {
 DesignFeatures designFeatures(const Genome& genome);
 /// The distance of two designs' features (0 for equal designs).
 double featureDistance(const DesignFeatures& a, const DesignFeatures& b);
+/// The features' groups, in the order of DesignFeatures::values.
+enum class FeatureGroup { Layout, Colour, Texture, ColourHistogram, Orientation, Tools };
+inline constexpr std::size_t FeatureGroups = 6;
 
 /// One generation a person chose from: the designs picked as parents, the ones passed over and
 /// the ones marked "less like this".
@@ -59,8 +66,8 @@ public:
     explicit PreferenceModel(const std::vector<PickRound>& rounds);
     /// Higher is more like the picks (0 at best; negative as constraints break).
     double score(const DesignFeatures& candidate) const;
-    /// Whether two rounds or more have a pick and something to compare it with: the first
-    /// generation bred from a population is bred as without steering.
+    /// Whether a round has a pick and something to compare it with: without one, breeding is as
+    /// without steering.
     bool informed() const { return mInformed; }
     /// The explanation in words: "more like your last 3 picks: finer patterns, warmer inks";
     /// empty when nothing has been learned.
@@ -72,7 +79,14 @@ public:
     };
     Steps steps() const { return mSteps; }
 
+    /// The weight of each feature group (FeatureGroups of them, adding up to their number):
+    /// equal until the picks tell which groups the person goes by.
+    const std::array<double, FeatureGroups>& groupWeights() const { return mGroupWeights; }
+    /// The distance of two designs as the model sees it: featureDistance with the groups weighed.
+    double distance(const DesignFeatures& a, const DesignFeatures& b) const;
+
 private:
+    void learnGroupWeights();
     struct Round {
         std::vector<DesignFeatures> picked, passed;
         std::vector<double> passedWeight;
@@ -82,6 +96,7 @@ private:
     bool mInformed = false;
     int mInformedRounds = 0;
     Steps mSteps;
+    std::array<double, FeatureGroups> mGroupWeights{1.0, 1.0, 1.0, 1.0, 1.0, 1.0};
     int mExplainedRounds = 0;
     std::vector<std::string> mWords;
 };
