@@ -7,7 +7,7 @@
 //
 //   bench_simulated_breeder [--runs R] [--generations G] [--side S] [--modes classic,steered]
 //                           [--distance pixel|stats|both] [--targets N] [--only K] [--first-run N]
-//                           [--trace 1]
+//                           [--candidates N] [--trace 1]
 //
 // Prints one line per run and a summary per mode and distance: wins against random search with
 // the same budget, medians of the best distance after the first nine, 5, 10 and 20 generations,
@@ -38,6 +38,7 @@ using namespace marbler;
 
 int gSide = 48;
 bool gTrace = false; // --trace 1: a line per generation, what was picked and how it was made
+int gCandidates = SteerCandidates; // --candidates N: how many candidates steering ranks
 
 struct Look {
     std::vector<double> lab;     // blurred L*a*b* per pixel
@@ -253,6 +254,7 @@ RunResult breedRun(Evaluator& distance, std::uint64_t seed, int generations, boo
             SteerRequest steer;
             steer.breed = request;
             steer.rounds = rounds;
+            steer.candidates = gCandidates;
             children = steerBreed(steer).children;
         } else {
             children = breed(request);
@@ -326,6 +328,8 @@ int main(int argc, char** argv) {
             only = std::stoi(value);
         else if (key == "--first-run")
             firstRun = std::max(1, std::stoi(value));
+        else if (key == "--candidates")
+            gCandidates = std::stoi(value);
         else if (key == "--trace")
             gTrace = value == "1";
         else {
