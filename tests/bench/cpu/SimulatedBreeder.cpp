@@ -37,7 +37,7 @@ namespace {
 using namespace marbler;
 
 int gSide = 48;
-bool gTrace = false; // --trace 1: a line per generation, what was picked and how it was made
+bool gTrace = false;               // --trace 1: a line per generation, what was picked and how it was made
 int gCandidates = SteerCandidates; // --candidates N: how many candidates steering ranks
 
 struct Look {
