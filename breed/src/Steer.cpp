@@ -208,8 +208,10 @@ public:
             add(x);
     }
     void add(const Operation& op) {
-        // A field added to Operation must be added here (the size tells).
+        // A field added to Operation must be added here (the size tells, where it is known).
+#if defined(__GLIBCXX__) && defined(__x86_64__)
         static_assert(sizeof(Operation) == 360, "add the new field of Operation to ContentKey");
+#endif
         add(op.tool), add(op.center), add(op.axis), add(op.direction), add(op.normal), add(op.angle);
         add(op.radius), add(op.alpha), add(op.lambda), add(op.spacing), add(op.amplitude);
         add(op.wavelength), add(op.phase), add(op.shape), add(op.color), add(op.core), add(op.teeth);
@@ -219,7 +221,9 @@ public:
 };
 
 std::uint64_t contentKey(const Genome& genome) {
+#if defined(__GLIBCXX__) && defined(__x86_64__)
     static_assert(sizeof(Genome) == 960, "add the new field of Genome to contentKey");
+#endif
     ContentKey key;
     key.add(genome.dimension), key.add(genome.size), key.add(genome.background), key.add(genome.palette);
     key.add(genome.initial), key.add(genome.operations), key.add(genome.bleed), key.add(genome.wrap);
@@ -457,7 +461,7 @@ PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
 
     mSteps.palette = movement(recent, LayoutEnd, ColourEnd);
     mSteps.initial = movement(recent, 0, LayoutEnd);
-    mSteps.strokes = movement(recent, ColourEnd, mRounds.back().picked.front().values.size());
+    mSteps.strokes = movement(recent, ColourEnd, std::size_t(1) << 30);
 
     // The words: the newest rounds' picks against what they passed over.
     DesignFeatures pickMean, passMean;
@@ -542,10 +546,14 @@ void PreferenceModel::learnGroupWeights() {
     // The newest pick is the closest yet to what the person has in mind: a group of features by
     // which earlier picks lie nearer to it than what they were passed over for is a group the
     // person goes by. Each group is weighed by how often it orders such pairs as the picks did.
-    const DesignFeatures& newest = mRounds.back().picked.front();
+    std::size_t last = mRounds.size();
+    while (last > 0 && mRounds[last - 1].picked.empty())
+        --last;
+    if (last == 0) return;
+    const DesignFeatures& newest = mRounds[last - 1].picked.front();
     std::array<double, FeatureGroups> agree{};
     double pairs = 0.0;
-    for (std::size_t r = 0; r + 1 < mRounds.size(); ++r)
+    for (std::size_t r = 0; r + 1 < last; ++r)
         for (const DesignFeatures& pick : mRounds[r].picked) {
             const std::array<double, FeatureGroups> toPick = groupSquares(pick, newest);
             if (std::all_of(toPick.begin(), toPick.end(), [](double d) { return d == 0.0; })) continue;

@@ -288,3 +288,17 @@ TEST(Steer, WithinOneFamilyFreshDesignsAreOfIt) {
     }
     EXPECT_GE(fresh, 1);
 }
+
+TEST(Steer, ARoundWithoutAPickIsReadWithoutIt) {
+    // A rounds file may hold a round with designs passed over and none picked (marbler breed
+    // --picks): the model learns from the others.
+    PickRound empty;
+    empty.passed.push_back(family("stone", 5));
+    const PreferenceModel model({zebraRound(1), zebraRound(2), empty});
+    EXPECT_TRUE(model.informed());
+    EXPECT_GT(model.score(designFeatures(family("zebra", 4242))),
+              model.score(designFeatures(family("stone", 4242))));
+    SteerRequest request = requestAfterZebras(3);
+    request.rounds.push_back(empty);
+    EXPECT_EQ(steerBreed(request).children.size(), 8u);
+}
