@@ -613,7 +613,6 @@ void checkBreedRequest(const BreedRequest& request) {
 std::vector<Genome> breed(const BreedRequest& request) {
     checkBreedRequest(request);
     const GeneticOperator op = request.op;
-    const auto parentCount = static_cast<int>(request.parents.size());
     const std::string name(operatorName(op));
 
     std::vector<std::string> parentIds;
