@@ -31,10 +31,13 @@ constexpr int LookSide = 16;  // a quarter of the child filter's glimpse: candid
 constexpr std::uint64_t CandidateStream = 0x7374656572000000ULL;
 /// The fresh designs' budget of look work (lookWork): as many looks of the parents', and at least
 /// this much.
-constexpr double FreshParentLooks = 16.0;
-constexpr double FreshFloorWork = 2000.0;
-/// Fresh designs drawn a generation (more while picks stall).
-constexpr int FreshDesigns = 8;
+constexpr double FreshParentLooks = 64.0;
+constexpr double FreshFloorWork = 8000.0;
+/// Fresh designs drawn a generation (more while picks stall), and how many of the best liked are
+/// shown: a person's pick among several strangers tells where to look more than among near
+/// neighbours, and the best liked of many are likelier close than one drawn at random.
+constexpr int FreshDesigns = 32;
+constexpr int FreshShown = 3;
 /// How much closeness to the newest pick counts among candidates that break no round.
 constexpr double NearestWeight = 0.05;
 
@@ -797,9 +800,8 @@ SteerResult steerBreed(const SteerRequest& request) {
         taken.insert(ids[i]);
     };
     const int exploit = base.count > 2 ? base.count - 1 : base.count;
-    // First the best-liked fresh designs (one; two once a pick is kept; half the children once it is
-    // kept again: a plateau, left by looking elsewhere).
-    const int freshShown = plan.stale >= 2 ? exploit / 2 : std::min(exploit / 3, plan.stale >= 1 ? 2 : 1);
+    // First the best-liked fresh designs (up to a third of the children; with a few children, fewer).
+    const int freshShown = std::min(FreshShown, exploit / 2);
     for (std::size_t i : order) {
         if (int(chosen.size()) >= freshShown) break;
         if (i >= firstFresh && acceptable(i, NearDuplicateDeltaE)) choose(i);
@@ -864,7 +866,7 @@ SteerResult steerBreed(const SteerRequest& request) {
         const int rank = int(std::find(order.begin(), order.end(), i) - order.begin()) + 1;
         lineage.other["steered"] = rank;
         if (kinds[i] == "wildcard") {
-            lineage.change = "a fresh design, ranked like your picks";
+            lineage.change = "everything: a fresh design, one of the best liked of many";
             child.meta.lineage = lineage;
             if (child.meta.name)
                 child.meta.name = *child.meta.name + " (g" + std::to_string(generation) + " #" +

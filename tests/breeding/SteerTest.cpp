@@ -262,12 +262,17 @@ TEST(Steer, APickPassesItsStepOnAndAPickKeptAgainShrinksThenWidensIt) {
     EXPECT_GT(steps[3], steps[2]);
 }
 
-TEST(Steer, AFreshDesignLikeThePicksIsAmongTheChildren) {
+TEST(Steer, FreshDesignsLikeThePicksAreAThirdOfTheChildren) {
+    // A pick among several strangers says where to look: three of the eight children are the
+    // best liked of many fresh designs, and say so.
     const SteerResult result = steerBreed(requestAfterZebras(11));
     int fresh = 0;
     for (const Genome& child : result.children)
-        fresh += child.meta.lineage && child.meta.lineage->op == std::optional<std::string>("wildcard");
-    EXPECT_GE(fresh, 1);
+        if (child.meta.lineage && child.meta.lineage->op == std::optional<std::string>("wildcard")) {
+            ++fresh;
+            EXPECT_NE(child.meta.lineage->change.value_or("").find("fresh design"), std::string::npos);
+        }
+    EXPECT_GE(fresh, 3);
 }
 
 TEST(Steer, WithinOneFamilyFreshDesignsAreOfIt) {
