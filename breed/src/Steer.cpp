@@ -291,11 +291,12 @@ constexpr std::size_t ColourEnd = LayoutEnd + 7;
 constexpr std::size_t TextureEnd = ColourEnd + 9;
 constexpr std::size_t HistogramEnd = TextureEnd + ColourBins;
 constexpr std::size_t OrientationEnd = HistogramEnd + 2 * OrientationBins;
+constexpr std::size_t FeaturesEnd = OrientationEnd + ToolCount; // the stroke kinds' shares last
 
 /// The squared distances of two designs' features per group (FeatureGroup).
 std::array<double, FeatureGroups> groupSquares(const DesignFeatures& a, const DesignFeatures& b) {
     constexpr std::array<std::size_t, FeatureGroups + 1> bounds{
-        0, LayoutEnd, ColourEnd, TextureEnd, HistogramEnd, OrientationEnd, 1u << 30};
+        0, LayoutEnd, ColourEnd, TextureEnd, HistogramEnd, OrientationEnd, FeaturesEnd};
     std::array<double, FeatureGroups> out{};
     for (std::size_t g = 0; g < FeatureGroups; ++g)
         out[g] = sq(partDistance(a, b, bounds[g], bounds[g + 1]));
@@ -464,7 +465,7 @@ PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
 
     mSteps.palette = movement(recent, LayoutEnd, ColourEnd);
     mSteps.initial = movement(recent, 0, LayoutEnd);
-    mSteps.strokes = movement(recent, ColourEnd, std::size_t(1) << 30);
+    mSteps.strokes = movement(recent, ColourEnd, FeaturesEnd);
 
     // The words: the newest rounds' picks against what they passed over.
     DesignFeatures pickMean, passMean;
@@ -800,7 +801,8 @@ SteerResult steerBreed(const SteerRequest& request) {
         taken.insert(ids[i]);
     };
     const int exploit = base.count > 2 ? base.count - 1 : base.count;
-    // First the best-liked fresh designs (up to a third of the children; with a few children, fewer).
+    // First the best-liked fresh designs: three (a third of a generation of eight), fewer when the
+    // children are few.
     const int freshShown = std::min(FreshShown, exploit / 2);
     for (std::size_t i : order) {
         if (int(chosen.size()) >= freshShown) break;
