@@ -18,19 +18,6 @@
 
 namespace marbler::ui {
 
-namespace {
-
-/// SplitMix64: turns (session seed, counter) into well-spread seeds, so neighbouring
-/// generations do not get neighbouring seeds.
-std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t counter) {
-    std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (counter + 1);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-} // namespace
-
 PopulationModel::PopulationModel(QObject* parent)
     : QObject(parent) {
     mHistory.emplace_back();
@@ -159,7 +146,7 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     next.description = selected.size() == 1
                            ? tr("%1 of 1 parent").arg(operatorLabel(op))
                            : tr("%1 of %2 parents").arg(operatorLabel(op)).arg(selected.size());
-    if (mWildcard && children.size() > 1) children.back() = wildcard(request, children.back());
+    if (mWildcard && children.size() > 1) children.back() = wildcardChild(request, children.back());
     std::size_t child = 0;
     for (int i = 0; i < CellCount; ++i) {
         if (current().selected[std::size_t(i)]) {
@@ -291,41 +278,6 @@ void PopulationModel::applyColourways(bool mix, double strength, const QString& 
         next.cells[std::size_t(i)] =
             current().selected[std::size_t(i)] ? current().cells[std::size_t(i)] : children[child++];
     pushGeneration(std::move(next));
-}
-
-Genome PopulationModel::wildcard(const BreedRequest& request, const Genome& replaced) const {
-    // Of the parents' family when they have one (the first parent that does), else free.
-    const Family* family = nullptr;
-    for (const Genome& parent : request.parents)
-        if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
-    const int dimension = request.parents.front().dimension;
-    if (family && family->dimension != dimension) family = nullptr;
-    std::set<std::string> taken;
-    for (const Genome& parent : request.parents)
-        taken.insert(genomeId(parent));
-    Genome g;
-    std::uint64_t seed = 0;
-    for (std::uint64_t draw = 0; draw < 16; ++draw) {
-        seed = mixSeed(request.seed, 0x77696c64ULL + draw) & 0xffffffffULL;
-        g = family ? familyGenome(*family, seed) : randomGenome(seed, dimension);
-        if (!taken.count(genomeId(g))) break;
-    }
-    // The wildcard takes the cell's place in the lineage: its name, generation and number, and
-    // an operator of its own so the tree and tooltips can say what it is.
-    MetaLineage lineage;
-    lineage.op = "wildcard";
-    lineage.seed = seed;
-    if (replaced.meta.lineage) {
-        lineage.child = replaced.meta.lineage->child;
-        lineage.generation = replaced.meta.lineage->generation;
-    }
-    g.meta.lineage = lineage;
-    if (lineage.generation && lineage.child && g.meta.name)
-        g.meta.name =
-            *g.meta.name + " (g" + std::to_string(*lineage.generation) + " #" +
-            std::to_string(request.childNumbers.empty() ? *lineage.child : request.childNumbers.back()) + ")";
-    g.meta.id = genomeId(g);
-    return g;
 }
 
 void PopulationModel::newRandomPopulation(int dimension, const std::string& family) {

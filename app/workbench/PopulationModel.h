@@ -123,10 +123,10 @@ public:
     /// breeding again from a generation one went back to draws anew). Throws marbler::Error
     /// (InputError for a wrong parent count or mixed dimensions).
     void apply(GeneticOperator op, double strength);
-    /// Whether apply() makes its last offspring cell a wildcard (on by default): a fresh design
-    /// of the parents' family (familyGenome), or a free random one without a family, seeded
-    /// from the generation's seed, against breeding fatigue. Its meta.lineage.operator is
-    /// "wildcard".
+    /// Whether apply() makes its last offspring cell a wildcard (on by default; wildcardChild,
+    /// Operators.h): a fresh design of the parents' family, or a free random one without a
+    /// family, seeded from the generation's seed, against breeding fatigue. Its
+    /// meta.lineage.operator is "wildcard".
     bool wildcardCell() const { return mWildcard; }
     void setWildcardCell(bool on) { mWildcard = on; }
     // --- Steering (issue 26, Steer.h) ---
@@ -310,8 +310,6 @@ private:
     void pushGeneration(Generation generation);
     /// Gives a new generation's designs names no other design of the session has.
     void uniqueNames(Generation& generation) const;
-    /// The wildcard that takes the place of `replaced`, the last offspring of `request`.
-    Genome wildcard(const BreedRequest& request, const Genome& replaced) const;
     /// The generation goForward() goes to, -1 when the current one has no child.
     int forwardTarget() const;
     /// Makes a generation current and remembers the way to it for Forward.

@@ -2,6 +2,7 @@
 
 #include "marbler/ChangeSummary.h"
 #include "marbler/Error.h"
+#include "marbler/Families.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
@@ -569,6 +570,41 @@ static std::string describeVariation(const BreedRequest& request, const std::vec
             of = "#" + std::to_string(request.childNumbers.empty() ? static_cast<int>(k) + 1
                                                                    : request.childNumbers[k]);
     return "a variation of " + of + ": " + describeChange(repeated, child);
+}
+
+Genome wildcardChild(const BreedRequest& request, const Genome& replaced) {
+    if (request.parents.empty()) throw InputError("a wildcard needs the parents it stands beside");
+    const Family* family = nullptr;
+    for (const Genome& parent : request.parents)
+        if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
+    const int dimension = request.parents.front().dimension;
+    if (family && family->dimension != dimension) family = nullptr;
+    std::set<std::string> taken;
+    for (const Genome& parent : request.parents)
+        taken.insert(genomeId(parent));
+    Genome g;
+    std::uint64_t seed = 0;
+    for (std::uint64_t draw = 0; draw < 16; ++draw) {
+        seed = mixSeed(request.seed, 0x77696c64ULL + draw) & 0xffffffffULL;
+        g = family ? familyGenome(*family, seed) : randomGenome(seed, dimension);
+        if (!taken.count(genomeId(g))) break;
+    }
+    // The wildcard takes the replaced child's place in the lineage: its generation and number,
+    // and an operator of its own so the tree and tooltips can say what it is.
+    MetaLineage lineage;
+    lineage.op = "wildcard";
+    lineage.seed = seed;
+    if (replaced.meta.lineage) {
+        lineage.child = replaced.meta.lineage->child;
+        lineage.generation = replaced.meta.lineage->generation;
+    }
+    g.meta.lineage = lineage;
+    if (lineage.generation && lineage.child && g.meta.name)
+        g.meta.name =
+            *g.meta.name + " (g" + std::to_string(*lineage.generation) + " #" +
+            std::to_string(request.childNumbers.empty() ? *lineage.child : request.childNumbers.back()) + ")";
+    g.meta.id = genomeId(g);
+    return g;
 }
 
 void keepWrapValid(Genome& child) {

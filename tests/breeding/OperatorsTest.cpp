@@ -2,6 +2,7 @@
 
 #include "marbler/Operators.h"
 #include "marbler/Error.h"
+#include "marbler/Families.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
@@ -777,6 +778,36 @@ TEST(OperatorsStylus, RecombinationAndSwapCarryAStrokeWhole) {
     EXPECT_GT(strokes, 0);
     for (const Genome& child : breed(request(GeneticOperator::Swap, {a, other}, 2, 2)))
         EXPECT_TRUE(child.operations == a.operations || child.operations == other.operations);
+}
+
+TEST(Wildcard, AFreshDesignOfTheParentsFamilyInTheReplacedChildsPlace) {
+    BreedRequest request;
+    request.parents = {familyGenome(*findFamily("zebra"), 4)};
+    request.seed = 77;
+    request.childNumbers = {2, 3, 4, 5, 6, 7, 8, 9};
+    const std::vector<Genome> children = breed(request);
+    const Genome wild = wildcardChild(request, children.back());
+    EXPECT_EQ(wild.meta.family, std::optional<std::string>("zebra"));
+    EXPECT_NE(genomeId(wild), genomeId(request.parents.front()));
+    ASSERT_TRUE(wild.meta.lineage);
+    EXPECT_EQ(wild.meta.lineage->op, std::optional<std::string>("wildcard"));
+    EXPECT_EQ(wild.meta.lineage->child, children.back().meta.lineage->child);
+    EXPECT_EQ(wild.meta.lineage->generation, children.back().meta.lineage->generation);
+    EXPECT_NE(wild.meta.name.value_or("").find("#9)"), std::string::npos) << wild.meta.name.value_or("");
+    EXPECT_EQ(wild.meta.id, std::optional<std::string>(genomeId(wild)));
+    EXPECT_NO_THROW(validateGenome(wild, "wildcard"));
+    // The seed alone decides it.
+    EXPECT_EQ(serializeGenome(wildcardChild(request, children.back())), serializeGenome(wild));
+    request.seed = 78;
+    EXPECT_NE(genomeId(wildcardChild(request, children.back())), genomeId(wild));
+    // A solid parent of a flat family's name: a free solid design, not the flat family's.
+    Genome solid = randomGenome(5, 3);
+    solid.meta.family = "zebra";
+    request.parents = {solid};
+    const Genome free = wildcardChild(request, children.back());
+    EXPECT_EQ(free.dimension, 3);
+    EXPECT_FALSE(free.meta.family);
+    EXPECT_THROW(wildcardChild(BreedRequest{}, children.back()), InputError);
 }
 
 TEST(OperatorNames, RoundTrip) {

@@ -175,6 +175,13 @@ inline constexpr int MaxChildren = 1000;
 /// [1, MaxChildren], a strength outside [0, 1], a generation below 1 or childNumbers that are
 /// neither empty nor one per child.
 std::vector<Genome> breed(const BreedRequest& request);
+/// The window's wildcard cell and `marbler breed --wildcard`, against breeding fatigue: a fresh
+/// design of the parents' family (the first parent that names one, when it is of the parents'
+/// dimension; else a free random design), drawn again (16 draws at most) while it equals a
+/// parent. It takes `replaced`'s place in the lineage: operator "wildcard", the draw's seed,
+/// `replaced`'s generation and number, and its name's " (gN #K)" with K the request's last child
+/// number. Reproducible from the request's seed.
+Genome wildcardChild(const BreedRequest& request, const Genome& replaced);
 /// A wrapping bath (docs/genome-format.md) stays one only while every step can wrap: a child
 /// given a drop or a comb becomes a plain design, without a lattice (issue 29).
 void keepWrapValid(Genome& child);

@@ -73,6 +73,12 @@ constexpr std::uint64_t splitMix64(std::uint64_t x) {
     return x ^ (x >> 31);
 }
 
+/// The `counter`th seed drawn from `seed` (the window's generations, the wildcard's draws): the
+/// SplitMix64 sequence that starts at `seed`, so neighbouring counters give unrelated seeds.
+constexpr std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t counter) {
+    return splitMix64(seed + 0x9e3779b97f4a7c15ULL * counter);
+}
+
 /// Child `index`'s own random stream: it depends on (seed, index) only, so children are
 /// reproducible one by one and asking for more keeps the first ones. `salt` and `stream` keep
 /// one kind of child (bred, colourway) apart from another of the same seed.

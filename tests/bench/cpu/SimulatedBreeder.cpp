@@ -135,10 +135,6 @@ double statsDistance(const Look& a, const Look& b) {
     return 0.5 * (0.5 * colours + texture);
 }
 
-std::uint64_t mixSeed(std::uint64_t seed, std::uint64_t counter) {
-    return splitMix64(seed + 0x9e3779b97f4a7c15ULL * (counter + 1));
-}
-
 /// A design from the window's mix of generators: a flat family or the free generator.
 Genome generated(std::uint64_t seed) {
     std::vector<const Family*> sources;
@@ -149,15 +145,6 @@ Genome generated(std::uint64_t seed) {
     const Family* source = sources[rng.below(std::uint32_t(sources.size()))];
     const std::uint64_t s = rng.nextUint();
     return source ? familyGenome(*source, s) : randomGenome(s, 2);
-}
-
-/// The window's wildcard: a fresh design of the parents' family, or a free random one.
-Genome wildcard(const std::vector<Genome>& parents, std::uint64_t seed) {
-    const Family* family = nullptr;
-    for (const Genome& p : parents)
-        if (!family && p.meta.family) family = findFamily(*p.meta.family);
-    const std::uint64_t s = mixSeed(seed, 0x77696c64ULL) & 0xffffffffULL;
-    return family ? familyGenome(*family, s) : randomGenome(s, 2);
 }
 
 struct Target {
@@ -195,7 +182,7 @@ RunResult breedRun(Evaluator& distance, std::uint64_t seed, int generations, boo
     RunResult result;
     std::array<Genome, 9> grid;
     for (int i = 0; i < 9; ++i)
-        grid[std::size_t(i)] = generated(mixSeed(seed, std::uint64_t(i)));
+        grid[std::size_t(i)] = generated(mixSeed(seed, std::uint64_t(i) + 1));
     int shown = 9;
     double best = 1e9;
     for (const Genome& g : grid)
@@ -236,7 +223,7 @@ RunResult breedRun(Evaluator& distance, std::uint64_t seed, int generations, boo
         BreedRequest request;
         request.op = recombine ? GeneticOperator::Recombine : GeneticOperator::Alter;
         request.strength = 0.4;
-        request.seed = mixSeed(seed, 1000 + std::uint64_t(gen));
+        request.seed = mixSeed(seed, 1001 + std::uint64_t(gen));
         for (int k = 0; k < parentCount; ++k) {
             selected[std::size_t(order[std::size_t(k)])] = true;
             request.parents.push_back(grid[std::size_t(order[std::size_t(k)])]);
@@ -259,7 +246,7 @@ RunResult breedRun(Evaluator& distance, std::uint64_t seed, int generations, boo
         } else {
             children = breed(request);
         }
-        children.back() = wildcard(request.parents, request.seed);
+        children.back() = wildcardChild(request, children.back()); // as the window's wildcard cell
         millis += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::size_t c = 0;
         for (int i = 0; i < 9; ++i)
@@ -279,7 +266,7 @@ std::vector<double> randomRun(Evaluator& distance, std::uint64_t seed, int count
     std::vector<double> bestAfter; // after k+1 designs
     double best = 1e9;
     for (int k = 0; k < count; ++k) {
-        best = std::min(best, distance(generated(mixSeed(seed ^ 0x5241ULL, std::uint64_t(k)))));
+        best = std::min(best, distance(generated(mixSeed(seed ^ 0x5241ULL, std::uint64_t(k) + 1))));
         bestAfter.push_back(best);
     }
     return bestAfter;
