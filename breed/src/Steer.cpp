@@ -459,6 +459,8 @@ PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
         if (!round.picked.empty() && !round.passed.empty()) ++mInformedRounds;
         mRounds.insert(mRounds.begin(), std::move(round));
     }
+    for (int r = int(mRounds.size()); r-- > 0 && mNewest < 0;)
+        if (!mRounds[std::size_t(r)].picked.empty()) mNewest = r;
     mInformed = mInformedRounds >= 1;
     if (!mInformed) return;
     learnGroupWeights();
@@ -536,13 +538,11 @@ double PreferenceModel::score(const DesignFeatures& c) const {
     if (total == 0.0) return 0.0;
     // Among candidates that break nothing, the one nearest the newest picks.
     double nearest = 0.0;
-    for (std::size_t r = mRounds.size(); r-- > 0;)
-        if (!mRounds[r].picked.empty()) {
-            nearest = 1e300;
-            for (const DesignFeatures& p : mRounds[r].picked)
-                nearest = std::min(nearest, distance(c, p));
-            break;
-        }
+    if (mNewest >= 0) {
+        nearest = 1e300;
+        for (const DesignFeatures& p : mRounds[std::size_t(mNewest)].picked)
+            nearest = std::min(nearest, distance(c, p));
+    }
     return -(broken / total) - NearestWeight * nearest;
 }
 
@@ -550,24 +550,25 @@ void PreferenceModel::learnGroupWeights() {
     // The newest pick is the closest yet to what the person has in mind: a group of features by
     // which earlier picks lie nearer to it than what they were passed over for is a group the
     // person goes by. Each group is weighed by how often it orders such pairs as the picks did.
-    std::size_t last = mRounds.size();
-    while (last > 0 && mRounds[last - 1].picked.empty())
-        --last;
-    if (last == 0) return;
-    const DesignFeatures& newest = mRounds[last - 1].picked.front();
+    if (mNewest < 0) return;
+    const std::size_t last = std::size_t(mNewest) + 1;
+    const DesignFeatures& newest = mRounds[std::size_t(mNewest)].picked.front();
     std::array<double, FeatureGroups> agree{};
     double pairs = 0.0;
-    for (std::size_t r = 0; r + 1 < last; ++r)
+    for (std::size_t r = 0; r + 1 < last; ++r) {
+        std::vector<std::array<double, FeatureGroups>> toPassed;
+        for (const DesignFeatures& passed : mRounds[r].passed)
+            toPassed.push_back(groupSquares(passed, newest));
         for (const DesignFeatures& pick : mRounds[r].picked) {
             const std::array<double, FeatureGroups> toPick = groupSquares(pick, newest);
             if (std::all_of(toPick.begin(), toPick.end(), [](double d) { return d == 0.0; })) continue;
-            for (const DesignFeatures& passed : mRounds[r].passed) {
-                const std::array<double, FeatureGroups> toPassed = groupSquares(passed, newest);
+            for (const std::array<double, FeatureGroups>& passed : toPassed) {
                 for (std::size_t g = 0; g < FeatureGroups; ++g)
-                    agree[g] += toPick[g] < toPassed[g] ? 1.0 : toPick[g] == toPassed[g] ? 0.5 : 0.0;
+                    agree[g] += toPick[g] < passed[g] ? 1.0 : toPick[g] == passed[g] ? 0.5 : 0.0;
                 pairs += 1.0;
             }
         }
+    }
     if (pairs < 8.0) return;
     double total = 0.0;
     for (std::size_t g = 0; g < FeatureGroups; ++g) {

@@ -93,6 +93,8 @@ private:
         double weight = 1.0;
     };
     std::vector<Round> mRounds;
+    /// The newest round with a pick (the picks a candidate should be near), -1 for none.
+    int mNewest = -1;
     bool mInformed = false;
     int mInformedRounds = 0;
     Steps mSteps;
