@@ -131,6 +131,7 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
         SteerRequest steer;
         steer.breed = request;
         steer.rounds = steerRounds(request.parents);
+        steer.fresh = mWildcard;
         SteerResult steered = steerBreed(steer);
         children = std::move(steered.children);
         explanation = QString::fromStdString(steered.explanation);

@@ -126,7 +126,8 @@ public:
     /// Whether apply() makes its last offspring cell a wildcard (on by default; wildcardChild,
     /// Operators.h): a fresh design of the parents' family, or a free random one without a
     /// family, seeded from the generation's seed, against breeding fatigue. Its
-    /// meta.lineage.operator is "wildcard".
+    /// meta.lineage.operator is "wildcard". Off, steering shows no fresh designs either: every
+    /// child is then a variation of the picks.
     bool wildcardCell() const { return mWildcard; }
     void setWildcardCell(bool on) { mWildcard = on; }
     // --- Steering (issue 26, Steer.h) ---

@@ -656,8 +656,8 @@ SteerResult steerBreed(const SteerRequest& request) {
         std::string name = "alter";
         int way = -1;
         double own = 0.0;
-        if (k % 7 == 6) {
-            if (mates.size() > 1 && rng.chance(0.5)) {
+        if (k % 7 == 6 && (request.fresh || mates.size() > 1)) {
+            if (mates.size() > 1 && (!request.fresh || rng.chance(0.5))) {
                 g = recombineGenomes(mates, p, rng);
                 name = "recombine";
             } else {
@@ -714,7 +714,7 @@ SteerResult steerBreed(const SteerRequest& request) {
         if (f.dimension == dimension && (!oneFamily || f.name == family->name)) generators.push_back(&f);
     if (!oneFamily) generators.push_back(nullptr);
     const std::size_t firstFresh = pool.size();
-    const int fresh = FreshDesigns + 6 * std::min(plan.stale, 3);
+    const int fresh = request.fresh ? FreshDesigns + 6 * std::min(plan.stale, 3) : 0;
     // The fresh designs' looks share a budget of work: as much as FreshParentLooks looks of the
     // parents', and at least FreshFloorWork (a dozen small designs). One that does not fit is
     // drawn again (twice at most), then left out: a generation must not wait on strangers' looks.
@@ -803,8 +803,8 @@ SteerResult steerBreed(const SteerRequest& request) {
     };
     const int exploit = base.count > 2 ? base.count - 1 : base.count;
     // First the best-liked fresh designs: three (a third of a generation of eight), fewer when the
-    // children are few.
-    const int freshShown = std::min(FreshShown, exploit / 2);
+    // children are few; none with the wildcard off.
+    const int freshShown = request.fresh ? std::min(FreshShown, exploit / 2) : 0;
     for (std::size_t i : order) {
         if (int(chosen.size()) >= freshShown) break;
         if (i >= firstFresh && acceptable(i, NearDuplicateDeltaE)) choose(i);

@@ -275,6 +275,21 @@ TEST(Steer, FreshDesignsLikeThePicksAreAThirdOfTheChildren) {
     EXPECT_GE(fresh, 3);
 }
 
+TEST(Steer, WithTheWildcardOffEveryChildVariesThePick) {
+    // The window's Wildcard cell off: no fresh design among the children, each one bred from the
+    // pick (its lineage names it).
+    SteerRequest request = requestAfterZebras(11);
+    request.fresh = false;
+    const SteerResult result = steerBreed(request);
+    ASSERT_EQ(result.children.size(), 8u);
+    const std::string pick = genomeId(request.breed.parents.front());
+    for (const Genome& child : result.children) {
+        ASSERT_TRUE(child.meta.lineage);
+        EXPECT_NE(child.meta.lineage->op, std::optional<std::string>("wildcard"));
+        EXPECT_EQ(child.meta.lineage->parents, std::optional(std::vector<std::string>{pick}));
+    }
+}
+
 TEST(Steer, WithinOneFamilyFreshDesignsAreOfIt) {
     // Every design of the rounds a zebra (a population of one family chosen in the tool bar):
     // the fresh designs among the children are zebras too.

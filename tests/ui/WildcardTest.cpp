@@ -71,6 +71,29 @@ TEST_F(WildcardTest, TheToggleIsRememberedAndTurnsItOff) {
     EXPECT_EQ(QSettings().value(QStringLiteral("breed/wildcard")).toBool(), true);
 }
 
+TEST_F(WildcardTest, OffItAlsoKeepsSteeringsFreshDesignsOut) {
+    // Steering shows fresh designs beside the pick's variations; a person who turned the
+    // wildcard off wants variations of the pick only.
+    mWindow->newRandomPopulation(2);
+    ASSERT_TRUE(model().steering());
+    const auto freshCells = [&] {
+        int fresh = 0;
+        for (int i = 1; i < CellCount; ++i)
+            fresh += lineageOf(*model().cell(i)).op == QStringLiteral("wildcard");
+        return fresh;
+    };
+    model().clearSelection();
+    model().setSelected(0, true);
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Alter));
+    EXPECT_GE(freshCells(), 3) << "the wildcard, and steering's fresh designs";
+    toggle()->setChecked(false);
+    model().clearSelection();
+    model().setSelected(0, true);
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Alter));
+    EXPECT_EQ(freshCells(), 0);
+    toggle()->setChecked(true);
+}
+
 TEST(WildcardModel, WithoutAFamilyAFreeDesignSeededByTheGeneration) {
     const auto breedFromFree = [](std::uint64_t sessionSeed) {
         PopulationModel model;

@@ -112,6 +112,10 @@ struct SteerRequest {
     BreedRequest breed;            ///< the operator, parents, seed, count... as breed() takes them
     std::vector<PickRound> rounds; ///< the person's picks, oldest first (the newest: these parents)
     int candidates = SteerCandidates;
+    /// Whether fresh designs of the generators are drawn and shown beside the pick's variations
+    /// (the window's Wildcard cell; `marbler breed --no-fresh` turns them off): without them
+    /// every child is a variation of the picks.
+    bool fresh = true;
 };
 
 /// How a steered generation varies the newest pick one way (docs/breeding.md): the palette,
