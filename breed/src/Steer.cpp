@@ -803,8 +803,10 @@ SteerResult steerBreed(const SteerRequest& request) {
     };
     const int exploit = base.count > 2 ? base.count - 1 : base.count;
     // First the best-liked fresh designs: three (a third of a generation of eight), fewer when the
-    // children are few; none with the wildcard off.
-    const int freshShown = request.fresh ? std::min(FreshShown, exploit / 2) : 0;
+    // children are few; on a plateau (the pick kept twice) half the children, however many.
+    const int freshShown = !request.fresh    ? 0
+                           : plan.stale >= 2 ? exploit / 2
+                                             : std::min(FreshShown, exploit / 2);
     for (std::size_t i : order) {
         if (int(chosen.size()) >= freshShown) break;
         if (i >= firstFresh && acceptable(i, NearDuplicateDeltaE)) choose(i);

@@ -290,6 +290,27 @@ TEST(Steer, WithTheWildcardOffEveryChildVariesThePick) {
     }
 }
 
+TEST(Steer, OnAPlateauHalfOfManyChildrenAreFresh) {
+    // The same zebra kept three rounds running: no variation came closer, so however many
+    // children are asked for, half of them (not three) are the best liked of the fresh designs.
+    SteerRequest request = requestAfterZebras(11);
+    request.rounds = {zebraRound(1), zebraRound(2), zebraRound(2), zebraRound(2)};
+    request.breed.parents = {request.rounds.back().picked.front()};
+    request.breed.count = 20;
+    request.candidates = 40;
+    const auto freshIn = [](const SteerResult& result) {
+        int fresh = 0;
+        for (const Genome& child : result.children)
+            fresh += child.meta.lineage && child.meta.lineage->op == std::optional<std::string>("wildcard");
+        return fresh;
+    };
+    EXPECT_EQ(freshIn(steerBreed(request)), 9);
+    // Not on a plateau: three, as in a generation of eight.
+    request.rounds = {zebraRound(1), zebraRound(2), zebraRound(3)};
+    request.breed.parents = {request.rounds.back().picked.front()};
+    EXPECT_EQ(freshIn(steerBreed(request)), 3);
+}
+
 TEST(Steer, WithinOneFamilyFreshDesignsAreOfIt) {
     // Every design of the rounds a zebra (a population of one family chosen in the tool bar):
     // the fresh designs among the children are zebras too.
