@@ -3,6 +3,7 @@
 #include "cli/Cli.h"
 
 #include "marbler/AtomicFile.h"
+#include "marbler/Colourways.h"
 #include "marbler/Error.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/ImageFormats.h"
@@ -31,7 +32,8 @@ namespace fs = std::filesystem;
 
 constexpr const char* BreedHelp =
     R"(usage: marbler breed OPERATOR PARENT... --seed N [--count K] [--strength S] -o DIR
-                    [--passed FILE,...] [--picks ROUNDS.json] [--candidates N]
+                    [--wildcard] [--passed FILE,...] [--picks ROUNDS.json] [--candidates N]
+                    [--no-fresh]
 
 Writes K children of the PARENT genome files (or PNG or TIFF images that carry genomes), made
 by a genetic operator, as DIR/child-01.marble.json, DIR/child-02.marble.json, ... (DIR is
@@ -47,6 +49,10 @@ operators:
              the strokes of the other, both ways (children 1 and 2); further children
              are gentle variations of these two, alternately
   reinit     one parent: a new initial drop pattern, the same strokes
+  colourway  colourways, as the window's Colourways mode: the structure of one parent kept
+             exactly and only its inks and background bred (at --strength; 1 gives
+             palettes of their own), or with two or more parents their inks mixed; a
+             parent whose palette is locked is refused
 
 No two children are equal, and none equals a parent (meta aside): a child that would
 repeat one is drawn again, or becomes a gentle variation of itself, which its
@@ -66,16 +72,20 @@ beside them; ROUNDS.json holds the earlier rounds, oldest first:
   {"rounds": [{"picked": ["a.marble.json"], "passed": ["b.marble.json", ...],
                "disliked": ["c.marble.json"]}, ...]}
 (files relative to ROUNDS.json's folder; "disliked" marks "less like this"). Without a round
-that has a pick and a design passed over, breeding is as without steering.
+that has a pick and a design passed over, breeding is as without steering. The window's
+Wildcard cell is --wildcard here, and the window with it off is --no-fresh as well.
 
 options:
   --seed N          the seed, a non-negative 64-bit integer (required)
   --count K         how many children, 1 to 1000 (default 8)
-  --strength S      alteration strength, 0 to 1 (default 0.5; alter only)
+  --strength S      alteration strength, 0 to 1 (default 0.5; alter and colourway)
+  --wildcard        the last child is a fresh design of the parents' family (or a random one),
+                    as the window's Wildcard cell, against breeding fatigue
   -o, --output DIR  the folder to write the children into (required)
   --passed FILES    designs passed over beside the parents, comma-separated (steering)
   --picks FILE      the earlier rounds of picks, as above (steering)
   --candidates N    how many candidates steering ranks, K to 1000 (default 24)
+  --no-fresh        steering shows no fresh designs: every child varies the picks
   -h, --help        this text
 )";
 
@@ -193,22 +203,32 @@ int runBreed(std::span<const std::string> words) {
     return guarded("breed", [&] {
         Args args =
             parseArgs(words, {"seed", "count", "strength", "o", "output", "passed", "picks", "candidates"},
-                      {"h", "help"});
+                      {"h", "help", "wildcard", "no-fresh"});
         if (args.has("h") || args.has("help")) {
             std::cout << BreedHelp;
             return ExitOk;
         }
         if (args.positional.empty())
-            throw InputError("an operator is required: alter, recombine, swap or reinit");
-        std::optional<GeneticOperator> op = parseOperator(args.positional[0]);
+            throw InputError("an operator is required: alter, recombine, swap, reinit or colourway");
+        const bool colourway = args.positional[0] == "colourway";
+        std::optional<GeneticOperator> op =
+            colourway ? std::optional(GeneticOperator::Alter) : parseOperator(args.positional[0]);
         if (!op)
             throw InputError("unknown operator '" + args.positional[0] +
-                             "' (alter, recombine, swap or reinit)");
+                             "' (alter, recombine, swap, reinit or colourway)");
+        if (colourway)
+            for (const char* steering : {"passed", "picks", "candidates", "no-fresh"})
+                if (args.has(steering))
+                    throw InputError(std::string("--") + steering +
+                                     ": colourways are not steered (only the operators are)");
+        if (colourway && args.has("wildcard"))
+            throw InputError("--wildcard: colourways keep the parent's structure, a wildcard would not");
 
         BreedRequest request;
         request.op = *op;
         int parents = static_cast<int>(args.positional.size()) - 1;
-        if (parents < minParents(*op) || (maxParents(*op) > 0 && parents > maxParents(*op))) {
+        if (colourway && parents < 1) throw InputError("colourway takes at least 1 parent (got 0)");
+        if (!colourway && (parents < minParents(*op) || (maxParents(*op) > 0 && parents > maxParents(*op)))) {
             std::string want = maxParents(*op) == 0 ? "at least " + std::to_string(minParents(*op))
                                                     : std::to_string(minParents(*op));
             throw InputError(std::string(operatorName(*op)) + " takes " + want + " parent" +
@@ -234,20 +254,37 @@ int runBreed(std::span<const std::string> words) {
         // Everything is bred and serialised before the first byte is written, so bad input
         // never leaves a partial set of children.
         // Steering (issue 26): the rounds of picks, oldest first, then this one.
-        SteerRequest steer;
-        steer.breed = request;
-        steer.candidates = parseIntOption(args, "candidates", SteerCandidates, request.count, MaxChildren);
-        if (std::optional<std::string> picks = args.get("picks")) steer.rounds = readPickRounds(*picks);
-        if (args.has("passed") || args.has("picks")) {
-            PickRound now;
-            now.picked = request.parents;
-            if (std::optional<std::string> passed = args.get("passed"))
-                for (const std::string& file : splitList(*passed))
-                    now.passed.push_back(loadGenomeArgument("breed", file));
-            steer.rounds.push_back(std::move(now));
+        SteerResult steered;
+        std::vector<Genome> children;
+        if (colourway) {
+            ColourwayRequest colours;
+            colours.parents = request.parents;
+            colours.mix = request.parents.size() > 1;
+            colours.strength = request.strength;
+            colours.seed = request.seed;
+            colours.count = request.count;
+            children = colourways(colours);
+        } else {
+            SteerRequest steer;
+            steer.breed = request;
+            steer.candidates =
+                parseIntOption(args, "candidates", SteerCandidates, request.count, MaxChildren);
+            steer.fresh = !args.has("no-fresh");
+            if (std::optional<std::string> picks = args.get("picks")) steer.rounds = readPickRounds(*picks);
+            if (args.has("passed") || args.has("picks")) {
+                PickRound now;
+                now.picked = request.parents;
+                if (std::optional<std::string> passed = args.get("passed"))
+                    for (const std::string& file : splitList(*passed))
+                        now.passed.push_back(loadGenomeArgument("breed", file));
+                steer.rounds.push_back(std::move(now));
+            }
+            steered = steerBreed(steer);
+            children = std::move(steered.children);
         }
-        SteerResult steered = steerBreed(steer);
-        std::vector<Genome> children = std::move(steered.children);
+        // As the window's wildcard cell: the last child gives its place to a fresh design.
+        if (args.has("wildcard") && children.size() > 1)
+            children.back() = wildcardChild(request, children.back());
         std::vector<std::string> texts;
         for (Genome& child : children) {
             rebaseSource(child, dir);

@@ -2,6 +2,7 @@
 
 #include "TestUtil.h"
 
+#include "marbler/Colourways.h"
 #include "marbler/Generator.h"
 #include "marbler/GenomeIO.h"
 #include "marbler/Operators.h"
@@ -218,6 +219,38 @@ TEST(BreedVerb, NoTwoChildrenAreEqual) {
         }
 }
 
+TEST(BreedVerb, ColourwaysKeepTheStructureAndBreedOnlyTheInks) {
+    // The window's Colourways mode on the command line: one parent's colourways at a strength,
+    // or two parents' inks mixed.
+    Parents parents("breed-colourway");
+    const fs::path one = parents.dir / "one", mixed = parents.dir / "mixed";
+    test::RunResult r = runMarbler({"breed", "colourway", parents.a.string(), "--seed", "3", "--count", "4",
+                                    "--strength", "1", "-o", one.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const Genome a = loadGenome(parents.a), b = loadGenome(parents.b);
+    ColourwayRequest request;
+    request.parents = {a};
+    request.strength = 1.0;
+    request.seed = 3;
+    request.count = 4;
+    const std::vector<Genome> expected = colourways(request);
+    ASSERT_EQ(filesIn(one).size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+        const Genome child = loadGenome(one / ("child-0" + std::to_string(i + 1) + ".marble.json"));
+        EXPECT_TRUE(sameStructure(child, a)) << i;
+        EXPECT_NE(child.palette, a.palette) << i;
+        EXPECT_EQ(child.meta.toJson()["lineage"]["operator"], ColourwayOperator);
+        EXPECT_EQ(genomeId(child), genomeId(expected[std::size_t(i)])) << i;
+    }
+    r = runMarbler(
+        {"breed", "colourway", parents.a.string(), parents.b.string(), "--seed", "3", "-o", mixed.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    request.parents = {a, b};
+    request.mix = true;
+    request.count = 8;
+    EXPECT_EQ(genomeId(loadGenome(mixed / "child-01.marble.json")), genomeId(colourways(request).front()));
+}
+
 TEST(BreedVerb, BadInputExitsWithTwoAndWritesNothing) {
     Parents parents("breed-bad");
     fs::path broken = parents.dir / "broken.marble.json";
@@ -226,6 +259,10 @@ TEST(BreedVerb, BadInputExitsWithTwoAndWritesNothing) {
     std::string text = test::readFile(parents.a);
     text.replace(text.find("\"radius\": "), 10, "\"radius\": -");
     test::writeFile(invalid, text);
+    fs::path locked = parents.dir / "locked.marble.json";
+    Genome withLock = loadGenome(parents.a);
+    setLocks(withLock, Locks{.palette = true});
+    saveGenome(withLock, locked);
     fs::path out = parents.dir / "out";
     struct Case {
         std::vector<std::string> args;
@@ -244,6 +281,11 @@ TEST(BreedVerb, BadInputExitsWithTwoAndWritesNothing) {
         {{"breed", "alter", parents.a.string(), "--seed", "1", "--strength", "2"}, "strength"},
         {{"breed", "alter", parents.a.string(), "--seed", "1", "--count", "0"}, "count"},
         {{"breed", "alter", parents.a.string()}, "seed"},
+        {{"breed", "colourway", "--seed", "1"}, "colourway takes at least 1 parent"},
+        {{"breed", "colourway", parents.a.string(), "--seed", "1", "--wildcard"}, "--wildcard"},
+        {{"breed", "colourway", parents.a.string(), "--seed", "1", "--passed", parents.b.string()},
+         "not steered"},
+        {{"breed", "colourway", locked.string(), "--seed", "1"}, "locked"},
     };
     for (Case& c : cases) {
         c.args.push_back("-o");
@@ -265,7 +307,8 @@ TEST(BreedVerb, BadInputExitsWithTwoAndWritesNothing) {
 TEST(BreedVerb, HelpDescribesEveryOption) {
     test::RunResult r = runMarbler({"breed", "--help"});
     EXPECT_EQ(r.exitCode, 0);
-    for (const char* word : {"--seed", "--count", "--strength", "-o", "alter", "recombine", "swap", "reinit"})
+    for (const char* word : {"--seed", "--count", "--strength", "-o", "alter", "recombine", "swap", "reinit",
+                             "colourway", "--wildcard", "--no-fresh"})
         EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 

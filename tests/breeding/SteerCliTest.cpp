@@ -77,6 +77,50 @@ TEST(SteerCli, BreedsWhatTheWindowWouldAndSaysWhy) {
     }
 }
 
+TEST(SteerCli, TheWindowsWildcardCellOnAndOff) {
+    // --wildcard is the window's Wildcard cell: the last child a fresh zebra; --no-fresh is the
+    // window with it off: every child a variation of the pick.
+    Rounds r("steer-cli-wildcard");
+    const auto run = [&](const std::string& name, std::vector<std::string> extra) {
+        std::vector<std::string> args{"breed",
+                                      "alter",
+                                      r.parent.string(),
+                                      "--seed",
+                                      "9",
+                                      "--passed",
+                                      r.passedNow,
+                                      "--picks",
+                                      (r.dir / "rounds.json").string(),
+                                      "-o",
+                                      (r.dir / name).string()};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const test::RunResult result = runMarbler(args);
+        EXPECT_EQ(result.exitCode, 0) << result.err;
+        std::vector<Genome> children;
+        for (int i = 1; i <= 8; ++i)
+            children.push_back(loadGenome(r.dir / name / ("child-0" + std::to_string(i) + ".marble.json")));
+        return children;
+    };
+    const auto opOf = [](const Genome& g) { return g.meta.lineage.value_or(MetaLineage{}).op.value_or(""); };
+    const std::vector<Genome> plain = run("plain", {});
+    const std::vector<Genome> wild = run("wild", {"--wildcard"});
+    const std::vector<Genome> variations = run("variations", {"--no-fresh"});
+    // The wildcard takes the last child's place and leaves the others as they were.
+    EXPECT_EQ(opOf(wild.back()), "wildcard");
+    EXPECT_EQ(wild.back().meta.family, std::optional<std::string>("zebra"));
+    EXPECT_EQ(wild.back().meta.lineage->child, std::optional<int>(8));
+    for (std::size_t i = 0; i + 1 < wild.size(); ++i)
+        EXPECT_EQ(genomeId(wild[i]), genomeId(plain[i])) << i;
+    int freshWithout = 0;
+    for (const Genome& child : variations) {
+        freshWithout += opOf(child) == "wildcard";
+        EXPECT_EQ(child.meta.lineage->parents.value_or(std::vector<std::string>{}).size(), 1u) << opOf(child);
+    }
+    EXPECT_EQ(freshWithout, 0);
+    EXPECT_GE(
+        std::count_if(plain.begin(), plain.end(), [&](const Genome& g) { return opOf(g) == "wildcard"; }), 3);
+}
+
 TEST(SteerCli, ABadRoundsFileIsNamedWithWhere) {
     Rounds r("steer-cli-bad");
     test::writeFile(r.dir / "bad.json", R"({"rounds": [{"picked": "pick-0.marble.json"}]})");
