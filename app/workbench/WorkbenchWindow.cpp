@@ -666,6 +666,13 @@ void WorkbenchWindow::requestOperator(GeneticOperator op) {
     mOperators->request(op);
 }
 
+void WorkbenchWindow::moreLikeThis(int index) {
+    if (!mModel->cell(index)) return;
+    mModel->clearSelection();
+    mModel->setSelected(index, true);
+    requestOperator(GeneticOperator::Alter);
+}
+
 void WorkbenchWindow::setPopulationFamily(const QString& family) {
     mPopulation->setFamily(family);
 }
@@ -947,6 +954,11 @@ void WorkbenchWindow::showCellMenu(int index, const QPoint& globalPos) {
     }
     menu.addAction(mModel->isSelected(index) ? tr("Deselect parent") : tr("Select as parent"), this,
                    [this, index] { mModel->toggleSelected(index); });
+    menu.addAction(tr("More like this"), this, [this, index] { moreLikeThis(index); })
+        ->setToolTip(tr("Breeds the next generation from this design alone"));
+    menu.addAction(mModel->isDisliked(index) ? tr("No longer less like this") : tr("Less like this"), this,
+                   [this, index] { mModel->setDisliked(index, !mModel->isDisliked(index)); })
+        ->setToolTip(tr("Steering moves the next generations away from this design"));
     menu.addAction(tr("Open large…"), this, [this, index] { openDesign(index); });
     menu.addAction(tr("Open in editor"), this, [this, index] {
         if (const Genome* design = mModel->cell(index)) openEditor(*design);

@@ -159,6 +159,9 @@ public:
     /// click replacing it, going to another generation dropping it) and the status bar says so.
     /// Fast clicks so make one generation each time the grid has caught up, not one per click.
     void requestOperator(GeneticOperator op);
+    /// A design's "More like this" (its right-click menu): the next generation bred from it alone
+    /// (Alter at the strength set, steered as any), whatever else was selected.
+    void moreLikeThis(int index);
     /// A fresh random population (2: flat, 3: solid) of the family chosen in the tool bar (or
     /// mixed families); remembers the choices.
     void newRandomPopulation(int dimension);

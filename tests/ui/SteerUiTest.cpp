@@ -2,6 +2,7 @@
 // this): the status line says why the children were chosen, and the marks show on the cells.
 
 #include "UiTestSupport.h"
+#include "marbler/Operators.h"
 #include "workbench/DesignCell.h"
 
 #include <QAction>
@@ -140,4 +141,28 @@ TEST(SteerModel, SteeredGenerationsAreReproducibleFromTheSessionSeed) {
     const auto a = session(21);
     EXPECT_EQ(a, session(21));
     EXPECT_NE(a, session(22));
+}
+
+TEST_F(SteerUiTest, MoreLikeThisBreedsFromThatDesignAlone) {
+    // A design's right-click "More like this": the next generation is bred from it alone, though
+    // other designs were selected, and it keeps its cell.
+    mWindow->setPopulationFamily(QStringLiteral("zebra"));
+    mWindow->newRandomPopulation(2);
+    model().clearSelection();
+    model().setSelected(0, true);
+    model().setSelected(3, true);
+    const std::string liked = genomeId(*model().cell(5));
+    const int before = model().currentIndex();
+    mWindow->moreLikeThis(5);
+    ASSERT_NE(model().currentIndex(), before) << "a generation was bred";
+    EXPECT_EQ(model().selectedCells(), std::vector<int>{5});
+    EXPECT_EQ(genomeId(*model().cell(5)), liked);
+    int fromIt = 0;
+    for (int i = 0; i < CellCount; ++i) {
+        if (i == 5) continue;
+        const auto lineage = model().cell(i)->meta.toJson()["lineage"];
+        EXPECT_FALSE(lineage.contains("parents") && lineage["parents"].size() != 1) << lineage.dump();
+        fromIt += lineage.contains("parents") && lineage["parents"][0] == liked;
+    }
+    EXPECT_GE(fromIt, 3) << "the variations are of the design liked";
 }
