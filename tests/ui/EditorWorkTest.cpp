@@ -123,8 +123,7 @@ TEST_F(EditorWorkTest, SavingADesignOpenedFromAnImageNeverWritesJsonIntoTheImage
         return suggested;
     });
     editor->setImageSaveAnswer(EditorWindow::ImageSaveAnswer::DesignFile);
-    editor->activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(editor));
+    ASSERT_TRUE(activate(editor));
     QTest::keyClick(editor, Qt::Key_S, Qt::ControlModifier);
     EXPECT_EQ(bytesOf(png), original) << "the image is untouched";
     const QString json = mDir.filePath(QStringLiteral("export.marble.json"));
@@ -416,8 +415,7 @@ TEST_F(EditorWorkTest, SaveAsHelpAndZoomHaveTheirKeys) {
     EXPECT_NE(actionFor(QKeySequence::ZoomIn), nullptr);
     EXPECT_NE(actionFor(QKeySequence::ZoomOut), nullptr);
 
-    editor->activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(editor));
+    ASSERT_TRUE(activate(editor));
     const double scale = editor->canvas()->view().scale();
     QTest::keyClick(editor, Qt::Key_Plus, Qt::ControlModifier);
     EXPECT_GT(editor->canvas()->view().scale(), scale);
@@ -453,8 +451,7 @@ TEST_F(EditorWorkTest, UndoAndRedoWorkWhileAFieldHasTheFocus) {
     const std::string before = text(doc->design());
     doc->setMuted(0, true);
     const std::string after = text(doc->design());
-    editor->activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(editor));
+    ASSERT_TRUE(activate(editor));
     const auto fields = editor->findChildren<QAbstractSpinBox*>();
     ASSERT_FALSE(fields.isEmpty());
     for (QAbstractSpinBox* field : fields) {

@@ -41,6 +41,15 @@ ui::EditorWindow* EditorTest::open(const Genome& design, const QString& file) {
     return editor;
 }
 
+bool EditorTest::activate(QWidget* window) {
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        window->raise();
+        window->activateWindow();
+        if (QTest::qWaitForWindowActive(window, 3000)) return true;
+    }
+    return false;
+}
+
 void WindowTest::TearDown() {
     mWindow.reset();
     mService.reset();

@@ -40,6 +40,10 @@ private:
 class EditorTest : public WindowTest {
 protected:
     ui::EditorWindow* open(const Genome& design, const QString& file = {});
+    /// Makes a window the active one and waits until it is. Under Xvfb, with no window manager,
+    /// activation is a request another window may overtake on a loaded machine: it is asked
+    /// again, three times in all.
+    static bool activate(QWidget* window);
     QTemporaryDir mRecovery;
 };
 
