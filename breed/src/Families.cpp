@@ -763,6 +763,14 @@ const Family* findFamily(std::string_view name) {
     return nullptr;
 }
 
+const Family* parentsFamily(std::span<const Genome> parents) {
+    const Family* family = nullptr;
+    for (const Genome& parent : parents)
+        if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
+    if (family && !parents.empty() && family->dimension != parents.front().dimension) return nullptr;
+    return family;
+}
+
 std::span<const TraditionalPalette> traditionalPalettes() {
     return Traditions;
 }

@@ -574,11 +574,8 @@ static std::string describeVariation(const BreedRequest& request, const std::vec
 
 Genome wildcardChild(const BreedRequest& request, const Genome& replaced) {
     if (request.parents.empty()) throw InputError("a wildcard needs the parents it stands beside");
-    const Family* family = nullptr;
-    for (const Genome& parent : request.parents)
-        if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
+    const Family* family = parentsFamily(request.parents);
     const int dimension = request.parents.front().dimension;
-    if (family && family->dimension != dimension) family = nullptr;
     std::set<std::string> taken;
     for (const Genome& parent : request.parents)
         taken.insert(genomeId(parent));

@@ -551,11 +551,10 @@ void PreferenceModel::learnGroupWeights() {
     // which earlier picks lie nearer to it than what they were passed over for is a group the
     // person goes by. Each group is weighed by how often it orders such pairs as the picks did.
     if (mNewest < 0) return;
-    const std::size_t last = std::size_t(mNewest) + 1;
     const DesignFeatures& newest = mRounds[std::size_t(mNewest)].picked.front();
     std::array<double, FeatureGroups> agree{};
     double pairs = 0.0;
-    for (std::size_t r = 0; r + 1 < last; ++r) {
+    for (std::size_t r = 0; r < std::size_t(mNewest); ++r) {
         std::vector<std::array<double, FeatureGroups>> toPassed;
         for (const DesignFeatures& passed : mRounds[r].passed)
             toPassed.push_back(groupSquares(passed, newest));
@@ -627,11 +626,8 @@ SteerResult steerBreed(const SteerRequest& request) {
                 std::none_of(mates.begin(), mates.end(),
                              [&](const Genome& m) { return contentKey(m) == contentKey(g); }))
                 mates.push_back(g);
-    const Family* family = nullptr;
-    for (const Genome& parent : base.parents)
-        if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
+    const Family* family = parentsFamily(base.parents);
     const int dimension = base.parents.front().dimension;
-    if (family && family->dimension != dimension) family = nullptr;
     // A person working within one family (every design of the rounds is of the parents' family,
     // as a population of one family chosen in the tool bar makes): fresh designs of it only.
     bool oneFamily = family != nullptr;

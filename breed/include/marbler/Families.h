@@ -29,6 +29,9 @@ struct Family {
 std::span<const Family> allFamilies();
 /// The family of a name; nullptr when there is none.
 const Family* findFamily(std::string_view name);
+/// The family of a set of parents (the wildcard's, steering's fresh designs'): that of the first
+/// parent that names one, when it is of the first parent's dimension; nullptr otherwise.
+const Family* parentsFamily(std::span<const Genome> parents);
 
 /// A design of the family from the seed: meta {"name", "seed", "generator", "family"}. The
 /// family is kept by breeding (children copy `meta.family`), so the lineage records it.
