@@ -2,6 +2,7 @@
 // animation's labels and duration, deleting an ink and palette presets (PaletteEditor.h with
 // EditorDocument::removePaletteColor).
 
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 #include "editor/AnimationExport.h"
 #include "editor/EditorDocument.h"
@@ -76,8 +77,7 @@ TEST(TimelineSpeedTest, TheSpeedBoxSetsHowLongPlayTakes) {
 TEST(TimelineSpeedTest, SpeedKeysStepTheBox) {
     Timeline timeline;
     timeline.show();
-    timeline.activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(&timeline));
+    ASSERT_TRUE(test::activate(&timeline));
     auto* speed = timeline.findChild<QComboBox*>(QStringLiteral("playSpeed"));
     ASSERT_NE(speed, nullptr);
     QTest::keyClick(&timeline, Qt::Key_BracketRight);

@@ -1,6 +1,7 @@
 // The editor's panels: the list of steps, the parameter form built from the tool registry, the
 // palette, the timeline and Export animation (app/editor).
 
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 #include "editor/AnimationExport.h"
 #include "editor/PaletteEditor.h"
@@ -290,8 +291,7 @@ TEST(StepList, KeysMenuChecksAndDragsAskForChanges) {
     QSignalSpy deleted(&list, &StepList::deleteRequested);
 
     list.show();
-    list.activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(&list));
+    ASSERT_TRUE(test::activate(&list));
     list.list()->setFocus();
     current.clear(); // focus may have made row 0 current
     list.list()->setCurrentRow(1);
@@ -651,8 +651,7 @@ TEST(ParamForm, UndoKeysReachTheWindowAndEnterCommits) {
     const Genome design = designOf(2);
     form->setStep(defaultOperation(Tool::Circle, 2, {500, 400, 0}), 2, design);
     window.show();
-    window.activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    ASSERT_TRUE(test::activate(&window));
 
     for (const char* name : {"edit-alpha-0", "edit-steps-0"}) {
         if (QString::fromLatin1(name) == QStringLiteral("edit-steps-0"))
@@ -877,8 +876,7 @@ TEST(StepList, ARunOfOneToolIsOneRowThatOpens) {
                            QStringLiteral("▸ 3 combs (steps 43–45)"), QStringLiteral("46. wave")}));
     QSignalSpy current(&list, &StepList::currentChanged);
     list.show();
-    list.activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(&list));
+    ASSERT_TRUE(test::activate(&list));
     list.list()->setFocus();
     current.clear();
 

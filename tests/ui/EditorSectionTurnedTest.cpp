@@ -3,6 +3,7 @@
 // there as the renderer renders it, a sphere and a circle about a typed axis dragged on a turned
 // section with the mouse, placed on that plane, and undone and redone exactly.
 
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 #include "editor/EditorCanvas.h"
 #include "editor/EditorDocument.h"
@@ -442,8 +443,7 @@ TEST(TurnedSectionLargeViewTest, TheLargeViewShowsASectionTurnedToATypedNormal) 
     dialog.resize(640, 720);
     dialog.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&dialog));
-    dialog.activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(&dialog));
+    ASSERT_TRUE(test::activate(&dialog));
     auto* controls = dialog.findChild<QWidget*>(QStringLiteral("sectionControls"));
     ASSERT_NE(controls, nullptr);
     EXPECT_FALSE(controls->isVisible()) << "the object first";

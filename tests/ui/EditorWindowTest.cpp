@@ -103,7 +103,7 @@ TEST_F(EditorWindowTest, AClickDropsInkAndUndoRedoAreExact) {
     const Genome after = editor->document()->design();
 
     // The keys as the user presses them: to the focused canvas of the active window.
-    ASSERT_TRUE(activate(editor));
+    ASSERT_TRUE(test::activate(editor));
     canvas->setFocus();
     QTest::keyClick(canvas, Qt::Key_Z, Qt::ControlModifier);
     EXPECT_EQ(text(editor->document()->design()), text(before));
@@ -245,7 +245,7 @@ TEST_F(EditorWindowTest, StepKeysWorkFromTheStepListAndTheCanvas) {
     EditorDocument* doc = editor->document();
     const std::size_t steps = doc->stepCount();
     ASSERT_GE(steps, 3u);
-    ASSERT_TRUE(activate(editor));
+    ASSERT_TRUE(test::activate(editor));
     editor->selectStep(1);
     QWidget* list = editor->findChild<StepList*>()->list();
     list->setFocus();

@@ -123,7 +123,7 @@ TEST_F(EditorWorkTest, SavingADesignOpenedFromAnImageNeverWritesJsonIntoTheImage
         return suggested;
     });
     editor->setImageSaveAnswer(EditorWindow::ImageSaveAnswer::DesignFile);
-    ASSERT_TRUE(activate(editor));
+    ASSERT_TRUE(test::activate(editor));
     QTest::keyClick(editor, Qt::Key_S, Qt::ControlModifier);
     EXPECT_EQ(bytesOf(png), original) << "the image is untouched";
     const QString json = mDir.filePath(QStringLiteral("export.marble.json"));
@@ -415,7 +415,7 @@ TEST_F(EditorWorkTest, SaveAsHelpAndZoomHaveTheirKeys) {
     EXPECT_NE(actionFor(QKeySequence::ZoomIn), nullptr);
     EXPECT_NE(actionFor(QKeySequence::ZoomOut), nullptr);
 
-    ASSERT_TRUE(activate(editor));
+    ASSERT_TRUE(test::activate(editor));
     const double scale = editor->canvas()->view().scale();
     QTest::keyClick(editor, Qt::Key_Plus, Qt::ControlModifier);
     EXPECT_GT(editor->canvas()->view().scale(), scale);
@@ -451,7 +451,7 @@ TEST_F(EditorWorkTest, UndoAndRedoWorkWhileAFieldHasTheFocus) {
     const std::string before = text(doc->design());
     doc->setMuted(0, true);
     const std::string after = text(doc->design());
-    ASSERT_TRUE(activate(editor));
+    ASSERT_TRUE(test::activate(editor));
     const auto fields = editor->findChildren<QAbstractSpinBox*>();
     ASSERT_FALSE(fields.isEmpty());
     for (QAbstractSpinBox* field : fields) {

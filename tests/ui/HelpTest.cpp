@@ -254,8 +254,7 @@ TEST_F(HelpTest, ExportOffersTheDesignsNameInTheLastFolderAndFormat) {
 
 TEST_F(HelpTest, F1OpensTheGuideWhichListsEveryShortcutOfTheWindow) {
     showWindow();
-    mWindow->activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(mWindow.get()));
+    ASSERT_TRUE(test::activate(mWindow.get()));
     EXPECT_EQ(mWindow->guideAction()->shortcut(), QKeySequence(QKeySequence::HelpContents));
     QTest::keyClick(mWindow.get(), Qt::Key_F1);
     QDialog* guide = nullptr;
@@ -603,8 +602,7 @@ TEST_F(HelpTest, LargeViewKeysSaveAndShowTheSwatch) {
     DesignDialog* dialog = mWindow->openDesign(0);
     ASSERT_NE(dialog, nullptr);
     dialog->show();
-    dialog->activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(dialog));
+    ASSERT_TRUE(test::activate(dialog));
     int asked = 0;
     setSaveFileAsker([&](QWidget*, const QString&, const QString&, const QString&) {
         ++asked;

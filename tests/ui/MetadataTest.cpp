@@ -75,8 +75,7 @@ protected:
     }
     void showActive() {
         mWindow->show();
-        mWindow->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(mWindow.get()));
+        ASSERT_TRUE(test::activate(mWindow.get()));
     }
     QString status() const { return mWindow->statusBar()->currentMessage(); }
 
@@ -245,8 +244,7 @@ TEST_F(MetadataTest, TheLargeViewCopiesItsGenome) {
     ASSERT_NE(copyAction, nullptr);
     EXPECT_EQ(copyAction->shortcut(), QKeySequence(QKeySequence::Copy));
     QApplication::clipboard()->clear();
-    dialog->activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(dialog));
+    ASSERT_TRUE(test::activate(dialog));
     QTest::keyClick(dialog, Qt::Key_C, Qt::ControlModifier);
     EXPECT_EQ(QApplication::clipboard()->text().toStdString(), serializeGenome(dialog->genome()));
     EXPECT_TRUE(status().startsWith(QStringLiteral("Copied "))) << status().toStdString();

@@ -41,7 +41,7 @@ ui::EditorWindow* EditorTest::open(const Genome& design, const QString& file) {
     return editor;
 }
 
-bool EditorTest::activate(QWidget* window) {
+bool activate(QWidget* window) {
     for (int attempt = 0; attempt < 3; ++attempt) {
         window->raise();
         window->activateWindow();

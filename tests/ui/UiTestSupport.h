@@ -40,10 +40,6 @@ private:
 class EditorTest : public WindowTest {
 protected:
     ui::EditorWindow* open(const Genome& design, const QString& file = {});
-    /// Makes a window the active one and waits until it is. Under Xvfb, with no window manager,
-    /// activation is a request another window may overtake on a loaded machine: it is asked
-    /// again, three times in all.
-    static bool activate(QWidget* window);
     QTemporaryDir mRecovery;
 };
 
@@ -57,5 +53,10 @@ struct ErrorCapture {
 /// Drags files onto a widget the way the platform does: an enter (which picks the drop target
 /// and must be accepted: a gtest failure otherwise), then the drop.
 void dropFiles(QWidget* target, const QStringList& files);
+
+/// Makes a window the active one and waits until it is. Under Xvfb, with no window manager,
+/// activation is a request another window may overtake on a loaded machine: it is asked again,
+/// three times in all.
+bool activate(QWidget* window);
 
 } // namespace marbler::test

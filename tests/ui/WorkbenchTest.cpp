@@ -612,8 +612,7 @@ TEST_F(WorkbenchTest, ExportRefusesSizesBeyondTheRenderersLimits) {
 TEST_F(WorkbenchTest, ExportSettingsTabOrderReachesEveryField) {
     ExportSettingsDialog dialog(*model().cell(0));
     dialog.show();
-    dialog.activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(&dialog));
+    ASSERT_TRUE(test::activate(&dialog));
     QWidget* width = dialog.findChild<QWidget*>(QStringLiteral("exportWidth"));
     width->setFocus(Qt::TabFocusReason);
     MARBLER_WAIT(width->hasFocus(), 5000);
@@ -666,8 +665,7 @@ TEST_F(WorkbenchTest, ExportErrorIsNeverCoveredByAStaleProgressBox) {
 
 TEST_F(WorkbenchTest, ArrowsMoveFocusSpaceSelectsEnterOpens) {
     mWindow->show();
-    mWindow->activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(mWindow.get()));
+    ASSERT_TRUE(test::activate(mWindow.get()));
     mWindow->cell(4)->setFocus(Qt::TabFocusReason);
     MARBLER_WAIT(mWindow->cell(4)->hasFocus(), 5000);
     const auto press = [](int key) { QTest::keyClick(QApplication::focusWidget(), Qt::Key(key)); };
