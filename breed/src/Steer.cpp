@@ -807,10 +807,16 @@ SteerResult steerBreed(const SteerRequest& request) {
         if (int(chosen.size()) >= freshShown) break;
         if (i >= firstFresh && acceptable(i, NearDuplicateDeltaE)) choose(i);
     }
-    // Then the best liked of each way of varying the pick, and of the other candidates of the
-    // pick (the operator's own children, recombinations): the model's ranking is a guess, and
-    // the person's pick among different moves tells more than among near neighbours.
-    for (int stratum = 0; stratum <= int(Way::Count); ++stratum)
+    // Then the best-liked variations of the pick: three that vary all of it and one its palette,
+    // then the best liked of the other candidates of the pick (the operator's own children,
+    // recombinations). The model's ranking is a guess, and the person's pick among different
+    // moves tells more than among near neighbours. Of the ways, a child varying all of it brings
+    // the person closest per child shown, one varying the palette about half as close, and one
+    // varying the strokes or the initial state alone a fifth (docs/performance.md), so all of it
+    // is shown most. The other ways are still drawn and shown when more children are asked for.
+    constexpr std::array<int, 5> Strata{int(Way::All), int(Way::Palette), int(Way::All), int(Way::All),
+                                        int(Way::Count)};
+    for (int stratum : Strata)
         for (std::size_t i : order) {
             if (int(chosen.size()) >= exploit) break;
             const bool fits = stratum < int(Way::Count)

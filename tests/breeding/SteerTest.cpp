@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 using namespace marbler;
@@ -188,14 +189,26 @@ TEST(Steer, TheModelWeighsTheFeaturesThePicksGoBy) {
         EXPECT_EQ(v, 1.0);
 }
 
-TEST(Steer, TheChildrenTryEveryWayOfVaryingThePick) {
-    // The model's ranking is a guess: the children show the best liked of each way (palette,
-    // strokes, initial state, all), so the person's pick says which way to go.
-    const SteerResult result = steerBreed(requestAfterZebras(11));
+TEST(Steer, TheChildrenVaryAllOfThePickMostAndItsPaletteToo) {
+    // The model's ranking is a guess: the children show the best liked of more than one way, so
+    // the person's pick says which way to go; varying all of the pick, the way that brings a
+    // person closest per child shown, three times.
+    for (std::uint64_t seed : {11, 12, 13}) {
+        const SteerResult result = steerBreed(requestAfterZebras(seed));
+        std::map<std::string, int> ways;
+        for (const Genome& child : result.children)
+            if (!wayOf(child).first.empty()) ++ways[wayOf(child).first];
+        EXPECT_GE(ways["all"], 3) << "seed " << seed;
+        EXPECT_GE(ways["palette"], 1) << "seed " << seed;
+    }
+    // With more children asked for, the strokes and the initial state alone are shown too.
+    SteerRequest many = requestAfterZebras(11);
+    many.breed.count = 16;
+    many.candidates = 40;
     std::set<std::string> ways;
-    for (const Genome& child : result.children)
+    for (const Genome& child : steerBreed(many).children)
         if (!wayOf(child).first.empty()) ways.insert(wayOf(child).first);
-    EXPECT_GE(ways.size(), 3u) << "ways among the children: " << ways.size();
+    EXPECT_EQ(ways.size(), 4u) << "ways among 16 children: " << ways.size();
 }
 
 TEST(Steer, ABadCandidateCountIsRefused) {

@@ -4,8 +4,8 @@
 /// (variations of one part of the pick at adapted steps, the requested operator's own children
 /// for recombination and a new initial state, recombination with earlier picks, fresh designs
 /// of every generator), ranks them by the model and shows the most promising: the three
-/// best-liked fresh designs, the best liked of each way of varying the pick, then the best liked
-/// of all, the last one kept for exploration.
+/// best-liked fresh designs, the best-liked variations of the pick (three of all of it, one of its
+/// palette), then the best liked of all, the last one kept for exploration.
 ///
 /// The model is an *ideal point* over cheap features of a design (a 16 x 16 glimpse, Operators.h:
 /// its layout on an 8 x 8 grid, colour statistics, texture statistics, a colour histogram, the
