@@ -4,7 +4,7 @@
 # does (COMP_WORDS, COMP_CWORD, COMP_LINE), what follows a partial command line.
 set -uo pipefail
 marbler=$1
-script=$2
+script=$(realpath "$2")
 fail() {
     echo "FAIL: $*" >&2
     exit 1
@@ -122,4 +122,11 @@ expect "marbler breed --picks " rounds.json
 refuse "marbler render stones.marble.json --width " picture.png stones.marble.json
 expect "marbler --screenshot " picture.png
 refuse "marbler --screenshot " stones.marble.json
+# Under `set -o pipefail`, as here and perhaps in a user's shell, a pipeline whose reader leaves
+# early (`printf ... | grep -q`) fails now and then: the writer dies of SIGPIPE once grep has
+# gone. The completion once offered files after --mesh that way, about one run in hundreds.
+if awk '!/^[[:space:]]*#/ && /\|[[:space:]]*grep[[:space:]]+(-[[:alnum:]]*q|--quiet)/ {
+            print FILENAME ":" FNR ": " $0; found = 1 } END { exit !found }' "$script" >&2; then
+    fail "$script pipes into grep -q, which fails now and then under pipefail"
+fi
 echo "completion offers verbs, options, operators, families and files as the program lists them"
