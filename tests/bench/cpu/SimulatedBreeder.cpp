@@ -376,12 +376,10 @@ int main(int argc, char** argv) {
         }
     }
     std::vector<std::pair<Metric, const char*>> metricList;
-    if (metrics == "pixel" || metrics == "both") metricList.push_back({Metric::Pixel, "pixel"});
-    if (metrics == "stats" || metrics == "both") metricList.push_back({Metric::Stats, "stats"});
-    if (metrics == "ssim" || metrics == "all") {
-        if (metrics == "all") metricList = {{Metric::Pixel, "pixel"}, {Metric::Stats, "stats"}};
-        metricList.push_back({Metric::Ssim, "ssim"});
-    }
+    const bool pair = metrics == "both" || metrics == "all";
+    if (metrics == "pixel" || pair) metricList.push_back({Metric::Pixel, "pixel"});
+    if (metrics == "stats" || pair) metricList.push_back({Metric::Stats, "stats"});
+    if (metrics == "ssim" || metrics == "all") metricList.push_back({Metric::Ssim, "ssim"});
     std::vector<std::string> modeList;
     for (const char* m : {"classic", "steered"})
         if (modes.find(m) != std::string::npos) modeList.push_back(m);
