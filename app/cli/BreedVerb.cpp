@@ -279,17 +279,6 @@ int runBreed(std::span<const std::string> words) {
                         now.passed.push_back(loadGenomeArgument("breed", file));
                 steer.rounds.push_back(std::move(now));
             }
-            // The picks are compared with each other: a solid design among flat ones (or the
-            // reverse) is a wrong file, not a preference.
-            const auto kind = [](int dimension) { return dimension == 3 ? "solid (3D)" : "flat (2D)"; };
-            const int dimension = request.parents.front().dimension;
-            for (const PickRound& round : steer.rounds)
-                for (const auto* designs : {&round.picked, &round.passed, &round.disliked})
-                    for (const Genome& g : *designs)
-                        if (g.dimension != dimension)
-                            throw InputError(g.fileName + ": a " + kind(g.dimension) +
-                                             " design, but the parents are " + kind(dimension) +
-                                             "; steering compares designs of one kind");
             steered = steerBreed(steer);
             children = std::move(steered.children);
         }

@@ -132,36 +132,5 @@ TEST(SteerCli, ABadRoundsFileIsNamedWithWhere) {
     EXPECT_FALSE(fs::exists(r.dir / "none"));
 }
 
-TEST(SteerCli, ADesignOfTheOtherDimensionAmongTheRoundsIsNamed) {
-    // A solid passed over beside a flat pick is a wrong file: refused, naming it, and nothing written.
-    Rounds r("steer-cli-dimension");
-    const fs::path solid = r.dir / "solid.marble.json";
-    Genome block = familyGenome(*findFamily("zebra"), 7);
-    for (const Family& f : allFamilies())
-        if (f.dimension == 3) {
-            block = familyGenome(f, 7);
-            break;
-        }
-    ASSERT_EQ(block.dimension, 3);
-    saveGenome(block, solid);
-    for (const bool inRounds : {false, true}) {
-        std::vector<std::string> args{"breed", "alter", r.parent.string(), "--seed", "9"};
-        if (inRounds) {
-            test::writeFile(r.dir / "mixed.json", R"({"rounds": [{"picked": ["pick-0.marble.json"],
-                                                     "passed": ["solid.marble.json"]}]})");
-            args.insert(args.end(), {"--picks", (r.dir / "mixed.json").string()});
-        } else {
-            args.insert(args.end(), {"--passed", solid.string()});
-        }
-        args.insert(args.end(), {"-o", (r.dir / "none").string()});
-        const test::RunResult run = runMarbler(args);
-        EXPECT_EQ(run.exitCode, 2) << run.err;
-        EXPECT_NE(run.err.find("solid.marble.json: a solid (3D) design, but the parents are flat (2D)"),
-                  std::string::npos)
-            << run.err;
-        EXPECT_FALSE(fs::exists(r.dir / "none"));
-    }
-}
-
 } // namespace
 } // namespace marbler
