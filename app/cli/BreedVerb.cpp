@@ -186,10 +186,15 @@ std::vector<PickRound> readPickRounds(const std::string& file) {
                                         : std::string(key) == "passed" ? round.passed
                                                                        : round.disliked;
             for (std::size_t k = 0; k < entry[key].size(); ++k) {
-                if (!entry[key][k].is_string())
-                    throw InputError(where + "/" + key + "/" + std::to_string(k) + ": expected a file name");
-                into.push_back(
-                    loadGenomeArgument("breed", (base / entry[key][k].get<std::string>()).string()));
+                const std::string at = where + "/" + key + "/" + std::to_string(k);
+                if (!entry[key][k].is_string()) throw InputError(at + ": expected a file name");
+                // The design's own message names its file; the entry says where it was asked for.
+                try {
+                    into.push_back(
+                        loadGenomeArgument("breed", (base / entry[key][k].get<std::string>()).string()));
+                } catch (const InputError& e) {
+                    throw InputError(at + ": " + e.what());
+                }
             }
         }
         rounds.push_back(std::move(round));

@@ -132,5 +132,19 @@ TEST(SteerCli, ABadRoundsFileIsNamedWithWhere) {
     EXPECT_FALSE(fs::exists(r.dir / "none"));
 }
 
+TEST(SteerCli, AMissingDesignInTheRoundsIsNamedWithWhereItWasAskedFor) {
+    Rounds r("steer-cli-missing");
+    test::writeFile(r.dir / "missing.json",
+                    R"({"rounds": [{"picked": ["pick-0.marble.json"], "passed": ["nope.marble.json"]}]})");
+    const test::RunResult run =
+        runMarbler({"breed", "alter", r.parent.string(), "--seed", "9", "--picks",
+                    (r.dir / "missing.json").string(), "-o", (r.dir / "none").string()});
+    EXPECT_EQ(run.exitCode, 2);
+    // The rounds file and the entry, then the design's own file.
+    EXPECT_NE(run.err.find("missing.json: /rounds/0/passed/0: "), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("nope.marble.json"), std::string::npos) << run.err;
+    EXPECT_FALSE(fs::exists(r.dir / "none"));
+}
+
 } // namespace
 } // namespace marbler
