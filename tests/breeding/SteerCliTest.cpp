@@ -71,7 +71,7 @@ TEST(SteerCli, BreedsWhatTheWindowWouldAndSaysWhy) {
     const SteerResult expected = steerBreed(request);
     ASSERT_EQ(expected.children.size(), 8u);
     for (std::size_t i = 0; i < expected.children.size(); ++i) {
-        char name[32];
+        char name[48];
         std::snprintf(name, sizeof name, "child-%02zu.marble.json", i + 1);
         EXPECT_EQ(genomeId(loadGenome(out / name)), genomeId(expected.children[i])) << name;
     }

@@ -256,8 +256,10 @@ TEST(Steer, APickPassesItsStepOnAndAPickKeptAgainShrinksThenWidensIt) {
     request.breed.parents = {*pick};
     const SteerResult second = steerBreed(request);
     EXPECT_DOUBLE_EQ(way(second, name).step, std::clamp(step, 0.02, 1.0)) << name;
-    for (const SteerWay& w : second.ways)
-        if (w.way != name) EXPECT_GT(way(second, name).weight, w.weight) << "picks came " << name;
+    for (const SteerWay& w : second.ways) {
+        if (w.way == name) continue;
+        EXPECT_GT(way(second, name).weight, w.weight) << "picks came " << name;
+    }
     EXPECT_NE(second.explanation.find("as your last picks came"), std::string::npos) << second.explanation;
 
     // The same design picked again: no child came closer, smaller steps.

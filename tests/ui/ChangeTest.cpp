@@ -16,8 +16,6 @@ namespace {
 
 class ChangeTest : public test::WindowTest {};
 
-} // namespace
-
 TEST_F(ChangeTest, BredCellsAndTheLineageSayWhatChanged) {
     model().setSteering(false); // alteration's own children and the one wildcard cell
     const Genome parent = *model().cell(4);
@@ -82,3 +80,5 @@ TEST_F(ChangeTest, AVariedCellSaysWhatChangedFromTheDesignItVaries) {
     }
     EXPECT_GE(varied, 4) << "seven offspring of two swaps";
 }
+
+} // namespace

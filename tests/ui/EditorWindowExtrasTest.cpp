@@ -135,8 +135,9 @@ TEST_F(EditorWindowExtrasTest, RepeatPreviewTilesTheDesignOnTheCanvas) {
     image = seen(mCanvas);
     EXPECT_TRUE(near(colourAt(image, inside), ink));
     const QPointF outside = mCanvas->toWidget(right);
-    if (mCanvas->rect().contains(outside.toPoint()))
+    if (mCanvas->rect().contains(outside.toPoint())) {
         EXPECT_FALSE(near(colourAt(image, right), ink)) << "no tiles";
+    }
 }
 
 TEST_F(EditorWindowExtrasTest, NewDesignOffersTheBathsShapes) {

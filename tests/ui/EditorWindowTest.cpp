@@ -60,8 +60,6 @@ protected:
     }
 };
 
-} // namespace
-
 TEST_F(EditorWindowTest, OpensFromTheWorkbenchAndTheLargeView) {
     const Genome design = *model().cell(4);
     EditorWindow* editor = mWindow->openEditor(design);
@@ -331,3 +329,5 @@ TEST_F(EditorWindowTest, ASolidIsEditedOnItsCrossSectionBesideItsObject) {
     EXPECT_NEAR(drop.center.x, 250.0, 2.0 / editor->canvas()->view().scale());
     editor->close();
 }
+
+} // namespace

@@ -102,8 +102,6 @@ void answerNextModal(std::function<void(QWidget*)> answer) {
     timer->start();
 }
 
-} // namespace
-
 // 1. Ctrl+S on a design opened from an image.
 TEST_F(EditorWorkTest, SavingADesignOpenedFromAnImageNeverWritesJsonIntoTheImage) {
     const Genome design = combed();
@@ -577,3 +575,5 @@ TEST_F(EditorWorkTest, EveryKeyTheReadmeGivesTheEditorHasAnAction) {
     }
     editor->close();
 }
+
+} // namespace

@@ -31,8 +31,6 @@ protected:
     }
 };
 
-} // namespace
-
 TEST_F(FamilyTest, AMixedPopulationShowsADifferentFamilyInEveryCell) {
     mWindow->setPopulationFamily(QString());
     mWindow->newRandomPopulation(2);
@@ -78,3 +76,5 @@ TEST_F(FamilyTest, OneFamilyChosenInTheToolBarAndRemembered) {
     for (int i = 1; i < families->count(); ++i)
         EXPECT_EQ(findFamily(families->itemData(i).toString().toStdString())->dimension, 3);
 }
+
+} // namespace

@@ -47,8 +47,6 @@ protected:
     }
 };
 
-} // namespace
-
 TEST_F(PictureTest, NineDesignsMarbleThePictureFromItsOwnFolder) {
     int asked = 0;
     setExternalSourceAsker([&](QWidget*, const QString&, const QString&) {
@@ -166,3 +164,5 @@ TEST_F(PictureTest, NineNamedDesignsReplaceTheGridWithoutStaleImages) {
         EXPECT_FALSE(mWindow->cell(c)->image().isNull()) << c;
     setOpenChooser({});
 }
+
+} // namespace

@@ -33,8 +33,6 @@ protected:
     }
 };
 
-} // namespace
-
 TEST_F(SteerUiTest, TheStatusLineSaysWhyTheChildrenWereChosen) {
     ASSERT_NE(steer(), nullptr);
     EXPECT_TRUE(steer()->isCheckable());
@@ -166,3 +164,5 @@ TEST_F(SteerUiTest, MoreLikeThisBreedsFromThatDesignAlone) {
     }
     EXPECT_GE(fromIt, 3) << "the variations are of the design liked";
 }
+
+} // namespace

@@ -22,8 +22,6 @@ protected:
     QAction* toggle() const { return mWindow->findChild<QAction*>(QStringLiteral("wildcardAction")); }
 };
 
-} // namespace
-
 TEST_F(WildcardTest, TheLastOffspringCellIsAFreshDesignOfTheParentsFamily) {
     ASSERT_NE(toggle(), nullptr);
     EXPECT_TRUE(toggle()->isCheckable());
@@ -118,3 +116,5 @@ TEST(WildcardModel, WithoutAFamilyAFreeDesignSeededByTheGeneration) {
     EXPECT_EQ(serializeGenome(breedFromFree(7)), serializeGenome(wild));
     EXPECT_NE(genomeId(breedFromFree(8)), genomeId(wild));
 }
+
+} // namespace

@@ -1488,8 +1488,6 @@ TEST(WorkbenchRenderer, SettingSwitchesTheBackEndAndRendersAgain) {
     qunsetenv("MARBLER_FAVOURITES_DIR");
 }
 
-} // namespace
-
 // Issue 27, the workbench's items.
 
 /// Every control of the tool bars is in sight at the default window size and on a 1,366-pixel
@@ -1606,3 +1604,5 @@ TEST(OpenPlacementWording, ReplaceSaysWhatItReplaces) {
     OpenQuestion mixed{{QStringLiteral("a"), QStringLiteral("b")}, {0, 1}, {0}};
     EXPECT_EQ(OpenPlacementDialog(mixed).replaceButton()->text(), QStringLiteral("&Replace designs 1 and 2"));
 }
+
+} // namespace
