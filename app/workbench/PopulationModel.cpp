@@ -294,35 +294,13 @@ void PopulationModel::newRandomPopulation(int dimension, const std::string& fami
     // first population and every later one draw from different seeds.
     const std::size_t number = mEmptyStart ? 0 : mHistory.size();
     const std::uint64_t base = mixSeed(mSessionSeed, std::uint64_t(number) * 1000003ULL);
-    // What each cell is drawn from: the family asked for, or the dimension's families and the
-    // free generator (nullptr) in a seeded order, so a mixed grid shows the craft's range.
-    std::vector<const Family*> sources;
-    if (only) {
-        sources.push_back(only);
-    } else {
-        for (const Family& f : allFamilies())
-            if (f.dimension == dimension) sources.push_back(&f);
-        sources.push_back(nullptr);
-        Pcg32 order(base, 0x6d6978666d6c7931ULL);
-        for (std::size_t i = sources.size(); i > 1; --i)
-            std::swap(sources[i - 1], sources[order.below(std::uint32_t(i))]);
-    }
-    // A new population is new: no design repeats one of the grid it replaces, or another.
+    // A new population is new: no design repeats one of the grid it replaces.
     std::set<std::string> taken;
     for (const auto& c : current().cells)
         if (c) taken.insert(genomeId(*c));
-    std::uint64_t draw = 0;
-    for (int i = 0; i < CellCount; ++i) {
-        for (;;) {
-            const std::uint64_t seed = mixSeed(base, draw++) & 0xffffffffULL;
-            const Family* source = sources[std::size_t(i) % sources.size()];
-            Genome g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
-            if (!taken.insert(genomeId(g)).second && draw < 1000) continue;
-            if (!g.meta.seed) g.meta.seed = seed;
-            next.cells[std::size_t(i)] = std::move(g);
-            break;
-        }
-    }
+    std::vector<Genome> designs = newPopulation(base, dimension, only, CellCount, std::move(taken));
+    for (int i = 0; i < CellCount; ++i)
+        next.cells[std::size_t(i)] = std::move(designs[std::size_t(i)]);
     pushGeneration(std::move(next));
 }
 

@@ -1,6 +1,7 @@
 #include "marbler/Families.h"
 
 #include "marbler/Generator.h"
+#include "marbler/Operators.h"
 #include "marbler/Params.h"
 #include "marbler/Random.h"
 #include "marbler/Tools.h"
@@ -769,6 +770,35 @@ const Family* parentsFamily(std::span<const Genome> parents) {
         if (!family && parent.meta.family) family = findFamily(*parent.meta.family);
     if (family && !parents.empty() && family->dimension != parents.front().dimension) return nullptr;
     return family;
+}
+
+std::vector<Genome> newPopulation(std::uint64_t seed, int dimension, const Family* only, int count,
+                                  std::set<std::string> taken) {
+    std::vector<const Family*> sources;
+    if (only) {
+        sources.push_back(only);
+    } else {
+        for (const Family& f : allFamilies())
+            if (f.dimension == dimension) sources.push_back(&f);
+        sources.push_back(nullptr);
+        Pcg32 order(seed, 0x6d6978666d6c7931ULL);
+        for (std::size_t i = sources.size(); i > 1; --i)
+            std::swap(sources[i - 1], sources[order.below(std::uint32_t(i))]);
+    }
+    std::vector<Genome> designs;
+    std::uint64_t draw = 0;
+    for (int i = 0; i < count; ++i) {
+        for (;;) {
+            const std::uint64_t s = mixSeed(seed, draw++) & 0xffffffffULL;
+            const Family* source = sources[std::size_t(i) % sources.size()];
+            Genome g = source ? familyGenome(*source, s) : randomGenome(s, dimension);
+            if (!taken.insert(genomeId(g)).second && draw < 1000) continue;
+            if (!g.meta.seed) g.meta.seed = s;
+            designs.push_back(std::move(g));
+            break;
+        }
+    }
+    return designs;
 }
 
 std::span<const TraditionalPalette> traditionalPalettes() {

@@ -537,6 +537,50 @@ TEST(Families, BreedingKeepsTheFamily) {
     EXPECT_EQ(child.meta.toJson().value("family", ""), "peacock");
 }
 
+TEST(Families, ANewPopulationShowsNineGeneratorsOnceEachReproducibly) {
+    const std::vector<Genome> a = newPopulation(77, 2, nullptr, 9);
+    ASSERT_EQ(a.size(), 9u);
+    std::set<std::string> generators, ids;
+    for (const Genome& g : a) {
+        EXPECT_EQ(g.dimension, 2);
+        ASSERT_TRUE(g.meta.seed.has_value());
+        generators.insert(g.meta.family.value_or("(free generator)"));
+        ids.insert(genomeId(g));
+    }
+    EXPECT_EQ(generators.size(), 9u) << "each cell of another generator";
+    EXPECT_EQ(ids.size(), 9u);
+    const std::vector<Genome> again = newPopulation(77, 2, nullptr, 9);
+    for (std::size_t i = 0; i < a.size(); ++i)
+        EXPECT_EQ(genomeId(a[i]), genomeId(again[i])) << i;
+    const std::vector<Genome> other = newPopulation(78, 2, nullptr, 9);
+    EXPECT_NE(genomeId(other.front()), genomeId(a.front()));
+
+    // More cells than generators: every generator, then round again, still no repeat.
+    const std::vector<Genome> many = newPopulation(77, 2, nullptr, 30);
+    std::set<std::string> manyIds;
+    for (const Genome& g : many)
+        manyIds.insert(genomeId(g));
+    EXPECT_EQ(manyIds.size(), 30u);
+}
+
+TEST(Families, ANewPopulationOfOneFamilyRepeatsNoDesignItIsToldOf) {
+    const Family* stone = findFamily("stone");
+    ASSERT_NE(stone, nullptr);
+    const std::vector<Genome> first = newPopulation(5, 2, stone, 9);
+    std::set<std::string> taken;
+    for (const Genome& g : first) {
+        EXPECT_EQ(g.meta.family, std::optional<std::string>("stone"));
+        taken.insert(genomeId(g));
+    }
+    // The same seed, told what the grid it replaces holds: nine other stones.
+    const std::vector<Genome> next = newPopulation(5, 2, stone, 9, taken);
+    for (const Genome& g : next)
+        EXPECT_FALSE(taken.count(genomeId(g))) << *g.meta.seed;
+    const std::vector<Genome> solid = newPopulation(5, 3, nullptr, 4);
+    for (const Genome& g : solid)
+        EXPECT_EQ(g.dimension, 3);
+}
+
 TEST(FamiliesCli, ListsFamiliesAndWritesOne) {
     const test::RunResult list = runMarbler({"random", "--families"});
     ASSERT_EQ(list.exitCode, 0) << list.err;

@@ -10,8 +10,11 @@
 #include "marbler/Genome.h"
 
 #include <cstdint>
+#include <set>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace marbler {
 
@@ -36,6 +39,14 @@ const Family* parentsFamily(std::span<const Genome> parents);
 /// A design of the family from the seed: meta {"name", "seed", "generator", "family"}. The
 /// family is kept by breeding (children copy `meta.family`), so the lineage records it.
 Genome familyGenome(const Family& family, std::uint64_t seed);
+
+/// A new population as the window draws one (New Population, the first grid, and the simulated
+/// breeder's first nine): `count` designs, each of another generator while there are enough of
+/// them (the dimension's families and the free generator, in an order drawn from the seed, so a
+/// mixed grid shows the craft's range), or all of `only`'s. No design repeats one whose genomeId
+/// is in `taken`, nor another (after a thousand draws one may). Each records its seed.
+std::vector<Genome> newPopulation(std::uint64_t seed, int dimension, const Family* only, int count,
+                                  std::set<std::string> taken = {});
 
 /// One of marbling's traditional palettes: the paper and the inks laid on it.
 struct TraditionalPalette {

@@ -228,8 +228,9 @@ struct RunResult {
 RunResult breedRun(Evaluator& distance, std::uint64_t seed, int generations, bool steered) {
     RunResult result;
     std::array<Genome, 9> grid;
-    for (int i = 0; i < 9; ++i)
-        grid[std::size_t(i)] = generated(mixSeed(seed, std::uint64_t(i) + 1));
+    // The first nine as the window draws a new population: nine generators of the eighteen.
+    const std::vector<Genome> first = newPopulation(seed, 2, nullptr, 9);
+    std::copy(first.begin(), first.end(), grid.begin());
     int shown = 9;
     double best = 1e9;
     for (const Genome& g : grid)
