@@ -7,7 +7,10 @@
 //
 //   bench_simulated_breeder [--runs R] [--generations G] [--side S] [--modes classic,steered]
 //                           [--distance pixel|stats|both|ssim|all] [--targets N] [--only K] [--first-run N]
-//                           [--candidates N] [--trace 1]
+//                           [--candidates N] [--dislike N] [--trace 1]
+//
+// `--dislike N`: the person also marks the N designs farthest from the target "less like this"
+// each generation, as the window lets one (steered mode only; 0, the default, picks alone).
 //
 // Prints one line per run and a summary per mode and distance: wins against random search with
 // the same budget, medians of the best distance after the first nine, 5, 10 and 20 generations,
@@ -39,6 +42,7 @@ using namespace marbler;
 int gSide = 48;
 bool gTrace = false;               // --trace 1: a line per generation, what was picked and how it was made
 int gCandidates = SteerCandidates; // --candidates N: how many candidates steering ranks
+int gDislike = 0;                  // --dislike N: the N farthest marked "less like this"
 
 struct Look {
     std::vector<double> raw;     // L*a*b* per pixel
@@ -280,8 +284,11 @@ RunResult breedRun(Evaluator& distance, std::uint64_t seed, int generations, boo
         request.generation = gen + 1;
         PickRound round;
         round.picked = request.parents;
-        for (int i = 0; i < 9; ++i)
-            if (!selected[std::size_t(i)]) round.passed.push_back(grid[std::size_t(i)]);
+        for (int k = 0; k < 9; ++k) {
+            const int i = order[std::size_t(k)];
+            if (selected[std::size_t(i)]) continue;
+            (k >= 9 - gDislike ? round.disliked : round.passed).push_back(grid[std::size_t(i)]);
+        }
         rounds.push_back(round);
         const auto start = std::chrono::steady_clock::now();
         std::vector<Genome> children;
@@ -369,6 +376,8 @@ int main(int argc, char** argv) {
             firstRun = std::max(1, std::stoi(value));
         else if (key == "--candidates")
             gCandidates = std::stoi(value);
+        else if (key == "--dislike")
+            gDislike = std::clamp(std::stoi(value), 0, 6);
         else if (key == "--trace")
             gTrace = value == "1";
         else {
