@@ -1,4 +1,5 @@
 #include "marbler/Operators.h"
+#include "OnCores.h"
 
 #include "marbler/ChangeSummary.h"
 #include "marbler/Error.h"
@@ -643,6 +644,38 @@ void checkBreedRequest(const BreedRequest& request) {
         throw InputError("childNumbers must hold one number per child");
 }
 
+/// Child i's draw by the request's operator from its stream (home: the parent it is told
+/// against).
+static Genome drawChild(const BreedRequest& request, int i, Pcg32& rng, std::size_t& home) {
+    switch (request.op) {
+    case GeneticOperator::Alter:
+        return alterGenome(request.parents[0], request.strength, rng);
+    case GeneticOperator::Recombine:
+        home = static_cast<std::size_t>(i) % request.parents.size();
+        return recombineGenomes(request.parents, home, rng);
+    case GeneticOperator::Swap:
+        home = static_cast<std::size_t>(i % 2);
+        return swapGenomes(request.parents[home], request.parents[1 - home]);
+    case GeneticOperator::Reinit:
+        return reinitGenome(request.parents[0], rng);
+    }
+    return request.parents[0];
+}
+
+/// A child's first draw, made ahead on some core (breed()): the design with its wrap kept
+/// valid, its id as drawn, its glimpse, and the stream and home parent as the draw left them.
+/// (Named, not anonymous: the unity build puts this file beside the other breed sources.)
+namespace breeddetail {
+struct FirstDraw {
+    Genome child;
+    std::string id;
+    Pcg32 rng{0};
+    std::size_t home = 0;
+    Glimpse look;
+    bool ready = false;
+};
+} // namespace breeddetail
+
 std::vector<Genome> breed(const BreedRequest& request) {
     checkBreedRequest(request);
     const GeneticOperator op = request.op;
@@ -660,40 +693,49 @@ std::vector<Genome> breed(const BreedRequest& request) {
     }
     generation = request.generation.value_or(generation + 1);
 
+    // Swap has exactly two results and alter at strength 0 one: drawing again cannot help, so
+    // they are neither drawn again nor filtered.
+    const bool random = op == GeneticOperator::Recombine || op == GeneticOperator::Reinit ||
+                        (op == GeneticOperator::Alter && request.strength > 0.0);
+    const bool filtered = random;
+    const auto parentCount = request.parents.size();
+    const auto count = static_cast<std::size_t>(request.count);
     // The glimpses the filter compares a child with: the parents', then each child's in turn.
-    const bool filtered = op == GeneticOperator::Recombine || op == GeneticOperator::Reinit ||
-                          (op == GeneticOperator::Alter && request.strength > 0.0);
-    std::vector<Glimpse> looks;
-    double parentShare = 0.0;
-    if (filtered)
-        for (const Genome& parent : request.parents) {
-            looks.push_back(glimpseOf(parent));
-            parentShare = std::max(parentShare, looks.back().dominantShare);
+    // They are most of a generation's work, and each child's first draw depends only on its own
+    // stream: the parents' glimpses and every child's first draw with its glimpse are made on
+    // every core up front. A first draw is used below only where it is what the child's turn
+    // would draw (it repeats no design taken before it), so the children are the same as made
+    // one at a time.
+    std::vector<Glimpse> looks(filtered ? parentCount : 0);
+    std::vector<breeddetail::FirstDraw> firstDraws(filtered ? count : 0);
+    breeddetail::forEachOnCores(looks.size() + firstDraws.size(), [&](std::size_t k) {
+        if (k < looks.size()) {
+            looks[k] = glimpseOf(request.parents[k]);
+            return;
         }
+        breeddetail::FirstDraw& first = firstDraws[k - looks.size()];
+        try {
+            const int i = static_cast<int>(k - looks.size());
+            first.rng = bredChildRng(request.seed, i);
+            first.child = drawChild(request, i, first.rng, first.home);
+            first.id = genomeId(first.child);
+            keepWrapValid(first.child);
+            first.look = glimpseOf(first.child);
+            first.ready = true;
+        } catch (...) {
+            first.ready = false; // drawn again in the child's turn, which reports the failure
+        }
+    });
+    double parentShare = 0.0;
+    for (const Glimpse& look : looks)
+        parentShare = std::max(parentShare, look.dominantShare);
 
     std::vector<Genome> children;
-    children.reserve(static_cast<std::size_t>(request.count));
+    children.reserve(count);
     for (int i = 0; i < request.count; ++i) {
         Pcg32 rng = bredChildRng(request.seed, i);
         std::size_t home = 0;
-        const auto draw = [&] {
-            switch (op) {
-            case GeneticOperator::Alter:
-                return alterGenome(request.parents[0], request.strength, rng);
-            case GeneticOperator::Recombine:
-                home = static_cast<std::size_t>(i) % request.parents.size();
-                return recombineGenomes(request.parents, home, rng);
-            case GeneticOperator::Swap:
-                home = static_cast<std::size_t>(i % 2);
-                return swapGenomes(request.parents[home], request.parents[1 - home]);
-            case GeneticOperator::Reinit:
-                return reinitGenome(request.parents[0], rng);
-            }
-            return request.parents[0];
-        };
-        // Swap has exactly two results and alter at strength 0 one: drawing again cannot help.
-        const bool random = op == GeneticOperator::Recombine || op == GeneticOperator::Reinit ||
-                            (op == GeneticOperator::Alter && request.strength > 0.0);
+        const auto draw = [&] { return drawChild(request, i, rng, home); };
         // One draw, and what the operator does when it repeats a design already in the generation.
         // `variedFrom` keeps the repeated design, which a varied child's change is told against.
         const auto candidate = [&](std::optional<MetaVariation>& variation,
@@ -721,7 +763,17 @@ std::vector<Genome> breed(const BreedRequest& request) {
         };
         std::optional<MetaVariation> variation;
         std::optional<Genome> variedFrom;
-        Genome child = candidate(variation, variedFrom);
+        std::optional<Glimpse> firstLook;
+        Genome child;
+        if (filtered && firstDraws[std::size_t(i)].ready && !taken.count(firstDraws[std::size_t(i)].id)) {
+            breeddetail::FirstDraw& first = firstDraws[std::size_t(i)];
+            rng = first.rng;
+            home = first.home;
+            child = std::move(first.child);
+            firstLook = std::move(first.look);
+        } else {
+            child = candidate(variation, variedFrom);
+        }
         int redraws = 0;
         if (filtered) {
             // The filter: a dull child or a near-duplicate of a parent or an earlier sibling is
@@ -733,7 +785,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
                     verdict.nearest = std::min(verdict.nearest, meanDeltaE(look, other));
                 return verdict;
             };
-            Glimpse look = glimpseOf(child);
+            Glimpse look = firstLook ? std::move(*firstLook) : glimpseOf(child);
             Verdict verdict = judge(look);
             for (int attempt = 1; attempt <= ChildRedraws && !verdict.passes(); ++attempt) {
                 std::optional<MetaVariation> againVariation;

@@ -1,5 +1,6 @@
 #include "marbler/Steer.h"
 
+#include "OnCores.h"
 #include "marbler/ChangeSummary.h"
 #include "marbler/Error.h"
 #include "marbler/Families.h"
@@ -11,14 +12,12 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <map>
 #include <mutex>
 #include <numeric>
 #include <set>
-#include <thread>
 #include <type_traits>
 
 namespace marbler {
@@ -761,20 +760,10 @@ SteerResult steerBreed(const SteerRequest& request) {
     {
         // The looks on every core: each candidate's alone, so the order does not matter.
         std::vector<Seen> seen(pool.size());
-        std::atomic<std::size_t> next{0};
-        const auto work = [&] {
-            for (std::size_t i = next++; i < pool.size(); i = next++) {
-                ids[i] = contentKey(pool[i]);
-                seen[i] = featureCache().get(pool[i], ids[i]);
-            }
-        };
-        const unsigned extra = std::min(std::max(std::thread::hardware_concurrency(), 1u) - 1, 15u);
-        std::vector<std::thread> threads;
-        for (unsigned t = 0; t < extra; ++t)
-            threads.emplace_back(work);
-        work();
-        for (std::thread& t : threads)
-            t.join();
+        breeddetail::forEachOnCores(pool.size(), [&](std::size_t i) {
+            ids[i] = contentKey(pool[i]);
+            seen[i] = featureCache().get(pool[i], ids[i]);
+        });
         for (std::size_t i = 0; i < pool.size(); ++i) {
             scores[i] = model.score(seen[i].features);
             poolLooks[i] = std::move(seen[i].look);

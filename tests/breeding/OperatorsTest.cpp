@@ -548,6 +548,29 @@ TEST_P(Operators, LocksHoldForEveryOperator) {
     }
 }
 
+TEST_P(Operators, FirstDrawsThatRepeatTheParentAreVariedInTheirTurn) {
+    // With its palette and initial state locked, reinit can only give the parent back: every
+    // child's first draw, made ahead on some core, repeats it, so in its turn each child is
+    // varied gently at once (the filter never sees the repeat, so no redraw is spent on it),
+    // unlike its siblings.
+    Genome p = parent(33);
+    setLocks(p, Locks{.palette = true, .initial = true});
+    const std::vector<Genome> children = breed(request(GeneticOperator::Reinit, {p}, 6, 8));
+    ASSERT_EQ(children.size(), 8u);
+    std::set<std::string> ids{genomeId(p)};
+    for (const Genome& child : children) {
+        EXPECT_TRUE(ids.insert(genomeId(child)).second) << "a repeat";
+        EXPECT_EQ(child.meta.toJson()["lineage"]["variation"]["of"], genomeId(p));
+        EXPECT_FALSE(child.meta.toJson()["lineage"].contains("redraws"));
+        EXPECT_EQ(child.initial, p.initial);
+        EXPECT_EQ(child.palette, p.palette);
+    }
+    // Made on every core, the same request still gives the same children.
+    const std::vector<Genome> again = breed(request(GeneticOperator::Reinit, {p}, 6, 8));
+    for (std::size_t i = 0; i < children.size(); ++i)
+        EXPECT_EQ(genomeId(again[i]), genomeId(children[i])) << i;
+}
+
 TEST_P(Operators, AlterWithLockedOperationsVariesWhatIsFree) {
     Genome p = parent(32);
     setLocks(p, {false, false, true});
