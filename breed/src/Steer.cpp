@@ -18,6 +18,7 @@
 #include <mutex>
 #include <numeric>
 #include <set>
+#include <span>
 #include <type_traits>
 
 namespace marbler {
@@ -302,29 +303,6 @@ std::array<double, FeatureGroups> groupSquares(const DesignFeatures& a, const De
     return out;
 }
 
-/// How far the newest picks moved, against the spread of their rounds, over one feature range:
-/// near 1 (or more) while picks jump about, small as they settle.
-double movement(const std::vector<PickRound>& rounds, std::size_t from, std::size_t to) {
-    std::vector<double> ratios;
-    const std::size_t n = rounds.size();
-    for (std::size_t r = n > 3 ? n - 3 : 1; r < n; ++r) {
-        const PickRound& now = rounds[r];
-        const PickRound& before = rounds[r - 1];
-        if (now.picked.empty() || before.picked.empty()) continue;
-        const DesignFeatures a = designFeatures(now.picked.front());
-        const DesignFeatures b = designFeatures(before.picked.front());
-        std::vector<double> spread;
-        for (const Genome& g : now.passed)
-            spread.push_back(partDistance(a, designFeatures(g), from, to));
-        const double typical = median(spread);
-        if (typical <= 0.0) continue;
-        ratios.push_back(partDistance(a, b, from, to) / typical);
-    }
-    if (ratios.empty()) return 1.0;
-    const double mean = std::accumulate(ratios.begin(), ratios.end(), 0.0) / double(ratios.size());
-    return std::clamp(0.3 + 0.9 * mean, 0.15, 1.5);
-}
-
 /// A fresh design of a family, or of the free generator (null), that knows its seed.
 Genome freshDesign(const Family* source, std::uint64_t seed, int dimension) {
     Genome g = source ? familyGenome(*source, seed) : randomGenome(seed, dimension);
@@ -438,21 +416,34 @@ double PreferenceModel::distance(const DesignFeatures& a, const DesignFeatures& 
 PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
     const std::size_t first =
         rounds.size() > std::size_t(MaxSteerRounds) ? rounds.size() - MaxSteerRounds : 0;
-    const std::vector<PickRound> recent(rounds.begin() + std::ptrdiff_t(first), rounds.end());
+    const std::span<const PickRound> recent(rounds.data() + first, rounds.size() - first);
+    // The features of every design of the rounds, on every core (most are cached from the
+    // generation before, but a bath of hundreds of drops takes a while to tell by content).
+    std::vector<const Genome*> designs;
+    for (const PickRound& in : recent)
+        for (const auto* list : {&in.picked, &in.passed, &in.disliked})
+            for (const Genome& g : *list)
+                designs.push_back(&g);
+    std::vector<DesignFeatures> features(designs.size());
+    breeddetail::forEachOnCores(designs.size(),
+                                [&](std::size_t i) { features[i] = designFeatures(*designs[i]); });
+    std::size_t next = designs.size();
     double weight = 1.0;
     for (std::size_t r = recent.size(); r-- > 0;) {
         const PickRound& in = recent[r];
+        next -= in.picked.size() + in.passed.size() + in.disliked.size();
+        auto from = features.begin() + std::ptrdiff_t(next);
         Round round;
         round.weight = weight;
         weight *= 0.85; // newer rounds say more of what one has in mind now
-        for (const Genome& g : in.picked)
-            round.picked.push_back(designFeatures(g));
-        for (const Genome& g : in.passed) {
-            round.passed.push_back(designFeatures(g));
+        for (std::size_t k = 0; k < in.picked.size(); ++k)
+            round.picked.push_back(std::move(*from++));
+        for (std::size_t k = 0; k < in.passed.size(); ++k) {
+            round.passed.push_back(std::move(*from++));
             round.passedWeight.push_back(1.0);
         }
-        for (const Genome& g : in.disliked) {
-            round.passed.push_back(designFeatures(g));
+        for (std::size_t k = 0; k < in.disliked.size(); ++k) {
+            round.passed.push_back(std::move(*from++));
             round.passedWeight.push_back(2.0);
         }
         if (!round.picked.empty() && !round.passed.empty()) ++mInformedRounds;
@@ -464,9 +455,9 @@ PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
     if (!mInformed) return;
     learnGroupWeights();
 
-    mSteps.palette = movement(recent, LayoutEnd, ColourEnd);
-    mSteps.initial = movement(recent, 0, LayoutEnd);
-    mSteps.strokes = movement(recent, ColourEnd, FeaturesEnd);
+    mSteps.palette = movement(LayoutEnd, ColourEnd);
+    mSteps.initial = movement(0, LayoutEnd);
+    mSteps.strokes = movement(ColourEnd, FeaturesEnd);
 
     // The words: the newest rounds' picks against what they passed over.
     DesignFeatures pickMean, passMean;
@@ -543,6 +534,30 @@ double PreferenceModel::score(const DesignFeatures& c) const {
             nearest = std::min(nearest, distance(c, p));
     }
     return -(broken / total) - NearestWeight * nearest;
+}
+
+/// How far the newest picks moved, against the spread of their rounds, over one feature range:
+/// near 1 (or more) while picks jump about, small as they settle.
+double PreferenceModel::movement(std::size_t from, std::size_t to) const {
+    std::vector<double> ratios;
+    const std::size_t n = mRounds.size();
+    for (std::size_t r = n > 3 ? n - 3 : 1; r < n; ++r) {
+        const Round& now = mRounds[r];
+        const Round& before = mRounds[r - 1];
+        if (now.picked.empty() || before.picked.empty()) continue;
+        const DesignFeatures& a = now.picked.front();
+        const DesignFeatures& b = before.picked.front();
+        std::vector<double> spread;
+        for (std::size_t k = 0; k < now.passed.size(); ++k)
+            if (now.passedWeight[k] == 1.0)
+                spread.push_back(partDistance(a, now.passed[k], from, to)); // not the disliked
+        const double typical = median(spread);
+        if (typical <= 0.0) continue;
+        ratios.push_back(partDistance(a, b, from, to) / typical);
+    }
+    if (ratios.empty()) return 1.0;
+    const double mean = std::accumulate(ratios.begin(), ratios.end(), 0.0) / double(ratios.size());
+    return std::clamp(0.3 + 0.9 * mean, 0.15, 1.5);
 }
 
 void PreferenceModel::learnGroupWeights() {

@@ -87,6 +87,7 @@ public:
 
 private:
     void learnGroupWeights();
+    double movement(std::size_t from, std::size_t to) const;
     struct Round {
         std::vector<DesignFeatures> picked, passed;
         std::vector<double> passedWeight;
