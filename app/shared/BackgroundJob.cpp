@@ -3,6 +3,9 @@
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 
+#include <QApplication>
+#include <QEventLoop>
+#include <QPointer>
 #include <QProgressDialog>
 #include <QThread>
 #include <QTimer>
@@ -61,6 +64,75 @@ BackgroundJob::~BackgroundJob() {
 
 void BackgroundJob::cancel() {
     mCancel->store(true);
+}
+
+namespace {
+
+/// While a window waits on work it asked for: no input reaches it but its progress box.
+class InputBlock : public QObject {
+public:
+    explicit InputBlock(QWidget* window)
+        : mWindow(window) {
+        qApp->installEventFilter(this);
+    }
+    ~InputBlock() override { qApp->removeEventFilter(this); }
+    void allow(QWidget* box) { mBox = box; }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        switch (event->type()) {
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonRelease:
+        case QEvent::MouseButtonDblClick:
+        case QEvent::Wheel:
+        case QEvent::KeyPress:
+        case QEvent::KeyRelease:
+        case QEvent::ShortcutOverride:
+        case QEvent::Shortcut:
+        case QEvent::ContextMenu:
+        case QEvent::Drop:
+        case QEvent::Close:
+            break;
+        default:
+            return false;
+        }
+        auto* widget = qobject_cast<QWidget*>(watched);
+        if (!widget || !mWindow) return false;
+        if (mBox && (widget == mBox || mBox->isAncestorOf(widget))) return false;
+        if (event->type() == QEvent::Close) {
+            if (widget != mWindow.data()) return false;
+            event->ignore(); // closed once the work is done, with another click
+            return true;
+        }
+        return widget->window() == mWindow.data();
+    }
+
+private:
+    QPointer<QWidget> mWindow;
+    QPointer<QWidget> mBox;
+};
+
+} // namespace
+
+JobOutcome BackgroundJob::runWaiting(QObject* owner, const JobBox& box, Work work) {
+    QEventLoop loop;
+    auto result = std::make_shared<std::optional<JobOutcome>>();
+    InputBlock block(box.parent ? box.parent->window() : nullptr);
+    QApplication::setOverrideCursor(Qt::BusyCursor);
+    // The job may end after the wait has (the application quitting): it then tells no one.
+    BackgroundJob* job = start(owner, box, std::move(work),
+                               [result, waiting = QPointer<QEventLoop>(&loop)](const JobOutcome& outcome) {
+                                   *result = outcome;
+                                   if (waiting) waiting->quit();
+                               });
+    block.allow(job->progressBox());
+    // The owner gone first (the job cancelled and waited for), or the application quitting,
+    // ends the wait too.
+    QObject::connect(job, &QObject::destroyed, &loop, &QEventLoop::quit);
+    loop.exec();
+    QApplication::restoreOverrideCursor();
+    if (*result) return **result;
+    return {JobOutcome::Kind::Cancelled, {}};
 }
 
 void BackgroundJob::end() {

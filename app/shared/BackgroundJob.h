@@ -64,6 +64,13 @@ public:
     /// Starts `work` and shows `box`. The job deletes itself after `finished` has run.
     static BackgroundJob* start(QObject* owner, const JobBox& box, Work work, Finished finished);
 
+    /// Runs `work` as a job and waits for it, for short work the user asked to wait for (a
+    /// generation being bred): the window keeps drawing, but takes no clicks, keys or closing
+    /// meanwhile (a busy cursor says so), and the box shows if the work outlasts its minimum
+    /// duration. Returns how it ended: Cancelled also when the application quits or the owner
+    /// goes first. The work may outlive the wait then, so it must own what it writes to.
+    static JobOutcome runWaiting(QObject* owner, const JobBox& box, Work work);
+
     /// Cancels and waits for the thread.
     ~BackgroundJob() override;
 

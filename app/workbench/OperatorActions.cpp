@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace marbler::ui {
 
@@ -100,6 +101,11 @@ void OperatorActions::setStrength(double strength) {
 }
 
 void OperatorActions::request(GeneticOperator op) {
+    if (mBreedingNow) {
+        // A generation is being bred (off the GUI thread, the window waiting): this one follows.
+        mPendingOperator = op;
+        return;
+    }
     if (mBredRendering) {
         // Breeding is quick, its nine renders are not: clicks made meanwhile would queue
         // generations that keep arriving for seconds. The last click waits for the renders.
@@ -112,6 +118,9 @@ void OperatorActions::request(GeneticOperator op) {
     const bool bred = mApply(op);
     mBreedingNow = false;
     mBredRendering = bred && !mRenderingDone();
+    if (mPendingOperator && !mBredRendering)
+        QTimer::singleShot(0, this,
+                           [this, op = *std::exchange(mPendingOperator, std::nullopt)] { request(op); });
 }
 
 void OperatorActions::onRenderingFinished() {

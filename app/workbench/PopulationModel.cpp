@@ -109,8 +109,16 @@ std::uint64_t PopulationModel::nextBreedSeed() const {
 }
 
 void PopulationModel::apply(GeneticOperator op, double strength) {
+    PendingBreed pending = prepareBreed(op, strength);
+    breedPending(pending);
+    commitBreed(std::move(pending));
+}
+
+PopulationModel::PendingBreed PopulationModel::prepareBreed(GeneticOperator op, double strength) const {
     const auto selected = selectedCells();
-    BreedRequest request;
+    PendingBreed pending;
+    pending.op = op;
+    BreedRequest& request = pending.steer.breed;
     request.op = op;
     request.seed = nextBreedSeed();
     request.strength = std::clamp(strength, 0.0, 1.0);
@@ -125,38 +133,57 @@ void PopulationModel::apply(GeneticOperator op, double strength) {
     for (int i = 0; i < CellCount; ++i)
         if (!current().selected[std::size_t(i)]) request.childNumbers.push_back(i + 1);
     // Steering (issue 26): the offspring ranked by what the picks so far say.
-    std::vector<Genome> children;
-    QString explanation;
+    pending.steered = mSteering;
     if (mSteering) {
-        SteerRequest steer;
-        steer.breed = request;
-        steer.rounds = steerRounds(request.parents);
-        steer.fresh = mWildcard;
-        SteerResult steered = steerBreed(steer);
+        pending.steer.rounds = steerRounds(request.parents);
+        pending.steer.fresh = mWildcard;
+    }
+    pending.wildcard = mWildcard;
+    pending.selected = current().selected;
+    pending.parentCells = selected;
+    pending.current = mCurrent;
+    pending.historySize = mHistory.size();
+    return pending;
+}
+
+void PopulationModel::breedPending(PendingBreed& pending) {
+    const BreedRequest& request = pending.steer.breed;
+    std::vector<Genome> children;
+    if (pending.steered) {
+        SteerResult steered = steerBreed(pending.steer);
         children = std::move(steered.children);
-        explanation = QString::fromStdString(steered.explanation);
+        pending.explanation = std::move(steered.explanation);
     } else {
         children = breed(request);
     }
     if (children.size() != std::size_t(request.count))
         throw RuntimeFailure("the operator made too few offspring");
+    if (pending.wildcard && children.size() > 1) children.back() = wildcardChild(request, children.back());
+    pending.children = std::move(children);
+}
 
+void PopulationModel::commitBreed(PendingBreed pending) {
+    if (pending.current != mCurrent || pending.historySize != mHistory.size() ||
+        pending.children.size() != std::size_t(pending.steer.breed.count))
+        throw RuntimeFailure("the population changed while a generation was being bred");
+    const GeneticOperator op = pending.op;
+    const std::vector<int>& selected = pending.parentCells;
     Generation next;
-    next.selected = current().selected;
+    next.selected = pending.selected;
     next.parentCells = selected;
     next.description = selected.size() == 1
                            ? tr("%1 of 1 parent").arg(operatorLabel(op))
                            : tr("%1 of %2 parents").arg(operatorLabel(op)).arg(selected.size());
-    if (mWildcard && children.size() > 1) children.back() = wildcardChild(request, children.back());
     std::size_t child = 0;
     for (int i = 0; i < CellCount; ++i) {
-        if (current().selected[std::size_t(i)]) {
+        if (pending.selected[std::size_t(i)]) {
             next.cells[std::size_t(i)] = current().cells[std::size_t(i)];
         } else {
-            next.cells[std::size_t(i)] = children[child++];
+            next.cells[std::size_t(i)] = std::move(pending.children[child++]);
         }
     }
-    if (!explanation.isEmpty()) mExplanations[int(mHistory.size())] = explanation;
+    if (!pending.explanation.empty())
+        mExplanations[int(mHistory.size())] = QString::fromStdString(pending.explanation);
     pushGeneration(std::move(next));
 }
 

@@ -123,6 +123,27 @@ public:
     /// breeding again from a generation one went back to draws anew). Throws marbler::Error
     /// (InputError for a wrong parent count or mixed dimensions).
     void apply(GeneticOperator op, double strength);
+    /// apply() in three steps, so that the window breeds off the GUI thread: prepareBreed takes
+    /// what the operators need from the population as it is now (and throws what apply() throws
+    /// for a request that cannot run), breedPending makes the children on any thread, and
+    /// commitBreed makes them the new generation (apply() is the three in a row).
+    struct PendingBreed {
+        GeneticOperator op = GeneticOperator::Alter;
+        SteerRequest steer; ///< steer.breed is the request; steer.rounds only when steered
+        bool steered = false;
+        bool wildcard = false;
+        std::array<bool, CellCount> selected{}; ///< the parents' cells, as they were
+        std::vector<int> parentCells;
+        int current = 0; ///< the generation bred from, and the history's size then
+        std::size_t historySize = 0;
+        std::vector<Genome> children; ///< set by breedPending
+        std::string explanation;      ///< why, when steered
+    };
+    PendingBreed prepareBreed(GeneticOperator op, double strength) const;
+    /// Touches nothing of the model: safe on any thread. Throws marbler::Error.
+    static void breedPending(PendingBreed& pending);
+    /// Throws RuntimeFailure when the population has moved on since prepareBreed.
+    void commitBreed(PendingBreed pending);
     /// Whether apply() makes its last offspring cell a wildcard (on by default; wildcardChild,
     /// Operators.h): a fresh design of the parents' family, or a free random one without a
     /// family, seeded from the generation's seed, against breeding fatigue. Its

@@ -9,6 +9,7 @@
 #include "marbler/GenomeImage.h"
 #include "marbler/ImageFormats.h"
 #include "marbler/Paper.h"
+#include "shared/BackgroundJob.h"
 #include "shared/DesignDialog.h"
 #include "shared/DesignExport.h"
 #include "shared/ErrorReport.h"
@@ -649,8 +650,28 @@ bool WorkbenchWindow::applyOperator(GeneticOperator op) {
         statusBar()->showMessage(why, 5000);
         return false;
     }
+    // The children are made off the GUI thread: from a design of long stylus strokes a generation
+    // takes seconds, and the window must keep drawing (and offer to cancel) meanwhile.
+    auto pending = std::make_shared<PopulationModel::PendingBreed>();
     try {
-        mModel->apply(op, strength());
+        *pending = mModel->prepareBreed(op, strength());
+    } catch (const Error& e) {
+        reportError(this, tr("Cannot breed"), QString::fromStdString(e.what()));
+        return false;
+    }
+    JobBox box(this, tr("Breeding generation %1…").arg(mModel->current().number + 1),
+               QStringLiteral("breedProgress"));
+    box.busy = true;
+    box.minimumDurationMs = 500;
+    const JobOutcome outcome = BackgroundJob::runWaiting(
+        this, box, [pending](const RenderControl&) { PopulationModel::breedPending(*pending); });
+    if (outcome.cancelled()) {
+        statusBar()->showMessage(tr("Breeding cancelled: the generation is as it was"), 5000);
+        return false;
+    }
+    try {
+        if (outcome.failed()) throw RuntimeFailure(outcome.error.toStdString());
+        mModel->commitBreed(std::move(*pending));
     } catch (const Error& e) {
         reportError(this, tr("Cannot breed"), QString::fromStdString(e.what()));
         return false;

@@ -8,12 +8,16 @@
 #include "marbler/Error.h"
 
 #include <QProgressDialog>
+#include <QPushButton>
+#include <QTest>
+#include <QTimer>
 #include <QWidget>
 
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <thread>
 
@@ -102,6 +106,50 @@ TEST(BackgroundJob, AClosedOwnerCancelsAndWaitsWithoutTellingAnyone) {
     EXPECT_TRUE(returned.load());
     QCoreApplication::processEvents();
     EXPECT_FALSE(told);
+}
+
+TEST(BackgroundJob, RunWaitingReturnsHowTheWorkEnded) {
+    QWidget window;
+    auto value = std::make_shared<int>(0);
+    const JobOutcome done = BackgroundJob::runWaiting(
+        &window, {&window, QStringLiteral("Working…")}, [value](const RenderControl&) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            *value = 7;
+        });
+    EXPECT_TRUE(done.done());
+    EXPECT_EQ(*value, 7);
+    const JobOutcome failed =
+        BackgroundJob::runWaiting(&window, {&window, QStringLiteral("Working…")}, [](const RenderControl&) {
+            throw RuntimeFailure("every cell is a parent");
+        });
+    EXPECT_TRUE(failed.failed());
+    EXPECT_EQ(failed.error, QStringLiteral("every cell is a parent"));
+}
+
+TEST(BackgroundJob, RunWaitingTakesNoClicksButTheBoxCancels) {
+    QWidget window;
+    auto* button = new QPushButton(QStringLiteral("Alter"), &window);
+    window.show();
+    int clicks = 0;
+    QObject::connect(button, &QPushButton::clicked, [&] { ++clicks; });
+    std::atomic<bool> started = false;
+    JobBox box(&window, QStringLiteral("Breeding…"), QStringLiteral("waitBox"));
+    box.minimumDurationMs = 0;
+    bool boxFound = false;
+    // While the window waits: a click on its button, then Cancel in the box.
+    QTimer::singleShot(0, &window, [&] {
+        QTest::mouseClick(button, Qt::LeftButton);
+        auto* progress = window.findChild<QProgressDialog*>(QStringLiteral("waitBox"));
+        boxFound = progress != nullptr;
+        if (progress) emit progress->canceled();
+    });
+    const JobOutcome outcome = BackgroundJob::runWaiting(
+        &window, box, [&](const RenderControl& control) { untilCancelled(control, started); });
+    EXPECT_TRUE(boxFound);
+    EXPECT_TRUE(outcome.cancelled());
+    EXPECT_EQ(clicks, 0) << "a click landed while the window waited";
+    QTest::mouseClick(button, Qt::LeftButton);
+    EXPECT_EQ(clicks, 1) << "the window takes clicks again once the wait is over";
 }
 
 } // namespace

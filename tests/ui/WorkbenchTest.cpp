@@ -219,6 +219,27 @@ TEST_F(WorkbenchTest, BreedingIsReproducibleFromTheSessionSeed) {
     EXPECT_EQ(snapshot(*other.model()), first);
 }
 
+TEST_F(WorkbenchTest, BreedingLeavesTheWindowDrawingButTakesNoClicks) {
+    // A generation is bred off the GUI thread (from long stylus strokes it takes seconds): the
+    // window's own events go on meanwhile, but a click on a cell is not taken until it is done.
+    model().setSelected(3, true);
+    bool breeding = true, ranDuring = false, clickTaken = true;
+    QTimer::singleShot(0, mWindow.get(), [&] {
+        ranDuring = breeding;
+        QTest::mouseClick(mWindow->cell(5), Qt::LeftButton);
+        clickTaken = model().isSelected(5);
+    });
+    ASSERT_TRUE(mWindow->applyOperator(GeneticOperator::Alter));
+    breeding = false;
+    EXPECT_TRUE(ranDuring) << "the GUI thread waited for the children";
+    EXPECT_FALSE(clickTaken) << "a click landed while the generation was being bred";
+    EXPECT_EQ(model().history().size(), 2u);
+    EXPECT_EQ(model().selectedCells(), std::vector<int>{3});
+    // Afterwards the window takes clicks again.
+    QTest::mouseClick(mWindow->cell(5), Qt::LeftButton);
+    EXPECT_TRUE(model().isSelected(5));
+}
+
 TEST_F(WorkbenchTest, BackAndForwardRestoreGenerationsExactly) {
     const auto gen0 = snapshot(model());
     model().setSelected(1, true);
