@@ -48,7 +48,7 @@
         <translation>Eine Wiederherstellungsdatei wurde übersprungen: %1</translation>
     </message>
     <message>
-        <location filename="../app/shared/BackgroundJob.cpp" line="+33"/>
+        <location filename="../app/shared/BackgroundJob.cpp" line="+36"/>
         <source>an unknown error</source>
         <translation>ein unbekannter Fehler</translation>
     </message>
@@ -3215,7 +3215,7 @@ Familie: %2</translation>
 <context>
     <name>marbler::ui::OperatorActions</name>
     <message>
-        <location filename="../app/workbench/OperatorActions.cpp" line="+37"/>
+        <location filename="../app/workbench/OperatorActions.cpp" line="+38"/>
         <source>Alter (1 parent)</source>
         <translation>Abwandeln (1 Elternteil)</translation>
     </message>
@@ -3267,12 +3267,12 @@ Familie: %2</translation>
         <translation> Stärke %1 % </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>%1 follows when this generation has rendered</source>
         <translation>%1 folgt, wenn diese Generation gerendert ist</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+26"/>
         <source>&amp;Steer by my picks</source>
         <translation>Nach meiner Auswahl &amp;steuern</translation>
     </message>
@@ -3764,7 +3764,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
 <context>
     <name>marbler::ui::PopulationModel</name>
     <message>
-        <location filename="../app/workbench/PopulationModel.cpp" line="+37"/>
+        <location filename="../app/workbench/PopulationModel.cpp" line="+24"/>
         <source>Empty workbench</source>
         <translation>Leere Werkbank</translation>
     </message>
@@ -3829,7 +3829,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>%1 braucht Eltern derselben Art (flach/räumlich): die gewählten Muster mischen flache und räumliche</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+76"/>
         <source>%1 of 1 parent</source>
         <translation>%1 von 1 Elternteil</translation>
     </message>
@@ -3854,7 +3854,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Farbvarianten gemischt aus %1 Eltern</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+14"/>
         <source>New %1 population</source>
         <translation>Neue Population: %1</translation>
     </message>
@@ -3869,7 +3869,7 @@ Die Muster bleiben auf dem, worauf sie gezeigt wurden.</translation>
         <translation>Neue zufällige Population</translation>
     </message>
     <message>
-        <location line="+218"/>
+        <location line="+196"/>
         <source>%1 (branch %2)</source>
         <translation>%1 (Zweig %2)</translation>
     </message>
@@ -5034,7 +5034,7 @@ Wenn nicht, bleiben sie %3 Tage unter Datei ▸ Ungespeicherte Muster wiederhers
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/workbench/WorkbenchWindow.cpp" line="+951"/>
+        <location filename="../app/workbench/WorkbenchWindow.cpp" line="+984"/>
         <source>Open in editor</source>
         <translation>Im Editor öffnen</translation>
     </message>
@@ -5125,7 +5125,7 @@ Wenn nicht, bleiben sie %3 Tage unter Datei ▸ Ungespeicherte Muster wiederhers
         <translation>Ein Bild marmorieren</translation>
     </message>
     <message>
-        <location filename="../app/workbench/WorkbenchWindow.cpp" line="-872"/>
+        <location filename="../app/workbench/WorkbenchWindow.cpp" line="-904"/>
         <source>Marbler designs (*.marble.json *.json *.png *.tif *.tiff);;Genome files (*.marble.json *.json);;Images with a genome (*.png *.tif *.tiff);;All files (*)</source>
         <translation>Marbler-Muster (*.marble.json *.json *.png *.tif *.tiff);;Genomdateien (*.marble.json *.json);;Bilder mit Genom (*.png *.tif *.tiff);;Alle Dateien (*)</translation>
     </message>
@@ -5136,12 +5136,12 @@ Wenn nicht, bleiben sie %3 Tage unter Datei ▸ Ungespeicherte Muster wiederhers
     </message>
     <message>
         <location line="+24"/>
-        <location line="+818"/>
+        <location line="+845"/>
         <source>Brought back a favourite</source>
         <translation>Einen Favoriten zurückgeholt</translation>
     </message>
     <message>
-        <location line="-816"/>
+        <location line="-843"/>
         <source>Cannot use the dropped design</source>
         <translation>Das abgelegte Muster kann nicht verwendet werden</translation>
     </message>
@@ -5400,17 +5400,28 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Eine leere Zelle: öffnen Sie ein Muster (Strg+O) oder legen Sie hier eine Datei ab</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
+        <location line="+17"/>
         <source>Cannot breed</source>
         <translation>Züchten nicht möglich</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-14"/>
+        <source>Breeding generation %1…</source>
+        <translation>Generation %1 wird gezüchtet…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Breeding cancelled: the generation is as it was</source>
+        <translation>Züchten abgebrochen: die Generation ist unverändert</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Bred generation %1 with %2</source>
         <translation>Generation %1 mit %2 gezüchtet</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+36"/>
         <source>Cannot make a random population</source>
         <translation>Keine zufällige Population möglich</translation>
     </message>
@@ -5435,7 +5446,7 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Muster %1</translation>
     </message>
     <message>
-        <location line="-625"/>
+        <location line="-652"/>
         <source>New marbled &amp;paper…</source>
         <translation>Neues Marmor&amp;papier…</translation>
     </message>
@@ -5450,7 +5461,7 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
         <translation>Benennt das fokussierte Muster (sonst das erste gewählte) und gibt ihm eine Notiz</translation>
     </message>
     <message>
-        <location line="+426"/>
+        <location line="+453"/>
         <source>Nothing opened: %1 holds no design</source>
         <translation>Nichts geöffnet: %1 enthält kein Muster</translation>
     </message>
@@ -5511,12 +5522,12 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+263"/>
+        <location line="+268"/>
         <source>Copied %1 to the clipboard as genome text</source>
         <translation>%1 als Genomtext in die Zwischenablage kopiert</translation>
     </message>
     <message>
-        <location line="-248"/>
+        <location line="-253"/>
         <source>Cannot make the paper</source>
         <translation>Das Papier kann nicht erzeugt werden</translation>
     </message>
@@ -5557,6 +5568,31 @@ Die Muster werden stattdessen auf %2 gezeigt.</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>More like this</source>
+        <translation>Mehr davon</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breeds the next generation from this design alone</source>
+        <translation>Züchtet die nächste Generation allein aus diesem Muster</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No longer less like this</source>
+        <translation>Nicht mehr weniger davon</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Less like this</source>
+        <translation>Weniger davon</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Steering moves the next generations away from this design</source>
+        <translation>Die Lenkung führt die nächsten Generationen von diesem Muster weg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Open large…</source>
         <translation>Groß öffnen…</translation>
     </message>

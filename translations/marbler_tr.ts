@@ -48,7 +48,7 @@
         <translation>Bir kurtarma dosyası atlandı: %1</translation>
     </message>
     <message>
-        <location filename="../app/shared/BackgroundJob.cpp" line="+33"/>
+        <location filename="../app/shared/BackgroundJob.cpp" line="+36"/>
         <source>an unknown error</source>
         <translation>bilinmeyen bir hata</translation>
     </message>
@@ -3212,7 +3212,7 @@ Aile: %2</translation>
 <context>
     <name>marbler::ui::OperatorActions</name>
     <message>
-        <location filename="../app/workbench/OperatorActions.cpp" line="+37"/>
+        <location filename="../app/workbench/OperatorActions.cpp" line="+38"/>
         <source>Alter (1 parent)</source>
         <translation>Değiştir (1 ebeveyn)</translation>
     </message>
@@ -3264,12 +3264,12 @@ Aile: %2</translation>
         <translation> Güç %%1 </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>%1 follows when this generation has rendered</source>
         <translation>%1, bu nesil işlendiğinde gelir</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+26"/>
         <source>&amp;Steer by my picks</source>
         <translation>Seçimlerime göre &amp;yönlendir</translation>
     </message>
@@ -3759,7 +3759,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
 <context>
     <name>marbler::ui::PopulationModel</name>
     <message>
-        <location filename="../app/workbench/PopulationModel.cpp" line="+37"/>
+        <location filename="../app/workbench/PopulationModel.cpp" line="+24"/>
         <source>Empty workbench</source>
         <translation>Boş tezgâh</translation>
     </message>
@@ -3824,7 +3824,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>%1 için aynı türden (düz/katı) ebeveynler gerekir: seçilen desenlerde düz ve katı olanlar karışık</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+76"/>
         <source>%1 of 1 parent</source>
         <translation>1 ebeveynden %1</translation>
     </message>
@@ -3849,7 +3849,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>%1 ebeveynden karıştırılmış renk seçenekleri</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+14"/>
         <source>New %1 population</source>
         <translation>Yeni %1 topluluğu</translation>
     </message>
@@ -3864,7 +3864,7 @@ Desenler gösterildikleri nesnede kalır.</translation>
         <translation>Yeni rastgele topluluk</translation>
     </message>
     <message>
-        <location line="+218"/>
+        <location line="+196"/>
         <source>%1 (branch %2)</source>
         <translation>%1 (dal %2)</translation>
     </message>
@@ -5029,7 +5029,7 @@ Açılmazlarsa %3 gün boyunca Dosya ▸ Kaydedilmemiş desenleri kurtar… alt�
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../app/workbench/WorkbenchWindow.cpp" line="+951"/>
+        <location filename="../app/workbench/WorkbenchWindow.cpp" line="+984"/>
         <source>Open in editor</source>
         <translation>Düzenleyicide aç</translation>
     </message>
@@ -5120,7 +5120,7 @@ Açılmazlarsa %3 gün boyunca Dosya ▸ Kaydedilmemiş desenleri kurtar… alt�
         <translation>Bir resmi ebrula</translation>
     </message>
     <message>
-        <location filename="../app/workbench/WorkbenchWindow.cpp" line="-872"/>
+        <location filename="../app/workbench/WorkbenchWindow.cpp" line="-904"/>
         <source>Marbler designs (*.marble.json *.json *.png *.tif *.tiff);;Genome files (*.marble.json *.json);;Images with a genome (*.png *.tif *.tiff);;All files (*)</source>
         <translation>Marbler desenleri (*.marble.json *.json *.png *.tif *.tiff);;Genom dosyaları (*.marble.json *.json);;Genom taşıyan görüntüler (*.png *.tif *.tiff);;Tüm dosyalar (*)</translation>
     </message>
@@ -5131,12 +5131,12 @@ Açılmazlarsa %3 gün boyunca Dosya ▸ Kaydedilmemiş desenleri kurtar… alt�
     </message>
     <message>
         <location line="+24"/>
-        <location line="+818"/>
+        <location line="+845"/>
         <source>Brought back a favourite</source>
         <translation>Bir gözde geri getirildi</translation>
     </message>
     <message>
-        <location line="-816"/>
+        <location line="-843"/>
         <source>Cannot use the dropped design</source>
         <translation>Bırakılan desen kullanılamıyor</translation>
     </message>
@@ -5395,17 +5395,28 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>Boş bir hücre: bir desen açın (Ctrl+O) ya da buraya bir dosya bırakın</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
+        <location line="+17"/>
         <source>Cannot breed</source>
         <translation>Üretilemiyor</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-14"/>
+        <source>Breeding generation %1…</source>
+        <translation>%1. nesil üretiliyor…</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Breeding cancelled: the generation is as it was</source>
+        <translation>Üretim iptal edildi: nesil olduğu gibi kaldı</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Bred generation %1 with %2</source>
         <translation>%1. nesil %2 ile üretildi</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+36"/>
         <source>Cannot make a random population</source>
         <translation>Rastgele topluluk yapılamıyor</translation>
     </message>
@@ -5430,7 +5441,7 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>desen %1</translation>
     </message>
     <message>
-        <location line="-625"/>
+        <location line="-652"/>
         <source>New marbled &amp;paper…</source>
         <translation>Yeni e&amp;bru kâğıdı…</translation>
     </message>
@@ -5445,7 +5456,7 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
         <translation>Odaktaki desene (yoksa ilk seçilene) bir ad ve bir not verir</translation>
     </message>
     <message>
-        <location line="+426"/>
+        <location line="+453"/>
         <source>Nothing opened: %1 holds no design</source>
         <translation>Hiçbir şey açılmadı: %1 desen içermiyor</translation>
     </message>
@@ -5506,12 +5517,12 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+263"/>
+        <location line="+268"/>
         <source>Copied %1 to the clipboard as genome text</source>
         <translation>%1 panoya genom metni olarak kopyalandı</translation>
     </message>
     <message>
-        <location line="-248"/>
+        <location line="-253"/>
         <source>Cannot make the paper</source>
         <translation>Kâğıt yapılamıyor</translation>
     </message>
@@ -5552,6 +5563,31 @@ Desenler bunun yerine %2 üzerinde gösteriliyor.</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>More like this</source>
+        <translation>Bunun gibi daha fazla</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breeds the next generation from this design alone</source>
+        <translation>Sonraki nesli yalnızca bu desenden üretir</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No longer less like this</source>
+        <translation>Artık bunun gibi daha az değil</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Less like this</source>
+        <translation>Bunun gibi daha az</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Steering moves the next generations away from this design</source>
+        <translation>Yönlendirme sonraki nesilleri bu desenden uzaklaştırır</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Open large…</source>
         <translation>Büyük aç…</translation>
     </message>
