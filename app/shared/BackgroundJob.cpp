@@ -96,8 +96,12 @@ protected:
         default:
             return false;
         }
+        if (!mWindow) return false;
+        // A shortcut goes to its action, not to a widget: none runs while the window waits, in any
+        // window, for the moment it lasts (the box cancels by Escape, a key press of its own).
+        if (event->type() == QEvent::Shortcut) return true;
         auto* widget = qobject_cast<QWidget*>(watched);
-        if (!widget || !mWindow) return false;
+        if (!widget) return false;
         if (mBox && (widget == mBox || mBox->isAncestorOf(widget))) return false;
         if (event->type() == QEvent::Close) {
             if (widget != mWindow.data()) return false;

@@ -3,10 +3,13 @@
 
 #include "shared/BackgroundJob.h"
 
+#include "UiTestSupport.h"
 #include "WaitFor.h"
 #include "marbler/CpuRenderer.h"
 #include "marbler/Error.h"
 
+#include <QAction>
+#include <QKeySequence>
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QTest>
@@ -130,15 +133,22 @@ TEST(BackgroundJob, RunWaitingTakesNoClicksButTheBoxCancels) {
     QWidget window;
     auto* button = new QPushButton(QStringLiteral("Alter"), &window);
     window.show();
-    int clicks = 0;
+    int clicks = 0, shortcuts = 0;
     QObject::connect(button, &QPushButton::clicked, [&] { ++clicks; });
+    auto* action = new QAction(QStringLiteral("Recombine"), &window);
+    action->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_2));
+    window.addAction(action);
+    QObject::connect(action, &QAction::triggered, [&] { ++shortcuts; });
+    ASSERT_TRUE(test::activate(&window)); // shortcuts need an active window
     std::atomic<bool> started = false;
     JobBox box(&window, QStringLiteral("Breeding…"), QStringLiteral("waitBox"));
     box.minimumDurationMs = 0;
     bool boxFound = false;
-    // While the window waits: a click on its button, then Cancel in the box.
+    // While the window waits: a click on its button and its action's shortcut, then Cancel in
+    // the box.
     QTimer::singleShot(0, &window, [&] {
         QTest::mouseClick(button, Qt::LeftButton);
+        QTest::keyClick(button, Qt::Key_2, Qt::ControlModifier);
         auto* progress = window.findChild<QProgressDialog*>(QStringLiteral("waitBox"));
         boxFound = progress != nullptr;
         if (progress) emit progress->canceled();
@@ -148,8 +158,11 @@ TEST(BackgroundJob, RunWaitingTakesNoClicksButTheBoxCancels) {
     EXPECT_TRUE(boxFound);
     EXPECT_TRUE(outcome.cancelled());
     EXPECT_EQ(clicks, 0) << "a click landed while the window waited";
+    EXPECT_EQ(shortcuts, 0) << "a shortcut ran while the window waited";
     QTest::mouseClick(button, Qt::LeftButton);
     EXPECT_EQ(clicks, 1) << "the window takes clicks again once the wait is over";
+    QTest::keyClick(button, Qt::Key_2, Qt::ControlModifier);
+    EXPECT_EQ(shortcuts, 1) << "and its shortcuts";
 }
 
 } // namespace
