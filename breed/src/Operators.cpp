@@ -1,5 +1,4 @@
 #include "marbler/Operators.h"
-#include "OnCores.h"
 
 #include "marbler/ChangeSummary.h"
 #include "marbler/Error.h"
@@ -8,6 +7,7 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
 #include "marbler/Tools.h"
+#include "marbler/Workers.h"
 
 #include <glm/geometric.hpp>
 
@@ -708,7 +708,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
     // one at a time.
     std::vector<Glimpse> looks(filtered ? parentCount : 0);
     std::vector<breeddetail::FirstDraw> firstDraws(filtered ? count : 0);
-    breeddetail::forEachOnCores(looks.size() + firstDraws.size(), [&](std::size_t k) {
+    forEachOnCores(looks.size() + firstDraws.size(), [&](std::size_t k) {
         if (k < looks.size()) {
             looks[k] = glimpseOf(request.parents[k]);
             return;

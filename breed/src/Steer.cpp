@@ -1,12 +1,12 @@
 #include "marbler/Steer.h"
 
-#include "OnCores.h"
 #include "marbler/ChangeSummary.h"
 #include "marbler/Error.h"
 #include "marbler/Families.h"
 #include "marbler/Generator.h"
 #include "marbler/Params.h"
 #include "marbler/Random.h"
+#include "marbler/Workers.h"
 
 #include <glm/geometric.hpp>
 
@@ -425,8 +425,7 @@ PreferenceModel::PreferenceModel(const std::vector<PickRound>& rounds) {
             for (const Genome& g : *list)
                 designs.push_back(&g);
     std::vector<DesignFeatures> features(designs.size());
-    breeddetail::forEachOnCores(designs.size(),
-                                [&](std::size_t i) { features[i] = designFeatures(*designs[i]); });
+    forEachOnCores(designs.size(), [&](std::size_t i) { features[i] = designFeatures(*designs[i]); });
     std::size_t next = designs.size();
     double weight = 1.0;
     for (std::size_t r = recent.size(); r-- > 0;) {
@@ -775,7 +774,7 @@ SteerResult steerBreed(const SteerRequest& request) {
     {
         // The looks on every core: each candidate's alone, so the order does not matter.
         std::vector<Seen> seen(pool.size());
-        breeddetail::forEachOnCores(pool.size(), [&](std::size_t i) {
+        forEachOnCores(pool.size(), [&](std::size_t i) {
             ids[i] = contentKey(pool[i]);
             seen[i] = featureCache().get(pool[i], ids[i]);
         });

@@ -5,8 +5,8 @@
 #include "marbler/GenomeIO.h"
 #include "marbler/Params.h"
 #include "marbler/Separations.h"
-#include "marbler/Threads.h"
 #include "marbler/Tools.h"
+#include "marbler/Workers.h"
 
 #include <glm/geometric.hpp>
 
@@ -18,7 +18,6 @@
 #include <mutex>
 #include <numbers>
 #include <optional>
-#include <thread>
 
 namespace marbler {
 namespace {
@@ -226,32 +225,27 @@ VectorDesign traceDesign(const Genome& genome, const VectorOptions& options) {
 
     // Outlines are independent: one worker per core takes the next ink from a counter. The
     // vertex cap counts every vertex traced, so whether it is reached does not depend on timing.
-    std::atomic<std::size_t> traced{0}, gaps{0}, next{0};
+    // A failed outline stops the others after their current one.
+    std::atomic<std::size_t> traced{0}, gaps{0};
     std::vector<std::vector<InkOutline>> outlines(inks.size()); // empty: shows nowhere
     std::vector<std::size_t> dropped(inks.size(), 0);
-    std::atomic<bool> stop{false}; // a failed outline stops the others after their current one
-    auto worker = [&] {
-        for (std::size_t k = next.fetch_add(1); k < inks.size() && !stop; k = next.fetch_add(1)) {
-            OutlineTracer tracer(ops, inks[k], options, traced, gaps);
-            InkOutline outline;
-            outline.step = inks[k];
-            outline.color = ops[inks[k]].color;
-            outline.points = tracer.trace();
-            // An outline whose bounding box misses the design space cannot colour any of it
-            // (its region lies inside that box); on a wrapping bath its images may.
-            glm::dvec2 lo(INFINITY), hi(-INFINITY);
-            for (const glm::dvec2& p : outline.points) {
-                lo = glm::min(lo, p);
-                hi = glm::max(hi, p);
-            }
-            dropped[k] = simplify(outline.points, options);
-            outlines[k] = imagesInTile(std::move(outline), lo, hi, genome);
-            if (outlines[k].empty()) dropped[k] = 0;
+    forEachOnCores(inks.size(), [&](std::size_t k) {
+        OutlineTracer tracer(ops, inks[k], options, traced, gaps);
+        InkOutline outline;
+        outline.step = inks[k];
+        outline.color = ops[inks[k]].color;
+        outline.points = tracer.trace();
+        // An outline whose bounding box misses the design space cannot colour any of it
+        // (its region lies inside that box); on a wrapping bath its images may.
+        glm::dvec2 lo(INFINITY), hi(-INFINITY);
+        for (const glm::dvec2& p : outline.points) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
         }
-    };
-    int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1,
-                             static_cast<int>(std::max<std::size_t>(inks.size(), 1)));
-    runOnThreads(threads, stop, worker);
+        dropped[k] = simplify(outline.points, options);
+        outlines[k] = imagesInTile(std::move(outline), lo, hi, genome);
+        if (outlines[k].empty()) dropped[k] = 0;
+    });
 
     design.gapsAtDepthCap = gaps.load();
     for (std::size_t k = 0; k < inks.size(); ++k) {

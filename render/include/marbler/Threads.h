@@ -1,6 +1,8 @@
 #pragma once
-/// One worker per core: how every multi-threaded loop of the renderers shares its work (rows,
-/// texel rows or ink outlines handed out by an atomic counter the work reads).
+/// One worker per core for the renderers' rows (image rows, texel rows), with progress and
+/// cancel, over marbler/Workers.h's thread loop.
+
+#include "marbler/Workers.h"
 
 #include <atomic>
 #include <functional>
@@ -9,14 +11,6 @@
 namespace marbler {
 
 struct RenderControl;
-
-/// Runs `work` on `threads` threads (at least 1), the calling thread among them, and waits for
-/// all of them. When one throws, `stop` is raised so the others can return early (`work` checks
-/// it between items), and the first exception is rethrown here once every thread has returned.
-void runOnThreads(int threads, std::atomic<bool>& stop, const std::function<void()>& work);
-
-/// The workers for `items` items under a `threads` setting (0: every core): 1 to `items`.
-int workerCount(int threads, int items);
 
 /// The one row loop of the renderers (the CPU renderer, the texture baker, the mesh shader over
 /// a G-buffer): rows handed out one at a time by an atomic counter to one worker per core (or
