@@ -140,7 +140,6 @@ PopulationModel::PendingBreed PopulationModel::prepareBreed(GeneticOperator op, 
     }
     pending.wildcard = mWildcard;
     pending.selected = current().selected;
-    pending.parentCells = selected;
     pending.current = mCurrent;
     pending.historySize = mHistory.size();
     return pending;
@@ -167,7 +166,9 @@ void PopulationModel::commitBreed(PendingBreed pending) {
         pending.children.size() != std::size_t(pending.steer.breed.count))
         throw RuntimeFailure("the population changed while a generation was being bred");
     const GeneticOperator op = pending.op;
-    const std::vector<int>& selected = pending.parentCells;
+    std::vector<int> selected;
+    for (int i = 0; i < CellCount; ++i)
+        if (pending.selected[std::size_t(i)]) selected.push_back(i);
     Generation next;
     next.selected = pending.selected;
     next.parentCells = selected;

@@ -133,8 +133,8 @@ public:
         bool steered = false;
         bool wildcard = false;
         std::array<bool, CellCount> selected{}; ///< the parents' cells, as they were
-        std::vector<int> parentCells;
-        int current = 0; ///< the generation bred from, and the history's size then
+        /// The generation bred from, and the history's size then.
+        int current = 0;
         std::size_t historySize = 0;
         std::vector<Genome> children; ///< set by breedPending
         std::string explanation;      ///< why, when steered

@@ -697,7 +697,6 @@ std::vector<Genome> breed(const BreedRequest& request) {
     // they are neither drawn again nor filtered.
     const bool random = op == GeneticOperator::Recombine || op == GeneticOperator::Reinit ||
                         (op == GeneticOperator::Alter && request.strength > 0.0);
-    const bool filtered = random;
     const auto parentCount = request.parents.size();
     const auto count = static_cast<std::size_t>(request.count);
     // The glimpses the filter compares a child with: the parents', then each child's in turn.
@@ -706,8 +705,8 @@ std::vector<Genome> breed(const BreedRequest& request) {
     // every core up front. A first draw is used below only where it is what the child's turn
     // would draw (it repeats no design taken before it), so the children are the same as made
     // one at a time.
-    std::vector<Glimpse> looks(filtered ? parentCount : 0);
-    std::vector<breeddetail::FirstDraw> firstDraws(filtered ? count : 0);
+    std::vector<Glimpse> looks(random ? parentCount : 0);
+    std::vector<breeddetail::FirstDraw> firstDraws(random ? count : 0);
     forEachOnCores(looks.size() + firstDraws.size(), [&](std::size_t k) {
         if (k < looks.size()) {
             looks[k] = glimpseOf(request.parents[k]);
@@ -765,7 +764,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
         std::optional<Genome> variedFrom;
         std::optional<Glimpse> firstLook;
         Genome child;
-        if (filtered && firstDraws[std::size_t(i)].ready && !taken.count(firstDraws[std::size_t(i)].id)) {
+        if (random && firstDraws[std::size_t(i)].ready && !taken.count(firstDraws[std::size_t(i)].id)) {
             breeddetail::FirstDraw& first = firstDraws[std::size_t(i)];
             rng = first.rng;
             home = first.home;
@@ -775,7 +774,7 @@ std::vector<Genome> breed(const BreedRequest& request) {
             child = candidate(variation, variedFrom);
         }
         int redraws = 0;
-        if (filtered) {
+        if (random) {
             // The filter: a dull child or a near-duplicate of a parent or an earlier sibling is
             // drawn again (a fixed number of times; the best draw stays).
             const auto judge = [&](const Glimpse& look) {
