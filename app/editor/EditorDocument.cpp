@@ -28,8 +28,6 @@ struct EditorState {
     bool operator==(const EditorState& o) const { return design == o.design && muted == o.muted; }
 };
 
-namespace {
-
 /// A run of a list replaced: from index `at`, `removed` gave way to `inserted`; or, for a step
 /// moved (`rotated` != 0), the run of `length` from `at` turned by one, its first entry moved to
 /// its end (+1) or its last to its front (-1), which holds no entries at all. Applying it to the
@@ -101,6 +99,8 @@ template <class T> struct ListSplice {
     }
     bool empty() const { return rotated == 0 && removed.empty() && inserted.empty(); }
 };
+
+namespace {
 
 /// The heap and inline bytes of one step (its vectors included).
 std::size_t bytesOf(const Operation& op) {

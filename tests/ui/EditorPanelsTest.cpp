@@ -277,10 +277,10 @@ TEST(ParamForm, ASliderDragEmitsDraggingEditsThenAFinalOne) {
 
 TEST(StepList, KeysMenuChecksAndDragsAskForChanges) {
     StepList list;
-    std::vector<StepRow> rows = {{QStringLiteral("Drop"), false, true, {}},
-                                 {QStringLiteral("Drop"), false, true, {}},
-                                 {QStringLiteral("Comb"), true, false, QStringLiteral("spacing 80")},
-                                 {QStringLiteral("Wave"), false, false, {}}};
+    std::vector<StepRow> rows = {{QStringLiteral("Drop"), false, true, {}, {}},
+                                 {QStringLiteral("Drop"), false, true, {}, {}},
+                                 {QStringLiteral("Comb"), true, false, QStringLiteral("spacing 80"), {}},
+                                 {QStringLiteral("Wave"), false, false, {}, {}}};
     list.setRows(rows);
     ASSERT_EQ(list.rowCount(), 4u);
     EXPECT_EQ(list.list()->item(2)->checkState(), Qt::Unchecked) << "a muted step is unticked";

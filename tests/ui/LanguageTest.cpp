@@ -311,7 +311,9 @@ TEST_F(LanguageMenuTest, NumbersInTheExportDialogFollowTheLanguage) {
     const double value = QLocale::c().toDouble(QString(firstEnglish).remove(QLatin1Char(',')));
     EXPECT_TRUE(de.contains(QLocale(QStringLiteral("de")).toString(value, 'f', 0)))
         << de.toStdString() << " vs " << en.toStdString();
-    if (value >= 1000) EXPECT_NE(number.match(de).captured(), firstEnglish);
+    if (value >= 1000) {
+        EXPECT_NE(number.match(de).captured(), firstEnglish);
+    }
 }
 
 TEST_F(LanguageMenuTest, PlaySpeedsAndSessionDatesFollowTheLanguage) {
